@@ -1,0 +1,3 @@
+"""cnlmc: the controlled-natural-language material compiler."""
+
+__version__ = "0.1.0"

@@ -1,0 +1,72 @@
+"""Checks lexicon entries against stdlib/schema.toml; errors name the file and the key."""
+
+from __future__ import annotations
+
+import math
+
+COMMON_FIELDS = {
+    "aliases": {"type": "strlist"},
+    "doc": {"type": "str", "required": True},
+    "example": {"type": "str", "required": True},
+}
+
+
+class LexiconError(Exception):
+    """A lexicon file is malformed; the message names the file and the key."""
+
+
+def _is_number(value) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+
+
+def _is_rgb(value) -> bool:
+    return isinstance(value, list) and len(value) == 3 and all(_is_number(v) for v in value)
+
+
+def _is_effects(value) -> bool:
+    return isinstance(value, list) and all(isinstance(e, dict) and "param" in e and "op" in e for e in value)
+
+
+def _is_ops(value) -> bool:
+    return isinstance(value, list) and all(isinstance(e, dict) and "op" in e for e in value)
+
+
+TYPE_CHECKS = {
+    "str": lambda v: isinstance(v, str),
+    "float": _is_number,
+    "int": lambda v: isinstance(v, int) and not isinstance(v, bool),
+    "bool": lambda v: isinstance(v, bool),
+    "rgb": _is_rgb,
+    "strlist": lambda v: isinstance(v, list) and all(isinstance(s, str) for s in v),
+    "table": lambda v: isinstance(v, dict),
+    "effects": _is_effects,
+    "ops": _is_ops,
+    "maps": lambda v: isinstance(v, dict) and all(isinstance(m, dict) and "graph" in m for m in v.values()),
+    "on": lambda v: isinstance(v, dict) and all(_is_effects(e) for e in v.values()),
+    "step": lambda v: isinstance(v, dict) and "op" in v and _is_number(v.get("value")),
+}
+
+
+def check_entry(entry: dict, fields: dict, where: str, partial: bool = False) -> None:
+    """Raise LexiconError for an unknown field, a wrong type, a bad choice or a value out of range."""
+    allowed = {**COMMON_FIELDS, **fields}
+    for name, value in entry.items():
+        spec = allowed.get(name)
+        if spec is None:
+            raise LexiconError(f"{where}: unknown field '{name}' (allowed: {', '.join(sorted(allowed))})")
+        _check_value(value, spec, f"{where}.{name}")
+    if not partial:
+        for name, spec in allowed.items():
+            if spec.get("required") and name not in entry:
+                raise LexiconError(f"{where}: missing required field '{name}'")
+
+
+def _check_value(value, spec: dict, where: str) -> None:
+    kind = spec["type"]
+    if not TYPE_CHECKS[kind](value):
+        raise LexiconError(f"{where}: expected {kind}, got {value!r}")
+    if "choices" in spec and value not in spec["choices"]:
+        raise LexiconError(f"{where}: {value!r} is not one of {spec['choices']}")
+    low, high = spec.get("range", (-math.inf, math.inf))
+    if kind == "float" and not low <= value <= high:
+        raise LexiconError(f"{where}: {value} is outside [{low}, {high}]")

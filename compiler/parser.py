@@ -1,0 +1,131 @@
+"""The parser: tagged words -> AST, with lark's LALR parser over grammar/cnl.lark.
+
+A word with several candidate tags ("gold": colour or noun) is resolved by a depth-first
+search over the interactive parser: each candidate is fed in the tagger's order of
+preference and the first one that lets the whole line parse wins. Lines without
+ambiguous words take a single pass.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from importlib import resources
+
+from lark import Lark, Token, Tree
+from lark.lexer import Lexer
+from lark.exceptions import UnexpectedInput, UnexpectedToken
+
+from . import ast
+from .diagnostics import error
+from .spans import Span
+from .tagger import Tagged, Tagger
+
+MAX_BRANCHES = 256  # ambiguous words are few; this bounds the search on hostile input
+
+TERMINAL_NAMES = {
+    "NOUN": "a material noun (e.g. 'aluminum')", "ADJ": "an adjective (e.g. 'brushed')",
+    "ADV": "an adverb (e.g. 'lightly')", "COLOR": "a colour (e.g. 'blue')",
+    "SHADE": "a shade (e.g. 'dark')", "COAT": "a coat (e.g. 'varnish')",
+    "REFINE": "a refinement (e.g. 'darker')", "PROP": "a property (e.g. 'grain')",
+    "ARTICLE": "an article", "AND": "'and'", "OR": "'or'", "WITH": "'with'", "COMMA": "','",
+    "NAME": "a name", "COLON": "':'", "$END": "the end of the line",
+}
+
+
+class _Lexer(Lexer):
+    """lark calls lex() with whatever parse() was given: here, a ready list of Tokens."""
+
+    def __init__(self, lexer_conf):
+        pass
+
+    def lex(self, tokens, _parser_state=None):
+        yield from tokens
+
+
+@lru_cache(maxsize=1)
+def lark_parser() -> Lark:
+    grammar = resources.files("cnlmc.grammar").joinpath("cnl.lark").read_text("utf-8")
+    return Lark(grammar, parser="lalr", lexer=_Lexer, propagate_positions=False, maybe_placeholders=False)
+
+
+def _token(t: Tagged, tag: str) -> Token:
+    return Token(tag, t.text, t.span.start, t.span.line, t.span.col)
+
+
+class ParseFailure(Exception):
+    def __init__(self, tagged: Tagged | None, expected: set[str]):
+        super().__init__("parse failure")
+        self.tagged = tagged
+        self.expected = expected
+
+
+def parse_tagged(tagged: list[Tagged]) -> tuple[Tree, dict]:
+    """Parse a line of tagged words; returns the tree and the chosen tag per word start."""
+    words = [t for t in tagged if t.candidates]
+    if all(len(t.candidates) == 1 for t in words):
+        return _parse_direct(words), {t.span.start: t.candidates[0] for t in words}
+    return _parse_search(words)
+
+
+def _parse_direct(words: list[Tagged]) -> Tree:
+    try:
+        return lark_parser().parse([_token(t, t.candidates[0].tag) for t in words])
+    except UnexpectedToken as exc:
+        raise _failure(words, exc) from None
+    except UnexpectedInput as exc:  # pragma: no cover - other lark errors
+        raise ParseFailure(None, set()) from exc
+
+
+def _failure(words, exc: UnexpectedToken) -> ParseFailure:
+    at = next((t for t in words if t.span.start == exc.token.start_pos and exc.token.type != "$END"), None)
+    return ParseFailure(at, set(exc.expected))
+
+
+def _parse_search(words: list[Tagged]):
+    state = {"budget": MAX_BRANCHES, "deepest": (-1, None, set())}
+    ip = lark_parser().parse_interactive()
+    result = _search(ip, words, 0, {}, state)
+    if result is None:
+        _index, at, expected = state["deepest"]
+        raise ParseFailure(at, expected)
+    return result
+
+
+def _search(ip, words, i, chosen, state):
+    if i == len(words):
+        return _finish(ip, words, chosen, state)
+    for cand in words[i].candidates:
+        if state["budget"] <= 0:
+            return None
+        state["budget"] -= 1
+        branch = ip.copy()
+        try:
+            branch.feed_token(_token(words[i], cand.tag))
+        except UnexpectedToken as exc:
+            _note_failure(state, i, words[i], exc)
+            continue
+        found = _search(branch, words, i + 1, {**chosen, words[i].span.start: cand}, state)
+        if found is not None:
+            return found
+    return None
+
+
+def _finish(ip, words, chosen, state):
+    try:
+        last = _token(words[-1], chosen[words[-1].span.start].tag) if words else None
+        return ip.feed_eof(last), chosen
+    except UnexpectedToken as exc:
+        _note_failure(state, len(words), None, exc)
+        return None
+
+
+def _note_failure(state, index, at, exc):
+    if index > state["deepest"][0]:
+        state["deepest"] = (index, at, set(exc.expected))
+
+
+def describe_expected(expected: set[str]) -> str:
+    names = sorted({TERMINAL_NAMES.get(e, e) for e in expected if e in TERMINAL_NAMES})
+    if not names:
+        return "something else"
+    return ", ".join(names[:-1]) + (" or " if len(names) > 1 else "") + names[-1]

@@ -1,0 +1,32 @@
+"""Source positions: every AST node and every IR value knows where it came from."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Span:
+    """A half-open character range [start, end) in a source text, with 1-based line/col."""
+
+    start: int
+    end: int
+    line: int
+    col: int
+
+    @property
+    def end_col(self) -> int:
+        return self.col + (self.end - self.start)
+
+    def to(self, other: "Span") -> "Span":
+        """The span from the start of self to the end of other (same line)."""
+        return Span(self.start, max(self.end, other.end), self.line, self.col)
+
+    def as_list(self) -> list[int]:
+        return [self.line, self.col, self.end_col]
+
+
+def line_span(line: int, col: int, length: int, line_offset: int) -> Span:
+    """A span on `line` starting at 1-based `col`, given the line's offset in the file."""
+    start = line_offset + col - 1
+    return Span(start, start + length, line, col)

@@ -1,0 +1,140 @@
+"""The tagger: one line of text -> words tagged with their candidate parts of speech.
+
+Words are matched against the lexicon longest-first ("stainless steel" before "steel",
+"a bit" before "a"); a word that is not found is tried in its base forms (inflection
+rules from the lexicon), then reported with "did you mean". A word may carry several
+candidate tags ("gold": colour or noun); the parser picks the one the grammar accepts.
+"""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+from .diagnostics import did_you_mean, error
+from .lexicon import Lexicon
+from .spans import line_span
+
+TOKEN_RE = re.compile(r"[^\W\d_](?:[\w'’\-]*\w)?|\d+(?:\.\d+)?%?|[,;:&]|\S", re.UNICODE)
+OPEN_TAGS = ("ADV", "SHADE", "COLOR", "ADJ", "COAT", "NOUN", "PROP", "REFINE")
+TAG_PREFERENCE = {t: i for i, t in enumerate(("NAME", "COLON", "ARTICLE", "AND", "OR", "WITH", "COMMA", *OPEN_TAGS))}
+
+
+@dataclass(frozen=True)
+class Candidate:
+    tag: str
+    key: str
+    category: str
+
+
+@dataclass(frozen=True)
+class Tagged:
+    text: str
+    span: object
+    candidates: tuple[Candidate, ...]
+    unknown: bool = False
+
+
+@lru_cache(maxsize=1)
+def keyword_table() -> dict[str, str]:
+    """Closed-class words -> terminal name, from grammar/keywords.toml."""
+    text = resources.files("cnlmc.grammar").joinpath("keywords.toml").read_text("utf-8")
+    table = tomllib.loads(text)["terminals"]
+    return {word: terminal for terminal, words in table.items() for word in words}
+
+
+def raw_tokens(line: str) -> list[tuple[str, int]]:
+    """(text, 0-based column) of each word or punctuation mark; '#' starts a comment."""
+    out = []
+    for match in TOKEN_RE.finditer(line):
+        if match.group() == "#":
+            break
+        out.append((match.group(), match.start()))
+    return out
+
+
+class Tagger:
+    def __init__(self, lexicon: Lexicon):
+        self.lexicon = lexicon
+        self.keywords = keyword_table()
+
+    def tag_line(self, line: str, line_no: int, offset: int):
+        """Return (tagged words, diagnostics) for one line of source."""
+        raw = raw_tokens(line)
+        tagged, diags = [], []
+        start = self._name_prefix(raw, line_no, offset, tagged)
+        i = start
+        while i < len(raw):
+            used = self._tag_at(raw, i, line_no, offset, tagged, diags)
+            i += used
+        return tagged, diags
+
+    def _name_prefix(self, raw, line_no, offset, tagged) -> int:
+        """'hull: ...' -> NAME COLON; the name may be several words."""
+        colon = next((j for j, (t, _c) in enumerate(raw) if t == ":"), None)
+        if not colon:
+            return 0
+        first_col, (last_text, last_col) = raw[0][1], raw[colon - 1]
+        text = " ".join(t for t, _c in raw[:colon])
+        span = line_span(line_no, first_col + 1, last_col + len(last_text) - first_col, offset)
+        tagged.append(Tagged(text, span, (Candidate("NAME", text, "name"),)))
+        tagged.append(Tagged(":", line_span(line_no, raw[colon][1] + 1, 1, offset), (Candidate("COLON", ":", "punct"),)))
+        return colon + 1
+
+    def _tag_at(self, raw, i, line_no, offset, tagged, diags) -> int:
+        for n in range(min(self.lexicon.max_form_words, len(raw) - i), 0, -1):
+            words = tuple(t.lower() for t, _c in raw[i:i + n])
+            candidates = self._candidates(words)
+            if candidates:
+                tagged.append(Tagged(" ".join(t for t, _c in raw[i:i + n]), self._span(raw, i, n, line_no, offset), candidates))
+                return n
+        tagged.append(self._unknown(raw[i], line_no, offset, diags))
+        return 1
+
+    def _candidates(self, words: tuple[str, ...]) -> tuple[Candidate, ...]:
+        found = self._exact(words)
+        if not found and len(words) == 1:
+            for base in self.lexicon.base_forms(words[0]):
+                found = self._exact((base,))
+                if found:
+                    break
+        return tuple(sorted(found, key=lambda c: TAG_PREFERENCE[c.tag]))
+
+    def _exact(self, words: tuple[str, ...]) -> list[Candidate]:
+        found = [Candidate(e.tag, e.key, e.category) for e in self.lexicon.lookup(words)]
+        if len(words) == 1 and words[0] in self.keywords:
+            found.append(Candidate(self.keywords[words[0]], words[0], "keyword"))
+        return found
+
+    @staticmethod
+    def _span(raw, i, n, line_no, offset):
+        first_col = raw[i][1]
+        last_text, last_col = raw[i + n - 1]
+        return line_span(line_no, first_col + 1, last_col + len(last_text) - first_col, offset)
+
+    def _unknown(self, token, line_no, offset, diags) -> Tagged:
+        text, col = token
+        span = line_span(line_no, col + 1, len(text), offset)
+        is_word = text[0].isalpha()
+        suggestions = self.lexicon.suggest(text) if is_word else []
+        diags.append(error(span, "E001", _unknown_message(text), did_you_mean(suggestions), suggestions))
+        return Tagged(text, span, self._guess(suggestions) if is_word else (), unknown=True)
+
+    def _guess(self, suggestions) -> tuple[Candidate, ...]:
+        """Tags for an unknown word: those of its best suggestion, else any open tag."""
+        for s in suggestions[:1]:
+            found = self._candidates(tuple(s.split()))
+            if found:
+                return tuple(Candidate(c.tag, c.key, c.category) for c in found)
+        return tuple(Candidate(t, "", "unknown") for t in OPEN_TAGS)
+
+
+def _unknown_message(text: str) -> str:
+    if text[0].isalpha():
+        return f"unknown word '{text}'"
+    if text[0].isdigit():
+        return f"numbers are not part of the language: '{text}' (describe the look in words)"
+    return f"unexpected character '{text}'"
