@@ -48,22 +48,25 @@ def albedo_cosine(bsdf, wo, n: int = 4096):
     return _weighted(bsdf(wo_b, wi), np.full(n, np.pi / n))
 
 
-def albedo_mis(bsdf, wo, ax, ay, n: int = 4096):
-    """∫ f cos θi dωi by balance-heuristic MIS of cosine and GGX-VNDF(αx, αy) sampling.
+def albedo_mis(bsdf, wo, lobes, n: int = 4096):
+    """∫ f cos θi dωi by balance-heuristic MIS of cosine sampling and GGX-VNDF sampling
+    for every (αx, αy) in ``lobes`` (n samples per strategy):
 
+        A ≈ Σ_{all samples} f cos θi / (n Σ_s p_s(wi))
     Robust for sharp lobes (GGX, Ward) down to α = 1e-3 and for grazing wo.
     """
     wo = as_dirs(wo)
     u1, u2 = lattice_2d(n)
     wi_c = sample_cosine(u1, u2)
-    wo_b = np.broadcast_to(wo, wi_c.shape)
-    wi_v = reflect_about(wo_b, sample_ggx_vndf(wo_b, ax, ay, u1, u2))
-    wi = np.concatenate([wi_c, wi_v])
-    wo2 = np.broadcast_to(wo, wi.shape)
-    pdf = cosine_pdf(wi) + vndf_pdf(wo2, wi, ax, ay)
-    weight = np.where(pdf > 0, cos_theta(wi) / np.maximum(pdf * n, 1e-300), 0.0)
-    weight = np.where(cos_theta(wi) > 0, weight, 0.0)
-    return _weighted(bsdf(wo2, wi), weight)
+    wo_n = np.broadcast_to(wo, wi_c.shape)
+    samples = [wi_c] + [reflect_about(wo_n, sample_ggx_vndf(wo_n, ax, ay, u1, u2))
+                        for ax, ay in lobes]
+    wi = np.concatenate(samples)
+    wo_all = np.broadcast_to(wo, wi.shape)
+    pdf = cosine_pdf(wi) + sum(vndf_pdf(wo_all, wi, ax, ay) for ax, ay in lobes)
+    ok = (pdf > 0) & (cos_theta(wi) > 0)
+    weight = np.where(ok, cos_theta(wi) / np.where(ok, pdf * n, 1.0), 0.0)
+    return _weighted(bsdf(wo_all, wi), weight)
 
 
 def albedo_at_mu(bsdf, mu, ax=None, ay=None, n: int = 4096, phi: float = 0.0):
@@ -71,4 +74,4 @@ def albedo_at_mu(bsdf, mu, ax=None, ay=None, n: int = 4096, phi: float = 0.0):
     wo = dir_from_mu(mu, phi)
     if ax is None:
         return albedo_cosine(bsdf, wo, n)
-    return albedo_mis(bsdf, wo, ax, ax if ay is None else ay, n)
+    return albedo_mis(bsdf, wo, [(ax, ax if ay is None else ay)], n)

@@ -1,0 +1,46 @@
+"""Target name -> backend module, imported only when that target runs.
+
+A backend module provides NAME, DESCRIPTION, CAPABILITIES and emit(ir, options) -> [Artifact].
+Third-party targets register through the entry point group 'cnlmc.backends'.
+"""
+
+from __future__ import annotations
+
+import difflib
+import importlib
+from dataclasses import dataclass
+from importlib.metadata import entry_points
+
+BUILTIN_BACKENDS = {
+    "ir": "cnlmc.backends.ir_json",
+}
+
+
+@dataclass(frozen=True)
+class Artifact:
+    """One output file: a name relative to the output folder, and its content."""
+
+    name: str
+    content: str | bytes
+    kind: str = "text"
+
+
+class UnknownTarget(LookupError):
+    def __init__(self, name: str, known: list[str]):
+        close = difflib.get_close_matches(name, known, n=1)
+        hint = f"; did you mean '{close[0]}'?" if close else ""
+        super().__init__(f"unknown target '{name}' (known: {', '.join(known)}){hint}")
+
+
+def available() -> dict[str, str]:
+    table = dict(BUILTIN_BACKENDS)
+    for ep in entry_points(group="cnlmc.backends"):
+        table.setdefault(ep.name, ep.value)
+    return table
+
+
+def get_backend(name: str):
+    table = available()
+    if name not in table:
+        raise UnknownTarget(name, sorted(table))
+    return importlib.import_module(table[name])

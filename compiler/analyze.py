@@ -1,0 +1,97 @@
+"""Semantic analysis: AST -> material states -> IR, by small passes in one ordered tuple."""
+
+from __future__ import annotations
+
+from . import ast
+from .diagnostics import warning
+from .ir import document_ir, material_ir
+from .passes.base import apply_noun
+from .passes.coats import apply_coat_clause
+from .passes.model import select_model
+from .passes.ranges import check_ranges
+from .passes.refine import apply_refinement
+from .passes.variants import expand, identifier
+from .passes.words import apply_groups
+from .state import Context, MaterialState
+
+BUILD_PASSES = (apply_noun, apply_groups, apply_coat_clause)
+FINAL_PASSES = (select_model, check_ranges)
+
+
+def attach_refinements(doc: ast.Document) -> list[tuple[ast.Material, list[ast.Refinement]]]:
+    """Pair each material line with the refinement lines below it."""
+    pairs = []
+    for item in doc.items:
+        if isinstance(item, ast.Material):
+            pairs.append((item, []))
+        elif pairs:
+            pairs[-1][1].append(item)
+        else:
+            doc.diagnostics.append(warning(item.span, "W104", "a refinement needs a material above it",
+                                           ("write the material first, e.g. 'blue anodized aluminum' then 'darker'",)))
+    return pairs
+
+
+def material_name(material: ast.Material, used: set) -> str:
+    base = material.name.text if material.name else " ".join(_name_words(material))
+    name = identifier(base)
+    unique, n = name, 2
+    while unique in used:
+        unique, n = f"{name}_{n}", n + 1
+    used.add(unique)
+    return unique
+
+
+def _name_words(material: ast.Material):
+    for group in material.groups:
+        for word in (*[w for c in group.colours[:1] for w in c.words], *group.adjectives[:1]):
+            yield word.text
+    yield material.nouns[0].text
+
+
+def build_states(material: ast.Material, refinements, ctx: Context, name: str, diags: list) -> list[MaterialState]:
+    states = []
+    for selection, variant in expand(material, name, diags):
+        if selection.nouns[0].unknown:
+            continue
+        state = MaterialState(_variant_name(name, variant), _phrase(material), selection, variant)
+        for step in BUILD_PASSES:
+            state = step(state, ctx)
+        for refinement in refinements:
+            for item in refinement.items:
+                apply_refinement(state, ctx, item)
+        for step in FINAL_PASSES:
+            state = step(state, ctx)
+        states.append(state)
+    return states
+
+
+def _variant_name(name: str, variant) -> str:
+    return f"{name}__{variant['name']}" if variant else name
+
+
+def _phrase(material: ast.Material) -> str:
+    text = material.text
+    return text.split(":", 1)[1].strip() if material.name else text.strip()
+
+
+def analyze(doc: ast.Document, ctx: Context) -> tuple[list[MaterialState], list]:
+    """All material states of a document, and every diagnostic, sorted by position."""
+    diags = list(doc.diagnostics)
+    states, used = [], set()
+    for material, refinements in attach_refinements(doc):
+        states += build_states(material, refinements, ctx, material_name(material, used), diags)
+    diags = list(doc.diagnostics[len(diags):]) + diags
+    for state in states:
+        diags += [d for d in state.diagnostics if d not in diags]
+    return states, sort_diagnostics(diags)
+
+
+def sort_diagnostics(diags: list) -> list:
+    return sorted(diags, key=lambda d: (d.span.line, d.span.col) if d.span else (0, 0))
+
+
+def to_ir(states: list[MaterialState], diags: list, ctx: Context) -> dict:
+    convention = ctx.settings.get("alpha_convention", "squared")
+    materials = [material_ir(s, convention) for s in states]
+    return document_ir(materials, diags, ctx.filename, ctx.lexicon.sources)

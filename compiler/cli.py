@@ -1,0 +1,80 @@
+"""The `cnlmc` command line. Exit codes: 0 ok, 1 compile errors, 2 usage."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from dataclasses import asdict
+
+EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
+STAGES = ("tokens", "ast", "ir")
+
+
+class UsageError(Exception):
+    """A problem with how cnlmc was called (exit 2)."""
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="cnlmc", description="Compile material phrases such as "
+                                     "'lightly brushed, blue anodized aluminum' into renderable materials.")
+    sub = parser.add_subparsers(dest="command", required=True)
+    comp = sub.add_parser("compile", help="compile a material file (or - for stdin)")
+    _common(comp)
+    comp.add_argument("--target", "-t", default="ir", help="backend: see `cnlmc targets` (default: ir)")
+    comp.add_argument("--emit", choices=STAGES, help="stop at a stage and print it")
+    comp.add_argument("-o", "--output", help="output file or folder (default: stdout)")
+    comp.add_argument("--option", action="append", default=[], metavar="KEY=VALUE",
+                      help="a backend option, e.g. --option fresnel=schlick")
+    expl = sub.add_parser("explain", help="show every parameter and the words and rules that set it")
+    _common(expl)
+    sub.add_parser("targets", help="list the available targets")
+    return parser
+
+
+def _common(p) -> None:
+    p.add_argument("file", help="a material file, or - to read standard input")
+    p.add_argument("--lexicon", "-L", action="append", default=[],
+                   help="an overlay name (e.g. 'paper') or a lexicon folder; may repeat; folders are searched first")
+    p.add_argument("--seed", type=int, default=0, help="seed for procedural maps (default 0)")
+
+
+def read_source(path: str) -> tuple[str, str]:
+    try:
+        data = sys.stdin.buffer.read() if path == "-" else open(path, "rb").read()
+    except OSError as exc:
+        raise UsageError(f"cannot read '{path}': {exc.strerror}") from None
+    name = "<stdin>" if path == "-" else path
+    if b"\x00" in data:
+        raise UsageError(f"{name}: this is not a text file (it contains NUL bytes)")
+    try:
+        return data.decode("utf-8-sig"), name
+    except UnicodeDecodeError as exc:
+        raise UsageError(f"{name}: not UTF-8 text (byte {exc.start})") from None
+
+
+def main(argv=None) -> int:
+    try:
+        return _run(build_parser().parse_args(argv))
+    except UsageError as exc:
+        print(f"cnlmc: error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    except KeyboardInterrupt:
+        return 130
+    except BrokenPipeError:
+        return EXIT_OK
+    except Exception as exc:  # the last line of defence: never a traceback
+        print(f"cnlmc: internal error: {type(exc).__name__}: {exc}\n"
+              "please report this with the input that caused it", file=sys.stderr)
+        return EXIT_INTERNAL
+
+
+def _run(args) -> int:
+    from . import commands
+    handler = {"compile": commands.compile_cmd, "explain": commands.explain_cmd,
+               "targets": commands.targets_cmd}[args.command]
+    return handler(args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,105 @@
+"""The CLI's subcommands."""
+
+from __future__ import annotations
+
+import json
+import sys
+from dataclasses import asdict
+
+from .cli import EXIT_ERRORS, EXIT_OK, UsageError, read_source
+from .diagnostics import render
+
+
+def _lexicon(args):
+    from .api import lexicon_for
+    from .lexicon_schema import LexiconError
+    try:
+        return lexicon_for(tuple(args.lexicon))
+    except LexiconError as exc:
+        raise UsageError(f"lexicon: {exc}") from None
+
+
+def _report(result, source: str, name: str) -> None:
+    for diag in result.diagnostics:
+        print(render(diag, source, name), file=sys.stderr)
+
+
+def _parse_options(pairs) -> dict:
+    options = {}
+    for pair in pairs:
+        if "=" not in pair:
+            raise UsageError(f"--option expects KEY=VALUE, got '{pair}'")
+        key, value = pair.split("=", 1)
+        options[key.strip()] = value.strip()
+    return options
+
+
+def compile_cmd(args) -> int:
+    from .api import compile_source
+    from cnlmc.backends.registry import UnknownTarget, get_backend
+    try:
+        backend = get_backend(args.target)
+    except UnknownTarget as exc:
+        raise UsageError(str(exc)) from None
+    source, name = read_source(args.file)
+    lexicon = _lexicon(args)
+    if args.emit in ("tokens", "ast"):
+        return _emit_stage(args.emit, source, name, lexicon)
+    result = compile_source(source, name, lexicon, args.seed)
+    _report(result, source, name)
+    if not result.ok:
+        return EXIT_ERRORS
+    options = {**_parse_options(args.option), "seed": args.seed}
+    artifacts = backend.emit(result.ir, options)
+    return _deliver(artifacts, args.output)
+
+
+def _deliver(artifacts, output) -> int:
+    from .output import write_artifacts
+    if output:
+        for path in write_artifacts(artifacts, output):
+            print(f"wrote {path}", file=sys.stderr)
+        return EXIT_OK
+    for artifact in artifacts:
+        if isinstance(artifact.content, bytes):
+            raise UsageError(f"'{artifact.name}' is binary: give -o PATH")
+        if len(artifacts) > 1:
+            print(f"// ---- {artifact.name}")
+        sys.stdout.write(artifact.content)
+    return EXIT_OK
+
+
+def _emit_stage(stage: str, source: str, name: str, lexicon) -> int:
+    from .document import iter_lines, parse_document
+    from .tagger import Tagger
+    if stage == "tokens":
+        tagger = Tagger(lexicon)
+        for number, offset, text in iter_lines(source):
+            tagged, _diags = tagger.tag_line(text, number, offset)
+            for t in tagged:
+                tags = "|".join(c.tag for c in t.candidates) or "?"
+                print(f"{t.span.line}:{t.span.col}\t{tags}\t{t.text}" + ("\t(unknown)" if t.unknown else ""))
+        return EXIT_OK
+    doc = parse_document(source, lexicon, name)
+    for diag in doc.diagnostics:
+        print(render(diag, source, name), file=sys.stderr)
+    nodes = [{"node": type(item).__name__, **asdict(item)} for item in doc.items]
+    print(json.dumps(nodes, indent=2, ensure_ascii=False))
+    return EXIT_ERRORS if any(d.is_error for d in doc.diagnostics) else EXIT_OK
+
+
+def explain_cmd(args) -> int:
+    from .api import compile_source
+    from .explain import explain
+    source, name = read_source(args.file)
+    result = compile_source(source, name, _lexicon(args), args.seed)
+    _report(result, source, name)
+    sys.stdout.write(explain(result.ir))
+    return EXIT_OK if result.ok else EXIT_ERRORS
+
+
+def targets_cmd(args) -> int:
+    from cnlmc.backends.registry import available
+    for name, module in sorted(available().items()):
+        print(f"{name:<10} {module}")
+    return EXIT_OK

@@ -1,0 +1,68 @@
+"""The lexicon's formulas, applied with an adverb weight w (paper §3.3, §4.2).
+
+    set v             x -> x + w (v - x)
+    mul f             x -> x (1 + w (f - 1))
+    add d             x -> x + w d
+    blend v, amount t x -> x + min(1, w t) (v - x)
+
+Values may be scalars or RGB lists; lists are handled per channel.
+"""
+
+from __future__ import annotations
+
+
+def _per_channel(fn, x, v):
+    if isinstance(x, list):
+        vs = v if isinstance(v, list) else [v] * len(x)
+        return [fn(a, b) for a, b in zip(x, vs)]
+    return fn(x, v)
+
+
+def apply_op(op: str, x, value, weight: float = 1.0, amount: float | None = None):
+    if op == "set":
+        if isinstance(value, str) or x is None:
+            return value
+        return _per_channel(lambda a, b: a + weight * (b - a), x, value)
+    if op == "mul":
+        return _per_channel(lambda a, b: a * (1 + weight * (b - 1)), x, value)
+    if op == "add":
+        return _per_channel(lambda a, b: a + weight * b, x, value)
+    if op == "blend":
+        t = min(1.0, weight * (1.0 if amount is None else amount))
+        return _per_channel(lambda a, b: a + t * (b - a), x, value)
+    raise ValueError(f"unknown formula op '{op}'")
+
+
+def invert_op(op: str, x, value, weight: float = 1.0, amount: float | None = None):
+    """The opposite move of apply_op: used for 'weaker brushing'."""
+    if op == "mul":
+        return _per_channel(lambda a, b: a / (1 + weight * (b - 1)) if 1 + weight * (b - 1) else a, x, value)
+    if op == "add":
+        return _per_channel(lambda a, b: a - weight * b, x, value)
+    if op in ("set", "blend"):
+        t = weight if op == "set" else min(1.0, weight * (1.0 if amount is None else amount))
+        return _per_channel(lambda a, b: a - t * (b - a), x, value)
+    raise ValueError(f"unknown formula op '{op}'")
+
+
+def describe(effect: dict, weight: float) -> str:
+    """'roughness *= 1.2' style text for provenance and explain."""
+    op, value = effect["op"], effect.get("value")
+    text = {"set": f"= {value}", "mul": f"*= {value}", "add": f"+= {value}",
+            "blend": f"blend to {value} by {effect.get('amount', 1.0)}"}[op]
+    suffix = f" (weight {weight:g})" if weight != 1.0 else ""
+    return f"{effect['param']} {text}{suffix}"
+
+
+def midpoint(a, b):
+    return _per_channel(lambda x, y: (x + y) / 2, a, b)
+
+
+def rounded(value, digits: int = 6):
+    if isinstance(value, float):
+        return round(value, digits) + 0.0
+    if isinstance(value, list):
+        return [rounded(v, digits) for v in value]
+    if isinstance(value, dict):
+        return {k: rounded(v, digits) for k, v in value.items()}
+    return value

@@ -1,0 +1,69 @@
+"""The IR: a versioned, target-independent JSON form of the compiled materials (docs/ir.md)."""
+
+from __future__ import annotations
+
+from .conventions import alpha_of
+from .formulas import rounded
+from .state import MaterialState
+
+IR_VERSION = 1
+
+PARAMS_BY_MODEL = {
+    "diffuse": ("base_color",),
+    "dielectric": ("base_color", "roughness", "ior"),
+    "conductor": ("base_color", "roughness", "eta", "k", "f0", "f82"),
+    "glass": ("base_color", "roughness", "ior"),
+}
+
+
+def material_ir(state: MaterialState, convention: str) -> dict:
+    model = state.model
+    return {
+        "name": state.name,
+        "phrase": state.phrase,
+        "variant": state.variant,
+        "model": model,
+        "params": rounded(_params(state, model, convention)),
+        "maps": rounded(state.maps),
+        "provenance": rounded(_provenance(state)),
+    }
+
+
+def _params(state: MaterialState, model: dict, convention: str) -> dict:
+    p = state.params
+    out = {k: p[k] for k in PARAMS_BY_MODEL[model["base"]] if k in p}
+    if model["diffuse"] == "oren_nayar":
+        out["diffuse_roughness"] = p.get("diffuse_roughness", 0.0)
+    if model["base"] != "diffuse":
+        aniso = p.get("anisotropy", 0.0) if model["anisotropic"] else 0.0
+        out["alpha"] = alpha_of(p["roughness"], aniso, convention)
+        out["alpha_convention"] = convention
+    if model["anisotropic"]:
+        out["anisotropy"] = p["anisotropy"]
+        out["anisotropy_rotation"] = p.get("anisotropy_rotation", 0.0)
+    out["coat"] = _coat(state.coat, convention) if model["coat"] else None
+    return out
+
+
+def _coat(coat: dict, convention: str) -> dict:
+    return {
+        "name": coat["name"], "ior": coat["ior"], "roughness": coat["roughness"],
+        "alpha": alpha_of(coat["roughness"], 0.0, convention),
+        "color": coat["color"], "thickness": coat["thickness"],
+    }
+
+
+def _provenance(state: MaterialState) -> dict:
+    return {param: [{k: v for k, v in step.items() if k != "keys"} for step in steps]
+            for param, steps in state.provenance.items()}
+
+
+def document_ir(materials: list[dict], diagnostics: list, source_name: str, lexicon_sources) -> dict:
+    return {
+        "ir_version": IR_VERSION,
+        "source": source_name,
+        "lexicon": list(lexicon_sources),
+        "colour_space": "linear Rec.709",
+        "materials": materials,
+        "diagnostics": [d.to_json() for d in diagnostics],
+    }

@@ -1,0 +1,38 @@
+"""Start from the noun: its kind (conductor, dielectric, glass), parameters and maps."""
+
+from __future__ import annotations
+
+from ..state import NOUN_PARAMS, Context, MaterialState
+
+
+def noun_word(state: MaterialState):
+    return state.selection.nouns[0]
+
+
+def apply_noun(state: MaterialState, ctx: Context) -> MaterialState:
+    word = noun_word(state)
+    entry = ctx.lexicon.entry("nouns", word.key)
+    state.noun = entry
+    state.kind = entry.get("model")
+    rule = f"nouns.{entry.key}"
+    for param in NOUN_PARAMS:
+        if param in entry.data:
+            state.record(param, entry.get(param), rule, (word,), source=entry.get("source"))
+    state.params.setdefault("diffuse_roughness", 0.0)
+    state.params.setdefault("anisotropy", 0.0)
+    state.params.setdefault("anisotropy_rotation", 0.0)
+    for role, ref in entry.get("maps", {}).items():
+        state.maps[role] = _map_ref(ref, ctx)
+        state.note(f"maps.{role}", ref["graph"], f"nouns.{entry.key}.maps", (word,))
+    if entry.get("coat"):
+        state.coat = dict(ctx.lexicon.entry("coats", entry.get("coat")).data)
+        state.coat["name"] = entry.get("coat")
+        state.note("coat", entry.get("coat"), f"nouns.{entry.key}.coat", (word,))
+    return state
+
+
+def _map_ref(ref: dict, ctx: Context, weight: float = 1.0) -> dict:
+    params = dict(ref.get("params", {}))
+    for name in ref.get("weighted", []):
+        params[name] = params.get(name, 1.0) * weight
+    return {"graph": ref["graph"], "output": ref.get("output", "color"), "params": params, "seed": ctx.seed}

@@ -1,0 +1,55 @@
+"""Select the simplest model that expresses the result ("model no more than a scene needs")."""
+
+from __future__ import annotations
+
+from ..diagnostics import warning
+from ..state import Context, MaterialState
+
+
+def select_model(state: MaterialState, ctx: Context) -> MaterialState:
+    settings = ctx.settings
+    base = _base_model(state, settings)
+    anisotropic = base != "diffuse" and state.params.get("anisotropy", 0.0) > 0
+    if base == "diffuse" and state.params.get("anisotropy", 0.0) > 0:
+        _warn_no_highlight(state)
+    state.model = {
+        "base": base,
+        "distribution": _distribution(base, anisotropic, settings),
+        "anisotropic": anisotropic,
+        "coat": state.coat is not None,
+        "diffuse": _diffuse_lobe(state, base, settings),
+    }
+    return state
+
+
+def _base_model(state, settings) -> str:
+    if state.kind in ("conductor", "glass"):
+        return state.kind
+    rough = state.params.get("roughness", 1.0)
+    if rough >= settings.get("diffuse_threshold", 0.85) and state.coat is None:
+        return "diffuse"
+    return "dielectric"
+
+
+def _distribution(base: str, anisotropic: bool, settings) -> str | None:
+    if base == "diffuse":
+        return None
+    if anisotropic:
+        return settings.get("anisotropic_distribution", "ward")
+    return "ggx"
+
+
+def _diffuse_lobe(state, base: str, settings) -> str | None:
+    if base not in ("diffuse", "dielectric"):
+        return None
+    sigma = state.params.get("diffuse_roughness", 0.0)
+    return "oren_nayar" if sigma > settings.get("oren_nayar_threshold", 0.05) else "lambert"
+
+
+def _warn_no_highlight(state) -> None:
+    steps = state.provenance.get("anisotropy", [])
+    spans = [s for s in steps if s["words"]]
+    word = spans[-1]["words"][-1] if spans else "anisotropy"
+    state.diagnostics.append(warning(None, "W108", f"'{word}' stretches the highlight, but this {state.noun.key} "
+                                     "is matte and has none: anisotropy is not modelled",
+                                     ("make it glossier for a visible highlight",)))

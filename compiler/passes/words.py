@@ -1,0 +1,203 @@
+"""Apply the describing groups in phrase order: adverb weights, adjectives, colours.
+
+"lightly brushed, blue anodized aluminum": brushed at weight 0.5 (roughness * 1.1, anisotropic,
+a normal map), then anodized (roughness = 0.3) whose colour 'blue' goes to the base colour.
+"""
+
+from __future__ import annotations
+
+from .. import ast
+from ..diagnostics import warning
+from ..formulas import apply_op, describe
+from ..state import Context, MaterialState
+from .base import _map_ref
+from .colours import colour_text, resolve_colour
+
+
+def group_weight(group: ast.Group, ctx: Context) -> float:
+    weight = 1.0
+    for adverb in group.adverbs:
+        weight *= ctx.lexicon.entry("adverbs", adverb.key).get("weight")
+    return weight
+
+
+def apply_groups(state: MaterialState, ctx: Context) -> MaterialState:
+    for group in state.selection.groups:
+        apply_group(state, ctx, group, target="base")
+    return state
+
+
+def apply_group(state: MaterialState, ctx: Context, group: ast.Group, target: str) -> None:
+    if any(w.unknown for w in _group_words(group)):
+        return  # already reported as an unknown word
+    if group.kind == "dangling":
+        _warn_dangling(state, group)
+        return
+    weight = group_weight(group, ctx)
+    if group.kind == "colour":
+        apply_colour(state, ctx, group.colours[0], group.adverbs, target, weight)
+        return
+    adjective = ctx.lexicon.entry("adjectives", group.adjectives[0].key)
+    apply_adjective(state, ctx, adjective, group, weight, target)
+
+
+def _group_words(group: ast.Group):
+    yield from group.adverbs
+    for c in group.colours:
+        yield from c.words
+    yield from group.adjectives
+
+
+def _warn_dangling(state: MaterialState, group: ast.Group) -> None:
+    text = " ".join(w.text for w in group.adverbs)
+    state.diagnostics.append(warning(group.span, "W103", f"'{text}' has nothing to modify",
+                                     ("put an adjective after it, e.g. 'lightly brushed'",)))
+
+
+def apply_colour(state, ctx, c: ast.Colour, adverbs, target: str, weight: float) -> None:
+    param, holder = _colour_slot(state, target)
+    current = holder.get(param)
+    rgb = resolve_colour(c, ctx, start=current)
+    if weight != 1.0 and current is not None:
+        rgb = apply_op("set", current, rgb, weight)
+    _warn_second_colour(state, param if target == "base" else "coat.color", c)
+    holder[param] = rgb
+    state.note(param if target == "base" else "coat.color", rgb, f"colours: {colour_text(c)}", (*adverbs, *c.words))
+
+
+def _colour_slot(state, target: str):
+    if target == "coat" and state.coat is not None:
+        return "color", state.coat
+    return "base_color", state.params
+
+
+def _warn_second_colour(state, param: str, c: ast.Colour) -> None:
+    earlier = [s for s in state.provenance.get(param, []) if s["rule"].startswith("colours: ")]
+    if earlier and c.base is not None:
+        state.diagnostics.append(warning(c.span, "W105", f"a second colour for the {param.replace('_', ' ')}: "
+                                         f"'{earlier[-1]['words'][-1]}' is replaced by '{colour_text(c)}'",
+                                         ("use 'or' for alternatives: 'red or blue plastic'",)))
+
+
+def apply_adjective(state, ctx, adjective, group: ast.Group, weight: float, target: str) -> None:
+    word = group.adjectives[0]
+    if not _applies(state, adjective, word):
+        return
+    _check_opposition(state, ctx, adjective, word)
+    state.applied.append((adjective.key, word))
+    words = (*group.adverbs, word)
+    holder = state.coat if target == "coat" and state.coat is not None else state.params
+    for effect in effects_for(adjective, state):
+        _apply_effect(state, holder, effect, weight, f"adjectives.{adjective.key}", words)
+    _apply_material(state, ctx, adjective, words)
+    _apply_maps(state, ctx, adjective, weight, words)
+    _apply_adjective_coat(state, ctx, adjective, words)
+    for c in group.colours:
+        _apply_qualifier(state, ctx, adjective, c, group.adverbs)
+
+
+def effects_for(adjective, state) -> list[dict]:
+    """The per-noun formula, else the per-class one, else the default (paper: brushed wood)."""
+    on = adjective.get("on", {})
+    noun = state.noun
+    return on.get(noun.key) or on.get(noun.get("class")) or adjective.get("effects", [])
+
+
+def _applies(state, adjective, word) -> bool:
+    classes = adjective.get("applies_to")
+    noun = state.noun
+    if not classes or noun.get("class") in classes or noun.key in classes:
+        return True
+    note = adjective.get("applies_note", f"it applies to {', '.join(classes)}")
+    state.diagnostics.append(warning(word.span, "W102", f"'{word.text}' does not apply to {noun.key}: {note}",
+                                     ("the word is ignored",)))
+    return False
+
+
+def _check_opposition(state, ctx, adjective, word) -> None:
+    for earlier_key, earlier in state.applied:
+        earlier_opposes = ctx.lexicon.entry("adjectives", earlier_key).get("opposes", [])
+        if earlier_key in adjective.get("opposes", []) or adjective.key in earlier_opposes:
+            state.diagnostics.append(warning(word.span, "W101", f"'{word.text}' contradicts '{earlier.text}'",
+                                             (f"both are applied in order, so '{word.text}' wins",)))
+
+
+def _apply_effect(state, holder, effect: dict, weight: float, rule: str, words) -> None:
+    param = effect["param"]
+    if param == "model":
+        _switch_kind(state, effect["value"], rule, words)
+        return
+    current = holder.get(param, 0.0 if param != "base_color" else [1.0, 1.0, 1.0])
+    value = apply_op(effect["op"], current, effect.get("value"), weight, effect.get("amount"))
+    holder[param] = value
+    name = param if holder is state.params else f"coat.{param}"
+    state.note(name, value, f"{rule}: {describe(effect, weight)}", words)
+
+
+def _switch_kind(state, kind: str, rule: str, words) -> None:
+    if state.kind == kind:
+        return
+    state.kind = kind
+    if kind != "conductor":
+        for param in ("eta", "k", "f0", "f82"):
+            state.params.pop(param, None)
+        if state.noun.get("model") == "conductor":
+            state.params["base_color"] = [0.8, 0.8, 0.8]
+    state.note("model", kind, f"{rule}: model = {kind}", words)
+
+
+def _apply_material(state, ctx, adjective, words) -> None:
+    if adjective.get("material"):
+        copy_optics(state, ctx, adjective.get("material"), f"adjectives.{adjective.key}.material", words)
+
+
+def copy_optics(state, ctx, noun_key: str, rule: str, words) -> bool:
+    metal = ctx.lexicon.entry("nouns", noun_key)
+    if metal is None or metal.get("model") != "conductor":
+        return False
+    state.kind = "conductor"
+    for param in ("eta", "k", "f0", "f82", "base_color"):
+        state.record(param, metal.get(param), f"{rule}: optics of {metal.key}", words, source=metal.get("source"))
+    return True
+
+
+def _apply_maps(state, ctx, adjective, weight, words) -> None:
+    for role, ref in adjective.get("maps", {}).items():
+        state.maps[role] = _map_ref(ref, ctx, weight)
+        state.note(f"maps.{role}", ref["graph"], f"adjectives.{adjective.key}.maps (weight {weight:g})", words)
+
+
+def _apply_adjective_coat(state, ctx, adjective, words) -> None:
+    if adjective.get("coat"):
+        apply_coat_entry(state, ctx, adjective.get("coat"), f"adjectives.{adjective.key}.coat", words)
+
+
+def apply_coat_entry(state, ctx, coat_key: str, rule: str, words) -> None:
+    entry = ctx.lexicon.entry("coats", coat_key)
+    state.coat = {k: v for k, v in entry.data.items() if k not in ("aliases", "doc", "example")}
+    state.coat["name"] = coat_key
+    state.note("coat", coat_key, rule, words)
+
+
+def _apply_qualifier(state, ctx, adjective, c: ast.Colour, adverbs) -> None:
+    """Where 'blue' in 'blue anodized' goes: base colour, coat colour, or a plating metal."""
+    target = adjective.get("colour_target", "base")
+    if target == "material" and c.base is not None and not c.shades:
+        if copy_optics(state, ctx, c.base.key, f"adjectives.{adjective.key}: {c.base.text}", (*adverbs, *c.words)):
+            return
+    if target == "coat" and state.coat is not None:
+        apply_colour(state, ctx, c, adverbs, "coat", 1.0)
+        pigment_base(state, ctx)
+        return
+    apply_colour(state, ctx, c, adverbs, "base", 1.0)
+
+
+def pigment_base(state, ctx) -> None:
+    """A coloured coat also tints what shows through it by the coat's pigment amount."""
+    pigment = state.coat.get("pigment", 0.0)
+    if pigment > 0 and "base_color" in state.params:
+        value = apply_op("blend", state.params["base_color"], state.coat["color"], 1.0, pigment)
+        words = [w for s in state.provenance.get("coat.color", [])[-1:] for w in s["words"]]
+        state.note("base_color", value, f"coats.{state.coat['name']}: pigment {pigment} of the coat colour", ())
+        state.params["base_color"] = value
+        state.provenance["base_color"][-1]["words"] = words

@@ -1,0 +1,57 @@
+"""The material being compiled: parameters, provenance and diagnostics, shared by the passes."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from . import ast
+from .lexicon import Entry, Lexicon
+
+NOUN_PARAMS = ("base_color", "roughness", "eta", "k", "f0", "f82", "ior", "diffuse_roughness")
+
+
+@dataclass
+class Context:
+    lexicon: Lexicon
+    seed: int = 0
+    filename: str = "<input>"
+
+    @property
+    def settings(self) -> dict:
+        return self.lexicon.settings
+
+
+@dataclass
+class MaterialState:
+    """Everything one material (one variant) accumulates on its way to the IR."""
+
+    name: str
+    phrase: str
+    selection: ast.Material
+    variant: dict | None = None
+    noun: Entry | None = None
+    kind: str = "dielectric"
+    params: dict = field(default_factory=dict)
+    coat: dict | None = None
+    maps: dict = field(default_factory=dict)
+    provenance: dict = field(default_factory=dict)
+    diagnostics: list = field(default_factory=list)
+    applied: list = field(default_factory=list)   # (adjective key, Word) in order
+    brackets: dict = field(default_factory=dict)  # refinement search state per target
+    model: dict | None = None
+
+    def record(self, param: str, value, rule: str, words=(), source: str | None = None) -> None:
+        """Set a parameter and remember which words and rule set it."""
+        self.params[param] = value
+        self.note(param, value, rule, words, source)
+
+    def note(self, param: str, value, rule: str, words=(), source: str | None = None) -> None:
+        step = {"rule": rule, "words": [w.text for w in words], "keys": [w.key for w in words],
+                "spans": [w.span.as_list() for w in words], "value": value}
+        if source:
+            step["source"] = source
+        self.provenance.setdefault(param, []).append(step)
+
+    def words_of(self, param: str) -> set[str]:
+        """Lexicon keys of the words that set `param` (for 'darker blue')."""
+        return {w for step in self.provenance.get(param, []) for w in step.get("keys", [])}
