@@ -78,8 +78,12 @@ def _phrase(material: ast.Material) -> str:
 def analyze(doc: ast.Document, ctx: Context) -> tuple[list[MaterialState], list]:
     """All material states of a document, and every diagnostic, sorted by position."""
     diags = list(doc.diagnostics)
+    bad_lines = {d.span.line for d in diags if d.is_error and d.span}
     states, used = [], set()
     for material, refinements in attach_refinements(doc):
+        if material.span.line in bad_lines:
+            continue  # reported already; half-understood materials are not emitted
+        refinements = [r for r in refinements if r.span.line not in bad_lines]
         states += build_states(material, refinements, ctx, material_name(material, used), diags)
     diags = list(doc.diagnostics[len(diags):]) + diags
     for state in states:

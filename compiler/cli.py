@@ -3,16 +3,12 @@
 from __future__ import annotations
 
 import argparse
-import json
 import sys
-from dataclasses import asdict
+
+from .errors import UsageError
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 STAGES = ("tokens", "ast", "ir")
-
-
-class UsageError(Exception):
-    """A problem with how cnlmc was called (exit 2)."""
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -6,7 +6,8 @@ import json
 import sys
 from dataclasses import asdict
 
-from .cli import EXIT_ERRORS, EXIT_OK, UsageError, read_source
+from .cli import EXIT_ERRORS, EXIT_OK, read_source
+from .errors import UsageError
 from .diagnostics import render
 
 

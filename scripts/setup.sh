@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Installs cnlmc from nothing on Debian/Ubuntu: system libraries (Mesa llvmpipe for OpenGL on
+# the CPU, glslang, neovim for the editor test) when run as root, then a virtual environment.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export DEBIAN_FRONTEND=noninteractive
+if command -v apt-get >/dev/null 2>&1 && [ "$(id -u)" = 0 ]; then
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends \
+    libegl1 libgl1 libegl-mesa0 libgl1-mesa-dri libatomic1 glslang-tools spirv-tools neovim >/dev/null
+fi
+python3 -m venv .venv
+.venv/bin/python -m pip install -q -U pip
+.venv/bin/python -m pip install -q -e '.[all]'

@@ -1,0 +1,88 @@
+"""The CLI end to end, as a user runs it: exit codes, stdout/stderr, files."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+
+def cnlmc(*args, stdin=None):
+    return subprocess.run([sys.executable, "-m", "cnlmc", *args], input=stdin,
+                          capture_output=True, text=True, timeout=60)
+
+
+def test_compile_to_ir_on_stdout():
+    r = cnlmc("compile", str(EXAMPLES / "anodized.cnl"), "--target", "ir")
+    assert r.returncode == 0, r.stderr
+    ir = json.loads(r.stdout)
+    assert ir["ir_version"] == 1
+    assert [m["name"] for m in ir["materials"]] == ["hull", "deck"]
+
+
+def test_compile_from_stdin_to_a_file(tmp_path):
+    out = tmp_path / "m.json"
+    r = cnlmc("compile", "-", "-o", str(out), stdin="polished brass\n")
+    assert r.returncode == 0
+    assert json.loads(out.read_text())["materials"][0]["name"] == "polished_brass"
+
+
+def test_errors_exit_1_and_write_nothing(tmp_path):
+    out = tmp_path / "m.json"
+    out.write_text("previous")
+    r = cnlmc("compile", "-", "-o", str(out), stdin="polished brasz\n")
+    assert r.returncode == 1
+    assert "<stdin>:1:10: error[E001]: unknown word 'brasz'" in r.stderr
+    assert "did you mean 'brass'?" in r.stderr
+    assert out.read_text() == "previous"
+    assert "Traceback" not in r.stderr
+
+
+def test_unknown_target_is_a_usage_error_with_did_you_mean():
+    r = cnlmc("compile", "-", "--target", "i", stdin="steel")
+    assert r.returncode == 2
+    assert "unknown target 'i'" in r.stderr
+
+
+def test_missing_file_is_a_usage_error():
+    r = cnlmc("compile", "no/such/file.cnl")
+    assert r.returncode == 2
+    assert "cannot read 'no/such/file.cnl'" in r.stderr
+
+
+def test_binary_input_is_refused_cleanly():
+    r = subprocess.run([sys.executable, "-m", "cnlmc", "compile", "-"], input=b"\x00\xff\xfe",
+                       capture_output=True, timeout=60)
+    assert r.returncode == 2
+    assert b"not a text file" in r.stderr and b"Traceback" not in r.stderr
+
+
+def test_emit_tokens_and_ast():
+    r = cnlmc("compile", "-", "--emit", "tokens", stdin="gold plated steel")
+    assert r.stdout.splitlines()[0] == "1:1\tCOLOR|NOUN\tgold"
+    r = cnlmc("compile", "-", "--emit", "ast", stdin="gold plated steel")
+    ast = json.loads(r.stdout)
+    assert ast[0]["node"] == "Material" and ast[0]["nouns"][0]["key"] == "steel"
+
+
+def test_explain_lists_words_and_rules():
+    r = cnlmc("explain", "-", "--lexicon", "paper", stdin="lightly brushed aluminum")
+    assert r.returncode == 0
+    assert "adjectives.brushed: roughness *= 1.2 (weight 0.5)" in r.stdout
+    assert "lightly brushed" in r.stdout
+
+
+def test_unknown_overlay_is_a_usage_error():
+    r = cnlmc("compile", "-", "--lexicon", "papr", stdin="steel")
+    assert r.returncode == 2
+    assert "no lexicon overlay named 'papr' (available: paper)" in r.stderr
+
+
+@pytest.mark.parametrize("text", ["", "\n\n", "# only a comment\n", "   "])
+def test_empty_input_compiles_to_nothing(text):
+    r = cnlmc("compile", "-", stdin=text)
+    assert r.returncode == 0
+    assert json.loads(r.stdout)["materials"] == []

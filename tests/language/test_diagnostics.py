@@ -1,0 +1,94 @@
+"""Every problem is a value with a span; the CLI renders it word for word."""
+
+from cnlmc.diagnostics import render
+
+
+def diags(result):
+    return [(d.code, d.span.line if d.span else None, d.span.col if d.span else None, d.message)
+            for d in result.diagnostics]
+
+
+def test_misspelling_says_did_you_mean(compile_text):
+    r = compile_text("brushed aluminim")
+    d = r.diagnostics[0]
+    assert (d.code, d.span.line, d.span.col) == ("E001", 1, 9)
+    assert d.message == "unknown word 'aluminim'"
+    assert d.hints == ("did you mean 'aluminium' or 'aluminum'?",)
+
+
+def test_rendered_with_file_line_col_source_and_caret(compile_text):
+    src = "# hull\nlightly brushed, blue anodized aluminim\n"
+    r = compile_text(src)
+    assert render(r.diagnostics[0], src, "hull.cnl") == (
+        "hull.cnl:2:32: error[E001]: unknown word 'aluminim'\n"
+        "   2 | lightly brushed, blue anodized aluminim\n"
+        "     |                                ^~~~~~~~\n"
+        "     = did you mean 'aluminium' or 'aluminum'?")
+
+
+def test_all_errors_of_a_file_are_reported(compile_text):
+    r = compile_text("brushd steel\nglossy\npolished brass\nsteel brushed\n")
+    assert [(c, line) for c, line, _col, _m in diags(r)] == [("E001", 1), ("E003", 2), ("E002", 4)]
+    assert not r.ok
+    assert [m["name"] for m in r.materials] == ["polished_brass"]  # the good line still compiles
+
+
+def test_word_in_the_wrong_place(compile_text):
+    r = compile_text("aluminum brushed")
+    d = r.diagnostics[0]
+    assert d.message == "'brushed' cannot stand here"
+    assert d.hints[-1] == "describing words come before the noun: 'brushed aluminum', not 'aluminum brushed'"
+
+
+def test_no_noun(compile_text):
+    d = compile_text("lightly brushed").diagnostics[0]
+    assert (d.code, d.message) == ("E003", "this phrase names no material: end it with a noun")
+
+
+def test_contradiction_warns(compile_text):
+    r = compile_text("polished rough steel")
+    assert r.ok
+    assert diags(r) == [("W101", 1, 10, "'rough' contradicts 'polished'")]
+
+
+def test_word_that_does_not_apply_warns_and_is_ignored(compile_text):
+    r = compile_text("anodized wood")
+    assert diags(r) == [("W102", 1, 1, "'anodized' does not apply to wood: anodizing is for metals")]
+    assert r.materials[0]["params"]["roughness"] == 0.6  # unchanged
+
+
+def test_modifier_with_nothing_to_modify_warns(compile_text):
+    r = compile_text("lightly steel")
+    assert diags(r) == [("W103", 1, 1, "'lightly' has nothing to modify")]
+
+
+def test_refinement_without_material_warns(compile_text):
+    r = compile_text("darker\nsteel")
+    assert diags(r)[0] == ("W104", 1, 1, "a refinement needs a material above it")
+
+
+def test_refinement_of_something_absent(compile_text):
+    r = compile_text("steel\nstronger brushing")
+    assert diags(r) == [("W104", 2, 1, "'brushing' is not part of this material")]
+    r = compile_text("steel\nless grain")
+    assert diags(r) == [("W106", 2, 1, "'grain' has nothing to act on: steel has no procedural map")]
+
+
+def test_clamped_value_warns_with_its_words(compile_text):
+    r = compile_text("intensely rough stone")
+    d = [x for x in r.diagnostics if x.code == "W107"][0]
+    assert d.message == "roughness 1.6 is outside [0.0, 1.0] and was clamped to 1"
+    assert d.hints == ("set by: stone intensely rough",)
+
+
+def test_second_colour_warns(compile_text):
+    r = compile_text("red blue plastic")
+    assert [c for c, *_ in diags(r)] == ["W105"]
+    assert r.materials[0]["params"]["base_color"] == [0.0, 0.0, 1.0]
+
+
+def test_numbers_and_symbols_are_reported_not_crashed_on(compile_text):
+    r = compile_text("50% rusty iron @")
+    assert [m for *_x, m in diags(r)] == [
+        "numbers are not part of the language: '50%' (describe the look in words)",
+        "unexpected character '@'"]
