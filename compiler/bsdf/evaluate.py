@@ -32,10 +32,10 @@ from .alpha import alpha_from_roughness, clamp_alpha
 from .diffuse import lambert, oren_nayar
 from .fresnel import (f0_conductor, f0_from_ior, fresnel_average, fresnel_conductor,
                       fresnel_dielectric, fresnel_f82, fresnel_schlick)
-from .geometry import as_dirs, cos_theta, dir_from_mu, dot, half_vector, rotate_tangent
+from .geometry import as_dirs, cos_theta, dir_from_mu, half_vector, rotate_tangent
 from .integrate import albedo_mis
 from .layered import coated
-from .microfacet import microfacet_reflection
+from .microfacet import half_angle_cos, microfacet_reflection
 from .multiscatter import multiscatter_lobe
 from .ward import ward
 
@@ -103,7 +103,7 @@ def specular_lobe(material: dict, wo, wi, fresnel, ward_form: str = "gmd"):
     """D·V·F of the material's distribution (GGX or Ward), F a callable of wo·h."""
     ax, ay = material_alpha(material)
     if material["model"].get("distribution") == "ward":
-        f = fresnel(np.clip(dot(wo, half_vector(wo, wi)), 0.0, 1.0))
+        f = fresnel(half_angle_cos(wo, wi, half_vector(wo, wi)))
         lobe = ward(wo, wi, ax, ay, 1.0, ward_form)
         return lobe[..., None] * f if np.ndim(f) > np.ndim(lobe) else lobe * f
     return microfacet_reflection(wo, wi, ax, ay, fresnel)

@@ -117,6 +117,12 @@ def ggx_visibility(wo, wi, ax, ay):
     return np.where(mask, safe_div(1.0, np.where(mask, den, 1.0)), 0.0)
 
 
+def half_angle_cos(wo, wi, h):
+    """cos θd = wo·h = wi·h, computed as (wo·h + wi·h)/2 so it is bitwise symmetric
+    in wo, wi (exact reciprocity in floating point), clipped to [0, 1]."""
+    return np.clip(0.5 * (dot(wo, h) + dot(wi, h)), 0.0, 1.0)
+
+
 def is_mirror(ax, ay):
     """True where the lobe is a perfect mirror: max(αx, αy) < ALPHA_MIRROR."""
     return np.maximum(ax, ay) < ALPHA_MIRROR
@@ -155,8 +161,7 @@ def microfacet_reflection(wo, wi, ax, ay, fresnel=1.0):
     h = half_vector(wo, wi)
     dv = ggx_d(h, ax_c, ay_c) * ggx_visibility(wo, wi, ax_c, ay_c)
     dv = np.where(mirror, 0.0, dv)
-    cos_d = np.clip(dot(wo, h), 0.0, 1.0)
-    return _times_fresnel(dv, _fresnel_values(fresnel, cos_d))
+    return _times_fresnel(dv, _fresnel_values(fresnel, half_angle_cos(wo, wi, h)))
 
 
 def mirror_reflectance(wo, fresnel=1.0):
