@@ -19,7 +19,7 @@ from .lexicon import Lexicon
 from .spans import line_span
 
 TOKEN_RE = re.compile(r"[^\W\d_](?:[\w'’\-]*\w)?|\d+(?:\.\d+)?%?|[,;:&]|\S", re.UNICODE)
-OPEN_TAGS = ("ADV", "SHADE", "COLOR", "ADJ", "COAT", "NOUN", "PROP", "REFINE")
+OPEN_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "REFINE")
 TAG_PREFERENCE = {t: i for i, t in enumerate(("NAME", "COLON", "ARTICLE", "AND", "OR", "WITH", "COMMA", *OPEN_TAGS))}
 
 
