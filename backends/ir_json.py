@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import json
 
+from .capabilities import ALL_FEATURES, EmitResult
 from .registry import Artifact
 
 NAME = "ir"
 DESCRIPTION = "the intermediate representation as JSON (docs/ir.md)"
-CAPABILITIES = {"diffuse": "exact", "dielectric": "exact", "conductor": "exact", "glass": "exact",
-                "anisotropic": "exact", "coat": "exact", "maps": "exact"}
+CAPABILITIES = {feature: ("exact", "the IR is the source of truth") for feature in ALL_FEATURES}
 
 
-def emit(ir: dict, options: dict) -> list[Artifact]:
-    return [Artifact("materials.ir.json", json.dumps(ir, indent=2, ensure_ascii=False) + "\n")]
+def emit(ir: dict, options: dict) -> EmitResult:
+    return EmitResult([Artifact("materials.ir.json", json.dumps(ir, indent=2, ensure_ascii=False) + "\n")])

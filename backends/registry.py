@@ -13,6 +13,10 @@ from importlib.metadata import entry_points
 
 BUILTIN_BACKENDS = {
     "ir": "cnlmc.backends.ir_json",
+    "glsl": "cnlmc.backends.glsl",
+    "materialx": "cnlmc.backends.materialx",
+    "usd": "cnlmc.backends.usd",
+    "mitsuba": "cnlmc.backends.mitsuba",
 }
 
 
@@ -39,8 +43,16 @@ def available() -> dict[str, str]:
     return table
 
 
+class TargetUnavailable(LookupError):
+    """The target exists but cannot load here (a missing optional dependency)."""
+
+
 def get_backend(name: str):
     table = available()
     if name not in table:
         raise UnknownTarget(name, sorted(table))
-    return importlib.import_module(table[name])
+    try:
+        return importlib.import_module(table[name])
+    except ImportError as exc:
+        raise TargetUnavailable(f"target '{name}' cannot load: {exc}; "
+                                f"install it with: pip install 'cnlmc[{name}]'") from None

@@ -37,10 +37,10 @@ def _parse_options(pairs) -> dict:
 
 def compile_cmd(args) -> int:
     from .api import compile_source
-    from cnlmc.backends.registry import UnknownTarget, get_backend
+    from cnlmc.backends.registry import TargetUnavailable, UnknownTarget, get_backend
     try:
         backend = get_backend(args.target)
-    except UnknownTarget as exc:
+    except (UnknownTarget, TargetUnavailable) as exc:
         raise UsageError(str(exc)) from None
     source, name = read_source(args.file)
     lexicon = _lexicon(args)
@@ -51,8 +51,25 @@ def compile_cmd(args) -> int:
     if not result.ok:
         return EXIT_ERRORS
     options = {**_parse_options(args.option), "seed": args.seed}
-    artifacts = backend.emit(result.ir, options)
-    return _deliver(artifacts, args.output)
+    emitted = _run_backend(backend, result.ir, options)
+    if emitted is None:
+        return EXIT_ERRORS
+    return _deliver(emitted.artifacts, args.output)
+
+
+def _run_backend(backend, ir, options):
+    """Emit; approximation notes become warnings, a refusal an error (exit 1)."""
+    from cnlmc.backends.capabilities import BackendRefused
+    try:
+        emitted = backend.emit(ir, options)
+    except BackendRefused as exc:
+        print(f"error[E201]: {exc}", file=sys.stderr)
+        return None
+    except ValueError as exc:
+        raise UsageError(str(exc)) from None
+    for note in emitted.notes:
+        print(f"warning[{note.code}]: {note.text()}", file=sys.stderr)
+    return emitted
 
 
 def _deliver(artifacts, output) -> int:
