@@ -9,7 +9,6 @@ from __future__ import annotations
 import difflib
 import importlib
 from dataclasses import dataclass
-from importlib.metadata import entry_points
 
 BUILTIN_BACKENDS = {
     "ir": "cnlmc.backends.ir_json",
@@ -36,10 +35,12 @@ class UnknownTarget(LookupError):
         super().__init__(f"unknown target '{name}' (known: {', '.join(known)}){hint}")
 
 
-def available() -> dict[str, str]:
+def available(include_plugins: bool = True) -> dict[str, str]:
     table = dict(BUILTIN_BACKENDS)
-    for ep in entry_points(group="cnlmc.backends"):
-        table.setdefault(ep.name, ep.value)
+    if include_plugins:
+        from importlib.metadata import entry_points  # slow to import: only when asked
+        for ep in entry_points(group="cnlmc.backends"):
+            table.setdefault(ep.name, ep.value)
     return table
 
 
@@ -48,7 +49,7 @@ class TargetUnavailable(LookupError):
 
 
 def get_backend(name: str):
-    table = available()
+    table = available(include_plugins=name not in BUILTIN_BACKENDS)
     if name not in table:
         raise UnknownTarget(name, sorted(table))
     try:

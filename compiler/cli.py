@@ -25,6 +25,13 @@ def build_parser() -> argparse.ArgumentParser:
     expl = sub.add_parser("explain", help="show every parameter and the words and rules that set it")
     _common(expl)
     sub.add_parser("targets", help="list the available targets")
+    sub.add_parser("lsp", help="run the language server on stdio (for editors)")
+    bake = sub.add_parser("bake", help="bake a material's procedural maps to image files")
+    _common(bake)
+    bake.add_argument("-o", "--output", required=True, help="output folder")
+    bake.add_argument("--size", type=int, default=1024, help="map size in pixels (default 1024)")
+    bake.add_argument("--format", default="png8", choices=["png8", "png16", "exr-half", "exr-float"],
+                      help="image format (default png8)")
     return parser
 
 
@@ -68,7 +75,7 @@ def main(argv=None) -> int:
 def _run(args) -> int:
     from . import commands
     handler = {"compile": commands.compile_cmd, "explain": commands.explain_cmd,
-               "targets": commands.targets_cmd}[args.command]
+               "targets": commands.targets_cmd, "lsp": commands.lsp_cmd, "bake": commands.bake_cmd}[args.command]
     return handler(args)
 
 

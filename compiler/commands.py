@@ -121,3 +121,25 @@ def targets_cmd(args) -> int:
     for name, module in sorted(available().items()):
         print(f"{name:<10} {module}")
     return EXIT_OK
+
+
+def lsp_cmd(args) -> int:
+    try:
+        from .lsp_server import main as serve
+    except ImportError as exc:
+        raise UsageError(f"the language server cannot load: {exc}; install it with: pip install 'cnlmc[lsp]'") from None
+    serve()
+    return EXIT_OK
+
+
+def bake_cmd(args) -> int:
+    from .api import compile_source
+    from .bake import bake_materials
+    source, name = read_source(args.file)
+    result = compile_source(source, name, _lexicon(args), args.seed)
+    _report(result, source, name)
+    if not result.ok:
+        return EXIT_ERRORS
+    for path in bake_materials(result.ir, args.output, args.size, args.format, args.seed):
+        print(f"wrote {path}", file=sys.stderr)
+    return EXIT_OK

@@ -59,10 +59,12 @@ def midpoint(a, b):
 
 
 def rounded(value, digits: int = 6):
-    if isinstance(value, float):
+    """Floats rounded to `digits` decimals (and -0.0 made 0.0) so output is stable and small."""
+    kind = type(value)
+    if kind is float:
         return round(value, digits) + 0.0
-    if isinstance(value, list):
-        return [rounded(v, digits) for v in value]
-    if isinstance(value, dict):
+    if kind is list:
+        return [round(v, digits) + 0.0 if type(v) is float else rounded(v, digits) for v in value]
+    if kind is dict:
         return {k: rounded(v, digits) for k, v in value.items()}
     return value

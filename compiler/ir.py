@@ -25,7 +25,7 @@ def material_ir(state: MaterialState, convention: str) -> dict:
         "model": model,
         "params": rounded(_params(state, model, convention)),
         "maps": rounded(state.maps),
-        "provenance": rounded(_provenance(state)),
+        "provenance": _provenance(state),
     }
 
 
@@ -54,8 +54,13 @@ def _coat(coat: dict, convention: str) -> dict:
 
 
 def _provenance(state: MaterialState) -> dict:
-    return {param: [{k: v for k, v in step.items() if k != "keys"} for step in steps]
-            for param, steps in state.provenance.items()}
+    return {param: [_step(step) for step in steps] for param, steps in state.provenance.items()}
+
+
+def _step(step: dict) -> dict:
+    out = {k: v for k, v in step.items() if k != "keys"}
+    out["value"] = rounded(step["value"])
+    return out
 
 
 def document_ir(materials: list[dict], diagnostics: list, source_name: str, lexicon_sources) -> dict:

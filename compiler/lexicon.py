@@ -7,13 +7,10 @@ earlier one does not set are kept, so an overlay can change one number of a noun
 
 from __future__ import annotations
 
-import tomllib
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
-
-from rapidfuzz import fuzz, process
 
 from .colour import hex_to_linear
 from .lexicon_schema import LexiconError, check_entry
@@ -49,6 +46,7 @@ class Lexicon:
     """Entries by category, an index of surface forms, inflection rules and settings."""
 
     def __init__(self, entries: dict, settings: dict, inflections: list, sources: list[str]):
+        self.keywords = keyword_table()
         self.entries = entries
         self.settings = settings
         self.inflections = inflections
@@ -56,6 +54,13 @@ class Lexicon:
         self.forms = _index_forms(entries)
         self.max_form_words = max(len(f) for f in self.forms)
         self._suggest_pool = {}
+        self.tag_memo = {}  # word tuple -> candidate tags (filled by the tagger)
+
+    def multi_word_starts(self) -> set[str]:
+        """First words of multi-word forms ("stainless" of "stainless steel")."""
+        if getattr(self, "_multi_first", None) is None:
+            self._multi_first = {form[0] for form in self.forms if len(form) > 1}
+        return self._multi_first
 
     def entry(self, category: str, key: str) -> Entry | None:
         return self.entries.get(category, {}).get(key)
@@ -73,6 +78,7 @@ class Lexicon:
 
     def suggest(self, word: str, categories=None, limit: int = 3) -> list[str]:
         """Closest surface forms to `word`, best first (rapidfuzz ratio >= 70)."""
+        from rapidfuzz import fuzz, process  # only needed when a word is unknown
         pool = self._pool(tuple(categories or CATEGORY_TAGS))
         found = process.extract(word.lower(), pool, scorer=fuzz.ratio, limit=limit, score_cutoff=70)
         return [match for match, _score, _i in found]
@@ -100,8 +106,17 @@ def _index_forms(entries: dict) -> dict:
 
 
 def _schema() -> dict:
+    import tomllib
     text = resources.files("cnlmc.stdlib").joinpath("schema.toml").read_text("utf-8")
     return tomllib.loads(text)
+
+
+def keyword_table() -> dict[str, str]:
+    """Closed-class words -> grammar terminal, from grammar/keywords.toml."""
+    import tomllib
+    text = resources.files("cnlmc.grammar").joinpath("keywords.toml").read_text("utf-8")
+    table = tomllib.loads(text)["terminals"]
+    return {word: terminal for terminal, words in table.items() for word in words}
 
 
 def _category_of(stem: str) -> str | None:
@@ -112,6 +127,7 @@ def _category_of(stem: str) -> str | None:
 
 
 def _read_toml(path) -> dict:
+    import tomllib
     try:
         return tomllib.loads(path.read_text("utf-8"))
     except tomllib.TOMLDecodeError as exc:
@@ -224,4 +240,12 @@ def load_lexicon(user_paths=(), overlay: str | None = None) -> Lexicon:
 
 @lru_cache(maxsize=8)
 def cached_lexicon(user_paths: tuple = (), overlay: str | None = None) -> Lexicon:
-    return load_lexicon(user_paths, overlay)
+    """The lexicon, from the on-disk cache when no source file changed since it was written."""
+    from .cache import cached
+    folders = [Path(p) for p in user_paths]
+    if overlay and overlay != "stdlib":
+        folders.append(Path(str(overlay_folder(overlay))))
+    folders.append(Path(str(stdlib_folder())))
+    sources = [Path(str(resources.files("cnlmc.stdlib").joinpath("schema.toml")))]
+    sources += [p for folder in folders if folder.is_dir() for p in sorted(folder.glob("*.toml"))]
+    return cached("lexicon", sources, lambda: load_lexicon(user_paths, overlay))

@@ -42,10 +42,26 @@ class _Lexer(Lexer):
         yield from tokens
 
 
+def _grammar_cache_path(grammar: str):
+    """Where lark keeps the built LALR tables for this grammar text (rebuilt when it changes)."""
+    import hashlib
+    from .cache import cache_dir
+    import os
+    folder = cache_dir()
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError:
+        return False
+    if os.environ.get("CNLMC_NO_CACHE") or not os.access(folder, os.W_OK):
+        return False
+    return str(folder / f"grammar-{hashlib.sha256(grammar.encode()).hexdigest()[:16]}.lark-cache")
+
+
 @lru_cache(maxsize=1)
 def lark_parser() -> Lark:
     grammar = resources.files("cnlmc.grammar").joinpath("cnl.lark").read_text("utf-8")
-    return Lark(grammar, parser="lalr", lexer=_Lexer, propagate_positions=False, maybe_placeholders=False)
+    return Lark(grammar, parser="lalr", lexer=_Lexer, propagate_positions=False, maybe_placeholders=False,
+                cache=_grammar_cache_path(grammar))
 
 
 def _token(t: Tagged, tag: str) -> Token:

@@ -91,6 +91,10 @@ class TreeToAst:
         return ast.RefineItem(word, target, self.span_of(tree))
 
     def span_of(self, tree: Tree) -> Span:
-        toks = [t for t in tree.scan_values(lambda v: isinstance(v, Token))]
-        first, last = self.words[toks[0].start_pos].span, self.words[toks[-1].start_pos].span
-        return first.to(last)
+        return self._edge(tree, 0).to(self._edge(tree, -1))
+
+    def _edge(self, node, index: int) -> Span:
+        """The span of the first (index 0) or last (-1) token under a node."""
+        while isinstance(node, Tree):
+            node = node.children[index]
+        return self.words[node.start_pos].span

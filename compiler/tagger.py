@@ -9,10 +9,7 @@ candidate tags ("gold": colour or noun); the parser picks the one the grammar ac
 from __future__ import annotations
 
 import re
-import tomllib
 from dataclasses import dataclass
-from functools import lru_cache
-from importlib import resources
 
 from .diagnostics import did_you_mean, error
 from .lexicon import Lexicon
@@ -38,14 +35,6 @@ class Tagged:
     unknown: bool = False
 
 
-@lru_cache(maxsize=1)
-def keyword_table() -> dict[str, str]:
-    """Closed-class words -> terminal name, from grammar/keywords.toml."""
-    text = resources.files("cnlmc.grammar").joinpath("keywords.toml").read_text("utf-8")
-    table = tomllib.loads(text)["terminals"]
-    return {word: terminal for terminal, words in table.items() for word in words}
-
-
 def raw_tokens(line: str) -> list[tuple[str, int]]:
     """(text, 0-based column) of each word or punctuation mark; '#' starts a comment."""
     out = []
@@ -59,7 +48,9 @@ def raw_tokens(line: str) -> list[tuple[str, int]]:
 class Tagger:
     def __init__(self, lexicon: Lexicon):
         self.lexicon = lexicon
-        self.keywords = keyword_table()
+        self.keywords = lexicon.keywords
+        self.multi_first = lexicon.multi_word_starts()
+        self.memo = lexicon.tag_memo
 
     def tag_line(self, line: str, line_no: int, offset: int):
         """Return (tagged words, diagnostics) for one line of source."""
@@ -85,7 +76,8 @@ class Tagger:
         return colon + 1
 
     def _tag_at(self, raw, i, line_no, offset, tagged, diags) -> int:
-        for n in range(min(self.lexicon.max_form_words, len(raw) - i), 0, -1):
+        longest = self.lexicon.max_form_words if raw[i][0].lower() in self.multi_first else 1
+        for n in range(min(longest, len(raw) - i), 0, -1):
             words = tuple(t.lower() for t, _c in raw[i:i + n])
             candidates = self._candidates(words)
             if candidates:
@@ -95,6 +87,12 @@ class Tagger:
         return 1
 
     def _candidates(self, words: tuple[str, ...]) -> tuple[Candidate, ...]:
+        cached = self.memo.get(words)
+        if cached is None:
+            cached = self.memo[words] = self._find_candidates(words)
+        return cached
+
+    def _find_candidates(self, words: tuple[str, ...]) -> tuple[Candidate, ...]:
         found = self._exact(words)
         if not found and len(words) == 1:
             for base in self.lexicon.base_forms(words[0]):

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 from ..diagnostics import warning
+from ..graphs import graph_params
 from ..state import Context, MaterialState
 from ..spans import Span
 
@@ -29,6 +30,9 @@ def check_ranges(state: MaterialState, ctx: Context) -> MaterialState:
     if state.coat is not None:
         for param, (low, high) in COAT_RANGES.items():
             _check(state, state.coat, param, f"coat.{param}", low, high)
+    for role, ref in state.maps.items():
+        for param, (low, high, _default) in graph_params(ref["graph"]).items():
+            _check(state, ref["params"], param, f"maps.{role}.{param}", low, high)
     return state
 
 

@@ -13,6 +13,7 @@ from .. import ast
 from ..colour import saturate
 from ..diagnostics import warning
 from ..formulas import apply_op, invert_op, midpoint
+from ..graphs import graph_params
 from ..state import Context, MaterialState
 from .words import effects_for
 
@@ -111,15 +112,19 @@ def _refine_property(state, ctx, prop, item, direction) -> None:
 
 def _refine_map_param(state, prop, item, direction) -> None:
     name = prop.get("map_param")
-    if not state.maps:
+    roles = [role for role, ref in state.maps.items() if name in graph_params(ref["graph"])]
+    if not roles:
+        what = "no procedural map" if not state.maps else f"no map with '{name}'"
         state.diagnostics.append(warning(item.span, "W106", f"'{prop.key}' has nothing to act on: "
-                                         f"{state.noun.key} has no procedural map",
+                                         f"{state.noun.key} has {what}",
                                          ("maps come from words such as 'wood', 'marble', 'brushed' or 'rusty'",)))
         return
     up, down = _step_fns(prop.get("step"))
-    for role, ref in state.maps.items():
+    for role in roles:
+        ref = state.maps[role]
         key = f"maps.{role}.{name}"
-        new = bracket_move(state, key, ref["params"].get(name, 1.0), direction, up, down)
+        default = graph_params(ref["graph"])[name][2]
+        new = bracket_move(state, key, ref["params"].get(name, default), direction, up, down)
         ref["params"][name] = new
         state.note(key, new, f"refinements.{item.word.key} {prop.key}: bracket step", _item_words(item))
 

@@ -1,0 +1,102 @@
+"""Phrase -> IR latency in-process, next to lark's raw parse of the same phrase, and the cold CLI.
+
+Run: .venv/bin/python bench/language_bench.py
+Prints median and p99 per stage and phrases/s; the peer is lark's own LALR parse of the
+already-tagged tokens (the floor for any parser built on lark).
+"""
+
+from __future__ import annotations
+
+import os
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from cnlmc.api import compile_source, lexicon_for
+from cnlmc.parser import _token, lark_parser, parse_tagged
+from cnlmc.tagger import Tagger
+
+PHRASES = [
+    "aluminum", "anodized aluminum", "blue anodized aluminum", "lightly brushed, blue anodized aluminum",
+    "white varnished oak", "oak with a glossy white varnish", "red or blue anodized aluminum",
+    "heavily rusted iron", "polished white marble", "matte black rubber", "gold plated steel",
+    "brushed and anodized titanium", "frosted glass", "deep red velvet", "metallic red car paint",
+]
+
+
+RAW_GRAMMAR = r"""
+start: item+
+item: WORD | ","
+WORD: /[^\W\d_][\w'-]*/
+%ignore /\s+/
+"""
+
+
+def raw_text_parser():
+    """lark parsing the phrase text itself with its own lexer: the peer a lark user would write."""
+    from lark import Lark
+    return Lark(RAW_GRAMMAR, parser="lalr")
+
+
+def timed(fn, repeat: int) -> list[float]:
+    out = []
+    for _ in range(repeat):
+        t = time.perf_counter()
+        fn()
+        out.append(time.perf_counter() - t)
+    return out
+
+
+def p99(xs):
+    return sorted(xs)[int(0.99 * (len(xs) - 1))]
+
+
+def in_process(repeat: int = 300) -> dict:
+    lexicon = lexicon_for()
+    tagger, parser, raw = Tagger(lexicon), lark_parser(), raw_text_parser()
+    compile_times, parse_times, raw_times = [], [], []
+    for phrase in PHRASES:
+        compile_source(phrase, "bench", lexicon)  # warm caches
+        tagged, _ = tagger.tag_line(phrase, 1, 0)
+        _tree, chosen = parse_tagged(tagged)
+        tokens = [_token(t, chosen[t.span.start].tag) for t in tagged]
+        compile_times += timed(lambda: compile_source(phrase, "bench", lexicon), repeat)
+        parse_times += timed(lambda: parser.parse(tokens), repeat)
+        raw_times += timed(lambda: raw.parse(phrase), repeat)
+    return {"compile": compile_times, "parse": parse_times, "raw": raw_times}
+
+
+def cold_cli(runs: int = 7) -> list[float]:
+    """A new process per run, as a user's shell starts it: bytecode cached (as pip installs do),
+    lexicon and grammar tables cached after the first run."""
+    example = Path(__file__).resolve().parents[1] / "examples" / "anodized.cnl"
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    command = [sys.executable, "-m", "cnlmc", "compile", str(example), "--target", "ir"]
+    subprocess.run(command, check=True, capture_output=True, env=env)  # writes bytecode and caches
+    times = []
+    for _ in range(runs):
+        t = time.perf_counter()
+        subprocess.run(command, check=True, capture_output=True, env=env)
+        times.append(time.perf_counter() - t)
+    return times
+
+
+def main() -> None:
+    stats = in_process()
+    med_c, med_p = statistics.median(stats["compile"]), statistics.median(stats["parse"])
+    print(f"{'stage':<32}{'median':>12}{'p99':>12}")
+    print(f"{'phrase -> IR (cnlmc)':<32}{med_c * 1e6:>10.1f}us{p99(stats['compile']) * 1e6:>10.1f}us")
+    print(f"{'lark LALR parse of the tokens':<32}{med_p * 1e6:>10.1f}us{p99(stats['parse']) * 1e6:>10.1f}us")
+    med_r = statistics.median(stats["raw"])
+    print(f"{'lark LALR parse of the raw text':<32}{med_r * 1e6:>10.1f}us{p99(stats['raw']) * 1e6:>10.1f}us")
+    print(f"ratio phrase->IR / lark raw-text parse: {med_c / med_r:.2f}x   "
+          f"/ parse of tagged tokens: {med_c / med_p:.2f}x   phrases/s: {1 / med_c:,.0f}")
+    cold = cold_cli()
+    print(f"cold `cnlmc compile --target ir` wall time: median {statistics.median(cold) * 1e3:.0f} ms, "
+          f"min {min(cold) * 1e3:.0f} ms over {len(cold)} runs")
+
+
+if __name__ == "__main__":
+    main()

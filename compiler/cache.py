@@ -1,0 +1,55 @@
+"""A small on-disk cache for derived data (the parsed lexicon), keyed by its source files.
+
+The key is the names, sizes and modification times of the source files plus the cnlmc
+version; any change rebuilds. Unreadable or stale cache files are ignored, never trusted.
+Set CNLMC_NO_CACHE=1 to bypass it. The folder is $XDG_CACHE_HOME/cnlmc (or ~/.cache/cnlmc).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import pickle
+import tempfile
+from pathlib import Path
+
+from . import __version__
+
+
+def cache_dir() -> Path:
+    base = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
+    return Path(base) / "cnlmc"
+
+
+def _key(kind: str, sources) -> str:
+    digest = hashlib.sha256(f"{kind}:{__version__}".encode())
+    for path in sources:
+        st = path.stat()
+        digest.update(f"{path}:{st.st_size}:{st.st_mtime_ns}".encode())
+    return digest.hexdigest()[:32]
+
+
+def cached(kind: str, sources, build):
+    """build() once per distinct set of source files; later calls read the pickle."""
+    if os.environ.get("CNLMC_NO_CACHE"):
+        return build()
+    path = cache_dir() / f"{kind}-{_key(kind, sources)}.pickle"
+    try:
+        with open(path, "rb") as handle:
+            return pickle.load(handle)
+    except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError):
+        pass
+    value = build()
+    _store(path, value)
+    return value
+
+
+def _store(path: Path, value) -> None:
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
+        with os.fdopen(fd, "wb") as handle:
+            pickle.dump(value, handle, protocol=pickle.HIGHEST_PROTOCOL)
+        os.replace(tmp, path)
+    except OSError:
+        pass  # a read-only home is fine: we just rebuild next time

@@ -1,0 +1,191 @@
+"""`cnlmc lsp`: the language server over stdio, a thin adapter over the compiler.
+
+Every answer comes from the compiler: diagnostics from `compile_source` (block by block,
+see lsp/incremental.py), completion from the LALR parser's `accepts()` and the lexicon,
+hover from the lexicon and `explain`. Never print to stdout here: it is the LSP channel.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import logging
+from concurrent.futures import ThreadPoolExecutor
+
+from lsprotocol import types
+from pygls.lsp.server import LanguageServer
+
+from .api import lexicon_for
+from .lsp import actions, colours, completion, hover, inlay, tokens
+from .lsp.diagnostics import all_to_lsp
+from .lsp.incremental import Analyzer, Cancelled
+
+DEFAULT_DEBOUNCE_MS = 120
+log = logging.getLogger("cnlmc.lsp")
+
+
+class CnlServer(LanguageServer):
+    """Holds the analyzer, the settings, and per-document debounce state."""
+
+    def __init__(self):
+        super().__init__("cnlmc", "0.1.0")
+        self.analyzer = Analyzer(lexicon_for())
+        self.worker = ThreadPoolExecutor(max_workers=1, thread_name_prefix="cnlmc-analysis")
+        self.debounce_ms = DEFAULT_DEBOUNCE_MS
+        self.inlay_hints = True
+        self.generation: dict[str, int] = {}
+        self.pending: dict[str, asyncio.Task] = {}
+        self.snapshots: dict = {}
+
+    @property
+    def encoding(self) -> str:
+        kind = self.workspace.position_encoding
+        return str(getattr(kind, "value", kind) or "utf-16")
+
+    def apply_settings(self, settings) -> None:
+        if not isinstance(settings, dict):
+            return
+        settings = settings.get("cnlmc", settings)
+        if isinstance(settings.get("debounceMs"), (int, float)):
+            self.debounce_ms = max(0, settings["debounceMs"])
+        if isinstance(settings.get("inlayHints"), bool):
+            self.inlay_hints = settings["inlayHints"]
+
+    def text_of(self, uri: str) -> str | None:
+        if uri not in self.generation:
+            return None
+        return self.workspace.get_text_document(uri).source
+
+    async def snapshot(self, uri: str):
+        """The analysis of the document's current text (cached; computed on the worker thread)."""
+        text = self.text_of(uri)
+        if text is None:
+            return None
+        known = self.snapshots.get(uri)
+        if known is not None and known.text == text and known.index.encoding == self.encoding:
+            return known
+        loop = asyncio.get_running_loop()
+        snap = await loop.run_in_executor(self.worker, self.analyzer.analyse, text, self.encoding)
+        self.snapshots[uri] = snap
+        return snap
+
+    def schedule(self, uri: str) -> None:
+        """Debounce: a newer edit cancels the waiting run and makes a running one stop early."""
+        self.generation[uri] = self.generation.get(uri, 0) + 1
+        waiting = self.pending.pop(uri, None)
+        if waiting is not None:
+            waiting.cancel()
+        self.pending[uri] = asyncio.ensure_future(self.publish_later(uri, self.generation[uri]))
+
+    async def publish_later(self, uri: str, generation: int) -> None:
+        if self.debounce_ms:
+            await asyncio.sleep(self.debounce_ms / 1000)
+        text = self.text_of(uri)
+        if text is None:
+            return
+        current = lambda: self.generation.get(uri) == generation  # noqa: E731
+        loop = asyncio.get_running_loop()
+        try:
+            snap = await loop.run_in_executor(self.worker, self.analyzer.analyse, text, self.encoding, current)
+        except Cancelled:
+            return
+        except Exception:  # a compiler bug must not take the editor's server down
+            log.exception("analysis failed for %s", uri)
+            return
+        if not current():
+            return
+        self.snapshots[uri] = snap
+        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=all_to_lsp(snap, uri)))
+
+
+server = CnlServer()
+
+
+@server.feature(types.INITIALIZE)
+def on_initialize(ls: CnlServer, params: types.InitializeParams):
+    ls.apply_settings(params.initialization_options or {})
+
+
+@server.feature(types.WORKSPACE_DID_CHANGE_CONFIGURATION)
+def on_configuration(ls: CnlServer, params: types.DidChangeConfigurationParams):
+    ls.apply_settings(params.settings or {})
+
+
+@server.feature(types.TEXT_DOCUMENT_DID_OPEN)
+def did_open(ls: CnlServer, params: types.DidOpenTextDocumentParams):
+    ls.schedule(params.text_document.uri)
+
+
+@server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
+def did_change(ls: CnlServer, params: types.DidChangeTextDocumentParams):
+    ls.schedule(params.text_document.uri)
+
+
+@server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
+def did_close(ls: CnlServer, params: types.DidCloseTextDocumentParams):
+    uri = params.text_document.uri
+    waiting = ls.pending.pop(uri, None)
+    if waiting is not None:
+        waiting.cancel()
+    ls.generation.pop(uri, None)
+    ls.snapshots.pop(uri, None)
+    ls.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+
+
+@server.feature(types.TEXT_DOCUMENT_HOVER)
+async def on_hover(ls: CnlServer, params: types.HoverParams):
+    snap = await ls.snapshot(params.text_document.uri)
+    return hover.hover(snap, params.position, ls.analyzer.lexicon) if snap else None
+
+
+@server.feature(types.TEXT_DOCUMENT_COMPLETION,
+                types.CompletionOptions(trigger_characters=[" ", ","], resolve_provider=False))
+async def on_completion(ls: CnlServer, params: types.CompletionParams):
+    snap = await ls.snapshot(params.text_document.uri)
+    if snap is None:
+        return None
+    return completion.complete(snap, params.position, ls.analyzer.lexicon)
+
+
+@server.feature(types.TEXT_DOCUMENT_CODE_ACTION,
+                types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))
+async def on_code_action(ls: CnlServer, params: types.CodeActionParams):
+    snap = await ls.snapshot(params.text_document.uri)
+    if snap is None:
+        return None
+    return actions.quick_fixes(snap, params.text_document.uri, params.range, ls.analyzer.lexicon)
+
+
+@server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL, tokens.LEGEND)
+async def on_semantic_tokens(ls: CnlServer, params: types.SemanticTokensParams):
+    snap = await ls.snapshot(params.text_document.uri)
+    if snap is None:
+        return types.SemanticTokens(data=[])
+    return tokens.semantic_tokens(snap, ls.analyzer.lexicon)
+
+
+@server.feature(types.TEXT_DOCUMENT_DOCUMENT_COLOR)
+async def on_document_colour(ls: CnlServer, params: types.DocumentColorParams):
+    snap = await ls.snapshot(params.text_document.uri)
+    return colours.document_colours(snap, ls.analyzer.lexicon) if snap else []
+
+
+@server.feature(types.TEXT_DOCUMENT_COLOR_PRESENTATION)
+async def on_colour_presentation(ls: CnlServer, params: types.ColorPresentationParams):
+    return colours.presentations(params.color, params.range, ls.analyzer.lexicon)
+
+
+@server.feature(types.TEXT_DOCUMENT_INLAY_HINT)
+async def on_inlay_hints(ls: CnlServer, params: types.InlayHintParams):
+    if not ls.inlay_hints:
+        return []
+    snap = await ls.snapshot(params.text_document.uri)
+    return inlay.inlay_hints(snap, params.range) if snap else []
+
+
+def main() -> None:
+    logging.basicConfig(level=logging.WARNING, format="cnlmc-lsp %(levelname)s %(message)s")  # stderr
+    server.start_io()
+
+
+if __name__ == "__main__":
+    main()
