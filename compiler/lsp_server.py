@@ -82,6 +82,7 @@ class CnlServer(LanguageServer):
         text = self.text_of(uri)
         if text is None:
             return
+        version = self.workspace.get_text_document(uri).version
         current = lambda: self.generation.get(uri) == generation  # noqa: E731
         loop = asyncio.get_running_loop()
         try:
@@ -94,7 +95,8 @@ class CnlServer(LanguageServer):
         if not current():
             return
         self.snapshots[uri] = snap
-        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=all_to_lsp(snap, uri)))
+        self.text_document_publish_diagnostics(
+            types.PublishDiagnosticsParams(uri=uri, diagnostics=all_to_lsp(snap, uri), version=version))
 
 
 server = CnlServer()
@@ -171,7 +173,9 @@ async def on_document_colour(ls: CnlServer, params: types.DocumentColorParams):
 
 @server.feature(types.TEXT_DOCUMENT_COLOR_PRESENTATION)
 async def on_colour_presentation(ls: CnlServer, params: types.ColorPresentationParams):
-    return colours.presentations(params.color, params.range, ls.analyzer.lexicon)
+    snap = await ls.snapshot(params.text_document.uri)
+    replaces = colours.is_colour_range(snap, params.range) if snap else True
+    return colours.presentations(params.color, params.range, ls.analyzer.lexicon, replaces)
 
 
 @server.feature(types.TEXT_DOCUMENT_INLAY_HINT)

@@ -1,0 +1,1 @@
+"""The language server's helpers: thin adapters from compiler results to LSP values."""

@@ -1,0 +1,97 @@
+"""Document colours: swatches for colour phrases and materials' base colours; the colour
+picker's answer is the nearest phrase ("dark slate blue") from the lexicon's colours and shades."""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+from lsprotocol import types
+
+from ..colour import linear_to_srgb, srgb_to_linear
+from ..passes.colours import resolve_colour, shade
+from ..state import Context
+
+MAX_PRESENTATIONS = 3
+
+
+def swatch(rgb) -> types.Color:
+    red, green, blue = (linear_to_srgb(c) for c in rgb)
+    return types.Color(red=red, green=green, blue=blue, alpha=1.0)
+
+
+def document_colours(snapshot, lexicon) -> list[types.ColorInformation]:
+    ctx = Context(lexicon)
+    out = []
+    for line in range(len(snapshot.index.lines)):
+        for phrase, start, end in snapshot.colours_on(line):
+            if phrase.base is not None:
+                out.append(types.ColorInformation(snapshot.index.range_of(line, start, end),
+                                                  swatch(resolve_colour(phrase, ctx))))
+        out += material_swatches(snapshot, line)
+    return out
+
+
+def material_swatches(snapshot, line: int) -> list[types.ColorInformation]:
+    """The resolved base colour of the material on `line`, shown on its noun."""
+    materials = snapshot.materials_on(line)
+    nouns = [(w, col) for w, col in snapshot.words_on(line) if w.category == "nouns"]
+    if not materials or not nouns or "base_color" not in materials[0]["params"]:
+        return []
+    out = []
+    for (word, col), material in zip(nouns, materials):
+        where = snapshot.index.range_of(line, col, col + len(word.text))
+        out.append(types.ColorInformation(where, swatch(material["params"]["base_color"])))
+    return out
+
+
+def _lab(rgb) -> tuple[float, float, float]:
+    """CIE L*a*b* (D65) of a linear Rec.709 colour: distances there match what people see."""
+    r, g, b = rgb
+    x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047
+    y = 0.2126 * r + 0.7152 * g + 0.0722 * b
+    z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883
+    fx, fy, fz = (t ** (1 / 3) if t > 0.008856 else 7.787 * t + 16 / 116 for t in (x, y, z))
+    return 116 * fy - 16, 500 * (fx - fy), 200 * (fy - fz)
+
+
+@lru_cache(maxsize=4)
+def phrase_table(lexicon) -> tuple:
+    """(phrase, Lab) for every named colour and every shade of it."""
+    table = []
+    shades = lexicon.all_of("shades")
+    for key, entry in lexicon.all_of("colours").items():
+        rgb = list(entry.get("rgb"))
+        table.append((key, _lab(rgb)))
+        for shade_key, shade_entry in shades.items():
+            table.append((f"{shade_key} {key}", _lab(shade(list(rgb), shade_entry.get("ops")))))
+    return tuple(table)
+
+
+def nearest_phrases(color: types.Color, lexicon, limit: int = MAX_PRESENTATIONS) -> list[str]:
+    target = _lab([srgb_to_linear(c) for c in (color.red, color.green, color.blue)])
+    ranked = sorted(phrase_table(lexicon), key=lambda row: sum((a - b) ** 2 for a, b in zip(row[1], target)))
+    return [phrase for phrase, _lab_value in ranked[:limit]]
+
+
+def presentations(color: types.Color, where: types.Range, lexicon, replaces_colour: bool = True):
+    """Colour picker answers: the nearest phrases, replacing the colour words (or, on a noun's
+    swatch, inserted before the noun)."""
+    out = []
+    for phrase in nearest_phrases(color, lexicon):
+        if replaces_colour:
+            edit = types.TextEdit(where, phrase)
+        else:
+            edit = types.TextEdit(types.Range(where.start, where.start), phrase + " ")
+        out.append(types.ColorPresentation(label=phrase, text_edit=edit))
+    return out
+
+
+def is_colour_range(snapshot, where: types.Range) -> bool:
+    """Whether a swatch range covers colour words (not a material's noun)."""
+    line = where.start.line
+    if line >= len(snapshot.index.lines):
+        return True
+    found = snapshot.index.line_col(where.start)
+    return any(start == found[1] for _phrase, start, _end in snapshot.colours_on(line)) or not any(
+        col == found[1] and w.category == "nouns" for w, col in snapshot.words_on(line))
+

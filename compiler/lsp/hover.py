@@ -1,0 +1,62 @@
+"""Hover: a word's lexicon doc and effects; a material line's resolved material (as `explain`)."""
+
+from __future__ import annotations
+
+from lsprotocol import types
+
+from ..colour import linear_to_hex
+from ..explain import explain_material
+from .entries import entry_markdown
+from .lines import line_words, word_at
+
+
+def hover(snapshot, position: types.Position, lexicon) -> types.Hover | None:
+    found = snapshot.index.line_col(position)
+    if found is None:
+        return None
+    line, col = found
+    word = word_at(line_words(snapshot, line, lexicon), col)
+    sections = []
+    if word is not None:
+        sections.append(word_section(word, lexicon))
+    sections += [material_section(m) for m in line_materials(snapshot, line)]
+    sections = [s for s in sections if s]
+    if not sections:
+        return None
+    where = snapshot.index.range_of(line, word.start, word.end) if word else None
+    return types.Hover(types.MarkupContent(types.MarkupKind.Markdown, "\n\n---\n\n".join(sections)), where)
+
+
+def line_materials(snapshot, line: int) -> list[dict]:
+    """The materials a line describes; a refinement line shows the material it refines."""
+    on_line = snapshot.materials_on(line)
+    if on_line:
+        return on_line
+    item, block = snapshot.item_on(line)
+    if item is None or type(item).__name__ != "Refinement":
+        return []
+    return list(block.result.materials)
+
+
+def word_section(word, lexicon) -> str:
+    if word.category == "unknown":
+        suggestions = lexicon.suggest(word.text) if word.text[:1].isalpha() else []
+        hint = f" — did you mean {', '.join(repr(s) for s in suggestions)}?" if suggestions else ""
+        return f"**{word.text}** — not in the lexicon{hint}"
+    entry = lexicon.entry(word.category, word.key)
+    if entry is not None:
+        return entry_markdown(entry, word.text)
+    if word.category == "name":
+        return f"**{word.text}** — material name"
+    return ""
+
+
+def material_section(material: dict) -> str:
+    params = material["params"]
+    summary = [f"**{material['name']}**"]
+    if "base_color" in params:
+        summary.append(f"colour `{linear_to_hex(params['base_color'])}`")
+    if "roughness" in params:
+        summary.append(f"roughness {params['roughness']:.3g}")
+    table = "\n".join(explain_material(material))
+    return " · ".join(summary) + f"\n\n```text\n{table}\n```"

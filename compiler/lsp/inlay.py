@@ -1,0 +1,33 @@
+"""Inlay hints: the resolved roughness and colour after each material line."""
+
+from __future__ import annotations
+
+from lsprotocol import types
+
+from ..colour import linear_to_hex
+
+
+def material_label(material: dict) -> str:
+    params = material["params"]
+    parts = []
+    if "roughness" in params:
+        parts.append(f"roughness {params['roughness']:.3g}")
+    if "base_color" in params:
+        parts.append(linear_to_hex(params["base_color"]))
+    label = " · ".join(parts) or material["model"]["base"]
+    variant = material.get("variant")
+    return f"{variant['name']}: {label}" if variant else label
+
+
+def inlay_hints(snapshot, where: types.Range) -> list[types.InlayHint]:
+    out = []
+    last = min(where.end.line, len(snapshot.index.lines) - 1)
+    for line in range(max(0, where.start.line), last + 1):
+        materials = snapshot.materials_on(line)
+        if not materials:
+            continue
+        item, block = snapshot.item_on(line)
+        at = snapshot.index.position(block.offset + item.span.end) if item else snapshot.index.line_end(line)
+        label = "→ " + " | ".join(material_label(m) for m in materials)
+        out.append(types.InlayHint(position=at, label=label, padding_left=True))
+    return out

@@ -1,0 +1,57 @@
+"""The words of one source line with the category each one has: the parser's choice where the
+line parses, else the tagger's first candidate. Shared by hover, tokens, colours and actions."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..tagger import TOKEN_RE, Tagger
+
+
+@dataclass(frozen=True)
+class LineWord:
+    start: int        # character columns on the line, half-open
+    end: int
+    text: str
+    category: str     # lexicon category, 'name', 'keyword', 'punct' or 'unknown'
+    key: str
+    tags: tuple       # every candidate tag the tagger found
+
+
+def tag_text(text: str, lexicon):
+    """Tagged words of a line, with spans whose offsets are the columns on that line."""
+    tagged, _diags = Tagger(lexicon).tag_line(text, 1, 0)
+    return tagged
+
+
+def line_words(snapshot, line: int, lexicon) -> list[LineWord]:
+    text = snapshot.index.lines[line]
+    chosen = {col: word for word, col in snapshot.words_on(line)}
+    out = []
+    for t in tag_text(text, lexicon):
+        start, end = t.span.start, t.span.end
+        tags = tuple(c.tag for c in t.candidates)
+        if start in chosen and not chosen[start].unknown:
+            word = chosen[start]
+            out.append(LineWord(start, end, t.text, word.category, word.key, tags))
+        elif t.unknown or not t.candidates:
+            out.append(LineWord(start, end, t.text, "unknown", "", tags))
+        else:
+            first = t.candidates[0]
+            out.append(LineWord(start, end, t.text, first.category, first.key, tags))
+    return out
+
+
+def word_at(words: list[LineWord], col: int) -> LineWord | None:
+    for word in words:
+        if word.start <= col <= word.end:
+            return word
+    return None
+
+
+def comment_start(text: str) -> int | None:
+    """The column of the '#' that starts a comment on the line, if any."""
+    for match in TOKEN_RE.finditer(text):
+        if match.group() == "#":
+            return match.start()
+    return None
