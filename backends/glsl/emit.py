@@ -1,0 +1,98 @@
+"""One material -> the library form, the standalone pair and the JSON sidecar."""
+from __future__ import annotations
+
+import json
+
+from ..registry import Artifact
+from .options import GlslOptions
+from .plan import Plan, make_plan
+from .render import PROFILES, multiscatter_tables, render, snippet
+
+#: form option -> which artifacts it writes.
+FORM_PARTS = {"library": ("library",), "standalone": ("standalone",), "both": ("library", "standalone")}
+#: Attributes and uniforms of the standalone pair (besides the material's own).
+STANDALONE_ATTRIBUTES = {"in_position": "vec3", "in_normal": "vec3", "in_tangent": "vec3", "in_uv": "vec2"}
+STANDALONE_UNIFORMS = {
+    "cnlm_model": ("mat4", "object to world"),
+    "cnlm_normal_matrix": ("mat3", "inverse transpose of the model matrix's upper 3x3"),
+    "cnlm_view_projection": ("mat4", "world to clip"),
+    "cnlm_camera_position": ("vec3", "world-space eye position"),
+    "cnlm_light_direction": ("vec3", "world-space direction towards the light (default (0.4, 0.6, 0.7))"),
+    "cnlm_light_radiance": ("vec3", "linear radiance of the light (default 3)"),
+    "cnlm_ambient_radiance": ("vec3", "constant ambient radiance (default 0.05)"),
+}
+
+
+def model_summary(plan: Plan) -> str:
+    parts = [plan.base]
+    if plan.distribution:
+        parts.append(plan.distribution + (" anisotropic" if plan.anisotropic else ""))
+    if plan.diffuse:
+        parts.append(plan.diffuse)
+    if plan.fresnel:
+        parts.append(f"fresnel {plan.fresnel}")
+    if plan.coat:
+        parts.append("coat" + (" (tinted)" if plan.coat_color else ""))
+    if plan.multiscatter:
+        parts.append("multiscatter")
+    if plan.maps:
+        parts.append("maps: " + ", ".join(plan.maps))
+    return " + ".join(parts)
+
+
+def library_context(material: dict, plan: Plan, options: GlslOptions) -> dict:
+    profile = PROFILES[options.profile]
+    return {"name": material["name"], "phrase": material.get("phrase", ""),
+            "model_summary": model_summary(plan), "options": options.as_dict(), "plan": plan,
+            "uniforms": plan.uniforms, "samplers": plan.samplers,
+            "precision": profile["precision"], "initializers": profile["initializers"],
+            "snippets": [snippet(name) for name in plan.snippets],
+            "ms": multiscatter_tables() if plan.multiscatter else None}
+
+
+def library_source(material: dict, options: GlslOptions) -> tuple[str, Plan]:
+    """The library form of one material (no #version line) and its plan."""
+    plan = make_plan(material, options)
+    template = "library.glsl.j2" if options.specialize else "uber.glsl.j2"
+    return render(template, **library_context(material, plan, options)), plan
+
+
+def standalone_sources(material: dict, library: str, options: GlslOptions) -> tuple[str, str]:
+    profile = PROFILES[options.profile]
+    common = {"name": material["name"], "version": profile["version"], "precision": profile["precision"],
+              "initializers": profile["initializers"]}
+    frag = render("standalone.frag.j2", library=library, main_snippets=[snippet("srgb")], **common)
+    return frag, render("standalone.vert.j2", **common)
+
+
+def sidecar(material: dict, plan: Plan, options: GlslOptions, files: list[str]) -> dict:
+    maps = material.get("maps", {})
+    return {
+        "cnlmc_glsl": 1, "material": material["name"], "phrase": material.get("phrase", ""),
+        "model": material["model"], "options": options.as_dict(), "files": files,
+        "entry_points": ["vec3 cnlm_bsdf(vec3 n, vec3 t, vec3 v, vec3 l, vec2 uv)",
+                         "vec3 cnlm_bsdf(vec3 n, vec3 v, vec3 l, vec2 uv)"],
+        "returns": "BRDF f, linear Rec.709 RGB, not multiplied by cos(theta_l)",
+        "uniforms": [{"name": u.name, "type": u.type, "value": u.value} for u in plan.uniforms],
+        "samplers": [{"name": s.name, "role": s.role, "colour_space": s.colour_space, "doc": s.doc,
+                      "map": maps.get(s.role)} for s in plan.samplers],
+        "standalone": {"output": "sRGB-encoded colour",
+                       "attributes": STANDALONE_ATTRIBUTES,
+                       "uniforms": {k: {"type": t, "doc": d} for k, (t, d) in STANDALONE_UNIFORMS.items()}},
+    }
+
+
+def emit_material(material: dict, options: GlslOptions) -> list[Artifact]:
+    name = material["name"]
+    library, plan = library_source(material, options)
+    parts = FORM_PARTS[options.form]
+    artifacts = []
+    if "library" in parts:
+        artifacts.append(Artifact(f"{name}.glsl", library))
+    if "standalone" in parts:
+        frag, vert = standalone_sources(material, library, options)
+        artifacts += [Artifact(f"{name}.frag", frag), Artifact(f"{name}.vert", vert)]
+    files = [a.name for a in artifacts]
+    meta = sidecar(material, plan, options, files)
+    artifacts.append(Artifact(f"{name}.glsl.json", json.dumps(meta, indent=2, ensure_ascii=False) + "\n"))
+    return artifacts

@@ -1,0 +1,218 @@
+"""What one material needs in GLSL: the model choices, snippets, uniforms and samplers.
+
+Everything model-specific is a table here; the templates only arrange what the plan lists.
+Values are taken with the reference library's own helpers (`cnlmc.bsdf`), so the shader
+and the ground truth share one reading of the IR (α clamping, coat α, F_avg).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from cnlmc.bsdf import f0_conductor, fresnel_average, material_alpha
+from cnlmc.bsdf.evaluate import coat_alpha, conductor_fresnel
+
+from .options import GlslOptions
+
+MICROFACET_BASES = ("dielectric", "conductor", "glass")
+#: The Fresnel mode a base actually uses: dielectrics have no F82 data (Schlick of the IOR).
+EFFECTIVE_FRESNEL = {
+    "conductor": {"exact": "exact", "schlick": "schlick", "f82": "f82"},
+    "dielectric": {"exact": "exact", "schlick": "schlick", "f82": "schlick"},
+    "glass": {"exact": "exact", "schlick": "schlick", "f82": "schlick"},
+    "diffuse": {"exact": None, "schlick": None, "f82": None},
+}
+#: Snippets of each Fresnel flavour (the binding `cnlm_base_fresnel` is in the template).
+FRESNEL_SNIPPETS = {
+    ("conductor", "exact"): ("fresnel_conductor",),
+    ("conductor", "schlick"): ("fresnel_schlick",),
+    ("conductor", "f82"): ("fresnel_schlick", "fresnel_f82"),
+    ("dielectric", "exact"): ("fresnel_dielectric",),
+    ("dielectric", "schlick"): ("fresnel_schlick",),
+    ("glass", "exact"): ("fresnel_dielectric",),
+    ("glass", "schlick"): ("fresnel_schlick",),
+}
+DISTRIBUTION_SNIPPETS = {("ggx", False): ("ggx_isotropic",), ("ggx", True): ("ggx_anisotropic",),
+                         ("ward", True): ("ward",), ("ward", False): ("ward",)}
+DIFFUSE_SNIPPETS = {"lambert": ("diffuse_lambert",), "oren_nayar": ("diffuse_oren_nayar",), None: ()}
+ALPHA_SNIPPETS = {"squared": ("alpha_squared",), "linear": ("alpha_linear",)}
+#: Sampler role -> (GLSL name, colour space / encoding, what the shader reads).
+SAMPLER_ROLES = {
+    "base_color": ("cnlm_map_base_color", "srgb",
+                   "RGB albedo/tint; upload as an sRGB texture (GL_SRGB8[_ALPHA8]) so texture() returns linear"),
+    "normal": ("cnlm_map_normal", "linear",
+               "tangent-space normal, OpenGL convention (+Y up the image), stored as n * 0.5 + 0.5"),
+    "roughness": ("cnlm_map_roughness", "linear", "perceptual roughness in the red channel"),
+    "mask": ("cnlm_map_mask", "linear",
+             "coverage in the red channel: blends the surface towards a Lambert lobe of the base colour"),
+}
+#: Roles the shader reads (others go through the capability table).
+SHADER_ROLES = tuple(SAMPLER_ROLES)
+
+
+@dataclass(frozen=True)
+class Uniform:
+    name: str
+    type: str
+    value: object  # float or list of floats
+
+
+@dataclass(frozen=True)
+class Sampler:
+    name: str
+    role: str
+    colour_space: str
+    doc: str
+
+
+@dataclass
+class Plan:
+    """The model choices of one material, as the templates read them."""
+
+    base: str
+    distribution: str | None
+    anisotropic: bool
+    diffuse: str | None
+    fresnel: str | None
+    coat: bool
+    coat_color: bool
+    multiscatter: bool
+    maps: tuple
+    alpha_convention: str
+    uber: bool = False
+    snippets: list = field(default_factory=list)
+    uniforms: list = field(default_factory=list)
+    samplers: list = field(default_factory=list)
+
+    @property
+    def microfacet(self) -> bool:
+        return self.base in MICROFACET_BASES
+
+    @property
+    def needs_tangent(self) -> bool:
+        return self.anisotropic or "normal" in self.maps
+
+    @property
+    def alpha_type(self) -> str:
+        return "vec2" if self.anisotropic else "float"
+
+
+def _rgb(value, default=(1.0, 1.0, 1.0)) -> list:
+    return [float(x) for x in np.broadcast_to(np.asarray(default if value is None else value, float), (3,))]
+
+
+def diffuse_kind(material: dict) -> str | None:
+    """Lambert or Oren-Nayar, by the same rule as the reference (σ > 0 for Oren-Nayar)."""
+    kind = material["model"].get("diffuse")
+    if kind == "oren_nayar" and not (material["params"].get("diffuse_roughness") or 0.0) > 0:
+        return "lambert"
+    return kind if material["model"]["base"] in ("diffuse", "dielectric") else None
+
+
+def has_coat(material: dict) -> bool:
+    return bool(material["model"].get("coat") and material["params"].get("coat"))
+
+
+def make_plan(material: dict, options: GlslOptions) -> Plan:
+    model, params = material["model"], material["params"]
+    base = model["base"]
+    coat = has_coat(material)
+    plan = Plan(base=base,
+                distribution=(model.get("distribution") or "ggx") if base in MICROFACET_BASES else None,
+                anisotropic=bool(model.get("anisotropic")) and base in MICROFACET_BASES,
+                diffuse=diffuse_kind(material),
+                fresnel=EFFECTIVE_FRESNEL[base][options.fresnel],
+                coat=coat,
+                coat_color=coat and any(abs(c - 1.0) > 1e-6 for c in _rgb(params["coat"].get("color"))),
+                multiscatter=options.multiscatter and base == "conductor",
+                maps=tuple(role for role in SHADER_ROLES if role in material.get("maps", {})),
+                alpha_convention=params.get("alpha_convention", "squared"))
+    plan.snippets = snippet_names(plan)
+    plan.uniforms = uniforms_for(plan, material)
+    plan.samplers = [Sampler(SAMPLER_ROLES[r][0], r, SAMPLER_ROLES[r][1], SAMPLER_ROLES[r][2]) for r in plan.maps]
+    return plan
+
+
+def snippet_names(plan: Plan) -> list[str]:
+    """Snippet files in dependency order, each once."""
+    names = ["common", "any_tangent"]
+    if plan.needs_tangent:
+        names.append("frame")
+    if plan.anisotropic:
+        names.append("rotate_tangent")
+    if "roughness" in plan.maps and plan.microfacet:
+        names += ALPHA_SNIPPETS[plan.alpha_convention]
+    if plan.microfacet:
+        names += FRESNEL_SNIPPETS[(plan.base, plan.fresnel)]
+        names += DISTRIBUTION_SNIPPETS[(plan.distribution, plan.anisotropic)]
+    names += DIFFUSE_SNIPPETS[plan.diffuse]
+    if "mask" in plan.maps:
+        names += DIFFUSE_SNIPPETS["lambert"]
+    if plan.coat:
+        names += ["fresnel_dielectric", "coat", "ggx_isotropic"]
+        if plan.coat_color:
+            names.append("coat_absorption")
+    if "normal" in plan.maps:
+        names.append("normal_map")
+    return list(dict.fromkeys(names))
+
+
+def _alpha_value(plan: Plan, material: dict):
+    ax, ay = (float(a) for a in material_alpha(material))
+    return [ax, ay] if plan.anisotropic else ax
+
+
+def _f0(params: dict) -> list:
+    if params.get("f0") is not None:
+        return _rgb(params["f0"])
+    return _rgb(f0_conductor(_rgb(params["eta"]), _rgb(params["k"])))
+
+
+def _multiscatter_favg(material: dict, fresnel: str) -> list:
+    coat = material["params"].get("coat") if has_coat(material) else None
+    outside = float(coat.get("ior", 1.5)) if coat else 1.0
+    return _rgb(fresnel_average(conductor_fresnel(material["params"], fresnel, outside)))
+
+
+def _coat_params(material: dict) -> dict:
+    return material["params"].get("coat") or {}
+
+
+#: uniform name -> (type, when it is needed, its value). Read by `uniforms_for`.
+UNIFORM_TABLE = {
+    "cnlm_base_color": ("vec3", lambda p: "base_color" not in p.maps,
+                        lambda m, p: _rgb(m["params"].get("base_color"))),
+    "cnlm_alpha": (None, lambda p: p.microfacet and "roughness" not in p.maps,  # float or vec2
+                   lambda m, p: _alpha_value(p, m)),
+    "cnlm_anisotropy": ("float", lambda p: p.anisotropic and "roughness" in p.maps,
+                        lambda m, p: float(m["params"].get("anisotropy", 0.0))),
+    "cnlm_anisotropy_rotation": ("float", lambda p: p.anisotropic,
+                                 lambda m, p: float(m["params"].get("anisotropy_rotation") or 0.0)),
+    "cnlm_eta": ("vec3", lambda p: p.base == "conductor" and p.fresnel == "exact",
+                 lambda m, p: _rgb(m["params"]["eta"])),
+    "cnlm_k": ("vec3", lambda p: p.base == "conductor" and p.fresnel == "exact",
+               lambda m, p: _rgb(m["params"]["k"])),
+    "cnlm_f0": ("vec3", lambda p: p.base == "conductor" and p.fresnel in ("schlick", "f82"),
+                lambda m, p: _f0(m["params"])),
+    "cnlm_f82": ("vec3", lambda p: p.base == "conductor" and p.fresnel == "f82",
+                 lambda m, p: _rgb(m["params"]["f82"])),
+    "cnlm_ior": ("float", lambda p: p.base in ("dielectric", "glass"),
+                 lambda m, p: float(m["params"].get("ior", 1.5))),
+    "cnlm_diffuse_roughness": ("float", lambda p: p.diffuse == "oren_nayar",
+                               lambda m, p: float(m["params"].get("diffuse_roughness") or 0.0)),
+    "cnlm_coat_ior": ("float", lambda p: p.coat, lambda m, p: float(_coat_params(m).get("ior", 1.5))),
+    "cnlm_coat_alpha": ("float", lambda p: p.coat,
+                        lambda m, p: float(coat_alpha(_coat_params(m), m["params"].get("alpha_convention",
+                                                                                          "squared"))[0])),
+    "cnlm_coat_color": ("vec3", lambda p: p.coat_color, lambda m, p: _rgb(_coat_params(m).get("color"))),
+    "cnlm_coat_thickness": ("float", lambda p: p.coat_color,
+                            lambda m, p: float(_coat_params(m).get("thickness") or 0.0)),
+    "cnlm_ms_favg": ("vec3", lambda p: p.multiscatter, lambda m, p: _multiscatter_favg(m, p.fresnel)),
+}
+
+
+def uniforms_for(plan: Plan, material: dict) -> list[Uniform]:
+    """The uniforms the plan's code reads, with the material's values."""
+    return [Uniform(name, gl_type or plan.alpha_type, value(material, plan))
+            for name, (gl_type, needed, value) in UNIFORM_TABLE.items() if needed(plan)]
