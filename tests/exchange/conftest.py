@@ -97,3 +97,13 @@ def all_sources() -> list[str]:
 def mx_library():
     from cnlmc.backends.materialx import standard_library
     return standard_library()
+
+
+def write_artifacts(artifacts, folder) -> None:
+    """Write artifacts as the CLI would (text as UTF-8), so relative texture paths resolve."""
+    from pathlib import Path
+    for artifact in artifacts:
+        path = Path(folder) / artifact.name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        data = artifact.content if isinstance(artifact.content, bytes) else artifact.content.encode("utf-8")
+        path.write_bytes(data)
