@@ -1,0 +1,345 @@
+"""The 'usd' target: a UsdShade Material per IR material (or per "or" group, with a VariantSet).
+
+Each material holds two networks: a UsdPreviewSurface network (what every viewer shows) on
+`outputs:surface`, and the MaterialX/OpenPBR network of the 'materialx' backend, written as
+UsdShade prims with `ND_*` ids, on `outputs:mtlx:surface`. Textures go through UsdUVTexture +
+UsdPrimvarReader_float2 ("st"). Format: `format=usda|usdc|usdz` (or the suffix of
+`output=PATH`); binary formats come back as bytes. `mesh=sphere` adds bound preview spheres.
+"""
+
+from __future__ import annotations
+
+import math
+import tempfile
+from pathlib import Path
+
+from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade
+
+from . import materialx as mtlx_backend
+from .capabilities import ALL_FEATURES, EmitResult, check_material
+from .materialx_params import (alpha_pair, alpha_to_roughness, bake_textures, capabilities_for, clip01,
+                               conductor_f0, exchange_options, identifier, rounded, unique_identifiers)
+from .registry import Artifact
+
+NAME = "usd"
+DESCRIPTION = "USD stage (.usda/.usdc/.usdz): UsdPreviewSurface + MaterialX OpenPBR networks, variants for 'or'"
+FORMATS = ("usda", "usdc", "usdz")
+OPTIONS = {"format": ("", ("",) + FORMATS), "output": ("", None), "mesh": ("none", ("none", "sphere")),
+           "surface": ("open_pbr_surface", mtlx_backend.SURFACES), "root": ("Root", None)}
+VARIANT_SET = "material"
+
+KEPT = "(the MaterialX network beside it keeps it)"
+BAKED = ("bake", "procedural graph baked to an image read by UsdUVTexture (st from UsdPrimvarReader_float2)")
+CAPABILITIES = {
+    "model.diffuse": ("exact", ""),
+    "model.dielectric": ("exact", ""),
+    "model.conductor": ("approximate", "UsdPreviewSurface metallic workflow: Schlick with diffuseColor = f0, no "
+                        "edge tint; the OpenPBR network carries the F82 tint"),
+    "model.glass": ("approximate", "UsdPreviewSurface: opacity 0 with ior, no refraction tint " + KEPT),
+    "distribution.ggx": ("exact", ""),
+    "distribution.ward": ("approximate", "no Ward lobe: GGX (anisotropic in the OpenPBR network, isotropic in the preview)"),
+    "anisotropic": ("drop", "UsdPreviewSurface has no anisotropy: isotropic roughness sqrt(sqrt(ax*ay)) " + KEPT),
+    "diffuse.oren_nayar": ("approximate", "UsdPreviewSurface is Lambertian; the OpenPBR network has base_diffuse_roughness"),
+    "coat": ("approximate", "UsdPreviewSurface clearcoat (fixed IOR 1.5, clearcoatRoughness); OpenPBR coat beside it"),
+    "coat.color": ("drop", "UsdPreviewSurface has no coat colour " + KEPT),
+    "maps.base_color": BAKED, "maps.roughness": BAKED, "maps.metallic": BAKED,
+    "maps.normal": ("bake", "baked tangent-space normals, UsdUVTexture scale 2 / bias -1 into normal"),
+    "maps.mask": ("drop", "a mask has no shading input of its own (the colour and roughness maps it drives are kept)"),
+}
+assert set(CAPABILITIES) == set(ALL_FEATURES)
+
+# MaterialX type -> Sdf value type, and how a MaterialX value becomes a USD value
+MX_TYPES = {
+    "float": (Sdf.ValueTypeNames.Float, float),
+    "integer": (Sdf.ValueTypeNames.Int, int),
+    "boolean": (Sdf.ValueTypeNames.Bool, bool),
+    "color3": (Sdf.ValueTypeNames.Color3f, lambda v: Gf.Vec3f(*v)),
+    "vector3": (Sdf.ValueTypeNames.Float3, lambda v: Gf.Vec3f(*v)),
+    "vector2": (Sdf.ValueTypeNames.Float2, lambda v: Gf.Vec2f(*v)),
+    "string": (Sdf.ValueTypeNames.String, str),
+    "filename": (Sdf.ValueTypeNames.Asset, lambda v: Sdf.AssetPath(str(v))),
+    "surfaceshader": (Sdf.ValueTypeNames.Token, None),
+}
+# texture role -> (UsdPreviewSurface input, type, UsdUVTexture output)
+PREVIEW_TEXTURES = {
+    "base_color": ("diffuseColor", Sdf.ValueTypeNames.Color3f, "rgb"),
+    "roughness": ("roughness", Sdf.ValueTypeNames.Float, "r"),
+    "metallic": ("metallic", Sdf.ValueTypeNames.Float, "r"),
+    "normal": ("normal", Sdf.ValueTypeNames.Normal3f, "rgb"),
+}
+SOURCE_COLOUR_SPACE = {"srgb": "sRGB", "linear": "raw", "raw": "raw"}
+
+
+# -------------------------------------------------------------------------- preview surface
+
+def preview_inputs(material: dict) -> dict[str, tuple]:
+    """IR material -> UsdPreviewSurface input -> (Sdf type, value)."""
+    model, params = material["model"], material["params"]
+    base = model["base"]
+    F, C, I = Sdf.ValueTypeNames.Float, Sdf.ValueTypeNames.Color3f, Sdf.ValueTypeNames.Int
+    colour = conductor_f0(params) if base == "conductor" else clip01(params["base_color"])
+    out = {"diffuseColor": (C, colour), "metallic": (F, 1.0 if base == "conductor" else 0.0)}
+    if base == "diffuse":      # no specular lobe: the specular workflow with black specular
+        out.update(useSpecularWorkflow=(I, 1), specularColor=(C, [0.0, 0.0, 0.0]), roughness=(F, 1.0))
+    else:
+        ax, ay = alpha_pair(params)
+        out["roughness"] = (F, alpha_to_roughness(math.sqrt(ax * ay)))
+        if "ior" in params:
+            out["ior"] = (F, float(params["ior"]))
+    if base == "glass":
+        out["opacity"] = (F, 0.0)
+    if model["coat"] and params.get("coat"):
+        out["clearcoat"] = (F, 1.0)
+        out["clearcoatRoughness"] = (F, alpha_to_roughness(float(params["coat"]["alpha"][0])))
+    return {k: (t, rounded(v) if isinstance(v, list) else (round(v, 6) if isinstance(v, float) else v))
+            for k, (t, v) in out.items()}
+
+
+def _usd_value(sdf_type, value):
+    if sdf_type in (Sdf.ValueTypeNames.Color3f, Sdf.ValueTypeNames.Float3, Sdf.ValueTypeNames.Normal3f):
+        return Gf.Vec3f(*value)
+    return value
+
+
+def author_preview(stage, material_prim: UsdShade.Material, material: dict, textures: dict) -> None:
+    path = material_prim.GetPath()
+    surface = UsdShade.Shader.Define(stage, path.AppendChild("PreviewSurface"))
+    surface.CreateIdAttr("UsdPreviewSurface")
+    for name, (sdf_type, value) in preview_inputs(material).items():
+        surface.CreateInput(name, sdf_type).Set(_usd_value(sdf_type, value))
+    surface_out = surface.CreateOutput("surface", Sdf.ValueTypeNames.Token)
+    material_prim.CreateSurfaceOutput().ConnectToSource(surface_out)
+    usable = {r: t for r, t in textures.items() if r in PREVIEW_TEXTURES}
+    if not usable:
+        return
+    reader = UsdShade.Shader.Define(stage, path.AppendChild("PrimvarReader_st"))
+    reader.CreateIdAttr("UsdPrimvarReader_float2")
+    reader.CreateInput("varname", Sdf.ValueTypeNames.String).Set("st")
+    st = reader.CreateOutput("result", Sdf.ValueTypeNames.Float2)
+    for role, texture in usable.items():
+        author_uv_texture(stage, path, surface, st, material, role, texture)
+
+
+def author_uv_texture(stage, path, surface, st, material: dict, role: str, texture) -> None:
+    target, sdf_type, channel = PREVIEW_TEXTURES[role]
+    shader = UsdShade.Shader.Define(stage, path.AppendChild(f"Texture_{role}"))
+    shader.CreateIdAttr("UsdUVTexture")
+    shader.CreateInput("file", Sdf.ValueTypeNames.Asset).Set(Sdf.AssetPath(texture.path))
+    shader.CreateInput("st", Sdf.ValueTypeNames.Float2).ConnectToSource(st)
+    shader.CreateInput("sourceColorSpace", Sdf.ValueTypeNames.Token).Set(SOURCE_COLOUR_SPACE[texture.encoding])
+    for wrap in ("wrapS", "wrapT"):
+        shader.CreateInput(wrap, Sdf.ValueTypeNames.Token).Set("repeat")
+    if role == "normal":
+        shader.CreateInput("scale", Sdf.ValueTypeNames.Float4).Set(Gf.Vec4f(2, 2, 2, 1))
+        shader.CreateInput("bias", Sdf.ValueTypeNames.Float4).Set(Gf.Vec4f(-1, -1, -1, 0))
+    elif role == "base_color" and material["model"]["base"] == "conductor":   # the map tints f0
+        shader.CreateInput("scale", Sdf.ValueTypeNames.Float4).Set(Gf.Vec4f(*conductor_f0(material["params"]), 1.0))
+    out_type = Sdf.ValueTypeNames.Float3 if channel == "rgb" else Sdf.ValueTypeNames.Float
+    output = shader.CreateOutput(channel, out_type)
+    surface.CreateInput(target, sdf_type).ConnectToSource(output)
+
+
+# ---------------------------------------------------------------------- MaterialX network
+
+def author_materialx(stage, material_prim: UsdShade.Material, material: dict, textures: dict, surface: str) -> None:
+    """The 'materialx' backend's document for this material, as UsdShade prims with ND_* ids."""
+    ident = identifier(material["name"])
+    doc = mtlx_backend.build_document([material], surface, {ident: textures}, [ident])
+    mtlx_backend.validate(doc)
+    scope = material_prim.GetPath()       # shaders sit directly in the Material (a connectable container)
+    shaders = {}
+    nodes = [n for n in doc.getNodes() if n.getCategory() != "surfacematerial"]
+    for node in nodes:
+        shader = UsdShade.Shader.Define(stage, scope.AppendChild(node.getName()))
+        shader.CreateIdAttr(node.getNodeDef().getName())
+        shaders[node.getName()] = (node, shader)
+    for node, shader in shaders.values():
+        _author_mx_inputs(node, shader, shaders)
+    (sr_name,) = [n.getName() for n in nodes if n.getType() == "surfaceshader"]
+    out = shaders[sr_name][1].CreateOutput("out", Sdf.ValueTypeNames.Token)
+    material_prim.CreateSurfaceOutput("mtlx").ConnectToSource(out)
+
+
+def _author_mx_inputs(node, shader, shaders) -> None:
+    for mx_input in node.getInputs():
+        sdf_type, convert = MX_TYPES[mx_input.getType()]
+        usd_input = shader.CreateInput(mx_input.getName(), sdf_type)
+        upstream = mx_input.getNodeName()
+        if upstream:
+            up_node, up_shader = shaders[upstream]
+            usd_input.ConnectToSource(up_shader.CreateOutput("out", MX_TYPES[up_node.getType()][0]))
+            continue
+        value = mx_input.getValue()
+        usd_input.Set(convert(list(value) if hasattr(value, "__len__") and not isinstance(value, str) else value))
+        if mx_input.getColorSpace():
+            usd_input.GetAttr().SetColorSpace(mx_input.getColorSpace())
+
+
+# ------------------------------------------------------------------------------ materials
+
+def author_network(stage, material_prim, material: dict, textures: dict, surface: str) -> None:
+    author_preview(stage, material_prim, material, textures)
+    author_materialx(stage, material_prim, material, textures, surface)
+
+
+def record_phrase(material_prim: UsdShade.Material, material: dict) -> None:
+    prim = material_prim.GetPrim()
+    phrase = str(material.get("phrase", ""))
+    prim.SetCustomDataByKey("cnlmc:phrase", phrase)
+    prim.SetDocumentation(phrase)
+
+
+def groups_of(materials: list[dict]) -> list[tuple[str, list[int]]]:
+    """(prim name source, indices): materials sharing variant.group become one prim."""
+    groups: dict[str, list[int]] = {}
+    order = []
+    for i, material in enumerate(materials):
+        variant = material.get("variant")
+        key = f"group:{variant['group']}" if variant else f"material:{i}"
+        if key not in groups:
+            groups[key] = []
+            order.append((variant["group"] if variant else material["name"], key))
+        groups[key].append(i)
+    return [(name, groups[key]) for name, key in order]
+
+
+def author_materials(stage, looks: Sdf.Path, materials: list[dict], textures: list[dict],
+                     surface: str = "open_pbr_surface") -> list[UsdShade.Material]:
+    """Author every IR material (variant groups as one prim) under `looks`."""
+    groups = groups_of(materials)
+    prims = []
+    for prim_name, (group_name, indices) in zip(unique_identifiers(n for n, _ in groups), groups):
+        del group_name
+        prims.append(author_group(stage, looks.AppendChild(prim_name), [materials[i] for i in indices],
+                                  [textures[i] for i in indices], surface))
+    return prims
+
+
+def author_group(stage, path: Sdf.Path, materials: list[dict], textures: list[dict], surface: str):
+    material_prim = UsdShade.Material.Define(stage, path)
+    record_phrase(material_prim, materials[0])
+    if len(materials) == 1 and not materials[0].get("variant"):
+        author_network(stage, material_prim, materials[0], textures[0], surface)
+        return material_prim
+    vset = material_prim.GetPrim().GetVariantSets().AddVariantSet(VARIANT_SET)
+    names = unique_identifiers((m["variant"] or {}).get("name", m["name"]) for m in materials)
+    for name, material, tex in zip(names, materials, textures):
+        vset.AddVariant(name)
+        vset.SetVariantSelection(name)
+        with vset.GetVariantEditContext():
+            author_network(stage, material_prim, material, tex, surface)
+            material_prim.GetPrim().SetCustomDataByKey("cnlmc:material", identifier(material["name"]))
+    vset.SetVariantSelection(names[0])
+    return material_prim
+
+
+# ---------------------------------------------------------------------------- preview mesh
+
+def uv_sphere(stage, path: Sdf.Path, centre, radius: float = 1.0, rings: int = 16, segments: int = 32):
+    """A UV sphere mesh with faceVarying-free vertex st, so baked textures map onto it."""
+    points, st, counts, indices = [], [], [], []
+    for i in range(rings + 1):
+        v = i / rings
+        theta = v * math.pi
+        for j in range(segments + 1):
+            u = j / segments
+            phi = u * 2 * math.pi
+            points.append(Gf.Vec3f(centre[0] + radius * math.sin(theta) * math.cos(phi),
+                                   centre[1] + radius * math.cos(theta),
+                                   centre[2] - radius * math.sin(theta) * math.sin(phi)))
+            st.append(Gf.Vec2f(u, 1.0 - v))
+    row = segments + 1
+    for i in range(rings):
+        for j in range(segments):
+            a, b = i * row + j, (i + 1) * row + j
+            counts.append(4)
+            indices += [a, b, b + 1, a + 1]
+    mesh = UsdGeom.Mesh.Define(stage, path)
+    mesh.CreatePointsAttr(points)
+    mesh.CreateFaceVertexCountsAttr(counts)
+    mesh.CreateFaceVertexIndicesAttr(indices)
+    mesh.CreateSubdivisionSchemeAttr("none")
+    mesh.CreateExtentAttr([Gf.Vec3f(centre[0] - radius, centre[1] - radius, centre[2] - radius),
+                           Gf.Vec3f(centre[0] + radius, centre[1] + radius, centre[2] + radius)])
+    UsdGeom.PrimvarsAPI(mesh).CreatePrimvar("st", Sdf.ValueTypeNames.TexCoord2fArray,
+                                            UsdGeom.Tokens.vertex).Set(st)
+    return mesh
+
+
+def bind(prim, material: UsdShade.Material) -> None:
+    UsdShade.MaterialBindingAPI.Apply(prim)
+    UsdShade.MaterialBindingAPI(prim).Bind(material)
+
+
+def author_preview_meshes(stage, root: Sdf.Path, materials: list[UsdShade.Material]) -> None:
+    UsdGeom.Scope.Define(stage, root.AppendChild("Preview"))
+    for i, material in enumerate(materials):
+        mesh = uv_sphere(stage, root.AppendChild("Preview").AppendChild(f"Sphere_{material.GetPrim().GetName()}"),
+                         (i * 2.5, 0.0, 0.0))
+        bind(mesh.GetPrim(), material)
+
+
+# ------------------------------------------------------------------------------------ emit
+
+def output_format(opts: dict) -> str:
+    if opts["format"]:
+        return opts["format"]
+    suffix = Path(opts["output"]).suffix.lower().lstrip(".") if opts["output"] else ""
+    return suffix if suffix in FORMATS else "usda"
+
+
+def new_stage(root_name: str):
+    stage = Usd.Stage.CreateInMemory()
+    UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.y)
+    UsdGeom.SetStageMetersPerUnit(stage, 1.0)
+    root = UsdGeom.Xform.Define(stage, Sdf.Path.absoluteRootPath.AppendChild(identifier(root_name, "Root")))
+    stage.SetDefaultPrim(root.GetPrim())
+    return stage, root.GetPath()
+
+
+def build_stage(ir: dict, opts: dict, textures: list[dict]):
+    stage, root = new_stage(opts["root"])
+    looks = root.AppendChild("Looks")
+    UsdGeom.Scope.Define(stage, looks)
+    prims = author_materials(stage, looks, ir["materials"], textures, opts["surface"])
+    if opts["mesh"] == "sphere":
+        author_preview_meshes(stage, root, prims)
+    return stage
+
+
+def export(stage, fmt: str, images: list[Artifact], stem: str = "materials") -> list[Artifact]:
+    if fmt == "usda":
+        return [Artifact(f"{stem}.usda", stage.GetRootLayer().ExportToString())] + images
+    with tempfile.TemporaryDirectory(prefix="cnlmc-usd-") as tmp:
+        layer_path = Path(tmp) / f"{stem}.usdc"
+        stage.GetRootLayer().Export(str(layer_path))
+        if fmt == "usdc":
+            return [Artifact(layer_path.name, layer_path.read_bytes(), "binary")] + images
+        for image in images:                  # usdz: the textures travel inside the package
+            target = Path(tmp) / image.name
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_bytes(image.content)
+        from pxr import UsdUtils
+        package = Path(tmp) / f"{stem}.usdz"
+        if not UsdUtils.CreateNewUsdzPackage(Sdf.AssetPath(str(layer_path)), str(package)):
+            raise RuntimeError("usd: could not write the usdz package")
+        return [Artifact(package.name, package.read_bytes(), "binary")]
+
+
+def prepare(ir: dict, options: dict):
+    opts = exchange_options(options, NAME, OPTIONS)
+    caps = capabilities_for(CAPABILITIES, opts)
+    notes, textures, images = [], [], []
+    materials = ir["materials"]
+    for material, ident in zip(materials, unique_identifiers(m["name"] for m in materials)):
+        check_material(notes, NAME, caps, material)
+        tex, baked = bake_textures(material, ident, opts, roles=tuple(PREVIEW_TEXTURES))
+        textures.append(tex)
+        images += baked
+    return opts, notes, textures, images
+
+
+def emit(ir: dict, options: dict) -> EmitResult:
+    opts, notes, textures, images = prepare(ir, options)
+    stage = build_stage(ir, opts, textures)
+    return EmitResult(export(stage, output_format(opts), images), notes)
