@@ -15,7 +15,7 @@ import MaterialX as mx
 
 from .capabilities import ALL_FEATURES, EmitResult, check_material
 from .materialx_params import (SURFACES, SURFACE_NAMES, bake_textures, capabilities_for, exchange_options,
-                               surface_inputs, tangent_rotation, unique_identifiers)
+                               phrase_text, surface_inputs, tangent_rotation, unique_identifiers)
 from .registry import Artifact
 
 NAME = "materialx"
@@ -148,7 +148,7 @@ def add_material(doc, material: dict, ident: str, surface: str, textures: dict) 
     if angle and "rotation" not in SURFACE_NAMES[surface]:
         add_tangent_rotation(doc, ident, shader, angle, surface)
     node = doc.addMaterialNode(f"M_{ident}", shader)
-    node.setDocString(str(material.get("phrase", "")))
+    node.setDocString(phrase_text(material))
 
 
 def build_document(materials: list[dict], surface: str = "open_pbr_surface", textures=None,
@@ -170,10 +170,30 @@ def validate(doc) -> None:
         raise RuntimeError(f"materialx: the generated document does not validate: {message}")
 
 
+def escape_attribute(text: str) -> str:
+    """Escape for a double-quoted XML attribute, whitespace kept as character references."""
+    table = {"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "\n": "&#10;", "\r": "&#13;", "\t": "&#9;"}
+    return "".join(table.get(c, c) for c in text)
+
+
 def to_xml(doc) -> str:
+    """Serialise with MaterialX's writer. Its writer leaves '<' raw inside attributes (not
+    well-formed XML), so free text (doc strings) is written through placeholders and escaped here."""
     options = mx.XmlWriteOptions()
     options.writeXIncludeEnable = False
-    return mx.writeToXmlString(doc, options)
+    texts = {}
+    for i, element in enumerate(e for e in doc.traverseTree() if e.hasAttribute("doc")):
+        key = f"cnlmc_doc_placeholder_{i}"
+        texts[key] = (element, element.getDocString())
+        element.setDocString(key)
+    try:
+        xml = mx.writeToXmlString(doc, options)
+    finally:
+        for element, text in texts.values():
+            element.setDocString(text)
+    for key, (_, text) in texts.items():
+        xml = xml.replace(f'doc="{key}"', f'doc="{escape_attribute(text)}"', 1)
+    return xml
 
 
 def prepare(ir: dict, options: dict, target: str = NAME, extra=None):

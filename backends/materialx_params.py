@@ -304,8 +304,17 @@ def bake_textures(material: dict, ident: str, opts: dict, folder: str = "texture
     return textures, artifacts
 
 
+INVALID_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
+
+
+def xml_text(value) -> str:
+    """Characters XML 1.0 cannot hold at all (even escaped) are removed; the rest is escaped
+    by whichever writer the backend uses (MaterialX's, pxr's, jinja2's autoescape)."""
+    return INVALID_XML.sub("", str(value))
+
+
 def phrase_text(material: dict) -> str:
-    return str(material.get("phrase", ""))
+    return xml_text(material.get("phrase", ""))
 
 
 def output_path_suffix(path: str | None, allowed: tuple[str, ...], default: str) -> str:

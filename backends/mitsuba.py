@@ -17,7 +17,7 @@ import numpy as np
 
 from .capabilities import ALL_FEATURES, EmitResult, check_material
 from .materialx_params import (alpha_pair, alpha_to_roughness, bake_textures, capabilities_for, clip01,
-                               conductor_f0, exchange_options, rounded, unique_identifiers)
+                               conductor_f0, exchange_options, rounded, unique_identifiers, xml_text)
 from .registry import Artifact
 
 NAME = "mitsuba"
@@ -49,7 +49,6 @@ CAPABILITIES = {
 }
 assert set(CAPABILITIES) == set(ALL_FEATURES)
 USED_MAPS = ("base_color", "roughness", "normal")
-INVALID_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff]")
 
 
 # ----------------------------------------------------------------------------- properties
@@ -205,11 +204,6 @@ def bsdf_for(material: dict, ident: str, tex: dict) -> dict:
 
 
 # ------------------------------------------------------------------------------- templates
-
-def xml_text(value) -> str:
-    """Characters XML 1.0 cannot hold at all (even escaped) are removed."""
-    return INVALID_XML.sub("", str(value))
-
 
 def comment(value) -> str:
     """Safe inside <!-- -->: no '--', no trailing '-', one line."""

@@ -18,7 +18,8 @@ from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade
 from . import materialx as mtlx_backend
 from .capabilities import ALL_FEATURES, EmitResult, check_material
 from .materialx_params import (alpha_pair, alpha_to_roughness, bake_textures, capabilities_for, clip01,
-                               conductor_f0, exchange_options, identifier, rounded, unique_identifiers)
+                               conductor_f0, exchange_options, identifier, phrase_text, rounded,
+                               unique_identifiers)
 from .registry import Artifact
 
 NAME = "usd"
@@ -184,7 +185,7 @@ def author_network(stage, material_prim, material: dict, textures: dict, surface
 
 def record_phrase(material_prim: UsdShade.Material, material: dict) -> None:
     prim = material_prim.GetPrim()
-    phrase = str(material.get("phrase", ""))
+    phrase = phrase_text(material)
     prim.SetCustomDataByKey("cnlmc:phrase", phrase)
     prim.SetDocumentation(phrase)
 
