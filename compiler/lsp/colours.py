@@ -24,7 +24,7 @@ def document_colours(snapshot, lexicon) -> list[types.ColorInformation]:
     out = []
     for line in range(len(snapshot.index.lines)):
         for phrase, start, end in snapshot.colours_on(line):
-            if phrase.base is not None:
+            if phrase.base is not None and not phrase.base.unknown:
                 out.append(types.ColorInformation(snapshot.index.range_of(line, start, end),
                                                   swatch(resolve_colour(phrase, ctx))))
         out += material_swatches(snapshot, line)
@@ -70,7 +70,13 @@ def phrase_table(lexicon) -> tuple:
 def nearest_phrases(color: types.Color, lexicon, limit: int = MAX_PRESENTATIONS) -> list[str]:
     target = _lab([srgb_to_linear(c) for c in (color.red, color.green, color.blue)])
     ranked = sorted(phrase_table(lexicon), key=lambda row: sum((a - b) ** 2 for a, b in zip(row[1], target)))
-    return [phrase for phrase, _lab_value in ranked[:limit]]
+    phrases: list[str] = []
+    for phrase, _lab_value in ranked:
+        if phrase not in phrases:
+            phrases.append(phrase)
+        if len(phrases) == limit:
+            break
+    return phrases
 
 
 def presentations(color: types.Color, where: types.Range, lexicon, replaces_colour: bool = True):

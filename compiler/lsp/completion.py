@@ -24,8 +24,14 @@ PARTIAL_RE = re.compile(r"[^\W\d_][\w'’\-]*$")
 MAX_BRANCHES = 256
 CATEGORY_OF_TAG = {tag: category for category, tag in CATEGORY_TAGS.items()}
 KEYWORDS = {"WITH": "with", "OR": "or", "AND": "and"}
-PRIORITY = {"coats": 0, "nouns": 1, "adjectives": 2, "colours": 3, "shades": 4, "adverbs": 5,
-            "refinements": 6, "properties": 7}
+DEFAULT_ORDER = ("nouns", "adjectives", "colours", "shades", "adverbs", "coats", "refinements", "properties")
+ORDER_AFTER = {  # what to list first after the word before the cursor
+    "ADV": ("adjectives", "adverbs", "colours", "shades"),
+    "WITH": ("coats", "adjectives", "colours", "shades", "adverbs"),
+    "SHADE": ("colours", "shades"),
+    "COLOR": ("adjectives", "nouns"),
+    "REFINE": ("colours", "properties", "adjectives"),
+}
 KINDS = {"nouns": types.CompletionItemKind.Class, "adjectives": types.CompletionItemKind.Function,
          "adverbs": types.CompletionItemKind.Operator, "colours": types.CompletionItemKind.Color,
          "shades": types.CompletionItemKind.Color, "refinements": types.CompletionItemKind.Event,
@@ -54,10 +60,29 @@ def complete(snapshot, position: types.Position, lexicon) -> types.CompletionLis
     start = col - len(partial)
     before = [t for t in tag_text(prefix[:start], lexicon) if t.candidates]
     accepted = accepted_terminals(before)
+    previous = previous_tag(before)
+    if previous == "ADV":
+        accepted.discard("NOUN")  # 'lightly aluminum' parses, but only to warn W103
     context = line_context(text, start, col, lexicon)
     where = snapshot.index.range_of(line, start, col)
-    items = [*lexicon_items(accepted, partial, context, where, lexicon), *keyword_items(accepted, partial, where)]
+    order = category_order(previous)
+    items = [*lexicon_items(accepted, partial, context, where, lexicon, order),
+             *keyword_items(accepted, partial, where)]
     return types.CompletionList(is_incomplete=False, items=items)
+
+
+def previous_tag(words) -> str | None:
+    """The tag of the word before the cursor ('with a' counts as WITH)."""
+    tags = [w.candidates[0].tag for w in words]
+    if len(tags) >= 2 and tags[-1] == "ARTICLE" and tags[-2] == "WITH":
+        return "WITH"
+    return tags[-1] if tags else None
+
+
+def category_order(previous: str | None) -> dict[str, int]:
+    first = ORDER_AFTER.get(previous, ())
+    ordered = [*first, *(c for c in DEFAULT_ORDER if c not in first)]
+    return {category: i for i, category in enumerate(ordered)}
 
 
 def accepted_terminals(words) -> set[str]:
@@ -117,7 +142,7 @@ def surface_for(entry, partial: str) -> str | None:
     return None
 
 
-def lexicon_items(accepted, partial, context, where, lexicon):
+def lexicon_items(accepted, partial, context, where, lexicon, order):
     for tag in sorted(accepted):
         category = CATEGORY_OF_TAG.get(tag)
         if category is None:
@@ -126,10 +151,10 @@ def lexicon_items(accepted, partial, context, where, lexicon):
             surface = surface_for(entry, partial)
             if surface is None or not fits(entry, context):
                 continue
-            yield completion_item(entry, surface, where)
+            yield completion_item(entry, surface, where, order[category])
 
 
-def completion_item(entry, surface: str, where) -> types.CompletionItem:
+def completion_item(entry, surface: str, where, rank: int) -> types.CompletionItem:
     effects = effect_lines(entry)
     detail = CATEGORY_NAMES[entry.category] + (f": {effects[0]}" if effects else "")
     return types.CompletionItem(
@@ -137,7 +162,7 @@ def completion_item(entry, surface: str, where) -> types.CompletionItem:
         kind=KINDS[entry.category],
         detail=detail,
         documentation=types.MarkupContent(types.MarkupKind.Markdown, entry_markdown(entry, surface)),
-        sort_text=f"{PRIORITY[entry.category]}_{surface}",
+        sort_text=f"{rank}_{surface}",
         filter_text=surface,
         text_edit=types.TextEdit(where, surface),
     )
