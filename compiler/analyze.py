@@ -32,13 +32,15 @@ def attach_refinements(doc: ast.Document) -> list[tuple[ast.Material, list[ast.R
     return pairs
 
 
-def material_name(material: ast.Material, used: set) -> str:
+def material_name(material: ast.Material, used: dict) -> str:
+    """An identifier from the name or the words; repeats get _2, _3, ... (used: name -> count)."""
     base = material.name.text if material.name else " ".join(_name_words(material))
     name = identifier(base)
-    unique, n = name, 2
+    unique = name
     while unique in used:
-        unique, n = f"{name}_{n}", n + 1
-    used.add(unique)
+        used[name] += 1
+        unique = f"{name}_{used[name]}"
+    used[unique] = 1
     return unique
 
 
@@ -79,7 +81,7 @@ def analyze(doc: ast.Document, ctx: Context) -> tuple[list[MaterialState], list]
     """All material states of a document, and every diagnostic, sorted by position."""
     diags = list(doc.diagnostics)
     bad_lines = {d.span.line for d in diags if d.is_error and d.span}
-    states, used = [], set()
+    states, used = [], {}
     for material, refinements in attach_refinements(doc):
         if material.span.line in bad_lines:
             continue  # reported already; half-understood materials are not emitted

@@ -57,9 +57,9 @@ def _provenance(state: MaterialState) -> dict:
     return {param: [_step(step) for step in steps] for param, steps in state.provenance.items()}
 
 
-def _step(step: dict) -> dict:
-    out = {k: v for k, v in step.items() if k != "keys"}
-    out["value"] = rounded(step["value"])
+def _step(step) -> dict:
+    out = step.to_json()
+    out["value"] = rounded(step.value)
     return out
 
 

@@ -10,6 +10,26 @@ from .lexicon import Entry, Lexicon
 NOUN_PARAMS = ("base_color", "roughness", "eta", "k", "f0", "f82", "ior", "diffuse_roughness")
 
 
+class Step:
+    """One provenance step: the rule, the words (AST Words) and the value it produced."""
+
+    __slots__ = ("rule", "words", "value", "source")
+
+    def __init__(self, rule: str, words: tuple, value, source: str | None = None):
+        self.rule, self.words, self.value, self.source = rule, words, value, source
+
+    @property
+    def texts(self) -> list[str]:
+        return [w.text for w in self.words]
+
+    def to_json(self) -> dict:
+        out = {"rule": self.rule, "words": self.texts, "spans": [w.span.as_list() for w in self.words],
+               "value": self.value}
+        if self.source:
+            out["source"] = self.source
+        return out
+
+
 @dataclass
 class Context:
     lexicon: Lexicon
@@ -46,12 +66,8 @@ class MaterialState:
         self.note(param, value, rule, words, source)
 
     def note(self, param: str, value, rule: str, words=(), source: str | None = None) -> None:
-        step = {"rule": rule, "words": [w.text for w in words], "keys": [w.key for w in words],
-                "spans": [w.span.as_list() for w in words], "value": value}
-        if source:
-            step["source"] = source
-        self.provenance.setdefault(param, []).append(step)
+        self.provenance.setdefault(param, []).append(Step(rule, tuple(words), value, source))
 
     def words_of(self, param: str) -> set[str]:
         """Lexicon keys of the words that set `param` (for 'darker blue')."""
-        return {w for step in self.provenance.get(param, []) for w in step.get("keys", [])}
+        return {w.key for step in self.provenance.get(param, []) for w in step.words}

@@ -7,7 +7,6 @@ import math
 from ..diagnostics import warning
 from ..graphs import graph_params
 from ..state import Context, MaterialState
-from ..spans import Span
 
 RANGES = {
     "roughness": (0.0, 1.0), "anisotropy": (0.0, 1.0), "diffuse_roughness": (0.0, 1.6),
@@ -45,7 +44,7 @@ def _check(state, holder: dict, param: str, name: str, low: float, high: float) 
         return
     holder[param] = fixed
     steps = state.provenance.get(name, [])
-    words = [w for s in steps for w in s["words"]]
+    words = [w.text for s in steps for w in s.words]
     span = _last_span(steps)
     state.note(name, fixed, f"range check: clamped to [{low}, {high}]")
     state.diagnostics.append(warning(span, "W107", f"{name.replace('_', ' ')} {_fmt(value)} is outside "
@@ -55,9 +54,8 @@ def _check(state, holder: dict, param: str, name: str, low: float, high: float) 
 
 def _last_span(steps):
     for step in reversed(steps):
-        if step["spans"]:
-            line, col, end_col = step["spans"][-1]
-            return Span(0, end_col - col, line, col)
+        if step.words:
+            return step.words[-1].span
     return None
 
 

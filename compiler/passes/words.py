@@ -72,10 +72,10 @@ def _colour_slot(state, target: str):
 
 
 def _warn_second_colour(state, param: str, c: ast.Colour) -> None:
-    earlier = [s for s in state.provenance.get(param, []) if s["rule"].startswith("colours: ")]
+    earlier = [s for s in state.provenance.get(param, []) if s.rule.startswith("colours: ")]
     if earlier and c.base is not None:
         state.diagnostics.append(warning(c.span, "W105", f"a second colour for the {param.replace('_', ' ')}: "
-                                         f"'{earlier[-1]['words'][-1]}' is replaced by '{colour_text(c)}'",
+                                         f"'{earlier[-1].words[-1].text}' is replaced by '{colour_text(c)}'",
                                          ("use 'or' for alternatives: 'red or blue plastic'",)))
 
 
@@ -197,7 +197,5 @@ def pigment_base(state, ctx) -> None:
     pigment = state.coat.get("pigment", 0.0)
     if pigment > 0 and "base_color" in state.params:
         value = apply_op("blend", state.params["base_color"], state.coat["color"], 1.0, pigment)
-        words = [w for s in state.provenance.get("coat.color", [])[-1:] for w in s["words"]]
-        state.note("base_color", value, f"coats.{state.coat['name']}: pigment {pigment} of the coat colour", ())
-        state.params["base_color"] = value
-        state.provenance["base_color"][-1]["words"] = words
+        words = [w for s in state.provenance.get("coat.color", [])[-1:] for w in s.words]
+        state.record("base_color", value, f"coats.{state.coat['name']}: pigment {pigment} of the coat colour", words)

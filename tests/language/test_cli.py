@@ -10,9 +10,9 @@ import pytest
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
-def cnlmc(*args, stdin=None):
+def cnlmc(*args, stdin=None, timeout=60):
     return subprocess.run([sys.executable, "-m", "cnlmc", *args], input=stdin,
-                          capture_output=True, text=True, timeout=60)
+                          capture_output=True, text=True, timeout=timeout)
 
 
 def test_compile_to_ir_on_stdout():
@@ -86,3 +86,39 @@ def test_empty_input_compiles_to_nothing(text):
     r = cnlmc("compile", "-", stdin=text)
     assert r.returncode == 0
     assert json.loads(r.stdout)["materials"] == []
+
+
+def test_one_megabyte_of_input_is_handled(tmp_path):
+    text = ("lightly brushed, blue anodized aluminum\n" * 26000)[:1_000_000]
+    out = tmp_path / "big.json"
+    text = text.rsplit("\n", 1)[0] + "\n"  # whole lines only
+    r = cnlmc("compile", "-", "-o", str(out), stdin=text, timeout=300)
+    assert r.returncode == 0 and "Traceback" not in r.stderr
+    assert len(json.loads(out.read_text())["materials"]) == text.count("\n")
+
+
+def test_a_very_long_line_is_an_error_not_a_hang():
+    r = cnlmc("compile", "-", stdin="brushed " * 5000 + "steel")
+    assert r.returncode == 1
+    assert "line is too long" in r.stderr
+
+
+def test_unicode_positions_and_messages():
+    r = cnlmc("compile", "-", stdin="🙂 brushed alumínio\n")
+    assert r.returncode == 1
+    assert "<stdin>:1:1: error[E001]: unexpected character '🙂'" in r.stderr
+    assert "unknown word 'alumínio'" in r.stderr and "Traceback" not in r.stderr
+
+
+def test_written_files_get_the_usual_permissions(tmp_path):
+    out = tmp_path / "m.json"
+    r = cnlmc("compile", "-", "-o", str(out), stdin="steel")
+    assert r.returncode == 0
+    assert out.stat().st_mode & 0o777 == 0o666 & ~_umask()
+
+
+def _umask():
+    import os
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
