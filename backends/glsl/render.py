@@ -61,11 +61,11 @@ def snippet(name: str) -> str:
 
 @lru_cache(maxsize=1)
 def multiscatter_tables() -> dict:
-    """The reference E(μ, α) table and E_avg(α), as float32-exact literals."""
+    """The reference tables as missing energy 1 − E(μ, α) and 1 − E_avg(α), 9-digit literals."""
     fmt = lambda v: format(float(v), ".9g")  # noqa: E731  (9 digits round-trip float32)
     fix = lambda s: s if any(c in s for c in ".e") else s + ".0"  # noqa: E731
-    rows = [[fix(fmt(v)) for v in row] for row in albedo_table()]
-    return {"size": TABLE_SIZE, "table": rows, "average": [fix(fmt(v)) for v in average_albedo_table()]}
+    rows = [[fix(fmt(v)) for v in row] for row in 1.0 - albedo_table()]
+    return {"size": TABLE_SIZE, "table": rows, "average": [fix(fmt(v)) for v in 1.0 - average_albedo_table()]}
 
 
 def render(template: str, **context) -> str:

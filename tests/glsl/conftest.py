@@ -1,0 +1,84 @@
+"""Fixtures for the GLSL backend tests: the real consumers (glslangValidator, moderngl on EGL).
+
+Tests skip with a clear message only when a tool is truly absent."""
+from __future__ import annotations
+
+import shutil
+import subprocess
+import tempfile
+from concurrent.futures import ThreadPoolExecutor
+from functools import lru_cache
+from pathlib import Path
+
+import pytest
+
+from cnlmc.api import compile_source
+from cnlmc.backends import glsl
+
+GLSLANG = shutil.which("glslangValidator")
+
+#: Adjective combinations that reach every model feature (with the stdlib nouns).
+COMBINATIONS = {
+    "anisotropic": "lightly brushed, blue anodized aluminum",
+    "anisotropic_dielectric": "brushed plastic",
+    "coat": "clear-coated red car paint",
+    "coat_tinted": "red varnished oak",
+    "coat_metal": "lacquered brass",
+    "maps": "rusty iron",
+    "maps_normal": "hammered copper",
+    "diffuse": "matte paper",
+    "glass": "frosted glass",
+    "oren_nayar": "rough stone",
+    "mirror": "mirror chrome",
+}
+
+
+@lru_cache(maxsize=None)
+def material_of(phrase: str) -> dict:
+    result = compile_source(phrase + "\n")
+    assert result.ir["materials"], f"{phrase!r} compiled to no material: {result.ir['diagnostics']}"
+    return result.ir["materials"][0]
+
+
+def emit_material(material: dict, **options) -> dict[str, str]:
+    """Emit one material; returns {file suffix: text}, e.g. 'frag', 'vert', 'glsl', 'json'."""
+    ir = {"ir_version": 1, "materials": [material], "diagnostics": []}
+    result = glsl.emit(ir, {k: str(v) for k, v in options.items()})
+    return {a.name.split(".", 1)[1]: a.content for a in result.artifacts}
+
+
+def emit_phrase(phrase: str, **options) -> dict[str, str]:
+    return emit_material(material_of(phrase), **options)
+
+
+def run_glslang(sources: list[tuple[str, str]]) -> list[tuple[str, int, str]]:
+    """Validate (filename, text) pairs with glslangValidator in parallel: (name, exit code, output)."""
+    folder = Path(tempfile.mkdtemp(prefix="cnlm_glslang_"))
+
+    def one(item):
+        name, text = item
+        path = folder / name
+        path.write_text(text)
+        done = subprocess.run([GLSLANG, str(path)], capture_output=True, text=True)
+        return name, done.returncode, done.stdout + done.stderr
+
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        return list(pool.map(one, sources))
+
+
+@pytest.fixture(scope="session")
+def glslang():
+    if GLSLANG is None:
+        pytest.skip("glslangValidator is not installed (apt-get install glslang-tools)")
+    return GLSLANG
+
+
+@pytest.fixture(scope="session")
+def gl():
+    try:
+        import moderngl
+        ctx = moderngl.create_context(standalone=True, backend="egl")
+    except Exception as exc:  # noqa: BLE001 - any failure here means no EGL/GL
+        pytest.skip(f"no OpenGL context on EGL ({exc}); install libegl1 libgl1 libegl-mesa0")
+    yield ctx
+    ctx.release()

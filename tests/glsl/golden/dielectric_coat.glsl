@@ -1,0 +1,185 @@
+// cnlmc GLSL backend -- material "red_varnished_oak"
+// phrase: red varnished oak
+// model: dielectric + ggx + lambert + fresnel exact + coat (tinted) + maps: base_color, roughness
+// options: fresnel=exact, multiscatter=off, profile=330, form=both, specialize=on
+//
+// entry points:
+//   vec3 cnlm_bsdf(vec3 n, vec3 t, vec3 v, vec3 l, vec2 uv)
+//   vec3 cnlm_bsdf(vec3 n, vec3 v, vec3 l, vec2 uv)      (tangent from cnlm_any_tangent(n))
+//   n surface normal, t surface tangent (streak direction of anisotropy, +U of the
+//   normal map; bitangent = cross(n, t)), v towards the viewer, l towards the light:
+//   unit vectors in any one space. Returns the BRDF f (linear Rec.709 RGB),
+//   NOT multiplied by cos(theta_l).
+// uniforms: (values also in the .glsl.json sidecar)
+//   float cnlm_ior = 1.472
+//   float cnlm_coat_ior = 1.5
+//   float cnlm_coat_alpha = 0.01
+//   vec3 cnlm_coat_color = vec3(1.0, 0.0, 0.0)
+//   float cnlm_coat_thickness = 1.0
+// samplers: (bind baked maps; see the sidecar)
+//   sampler2D cnlm_map_base_color  role=base_color colour_space=srgb: RGB albedo/tint; upload as an sRGB texture (GL_SRGB8[_ALPHA8]) so texture() returns linear
+//   sampler2D cnlm_map_roughness  role=roughness colour_space=linear: perceptual roughness in the red channel
+uniform float cnlm_ior = 1.472;
+uniform float cnlm_coat_ior = 1.5;
+uniform float cnlm_coat_alpha = 0.01;
+uniform vec3 cnlm_coat_color = vec3(1.0, 0.0, 0.0);
+uniform float cnlm_coat_thickness = 1.0;
+uniform sampler2D cnlm_map_base_color;
+uniform sampler2D cnlm_map_roughness;
+// cnlm common: constants and helpers of the local shading frame (n = +z, t = +x).
+const float CNLM_PI = 3.14159265358979;
+// cos(theta) below this counts as on/below the horizon: every lobe is 0 there.
+const float CNLM_COS_EPS = 1e-7;
+// alpha below this is a perfect mirror; lobes clamp alpha up to it (docs/bsdf.md).
+const float CNLM_ALPHA_MIRROR = 1e-3;
+
+bool cnlm_both_upper(vec3 wo, vec3 wi) {
+    return wo.z >= CNLM_COS_EPS && wi.z >= CNLM_COS_EPS;
+}
+
+// normalize(wo + wi); the zero vector when wo = -wi.
+vec3 cnlm_half_vector(vec3 wo, vec3 wi) {
+    vec3 s = wo + wi;
+    float len2 = dot(s, s);
+    return len2 > 0.0 ? s * inversesqrt(len2) : vec3(0.0);
+}
+
+// cos(theta_d) as (wo.h + wi.h)/2: symmetric in wo, wi (reciprocity).
+float cnlm_half_angle_cos(vec3 wo, vec3 wi, vec3 h) {
+    return clamp(0.5 * (dot(wo, h) + dot(wi, h)), 0.0, 1.0);
+}
+
+// A unit tangent orthogonal to n, continuous except at n.z = -1
+// (Duff et al. 2017, "Building an orthonormal basis, revisited").
+vec3 cnlm_any_tangent(vec3 n) {
+    float s = n.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (s + n.z);
+    float b = n.x * n.y * a;
+    return vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
+}
+
+// Perceptual roughness -> alpha, convention "squared" (alpha = r^2, Burley 2012).
+float cnlm_alpha_of(float r) {
+    float c = clamp(r, 0.0, 1.0);
+    return c * c;
+}
+
+// Exact unpolarised Fresnel reflectance of a dielectric, relative IOR eta (Born & Wolf).
+// Total internal reflection gives 1; eta = 1 gives exactly 0.
+float cnlm_fresnel_dielectric(float cos_theta, float eta) {
+    if (eta == 1.0) return 0.0;
+    float c = clamp(abs(cos_theta), 0.0, 1.0);
+    float ct2 = ((eta * eta - 1.0) + c * c) / (eta * eta);
+    if (ct2 < 0.0) return 1.0;
+    float ct = sqrt(ct2);
+    float rs_den = c + eta * ct;
+    float rp_den = eta * c + ct;
+    float rs = rs_den != 0.0 ? (c - eta * ct) / rs_den : 0.0;
+    float rp = rp_den != 0.0 ? (eta * c - ct) / rp_den : 0.0;
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+// Isotropic GGX D * V (Walter 2007; Heitz 2014), height-correlated Smith.
+// D = 1/(pi a^2 q^2), q = (hx^2 + hy^2)/a^2 + hz^2: no cancellation down to a = 1e-3.
+// V = 1/(2(zi |wo|_a + zo |wi|_a)), |w|_a = sqrt(a^2 (wx^2 + wy^2) + wz^2): finite at grazing.
+float cnlm_ggx_dv(vec3 wo, vec3 wi, vec3 h, float alpha) {
+    if (!cnlm_both_upper(wo, wi) || h.z < 0.0) return 0.0;
+    float a = max(alpha, CNLM_ALPHA_MIRROR);
+    float a2 = a * a;
+    float q = dot(h.xy, h.xy) / a2 + h.z * h.z;
+    float d = 1.0 / (CNLM_PI * a2 * q * q);
+    float len_o = sqrt(a2 * dot(wo.xy, wo.xy) + wo.z * wo.z);
+    float len_i = sqrt(a2 * dot(wi.xy, wi.xy) + wi.z * wi.z);
+    return d / (2.0 * (wi.z * len_o + wo.z * len_i));
+}
+
+// Lambert: f = albedo / pi (0 below the horizon).
+vec3 cnlm_lambert(vec3 wo, vec3 wi, vec3 albedo) {
+    return cnlm_both_upper(wo, wi) ? albedo / CNLM_PI : vec3(0.0);
+}
+
+// Weidlich & Wilkie 2007 coat helpers: refraction into the coat at the macro normal
+// (same azimuth, sin' = sin / eta) and the Fresnel transmittance at entry and exit.
+vec3 cnlm_refract_into_coat(vec3 w, float eta) {
+    vec2 xy = w.xy / eta;
+    float z = w.z > 0.0 ? sqrt(max(1.0 - dot(xy, xy), 0.0)) : 0.0;
+    return vec3(xy, z);
+}
+
+float cnlm_coat_transmission(vec3 wo, vec3 wi, float eta) {
+    if (!cnlm_both_upper(wo, wi)) return 0.0;
+    return (1.0 - cnlm_fresnel_dielectric(wo.z, eta)) * (1.0 - cnlm_fresnel_dielectric(wi.z, eta));
+}
+
+// Coat absorption along the refracted paths: color^(thickness (1/cos o' + 1/cos i')/2),
+// written as exp(log(color) x) so that thickness 0 gives exactly 1 even for color 0.
+vec3 cnlm_coat_absorption(vec3 wo_in, vec3 wi_in, vec3 color, float thickness) {
+    float x = 0.5 * thickness * (1.0 / max(wo_in.z, 1e-12) + 1.0 / max(wi_in.z, 1e-12));
+    return exp(log(max(clamp(color, 0.0, 1.0), vec3(1e-30))) * x);
+}
+
+// ---- material red_varnished_oak: dielectric + ggx + lambert + fresnel exact + coat (tinted) + maps: base_color, roughness ----
+
+vec3 cnlm_surface_albedo(vec2 uv) {
+    return texture(cnlm_map_base_color, uv).rgb;
+}
+
+float cnlm_surface_alpha(vec2 uv) {
+    float a = cnlm_alpha_of(texture(cnlm_map_roughness, uv).r);
+    return clamp(a, CNLM_ALPHA_MIRROR, 1.0);
+}
+
+// The base's Fresnel at cos theta; `outside` is the IOR above the base (1, or the coat's).
+vec3 cnlm_base_fresnel(float c, float outside) {
+    return vec3(cnlm_fresnel_dielectric(c, cnlm_ior / outside));
+}
+
+// Specular lobe F(wo.h) D V (ggx).
+vec3 cnlm_specular(vec3 wo, vec3 wi, float alpha, float outside) {
+    vec3 h = cnlm_half_vector(wo, wi);
+    float dv = cnlm_ggx_dv(wo, wi, h, alpha);
+    if (dv == 0.0) return vec3(0.0);
+    return dv * cnlm_base_fresnel(cnlm_half_angle_cos(wo, wi, h), outside);
+}
+
+vec3 cnlm_diffuse(vec3 wo, vec3 wi, vec3 albedo) {
+    return cnlm_lambert(wo, wi, albedo);
+}
+
+// The uncoated base, split into a directional (spec) and a diffuse-like (diff) part.
+void cnlm_base(vec3 wo, vec3 wi, vec3 albedo, float alpha, float outside,
+               out vec3 spec, out vec3 diff) {
+    spec = cnlm_specular(wo, wi, alpha, outside);
+    vec3 through = (1.0 - cnlm_base_fresnel(wi.z, outside)) * (1.0 - cnlm_base_fresnel(wo.z, outside));
+    diff = through * cnlm_diffuse(wo, wi, albedo);
+}
+
+// The material in the local frame (n = +z, t = +x).
+vec3 cnlm_bsdf_local(vec3 wo, vec3 wi, vec2 uv) {
+    vec3 albedo = cnlm_surface_albedo(uv);
+    vec3 spec, diff;
+    // Weidlich-Wilkie coat over the base.
+    float eta = cnlm_coat_ior;
+    vec3 wo_in = cnlm_refract_into_coat(wo, eta);
+    vec3 wi_in = cnlm_refract_into_coat(wi, eta);
+    cnlm_base(wo_in, wi_in, albedo, cnlm_surface_alpha(uv), eta, spec, diff);
+    vec3 under = spec / (eta * eta) + diff;
+    under *= cnlm_coat_absorption(wo_in, wi_in, cnlm_coat_color, cnlm_coat_thickness);
+    vec3 h = cnlm_half_vector(wo, wi);
+    float coat_dv = cnlm_ggx_dv(wo, wi, h, cnlm_coat_alpha);
+    float coat_spec = coat_dv == 0.0 ? 0.0 : coat_dv * cnlm_fresnel_dielectric(cnlm_half_angle_cos(wo, wi, h), eta);
+    vec3 f = vec3(coat_spec) + cnlm_coat_transmission(wo, wi, eta) * under;
+    return f;
+}
+
+vec3 cnlm_bsdf(vec3 n, vec3 t, vec3 v, vec3 l, vec2 uv) {
+    vec3 tn = cnlm_any_tangent(n);
+    vec3 bn = cross(n, tn);
+    vec3 wo = vec3(dot(v, tn), dot(v, bn), dot(v, n));
+    vec3 wi = vec3(dot(l, tn), dot(l, bn), dot(l, n));
+    return cnlm_bsdf_local(wo, wi, uv);
+}
+
+vec3 cnlm_bsdf(vec3 n, vec3 v, vec3 l, vec2 uv) {
+    return cnlm_bsdf(n, cnlm_any_tangent(n), v, l, uv);
+}
