@@ -240,6 +240,7 @@ def layout(count: int) -> tuple[list[list[float]], dict]:
     return centres, {"fov": fov, "origin": [0, 0, round(distance, 4)], "target": [0, 0, 0]}
 
 
+@functools.lru_cache(maxsize=1)
 def version() -> str:
     try:
         from importlib.metadata import version as dist_version
