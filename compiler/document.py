@@ -5,6 +5,7 @@ from __future__ import annotations
 from . import ast
 from .diagnostics import did_you_mean, error
 from .lexicon import Lexicon
+from .mistakes import known_mistake
 from .parser import ParseFailure, describe_expected, parse_tagged
 from .spans import Span
 from .syntax import TreeToAst
@@ -52,32 +53,38 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list)
     try:
         tree, chosen = parse_tagged(words)
     except ParseFailure as failure:
-        diags.append(_syntax_error(failure, words, text, number, offset))
+        diags.append(_syntax_error(failure, words, tagger.lexicon))
         return None
     return TreeToAst({t.span.start: t for t in words}, chosen, text).build(tree)
 
 
-def _syntax_error(failure: ParseFailure, words, text, number, offset):
+def _syntax_error(failure: ParseFailure, words, lexicon):
     """E002 for a word in the wrong place; E003 for a phrase that never names its material."""
     has_noun = any(c.tag == "NOUN" for t in words for c in t.candidates)
-    if failure.tagged is None and not has_noun:
-        span = words[0].span.to(words[-1].span)
+    is_refinement = any(c.tag == "REFINE" for c in words[0].candidates)
+    at = failure.tagged or words[-1]
+    span = at.span if failure.tagged else words[0].span.to(words[-1].span)
+    mistake = known_mistake(lexicon, failure)
+    if mistake is not None:
+        return error(span if failure.tagged else at.span, "E002", mistake.message.format(word=at.text),
+                     (mistake.hint,))
+    if failure.tagged is None and not has_noun and not is_refinement:
         return error(span, "E003", "this phrase names no material: end it with a noun",
                      ("for example 'brushed aluminum' or 'white varnished oak'",))
     if failure.tagged is None:
-        last = words[-1]
-        return error(last.span, "E002", f"the phrase cannot end after '{last.text}'",
-                     (f"expected {describe_expected(failure.expected)}",))
-    at = failure.tagged
-    hint = _placement_hint(at)
+        in_coat = any(c.tag == "WITH" for t in words for c in t.candidates)
+        return _early_end(at, failure.expected, in_coat)
     return error(at.span, "E002", f"'{at.text}' cannot stand here",
-                 (f"expected {describe_expected(failure.expected)}", *hint))
+                 (f"expected {describe_expected(failure.expected)}",))
 
 
-def _placement_hint(at) -> tuple[str, ...]:
-    tags = {c.tag for c in at.candidates}
-    if tags & {"ADJ", "COLOR", "ADV", "SHADE"}:
-        return ("describing words come before the noun: 'brushed aluminum', not 'aluminum brushed'",)
-    if "NOUN" in tags:
-        return ("a phrase names one material, at its end; use 'or' for alternatives",)
-    return ()
+def _early_end(last, expected: set[str], in_coat: bool):
+    """The line stopped before the grammar was done: say what is missing."""
+    if "COAT" in expected and (in_coat or "NOUN" not in expected):
+        return error(last.span, "E002", f"the coat clause ends at '{last.text}' without naming the coat",
+                     ("end it with a coat word, e.g. 'oak with a glossy varnish'",))
+    if "NOUN" in expected:
+        return error(last.span, "E002", f"the phrase ends at '{last.text}' without naming the material",
+                     ("end it with a material noun, e.g. 'brushed aluminum'",))
+    return error(last.span, "E002", f"the phrase cannot end after '{last.text}'",
+                 (f"expected {describe_expected(expected)}",))

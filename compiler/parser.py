@@ -69,10 +69,16 @@ def _token(t: Tagged, tag: str) -> Token:
 
 
 class ParseFailure(Exception):
-    def __init__(self, tagged: Tagged | None, expected: set[str]):
+    def __init__(self, tagged: Tagged | None, expected: set[str], key=None):
         super().__init__("parse failure")
         self.tagged = tagged
         self.expected = expected
+        self.key = key  # (LALR state, token type): what the bad-examples table is keyed by
+
+
+def failure_key(exc: UnexpectedToken):
+    state = exc.state
+    return (len(state.state_stack), state.position, exc.token.type) if state is not None else None
 
 
 def parse_tagged(tagged: list[Tagged]) -> tuple[Tree, dict]:
@@ -94,16 +100,16 @@ def _parse_direct(words: list[Tagged]) -> Tree:
 
 def _failure(words, exc: UnexpectedToken) -> ParseFailure:
     at = next((t for t in words if t.span.start == exc.token.start_pos and exc.token.type != "$END"), None)
-    return ParseFailure(at, set(exc.expected))
+    return ParseFailure(at, set(exc.expected), failure_key(exc))
 
 
 def _parse_search(words: list[Tagged]):
-    state = {"budget": MAX_BRANCHES, "deepest": (-1, None, set())}
+    state = {"budget": MAX_BRANCHES, "deepest": (-1, None, set(), None)}
     ip = lark_parser().parse_interactive()
     result = _search(ip, words, 0, {}, state)
     if result is None:
-        _index, at, expected = state["deepest"]
-        raise ParseFailure(at, expected)
+        _index, at, expected, key = state["deepest"]
+        raise ParseFailure(at, expected, key)
     return result
 
 
@@ -137,7 +143,7 @@ def _finish(ip, words, chosen, state):
 
 def _note_failure(state, index, at, exc):
     if index > state["deepest"][0]:
-        state["deepest"] = (index, at, set(exc.expected))
+        state["deepest"] = (index, at, set(exc.expected), failure_key(exc))
 
 
 def describe_expected(expected: set[str]) -> str:

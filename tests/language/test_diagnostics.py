@@ -1,5 +1,7 @@
 """Every problem is a value with a span; the CLI renders it word for word."""
 
+import pytest
+
 from cnlmc.diagnostics import render
 
 
@@ -36,8 +38,21 @@ def test_all_errors_of_a_file_are_reported(compile_text):
 def test_word_in_the_wrong_place(compile_text):
     r = compile_text("aluminum brushed")
     d = r.diagnostics[0]
-    assert d.message == "'brushed' cannot stand here"
-    assert d.hints[-1] == "describing words come before the noun: 'brushed aluminum', not 'aluminum brushed'"
+    assert d.message == "'brushed' comes after the noun: describing words come before it"
+    assert d.hints == ("write 'brushed aluminum', not 'aluminum brushed'",)
+
+
+@pytest.mark.parametrize("text,message", [
+    ("steel aluminum", "a second material 'aluminum': a phrase names one material, at its end"),
+    ("oak with", "'with' needs a coat after it"),
+    ("oak with a glossy", "the coat clause ends at 'glossy' without naming the coat"),
+    ("gold brushed", "the phrase ends at 'brushed' without naming the material"),
+    ("darker blue aluminum", "a refinement changes the material above it and stands on its own line"),
+    ("red or anodized aluminum", "'anodized' cannot follow 'or': an alternative of the same kind must"),
+    ("brushed and steel", "'steel' cannot follow 'and': another describing group must"),
+])
+def test_mistakes_learned_from_the_bad_examples_table(compile_text, text, message):
+    assert [d.message for d in compile_text(text).diagnostics] == [message]
 
 
 def test_no_noun(compile_text):
