@@ -4,6 +4,8 @@ publishDiagnostics with its document version."""
 from __future__ import annotations
 
 import asyncio
+import itertools
+import json
 import sys
 import time
 from pathlib import Path
@@ -50,8 +52,9 @@ def initialize_params(**options) -> types.InitializeParams:
                                   initialization_options={"debounceMs": 20, "inlayHints": True, **options})
 
 
-@pytest_lsp.fixture(config=CONFIG)
+@pytest_lsp.fixture(config=CONFIG, scope="module")
 async def client(lsp_client: LanguageClient):
+    """One server per test module (starting one takes ~1 s); every test uses its own URIs."""
     await lsp_client.initialize_session(initialize_params())
     yield
     await lsp_client.shutdown_session()
@@ -68,6 +71,23 @@ async def wait_diagnostics(client: LanguageClient, uri: str, version: int, timeo
     raise TimeoutError(f"no diagnostics for {uri} version {version}")
 
 
+_fresh = itertools.count()
+
+
+def fresh_uri(stem: str) -> str:
+    """A URI no other test in the module has opened."""
+    return f"file:///tmp/cnlmc-tests/{stem}-{next(_fresh)}.cnl"
+
+
+def send_raw(client: LanguageClient, body: bytes) -> None:
+    """Write one JSON-RPC frame with any body, bypassing the client's type checks."""
+    client._server.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+
+
+def raw_request(client: LanguageClient, method: str, params, msg_id: int = 900001) -> None:
+    send_raw(client, json.dumps({"jsonrpc": "2.0", "id": msg_id, "method": method, "params": params}).encode())
+
+
 def open_document(client: LanguageClient, uri: str, text: str, version: int = 1) -> None:
     client.text_document_did_open(types.DidOpenTextDocumentParams(
         types.TextDocumentItem(uri=uri, language_id="cnl", version=version, text=text)))
@@ -76,7 +96,7 @@ def open_document(client: LanguageClient, uri: str, text: str, version: int = 1)
 async def open_fixture(client: LanguageClient, name: str):
     """Open tests/lsp/fixtures/NAME and return (uri, text, diagnostics)."""
     path = FIXTURES / name
-    uri = path.as_uri()
+    uri = path.as_uri() + f"?{next(_fresh)}"
     text = path.read_text("utf-8")
     open_document(client, uri, text)
     return uri, text, await wait_diagnostics(client, uri, 1)

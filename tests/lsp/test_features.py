@@ -2,20 +2,24 @@
 
 from __future__ import annotations
 
+import pytest
 from lsprotocol import types
 
 from cnlmc.api import compile_source
 from cnlmc.lsp.tokens import TOKEN_TYPES
 
-from .conftest import open_document, open_fixture, position_of, wait_diagnostics
+from .conftest import fresh_uri, open_document, open_fixture, position_of, wait_diagnostics
+
+pytestmark = pytest.mark.asyncio(loop_scope="module")
 
 
 def doc_id(uri):
     return types.TextDocumentIdentifier(uri=uri)
 
 
-async def complete_at(client, text: str, uri="file:///tmp/complete.cnl"):
+async def complete_at(client, text: str, uri=None):
     """Open a one-line document and complete at its end."""
+    uri = uri or fresh_uri("complete")
     open_document(client, uri, text)
     await wait_diagnostics(client, uri, 1)
     result = await client.text_document_completion_async(types.CompletionParams(
@@ -46,7 +50,7 @@ async def test_completion_at_the_end_offers_nouns_that_fit(client):
 
 
 async def test_completion_knows_the_noun_after_the_cursor(client):
-    uri = "file:///tmp/noun.cnl"
+    uri = fresh_uri("noun")
     text = "lightly  oak"
     open_document(client, uri, text)
     await wait_diagnostics(client, uri, 1)
@@ -101,7 +105,7 @@ async def test_quick_fixes(client):
 
 
 async def test_quick_fix_nearest_named_colour(client):
-    uri = "file:///tmp/colour.cnl"
+    uri = fresh_uri("colour")
     open_document(client, uri, "bluish plastic")
     diags = await wait_diagnostics(client, uri, 1)
     actions = await client.text_document_code_action_async(types.CodeActionParams(
@@ -134,7 +138,7 @@ def decode_tokens(data, text):
 
 
 async def test_semantic_tokens(client):
-    uri = "file:///tmp/tokens.cnl"
+    uri = fresh_uri("tokens")
     text = "# every kind\nhull: lightly brushed, pale orange plastic with a clear coat\nless diffuse\ndark slate blue steel"
     open_document(client, uri, text)
     await wait_diagnostics(client, uri, 1)
@@ -191,3 +195,4 @@ async def test_inlay_hints(client):
     hints = await client.text_document_inlay_hint_async(types.InlayHintParams(
         text_document=doc_id(uri), range=types.Range(types.Position(0, 0), types.Position(20, 0))))
     assert list(hints) == []
+    client.workspace_did_change_configuration(types.DidChangeConfigurationParams(settings={"cnlmc": {"inlayHints": True}}))
