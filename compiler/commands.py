@@ -51,6 +51,8 @@ def compile_cmd(args) -> int:
     if not result.ok:
         return EXIT_ERRORS
     options = {**_parse_options(args.option), "seed": args.seed}
+    if args.output:
+        options.setdefault("output", args.output)
     emitted = _run_backend(backend, result.ir, options)
     if emitted is None:
         return EXIT_ERRORS

@@ -27,13 +27,19 @@ def _umask() -> int:
     return mask
 
 
-def write_artifacts(artifacts, out: str) -> list[Path]:
-    """One artifact and a file path: write it there; otherwise into the folder `out`."""
+def looks_like_file(out: str) -> bool:
     target = Path(out)
-    if len(artifacts) == 1 and not out.endswith(("/", os.sep)) and not target.is_dir():
-        write_atomic(target, artifacts[0].content)
-        return [target]
-    paths = [target / a.name for a in artifacts]
+    return not out.endswith(("/", os.sep)) and not target.is_dir() and bool(target.suffix)
+
+
+def write_artifacts(artifacts, out: str) -> list[Path]:
+    """`out` a file path: the first (main) artifact goes there, the others beside it.
+    `out` a folder (existing, ending in '/', or without a suffix): every artifact goes into it."""
+    target = Path(out)
+    if looks_like_file(out) or (len(artifacts) == 1 and not target.is_dir() and not out.endswith(("/", os.sep))):
+        paths = [target] + [target.parent / a.name for a in artifacts[1:]]
+    else:
+        paths = [target / a.name for a in artifacts]
     for path, artifact in zip(paths, artifacts):
         write_atomic(path, artifact.content)
     return paths
