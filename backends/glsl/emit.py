@@ -5,7 +5,7 @@ import json
 
 from ..registry import Artifact
 from .options import GlslOptions
-from .plan import Plan, make_plan
+from .plan import Plan, make_plan, make_uber_plan
 from .render import PROFILES, multiscatter_tables, render, snippet
 
 #: form option -> which artifacts it writes.
@@ -52,7 +52,7 @@ def library_context(material: dict, plan: Plan, options: GlslOptions) -> dict:
 
 def library_source(material: dict, options: GlslOptions) -> tuple[str, Plan]:
     """The library form of one material (no #version line) and its plan."""
-    plan = make_plan(material, options)
+    plan = (make_plan if options.specialize else make_uber_plan)(material, options)
     template = "library.glsl.j2" if options.specialize else "uber.glsl.j2"
     return render(template, **library_context(material, plan, options)), plan
 

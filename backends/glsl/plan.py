@@ -216,3 +216,51 @@ def uniforms_for(plan: Plan, material: dict) -> list[Uniform]:
     """The uniforms the plan's code reads, with the material's values."""
     return [Uniform(name, gl_type or plan.alpha_type, value(material, plan))
             for name, (gl_type, needed, value) in UNIFORM_TABLE.items() if needed(plan)]
+
+
+# ---- the all-features ("uber") form: option specialize=off ----
+
+#: Parameters an uber shader needs even when the material does not use them (neutral values).
+UBER_PARAM_DEFAULTS = {"eta": [1.5, 1.5, 1.5], "k": [0.0, 0.0, 0.0], "f0": [0.04, 0.04, 0.04],
+                       "f82": [0.04, 0.04, 0.04], "ior": 1.5, "diffuse_roughness": 0.0,
+                       "anisotropy": 0.0, "anisotropy_rotation": 0.0, "base_color": [0.8, 0.8, 0.8]}
+UBER_COAT_DEFAULT = {"ior": 1.5, "roughness": 0.0, "color": [1.0, 1.0, 1.0], "thickness": 0.0}
+#: selector uniform -> plan attribute -> integer code read by templates/uber.glsl.j2.
+UBER_SELECTORS = {
+    "cnlm_sel_base": ("base", {"diffuse": 0, "dielectric": 1, "conductor": 2, "glass": 3}),
+    "cnlm_sel_distribution": ("distribution", {None: 0, "ggx": 0, "ward": 1}),
+    "cnlm_sel_diffuse": ("diffuse", {None: 0, "lambert": 0, "oren_nayar": 1}),
+    "cnlm_sel_fresnel": ("fresnel", {None: 0, "exact": 0, "schlick": 1, "f82": 2}),
+    "cnlm_sel_alpha_convention": ("alpha_convention", {"squared": 0, "linear": 1}),
+    "cnlm_use_anisotropy": ("anisotropic", {False: 0, True: 1}),
+    "cnlm_use_coat": ("coat", {False: 0, True: 1}),
+    "cnlm_use_multiscatter": ("multiscatter", {False: 0, True: 1}),
+}
+UBER_SNIPPETS = ("common", "any_tangent", "frame", "rotate_tangent", "fresnel_dielectric",
+                 "fresnel_conductor", "fresnel_schlick", "fresnel_f82", "ggx_isotropic", "ggx_anisotropic",
+                 "ward", "diffuse_lambert", "diffuse_oren_nayar", "coat", "coat_absorption", "normal_map")
+
+
+def complete_material(material: dict) -> dict:
+    """The material with every parameter an uber shader reads (neutral defaults added)."""
+    params = {**UBER_PARAM_DEFAULTS, **{k: v for k, v in material["params"].items() if v is not None}}
+    params["coat"] = {**UBER_COAT_DEFAULT, **(material["params"].get("coat") or {})}
+    return {**material, "params": params}
+
+
+def make_uber_plan(material: dict, options: GlslOptions) -> Plan:
+    """Every branch compiled in: the material's choices become integer uniforms."""
+    plan = make_plan(material, options)
+    every = Plan(base="conductor", distribution="ggx", anisotropic=True, diffuse="oren_nayar",
+                 fresnel=options.fresnel, coat=True, coat_color=True, multiscatter=True, maps=SHADER_ROLES,
+                 alpha_convention=plan.alpha_convention, uber=True, snippets=list(UBER_SNIPPETS))
+    selectors = [Uniform(name, "int", codes[getattr(plan, attribute)])
+                 for name, (attribute, codes) in UBER_SELECTORS.items()]
+    map_flags = [Uniform(f"cnlm_use_map_{role}", "int", int(role in plan.maps)) for role in SHADER_ROLES]
+    full = complete_material(material)
+    params = [Uniform(name, gl_type or "vec2", value(full, every))
+              for name, (gl_type, _, value) in UNIFORM_TABLE.items()]
+    every.uniforms = selectors + map_flags + params
+    every.samplers = [Sampler(SAMPLER_ROLES[r][0], r, SAMPLER_ROLES[r][1], SAMPLER_ROLES[r][2])
+                      for r in SHADER_ROLES]
+    return every

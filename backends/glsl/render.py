@@ -41,6 +41,8 @@ def glsl_value(value, gl_type: str) -> str:
     """A Python float / list as a GLSL literal of `gl_type`."""
     if gl_type == "float":
         return _float(value)
+    if gl_type == "int":
+        return str(int(value))
     return f"{gl_type}({', '.join(_float(v) for v in value)})"
 
 
