@@ -39,7 +39,7 @@ def compile_cmd(args) -> int:
     from .api import compile_source
     from cnlmc.backends.registry import TargetUnavailable, UnknownTarget, get_backend
     try:
-        backend = get_backend(args.target)
+        backend = get_backend("ir" if args.emit == "ir" else args.target)
     except (UnknownTarget, TargetUnavailable) as exc:
         raise UsageError(str(exc)) from None
     source, name = read_source(args.file)

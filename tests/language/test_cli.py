@@ -122,3 +122,9 @@ def _umask():
     mask = os.umask(0)
     os.umask(mask)
     return mask
+
+
+def test_emit_ir_stops_at_the_ir_whatever_the_target():
+    r = cnlmc("compile", "-", "--target", "glsl", "--emit", "ir", stdin="steel")
+    assert r.returncode == 0
+    assert json.loads(r.stdout)["ir_version"] == 1

@@ -84,3 +84,13 @@ def test_session_rejects_a_bad_refinement_and_keeps_the_material(paper):
     with pytest.raises(ValueError, match="unknown word 'darkr'"):
         s.refine("darkr")
     assert s.material["params"]["base_color"] == [0.0, 0.0, 1.0]
+
+
+def test_paper_f0_follows_from_its_eta_and_k(paper):
+    import numpy as np
+
+    from cnlmc.bsdf import fresnel_conductor
+    p = params("aluminium", paper)
+    exact = fresnel_conductor(np.array([1.0, 1 / 7]), np.array(1.097), np.array(6.794))
+    assert p["f0"] == pytest.approx([exact[0]] * 3, abs=1e-4)
+    assert p["f82"] == pytest.approx([exact[1]] * 3, abs=1e-4)
