@@ -1,6 +1,7 @@
 """Phrases nobody tuned for compile to plausible materials."""
 
 import colorsys
+from pathlib import Path
 
 import pytest
 
@@ -105,3 +106,13 @@ def test_articles_case_and_spacing_are_tolerated(compile_text):
     a = material(compile_text, "A  Lightly BRUSHED ,  blue Anodized   aluminium")
     b = material(compile_text, "lightly brushed, blue anodized aluminum")
     assert a["params"] == b["params"]
+
+
+PHRASES = (Path(__file__).parent / "fixtures" / "everyday_phrases.txt").read_text().splitlines()
+
+
+@pytest.mark.parametrize("phrase", PHRASES)
+def test_designer_phrases_compile_cleanly(compile_text, phrase):
+    result = compile_text(phrase)
+    assert result.ok and not result.diagnostics, [d.message for d in result.diagnostics]
+    assert len(result.materials) == 1
