@@ -16,7 +16,7 @@ OPTION_TABLE = {
 }
 
 #: Options the compiler passes to every backend that are not ours to validate.
-FOREIGN_OPTIONS = ("seed",)
+FOREIGN_OPTIONS = ("seed", "output")
 
 
 class OptionError(ValueError):
