@@ -16,7 +16,7 @@ from pygls.lsp.server import LanguageServer
 
 from .api import lexicon_for
 from .lsp import actions, colours, completion, hover, inlay, tokens
-from .lsp.diagnostics import all_to_lsp
+from .lsp.diagnostics import LspDiagnostics
 from .lsp.incremental import Analyzer, Cancelled
 
 DEFAULT_DEBOUNCE_MS = 120
@@ -35,6 +35,7 @@ class CnlServer(LanguageServer):
         self.generation: dict[str, int] = {}
         self.pending: dict[str, asyncio.Task] = {}
         self.snapshots: dict = {}
+        self.lsp_diagnostics = LspDiagnostics()
 
     @property
     def encoding(self) -> str:
@@ -96,7 +97,7 @@ class CnlServer(LanguageServer):
             return
         self.snapshots[uri] = snap
         self.text_document_publish_diagnostics(
-            types.PublishDiagnosticsParams(uri=uri, diagnostics=all_to_lsp(snap, uri), version=version))
+            types.PublishDiagnosticsParams(uri=uri, diagnostics=self.lsp_diagnostics.of(snap, uri), version=version))
 
 
 server = CnlServer()

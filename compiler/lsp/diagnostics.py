@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections import OrderedDict
+
 from lsprotocol import types
 
 from ..diagnostics import Severity
@@ -14,8 +16,11 @@ SEVERITIES = {
 }
 
 
-def to_lsp(diag, index: LineIndex, uri: str) -> types.Diagnostic:
-    where = index.span_range(diag.span)
+def to_lsp(diag, index: LineIndex, uri: str, first_line: int = 0) -> types.Diagnostic:
+    """`diag`'s span is on line first_line + span.line (0-based); only its line and columns are used."""
+    line = first_line + diag.span.line - 1
+    start = diag.span.col - 1
+    where = index.range_of(line, start, start + (diag.span.end - diag.span.start))
     related = [types.DiagnosticRelatedInformation(types.Location(uri, where), hint) for hint in diag.hints]
     return types.Diagnostic(
         range=where,
@@ -26,6 +31,32 @@ def to_lsp(diag, index: LineIndex, uri: str) -> types.Diagnostic:
         related_information=related or None,
         data={"suggestions": list(diag.suggestions)} if diag.suggestions else None,
     )
+
+
+class LspDiagnostics:
+    """LSP diagnostics per block and first line: reused while the block's text and line stay."""
+
+    def __init__(self, limit: int = 20000):
+        self.limit = limit
+        self._by_block: OrderedDict = OrderedDict()
+
+    def of(self, snapshot, uri: str) -> list[types.Diagnostic]:
+        out: list[types.Diagnostic] = []
+        for block in snapshot.blocks:
+            relative = block.result.diagnostics
+            if not relative:
+                continue
+            key = (block.result, block.first_line, uri, snapshot.index.encoding)
+            found = self._by_block.get(key)
+            if found is None:
+                found = [to_lsp(d, snapshot.index, uri, block.first_line) for d in relative]
+                self._by_block[key] = found
+                if len(self._by_block) > self.limit:
+                    self._by_block.popitem(last=False)
+            else:
+                self._by_block.move_to_end(key)
+            out += found
+        return out
 
 
 def all_to_lsp(snapshot, uri: str) -> list[types.Diagnostic]:

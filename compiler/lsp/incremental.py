@@ -29,7 +29,7 @@ class Cancelled(Exception):
     """A newer edit made this analysis stale."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class BlockResult:
     """What compiling one block gives, in block-relative positions."""
 
@@ -39,7 +39,7 @@ class BlockResult:
     items: tuple              # AST items (Material / Refinement)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Block:
     first_line: int           # 0-based document line
     line_count: int
@@ -57,8 +57,16 @@ class Snapshot:
     text: str
     index: LineIndex
     blocks: list
-    diagnostics: list
     _firsts: list | None = None
+    _diagnostics: list | None = None
+
+    @property
+    def diagnostics(self) -> list:
+        """Every diagnostic with its span in document positions (computed on first use)."""
+        if self._diagnostics is None:
+            self._diagnostics = [dataclasses.replace(d, span=shift_span(d.span, b.first_line, b.offset))
+                                 for b in self.blocks for d in b.result.diagnostics]
+        return self._diagnostics
 
     def block_at(self, line: int) -> Block | None:
         if self._firsts is None:
@@ -155,16 +163,13 @@ class Analyzer:
 
     def analyse(self, text: str, encoding: str = "utf-16", keep_going=lambda: True) -> Snapshot:
         index = LineIndex(text, encoding)
-        blocks, diagnostics = [], []
+        blocks = []
         for first, count in self.block_bounds(index.lines, keep_going):
             if not keep_going():
                 raise Cancelled()
-            block_text = "\n".join(index.lines[first:first + count])
-            block = Block(first, count, index.starts[first], self.compile_block(block_text))
-            blocks.append(block)
-            diagnostics += [dataclasses.replace(d, span=shift_span(d.span, first, block.offset))
-                            for d in block.result.diagnostics]
-        return Snapshot(text, index, blocks, diagnostics)
+            result = self.compile_block("\n".join(index.lines[first:first + count]))
+            blocks.append(Block(first, count, index.starts[first], result))
+        return Snapshot(text, index, blocks)
 
     def block_bounds(self, lines: list[str], keep_going):
         """(first line, line count) of each block: a new block starts at every material line."""
