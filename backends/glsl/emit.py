@@ -8,6 +8,8 @@ from .options import GlslOptions
 from .plan import Plan, make_plan, make_uber_plan
 from .render import PROFILES, multiscatter_tables, render, snippet
 
+#: specialize option -> (plan builder, library template).
+LIBRARY_KINDS = {True: (make_plan, "library.glsl.j2"), False: (make_uber_plan, "uber.glsl.j2")}
 #: form option -> which artifacts it writes.
 FORM_PARTS = {"library": ("library",), "standalone": ("standalone",), "both": ("library", "standalone")}
 #: Attributes and uniforms of the standalone pair (besides the material's own).
@@ -52,8 +54,8 @@ def library_context(material: dict, plan: Plan, options: GlslOptions) -> dict:
 
 def library_source(material: dict, options: GlslOptions) -> tuple[str, Plan]:
     """The library form of one material (no #version line) and its plan."""
-    plan = (make_plan if options.specialize else make_uber_plan)(material, options)
-    template = "library.glsl.j2" if options.specialize else "uber.glsl.j2"
+    build_plan, template = LIBRARY_KINDS[options.specialize]
+    plan = build_plan(material, options)
     return render(template, **library_context(material, plan, options)), plan
 
 

@@ -80,7 +80,6 @@ class Plan:
     multiscatter: bool
     maps: tuple
     alpha_convention: str
-    uber: bool = False
     snippets: list = field(default_factory=list)
     uniforms: list = field(default_factory=list)
     samplers: list = field(default_factory=list)
@@ -253,7 +252,7 @@ def make_uber_plan(material: dict, options: GlslOptions) -> Plan:
     plan = make_plan(material, options)
     every = Plan(base="conductor", distribution="ggx", anisotropic=True, diffuse="oren_nayar",
                  fresnel=options.fresnel, coat=True, coat_color=True, multiscatter=True, maps=SHADER_ROLES,
-                 alpha_convention=plan.alpha_convention, uber=True, snippets=list(UBER_SNIPPETS))
+                 alpha_convention=plan.alpha_convention, snippets=list(UBER_SNIPPETS))
     selectors = [Uniform(name, "int", codes[getattr(plan, attribute)])
                  for name, (attribute, codes) in UBER_SELECTORS.items()]
     map_flags = [Uniform(f"cnlm_use_map_{role}", "int", int(role in plan.maps)) for role in SHADER_ROLES]
