@@ -15,6 +15,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 POLICIES = ("exact", "approximate", "bake", "drop", "error")
+# Options the compiler passes to every backend, beside the user's --option KEY=VALUE pairs.
+COMPILER_OPTIONS = ("seed", "output")
 POLICY_CODES = {"approximate": "W201", "bake": "W202", "drop": "W203", "error": "E201"}
 
 

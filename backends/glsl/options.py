@@ -3,6 +3,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..capabilities import COMPILER_OPTIONS
+
 #: option -> (allowed values, default, what it means). Defaults are documented in docs/glsl.md.
 OPTION_TABLE = {
     "fresnel": (("exact", "f82", "schlick"), "exact",
@@ -16,7 +18,7 @@ OPTION_TABLE = {
 }
 
 #: Options the compiler passes to every backend that are not ours to validate.
-FOREIGN_OPTIONS = ("seed", "output")
+FOREIGN_OPTIONS = COMPILER_OPTIONS
 
 
 class OptionError(ValueError):
