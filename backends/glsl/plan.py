@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from cnlmc.bsdf import f0_conductor, fresnel_average, material_alpha
-from cnlmc.bsdf.evaluate import coat_alpha, conductor_fresnel
+from cnlmc.bsdf import coat_alpha, conductor_fresnel
 
 from .options import GlslOptions
 

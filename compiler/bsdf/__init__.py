@@ -6,7 +6,7 @@ multiplied by cos θi); RGB results have shape (..., 3). See docs/bsdf.md.
 """
 from .alpha import ALPHA_MIRROR, alpha_from_roughness, alpha_isotropic, anisotropy_stretch
 from .diffuse import lambert, oren_nayar
-from .evaluate import albedo, evaluate, material_alpha
+from .evaluate import albedo, coat_alpha, conductor_fresnel, evaluate, material_alpha
 from .fresnel import (f0_conductor, f0_from_ior, f82_from_tint, fresnel_average,
                       fresnel_conductor, fresnel_dielectric, fresnel_f82, fresnel_f82_tint,
                       fresnel_schlick, fresnel_schlick_average, ior_from_f0)
@@ -22,7 +22,7 @@ from .ward import ward, ward_1992, ward_duer, ward_gmd
 
 __all__ = [
     "ALPHA_MIRROR", "COS_EPS", "alpha_from_roughness", "alpha_isotropic", "anisotropy_stretch",
-    "lambert", "oren_nayar", "albedo", "evaluate", "material_alpha",
+    "lambert", "oren_nayar", "albedo", "coat_alpha", "conductor_fresnel", "evaluate", "material_alpha",
     "f0_conductor", "f0_from_ior", "f82_from_tint", "fresnel_average", "fresnel_conductor",
     "fresnel_dielectric", "fresnel_f82", "fresnel_f82_tint", "fresnel_schlick",
     "fresnel_schlick_average", "ior_from_f0", "dir_from_mu", "rotate_tangent", "spherical_dir",
