@@ -8,6 +8,9 @@ hover from the lexicon and `explain`. Never print to stdout here: it is the LSP 
 from __future__ import annotations
 
 import asyncio
+import gc
+import os
+import time
 import logging
 from concurrent.futures import ThreadPoolExecutor
 
@@ -21,6 +24,7 @@ from .lsp.incremental import Analyzer, Cancelled
 
 DEFAULT_DEBOUNCE_MS = 120
 log = logging.getLogger("cnlmc.lsp")
+TRACE = os.environ.get("CNLMC_LSP_TRACE")  # a file to append per-publish timings to
 
 
 class CnlServer(LanguageServer):
@@ -77,6 +81,19 @@ class CnlServer(LanguageServer):
             waiting.cancel()
         self.pending[uri] = asyncio.ensure_future(self.publish_later(uri, self.generation[uri]))
 
+    def publish(self, uri: str, version: int | None, diagnostics: list[dict]) -> None:
+        """Send publishDiagnostics with diagnostics already in JSON form (lsp/diagnostics.py caches
+        them per block): lsprotocol's converter would otherwise spend ~10 ms per 300 diagnostics."""
+        params = {"uri": uri, "diagnostics": diagnostics}
+        if version is not None:
+            params["version"] = version
+        send = getattr(self.protocol, "_send_data", None)
+        if send is None:  # pragma: no cover - a pygls without it: the typed, slower path
+            params["diagnostics"] = [self.protocol._converter.structure(d, types.Diagnostic) for d in diagnostics]
+            self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(**params))
+            return
+        send({"jsonrpc": "2.0", "method": types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS, "params": params})
+
     async def publish_later(self, uri: str, generation: int) -> None:
         if self.debounce_ms:
             await asyncio.sleep(self.debounce_ms / 1000)
@@ -84,6 +101,7 @@ class CnlServer(LanguageServer):
         if text is None:
             return
         version = self.workspace.get_text_document(uri).version
+        t0 = time.perf_counter()
         current = lambda: self.generation.get(uri) == generation  # noqa: E731
         loop = asyncio.get_running_loop()
         try:
@@ -96,8 +114,24 @@ class CnlServer(LanguageServer):
         if not current():
             return
         self.snapshots[uri] = snap
-        self.text_document_publish_diagnostics(
-            types.PublishDiagnosticsParams(uri=uri, diagnostics=self.lsp_diagnostics.of(snap, uri), version=version))
+        t1 = time.perf_counter()
+        diagnostics = self.lsp_diagnostics.of(snap, uri)
+        t2 = time.perf_counter()
+        self.publish(uri, version, diagnostics)
+        t3 = time.perf_counter()
+        gc.freeze()  # see keep_collections_small()
+        if TRACE:
+            with open(TRACE, "a", encoding="utf-8") as trace:
+                trace.write(f"{uri} v{version} analyse {(t1 - t0) * 1000:.1f} convert {(t2 - t1) * 1000:.1f} "
+                            f"send {(t3 - t2) * 1000:.1f} ms\n")
+
+
+def keep_collections_small() -> None:
+    """Full garbage collections over the cached blocks cost 50-100 ms in the middle of typing
+    (bench/lsp_bench.py). The caches are bounded and hold no cycles worth collecting, so what
+    survives a publish is frozen out of the collector's reach (gc.freeze after each publish)."""
+    gc.collect()
+    gc.freeze()
 
 
 server = CnlServer()
@@ -131,7 +165,7 @@ def did_close(ls: CnlServer, params: types.DidCloseTextDocumentParams):
         waiting.cancel()
     ls.generation.pop(uri, None)
     ls.snapshots.pop(uri, None)
-    ls.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+    ls.publish(uri, None, [])
 
 
 @server.feature(types.TEXT_DOCUMENT_HOVER)
@@ -189,6 +223,7 @@ async def on_inlay_hints(ls: CnlServer, params: types.InlayHintParams):
 
 def main() -> None:
     logging.basicConfig(level=logging.WARNING, format="cnlmc-lsp %(levelname)s %(message)s")  # stderr
+    keep_collections_small()
     server.start_io()
 
 

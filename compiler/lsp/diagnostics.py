@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections import OrderedDict
 
 from lsprotocol import types
+from pygls.protocol import default_converter
 
 from ..diagnostics import Severity
 from .positions import LineIndex
@@ -34,14 +35,16 @@ def to_lsp(diag, index: LineIndex, uri: str, first_line: int = 0) -> types.Diagn
 
 
 class LspDiagnostics:
-    """LSP diagnostics per block and first line: reused while the block's text and line stay."""
+    """LSP diagnostics as JSON-ready dicts, per block and first line: reused while the block's
+    text and line stay, so an edit converts (and lsprotocol's converter unstructures) one block."""
 
     def __init__(self, limit: int = 20000):
         self.limit = limit
         self._by_block: OrderedDict = OrderedDict()
+        self._converter = default_converter()
 
-    def of(self, snapshot, uri: str) -> list[types.Diagnostic]:
-        out: list[types.Diagnostic] = []
+    def of(self, snapshot, uri: str) -> list[dict]:
+        out: list[dict] = []
         for block in snapshot.blocks:
             relative = block.result.diagnostics
             if not relative:
@@ -49,7 +52,8 @@ class LspDiagnostics:
             key = (block.result, block.first_line, uri, snapshot.index.encoding)
             found = self._by_block.get(key)
             if found is None:
-                found = [to_lsp(d, snapshot.index, uri, block.first_line) for d in relative]
+                found = [self._converter.unstructure(to_lsp(d, snapshot.index, uri, block.first_line))
+                         for d in relative]
                 self._by_block[key] = found
                 if len(self._by_block) > self.limit:
                     self._by_block.popitem(last=False)
