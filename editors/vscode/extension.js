@@ -18,16 +18,11 @@ function activate(context) {
     {
       documentSelector: [{ language: "cnl" }],
       initializationOptions: settings(),
+      // sends workspace/didChangeConfiguration {settings: {cnlmc: {...}}} when settings change
       synchronize: { configurationSection: "cnlmc" },
     },
   );
-  context.subscriptions.push(
-    vscode.workspace.onDidChangeConfiguration((event) => {
-      if (event.affectsConfiguration("cnlmc") && client) {
-        client.sendNotification("workspace/didChangeConfiguration", { settings: { cnlmc: settings() } });
-      }
-    }),
-  );
+  context.subscriptions.push(client);
   return client.start();
 }
 
