@@ -49,7 +49,9 @@ def _diffuse_lobe(state, base: str, settings) -> str | None:
 def _warn_no_highlight(state) -> None:
     steps = state.provenance.get("anisotropy", [])
     with_words = [s for s in steps if s.words]
-    word = with_words[-1].words[-1].text if with_words else "anisotropy"
-    state.diagnostics.append(warning(None, "W108", f"'{word}' stretches the highlight, but this {state.noun.key} "
+    last = with_words[-1].words[-1] if with_words else None
+    word = last.text if last else "anisotropy"
+    span = last.span if last else state.selection.span
+    state.diagnostics.append(warning(span, "W108", f"'{word}' stretches the highlight, but this {state.noun.key} "
                                      "is matte and has none: anisotropy is not modelled",
                                      ("make it glossier for a visible highlight",)))
