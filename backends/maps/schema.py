@@ -1,0 +1,214 @@
+"""Schema check of graph TOML files; every error names the file and the dotted key."""
+from __future__ import annotations
+
+from numbers import Real
+
+from .errors import GraphSchemaError, did_you_mean
+from .registry import NODE_TYPES, REQUIRED, Input
+from .spec import OUTPUT_ROLES, Graph, GraphInput, GraphParam, NodeSpec, Ref
+
+TOP_KEYS = ("name", "doc", "params", "inputs", "nodes", "outputs", "presets")
+REF_KEYS = ("node", "param", "input", "mul", "add")
+
+
+class Checker:
+    """Carries the file name so that every complaint says where it comes from."""
+
+    def __init__(self, file: str):
+        self.file = file
+
+    def fail(self, key: str, message: str):
+        raise GraphSchemaError(f"{self.file}: {key}: {message}")
+
+    def known_keys(self, table: dict, allowed, where: str):
+        for key in table:
+            if key not in allowed:
+                self.fail(f"{where}.{key}".lstrip("."), f"unknown key '{key}'{did_you_mean(key, allowed)}")
+
+    def table(self, value, key: str) -> dict:
+        if not isinstance(value, dict):
+            self.fail(key, f"expected a table, got {type(value).__name__}")
+        return value
+
+    def string(self, value, key: str) -> str:
+        if not isinstance(value, str):
+            self.fail(key, "expected a string")
+        return value
+
+    def number(self, value, key: str) -> float:
+        if isinstance(value, bool) or not isinstance(value, Real):
+            self.fail(key, f"expected a number, got {value!r}")
+        return float(value)
+
+    def rgb(self, value, key: str) -> tuple[float, float, float]:
+        if not isinstance(value, list) or len(value) != 3:
+            self.fail(key, f"expected an RGB triple [r, g, b], got {value!r}")
+        return tuple(self.number(c, f"{key}[{i}]") for i, c in enumerate(value))
+
+
+def check_param(c: Checker, name: str, raw) -> GraphParam:
+    key = f"params.{name}"
+    table = c.table(raw, key)
+    c.known_keys(table, ("default", "range", "doc"), key)
+    for required in ("default", "range", "doc"):
+        if required not in table:
+            c.fail(f"{key}.{required}", "missing")
+    default = c.number(table["default"], f"{key}.default")
+    bounds = table["range"]
+    if not isinstance(bounds, list) or len(bounds) != 2:
+        c.fail(f"{key}.range", "expected [min, max]")
+    low, high = (c.number(b, f"{key}.range") for b in bounds)
+    if not low <= default <= high:
+        c.fail(f"{key}.default", f"{default} is outside the range [{low}, {high}]")
+    return GraphParam(default, low, high, c.string(table["doc"], f"{key}.doc"))
+
+
+def check_input(c: Checker, name: str, raw) -> GraphInput:
+    key = f"inputs.{name}"
+    table = c.table(raw, key)
+    c.known_keys(table, ("default", "doc"), key)
+    default = table.get("default")
+    value = c.rgb(default, f"{key}.default") if isinstance(default, list) else c.number(default, f"{key}.default")
+    return GraphInput(value, c.string(table.get("doc"), f"{key}.doc"))
+
+
+def check_ref(c: Checker, graph_names: dict, raw: dict, key: str) -> Ref:
+    c.known_keys(raw, REF_KEYS, key)
+    sources = [s for s in ("node", "param", "input") if s in raw]
+    if len(sources) != 1:
+        c.fail(key, "a reference needs exactly one of node=, param=, input=")
+    source = sources[0]
+    name = c.string(raw[source], f"{key}.{source}")
+    if name not in graph_names[source]:
+        c.fail(f"{key}.{source}", f"unknown {source} '{name}'{did_you_mean(name, graph_names[source])}")
+    if source == "node" and ("mul" in raw or "add" in raw):
+        c.fail(key, "mul/add apply to param= and input= references only")
+    mul, add = (c.number(raw.get(k, d), f"{key}.{k}") for k, d in (("mul", 1.0), ("add", 0.0)))
+    return Ref(source, name, mul, add)
+
+
+def check_value(c: Checker, names: dict, spec: Input, raw, key: str):
+    """Check one node input against its declared kind; return the parsed value."""
+    if isinstance(raw, dict):
+        if spec.kind in ("enum", "bool", "colors", "floats"):
+            c.fail(key, f"a {spec.kind} input cannot be a reference")
+        ref = check_ref(c, names, raw, key)
+        if ref.source == "node" and spec.kind != "map":
+            c.fail(key, f"a {spec.kind} input takes a constant or a param=/input= reference, not a node")
+        return ref
+    return check_constant(c, names, spec, raw, key)
+
+
+def check_constant(c: Checker, names: dict, spec: Input, raw, key: str):
+    kind = spec.kind
+    if kind == "enum":
+        if raw not in spec.choices:
+            c.fail(key, f"'{raw}' is not one of {', '.join(spec.choices)}{did_you_mean(str(raw), spec.choices)}")
+        return raw
+    if kind == "bool":
+        if not isinstance(raw, bool):
+            c.fail(key, "expected true or false")
+        return raw
+    if kind == "colors":
+        if not isinstance(raw, list) or len(raw) < 2:
+            c.fail(key, "expected a list of at least two colours")
+        return [check_value(c, names, Input("color"), item, f"{key}[{i}]") for i, item in enumerate(raw)]
+    if kind == "floats":
+        if not isinstance(raw, list):
+            c.fail(key, "expected a list of numbers")
+        return [c.number(x, f"{key}[{i}]") for i, x in enumerate(raw)]
+    if kind == "color" or (kind == "map" and isinstance(raw, list)):
+        return c.rgb(raw, key)
+    value = c.number(raw, key)
+    return int(round(value)) if kind == "int" else value
+
+
+def check_node(c: Checker, names: dict, name: str, raw) -> NodeSpec:
+    key = f"nodes.{name}"
+    table = c.table(raw, key)
+    if "type" not in table:
+        c.fail(f"{key}.type", "missing")
+    node_type = c.string(table["type"], f"{key}.type")
+    if node_type not in NODE_TYPES:
+        c.fail(f"{key}.type", f"unknown node type '{node_type}'{did_you_mean(node_type, NODE_TYPES)}")
+    inputs = NODE_TYPES[node_type].inputs
+    args = {}
+    for arg, value in table.items():
+        if arg == "type":
+            continue
+        if arg not in inputs:
+            c.fail(f"{key}.{arg}", f"unknown input '{arg}' for node type '{node_type}'{did_you_mean(arg, inputs)}")
+        args[arg] = check_value(c, names, inputs[arg], value, f"{key}.{arg}")
+    for arg, spec in inputs.items():
+        if spec.default is REQUIRED and arg not in args:
+            c.fail(f"{key}.{arg}", f"required input of '{node_type}' is missing")
+    return NodeSpec(node_type, args)
+
+
+def node_refs(value):
+    if isinstance(value, Ref):
+        return [value.name] if value.source == "node" else []
+    if isinstance(value, list):
+        return [name for item in value for name in node_refs(item)]
+    return []
+
+
+def check_acyclic(c: Checker, nodes: dict[str, NodeSpec]):
+    state: dict[str, str] = {}
+
+    def visit(name, path):
+        if state.get(name) == "done":
+            return
+        if state.get(name) == "active":
+            c.fail(f"nodes.{name}", "cycle: " + " -> ".join(path + [name]))
+        state[name] = "active"
+        for arg in nodes[name].args.values():
+            for dep in node_refs(arg):
+                visit(dep, path + [name])
+        state[name] = "done"
+
+    for name in nodes:
+        visit(name, [])
+
+
+def check_outputs(c: Checker, raw, nodes) -> dict[str, str]:
+    table = c.table(raw, "outputs")
+    c.known_keys(table, OUTPUT_ROLES, "outputs")
+    for role, node in table.items():
+        if c.string(node, f"outputs.{role}") not in nodes:
+            c.fail(f"outputs.{role}", f"unknown node '{node}'{did_you_mean(node, nodes)}")
+    if not table:
+        c.fail("outputs", "a graph needs at least one output")
+    return dict(table)
+
+
+def check_presets(c: Checker, raw, params: dict[str, GraphParam]) -> dict:
+    presets = {}
+    for preset, values in c.table(raw, "presets").items():
+        key = f"presets.{preset}"
+        c.known_keys(c.table(values, key), params, key)
+        presets[preset] = {p: c.number(v, f"{key}.{p}") for p, v in values.items()}
+        for p, v in presets[preset].items():
+            if not params[p].low <= v <= params[p].high:
+                c.fail(f"{key}.{p}", f"{v} is outside the range [{params[p].low}, {params[p].high}]")
+    return presets
+
+
+def check_graph(raw: dict, file: str, stem: str) -> Graph:
+    c = Checker(file)
+    c.known_keys(raw, TOP_KEYS, "")
+    for required in ("doc", "nodes", "outputs"):
+        if required not in raw:
+            c.fail(required, "missing")
+    name = c.string(raw.get("name", stem), "name")
+    if name != stem:
+        c.fail("name", f"'{name}' differs from the file name '{stem}'")
+    params = {k: check_param(c, k, v) for k, v in c.table(raw.get("params", {}), "params").items()}
+    inputs = {k: check_input(c, k, v) for k, v in c.table(raw.get("inputs", {}), "inputs").items()}
+    raw_nodes = c.table(raw["nodes"], "nodes")
+    names = {"node": raw_nodes, "param": params, "input": inputs}
+    nodes = {k: check_node(c, names, k, v) for k, v in raw_nodes.items()}
+    check_acyclic(c, nodes)
+    outputs = check_outputs(c, raw["outputs"], nodes)
+    presets = check_presets(c, raw.get("presets", {}), params)
+    return Graph(name, c.string(raw["doc"], "doc"), file, params, inputs, nodes, outputs, presets)

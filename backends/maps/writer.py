@@ -1,0 +1,79 @@
+"""Writing baked maps through OpenImageIO, atomically, with colour-space metadata.
+
+Colour roles are written sRGB-encoded to PNG (oiio:ColorSpace "sRGB") and linear to EXR
+("lin_rec709"); normals as n * 0.5 + 0.5 and parameter maps as-is, as data: "Raw" in EXR,
+and "lin_rec709" in PNG (PNG cannot say "Raw"; this writes gAMA 1.0, so readers do not
+apply the sRGB curve, whereas an untagged PNG reads back as sRGB).
+"""
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from .colour import linear_to_srgb
+from .errors import MapError
+from .targets import COLOR_ROLES
+
+FORMATS = {  # fmt -> (extension, OIIO pixel type)
+    "png8": (".png", "uint8"),
+    "png16": (".png", "uint16"),
+    "exr-half": (".exr", "half"),
+    "exr-float": (".exr", "float"),
+}
+
+
+def encode(role: str, array: np.ndarray, extension: str) -> tuple[np.ndarray, str]:
+    """Pixels to store and their colour space."""
+    png = extension == ".png"
+    if role in COLOR_ROLES:
+        return (linear_to_srgb(array), "sRGB") if png else (array, "lin_rec709")
+    data_space = "lin_rec709" if png else "Raw"
+    return (array * 0.5 + 0.5 if role == "normal" else array), data_space
+
+
+def write_image(path: Path, pixels: np.ndarray, pixel_type: str, colour_space: str) -> None:
+    import OpenImageIO as oiio
+
+    pixels = pixels[..., None] if pixels.ndim == 2 else pixels  # OIIO misreads 2-D arrays
+    height, width, channels = pixels.shape
+    spec = oiio.ImageSpec(width, height, channels, pixel_type)
+    spec.attribute("oiio:ColorSpace", colour_space)
+    if path.suffix == ".exr":
+        spec.attribute("compression", "zip")
+    output = oiio.ImageOutput.create(str(path))
+    if output is None or not output.open(str(path), spec):
+        raise MapError(f"cannot write {path}: {oiio.geterror()}")
+    ok = output.write_image(np.ascontiguousarray(pixels, np.float32))
+    output.close()
+    if not ok:
+        raise MapError(f"cannot write {path}: {output.geterror()}")
+
+
+def write_atomically(path: Path, pixels: np.ndarray, pixel_type: str, colour_space: str) -> None:
+    handle, temp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=path.suffix, dir=path.parent)
+    os.close(handle)
+    try:
+        write_image(Path(temp), pixels, pixel_type, colour_space)
+        os.replace(temp, path)
+    except BaseException:
+        Path(temp).unlink(missing_ok=True)
+        raise
+
+
+def write_maps(arrays: dict, out_dir, fmt: str = "png8", stem: str = "material") -> list[Path]:
+    """Write each role to out_dir/{stem}_{role}{.png|.exr}; returns the paths written."""
+    if fmt not in FORMATS:
+        raise MapError(f"unknown map format '{fmt}': use one of {', '.join(FORMATS)}")
+    extension, pixel_type = FORMATS[fmt]
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for role, array in arrays.items():
+        pixels, colour_space = encode(role, np.asarray(array, np.float32), extension)
+        path = out_dir / f"{stem}_{role}{extension}"
+        write_atomically(path, np.clip(pixels, 0.0, 1.0) if extension == ".png" else pixels, pixel_type, colour_space)
+        paths.append(path)
+    return paths
