@@ -31,9 +31,11 @@ def blended(mode: str, a: np.ndarray, b: np.ndarray) -> np.ndarray:
 def blend(grid: Grid, a=0.0, b=1.0, mode="mix", amount=1.0, clamp=True):
     """Blend b over a with `mode`, then mix with a by `amount` (a map or a number)."""
     a, b, amount = align(a, b, amount)
-    out = a + (blended(mode, a, b) - a) * amount
-    out = np.clip(out, 0.0, 1.0) if clamp else out
-    return np.broadcast_to(out, np.broadcast_shapes(out.shape, (grid.size, grid.size) + out.shape[2:])).astype(np.float32)
+    top = blended(mode, a, b)
+    out = top if (amount.ndim == 0 and amount == 1.0) else a + (top - a) * amount
+    out = np.clip(out, 0.0, 1.0, out=out if out is not a and out is not b else None) if clamp else out
+    full = (grid.size, grid.size) + out.shape[2:]
+    return out if out.shape == full else np.broadcast_to(out, np.broadcast_shapes(out.shape, full)).copy()
 
 
 def spectral_filter(image: np.ndarray, gain: np.ndarray) -> np.ndarray:

@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 
 from .grid import Grid
-from .lattice import perlin_noise, value_noise
+from .lattice import SIGNED, fractal_sum, perlin_noise, value_noise
 from .simplex import simplex_noise
 from .worley import worley_noise
 
@@ -18,14 +18,20 @@ def octave_scales(grid: Grid, scale: int, octaves: int) -> list[int]:
 
 
 def fractal(grid: Grid, basis: str, scale: int, octaves: int, gain: float, stretch: int, fold: bool):
+    """Normalised weighted octave sum in [-1, 1] (of |octaves| when `fold`)."""
+    scales = octave_scales(grid, scale, octaves)
+    weights = [gain**k for k in range(len(scales))]
+    if basis in SIGNED and not fold:
+        return fractal_sum(grid, basis, scales, weights, stretch, basis) / np.float32(sum(weights))
+    return octave_loop(grid, basis, scales, weights, stretch, fold)
+
+
+def octave_loop(grid: Grid, basis: str, scales, weights, stretch: int, fold: bool):
     total = np.zeros((grid.size, grid.size), np.float32)
-    weight, norm = 1.0, 0.0
-    for k, period in enumerate(octave_scales(grid, scale, octaves)):
+    for k, (period, weight) in enumerate(zip(scales, weights)):
         layer = BASES[basis](grid, period, stretch, salt=(basis, k)) * 2.0 - 1.0
         total += np.float32(weight) * (np.abs(layer) if fold else layer)
-        norm += weight
-        weight *= gain
-    return total / np.float32(norm)
+    return total / np.float32(sum(weights))
 
 
 def fbm(grid: Grid, basis="perlin", scale=4, octaves=5, gain=0.5, stretch=1):

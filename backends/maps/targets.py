@@ -22,8 +22,7 @@ def to_color(array: np.ndarray, size: int) -> np.ndarray:
 def to_normal(array: np.ndarray, size: int, where: str) -> np.ndarray:
     if np.ndim(array) != 3 or np.shape(array)[-1] != 3:
         raise MapError(f"{where}: a normal output must come from a height_to_normal node")
-    normal = np.asarray(array, np.float32)
-    return normal / np.linalg.norm(normal, axis=-1, keepdims=True)
+    return np.ascontiguousarray(array, np.float32)  # height_to_normal already normalises
 
 
 def to_parameter(array: np.ndarray, size: int) -> np.ndarray:
