@@ -11,6 +11,7 @@ from .colour import linear_to_srgb
 from .evaluate import evaluate
 from .library import graph_names, load_graph
 from .targets import COLOR_ROLES
+from cnlmc.output import usual_mode
 
 
 def display_pixels(role: str, array: np.ndarray) -> np.ndarray:
@@ -55,5 +56,6 @@ def save_atomically(figure, path: Path) -> Path:
     os.close(handle)
     figure.savefig(temp, dpi=100)
     plt.close(figure)
+    os.chmod(temp, usual_mode())
     os.replace(temp, path)
     return path

@@ -16,6 +16,7 @@ import numpy as np
 from .colour import linear_to_srgb
 from .errors import MapError
 from .targets import COLOR_ROLES
+from cnlmc.output import usual_mode
 
 FORMATS = {  # fmt -> (extension, OIIO pixel type)
     "png8": (".png", "uint8"),
@@ -57,6 +58,7 @@ def write_atomically(path: Path, pixels: np.ndarray, pixel_type: str, colour_spa
     os.close(handle)
     try:
         write_image(Path(temp), pixels, pixel_type, colour_space)
+        os.chmod(temp, usual_mode())  # mkstemp makes 0600
         os.replace(temp, path)
     except BaseException:
         Path(temp).unlink(missing_ok=True)
