@@ -16,6 +16,7 @@ BUILTIN_BACKENDS = {
     "materialx": "cnlmc.backends.materialx",
     "usd": "cnlmc.backends.usd",
     "mitsuba": "cnlmc.backends.mitsuba",
+    "maps": "cnlmc.backends.maps.target",
 }
 
 

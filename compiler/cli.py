@@ -32,6 +32,9 @@ def build_parser() -> argparse.ArgumentParser:
     bake.add_argument("--size", type=int, default=1024, help="map size in pixels (default 1024)")
     bake.add_argument("--format", default="png8", choices=["png8", "png16", "exr-half", "exr-float"],
                       help="image format (default png8)")
+    sheet = sub.add_parser("sheet", help="a contact sheet PNG of every stdlib procedural graph")
+    sheet.add_argument("-o", "--output", default="maps_sheet.png", help="output PNG (default maps_sheet.png)")
+    sheet.add_argument("--size", type=int, default=256, help="tile size in pixels (default 256)")
     return parser
 
 
@@ -75,7 +78,8 @@ def main(argv=None) -> int:
 def _run(args) -> int:
     from . import commands
     handler = {"compile": commands.compile_cmd, "explain": commands.explain_cmd,
-               "targets": commands.targets_cmd, "lsp": commands.lsp_cmd, "bake": commands.bake_cmd}[args.command]
+               "targets": commands.targets_cmd, "lsp": commands.lsp_cmd, "bake": commands.bake_cmd,
+               "sheet": commands.sheet_cmd}[args.command]
     return handler(args)
 
 

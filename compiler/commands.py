@@ -145,3 +145,16 @@ def bake_cmd(args) -> int:
     for path in bake_materials(result.ir, args.output, args.size, args.format, args.seed):
         print(f"wrote {path}", file=sys.stderr)
     return EXIT_OK
+
+
+def sheet_cmd(args) -> int:
+    try:
+        from cnlmc.backends.maps import MapError, render_contact_sheet
+    except ImportError as exc:
+        raise UsageError(f"the contact sheet cannot load: {exc}; install it with: pip install 'cnlmc[maps]'") from None
+    try:
+        path = render_contact_sheet(args.output, size=args.size)
+    except MapError as exc:
+        raise UsageError(str(exc)) from None
+    print(f"wrote {path}", file=sys.stderr)
+    return EXIT_OK

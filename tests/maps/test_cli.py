@@ -1,0 +1,63 @@
+"""The map commands as a user runs them: cnlmc bake, --target maps, cnlmc sheet."""
+
+import subprocess
+import sys
+
+import numpy as np
+import OpenImageIO as oiio
+
+
+def cnlmc(*args, stdin=None):
+    return subprocess.run([sys.executable, "-m", "cnlmc", *args], input=stdin,
+                          capture_output=True, text=True, timeout=300)
+
+
+def read(path):
+    image = oiio.ImageInput.open(str(path))
+    pixels, spec = image.read_image(), image.spec()
+    image.close()
+    return np.asarray(pixels), spec
+
+
+def test_bake_writes_only_the_maps_a_material_needs(tmp_path):
+    r = cnlmc("bake", "-", "-o", str(tmp_path), "--size", "64",
+              stdin="deck: white varnished oak\nhull: polished steel\nrusty iron\n")
+    assert r.returncode == 0, r.stderr
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert names == ["deck_base_color.png", "deck_roughness.png",
+                     "rusty_iron_base_color.png", "rusty_iron_mask.png", "rusty_iron_roughness.png"]
+    assert "hull: uniform, no maps to bake" in r.stderr
+    pixels, spec = read(tmp_path / "deck_base_color.png")
+    assert pixels.shape == (64, 64, 3) and spec.getattribute("oiio:ColorSpace")
+
+
+def test_bake_exr_and_a_seed_changes_the_pattern(tmp_path):
+    for seed in ("1", "2"):
+        r = cnlmc("bake", "-", "-o", str(tmp_path / seed), "--size", "32", "--format", "exr-half", "--seed", seed,
+                  stdin="marble\n")
+        assert r.returncode == 0, r.stderr
+    a, _ = read(tmp_path / "1" / "marble_base_color.exr")
+    b, _ = read(tmp_path / "2" / "marble_base_color.exr")
+    assert a.shape == (32, 32, 3) and not np.array_equal(a, b)
+
+
+def test_bake_refuses_absurd_sizes():
+    r = cnlmc("bake", "-", "-o", "/tmp/never", "--size", "100000", stdin="oak\n")
+    assert r.returncode == 2
+    assert "map size 100000 is out of range: use a power of two from 8 to 8192" in r.stderr
+
+
+def test_target_maps_gives_the_same_images_as_bake(tmp_path):
+    r = cnlmc("compile", "-", "-t", "maps", "-o", str(tmp_path / "t") + "/", "--option", "size=32", stdin="oak\n")
+    assert r.returncode == 0, r.stderr
+    r = cnlmc("bake", "-", "-o", str(tmp_path / "b"), "--size", "32", stdin="oak\n")
+    for name in ("oak_base_color.png", "oak_roughness.png"):
+        assert np.array_equal(read(tmp_path / "t" / name)[0], read(tmp_path / "b" / name)[0])
+
+
+def test_sheet_writes_a_png(tmp_path):
+    out = tmp_path / "sheet.png"
+    r = cnlmc("sheet", "-o", str(out), "--size", "16")
+    assert r.returncode == 0, r.stderr
+    pixels, spec = read(out)
+    assert spec.width > 16 * 4 and spec.height > 16 * 10
