@@ -30,10 +30,34 @@ def blended(mode: str, a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 def blend(grid: Grid, a=0.0, b=1.0, mode="mix", amount=1.0, clamp=True):
     """Blend b over a with `mode`, then mix with a by `amount` (a map or a number)."""
-    a, b, amount = align(a, b, amount)
-    top = blended(mode, a, b)
-    out = top if (amount.ndim == 0 and amount == 1.0) else a + (top - a) * amount
-    out = np.clip(out, 0.0, 1.0, out=out if out is not a and out is not b else None) if clamp else out
+    a, b, amount = (as_array(x) for x in (a, b, amount))
+    if not any(is_rgb(x) for x in (a, b, amount)):
+        return full_size(blend_plane(mode, a, b, amount, clamp), grid)
+    out = np.empty((grid.size, grid.size, 3), np.float32)
+    for c in range(3):  # channel planes written into the interleaved result: no (..., 3)-wide loops
+        out[..., c] = blend_plane(mode, channel(a, c), channel(b, c), channel(amount, c), clamp)
+    return out
+
+
+def channel(x: np.ndarray, c: int) -> np.ndarray:
+    return x[..., c] if is_rgb(x) else x
+
+
+def blend_plane(mode: str, a: np.ndarray, b: np.ndarray, amount: np.ndarray, clamp: bool) -> np.ndarray:
+    """One channel of `blend`: a + (blended - a) * amount, computed in place where possible."""
+    top = np.asarray(blended(mode, a, b), np.float32)
+    fresh = top is not a and top is not b
+    if not (amount.ndim == 0 and amount == 1.0):
+        shape = np.broadcast_shapes(top.shape, a.shape, amount.shape)
+        top = np.subtract(top, a, out=top) if fresh and top.shape == shape else np.subtract(top, a, dtype=np.float32)
+        top *= amount
+        top += a
+    elif not fresh:
+        top = top.copy()
+    return np.clip(top, 0.0, 1.0, out=top) if clamp else top
+
+
+def full_size(out: np.ndarray, grid: Grid) -> np.ndarray:
     full = (grid.size, grid.size) + out.shape[2:]
     return out if out.shape == full else np.broadcast_to(out, np.broadcast_shapes(out.shape, full)).copy()
 
@@ -64,19 +88,43 @@ def directional_blur(grid: Grid, input=0.0, length=0.1, direction=0.0):
 
 def levels(grid: Grid, input=0.0, in_low=0.0, in_high=1.0, gamma=1.0, out_low=0.0, out_high=1.0):
     """Photoshop-style levels: remap [in_low, in_high], apply gamma, map to [out_low, out_high]."""
-    x = np.clip((as_array(input) - in_low) / max(in_high - in_low, 1e-6), 0.0, 1.0)
-    x = np.power(x, 1.0 / max(gamma, 1e-3))
-    return (out_low + (out_high - out_low) * x).astype(np.float32)
+    x = as_array(input)
+    span = max(in_high - in_low, 1e-6)
+    out = np.empty(x.shape, np.float32)
+    if in_low == 0.0 and span == 1.0:
+        np.clip(x, 0.0, 1.0, out=out)  # (x - 0) / 1 is x exactly
+    else:
+        np.subtract(x, in_low, out=out)
+        out /= span
+        np.clip(out, 0.0, 1.0, out=out)
+    power_in_place(out, 1.0 / max(gamma, 1e-3))
+    if out_low != 0.0 or out_high != 1.0:
+        out *= out_high - out_low
+        out += out_low
+    return out
+
+
+def power_in_place(x: np.ndarray, exponent: float) -> None:
+    """x **= exponent; small whole exponents by repeated multiplication (float32 rounding)."""
+    if exponent == 1.0:
+        return
+    if exponent in (2.0, 4.0, 8.0):
+        for _ in range(int(exponent).bit_length() - 1):
+            np.multiply(x, x, out=x)
+        return
+    np.power(x, np.float32(exponent), out=x)
 
 
 def contrast(grid: Grid, input=0.0, amount=1.0, pivot=0.5):
     """Scale distances from `pivot` by `amount` (0 = flat, 1 = unchanged), clamped to [0, 1]."""
-    x = as_array(input)
-    return np.clip(pivot + (x - pivot) * amount, 0.0, 1.0).astype(np.float32)
+    out = np.subtract(as_array(input), pivot, dtype=np.float32)
+    out *= amount
+    out += pivot
+    return np.clip(out, 0.0, 1.0, out=out)
 
 
 def invert(grid: Grid, input=0.0):
-    return (1.0 - as_array(input)).astype(np.float32)
+    return np.subtract(np.float32(1.0), as_array(input), dtype=np.float32)
 
 
 def colorize(grid: Grid, input=0.0, colors=((0, 0, 0), (1, 1, 1)), positions=None):
@@ -99,8 +147,10 @@ def hsv_adjust(grid: Grid, input=(0.5, 0.5, 0.5), hue=0.0, saturation=1.0, value
 def threshold(grid: Grid, input=0.0, low=0.45, high=0.55):
     """Smoothstep mask: 0 below `low`, 1 above `high`."""
     x = as_array(input)
-    t = np.clip((x - low) / max(high - low, 1e-6), 0.0, 1.0)
-    return (t * t * (3.0 - 2.0 * t)).astype(np.float32)
+    t = np.subtract(x, low, dtype=np.float32)
+    t /= max(high - low, 1e-6)
+    np.clip(t, 0.0, 1.0, out=t)
+    return (t * t * (3.0 - 2.0 * t)).astype(np.float32, copy=False)
 
 
 def sample_periodic(image: np.ndarray, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
@@ -149,8 +199,10 @@ def normalize(grid: Grid, input=0.0, spread=0.18):
     restores contrast lost by blurring and makes parameters act on a known range."""
     x = as_array(input)
     deviation = float(x.std())
-    scaled = (x - x.mean()) * np.float32(spread / deviation if deviation > 1e-8 else 0.0)
-    return np.clip(0.5 + scaled, 0.0, 1.0).astype(np.float32)
+    out = np.subtract(x, x.mean(), dtype=np.float32)
+    out *= np.float32(spread / deviation if deviation > 1e-8 else 0.0)
+    out += np.float32(0.5)
+    return np.clip(out, 0.0, 1.0, out=out)
 
 
 def coverage_mask(grid: Grid, input=0.0, coverage=0.5, softness=0.05):

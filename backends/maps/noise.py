@@ -4,8 +4,8 @@ from __future__ import annotations
 import numpy as np
 
 from .grid import Grid
-from .lattice import SIGNED, fractal_sum, perlin_noise, value_noise
-from .simplex import simplex_noise
+from .lattice import FACTORS, clip01, fractal_sum, noise_sum, perlin_noise, value_noise
+from .simplex import simplex_noise, simplex_signed
 from .worley import worley_noise
 
 BASES = {"perlin": perlin_noise, "value": value_noise, "simplex": simplex_noise}
@@ -17,34 +17,44 @@ def octave_scales(grid: Grid, scale: int, octaves: int) -> list[int]:
     return [s for s in scales if s <= grid.size // 2] or [scales[0]]
 
 
-def fractal(grid: Grid, basis: str, scale: int, octaves: int, gain: float, stretch: int, fold: bool):
-    """Normalised weighted octave sum in [-1, 1] (of |octaves| when `fold`)."""
-    scales = octave_scales(grid, scale, octaves)
-    weights = [gain**k for k in range(len(scales))]
-    if basis in SIGNED and not fold:
-        return fractal_sum(grid, basis, scales, weights, stretch, basis) / np.float32(sum(weights))
-    return octave_loop(grid, basis, scales, weights, stretch, fold)
+def signed_layer(grid: Grid, basis: str, period: int, stretch: int, salt) -> np.ndarray:
+    """One octave in [-1, 1] (a fresh float32 array the caller may overwrite)."""
+    if basis == "simplex":
+        layer = simplex_signed(grid, period, stretch, salt)
+    else:
+        layer = noise_sum(grid, basis, [(period, 1.0, salt)], stretch)
+    return np.clip(layer, -1.0, 1.0, out=layer)
 
 
-def octave_loop(grid: Grid, basis: str, scales, weights, stretch: int, fold: bool):
-    total = np.zeros((grid.size, grid.size), np.float32)
+def octave_loop(grid: Grid, basis: str, scales, weights, stretch: int, fold: bool, offset: float = 0.0):
+    """offset + sum of weight * octave (of |octave| when `fold`), octave by octave."""
+    total = np.full((grid.size, grid.size), offset, np.float32)
     for k, (period, weight) in enumerate(zip(scales, weights)):
-        layer = BASES[basis](grid, period, stretch, salt=(basis, k)) * 2.0 - 1.0
-        total += np.float32(weight) * (np.abs(layer) if fold else layer)
-    return total / np.float32(sum(weights))
+        layer = signed_layer(grid, basis, period, stretch, (basis, k))
+        if fold:
+            np.abs(layer, out=layer)
+        layer *= np.float32(weight)
+        total += layer
+    return total
 
 
 def fbm(grid: Grid, basis="perlin", scale=4, octaves=5, gain=0.5, stretch=1):
     """Fractal Brownian motion: octaves of `basis` noise, each twice as fine, weights * gain.
     Rescaled so the result spans roughly [0, 1] around 0.5."""
-    signed = fractal(grid, basis, scale, octaves, gain, stretch, fold=False)
-    return np.clip(0.5 + signed * 1.25, 0.0, 1.0).astype(np.float32)
+    scales = octave_scales(grid, scale, octaves)
+    weights = [gain**k for k in range(len(scales))]
+    weights = [1.25 * w / sum(weights) for w in weights]
+    if basis in FACTORS:
+        return clip01(fractal_sum(grid, basis, scales, weights, stretch, basis, offset=0.5))
+    return clip01(octave_loop(grid, basis, scales, weights, stretch, fold=False, offset=0.5))
 
 
 def turbulence(grid: Grid, basis="perlin", scale=4, octaves=5, gain=0.5, stretch=1):
     """Sum of |noise| octaves: billowy, with sharp creases at the zero crossings."""
-    folded = fractal(grid, basis, scale, octaves, gain, stretch, fold=True)
-    return np.clip(folded * 2.0, 0.0, 1.0).astype(np.float32)
+    scales = octave_scales(grid, scale, octaves)
+    weights = [gain**k for k in range(len(scales))]
+    weights = [2.0 * w / sum(weights) for w in weights]
+    return clip01(octave_loop(grid, basis, scales, weights, stretch, fold=True))
 
 
 def single(basis: str):

@@ -9,32 +9,44 @@ from .grid import Grid
 DEPTH_PER_STRENGTH = 0.01  # tile units of relief for a height range of 1 at strength 1
 
 
-def central_difference(height: np.ndarray, axis: int) -> np.ndarray:
-    """h[i + 1] - h[i - 1] along `axis`, wrapping around the tile."""
-    h = height if axis == 1 else height.T
-    out = np.empty_like(h)
-    out[:, 1:-1] = h[:, 2:] - h[:, :-2]
-    out[:, 0] = h[:, 1] - h[:, -1]
-    out[:, -1] = h[:, 0] - h[:, -2]
-    return out if axis == 1 else out.T
+def central_difference(height: np.ndarray, axis: int, scale: np.float32) -> np.ndarray:
+    """(h[i + 1] - h[i - 1]) * scale along `axis`, wrapping around the tile."""
+    out = np.empty_like(height)
+    if axis == 1:
+        np.subtract(height[:, 2:], height[:, :-2], out=out[:, 1:-1])
+        np.subtract(height[:, 1], height[:, -1], out=out[:, 0])
+        np.subtract(height[:, 0], height[:, -2], out=out[:, -1])
+    else:
+        np.subtract(height[2:], height[:-2], out=out[1:-1])
+        np.subtract(height[1], height[-1], out=out[0])
+        np.subtract(height[0], height[-2], out=out[-1])
+    out *= scale
+    return out
 
 
-def slopes(height: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """dh/du and dh/dv in height units per tile (central differences, wrapping)."""
+def slopes(height: np.ndarray, factor: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
+    """dh/du and dh/dv in height units per tile, times `factor` (central differences,
+    wrapping).  The half-size step is a power of two, so folding it into `factor`
+    rounds exactly like scaling twice."""
     half = np.float32(height.shape[0] / 2.0)
-    return central_difference(height, 1) * half, central_difference(height, 0) * -half  # row 0 is the top
+    factor = np.float32(factor)
+    return central_difference(height, 1, half * factor), central_difference(height, 0, -half * factor)  # row 0 is the top
 
 
 def height_to_normal(grid: Grid, input=0.5, strength=1.0):
     """Unit normals (H, W, 3) in [-1, 1] of the surface z = strength * 0.01 * height."""
     height = np.broadcast_to(as_array(input), (grid.size, grid.size) + np.shape(input)[2:])
     height = luminance(height) if is_rgb(height) else height
-    d_du, d_dv = slopes(np.ascontiguousarray(height, np.float32))
-    depth = np.float32(-strength * DEPTH_PER_STRENGTH)
-    nx, ny = d_du * depth, d_dv * depth
-    inverse_length = 1.0 / np.sqrt(nx * nx + ny * ny + np.float32(1.0))
+    nx, ny = slopes(np.ascontiguousarray(height, np.float32), -strength * DEPTH_PER_STRENGTH)
+    inverse_length = nx * nx
+    inverse_length += np.multiply(ny, ny)
+    inverse_length += np.float32(1.0)
+    np.sqrt(inverse_length, out=inverse_length)
+    np.divide(np.float32(1.0), inverse_length, out=inverse_length)
     normal = np.empty((grid.size, grid.size, 3), np.float32)
-    normal[..., 0], normal[..., 1], normal[..., 2] = nx * inverse_length, ny * inverse_length, inverse_length
+    np.multiply(nx, inverse_length, out=normal[..., 0])
+    np.multiply(ny, inverse_length, out=normal[..., 1])
+    normal[..., 2] = inverse_length
     return normal
 
 

@@ -25,8 +25,8 @@ def corner_contribution(gx, gy, cx, cy, x, y):
     return falloff * falloff * (gx * dx + gy * dy)
 
 
-def simplex_noise(grid: Grid, scale: int, stretch: int = 1, salt="simplex") -> np.ndarray:
-    """Simplex-style noise rescaled to roughly [0, 1]."""
+def simplex_signed(grid: Grid, scale: int, stretch: int = 1, salt="simplex") -> np.ndarray:
+    """Simplex-style noise, roughly [-1, 1]."""
     py, px = periods(scale, stretch)
     angle = grid.rng(salt, py, px).uniform(0.0, 2.0 * np.pi, (py, px))
     gx, gy = np.cos(angle).astype(np.float32), np.sin(angle).astype(np.float32)
@@ -39,4 +39,12 @@ def simplex_noise(grid: Grid, scale: int, stretch: int = 1, salt="simplex") -> n
     for cx, cy in ((ix, iy), (mid_x, mid_y), (ix + 1, iy + 1)):
         cell = (cy % py, cx % px)
         total += corner_contribution(gx[cell], gy[cell], cx, cy, x, y)
-    return np.clip(0.5 + 0.5 * NORMALISATION * total, 0.0, 1.0).astype(np.float32)
+    return total * np.float32(NORMALISATION)
+
+
+def simplex_noise(grid: Grid, scale: int, stretch: int = 1, salt="simplex") -> np.ndarray:
+    """Simplex-style noise rescaled to roughly [0, 1]."""
+    noise = simplex_signed(grid, scale, stretch, salt)
+    noise *= np.float32(0.5)
+    noise += np.float32(0.5)
+    return np.clip(noise, 0.0, 1.0, out=noise)
