@@ -261,7 +261,9 @@ def _freeze_long_lived() -> None:
     counting still frees everything; only cyclic garbage that exists at this moment is kept.
     Set CNLMC_NO_GC_FREEZE=1 to leave the collector alone.
     """
+    import atexit
     import gc
     import os
     if not os.environ.get("CNLMC_NO_GC_FREEZE"):
         gc.freeze()
+        atexit.register(gc.unfreeze)  # let extension modules see their objects freed at exit
