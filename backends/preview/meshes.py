@@ -1,0 +1,254 @@
+"""Preview meshes: generated in numpy (sphere, shader ball, Newell teapot) or loaded (OBJ, PLY).
+
+Every mesh is indexed triangles with per-vertex position, unit normal, unit tangent (the +U
+direction, Gram-Schmidt against the normal) and UV. World space is y-up; `MESHES` maps a
+name to its generator. `fit()` scales a mesh to a unit bounding sphere standing on y = 0.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+DATA = Path(__file__).parent / "data"
+
+
+@dataclass
+class Mesh:
+    positions: np.ndarray   # (N, 3) float32
+    normals: np.ndarray     # (N, 3) float32, unit
+    tangents: np.ndarray    # (N, 3) float32, unit, orthogonal to the normal
+    uvs: np.ndarray         # (N, 2) float32
+    indices: np.ndarray     # (M, 3) uint32, counter-clockwise seen from outside
+
+    def interleaved(self) -> np.ndarray:
+        """position, normal, tangent, uv per vertex (11 floats): the preview's vertex layout."""
+        return np.hstack([self.positions, self.normals, self.tangents, self.uvs]).astype("f4")
+
+    @property
+    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        return self.positions.min(0), self.positions.max(0)
+
+
+class MeshError(ValueError):
+    """A mesh file that cannot be read (the message names the file and the problem)."""
+
+
+# ------------------------------------------------------------------ normals and tangents
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    n = np.linalg.norm(v, axis=-1, keepdims=True)
+    return v / np.where(n > 1e-20, n, 1.0)
+
+
+def face_normals(positions: np.ndarray, indices: np.ndarray) -> np.ndarray:
+    """Area-weighted (unnormalised) face normals."""
+    p = positions[indices]
+    return np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+
+
+def vertex_normals(positions: np.ndarray, indices: np.ndarray) -> np.ndarray:
+    acc = np.zeros_like(positions, dtype=np.float64)
+    fn = face_normals(positions.astype(np.float64), indices)
+    for k in range(3):
+        np.add.at(acc, indices[:, k], fn)
+    return _unit(acc)
+
+
+def any_perpendicular(n: np.ndarray) -> np.ndarray:
+    helper = np.where(np.abs(n[:, :1]) < 0.9, [[1.0, 0.0, 0.0]], [[0.0, 1.0, 0.0]])
+    return _unit(np.cross(helper, n))
+
+
+def orthonormal_tangents(tangents: np.ndarray, normals: np.ndarray) -> np.ndarray:
+    """Gram-Schmidt; a tangent parallel to its normal is replaced by any perpendicular."""
+    t = tangents - normals * np.sum(tangents * normals, axis=1, keepdims=True)
+    bad = np.linalg.norm(t, axis=1) < 1e-8
+    t = _unit(t)
+    if bad.any():
+        t[bad] = any_perpendicular(normals[bad])
+    return t
+
+
+def uv_tangents(positions, uvs, indices, normals) -> np.ndarray:
+    """Per-vertex +U tangents from the UV parameterisation (accumulated per triangle)."""
+    p, uv = positions[indices].astype(np.float64), uvs[indices].astype(np.float64)
+    e1, e2 = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
+    d1, d2 = uv[:, 1] - uv[:, 0], uv[:, 2] - uv[:, 0]
+    det = d1[:, 0] * d2[:, 1] - d2[:, 0] * d1[:, 1]
+    r = np.where(np.abs(det) > 1e-20, 1.0 / np.where(det == 0, 1, det), 0.0)
+    t = (e1 * d2[:, 1:2] - e2 * d1[:, 1:2]) * r[:, None]
+    acc = np.zeros_like(positions, dtype=np.float64)
+    for k in range(3):
+        np.add.at(acc, indices[:, k], t)
+    return orthonormal_tangents(acc, normals.astype(np.float64))
+
+
+def make_mesh(positions, indices, normals=None, uvs=None, tangents=None) -> Mesh:
+    positions = np.asarray(positions, np.float64)
+    indices = np.asarray(indices, np.int64).reshape(-1, 3)
+    normals = vertex_normals(positions, indices) if normals is None else _unit(np.asarray(normals, np.float64))
+    if uvs is None:
+        uvs = spherical_uvs(positions)
+    uvs = np.asarray(uvs, np.float64)
+    tangents = (uv_tangents(positions, uvs, indices, normals) if tangents is None
+                else orthonormal_tangents(np.asarray(tangents, np.float64), normals))
+    return Mesh(positions.astype("f4"), normals.astype("f4"), tangents.astype("f4"), uvs.astype("f4"),
+                indices.astype("u4"))
+
+
+def spherical_uvs(positions: np.ndarray) -> np.ndarray:
+    c = positions - positions.mean(0)
+    d = _unit(c)
+    return np.stack([0.5 + np.arctan2(d[:, 0], d[:, 2]) / (2 * np.pi), np.arccos(np.clip(d[:, 1], -1, 1)) / np.pi], 1)
+
+
+def grid_indices(rows: int, cols: int, offset: int = 0) -> np.ndarray:
+    """Two triangles per cell of a (rows+1) x (cols+1) vertex grid (row-major)."""
+    i, j = np.meshgrid(np.arange(rows), np.arange(cols), indexing="ij")
+    a = (i * (cols + 1) + j).ravel() + offset
+    b, c, d = a + 1, a + cols + 1, a + cols + 2
+    return np.concatenate([np.stack([a, c, b], 1), np.stack([b, c, d], 1)])
+
+
+# ------------------------------------------------------------------------ generators
+
+def lathe(profile: list[tuple[float, float]], segments: int = 96) -> Mesh:
+    """A surface of revolution about +y of one smooth polyline (r, y), from bottom to top.
+
+    Normals come from the profile's tangent, so each call is one smoothly shaded part."""
+    prof = np.asarray(profile, np.float64)
+    d = np.gradient(prof, axis=0)
+    n2 = _unit(np.stack([d[:, 1], -d[:, 0]], 1))       # outward normal of the profile (r, y)
+    on_axis = prof[:, 0] < 1e-9                          # poles: the normal is the axis itself
+    n2[on_axis] = np.stack([np.zeros(on_axis.sum()), np.sign(n2[on_axis, 1])], 1)
+    phi = np.linspace(0, 2 * np.pi, segments + 1)
+    s, c = np.sin(phi)[None, :], np.cos(phi)[None, :]
+    r, y = prof[:, :1], prof[:, 1:]
+    shape = (len(prof), segments + 1)
+    pos = np.stack([r * s, np.broadcast_to(y, shape), r * c], -1)
+    nor = np.stack([n2[:, :1] * s, np.broadcast_to(n2[:, 1:], shape), n2[:, :1] * c], -1)
+    tan = np.stack([c, np.zeros_like(c), -s], -1) * np.ones((len(prof), 1, 1))
+    arc = np.concatenate([[0], np.cumsum(np.linalg.norm(np.diff(prof, axis=0), axis=1))])
+    v = np.broadcast_to((arc / max(arc[-1], 1e-9))[:, None], pos.shape[:2])
+    u = np.broadcast_to((phi / (2 * np.pi))[None, :], pos.shape[:2])
+    idx = grid_indices(len(prof) - 1, segments)
+    idx = idx[:, [0, 2, 1]]                              # counter-clockwise from outside
+    return make_mesh(pos.reshape(-1, 3), idx, nor.reshape(-1, 3), np.stack([u, v], -1).reshape(-1, 2),
+                     tan.reshape(-1, 3))
+
+
+def merge(meshes: list[Mesh]) -> Mesh:
+    offsets = np.cumsum([0] + [len(m.positions) for m in meshes[:-1]])
+    cat = lambda attr: np.concatenate([getattr(m, attr) for m in meshes])  # noqa: E731
+    return Mesh(cat("positions"), cat("normals"), cat("tangents"), cat("uvs"),
+                np.concatenate([m.indices + o for m, o in zip(meshes, offsets)]).astype("u4"))
+
+
+def arc(cx: float, cy: float, radius: float, a0: float, a1: float, steps: int) -> list[tuple[float, float]]:
+    t = np.linspace(a0, a1, steps)
+    return [(max(cx + radius * math.cos(a), 0.0), cy + radius * math.sin(a)) for a in t]
+
+
+def sphere(rings: int = 64, segments: int = 96) -> Mesh:
+    """Unit sphere centred at the origin (poles on y)."""
+    return lathe(arc(0.0, 0.0, 1.0, -math.pi / 2, math.pi / 2, rings + 1), segments)
+
+
+def shader_ball(segments: int = 96) -> Mesh:
+    """A shader-ball-like form: a sphere with a recessed equatorial groove on a stepped pedestal."""
+    ball_c, ball_r = 1.1, 0.8
+    parts = [
+        [(0.0, 0.0), (0.55, 0.0)],                                       # base underside
+        [(0.55, 0.0), (0.55, 0.12)],                                     # base rim
+        [(0.55, 0.12), (0.22, 0.12)],                                    # base top
+        [(0.22, 0.12), (0.22, ball_c - ball_r * math.cos(0.28))],        # neck
+        arc(0.0, ball_c, ball_r, -math.pi / 2 + 0.28, -0.12, 28),        # lower ball
+        [(ball_r * math.cos(0.12), ball_c - ball_r * math.sin(0.12)),
+         (0.68, ball_c - ball_r * math.sin(0.12))],                      # groove floor (lower)
+        [(0.68, ball_c - ball_r * math.sin(0.12)), (0.68, ball_c + ball_r * math.sin(0.12))],
+        [(0.68, ball_c + ball_r * math.sin(0.12)),
+         (ball_r * math.cos(0.12), ball_c + ball_r * math.sin(0.12))],   # groove ceiling
+        arc(0.0, ball_c, ball_r, 0.12, math.pi / 2, 28),                 # upper ball
+    ]
+    # One walk up the outside: every part has the outside on its right (outward normals).
+    return merge([lathe(p, segments) for p in parts])
+
+
+def _read_teapot() -> tuple[np.ndarray, np.ndarray]:
+    text = (DATA / "teapot.txt").read_text("utf-8")
+    lines = [ln for ln in text.splitlines() if ln.strip() and not ln.startswith("#")]
+    n_patches = int(lines[0])
+    patches = np.array([[int(i) - 1 for i in ln.split(",")] for ln in lines[1:1 + n_patches]])
+    n_points = int(lines[1 + n_patches])
+    points = np.array([[float(x) for x in ln.split(",")] for ln in lines[2 + n_patches:2 + n_patches + n_points]])
+    return patches, points
+
+
+def teapot_patches() -> np.ndarray:
+    """(32, 4, 4, 3) control points of the Newell teapot, z up, as published."""
+    patches, points = _read_teapot()
+    return points[patches].reshape(-1, 4, 4, 3)
+
+
+def bernstein(t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    s = 1.0 - t
+    b = np.stack([s ** 3, 3 * s * s * t, 3 * s * t * t, t ** 3], -1)
+    db = np.stack([-3 * s * s, 3 * s * s - 6 * s * t, 6 * s * t - 3 * t * t, 3 * t * t], -1)
+    return b, db
+
+
+def _weld(positions: np.ndarray, indices: np.ndarray, tol: float = 1e-5):
+    keys = np.round(positions / tol).astype(np.int64)
+    _, first, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
+    return positions[first], inverse.ravel()[indices], first
+
+
+def teapot(steps: int = 12) -> Mesh:
+    """The Newell teapot tessellated (steps x steps quads per patch), y up, welded seams."""
+    ctrl = teapot_patches()
+    t = np.linspace(0.0, 1.0, steps + 1)
+    b, _ = bernstein(t)
+    pos = np.einsum("ui,vj,pijc->puvc", b, b, ctrl)          # (P, u, v, 3)
+    P = len(ctrl)
+    idx = np.concatenate([grid_indices(steps, steps, p * (steps + 1) ** 2) for p in range(P)])
+    uv = np.stack(np.meshgrid(t, t, indexing="ij"), -1)
+    uvs = np.broadcast_to(uv, (P,) + uv.shape).reshape(-1, 2)
+    flat = pos.reshape(-1, 3)
+    flat = flat[:, [0, 2, 1]] * [1.0, 1.0, -1.0]              # z-up -> y-up (right-handed)
+    welded, widx, first = _weld(flat, idx)
+    keep = (widx[:, 0] != widx[:, 1]) & (widx[:, 1] != widx[:, 2]) & (widx[:, 0] != widx[:, 2])
+    widx = widx[keep]
+    if signed_volume(welded, widx) < 0:                       # make the winding outward
+        widx = widx[:, [0, 2, 1]]
+    normals = vertex_normals(welded, widx)
+    return make_mesh(welded, widx, normals, uvs[first])
+
+
+def signed_volume(positions: np.ndarray, indices: np.ndarray) -> float:
+    p = positions[indices].astype(np.float64)
+    return float(np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2])).sum() / 6.0)
+
+
+def fit(mesh: Mesh, stand: bool = True) -> Mesh:
+    """Scale to a unit bounding sphere (about the box centre); `stand` puts the base on y = 0."""
+    lo, hi = mesh.bounds
+    centre = (lo + hi) / 2
+    radius = float(np.linalg.norm(mesh.positions - centre, axis=1).max()) or 1.0
+    pos = (mesh.positions - centre) / radius
+    if stand:
+        pos[:, 1] -= pos[:, 1].min()
+    return Mesh(pos.astype("f4"), mesh.normals, mesh.tangents, mesh.uvs, mesh.indices)
+
+
+#: name -> generator (no arguments). `load_mesh` also accepts a path to an OBJ/PLY file.
+MESHES = {"sphere": sphere, "shader_ball": shader_ball, "teapot": teapot}
+
+
+def mesh_by_name(name_or_path: str) -> Mesh:
+    if name_or_path in MESHES:
+        return MESHES[name_or_path]()
+    from .mesh_io import load_mesh
+    return load_mesh(name_or_path)

@@ -1,0 +1,386 @@
+"""The preview renderer: the GLSL backend's BSDF on a mesh, lit by a key light and an HDR
+environment, rendered offscreen with MSAA, tone mapped to sRGB.
+
+    r = Renderer(size=512)
+    frame = r.render(material, mesh="sphere", tier="fis16")   # -> Frame(rgba8, hdr, ms)
+"""
+from __future__ import annotations
+
+import json
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import gl
+from .camera import Camera, framing_camera
+from .environment import Environment, environment, irradiance_sh9
+from .lut import brdf_lut
+from .meshes import Mesh, fit, mesh_by_name
+from .tiers import DEFAULT_TIER, Tier, parse_tier
+
+MICROFACET = ("dielectric", "conductor", "glass")
+#: base model -> share of IBL samples: (cosine, base specular, coat specular) without / with a coat.
+STRATEGY = {"diffuse": ((1.0, 0.0, 0.0), (0.5, 0.0, 0.5)),
+            "dielectric": ((0.5, 0.5, 0.0), (0.4, 0.3, 0.3)),
+            "conductor": ((0.1, 0.9, 0.0), (0.1, 0.45, 0.45)),
+            "glass": ((0.1, 0.9, 0.0), (0.1, 0.45, 0.45))}
+GLSL_OPTION_KEYS = ("fresnel", "multiscatter", "specialize")
+PREFILTER_LEVELS = 5
+MAP_SIZE = 512
+
+
+@dataclass
+class Frame:
+    rgba: np.ndarray         # (H, W, 4) uint8, sRGB, top row first; alpha = coverage
+    hdr: np.ndarray | None   # (H, W, 4) float32 linear radiance before tone mapping (top row first)
+    ms: float                # GPU frame time (draw + resolve + tone map, finished), milliseconds
+    tier: str = ""
+    notes: list = field(default_factory=list)
+
+
+@dataclass
+class MaterialShader:
+    name: str
+    library: str
+    plan: dict
+    samplers: list           # [{"name", "role", ...}] from the sidecar
+    notes: list
+
+
+def material_plan(sidecar: dict) -> dict:
+    """What the tiers need to know, read from the GLSL sidecar."""
+    model = sidecar["model"]
+    base = model["base"]
+    uniforms = {u["name"] for u in sidecar["uniforms"]}
+    coat = "cnlm_coat_ior" in uniforms
+    plan = {"base": base, "microfacet": base in MICROFACET, "anisotropic": bool(model.get("anisotropic")) and base in MICROFACET,
+            "coat": coat, "coat_color": "cnlm_coat_color" in uniforms,
+            "normal_map": any(s["role"] == "normal" for s in sidecar["samplers"])}
+    plan["strategy"] = [repr(float(x)) for x in STRATEGY[base][coat]]
+    plan["summary"] = " + ".join(k for k in ("base", "anisotropic", "coat", "normal_map") if plan[k] is True) or base
+    plan["summary"] = f"{base}" + "".join(f", {k}" for k in ("anisotropic", "coat", "normal_map") if plan[k])
+    return plan
+
+
+_SHADERS: dict = {}
+
+
+def material_shader(material: dict, glsl_options: dict | None = None) -> MaterialShader:
+    """The library form of one material (cached by material and options)."""
+    from cnlmc.backends import glsl
+    opts = {k: str(v) for k, v in (glsl_options or {}).items() if k in GLSL_OPTION_KEYS}
+    key = json.dumps([material, opts], sort_keys=True, default=str)
+    if key not in _SHADERS:
+        ir = {"ir_version": 1, "materials": [material], "diagnostics": []}
+        result = glsl.emit(ir, {**opts, "form": "library"})
+        files = {a.name: a.content for a in result.artifacts}
+        name = material["name"]
+        sidecar = json.loads(files[f"{name}.glsl.json"])
+        _SHADERS[key] = MaterialShader(name, files[f"{name}.glsl"], material_plan(sidecar), sidecar["samplers"],
+                                       [n.text() for n in result.notes])
+    return _SHADERS[key]
+
+
+# ------------------------------------------------------------------ GPU resources
+
+class EnvResources:
+    """Environment textures: radiance (mip-mapped), GGX-prefiltered levels, SH irradiance, LUT."""
+
+    def __init__(self, env: Environment):
+        self.env = env
+        self.radiance = gl.float_texture(env.image, repeat=(True, False))
+        self.size = (env.image.shape[1], env.image.shape[0])
+        self.sh9 = irradiance_sh9(env.image)
+        self.mean = env.mean_radiance
+        self.lut = gl.float_texture(brdf_lut(), mipmaps=False, repeat=(False, False))
+        self.prefiltered = self._prefilter()
+
+    def _prefilter(self, samples: int = 256):
+        import moderngl
+        ctx = gl.context()
+        tex = gl.float_texture(self.env.image, repeat=(True, False))
+        prog = gl.program(gl.shader_file("fullscreen.vert"), gl.shader_file("prefilter.frag"))
+        vao = ctx.vertex_array(prog, [])
+        self.radiance.use(0)
+        gl.set_uniform(prog, "pv_env", 0)
+        gl.set_uniform(prog, "pv_samples", samples)
+        gl.set_uniform(prog, "pv_env_size", self.size)
+        for level in range(1, PREFILTER_LEVELS + 1):
+            w, h = max(self.size[0] >> level, 4), max(self.size[1] >> level, 2)
+            target = ctx.texture((w, h), 4, dtype="f4")
+            fbo = ctx.framebuffer([target])
+            fbo.use()
+            ctx.viewport = (0, 0, w, h)
+            gl.set_uniform(prog, "pv_alpha", (level / PREFILTER_LEVELS) ** 2)
+            vao.render(moderngl.TRIANGLES, vertices=3)
+            data = np.frombuffer(fbo.read(components=4, dtype="f4"), np.float32).reshape(h, w, 4)[..., :3]
+            tex.write(np.ascontiguousarray(data).tobytes(), level=level)
+            fbo.release()
+            target.release()
+        vao.release()
+        return tex
+
+
+class Targets:
+    """MSAA float target, its resolve texture and the 8-bit output, for one size."""
+
+    def __init__(self, width: int, height: int, msaa: int):
+        ctx = gl.context()
+        self.size = (width, height)
+        self.msaa = ctx.framebuffer([ctx.renderbuffer(self.size, 4, samples=msaa, dtype="f4")],
+                                    ctx.depth_renderbuffer(self.size, samples=msaa))
+        self.resolved_tex = ctx.texture(self.size, 4, dtype="f4")
+        self.resolved = ctx.framebuffer([self.resolved_tex])
+        self.ldr = ctx.framebuffer([ctx.renderbuffer(self.size, 4)])
+
+
+_ENVS: dict = {}
+_TARGETS: dict = {}
+_MESHES: dict = {}
+_MAPS: dict = {}
+_OBJECT_PROGRAMS: dict = {}
+_FULLSCREEN: dict = {}
+_VAOS: dict = {}
+
+
+def env_resources(env: Environment) -> EnvResources:
+    key = (env.name, id(env.image))
+    if key not in _ENVS:
+        _ENVS[key] = EnvResources(env)
+    return _ENVS[key]
+
+
+def targets(width: int, height: int, msaa: int) -> Targets:
+    key = (width, height, msaa)
+    if key not in _TARGETS:
+        _TARGETS[key] = Targets(width, height, msaa)
+    return _TARGETS[key]
+
+
+def mesh_buffers(mesh: Mesh):
+    key = id(mesh)
+    if key not in _MESHES:
+        ctx = gl.context()
+        _MESHES[key] = (mesh, ctx.buffer(mesh.interleaved().tobytes()), ctx.buffer(mesh.indices.astype("u4").tobytes()))
+    return _MESHES[key][1:]
+
+
+def encode_map(role: str, array: np.ndarray) -> np.ndarray:
+    """Baked map -> what the shader samples: normals as n * 0.5 + 0.5; image top row at v = 1."""
+    a = np.asarray(array, np.float32)
+    if role == "normal":
+        a = a * 0.5 + 0.5
+    return np.flipud(a)
+
+
+def neutral_map(role: str, params: dict, size: int = 4) -> np.ndarray:
+    """A uniform stand-in for a map that cannot be baked (the material's own value)."""
+    value = {"base_color": params.get("base_color", [0.8, 0.8, 0.8]), "normal": [0.0, 0.0, 1.0],
+             "roughness": params.get("roughness", 0.5), "mask": 0.0, "metallic": 0.0}.get(role, 0.0)
+    return np.broadcast_to(np.asarray(value, np.float32), (size, size) + np.shape(value)).copy()
+
+
+def bake_maps(material: dict, size: int, seed: int, notes: list | None = None) -> dict:
+    """Bake every map role; a role whose graph fails gets a neutral map and a note."""
+    from cnlmc.backends.maps import MapError, bake
+    refs, params = material.get("maps", {}), material["params"]
+    try:
+        return bake(refs, params, size, seed)
+    except MapError:
+        pass
+    arrays = {}
+    for role, ref in refs.items():
+        try:
+            arrays.update(bake({role: ref}, params, size, seed))
+        except MapError as exc:
+            arrays[role] = neutral_map(role, params)
+            if notes is not None:
+                notes.append(f"preview: {material['name']}: map {role} not baked ({exc}); uniform value used")
+    return arrays
+
+
+def map_textures(material: dict, samplers: list, size: int = MAP_SIZE, seed: int = 0) -> dict:
+    """sampler name -> texture, baked with cnlmc.backends.maps (cached per material maps)."""
+    if not samplers:
+        return {}
+    key = (json.dumps(material.get("maps", {}), sort_keys=True), json.dumps(material["params"], sort_keys=True,
+                                                                                  default=str), size, seed)
+    if key not in _MAPS:
+        arrays = bake_maps(material, size, seed)
+        _MAPS[key] = {role: gl.float_texture(encode_map(role, arr)) for role, arr in arrays.items()}
+    baked = _MAPS[key]
+    return {s["name"]: baked[s["role"]] for s in samplers if s["role"] in baked}
+
+
+# ------------------------------------------------------------------------ render
+
+@dataclass
+class Scene:
+    mesh: Mesh
+    camera: Camera
+    env: Environment
+    background: str = "env"          # "env" (blurred environment), "transparent", "none"
+    background_lod: float = 3.0
+    exposure: float = 1.0
+    env_intensity: float = 1.0
+
+
+def default_scene(mesh: str | Mesh = "sphere", env: str | Environment = "studio", size=(512, 512)) -> Scene:
+    mesh = fit(mesh_by_name(mesh)) if isinstance(mesh, str) else mesh
+    env = environment(env) if isinstance(env, str) else env
+    lo, hi = mesh.bounds
+    return Scene(mesh, framing_camera(lo, hi, aspect=size[0] / size[1]), env)
+
+
+class Renderer:
+    """Offscreen renderer of one size; programs, textures and meshes are cached process-wide."""
+
+    def __init__(self, width: int = 512, height: int | None = None, msaa: int = 4):
+        self.width, self.height = width, height or width
+        self.msaa = msaa
+        self.ctx = gl.context()
+
+    # -- programs
+    def object_program(self, shader: MaterialShader, tier: Tier):
+        key = (id(shader), tier.ibl)
+        if key not in _OBJECT_PROGRAMS:
+            frag = gl.preview_fragment(shader.name, shader.library, shader.plan, tier.ibl)
+            _OBJECT_PROGRAMS[key] = gl.program(gl.shader_file("preview.vert"), frag)
+        return _OBJECT_PROGRAMS[key]
+
+    def fullscreen(self, fragment_file: str):
+        """(program, vertex array) of a full-screen pass, cached."""
+        if fragment_file not in _FULLSCREEN:
+            prog = gl.program(gl.shader_file("fullscreen.vert"), gl.shader_file(fragment_file))
+            _FULLSCREEN[fragment_file] = (prog, self.ctx.vertex_array(prog, []))
+        return _FULLSCREEN[fragment_file]
+
+    def object_vao(self, prog, mesh: Mesh):
+        key = (id(prog), id(mesh))
+        if key not in _VAOS:
+            vbo, ibo = mesh_buffers(mesh)
+            layout, names = self.vertex_layout(prog)
+            _VAOS[key] = self.ctx.vertex_array(prog, [(vbo, layout, *names)], index_buffer=ibo, index_element_size=4)
+        return _VAOS[key]
+
+    def _bind_environment(self, prog, res: EnvResources, scene: Scene, tier: Tier, first_unit: int) -> int:
+        units = {"pv_env": res.radiance, "pv_env_prefiltered": res.prefiltered, "pv_brdf_lut": res.lut}
+        for offset, (name, tex) in enumerate(units.items()):
+            tex.use(first_unit + offset)
+            gl.set_uniform(prog, name, first_unit + offset)
+        gl.set_uniform(prog, "pv_prefilter_levels", float(PREFILTER_LEVELS))
+        gl.set_uniform(prog, "pv_env_intensity", scene.env_intensity)
+        gl.set_uniform(prog, "pv_sh", res.sh9)
+        gl.set_uniform(prog, "pv_ambient", res.mean * scene.env_intensity)
+        gl.set_uniform(prog, "pv_env_size", res.size)
+        gl.set_uniform(prog, "pv_samples", max(tier.samples, 1))
+        gl.set_uniform(prog, "pv_filtered", int(tier.filtered))
+        return first_unit + len(units)
+
+    def _draw_background(self, scene: Scene, res: EnvResources) -> None:
+        import moderngl
+        prog, vao = self.fullscreen("background.frag")
+        res.radiance.use(0)
+        gl.set_uniform(prog, "pv_env", 0)
+        gl.set_uniform(prog, "pv_env_intensity", scene.env_intensity)
+        gl.set_uniform(prog, "pv_background_lod", scene.background_lod)
+        gl.set_uniform(prog, "pv_inverse_view_projection", np.linalg.inv(scene.camera.view_projection))
+        self.ctx.disable(moderngl.DEPTH_TEST)
+        vao.render(moderngl.TRIANGLES, vertices=3)
+
+    def _draw_object(self, scene: Scene, material: dict, shader: MaterialShader, tier: Tier, res: EnvResources,
+                     model: np.ndarray) -> None:
+        import moderngl
+        prog = self.object_program(shader, tier)
+        unit = 0
+        for name, tex in map_textures(material, shader.samplers).items():
+            tex.use(unit)
+            gl.set_uniform(prog, name, unit)
+            unit += 1
+        self._bind_environment(prog, res, scene, tier, unit)
+        cam = scene.camera
+        gl.set_uniform(prog, "pv_model", model)
+        gl.set_uniform(prog, "pv_normal_matrix", np.linalg.inv(model[:3, :3]).T)
+        gl.set_uniform(prog, "pv_view_projection", cam.view_projection)
+        gl.set_uniform(prog, "pv_camera_position", cam.position)
+        gl.set_uniform(prog, "pv_key_direction", scene.env.key.unit)
+        gl.set_uniform(prog, "pv_key_irradiance", [scene.env.key.irradiance * scene.env_intensity] * 3)
+        self.ctx.enable(moderngl.DEPTH_TEST)
+        self.object_vao(prog, scene.mesh).render(moderngl.TRIANGLES)
+
+    VERTEX_ATTRIBUTES = (("in_position", 3), ("in_normal", 3), ("in_tangent", 3), ("in_uv", 2))
+
+    @classmethod
+    def vertex_layout(cls, prog) -> tuple[str, list[str]]:
+        """The buffer format for Mesh.interleaved(); attributes the program does not use are skipped."""
+        parts, names = [], []
+        for name, size in cls.VERTEX_ATTRIBUTES:
+            if name in prog:
+                parts.append(f"{size}f")
+                names.append(name)
+            else:
+                parts.append(f"{size * 4}x")
+        return " ".join(parts), names
+
+    def _tonemap(self, t: Targets, scene: Scene) -> None:
+        import moderngl
+        prog, vao = self.fullscreen("tonemap.frag")
+        t.resolved_tex.use(0)
+        gl.set_uniform(prog, "pv_hdr", 0)
+        gl.set_uniform(prog, "pv_exposure", scene.exposure)
+        gl.set_uniform(prog, "pv_curve", 0)
+        self.ctx.disable(moderngl.DEPTH_TEST)
+        t.ldr.use()
+        vao.render(moderngl.TRIANGLES, vertices=3)
+
+    def draw(self, scene: Scene, material: dict, tier: Tier | str = DEFAULT_TIER, glsl_options: dict | None = None,
+             model: np.ndarray | None = None, overlay=None) -> Targets:
+        """Draw into the targets (no read-back); `overlay(renderer, scene)` draws extra geometry."""
+        tier = parse_tier(tier) if isinstance(tier, str) else tier
+        shader = material_shader(material, glsl_options)
+        res = env_resources(scene.env)
+        t = targets(self.width, self.height, self.msaa)
+        t.msaa.use()
+        self.ctx.viewport = (0, 0, self.width, self.height)
+        t.msaa.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
+        if scene.background == "env":
+            self._draw_background(scene, res)
+        if overlay is not None:
+            overlay(self, scene)
+            t.msaa.use()
+        self._draw_object(scene, material, shader, tier, res, np.eye(4) if model is None else model)
+        self.ctx.copy_framebuffer(t.resolved, t.msaa)
+        self._tonemap(t, scene)
+        return t
+
+    def render(self, material: dict, mesh: str | Mesh = "sphere", tier: Tier | str = DEFAULT_TIER,
+               glsl_options: dict | None = None, env: str | Environment = "studio", scene: Scene | None = None,
+               hdr: bool = False, **draw_options) -> Frame:
+        """Render one material; returns the sRGB image (top row first) and the frame time."""
+        scene = scene or default_scene(mesh, env, (self.width, self.height))
+        tier = parse_tier(tier) if isinstance(tier, str) else tier
+        self.draw(scene, material, tier, glsl_options, **draw_options)     # warm-up: compiles, uploads
+        self.ctx.finish()
+        start = time.perf_counter()
+        t = self.draw(scene, material, tier, glsl_options, **draw_options)
+        self.ctx.finish()
+        ms = (time.perf_counter() - start) * 1000.0
+        rgba = np.frombuffer(t.ldr.read(components=4), np.uint8).reshape(self.height, self.width, 4)[::-1].copy()
+        linear = None
+        if hdr:
+            linear = np.frombuffer(t.resolved.read(components=4, dtype="f4"), np.float32)
+            linear = linear.reshape(self.height, self.width, 4)[::-1].copy()
+        return Frame(rgba, linear, ms, tier.name, material_shader(material, glsl_options).notes)
+
+    def frame_time(self, scene: Scene, material: dict, tier: Tier | str, glsl_options=None, repeats: int = 5) -> float:
+        """Median frame time (ms) over `repeats` frames, after one warm-up frame."""
+        self.draw(scene, material, tier, glsl_options)
+        self.ctx.finish()
+        times = []
+        for _ in range(repeats):
+            start = time.perf_counter()
+            self.draw(scene, material, tier, glsl_options)
+            self.ctx.finish()
+            times.append((time.perf_counter() - start) * 1000.0)
+        return float(np.median(times))

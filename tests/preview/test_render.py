@@ -1,0 +1,107 @@
+"""The preview renders every stdlib noun without NaN, deterministically; tiers and budgets."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from cnlmc.backends.preview import compose, parse_options, PreviewOptionError, preview_command, render_ir
+from cnlmc.backends.preview.tiers import QUALITY_ORDER, TIERS, TierError, parse_tier, select_tier
+
+from .conftest import material_of, stdlib_nouns
+
+
+def test_every_stdlib_noun_renders_without_nan(renderer, scene):
+    nouns = stdlib_nouns()
+    assert len(nouns) >= 40
+    for noun in nouns:
+        material = material_of(noun)
+        frame = renderer.render(material, tier="splitsum", scene=scene, hdr=True)
+        assert np.isfinite(frame.hdr).all(), noun
+        covered = frame.rgba[..., 3] > 0
+        assert 0.2 < covered.mean() < 0.8, noun                       # the sphere is in the frame
+        assert frame.rgba[..., :3][covered].mean() > 3, f"{noun} renders black"
+
+
+@pytest.mark.parametrize("phrase", ["gold", "walnut", "clear-coated red car paint", "lightly brushed, blue anodized aluminum"])
+def test_two_renders_are_bit_identical(renderer, scene, phrase):
+    material = material_of(phrase)
+    for tier in ("splitsum", "mc16"):
+        a = renderer.render(material, tier=tier, scene=scene, hdr=True)
+        b = renderer.render(material, tier=tier, scene=scene, hdr=True)
+        assert np.array_equal(a.rgba, b.rgba) and np.array_equal(a.hdr, b.hdr), (phrase, tier)
+        assert np.isfinite(a.hdr).all()
+
+
+def test_every_tier_renders_a_mirror_and_a_coat(renderer, scene):
+    for phrase in ("mirror chrome", "clear-coated red car paint"):
+        material = material_of(phrase)
+        for name in TIERS:
+            if name == "mc1024":
+                continue
+            frame = renderer.render(material, tier=name, scene=scene, hdr=True)
+            assert np.isfinite(frame.hdr).all(), (phrase, name)
+
+
+def test_tiers_parse_and_order():
+    assert parse_tier("mc8").samples == 8 and not parse_tier("mc8").filtered
+    assert parse_tier("fis32").filtered
+    assert set(QUALITY_ORDER) == set(TIERS)
+    with pytest.raises(TierError):
+        parse_tier("mc0")
+    with pytest.raises(TierError):
+        parse_tier("ultra")
+
+
+def test_budget_picks_the_best_tier_that_fits():
+    cost = {"analytic": 1.0, "splitsum": 2.0, "mc16": 10.0, "fis16": 12.0, "mc64": 40.0, "fis64": 45.0,
+            "mc256": 160.0, "mc1024": 640.0}
+    pick = lambda budget: select_tier(budget, lambda t: cost[t.name])[0].name  # noqa: E731
+    assert pick(0.5) == "analytic"            # nothing fits: the cheapest
+    assert pick(5) == "splitsum"
+    assert pick(12) == "fis16"
+    assert pick(50) == "fis64"
+    assert pick(10_000) == "mc1024"
+
+
+def test_budget_option_measures_real_frame_times(renderer, scene):
+    from cnlmc.backends.preview import PreviewOptions, choose_tier
+    material = material_of("gold")
+    measure = lambda t: renderer.frame_time(scene, material, t, repeats=2)  # noqa: E731
+    cheap = ("analytic", "splitsum", "mc16")
+    tier, timings = select_tier(1e6, measure, cheap)
+    assert tier.name == "mc16" and set(timings) == set(cheap) and all(v > 0 for v in timings.values())
+    tier, timings = choose_tier(renderer, scene, material, PreviewOptions(size=64, budget_ms=1e-6))
+    assert tier.name == QUALITY_ORDER[0] and len(timings) == 2        # stops after the first miss
+
+
+def test_variant_sheet_and_command(tmp_path):
+    from cnlmc.api import compile_source
+    ir = compile_source("blue or red plastic\n").ir
+    report = preview_command(ir, tmp_path / "sheet.png", {"size": "48", "tier": "splitsum"})
+    assert report.path.exists()
+    image = compose(report.frames)
+    assert image.shape[1] > 2 * 48 and image.shape[0] > 48      # two tiles side by side, labelled
+
+
+def test_options_are_validated():
+    with pytest.raises(PreviewOptionError):
+        parse_options({"colour": "red"})
+    with pytest.raises(PreviewOptionError):
+        parse_options({"tier": "ultra"})
+    assert parse_options({"size": "128", "fresnel": "schlick"}).glsl["fresnel"] == "schlick"
+
+
+def test_fresnel_options_change_the_metal(renderer, scene):
+    material = material_of("gold")
+    exact = renderer.render(material, tier="splitsum", scene=scene, hdr=True).hdr
+    schlick = renderer.render(material, tier="splitsum", scene=scene, hdr=True, glsl_options={"fresnel": "schlick"}).hdr
+    assert not np.array_equal(exact, schlick)
+    assert np.abs(exact - schlick).mean() < 0.1 * np.abs(exact).mean()
+
+
+def test_teapot_and_shader_ball_render(renderer):
+    from cnlmc.backends.preview.render import default_scene
+    material = material_of("copper")
+    for mesh in ("teapot", "shader_ball"):
+        frame = renderer.render(material, tier="splitsum", scene=default_scene(mesh, "studio", (64, 64)), hdr=True)
+        assert np.isfinite(frame.hdr).all() and (frame.rgba[..., 3] > 0).mean() > 0.1
