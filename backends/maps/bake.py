@@ -7,6 +7,7 @@ from typing import Callable
 
 import numpy as np
 
+from .blas import single_threaded_blas
 from .errors import MapError
 from .evaluate import Evaluation, nodes_needed, resolve_inputs, resolve_params
 from .grid import Grid, derive_seed
@@ -79,7 +80,8 @@ def bake(map_refs: dict, material_params: dict | None = None, size: int = 1024, 
         return report
 
     arrays = {}
-    for key, roles in groups.items():
-        evaluation = start_evaluation(key, material_params, size, seed, on_node(key[0]))
-        arrays.update({role: evaluation.output(output) for role, output in roles.items()})
+    with single_threaded_blas():
+        for key, roles in groups.items():
+            evaluation = start_evaluation(key, material_params, size, seed, on_node(key[0]))
+            arrays.update({role: evaluation.output(output) for role, output in roles.items()})
     return arrays

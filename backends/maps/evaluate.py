@@ -5,6 +5,7 @@ from typing import Callable
 
 import numpy as np
 
+from .blas import single_threaded_blas
 from .errors import MapError, did_you_mean
 from .grid import Grid, derive_seed
 from .registry import NODE_TYPES
@@ -99,4 +100,5 @@ def evaluate(graph: Graph, size: int, seed: int = 0, params: dict | None = None,
     """All (or the named) outputs of one graph, each finished for its role."""
     evaluation = Evaluation(graph, Grid(size, derive_seed(seed, graph.name)), resolve_params(graph, params or {}),
                             resolve_inputs(graph, material), on_node)
-    return {role: evaluation.output(role) for role in (outputs or graph.outputs)}
+    with single_threaded_blas():
+        return {role: evaluation.output(role) for role in (outputs or graph.outputs)}

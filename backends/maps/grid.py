@@ -58,3 +58,18 @@ def uv(grid: Grid) -> tuple[np.ndarray, np.ndarray]:
     u = grid.axis.astype(np.float32)[None, :]
     v = (1.0 - grid.axis).astype(np.float32)[:, None]
     return u, v
+
+
+MIN_BLOCK_ELEMENTS = 1 << 15  # row blocks of about this many pixels stay in cache
+
+
+def row_blocks(cell_rows: np.ndarray, size: int) -> list[tuple[int, int]]:
+    """Consecutive pixel-row ranges of at most ~MIN_BLOCK_ELEMENTS pixels, split at lattice
+    rows too when cells are tall enough (a block inside one lattice row is separable)."""
+    chunk = max(1, MIN_BLOCK_ELEMENTS // size)
+    bounds = set(range(0, size, chunk))
+    cell_starts = np.flatnonzero(np.diff(cell_rows)) + 1
+    if size >= (len(cell_starts) + 1) * max(1, chunk // 4):
+        bounds.update(cell_starts.tolist())
+    bounds = sorted(bounds) + [size]
+    return list(zip(bounds[:-1], bounds[1:]))

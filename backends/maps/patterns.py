@@ -11,29 +11,44 @@ from .grid import Grid, lattice_vector, uv
 WAVE_SHAPES = ("sine", "saw", "square", "triangle")
 
 
-def wave_phase(grid: Grid, frequency: float, direction: float, phase=0.0) -> np.ndarray:
-    """Phase in cycles: du*u + dv*v (+ phase map), with an integer wave vector."""
+def wave_phase(grid: Grid, frequency: float, direction: float, phase=0.0, distortion=1.0) -> np.ndarray:
+    """Phase in cycles: du*u + dv*v (+ phase map * distortion), with an integer wave
+    vector; a fresh float32 array."""
     du, dv = lattice_vector(direction, frequency)
     u, v = uv(grid)
-    return (du * u + dv * v) + np.asarray(phase, np.float32)
+    ramp = du * u if dv == 0 else (dv * v if du == 0 else du * u + dv * v)  # 0 * u adds exactly 0
+    offset = np.asarray(phase, np.float32)
+    if offset.ndim == 0 and offset == 0.0:
+        return np.array(np.broadcast_to(ramp, (grid.size, grid.size)), np.float32)
+    cycles = np.multiply(offset, distortion, dtype=np.float32)
+    if cycles.shape != (grid.size, grid.size):
+        cycles = np.array(np.broadcast_to(cycles, (grid.size, grid.size)), np.float32)
+    cycles += ramp
+    return cycles
 
 
-def periodic_shape(phase: np.ndarray, shape: str) -> np.ndarray:
-    cycle = phase - np.floor(phase)
+def periodic_shape(cycles: np.ndarray, shape: str) -> np.ndarray:
+    """The wave shape of a phase map, computed in place (`cycles` is overwritten)."""
+    cycles -= np.floor(cycles)
     if shape == "sine":
-        return 0.5 - 0.5 * np.cos(2.0 * np.pi * cycle)
+        cycles *= np.float32(2.0 * np.pi)
+        np.cos(cycles, out=cycles)
+        cycles *= np.float32(0.5)
+        return np.subtract(np.float32(0.5), cycles, out=cycles)
     if shape == "saw":
-        return cycle
+        return cycles
     if shape == "square":
-        return (cycle < 0.5).astype(np.float32)
-    return 1.0 - np.abs(2.0 * cycle - 1.0)
+        return (cycles < 0.5).astype(np.float32)
+    cycles *= np.float32(2.0)
+    cycles -= np.float32(1.0)
+    np.abs(cycles, out=cycles)
+    return np.subtract(np.float32(1.0), cycles, out=cycles)
 
 
 def wave(grid: Grid, shape="sine", frequency=1, direction=0.0, phase=0.0, distortion=1.0):
     """A periodic wave along `direction` (degrees, 0 = +u, 90 = +v); `phase` (a map, in
     cycles, times `distortion`) bends the wave fronts."""
-    cycles = wave_phase(grid, frequency, direction, np.asarray(phase, np.float32) * distortion)
-    return periodic_shape(cycles, shape).astype(np.float32)
+    return periodic_shape(wave_phase(grid, frequency, direction, phase, distortion), shape)
 
 
 def linear_gradient(grid: Grid, direction=0.0, repeat=1, mirror=True):

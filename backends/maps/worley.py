@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .grid import Grid
+from .grid import Grid, row_blocks
 from .lattice import periods
 
 FEATURES = ("f1", "f2", "edge", "cell")
@@ -19,21 +19,6 @@ def feature_points(grid: Grid, py: int, px: int, jitter: float, salt):
     offsets = 0.5 + jitter * (rng.random((2, py, px)) - 0.5)
     cell_values = rng.random((py, px))
     return offsets.astype(np.float32), cell_values.astype(np.float32)
-
-
-MIN_BLOCK_ELEMENTS = 1 << 15  # row blocks of about this many pixels stay in cache
-
-
-def row_blocks(cell_rows: np.ndarray, size: int) -> list[tuple[int, int]]:
-    """Consecutive pixel-row ranges of at most ~MIN_BLOCK_ELEMENTS pixels, split at lattice
-    rows too when cells are tall enough (a block inside one lattice row is separable)."""
-    chunk = max(1, MIN_BLOCK_ELEMENTS // size)
-    bounds = set(range(0, size, chunk))
-    cell_starts = np.flatnonzero(np.diff(cell_rows)) + 1
-    if size >= (len(cell_starts) + 1) * max(1, chunk // 4):
-        bounds.update(cell_starts.tolist())
-    bounds = sorted(bounds) + [size]
-    return list(zip(bounds[:-1], bounds[1:]))
 
 
 class Nearest:
