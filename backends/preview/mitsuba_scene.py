@@ -1,0 +1,117 @@
+"""The preview scene for Mitsuba 3: the same camera, mesh (a PLY we write), environment (an EXR
+in Mitsuba's envmap convention), key light (`directional`) and the material as the Mitsuba
+backend's BSDF (`form=fragment`, included by id). Used by bench/preview_chart.py as the
+reference renderer.
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from xml.sax.saxutils import quoteattr
+
+import numpy as np
+
+from .environment import write_exr
+from .mesh_io import write_ply
+from .render import Scene
+
+SCENE_TEMPLATE = """<?xml version="1.0" encoding="utf-8"?>
+<!-- cnlmc preview scene for Mitsuba 3 (backends/preview/mitsuba_scene.py) -->
+<scene version="3.0.0">
+    <default name="spp" value="{spp}"/>
+    <default name="resx" value="{width}"/>
+    <default name="resy" value="{height}"/>
+    <include filename="materials.xml"/>
+    <integrator type="direct">
+        <boolean name="hide_emitters" value="{hide}"/>
+    </integrator>
+    <sensor type="perspective">
+        <float name="fov" value="{fov:.9g}"/>
+        <string name="fov_axis" value="y"/>
+        <float name="near_clip" value="{near:.9g}"/>
+        <float name="far_clip" value="{far:.9g}"/>
+        <transform name="to_world">
+            <lookat origin="{eye}" target="{target}" up="{up}"/>
+        </transform>
+        <sampler type="independent">
+            <integer name="sample_count" value="$spp"/>
+            <integer name="seed" value="{seed}"/>
+        </sampler>
+        <film type="hdrfilm">
+            <integer name="width" value="$resx"/>
+            <integer name="height" value="$resy"/>
+            <string name="pixel_format" value="rgba"/>
+            <rfilter type="box"/>
+        </film>
+    </sensor>
+    <emitter type="envmap">
+        <string name="filename" value="environment.exr"/>
+        <float name="scale" value="{env_scale:.9g}"/>
+    </emitter>
+    <emitter type="directional">
+        <vector name="direction" value="{light_dir}"/>
+        <rgb name="irradiance" value="{irradiance:.9g}"/>
+    </emitter>
+    <shape type="ply">
+        <string name="filename" value="mesh.ply"/>
+        <ref id={bsdf_id}/>
+    </shape>
+</scene>
+"""
+
+
+def _vec(v) -> str:
+    return ", ".join(f"{float(x):.9g}" for x in v)
+
+
+def export_scene(material: dict, scene: Scene, out_dir, width: int, height: int, spp: int = 64,
+                 seed: int = 0, hide_background: bool = True) -> Path:
+    """Write scene.xml, materials.xml (+ baked textures), mesh.ply and environment.exr."""
+    from cnlmc.backends import mitsuba
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    result = mitsuba.emit({"ir_version": 1, "materials": [material], "diagnostics": []}, {"form": "fragment"})
+    for artifact in result.artifacts:
+        path = out / artifact.name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_bytes(artifact.content if isinstance(artifact.content, bytes) else artifact.content.encode())
+    bsdf_id = _bsdf_id(out / "materials.xml")
+    write_ply(scene.mesh, out / "mesh.ply")
+    write_exr(out / "environment.exr", scene.env.image)
+    cam = scene.camera
+    distance = float(np.linalg.norm(np.subtract(cam.eye, cam.target)))
+    xml = SCENE_TEMPLATE.format(
+        spp=int(spp), width=int(width), height=int(height), hide="true" if hide_background else "false",
+        fov=cam.fov_y, near=max(distance * 0.01, 1e-3), far=distance * 10, eye=_vec(cam.eye),
+        target=_vec(cam.target), up=_vec(cam.up), seed=int(seed), env_scale=scene.env_intensity,
+        light_dir=_vec(-scene.env.key.unit), irradiance=scene.env.key.irradiance * scene.env_intensity,
+        bsdf_id=quoteattr(bsdf_id))
+    (out / "scene.xml").write_text(xml)
+    return out / "scene.xml"
+
+
+def _bsdf_id(materials_xml: Path) -> str:
+    import xml.etree.ElementTree as ET
+    root = ET.parse(materials_xml).getroot()
+    for child in root:
+        if child.tag == "bsdf" and child.get("id"):
+            return child.get("id")
+    raise ValueError(f"{materials_xml}: no BSDF with an id")
+
+
+def render_scene(path, spp: int | None = None, seed: int = 0) -> tuple[np.ndarray, float]:
+    """Render with Mitsuba (scalar_rgb): (linear RGBA float32, top row first; seconds)."""
+    import time
+
+    import mitsuba as mi
+    if mi.variant() is None:
+        mi.set_variant("scalar_rgb")
+    scene = mi.load_file(str(path), **({"spp": spp} if spp else {}))
+    start = time.perf_counter()
+    image = mi.render(scene, seed=seed)
+    seconds = time.perf_counter() - start
+    return np.array(image, np.float32), seconds
+
+
+def fov_note(scene: Scene) -> str:
+    return f"fov_y {scene.camera.fov_y} deg, eye {_vec(scene.camera.eye)}, {math.degrees(0):.0f}"
