@@ -36,4 +36,6 @@ def renderer():
 @pytest.fixture(scope="session")
 def scene():
     from cnlmc.backends.preview.render import default_scene
-    return default_scene("sphere", "studio", (SMALL, SMALL))
+    scene = default_scene("sphere", "studio", (SMALL, SMALL))
+    scene.background = "transparent"          # alpha = coverage of the object
+    return scene

@@ -103,5 +103,9 @@ def test_teapot_and_shader_ball_render(renderer):
     from cnlmc.backends.preview.render import default_scene
     material = material_of("copper")
     for mesh in ("teapot", "shader_ball"):
-        frame = renderer.render(material, tier="splitsum", scene=default_scene(mesh, "studio", (64, 64)), hdr=True)
-        assert np.isfinite(frame.hdr).all() and (frame.rgba[..., 3] > 0).mean() > 0.1
+        scene = default_scene(mesh, "studio", (64, 64))
+        frame = renderer.render(material, tier="splitsum", scene=scene, hdr=True)
+        assert np.isfinite(frame.hdr).all() and (frame.rgba[..., 3] == 255).all()     # opaque over the environment
+        scene.background = "transparent"
+        frame = renderer.render(material, tier="splitsum", scene=scene, hdr=True)
+        assert 0.1 < (frame.rgba[..., 3] > 0).mean() < 0.9

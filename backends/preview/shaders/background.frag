@@ -13,5 +13,5 @@ void main() {
     vec4 near = pv_inverse_view_projection * vec4(v_ndc, -1.0, 1.0);
     vec3 d = normalize(far.xyz / far.w - near.xyz / near.w);
     vec2 uv = vec2(fract(atan(d.x, -d.z) * (0.5 / PV_PI)), acos(clamp(d.y, -1.0, 1.0)) / PV_PI);
-    pv_color = vec4(textureLod(pv_env, uv, pv_background_lod).rgb * pv_env_intensity, 0.0);
+    pv_color = vec4(textureLod(pv_env, uv, pv_background_lod).rgb * pv_env_intensity, 1.0);
 }
