@@ -35,7 +35,7 @@ TIERS = {
 }
 #: Worst to best image quality (by the error against Mitsuba, bench/preview_chart.py).
 QUALITY_ORDER = ("analytic", "splitsum", "mc16", "fis16", "mc64", "fis64", "mc256", "mc1024")
-DEFAULT_TIER = "fis16"
+DEFAULT_TIER = "splitsum"   # lowest mean FLIP per ms in bench/preview_chart.py (docs/preview.md)
 _GENERIC = re.compile(r"^(mc|fis)(\d+)$")
 
 
