@@ -17,6 +17,7 @@ BUILTIN_BACKENDS = {
     "usd": "cnlmc.backends.usd",
     "mitsuba": "cnlmc.backends.mitsuba",
     "maps": "cnlmc.backends.maps.target",
+    "preview": "cnlmc.backends.preview",
 }
 
 

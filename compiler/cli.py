@@ -32,10 +32,31 @@ def build_parser() -> argparse.ArgumentParser:
     bake.add_argument("--size", type=int, default=1024, help="map size in pixels (default 1024)")
     bake.add_argument("--format", default="png8", choices=["png8", "png16", "exr-half", "exr-float"],
                       help="image format (default png8)")
+    prev = sub.add_parser("preview", help="render a material file to a PNG (offscreen OpenGL)")
+    _common(prev)
+    prev.add_argument("-o", "--output", default="preview.png", help="output PNG (default preview.png)")
+    _render_options(prev)
+    ar = sub.add_parser("ar", help="place the material on a printed marker in a photo or video")
+    ar.add_argument("photo", nargs="?", help="a photo (.jpg/.png) or video (.mp4/.avi/.mov) showing the marker")
+    ar.add_argument("phrase", nargs="?", help="a material phrase in quotes, or a material file")
+    ar.add_argument("-o", "--output", help="output image or video")
+    ar.add_argument("--marker", metavar="PNG", help="write a printable marker to PNG and stop")
+    ar.add_argument("--lexicon", "-L", action="append", default=[], help="as for compile")
+    ar.add_argument("--seed", type=int, default=0, help="seed for procedural maps (default 0)")
+    _render_options(ar)
     sheet = sub.add_parser("sheet", help="a contact sheet PNG of every stdlib procedural graph")
     sheet.add_argument("-o", "--output", default="maps_sheet.png", help="output PNG (default maps_sheet.png)")
     sheet.add_argument("--size", type=int, default=256, help="tile size in pixels (default 256)")
     return parser
+
+
+def _render_options(p) -> None:
+    p.add_argument("--mesh", help="sphere, shader_ball, teapot, or an .obj/.ply file")
+    p.add_argument("--size", help="image size in pixels (preview default 512)")
+    p.add_argument("--tier", help="quality tier: analytic, splitsum, fisN, mcN (see docs/preview.md)")
+    p.add_argument("--budget-ms", dest="budget_ms", help="pick the best tier whose frame time fits")
+    p.add_argument("--env", help="studio, sky, sun, or an .hdr/.exr environment")
+    p.add_argument("--option", action="append", default=[], metavar="KEY=VALUE", help="any other render option")
 
 
 def _common(p) -> None:
@@ -79,7 +100,7 @@ def _run(args) -> int:
     from . import commands
     handler = {"compile": commands.compile_cmd, "explain": commands.explain_cmd,
                "targets": commands.targets_cmd, "lsp": commands.lsp_cmd, "bake": commands.bake_cmd,
-               "sheet": commands.sheet_cmd}[args.command]
+               "sheet": commands.sheet_cmd, "preview": commands.preview_cmd, "ar": commands.ar_cmd}[args.command]
     return handler(args)
 
 

@@ -158,3 +158,87 @@ def sheet_cmd(args) -> int:
         raise UsageError(str(exc)) from None
     print(f"wrote {path}", file=sys.stderr)
     return EXIT_OK
+
+
+RENDER_FLAGS = ("mesh", "size", "tier", "budget_ms", "env")
+VIDEO_SUFFIXES = (".mp4", ".avi", ".mov", ".mkv", ".m4v", ".webm")
+
+
+def _render_options(args) -> dict:
+    options = _parse_options(args.option)
+    for flag in RENDER_FLAGS:
+        if getattr(args, flag, None) is not None:
+            options[flag] = getattr(args, flag)
+    options["seed"] = str(args.seed)
+    return options
+
+
+def _compiled_or_exit(source: str, name: str, args):
+    from .api import compile_source
+    result = compile_source(source, name, _lexicon(args), args.seed)
+    _report(result, source, name)
+    if not result.ok:
+        return None
+    if not result.materials:
+        raise UsageError(f"{name}: no material to render")
+    return result
+
+
+def preview_cmd(args) -> int:
+    try:
+        from cnlmc.backends import preview
+    except ImportError as exc:
+        raise UsageError(f"the preview cannot load: {exc}; install it with: pip install 'cnlmc[preview]'") from None
+    source, name = read_source(args.file)
+    result = _compiled_or_exit(source, name, args)
+    if result is None:
+        return EXIT_ERRORS
+    try:
+        report = preview.preview_command(result.ir, args.output, _render_options(args))
+    except (ValueError, OSError, RuntimeError) as exc:
+        raise UsageError(str(exc)) from None
+    for note in report.notes:
+        print(f"note: {note}", file=sys.stderr)
+    print(f"wrote {report.path}", file=sys.stderr)
+    return EXIT_OK
+
+
+def _phrase_source(text: str) -> tuple[str, str]:
+    """The AR phrase argument: a material file when such a file exists, else the phrase itself."""
+    from pathlib import Path
+    if Path(text).is_file():
+        return read_source(text)
+    return text, "<phrase>"
+
+
+def ar_cmd(args) -> int:
+    try:
+        from cnlmc.backends import ar
+    except ImportError as exc:
+        raise UsageError(f"AR cannot load: {exc}; install it with: pip install 'cnlmc[ar]'") from None
+    if args.marker:
+        print(f"wrote {ar.write_marker(args.marker)}", file=sys.stderr)
+        return EXIT_OK
+    if not (args.photo and args.phrase and args.output):
+        raise UsageError("usage: cnlmc ar PHOTO \"PHRASE\" -o OUT.png   (or: cnlmc ar --marker marker.png)")
+    source, name = _phrase_source(args.phrase)
+    result = _compiled_or_exit(source, name, args)
+    if result is None:
+        return EXIT_ERRORS
+    return _run_ar(ar, args, result.ir)
+
+
+def _run_ar(ar, args, ir) -> int:
+    run = ar.ar_video if args.photo.lower().endswith(VIDEO_SUFFIXES) else ar.ar_command
+    try:
+        report = run(args.photo, ir, args.output, _render_options(args))
+    except ar.NoMarkerFound as exc:
+        print(f"cnlmc: error: {exc}", file=sys.stderr)
+        print("  = print one with: cnlmc ar --marker marker.png", file=sys.stderr)
+        return EXIT_ERRORS
+    except (ar.ARError, ValueError, OSError, RuntimeError) as exc:
+        raise UsageError(str(exc)) from None
+    if report.missed:
+        print(f"note: no marker in {report.missed} of {report.frames} frames (left unchanged)", file=sys.stderr)
+    print(f"wrote {report.path}", file=sys.stderr)
+    return EXIT_OK

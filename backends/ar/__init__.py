@@ -15,6 +15,8 @@ AROptionError 2).
 """
 from __future__ import annotations
 
+import os
+
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -62,7 +64,8 @@ def _floats(text: str, count: tuple, what: str) -> tuple | None:
 
 
 def parse_options(options: dict | None) -> AROptions:
-    options = {k: str(v) for k, v in (options or {}).items()}
+    from ..capabilities import COMPILER_OPTIONS
+    options = {k: str(v) for k, v in (options or {}).items() if k not in COMPILER_OPTIONS}
     unknown = sorted(set(options) - set(DEFAULTS))
     if unknown:
         raise AROptionError(f"ar: unknown option(s) {', '.join(unknown)}; known: {', '.join(DEFAULTS)}")
@@ -235,10 +238,19 @@ def ar_command(photo_path, ir: dict, out_path, options: dict | None = None) -> A
     photo = read_photo(photo_path)
     result = composite(photo, material, opts, source=Path(photo_path).name)
     out_path = Path(out_path)
-    out_path.parent.mkdir(parents=True, exist_ok=True)
-    if not cv2.imwrite(str(out_path), result.image):
-        raise ARError(f"cannot write {out_path}")
+    write_image_atomic(out_path, result.image)
     return ARReport(out_path, 1, [result.pose])
+
+
+def write_image_atomic(path: Path, image) -> None:
+    """Encode by the file's extension and write it whole or not at all."""
+    import cv2
+
+    from cnlmc.output import write_atomic
+    ok, data = cv2.imencode(path.suffix or ".png", image)
+    if not ok:
+        raise AROptionError(f"cannot encode an image as '{path.suffix}': use .png or .jpg")
+    write_atomic(path, data.tobytes())
 
 
 def ar_video(video_path, ir: dict, out_path, options: dict | None = None, max_frames: int | None = None) -> ARReport:
@@ -252,6 +264,8 @@ def ar_video(video_path, ir: dict, out_path, options: dict | None = None, max_fr
         raise PhotoUnreadable(f"cannot open video {video_path}")
     fps = capture.get(cv2.CAP_PROP_FPS) or 25.0
     writer, poses, missed, count = None, [], 0, 0
+    out_path = Path(out_path)
+    partial = out_path.with_name(f".{out_path.name}.partial{out_path.suffix}")
     try:
         while max_frames is None or count < max_frames:
             ok, frame = capture.read()
@@ -265,20 +279,22 @@ def ar_video(video_path, ir: dict, out_path, options: dict | None = None, max_fr
             except NoMarkerFound:
                 missed += 1
             if writer is None:
-                out_path = Path(out_path)
                 out_path.parent.mkdir(parents=True, exist_ok=True)
-                writer = cv2.VideoWriter(str(out_path), cv2.VideoWriter_fourcc(*"mp4v"), fps,
+                writer = cv2.VideoWriter(str(partial), cv2.VideoWriter_fourcc(*"mp4v"), fps,
                                          (frame.shape[1], frame.shape[0]))
             writer.write(frame)
     finally:
         capture.release()
         if writer is not None:
             writer.release()
+    if count == 0 or not poses:
+        partial.unlink(missing_ok=True)
     if count == 0:
         raise PhotoUnreadable(f"no frames could be read from {video_path}")
     if not poses:
         raise NoMarkerFound(f"no marker found in any of the {count} frames of {Path(video_path).name}")
-    return ARReport(Path(out_path), count, poses, missed)
+    os.replace(partial, out_path)
+    return ARReport(out_path, count, poses, missed)
 
 
 __all__ = ["write_marker", "ar_command", "ar_video", "composite", "parse_options", "ARError", "NoMarkerFound",

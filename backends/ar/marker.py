@@ -35,7 +35,9 @@ def write_marker(path, marker_id: int = DEFAULT_ID, pixels: int = 480, name: str
         raise AROptionError(f"marker id {marker_id} is outside {name} (0 ... 49)")
     image, _ = marker_image(marker_id, pixels, name=name)
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    if not cv2.imwrite(str(path), image):
-        raise OSError(f"cannot write {path}")
+    from cnlmc.output import write_atomic
+    ok, data = cv2.imencode(path.suffix or ".png", image)
+    if not ok:
+        raise OSError(f"cannot encode a marker as '{path.suffix}': use .png")
+    write_atomic(path, data.tobytes())
     return path

@@ -131,11 +131,12 @@ def preview_command(ir: dict, out_path, options: dict | None = None) -> PreviewR
 
     Raises PreviewOptionError (usage error), MeshError / EnvironmentError (bad input file),
     PreviewUnavailable (no OpenGL here)."""
+    from cnlmc.output import write_atomic
+
     from .sheet import png_bytes
     frames = render_ir(ir, options)
     out_path = Path(out_path)
-    out_path.parent.mkdir(parents=True, exist_ok=True)
-    out_path.write_bytes(png_bytes(compose(frames)))
+    write_atomic(out_path, png_bytes(compose(frames)))
     notes = [n for _, f in frames for n in f.notes]
     return PreviewReport(out_path, frames, notes)
 
