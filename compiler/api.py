@@ -15,9 +15,8 @@ from .state import Context
 def lexicon_for(specs=()) -> "Lexicon":  # noqa: F821
     """`specs` are overlay names ('paper') or lexicon folders; folders are searched first."""
     paths = tuple(str(s) for s in specs if Path(s).is_dir())
-    overlays = [s for s in specs if not Path(s).is_dir()]
-    overlay = overlays[-1] if overlays else None
-    return cached_lexicon(paths, overlay)
+    overlays = tuple(str(s) for s in specs if not Path(s).is_dir())
+    return cached_lexicon(paths, overlays)
 
 
 @dataclass

@@ -1,7 +1,7 @@
 """The lexicon: words as data (stdlib/lexicon/*.toml), overlays and user lexicons.
 
-Search order for an entry: user lexicon folders (first given wins), then a named overlay
-(stdlib/overlays/NAME), then the bundled stdlib. Fields of a later-searched entry that the
+Search order for an entry: user lexicon folders (first given wins), then named overlays
+(stdlib/overlays/NAME, e.g. 'paper' or the German 'de'; first given wins), then the bundled stdlib. Fields of a later-searched entry that the
 earlier one does not set are kept, so an overlay can change one number of a noun.
 """
 
@@ -19,7 +19,7 @@ CATEGORY_TAGS = {
     "nouns": "NOUN", "adjectives": "ADJ", "adverbs": "ADV", "colours": "COLOR",
     "shades": "SHADE", "refinements": "REFINE", "properties": "PROP", "coats": "COAT",
 }
-SPECIAL_FILES = ("settings", "inflections")
+SPECIAL_FILES = ("settings", "inflections", "keywords")
 
 
 @dataclass(frozen=True)
@@ -45,8 +45,9 @@ def normalise(surface: str) -> tuple[str, ...]:
 class Lexicon:
     """Entries by category, an index of surface forms, inflection rules and settings."""
 
-    def __init__(self, entries: dict, settings: dict, inflections: list, sources: list[str]):
-        self.keywords = keyword_table()
+    def __init__(self, entries: dict, settings: dict, inflections: list, sources: list[str],
+                 keywords: dict | None = None):
+        self.keywords = {**keyword_table(), **(keywords or {})}
         self.entries = entries
         self.settings = settings
         self.inflections = inflections
@@ -111,12 +112,13 @@ def _schema() -> dict:
     return tomllib.loads(text)
 
 
-def keyword_table() -> dict[str, str]:
-    """Closed-class words -> grammar terminal, from grammar/keywords.toml."""
-    import tomllib
-    text = resources.files("cnlmc.grammar").joinpath("keywords.toml").read_text("utf-8")
-    table = tomllib.loads(text)["terminals"]
-    return {word: terminal for terminal, words in table.items() for word in words}
+def keyword_table(table: dict | None = None) -> dict[str, str]:
+    """Closed-class words -> grammar terminal, from grammar/keywords.toml (or a given table)."""
+    if table is None:
+        import tomllib
+        text = resources.files("cnlmc.grammar").joinpath("keywords.toml").read_text("utf-8")
+        table = tomllib.loads(text)
+    return {word: terminal for terminal, words in table["terminals"].items() for word in words}
 
 
 def _category_of(stem: str) -> str | None:
@@ -148,6 +150,7 @@ class _Builder:
         self.raw: dict[str, dict[str, tuple[dict, str]]] = {c: {} for c in CATEGORY_TAGS}
         self.settings: dict = {}
         self.inflections: list = []
+        self.keywords: dict = {}
         self.sources: list[str] = []
 
     def add_layer(self, folder, strict_entries: bool) -> None:
@@ -162,8 +165,11 @@ class _Builder:
             raise LexiconError(f"{path}: unknown lexicon file (its name must start with one of: "
                                f"{', '.join([*CATEGORY_TAGS, *SPECIAL_FILES])})")
         data = _read_toml(path)
-        if category == "inflections":
-            self.inflections = self.inflections or [tuple(r) for r in data.get("rules", [])]
+        if category == "inflections":  # every layer's rules, the most specific layer's first
+            self.inflections += [tuple(r) for r in data.get("rules", [])]
+            return
+        if category == "keywords":  # a language's closed-class words (and, or, with, articles)
+            self._add_keywords(path, data)
             return
         if category == "settings":
             check_entry(data, self.schema["settings"]["fields"], str(path), partial=True)
@@ -190,6 +196,13 @@ class _Builder:
         merged["aliases"] = sorted(set(current[0].get("aliases", [])) | set(entry.get("aliases", [])))
         self.raw[category][key] = (merged, current[1])
 
+    def _add_keywords(self, path, data: dict) -> None:
+        terminals = set(keyword_table().values())
+        table = data.get("terminals")
+        if not isinstance(table, dict) or not set(table) <= terminals:
+            raise LexiconError(f"{path} [terminals]: expected a table of {', '.join(sorted(terminals))}")
+        self.keywords = {**keyword_table(data), **self.keywords}
+
     def check_complete(self) -> None:
         """Entries added only by a user layer must still carry every required field."""
         for category, by_key in self.raw.items():
@@ -198,7 +211,7 @@ class _Builder:
 
     def build(self) -> Lexicon:
         entries = {c: {k: _finish(c, k, d, o) for k, (d, o) in by.items()} for c, by in self.raw.items()}
-        return Lexicon(entries, self.settings, self.inflections, self.sources)
+        return Lexicon(entries, self.settings, self.inflections, self.sources, self.keywords)
 
 
 def _finish(category: str, key: str, data: dict, origin: str) -> Entry:
@@ -223,30 +236,35 @@ def available_overlays() -> list[str]:
     return sorted(p.name for p in root.iterdir() if p.is_dir())
 
 
-def load_lexicon(user_paths=(), overlay: str | None = None) -> Lexicon:
-    """Load the lexicon: user folders first, then an overlay, then the bundled stdlib."""
+def _overlay_names(overlay) -> tuple[str, ...]:
+    names = (overlay,) if isinstance(overlay, str) else tuple(overlay or ())
+    return tuple(n for n in names if n and n != "stdlib")
+
+
+def load_lexicon(user_paths=(), overlay: str | tuple | None = None) -> Lexicon:
+    """Load the lexicon: user folders first, then the overlays in order, then the bundled stdlib."""
     builder = _Builder()
     for folder in user_paths:
         path = Path(folder)
         if not path.is_dir():
             raise LexiconError(f"{path}: lexicon path is not a folder")
         builder.add_layer(path, strict_entries=False)
-    if overlay and overlay != "stdlib":
-        builder.add_layer(overlay_folder(overlay), strict_entries=False)
+    for name in _overlay_names(overlay):
+        builder.add_layer(overlay_folder(name), strict_entries=False)
     builder.add_layer(stdlib_folder(), strict_entries=True)
     builder.check_complete()
     return builder.build()
 
 
 @lru_cache(maxsize=8)
-def cached_lexicon(user_paths: tuple = (), overlay: str | None = None) -> Lexicon:
+def cached_lexicon(user_paths: tuple = (), overlay: str | tuple | None = None) -> Lexicon:
     """The lexicon, from the on-disk cache when no source file changed since it was written."""
     from .cache import cached
     folders = [Path(p) for p in user_paths]
-    if overlay and overlay != "stdlib":
-        folders.append(Path(str(overlay_folder(overlay))))
+    folders += [Path(str(overlay_folder(name))) for name in _overlay_names(overlay)]
     folders.append(Path(str(stdlib_folder())))
-    sources = [Path(str(resources.files("cnlmc.stdlib").joinpath("schema.toml")))]
+    sources = [Path(str(resources.files("cnlmc.stdlib").joinpath("schema.toml"))),
+               Path(str(resources.files("cnlmc.grammar").joinpath("keywords.toml")))]
     sources += [p for folder in folders if folder.is_dir() for p in sorted(folder.glob("*.toml"))]
     lexicon = cached("lexicon", sources, lambda: load_lexicon(user_paths, overlay))
     _freeze_long_lived()

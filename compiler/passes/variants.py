@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import itertools
 import re
+import unicodedata
 from dataclasses import replace
 
 from .. import ast
@@ -16,9 +17,15 @@ from ..diagnostics import error
 MAX_VARIANTS = 64
 
 
+def ascii_fold(text: str) -> str:
+    """'gebürstetes Weiß' -> 'geburstetes Weiss': accents dropped, ß as ss."""
+    decomposed = unicodedata.normalize("NFKD", text.replace("ß", "ss"))
+    return "".join(c for c in decomposed if not unicodedata.combining(c))
+
+
 def identifier(text: str) -> str:
     """A safe identifier from any text: letters, digits and '_', not starting with a digit."""
-    name = re.sub(r"\W+", "_", text.strip().lower(), flags=re.ASCII).strip("_") or "material"
+    name = re.sub(r"\W+", "_", ascii_fold(text).strip().lower(), flags=re.ASCII).strip("_") or "material"
     return "m_" + name if name[0].isdigit() else name
 
 
