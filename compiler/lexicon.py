@@ -227,7 +227,10 @@ def stdlib_folder():
 def overlay_folder(name: str):
     folder = resources.files("cnlmc.stdlib").joinpath("overlays").joinpath(name)
     if not folder.is_dir():
-        raise LexiconError(f"no lexicon overlay named '{name}' (available: {', '.join(available_overlays())})")
+        import difflib
+        close = difflib.get_close_matches(name, available_overlays(), n=1)
+        hint = f"; did you mean '{close[0]}'?" if close else ""
+        raise LexiconError(f"no lexicon overlay named '{name}' (available: {', '.join(available_overlays())}){hint}")
     return folder
 
 

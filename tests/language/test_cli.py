@@ -78,7 +78,7 @@ def test_explain_lists_words_and_rules():
 def test_unknown_overlay_is_a_usage_error():
     r = cnlmc("compile", "-", "--lexicon", "papr", stdin="steel")
     assert r.returncode == 2
-    assert "no lexicon overlay named 'papr' (available: de, paper)" in r.stderr
+    assert "no lexicon overlay named 'papr' (available: de, paper); did you mean 'paper'?" in r.stderr
 
 
 @pytest.mark.parametrize("text", ["", "\n\n", "# only a comment\n", "   "])
