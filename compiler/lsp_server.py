@@ -54,6 +54,22 @@ class CnlServer(LanguageServer):
             self.debounce_ms = max(0, settings["debounceMs"])
         if isinstance(settings.get("inlayHints"), bool):
             self.inlay_hints = settings["inlayHints"]
+        if isinstance(settings.get("lexicon"), list):
+            self.use_lexicon(tuple(str(s) for s in settings["lexicon"]))
+
+    def use_lexicon(self, specs: tuple) -> None:
+        """Overlay names ('de', 'paper') or lexicon folders, as `--lexicon` takes them."""
+        from .lexicon_schema import LexiconError
+        try:
+            lexicon = lexicon_for(specs)
+        except LexiconError as exc:
+            log.warning("cnlmc.lexicon setting ignored: %s", exc)
+            self.lexicon_error = str(exc)
+            return
+        self.lexicon_error = None
+        if lexicon is not self.analyzer.lexicon:
+            self.analyzer = Analyzer(lexicon)
+            self.snapshots.clear()
 
     def text_of(self, uri: str) -> str | None:
         if uri not in self.generation:
@@ -145,6 +161,8 @@ def on_initialize(ls: CnlServer, params: types.InitializeParams):
 @server.feature(types.WORKSPACE_DID_CHANGE_CONFIGURATION)
 def on_configuration(ls: CnlServer, params: types.DidChangeConfigurationParams):
     ls.apply_settings(params.settings or {})
+    for uri in list(ls.generation):
+        ls.schedule(uri)  # the words may have changed: re-check every open document
 
 
 @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
