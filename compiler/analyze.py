@@ -79,17 +79,21 @@ def _phrase(material: ast.Material) -> str:
 
 def analyze(doc: ast.Document, ctx: Context) -> tuple[list[MaterialState], list]:
     """All material states of a document, and every diagnostic, sorted by position."""
+    pairs = attach_refinements(doc)  # may add W104 to the document's diagnostics
     diags = list(doc.diagnostics)
     bad_lines = {d.span.line for d in diags if d.is_error and d.span}
     states, used = [], {}
-    for material, refinements in attach_refinements(doc):
+    for material, refinements in pairs:
         if material.span.line in bad_lines:
             continue  # reported already; half-understood materials are not emitted
         refinements = [r for r in refinements if r.span.line not in bad_lines]
         states += build_states(material, refinements, ctx, material_name(material, used), diags)
-    diags = list(doc.diagnostics[len(diags):]) + diags
-    for state in states:
-        diags += [d for d in state.diagnostics if d not in diags]
+    seen = set(diags)
+    for state in states:  # variants of one phrase repeat the same warnings: report each once
+        for d in state.diagnostics:
+            if d not in seen:
+                seen.add(d)
+                diags.append(d)
     return states, sort_diagnostics(diags)
 
 

@@ -79,9 +79,17 @@ class Lexicon:
 
     def suggest(self, word: str, categories=None, limit: int = 3) -> list[str]:
         """Closest surface forms to `word`, best first (rapidfuzz ratio >= 70)."""
+        key = (word.lower(), tuple(categories or CATEGORY_TAGS), limit)
+        memo = self.__dict__.setdefault("_suggest_memo", {})
+        if key not in memo:
+            if len(memo) > 4096:
+                memo.clear()
+            memo[key] = self._closest(*key)
+        return list(memo[key])
+
+    def _closest(self, word: str, categories: tuple, limit: int) -> list[str]:
         from rapidfuzz import fuzz, process  # only needed when a word is unknown
-        pool = self._pool(tuple(categories or CATEGORY_TAGS))
-        found = process.extract(word.lower(), pool, scorer=fuzz.ratio, limit=limit, score_cutoff=70)
+        found = process.extract(word, self._pool(categories), scorer=fuzz.ratio, limit=limit, score_cutoff=70)
         return [match for match, _score, _i in found]
 
     def _pool(self, categories: tuple) -> list[str]:
