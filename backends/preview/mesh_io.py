@@ -140,13 +140,17 @@ def load_ply(path) -> Mesh:
     return make_mesh(pos, np.array(tris, np.int64), normals, uvs)
 
 
-def write_ply(mesh: Mesh, path) -> None:
-    """Binary little-endian PLY with normals and UVs (u, v), triangles as uchar/int lists."""
+def write_ply(mesh: Mesh, path, flip_v: bool = False) -> None:
+    """Binary little-endian PLY with normals and UVs (u, v), triangles as uchar/int lists.
+
+    `flip_v` writes v' = 1 - v: Mitsuba 3 samples a bitmap's top row at v = 0 and does not flip
+    PLY texture coordinates (its OBJ loader does), while our UVs put the top row at v = 1."""
     n, m = len(mesh.positions), len(mesh.indices)
     header = ("ply\nformat binary_little_endian 1.0\ncomment cnlmc preview mesh\n"
               f"element vertex {n}\n" + "".join(f"property float {p}\n" for p in ("x", "y", "z", "nx", "ny", "nz", "u", "v"))
               + f"element face {m}\nproperty list uchar int vertex_indices\nend_header\n")
-    verts = np.hstack([mesh.positions, mesh.normals, mesh.uvs]).astype("<f4")
+    uvs = np.column_stack([mesh.uvs[:, 0], 1.0 - mesh.uvs[:, 1]]) if flip_v else mesh.uvs
+    verts = np.hstack([mesh.positions, mesh.normals, uvs]).astype("<f4")
     faces = np.zeros(m, np.dtype([("n", "u1"), ("i", "<i4", (3,))]))
     faces["n"], faces["i"] = 3, mesh.indices.astype("<i4")
     with open(path, "wb") as f:

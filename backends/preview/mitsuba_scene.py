@@ -76,7 +76,7 @@ def export_scene(material: dict, scene: Scene, out_dir, width: int, height: int,
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_bytes(artifact.content if isinstance(artifact.content, bytes) else artifact.content.encode())
     bsdf_id = _bsdf_id(out / "materials.xml")
-    write_ply(scene.mesh, out / "mesh.ply")
+    write_ply(scene.mesh, out / "mesh.ply", flip_v=True)   # Mitsuba: bitmap top row at v = 0
     write_exr(out / "environment.exr", scene.env.image)
     cam = scene.camera
     distance = float(np.linalg.norm(np.subtract(cam.eye, cam.target)))
