@@ -114,13 +114,22 @@ def _parse_search(words: list[Tagged]):
 
 
 def _search(ip, words, i, chosen, state):
+    while i < len(words) and len(words[i].candidates) == 1:  # no choice: no copy of the parser
+        cand = words[i].candidates[0]
+        try:
+            ip.feed_token(_token(words[i], cand.tag))
+        except UnexpectedToken as exc:
+            _note_failure(state, i, words[i], exc)
+            return None
+        chosen = {**chosen, words[i].span.start: cand}
+        i += 1
     if i == len(words):
         return _finish(ip, words, chosen, state)
     for cand in words[i].candidates:
         if state["budget"] <= 0:
             return None
         state["budget"] -= 1
-        branch = ip.copy()
+        branch = ip.copy(deepcopy_values=False)  # values are never mutated once built
         try:
             branch.feed_token(_token(words[i], cand.tag))
         except UnexpectedToken as exc:
