@@ -54,13 +54,8 @@ def _coat(coat: dict, convention: str) -> dict:
 
 
 def _provenance(state: MaterialState) -> dict:
-    return {param: [_step(step) for step in steps] for param, steps in state.provenance.items()}
-
-
-def _step(step) -> dict:
-    out = step.to_json()
-    out["value"] = rounded(step.value)
-    return out
+    memo: dict = {}
+    return {param: [step.to_json(memo) for step in steps] for param, steps in state.provenance.items()}
 
 
 def document_ir(materials: list[dict], diagnostics: list, source_name: str, lexicon_sources) -> dict:

@@ -129,7 +129,7 @@ def _search(ip, words, i, chosen, state):
         if state["budget"] <= 0:
             return None
         state["budget"] -= 1
-        branch = ip.copy(deepcopy_values=False)  # values are never mutated once built
+        branch = ip.copy()  # deep: lark may reuse child lists when it reduces
         try:
             branch.feed_token(_token(words[i], cand.tag))
         except UnexpectedToken as exc:

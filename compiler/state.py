@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from . import ast
+from .formulas import rounded
 from .lexicon import Entry, Lexicon
 
 NOUN_PARAMS = ("base_color", "roughness", "eta", "k", "f0", "f82", "ior", "diffuse_roughness")
@@ -22,9 +23,15 @@ class Step:
     def texts(self) -> list[str]:
         return [w.text for w in self.words]
 
-    def to_json(self) -> dict:
-        out = {"rule": self.rule, "words": self.texts, "spans": [w.span.as_list() for w in self.words],
-               "value": self.value}
+    def to_json(self, memo: dict | None = None) -> dict:
+        """The JSON form; `memo` shares the word lists of steps that name the same words."""
+        memo = {} if memo is None else memo
+        key = id(self.words)
+        if key not in memo:
+            memo[key] = (self.texts, [w.span.as_list() for w in self.words])
+        texts, spans = memo[key]
+        value = self.value if self.source else rounded(self.value)  # lexicon values are exact
+        out = {"rule": self.rule, "words": texts, "spans": spans, "value": value}
         if self.source:
             out["source"] = self.source
         return out

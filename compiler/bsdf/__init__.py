@@ -18,6 +18,9 @@ from .microfacet import (ggx_d, ggx_d_common_form, ggx_d_isotropic, ggx_visibili
                          smith_g1, smith_g2, smith_g2_separable, smith_lambda)
 from .multiscatter import (albedo_lookup, average_albedo, fresnel_multiscatter, ggx_albedo,
                            multiscatter_lobe)
+from .transmission import (dielectric_reflection, evaluate_bsdf, evaluate_transmission,
+                           generalized_half_vector, microfacet_transmission, mirror_transmittance,
+                           transmission_g2)
 from .ward import ward, ward_1992, ward_duer, ward_gmd
 
 __all__ = [
@@ -30,5 +33,6 @@ __all__ = [
     "ggx_d", "ggx_d_common_form", "ggx_d_isotropic", "ggx_visibility", "microfacet_reflection",
     "mirror_reflectance", "sample_ggx_vndf", "smith_g1", "smith_g2", "smith_g2_separable",
     "smith_lambda", "albedo_lookup", "average_albedo", "fresnel_multiscatter", "ggx_albedo",
-    "multiscatter_lobe", "ward", "ward_1992", "ward_duer", "ward_gmd",
+    "multiscatter_lobe", "dielectric_reflection", "evaluate_bsdf", "evaluate_transmission",
+    "generalized_half_vector", "microfacet_transmission", "mirror_transmittance", "transmission_g2", "ward", "ward_1992", "ward_duer", "ward_gmd",
 ]

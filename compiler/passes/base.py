@@ -14,10 +14,10 @@ def apply_noun(state: MaterialState, ctx: Context) -> MaterialState:
     entry = ctx.lexicon.entry("nouns", word.key)
     state.noun = entry
     state.kind = entry.get("model")
-    rule = f"nouns.{entry.key}"
+    rule, words, source = f"nouns.{entry.key}", (word,), entry.get("source")
     for param in NOUN_PARAMS:
         if param in entry.data:
-            state.record(param, entry.get(param), rule, (word,), source=entry.get("source"))
+            state.record(param, entry.get(param), rule, words, source=source)
     state.params.setdefault("diffuse_roughness", 0.0)
     state.params.setdefault("anisotropy", 0.0)
     state.params.setdefault("anisotropy_rotation", 0.0)
