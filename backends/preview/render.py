@@ -28,6 +28,8 @@ STRATEGY = {"diffuse": ((1.0, 0.0, 0.0), (0.5, 0.0, 0.5)),
 GLSL_OPTION_KEYS = ("fresnel", "multiscatter", "specialize")
 PREFILTER_LEVELS = 5
 MAP_SIZE = 512
+#: MSAA costs 4x the object pass on llvmpipe (docs/preview.md): off, with the tone map's edge filter.
+DEFAULT_MSAA = 0
 
 
 @dataclass
@@ -123,16 +125,33 @@ class EnvResources:
 
 
 class Targets:
-    """MSAA float target, its resolve texture and the 8-bit output, for one size."""
+    """The HDR target (half float) with depth, and the 8-bit output, for one size.
+
+    With MSAA (msaa > 1) the scene is drawn into a multisampled renderbuffer and resolved
+    into `resolved_tex`; without it, straight into `resolved_tex` (no resolve pass)."""
+
+    HDR_DTYPE = "f2"
 
     def __init__(self, width: int, height: int, msaa: int):
         ctx = gl.context()
         self.size = (width, height)
-        self.msaa = ctx.framebuffer([ctx.renderbuffer(self.size, 4, samples=msaa, dtype="f4")],
-                                    ctx.depth_renderbuffer(self.size, samples=msaa))
-        self.resolved_tex = ctx.texture(self.size, 4, dtype="f4")
-        self.resolved = ctx.framebuffer([self.resolved_tex])
+        self.samples = msaa if msaa > 1 else 0
+        self.resolved_tex = ctx.texture(self.size, 4, dtype=self.HDR_DTYPE)
+        if self.samples:
+            self.msaa = ctx.framebuffer([ctx.renderbuffer(self.size, 4, samples=msaa, dtype=self.HDR_DTYPE)],
+                                        ctx.depth_renderbuffer(self.size, samples=msaa))
+            self.resolved = ctx.framebuffer([self.resolved_tex])
+        else:
+            self.msaa = self.resolved = ctx.framebuffer([self.resolved_tex], ctx.depth_renderbuffer(self.size))
         self.ldr = ctx.framebuffer([ctx.renderbuffer(self.size, 4)])
+
+    @property
+    def draw_target(self):
+        return self.msaa
+
+    def resolve(self, ctx) -> None:
+        if self.samples:
+            ctx.copy_framebuffer(self.resolved, self.msaa)
 
 
 _ENVS: dict = {}
@@ -236,9 +255,10 @@ def default_scene(mesh: str | Mesh = "sphere", env: str | Environment = "studio"
 class Renderer:
     """Offscreen renderer of one size; programs, textures and meshes are cached process-wide."""
 
-    def __init__(self, width: int = 512, height: int | None = None, msaa: int = 4):
+    def __init__(self, width: int = 512, height: int | None = None, msaa: int = DEFAULT_MSAA, edge_aa: bool = True):
         self.width, self.height = width, height or width
         self.msaa = msaa
+        self.edge_aa = edge_aa          # the tone-map pass's edge filter, used when msaa <= 1
         self.ctx = gl.context()
 
     # -- programs
@@ -278,17 +298,6 @@ class Renderer:
         gl.set_uniform(prog, "pv_filtered", int(tier.filtered))
         return first_unit + len(units)
 
-    def _draw_background(self, scene: Scene, res: EnvResources) -> None:
-        import moderngl
-        prog, vao = self.fullscreen("background.frag")
-        res.radiance.use(0)
-        gl.set_uniform(prog, "pv_env", 0)
-        gl.set_uniform(prog, "pv_env_intensity", scene.env_intensity)
-        gl.set_uniform(prog, "pv_background_lod", scene.background_lod)
-        gl.set_uniform(prog, "pv_inverse_view_projection", np.linalg.inv(scene.camera.view_projection))
-        self.ctx.disable(moderngl.DEPTH_TEST)
-        vao.render(moderngl.TRIANGLES, vertices=3)
-
     def _draw_object(self, scene: Scene, material: dict, shader: MaterialShader, tier: Tier, res: EnvResources,
                      model: np.ndarray) -> None:
         import moderngl
@@ -323,13 +332,23 @@ class Renderer:
                 parts.append(f"{size * 4}x")
         return " ".join(parts), names
 
-    def _tonemap(self, t: Targets, scene: Scene) -> None:
+    def _tonemap(self, t: Targets, scene: Scene, res: EnvResources, background: bool) -> None:
+        """Edge filter (without MSAA), the environment background (where the object does not
+        cover the pixel), exposure, ACES, sRGB: one full-screen pass."""
         import moderngl
         prog, vao = self.fullscreen("tonemap.frag")
         t.resolved_tex.use(0)
         gl.set_uniform(prog, "pv_hdr", 0)
         gl.set_uniform(prog, "pv_exposure", scene.exposure)
         gl.set_uniform(prog, "pv_curve", 0)
+        gl.set_uniform(prog, "pv_edge_aa", int(self.edge_aa and not t.samples))
+        gl.set_uniform(prog, "pv_background", int(background))
+        if background:
+            res.radiance.use(1)
+            gl.set_uniform(prog, "pv_env", 1)
+            gl.set_uniform(prog, "pv_env_intensity", scene.env_intensity)
+            gl.set_uniform(prog, "pv_background_lod", scene.background_lod)
+            gl.set_uniform(prog, "pv_inverse_view_projection", np.linalg.inv(scene.camera.view_projection))
         self.ctx.disable(moderngl.DEPTH_TEST)
         t.ldr.use()
         vao.render(moderngl.TRIANGLES, vertices=3)
@@ -341,17 +360,15 @@ class Renderer:
         shader = material_shader(material, glsl_options)
         res = env_resources(scene.env)
         t = targets(self.width, self.height, self.msaa)
-        t.msaa.use()
+        t.draw_target.use()
         self.ctx.viewport = (0, 0, self.width, self.height)
-        t.msaa.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
-        if scene.background == "env":
-            self._draw_background(scene, res)
+        t.draw_target.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
         if overlay is not None:
             overlay(self, scene)
-            t.msaa.use()
+            t.draw_target.use()
         self._draw_object(scene, material, shader, tier, res, np.eye(4) if model is None else model)
-        self.ctx.copy_framebuffer(t.resolved, t.msaa)
-        self._tonemap(t, scene)
+        t.resolve(self.ctx)
+        self._tonemap(t, scene, res, scene.background == "env")     # composites the background
         return t
 
     def render(self, material: dict, mesh: str | Mesh = "sphere", tier: Tier | str = DEFAULT_TIER,

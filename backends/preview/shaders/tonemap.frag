@@ -1,10 +1,27 @@
 #version 330 core
-// cnlmc preview: exposure, ACES filmic curve (Narkowicz 2015 fit), sRGB transfer function.
+// cnlmc preview, the last pass: edge filter, background, exposure, ACES filmic curve
+// (Narkowicz 2015 fit), sRGB transfer function.
+// Edge filter (pv_edge_aa = 1, for targets without MSAA): where the compressed luma or the
+// coverage of a 4-neighbour differs from this pixel's by more than a threshold, the object
+// layer (premultiplied, linear) becomes the tent blend 1/2 centre + 1/8 each neighbour; the
+// background is then composited under it with the filtered coverage, as an MSAA resolve would.
+// Background (pv_background = 1): the environment seen through the pixel, blurred (mip level
+// pv_background_lod), evaluated only where the object does not cover the pixel entirely.
 in vec2 v_uv;
+in vec2 v_ndc;
 uniform sampler2D pv_hdr;
+uniform sampler2D pv_env;
 uniform float pv_exposure;
 uniform int pv_curve;      // 0: ACES fit, 1: clamp (linear)
+uniform int pv_edge_aa;
+uniform int pv_background;
+uniform mat4 pv_inverse_view_projection;
+uniform float pv_env_intensity;
+uniform float pv_background_lod;
 out vec4 pv_color;
+
+const float PV_PI = 3.14159265358979;
+const float PV_EDGE_THRESHOLD = 0.04;
 
 vec3 pv_aces(vec3 x) {
     return clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
@@ -15,9 +32,42 @@ vec3 pv_srgb(vec3 c) {
     return mix(12.92 * x, 1.055 * pow(x, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), x));
 }
 
+float pv_key(vec4 c) {
+    float l = dot(max(c.rgb, 0.0), vec3(0.2126, 0.7152, 0.0722)) * pv_exposure;
+    return l / (1.0 + l) + c.a;
+}
+
+vec4 pv_fetch(ivec2 p, ivec2 hi) {
+    return texelFetch(pv_hdr, clamp(p, ivec2(0), hi), 0);
+}
+
+vec4 pv_object(ivec2 p) {
+    vec4 c = texelFetch(pv_hdr, p, 0);
+    if (pv_edge_aa == 0) return c;
+    ivec2 hi = textureSize(pv_hdr, 0) - 1;
+    vec4 l = pv_fetch(p + ivec2(-1, 0), hi), r = pv_fetch(p + ivec2(1, 0), hi);
+    vec4 d = pv_fetch(p + ivec2(0, -1), hi), u = pv_fetch(p + ivec2(0, 1), hi);
+    float k = pv_key(c);
+    float contrast = max(max(abs(pv_key(l) - k), abs(pv_key(r) - k)), max(abs(pv_key(d) - k), abs(pv_key(u) - k)));
+    return contrast > PV_EDGE_THRESHOLD ? 0.5 * c + 0.125 * (l + r + d + u) : c;
+}
+
+vec3 pv_environment() {
+    vec4 far = pv_inverse_view_projection * vec4(v_ndc, 1.0, 1.0);
+    vec4 near = pv_inverse_view_projection * vec4(v_ndc, -1.0, 1.0);
+    vec3 d = normalize(far.xyz / far.w - near.xyz / near.w);
+    vec2 uv = vec2(fract(atan(d.x, -d.z) * (0.5 / PV_PI)), acos(clamp(d.y, -1.0, 1.0)) / PV_PI);
+    return textureLod(pv_env, uv, pv_background_lod).rgb * pv_env_intensity;
+}
+
 void main() {
-    vec4 hdr = texture(pv_hdr, v_uv);
-    vec3 x = hdr.rgb * pv_exposure;
+    vec4 c = pv_object(ivec2(gl_FragCoord.xy));
+    c.a = clamp(c.a, 0.0, 1.0);
+    if (pv_background != 0) {
+        if (c.a < 1.0) c.rgb += (1.0 - c.a) * pv_environment();
+        c.a = 1.0;
+    }
+    vec3 x = c.rgb * pv_exposure;
     vec3 mapped = pv_curve == 0 ? pv_aces(x) : clamp(x, 0.0, 1.0);
-    pv_color = vec4(pv_srgb(mapped), clamp(hdr.a, 0.0, 1.0));
+    pv_color = vec4(pv_srgb(mapped), c.a);
 }
