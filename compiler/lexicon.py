@@ -275,7 +275,8 @@ def cached_lexicon(user_paths: tuple = (), overlay: str | tuple | None = None) -
     folders += [Path(str(overlay_folder(name))) for name in _overlay_names(overlay)]
     folders.append(Path(str(stdlib_folder())))
     sources = [Path(str(resources.files("cnlmc.stdlib").joinpath("schema.toml"))),
-               Path(str(resources.files("cnlmc.grammar").joinpath("keywords.toml")))]
+               Path(str(resources.files("cnlmc.grammar").joinpath("keywords.toml"))),
+               Path(__file__)]  # the classes that are pickled: a change to them rebuilds the cache
     sources += [p for folder in folders if folder.is_dir() for p in sorted(folder.glob("*.toml"))]
     lexicon = cached("lexicon", sources, lambda: load_lexicon(user_paths, overlay))
     _freeze_long_lived()

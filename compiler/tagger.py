@@ -20,15 +20,17 @@ OPEN_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "REFINE")
 TAG_PREFERENCE = {t: i for i, t in enumerate(("NAME", "COLON", "ARTICLE", "AND", "OR", "WITH", "COMMA", *OPEN_TAGS))}
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Candidate:
     tag: str
     key: str
     category: str
 
 
-@dataclass(frozen=True)
+@dataclass(slots=True)
 class Tagged:
+    """A word (or multi-word entry) of a line with its candidate tags; made once, never changed."""
+
     text: str
     span: object
     candidates: tuple[Candidate, ...]
@@ -76,8 +78,16 @@ class Tagger:
         return colon + 1
 
     def _tag_at(self, raw, i, line_no, offset, tagged, diags) -> int:
-        longest = self.lexicon.max_form_words if raw[i][0].lower() in self.multi_first else 1
-        for n in range(min(longest, len(raw) - i), 0, -1):
+        text, col = raw[i]
+        low = text.lower()
+        if low not in self.multi_first:  # the common case: a one-word entry
+            candidates = self._candidates((low,))
+            if candidates:
+                tagged.append(Tagged(text, line_span(line_no, col + 1, len(text), offset), candidates))
+                return 1
+            tagged.append(self._unknown(raw[i], line_no, offset, diags))
+            return 1
+        for n in range(min(self.lexicon.max_form_words, len(raw) - i), 0, -1):
             words = tuple(t.lower() for t, _c in raw[i:i + n])
             candidates = self._candidates(words)
             if candidates:

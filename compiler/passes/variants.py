@@ -19,6 +19,8 @@ MAX_VARIANTS = 64
 
 def ascii_fold(text: str) -> str:
     """'gebürstetes Weiß' -> 'geburstetes Weiss': accents dropped, ß as ss."""
+    if text.isascii():
+        return text
     decomposed = unicodedata.normalize("NFKD", text.replace("ß", "ss"))
     return "".join(c for c in decomposed if not unicodedata.combining(c))
 
