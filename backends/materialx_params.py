@@ -16,6 +16,7 @@ import unicodedata
 from dataclasses import dataclass
 from pathlib import Path
 
+from .capabilities import COMPILER_OPTIONS
 from .registry import Artifact
 
 MU_82 = 1.0 / 7.0          # cos 82 degrees, rounded as OpenPBR does: the F82 angle
@@ -54,8 +55,8 @@ COMMON_OPTIONS = {"maps": "bake", "map_size": "256", "map_format": "png8", "seed
 
 def exchange_options(options: dict | None, target: str, extra: dict[str, tuple]) -> dict:
     """Validate options: `extra` is name -> (default, allowed values or None for any int)."""
-    options = dict(options or {})
     known = {**{k: (v, None) for k, v in COMMON_OPTIONS.items()}, **extra}
+    options = {k: v for k, v in (options or {}).items() if k in known or k not in COMPILER_OPTIONS}
     unknown = sorted(set(options) - set(known))
     if unknown:
         raise ValueError(f"{target}: unknown option(s) {', '.join(unknown)}; known: {', '.join(sorted(known))}")

@@ -53,7 +53,8 @@ class PreviewOptions:
 
 
 def parse_options(options: dict | None) -> PreviewOptions:
-    options = {k: str(v) for k, v in (options or {}).items()}
+    from ..capabilities import COMPILER_OPTIONS
+    options = {k: str(v) for k, v in (options or {}).items() if k in OPTIONS or k not in COMPILER_OPTIONS}
     unknown = sorted(set(options) - set(OPTIONS))
     if unknown:
         raise PreviewOptionError(f"preview: unknown option(s) {', '.join(unknown)}; known: {', '.join(OPTIONS)}")
