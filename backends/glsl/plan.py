@@ -89,6 +89,11 @@ class Plan:
         return self.base in MICROFACET_BASES
 
     @property
+    def transmission(self) -> bool:
+        """Glass: the library also has cnlm_btdf (Walter 2007 transmission lobe)."""
+        return self.base == "glass"
+
+    @property
     def needs_tangent(self) -> bool:
         return self.anisotropic or "normal" in self.maps
 
@@ -145,6 +150,8 @@ def snippet_names(plan: Plan) -> list[str]:
     if plan.microfacet:
         names += FRESNEL_SNIPPETS[(plan.base, plan.fresnel)]
         names += DISTRIBUTION_SNIPPETS[(plan.distribution, plan.anisotropic)]
+    if plan.transmission:
+        names.append("ggx_transmission")
     names += DIFFUSE_SNIPPETS[plan.diffuse]
     if "mask" in plan.maps:
         names += DIFFUSE_SNIPPETS["lambert"]

@@ -2,7 +2,7 @@
 `cnlmc.bsdf.evaluate`.
 
 Directions go in as two RGBA32F data textures (wo, wi), one pair per pixel; a full-screen
-triangle calls cnlm_bsdf(n = +z, t = +x, wo, wi) and writes RGBA32F."""
+triangle calls cnlm_bsdf (or cnlm_btdf)(n = +z, t = +x, wo, wi) and writes RGBA32F."""
 from __future__ import annotations
 
 import numpy as np
@@ -24,7 +24,7 @@ void main() {
     vec3 wo = texelFetch(cnlm_test_wo, p, 0).xyz;
     vec3 wi = texelFetch(cnlm_test_wi, p, 0).xyz;
     mat3 r = cnlm_test_frame;
-    cnlm_test_out = vec4(cnlm_bsdf(r[2], r[0], r * wo, r * wi, vec2(0.5)), 1.0);
+    cnlm_test_out = vec4(ENTRY(r[2], r[0], r * wo, r * wi, vec2(0.5)), 1.0);
 }
 """
 
@@ -81,11 +81,12 @@ class Evaluator:
         self.fbo = ctx.framebuffer(color_attachments=[ctx.texture((SIDE, SIDE), 4, dtype="f4")])
         self.quad = ctx.buffer(np.array([-1, -1, 3, -1, -1, 3], dtype="f4").tobytes())
 
-    def program(self, library: str):
-        if library not in self.programs:
-            source = "#version 330 core\n" + library + FRAGMENT_MAIN
-            self.programs[library] = self.ctx.program(vertex_shader=VERTEX, fragment_shader=source)
-        return self.programs[library]
+    def program(self, library: str, entry: str = "cnlm_bsdf"):
+        key = (library, entry)
+        if key not in self.programs:
+            source = "#version 330 core\n" + library + FRAGMENT_MAIN.replace("ENTRY", entry)
+            self.programs[key] = self.ctx.program(vertex_shader=VERTEX, fragment_shader=source)
+        return self.programs[key]
 
     def _texture(self, dirs):
         rgba = np.concatenate([dirs, np.zeros(dirs.shape[:-1] + (1,), np.float32)], -1)
@@ -93,8 +94,10 @@ class Evaluator:
         tex.filter = (self.ctx.NEAREST, self.ctx.NEAREST)
         return tex
 
-    def evaluate(self, library: str, uniforms: list[dict], wo, wi, frame=np.eye(3)) -> np.ndarray:
-        prog = self.program(library)
+    def evaluate(self, library: str, uniforms: list[dict], wo, wi, frame=np.eye(3),
+                 entry: str = "cnlm_bsdf") -> np.ndarray:
+        """``entry``(n, t, v, l, uv) per pixel: cnlm_bsdf, or cnlm_btdf for glass."""
+        prog = self.program(library, entry)
         prog["cnlm_test_frame"].value = tuple(np.asarray(frame, np.float64).T.ravel())  # column-major
         for u in uniforms:
             if u["name"] in prog:
@@ -120,3 +123,65 @@ def relative_error(gpu: np.ndarray, ref: np.ndarray, floor: float = 1e-3) -> tup
     err = np.where(mask, np.abs(gpu - ref) / np.where(mask, np.abs(ref), 1.0), 0.0)
     where = np.unravel_index(np.argmax(err), err.shape)
     return float(err[where]), where
+
+
+def _refracted(w, ior):
+    """Smooth refraction of w through the plane z = 0 (outside index 1 above, ``ior`` below);
+    the zero vector under total internal reflection."""
+    eta = np.where(w[:, 2] > 0, ior, 1.0 / ior)      # index behind / index on w's side
+    ct2 = 1.0 - (1.0 - w[:, 2] ** 2) / eta ** 2
+    t = -w / eta[:, None]
+    t[:, 2] = -np.sign(w[:, 2]) * np.sqrt(np.maximum(ct2, 0.0))
+    return np.where((ct2 >= 0)[:, None], t, 0.0)
+
+
+def transmission_pairs(ior: float = 1.5, seed: int = 11) -> tuple[np.ndarray, np.ndarray]:
+    """SIDE² (wo, wi) pairs for cnlm_btdf, float32-exact, with both sides of the interface as
+    the view side: uniform opposite-side pairs, grazing view / light (|cos| down to 1e-6),
+    the refraction peak (spreads 1e-3 and 0.2 rad, and exact), views from inside beyond the
+    critical angle (total internal reflection region), same-side pairs and in-plane
+    directions (both must give exactly 0)."""
+    rng = np.random.default_rng(seed)
+    n = SIDE * SIDE
+    q = n // 8
+
+    def flip_some(w):
+        sign = np.where(rng.uniform(size=len(w)) < 0.5, -1.0, 1.0)
+        return w * np.stack([np.ones_like(sign), np.ones_like(sign), sign], -1)
+
+    def opposite(wo, wi):
+        wi = wi.copy()
+        wi[:, 2] = -np.sign(wo[:, 2]) * np.abs(wi[:, 2])
+        return wi
+
+    wo_parts, wi_parts = [], []
+    wo = flip_some(_hemisphere(rng, 2 * q)); wo_parts.append(wo); wi_parts.append(opposite(wo, _hemisphere(rng, 2 * q)))
+    wo = flip_some(_hemisphere(rng, q // 2, 1e-6, 2e-2)); wo_parts.append(wo)
+    wi_parts.append(opposite(wo, _hemisphere(rng, q // 2)))                      # grazing view
+    wo = flip_some(_hemisphere(rng, q // 2)); wo_parts.append(wo)
+    wi_parts.append(opposite(wo, _hemisphere(rng, q // 2, 1e-6, 2e-2)))          # grazing light
+    for spread in (1e-3, 0.2):
+        wo = flip_some(_hemisphere(rng, q, 0.05, 1.0))
+        t = _refracted(wo, ior)
+        ok = np.any(t != 0, axis=1)
+        wo, t = wo[ok], t[ok]
+        wi = _unit(t + rng.normal(size=t.shape) * rng.uniform(0, spread, len(t))[:, None])
+        wo_parts.append(wo); wi_parts.append(opposite(wo, wi))
+    wo = flip_some(_hemisphere(rng, q // 2, 0.05, 1.0))
+    t = _refracted(wo, ior)
+    ok = np.any(t != 0, axis=1)
+    wo_parts.append(wo[ok]); wi_parts.append(t[ok])                               # exact refraction
+    mu_c = np.sqrt(1.0 - 1.0 / ior ** 2)
+    wo = _hemisphere(rng, q, 1e-3, mu_c) * np.array([1.0, 1.0, -1.0])            # inside, beyond critical
+    wo_parts.append(wo); wi_parts.append(_hemisphere(rng, q))
+    wo = flip_some(_hemisphere(rng, q // 2)); wo_parts.append(wo)
+    wi_parts.append(-opposite(wo, _hemisphere(rng, q // 2)))                      # same side: 0
+    wo = flip_some(_hemisphere(rng, 64)); wi = opposite(wo, _hemisphere(rng, 64))
+    wi[:32, 2] = 0.0; wo[32:, 2] = 0.0                                           # in the plane: 0
+    wo_parts.append(_unit(wo)); wi_parts.append(_unit(wi))
+    wo, wi = np.concatenate(wo_parts), np.concatenate(wi_parts)
+    rest = n - len(wo)
+    extra = flip_some(_hemisphere(rng, rest))
+    wo = np.concatenate([wo, extra]).astype(np.float32)
+    wi = np.concatenate([wi, opposite(extra, _hemisphere(rng, rest))]).astype(np.float32)
+    return wo.reshape(SIDE, SIDE, 3), wi.reshape(SIDE, SIDE, 3)

@@ -10,6 +10,12 @@
 //   normal map; bitangent = cross(n, t)), v towards the viewer, l towards the light:
 //   unit vectors in any one space. Returns the BRDF f (linear Rec.709 RGB),
 //   NOT multiplied by cos(theta_l).
+//   vec3 cnlm_btdf(vec3 n, vec3 t, vec3 v, vec3 l, vec2 uv)
+//   vec3 cnlm_btdf(vec3 n, vec3 v, vec3 l, vec2 uv)
+//   the transmission lobe (Walter 2007) for v and l on opposite sides of n: n points to
+//   the outside (index 1), the inside has index cnlm_ior. Radiance transport (includes
+//   eta_v^2; f_t(v, l)/eta_v^2 is symmetric), tinted by the base colour, NOT multiplied
+//   by |cos(theta_l)|; 0 for same-side pairs and where no microfacet refracts v into l.
 // uniforms: (values also in the .glsl.json sidecar)
 //   vec3 cnlm_base_color = vec3(0.984, 0.995, 0.995)
 //   float cnlm_alpha = 0.25
@@ -81,6 +87,45 @@ float cnlm_ggx_dv(vec3 wo, vec3 wi, vec3 h, float alpha) {
     return d / (2.0 * (wi.z * len_o + wo.z * len_i));
 }
 
+// Rough dielectric transmission, Walter et al. 2007 eq. 21, GGX with the height-correlated
+// Smith G2 = 1/(1 + L(wo) + L(wi)) of the reflection lobe (directions mirrored to z > 0).
+// Outside (index 1) is z > 0, inside (index ior) z < 0; eta_o / eta_i index of wo's / wi's side.
+//   s = eta_i wi + eta_o wo,  h = -s/|s| flipped to h.z >= 0 (generalized half vector)
+//   f_t = |wi.h||wo.h| eta_o^2 (1 - F) D(h) G2 / (|s|^2 |wo.z||wi.z|)      (radiance transport)
+//       = |wi.h||wo.h| eta_o^2 (1 - F) D(h) 2 / (|s|^2 (|wi.z| |wo|_a + |wo.z| |wi|_a)):  no 1/cos.
+// Returns f_t / (1 - F) and the outside direction's cos against h (for F; the same from both
+// sides). 0 for same-side pairs, |cos| < CNLM_COS_EPS, ior = 1 (a delta: wi = -wo) and pairs
+// no microfacet can refract (total internal reflection region).
+float cnlm_ggx_btdf(vec3 wo, vec3 wi, vec2 alpha, float ior, out float cos_out) {
+    cos_out = 0.0;
+    if (ior == 1.0 || abs(wo.z) < CNLM_COS_EPS || abs(wi.z) < CNLM_COS_EPS || wo.z * wi.z >= 0.0)
+        return 0.0;
+    float eta_o = wo.z > 0.0 ? 1.0 : ior;
+    float eta_i = wi.z > 0.0 ? 1.0 : ior;
+    vec3 s = eta_i * wi + eta_o * wo;
+    float s2 = dot(s, s);
+    if (s2 <= 0.0) return 0.0;
+    vec3 h = -s * inversesqrt(s2);
+    if (h.z < 0.0) h = -h;
+    float oh = dot(wo, h);
+    float ih = dot(wi, h);
+    if (oh * wo.z <= 0.0 || ih * wi.z <= 0.0 || h.z <= 0.0) return 0.0;
+    cos_out = abs(wo.z > 0.0 ? oh : ih);
+    vec2 a = max(alpha, vec2(CNLM_ALPHA_MIRROR));
+    vec2 hs = h.xy / a;
+    float q = dot(hs, hs) + h.z * h.z;
+    float d = 1.0 / (CNLM_PI * a.x * a.y * q * q);
+    vec2 so = a * wo.xy, si = a * wi.xy;
+    float len_o = sqrt(dot(so, so) + wo.z * wo.z);
+    float len_i = sqrt(dot(si, si) + wi.z * wi.z);
+    float g_over_cos = 2.0 / (abs(wi.z) * len_o + abs(wo.z) * len_i);
+    return abs(oh * ih) * eta_o * eta_o * d * g_over_cos / s2;
+}
+
+float cnlm_ggx_btdf(vec3 wo, vec3 wi, float alpha, float ior, out float cos_out) {
+    return cnlm_ggx_btdf(wo, wi, vec2(alpha), ior, cos_out);
+}
+
 // ---- material frosted_glass: glass + ggx + fresnel exact ----
 
 vec3 cnlm_surface_albedo(vec2 uv) {
@@ -130,4 +175,26 @@ vec3 cnlm_bsdf(vec3 n, vec3 t, vec3 v, vec3 l, vec2 uv) {
 
 vec3 cnlm_bsdf(vec3 n, vec3 v, vec3 l, vec2 uv) {
     return cnlm_bsdf(n, cnlm_any_tangent(n), v, l, uv);
+}
+
+// Transmission lobe (Walter 2007) in the local frame: wo and wi on opposite sides of the
+// surface (outside z > 0, inside z < 0), radiance transport, tinted by the base colour.
+vec3 cnlm_btdf_local(vec3 wo, vec3 wi, vec2 uv) {
+    float cos_out;
+    float ft = cnlm_ggx_btdf(wo, wi, cnlm_surface_alpha(uv), cnlm_ior, cos_out);
+    if (ft == 0.0) return vec3(0.0);
+    vec3 f = ft * (1.0 - cnlm_base_fresnel(cos_out, 1.0)) * cnlm_surface_albedo(uv);
+    return f;
+}
+
+vec3 cnlm_btdf(vec3 n, vec3 t, vec3 v, vec3 l, vec2 uv) {
+    vec3 tn = cnlm_any_tangent(n);
+    vec3 bn = cross(n, tn);
+    vec3 wo = vec3(dot(v, tn), dot(v, bn), dot(v, n));
+    vec3 wi = vec3(dot(l, tn), dot(l, bn), dot(l, n));
+    return cnlm_btdf_local(wo, wi, uv);
+}
+
+vec3 cnlm_btdf(vec3 n, vec3 v, vec3 l, vec2 uv) {
+    return cnlm_btdf(n, cnlm_any_tangent(n), v, l, uv);
 }
