@@ -1,0 +1,32 @@
+"""Render targets without MSAA (the default): drawn straight into the half-float texture, the
+tone-map pass filters edges and composites the environment background."""
+from __future__ import annotations
+
+import numpy as np
+
+from .conftest import SMALL, material_of
+
+
+def test_default_has_no_msaa_and_filters_edges(scene):
+    from cnlmc.backends.preview.render import DEFAULT_MSAA, Renderer
+    assert DEFAULT_MSAA == 0
+    material = material_of("blue plastic")
+    soft = Renderer(SMALL).render(material, tier="analytic", scene=scene)
+    hard = Renderer(SMALL, edge_aa=False).render(material, tier="analytic", scene=scene)
+    partial = lambda f: ((f.rgba[..., 3] > 0) & (f.rgba[..., 3] < 255)).sum()
+    assert partial(hard) == 0 and partial(soft) > 20          # coverage is blended at the silhouette
+    inside = hard.rgba[..., 3] == 255
+    changed = np.any(soft.rgba[..., :3] != hard.rgba[..., :3], axis=2) & inside
+    assert changed.sum() < 0.3 * inside.sum()                 # smooth shading is left alone
+
+
+def test_background_is_composited_behind_the_object():
+    from cnlmc.backends.preview.render import Renderer, default_scene
+    material = material_of("blue plastic")
+    env_scene = default_scene("sphere", "studio", (SMALL, SMALL))
+    frame = Renderer(SMALL).render(material, tier="analytic", scene=env_scene, hdr=True)
+    assert (frame.rgba[..., 3] == 255).all()
+    corner = frame.rgba[0, 0, :3].astype(int)
+    assert corner.sum() > 30                                  # the environment, not black
+    centre = frame.rgba[SMALL // 2, SMALL // 2, :3].astype(int)
+    assert centre[2] > centre[0] + 20                         # the blue object is in front
