@@ -317,5 +317,5 @@ def test_agrees_with_mitsuba_roughdielectric(alpha, ior, mode):
     big = theirs > 1e-3
     rel = np.abs(ours - theirs)[big] / theirs[big]
     assert np.max(rel) < 5e-3, np.max(rel)   # Mitsuba evaluates in float32
-    assert np.median(rel) < 1e-4
+    assert np.median(rel) < 1e-5
     assert np.all(np.abs(ours - theirs)[~big] < 2e-3)
