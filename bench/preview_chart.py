@@ -45,7 +45,7 @@ def tonemap(linear_rgba: np.ndarray, background: float = 0.18) -> np.ndarray:
 
 def errors(reference: np.ndarray, test: np.ndarray, mask: np.ndarray | None = None) -> tuple[float, float]:
     import flip_evaluator
-    flip_map, mean, _ = flip_evaluator.evaluate(reference, test, "LDR")
+    flip_map, mean, _ = flip_evaluator.evaluate(reference, test, "LDR", applyMagma=False)
     diff2 = np.mean((reference - test) ** 2, axis=2)
     if mask is not None:
         return float(np.asarray(flip_map).reshape(diff2.shape)[mask].mean()), float(np.sqrt(diff2[mask].mean()))
@@ -53,11 +53,14 @@ def errors(reference: np.ndarray, test: np.ndarray, mask: np.ndarray | None = No
 
 
 def rim_mask(alpha: np.ndarray) -> np.ndarray:
+    """The grazing ring: inside the silhouette, outside 88 % of the radius, without the 2 pixels
+    at the silhouette itself (whose error is the anti-aliasing, not the shading)."""
     import cv2
     inside = (alpha > 0.5).astype(np.uint8)
     radius = max(2, int(np.sqrt(inside.sum() / np.pi) * 0.12))
     core = cv2.erode(inside, np.ones((2 * radius + 1, 2 * radius + 1), np.uint8))
-    return (inside > 0) & (core == 0)
+    shell = cv2.erode(inside, np.ones((5, 5), np.uint8))
+    return (shell > 0) & (core == 0)
 
 
 def materials() -> dict[str, dict]:
@@ -76,7 +79,7 @@ def mitsuba_reference(material, scene, size, spp, work: Path, seed=0):
     return render_scene(path, spp=spp, seed=seed)
 
 
-def run(size: int, ref_spp: int, quick: bool, out_csv: Path) -> list[dict]:
+def run(size: int, ref_spp: int, quick: bool, out_csv: Path, out_png: Path | None = None) -> list[dict]:
     from cnlmc.backends.preview.render import Renderer, default_scene
     renderer = Renderer(size)
     rows = []
@@ -106,6 +109,8 @@ def run(size: int, ref_spp: int, quick: bool, out_csv: Path) -> list[dict]:
             f.flush()
             print(f"{label:48s} " + " ".join(f"{r['method']}={r['flip']:.3f}" for r in rows if r["material"] == label),
                   flush=True)
+            if out_png is not None:          # a partial run still leaves a chart
+                plot(summarise(rows), rows, size, ref_spp, out_png)
     return rows
 
 
@@ -133,6 +138,79 @@ def failures(size: int, ref_spp: int, out_csv: Path) -> list[dict]:
     return rows
 
 
+REALTIME = ("analytic", "splitsum")
+
+
+def material_class(material: dict) -> str:
+    model = material["model"]
+    if material.get("maps"):
+        return "textured"
+    if model.get("coat"):
+        return "coated"
+    if model.get("anisotropic"):
+        return "anisotropic"
+    return {"diffuse": "diffuse", "conductor": "metal"}.get(model["base"], "dielectric")
+
+
+def equal_error_ms(rows: list[dict], flip: float) -> float:
+    """Mitsuba's time for this error: log-log interpolation along its spp curve (extrapolated
+    with error ~ 1/sqrt(spp) below the 64-spp error)."""
+    curve = sorted(((r["ms"], r["flip"]) for r in rows if r["method"].startswith("mitsuba")), key=lambda c: c[0])
+    for (t0, e0), (t1, e1) in zip(curve, curve[1:]):
+        if e1 <= flip <= e0:
+            w = np.log(e0 / flip) / np.log(e0 / e1) if e0 > e1 else 0.0
+            return float(np.exp(np.log(t0) + w * np.log(t1 / t0)))
+    if flip > curve[0][1]:
+        return curve[0][0]
+    return curve[-1][0] * (curve[-1][1] / flip) ** 2
+
+
+def goals(rows: list[dict], classes: dict[str, str]) -> list[dict]:
+    """Per material: the best real-time tier, its FLIP, the goal (0.02 for untextured smooth and
+    rough isotropic materials, else 0.05), Mitsuba's time for the same error and the speed-up."""
+    out = []
+    for label in dict.fromkeys(r["material"] for r in rows):
+        per = [r for r in rows if r["material"] == label]
+        best = min((r for r in per if r["method"] in REALTIME), key=lambda r: r["flip"])
+        cls = classes.get(label, "?")
+        limit = 0.02 if cls in ("dielectric", "metal", "diffuse") else 0.05
+        mitsuba_ms = equal_error_ms(per, best["flip"])
+        out.append({"material": label, "class": cls, "tier": best["method"], "flip": best["flip"], "goal": limit,
+                    "met": best["flip"] <= limit, "ms": best["ms"], "mitsuba_ms": mitsuba_ms,
+                    "speedup": mitsuba_ms / best["ms"]})
+    return out
+
+
+def print_goals(table: list[dict]) -> None:
+    print(f"\n{'material':48s} {'class':12s} {'tier':9s} {'FLIP':>6s} {'goal':>5s} {'ms':>6s} {'Mitsuba ms':>10s} {'x':>6s}")
+    for g in table:
+        print(f"{g['material']:48s} {g['class']:12s} {g['tier']:9s} {g['flip']:6.3f} {g['goal']:5.2f} {g['ms']:6.1f} "
+              f"{g['mitsuba_ms']:10.0f} {g['speedup']:6.1f}{'' if g['met'] else '  (FLIP goal missed)'}")
+    by = {}
+    for g in table:
+        by.setdefault(g["class"], []).append(g)
+    print("\nclass        n  FLIP goal met  median speed-up  tiers")
+    for cls, gs in sorted(by.items()):
+        tiers = ", ".join(f"{t} {sum(g['tier'] == t for g in gs)}" for t in REALTIME if any(g["tier"] == t for g in gs))
+        print(f"{cls:12s} {len(gs):2d}  {sum(g['met'] for g in gs):2d}/{len(gs):<2d}          "
+              f"{np.median([g['speedup'] for g in gs]):8.1f}     {tiers}")
+
+
+def read_rows(path: Path) -> list[dict]:
+    with open(path) as f:
+        return [dict(r, ms=float(r["ms"]), flip=float(r["flip"]), rmse=float(r["rmse"])) for r in csv.DictReader(f)]
+
+
+def print_failures(fail: list[dict]) -> None:
+    print("\nwhere methods fail (FLIP mean; rim = silhouette ring only):")
+    cases = list(dict.fromkeys(r["case"] for r in fail))
+    print(f"{'case':34s} " + " ".join(f"{t:>8s}" for t in VARIANT_TIERS) + "  copes")
+    for case in cases:
+        per = {r["tier"]: r["flip"] for r in fail if r["case"] == case}
+        cheapest_ok = next((t for t in VARIANT_TIERS if per[t] <= 1.25 * min(per.values())), "")
+        print(f"{case:34s} " + " ".join(f"{per[t]:8.4f}" for t in VARIANT_TIERS) + f"  {cheapest_ok}")
+
+
 def summarise(rows: list[dict]) -> dict[str, tuple[float, float, float]]:
     methods = {}
     for r in rows:
@@ -141,28 +219,45 @@ def summarise(rows: list[dict]) -> dict[str, tuple[float, float, float]]:
                 float(np.mean([r["rmse"] for r in rs]))) for m, rs in methods.items()}
 
 
+TIER_STYLE = {"analytic": ("tab:gray", "v"), "splitsum": ("tab:blue", "o"), "mc16": ("tab:orange", "s"),
+              "fis16": ("tab:green", "D"), "mc64": ("tab:purple", "s"), "fis64": ("tab:olive", "D"),
+              "mc256": ("tab:brown", "P")}
+
+
 def plot(summary: dict, rows: list[dict], size: int, ref_spp: int, path: Path) -> None:
+    """Time (log x) against error: one marker style per tier (small: per material, large: mean
+    error at the median time), Mitsuba at 1...64 spp as a red line."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 2, figsize=(12, 5))
-    for ax, key, index in ((axes[0], "FLIP mean", 1), (axes[1], "RMSE (sRGB)", 2)):
+    fig, axes = plt.subplots(1, 2, figsize=(13, 5.2))
+    for ax, key, index in ((axes[0], "flip", 1), (axes[1], "rmse", 2)):
         for method, values in summary.items():
             per = [r for r in rows if r["method"] == method]
-            colour = "tab:red" if method.startswith("mitsuba") else "tab:blue"
-            ax.scatter([r["ms"] for r in per], [r["flip" if index == 1 else "rmse"] for r in per], s=6, alpha=0.25,
-                       color=colour)
-            ax.scatter([values[0]], [values[index]], s=60, color=colour, edgecolor="black", zorder=3)
-            ax.annotate(method, (values[0], values[index]), textcoords="offset points", xytext=(5, 4), fontsize=8)
-        spp = [m for m in summary if m.startswith("mitsuba")]
-        ax.plot([summary[m][0] for m in spp], [summary[m][index] for m in spp], color="tab:red", lw=1)
+            mitsuba = method.startswith("mitsuba")
+            colour, marker = ("tab:red", "x") if mitsuba else TIER_STYLE.get(method, ("black", "o"))
+            ax.scatter([r["ms"] for r in per], [r[key] for r in per], s=10, alpha=0.3, color=colour, marker=marker)
+            ax.scatter([values[0]], [values[index]], s=90, color=colour, marker=marker if not mitsuba else "o",
+                       edgecolor="black", zorder=3, label=None if mitsuba else method)
+            ax.annotate(method, (values[0], values[index]), textcoords="offset points", xytext=(6, 5), fontsize=8)
+        spp = sorted((m for m in summary if m.startswith("mitsuba")), key=lambda m: int(m[7:]))
+        ax.plot([summary[m][0] for m in spp], [summary[m][index] for m in spp], color="tab:red", lw=1.5,
+                label="Mitsuba 1-64 spp")
+        if key == "flip":
+            ax.axhline(0.05, color="black", lw=0.8, ls="--")
+            ax.axhline(0.02, color="black", lw=0.8, ls=":")
         ax.set_xscale("log")
-        ax.set_xlabel(f"frame time, ms ({size}x{size}, llvmpipe / Mitsuba scalar_rgb)")
-        ax.set_ylabel(f"{key} vs Mitsuba {ref_spp} spp")
-        ax.grid(alpha=0.3)
-    fig.suptitle("cnlmc preview tiers: speed vs error (large dots: mean over materials, median time)")
+        ax.set_ylim(bottom=0)
+        ax.set_xlabel(f"time per frame, ms, log scale ({size}x{size}; preview: llvmpipe, Mitsuba: scalar_rgb)")
+        ax.set_ylabel(("FLIP mean" if key == "flip" else "RMSE, tone-mapped sRGB") + f" vs Mitsuba {ref_spp} spp")
+        ax.grid(alpha=0.3, which="both")
+    axes[0].legend(fontsize=8, loc="upper right")
+    materials = len({r["material"] for r in rows})
+    fig.suptitle(f"cnlmc preview tiers vs Mitsuba: {materials} materials (small: per material; large: mean error, "
+                 "median time; dashed: FLIP 0.05, dotted: 0.02)", fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
+    plt.close(fig)
 
 
 def default_tier(summary: dict, budget_ms: float) -> str:
@@ -175,27 +270,32 @@ def main(argv=None) -> int:
     parser.add_argument("--size", type=int, default=256)
     parser.add_argument("--ref-spp", type=int, default=256)
     parser.add_argument("--quick", action="store_true", help="every sixth noun plus the variants")
-    parser.add_argument("--budget-ms", type=float, default=250.0, help="interactive budget for the default tier")
+    parser.add_argument("--budget-ms", type=float, default=33.3, help="interactive budget for the default tier")
+    parser.add_argument("--failures-only", action="store_true", help="only the failure cases")
+    parser.add_argument("--skip-failures", action="store_true", help="no failure cases")
+    parser.add_argument("--from-csv", action="store_true", help="re-plot and summarise docs/preview_chart.csv")
     args = parser.parse_args(argv)
     docs = ROOT / "docs"
     start = time.time()
-    rows = run(args.size, args.ref_spp, args.quick, docs / "preview_chart.csv")
+    if args.from_csv:
+        rows = read_rows(docs / "preview_chart.csv")
+        plot(summarise(rows), rows, args.size, args.ref_spp, docs / "preview_chart.png")
+        print_goals(goals(rows, {k: material_class(m) for k, m in materials().items()}))
+        return 0
+    if not args.skip_failures:
+        print_failures(failures(args.size, args.ref_spp, docs / "preview_failures.csv"))
+    if args.failures_only:
+        return 0
+    rows = run(args.size, args.ref_spp, args.quick, docs / "preview_chart.csv", docs / "preview_chart.png")
     summary = summarise(rows)
     plot(summary, rows, args.size, args.ref_spp, docs / "preview_chart.png")
     print(f"\n{'method':10s} {'ms (median)':>12s} {'FLIP':>7s} {'RMSE':>7s}")
     for method, (ms, flip, rmse) in sorted(summary.items(), key=lambda kv: kv[1][0]):
         print(f"{method:10s} {ms:12.1f} {flip:7.4f} {rmse:7.4f}")
+    print_goals(goals(rows, {k: material_class(m) for k, m in materials().items()}))
     choice = default_tier(summary, args.budget_ms)
     print(f"\ndefault tier: {choice} -- the lowest mean FLIP among tiers whose median frame time at "
           f"{args.size}x{args.size} fits {args.budget_ms:.0f} ms on llvmpipe")
-    fail = failures(args.size, args.ref_spp, docs / "preview_failures.csv")
-    print("\nwhere methods fail (FLIP mean; rim = silhouette ring only):")
-    cases = list(dict.fromkeys(r["case"] for r in fail))
-    print(f"{'case':34s} " + " ".join(f"{t:>8s}" for t in VARIANT_TIERS) + "  copes")
-    for case in cases:
-        per = {r["tier"]: r["flip"] for r in fail if r["case"] == case}
-        cheapest_ok = next((t for t in VARIANT_TIERS if per[t] <= 1.25 * min(per.values())), "")
-        print(f"{case:34s} " + " ".join(f"{per[t]:8.4f}" for t in VARIANT_TIERS) + f"  {cheapest_ok}")
     print(f"\n({time.time() - start:.0f} s)")
     return 0
 
