@@ -143,12 +143,12 @@ REALTIME = ("analytic", "splitsum")
 
 def material_class(material: dict) -> str:
     model = material["model"]
-    if material.get("maps"):
-        return "textured"
     if model.get("coat"):
         return "coated"
     if model.get("anisotropic"):
         return "anisotropic"
+    if material.get("maps"):
+        return "textured"
     return {"diffuse": "diffuse", "conductor": "metal"}.get(model["base"], "dielectric")
 
 

@@ -30,6 +30,8 @@ PREFILTER_LEVELS = 5
 MAP_SIZE = 512
 #: MSAA costs 4x the object pass on llvmpipe (docs/preview.md): off, with the tone map's edge filter.
 DEFAULT_MSAA = 0
+#: the background (the environment blurred at mip 3) is drawn at 1/4 resolution and upsampled.
+BACKGROUND_SCALE = 4
 
 
 @dataclass
@@ -144,6 +146,10 @@ class Targets:
         else:
             self.msaa = self.resolved = ctx.framebuffer([self.resolved_tex], ctx.depth_renderbuffer(self.size))
         self.ldr = ctx.framebuffer([ctx.renderbuffer(self.size, 4)])
+        self.background_size = (max(width // BACKGROUND_SCALE, 1), max(height // BACKGROUND_SCALE, 1))
+        self.background_tex = ctx.texture(self.background_size, 4, dtype=self.HDR_DTYPE)
+        self.background_tex.repeat_x = self.background_tex.repeat_y = False
+        self.background = ctx.framebuffer([self.background_tex])
 
     @property
     def draw_target(self):
@@ -183,6 +189,25 @@ def mesh_buffers(mesh: Mesh):
         ctx = gl.context()
         _MESHES[key] = (mesh, ctx.buffer(mesh.interleaved().tobytes()), ctx.buffer(mesh.indices.astype("u4").tobytes()))
     return _MESHES[key][1:]
+
+
+_CLOSED: dict = {}
+
+
+def is_closed(mesh: Mesh) -> bool:
+    """Every edge (vertices welded by position) is used once in each direction: a closed,
+    consistently wound surface, whose back faces cannot be seen from outside."""
+    key = id(mesh)
+    if key not in _CLOSED:
+        _, weld = np.unique(np.round(np.asarray(mesh.positions, np.float64), 6), axis=0, return_inverse=True)
+        tri = weld.reshape(-1)[np.asarray(mesh.indices, np.int64)]       # UV seams welded by position
+        tri = tri[(tri[:, 0] != tri[:, 1]) & (tri[:, 1] != tri[:, 2]) & (tri[:, 2] != tri[:, 0])]
+        edges = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
+        n = int(edges.max()) + 1
+        forward = np.unique(edges[:, 0] * n + edges[:, 1])
+        backward = np.unique(edges[:, 1] * n + edges[:, 0])
+        _CLOSED[key] = (len(forward) == len(edges) and np.array_equal(forward, backward))
+    return _CLOSED[key]
 
 
 def encode_map(role: str, array: np.ndarray) -> np.ndarray:
@@ -298,6 +323,21 @@ class Renderer:
         gl.set_uniform(prog, "pv_filtered", int(tier.filtered))
         return first_unit + len(units)
 
+    def _draw_background(self, t: Targets, scene: Scene, res: EnvResources) -> None:
+        """The blurred environment seen through each pixel, at 1/BACKGROUND_SCALE resolution."""
+        import moderngl
+        prog, vao = self.fullscreen("background.frag")
+        res.radiance.use(0)
+        gl.set_uniform(prog, "pv_env", 0)
+        gl.set_uniform(prog, "pv_env_intensity", scene.env_intensity)
+        gl.set_uniform(prog, "pv_background_lod", scene.background_lod)
+        gl.set_uniform(prog, "pv_inverse_view_projection", np.linalg.inv(scene.camera.view_projection))
+        self.ctx.disable(moderngl.DEPTH_TEST)
+        t.background.use()
+        self.ctx.viewport = (0, 0, *t.background_size)
+        vao.render(moderngl.TRIANGLES, vertices=3)
+        self.ctx.viewport = (0, 0, self.width, self.height)
+
     def _draw_object(self, scene: Scene, material: dict, shader: MaterialShader, tier: Tier, res: EnvResources,
                      model: np.ndarray) -> None:
         import moderngl
@@ -316,7 +356,10 @@ class Renderer:
         gl.set_uniform(prog, "pv_key_direction", scene.env.key.unit)
         gl.set_uniform(prog, "pv_key_irradiance", [scene.env.key.irradiance * scene.env_intensity] * 3)
         self.ctx.enable(moderngl.DEPTH_TEST)
+        if is_closed(scene.mesh):            # back faces of a closed mesh are never seen: not shaded
+            self.ctx.enable(moderngl.CULL_FACE)
         self.object_vao(prog, scene.mesh).render(moderngl.TRIANGLES)
+        self.ctx.disable(moderngl.CULL_FACE)
 
     VERTEX_ATTRIBUTES = (("in_position", 3), ("in_normal", 3), ("in_tangent", 3), ("in_uv", 2))
 
@@ -344,11 +387,8 @@ class Renderer:
         gl.set_uniform(prog, "pv_edge_aa", int(self.edge_aa and not t.samples))
         gl.set_uniform(prog, "pv_background", int(background))
         if background:
-            res.radiance.use(1)
-            gl.set_uniform(prog, "pv_env", 1)
-            gl.set_uniform(prog, "pv_env_intensity", scene.env_intensity)
-            gl.set_uniform(prog, "pv_background_lod", scene.background_lod)
-            gl.set_uniform(prog, "pv_inverse_view_projection", np.linalg.inv(scene.camera.view_projection))
+            t.background_tex.use(1)
+            gl.set_uniform(prog, "pv_background_image", 1)
         self.ctx.disable(moderngl.DEPTH_TEST)
         t.ldr.use()
         vao.render(moderngl.TRIANGLES, vertices=3)
@@ -368,6 +408,8 @@ class Renderer:
             t.draw_target.use()
         self._draw_object(scene, material, shader, tier, res, np.eye(4) if model is None else model)
         t.resolve(self.ctx)
+        if scene.background == "env":
+            self._draw_background(t, scene, res)
         self._tonemap(t, scene, res, scene.background == "env")     # composites the background
         return t
 

@@ -30,3 +30,15 @@ def test_background_is_composited_behind_the_object():
     assert corner.sum() > 30                                  # the environment, not black
     centre = frame.rgba[SMALL // 2, SMALL // 2, :3].astype(int)
     assert centre[2] > centre[0] + 20                         # the blue object is in front
+
+
+def test_back_faces_are_culled_only_on_closed_meshes(scene, monkeypatch):
+    from cnlmc.backends.preview import render
+    from cnlmc.backends.preview.meshes import fit, mesh_by_name
+    assert render.is_closed(scene.mesh)                       # the sphere (UV seam welded by position)
+    assert not render.is_closed(fit(mesh_by_name("teapot")))  # Newell's teapot has no bottom
+    material = material_of("gold")
+    culled = render.Renderer(SMALL).render(material, tier="splitsum", scene=scene)
+    monkeypatch.setattr(render, "is_closed", lambda mesh: False)
+    both = render.Renderer(SMALL).render(material, tier="splitsum", scene=scene)
+    assert np.array_equal(culled.rgba, both.rgba)             # culling changes the cost, not the image

@@ -5,22 +5,18 @@
 // coverage of a 4-neighbour differs from this pixel's by more than a threshold, the object
 // layer (premultiplied, linear) becomes the tent blend 1/2 centre + 1/8 each neighbour; the
 // background is then composited under it with the filtered coverage, as an MSAA resolve would.
-// Background (pv_background = 1): the environment seen through the pixel, blurred (mip level
-// pv_background_lod), evaluated only where the object does not cover the pixel entirely.
+// Background (pv_background = 1): background.frag's quarter-resolution image of the blurred
+// environment, upsampled bilinearly where the object does not cover the pixel entirely.
 in vec2 v_uv;
 in vec2 v_ndc;
 uniform sampler2D pv_hdr;
-uniform sampler2D pv_env;
+uniform sampler2D pv_background_image;
 uniform float pv_exposure;
 uniform int pv_curve;      // 0: ACES fit, 1: clamp (linear)
 uniform int pv_edge_aa;
 uniform int pv_background;
-uniform mat4 pv_inverse_view_projection;
-uniform float pv_env_intensity;
-uniform float pv_background_lod;
 out vec4 pv_color;
 
-const float PV_PI = 3.14159265358979;
 const float PV_EDGE_THRESHOLD = 0.04;
 
 vec3 pv_aces(vec3 x) {
@@ -52,19 +48,11 @@ vec4 pv_object(ivec2 p) {
     return contrast > PV_EDGE_THRESHOLD ? 0.5 * c + 0.125 * (l + r + d + u) : c;
 }
 
-vec3 pv_environment() {
-    vec4 far = pv_inverse_view_projection * vec4(v_ndc, 1.0, 1.0);
-    vec4 near = pv_inverse_view_projection * vec4(v_ndc, -1.0, 1.0);
-    vec3 d = normalize(far.xyz / far.w - near.xyz / near.w);
-    vec2 uv = vec2(fract(atan(d.x, -d.z) * (0.5 / PV_PI)), acos(clamp(d.y, -1.0, 1.0)) / PV_PI);
-    return textureLod(pv_env, uv, pv_background_lod).rgb * pv_env_intensity;
-}
-
 void main() {
     vec4 c = pv_object(ivec2(gl_FragCoord.xy));
     c.a = clamp(c.a, 0.0, 1.0);
     if (pv_background != 0) {
-        if (c.a < 1.0) c.rgb += (1.0 - c.a) * pv_environment();
+        if (c.a < 1.0) c.rgb += (1.0 - c.a) * texture(pv_background_image, v_uv).rgb;
         c.a = 1.0;
     }
     vec3 x = c.rgb * pv_exposure;
