@@ -8,6 +8,9 @@ from . import ast
 from .spans import Span
 
 
+GROUP_RULES = ("adjective_group", "colour_group", "dangling_group")
+
+
 class TreeToAst:
     """Builds AST nodes; `words` maps a token's start offset to its tagged word."""
 
@@ -46,7 +49,7 @@ class TreeToAst:
         return ast.Material(name, groups, nouns, coat, self.span_of(tree), self.text)
 
     def groups(self, tree: Tree) -> tuple:
-        return tuple(self.group(c) for c in tree.children if isinstance(c, Tree))
+        return tuple(self.group(c) for c in tree.children if isinstance(c, Tree) and c.data in GROUP_RULES)
 
     def group(self, tree: Tree) -> ast.Group:
         adverbs, colours, adjectives = (), (), ()

@@ -116,3 +116,13 @@ def test_designer_phrases_compile_cleanly(compile_text, phrase):
     result = compile_text(phrase)
     assert result.ok and not result.diagnostics, [d.message for d in result.diagnostics]
     assert len(result.materials) == 1
+
+
+@pytest.mark.parametrize("text,same_as", [
+    ("lightly rusty, iron", "lightly rusty iron"),                       # a comma before the noun
+    ("brushed, and anodized aluminum", "brushed and anodized aluminum"),  # ', and' between groups
+    ("oak with a glossy, white varnish", "oak with a glossy white varnish"),
+])
+def test_extra_punctuation_is_tolerated(compile_text, text, same_as):
+    a, b = material(compile_text, text), material(compile_text, same_as)
+    assert a["params"] == b["params"] and a["model"] == b["model"]
