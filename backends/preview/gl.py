@@ -28,6 +28,14 @@ def context():
                                  "install libegl1 libgl1 libegl-mesa0 libgl1-mesa-dri") from None
 
 
+def current():
+    """The preview's context, made current on this thread first: another GL context (an
+    engine's, a test's) may have been made current since ours was created."""
+    ctx = context()
+    ctx.__enter__()  # makes it current; no matching exit: it stays current for our calls
+    return ctx
+
+
 @lru_cache(maxsize=1)
 def templates() -> jinja2.Environment:
     return jinja2.Environment(loader=jinja2.FileSystemLoader(str(SHADERS)), undefined=jinja2.StrictUndefined,
@@ -50,7 +58,7 @@ def program(vertex: str, fragment: str):
     """A linked program, cached by the hash of its sources (compile errors carry the log)."""
     key = hashlib.sha256((vertex + "\0" + fragment).encode()).hexdigest()
     if key not in _PROGRAMS:
-        _PROGRAMS[key] = context().program(vertex_shader=vertex, fragment_shader=fragment)
+        _PROGRAMS[key] = current().program(vertex_shader=vertex, fragment_shader=fragment)
     return _PROGRAMS[key]
 
 
@@ -77,7 +85,7 @@ def float_texture(array: np.ndarray, mipmaps: bool = True, repeat: tuple = (True
     import moderngl
     array = np.ascontiguousarray(array, np.float32)
     components = 1 if array.ndim == 2 else array.shape[2]
-    tex = context().texture((array.shape[1], array.shape[0]), components, array.tobytes(), dtype="f4")
+    tex = current().texture((array.shape[1], array.shape[0]), components, array.tobytes(), dtype="f4")
     tex.repeat_x, tex.repeat_y = repeat
     if mipmaps:
         tex.build_mipmaps()

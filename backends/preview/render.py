@@ -102,7 +102,7 @@ class EnvResources:
 
     def _prefilter(self, samples: int = 256):
         import moderngl
-        ctx = gl.context()
+        ctx = gl.current()
         tex = gl.float_texture(self.env.image, repeat=(True, False))
         prog = gl.program(gl.shader_file("fullscreen.vert"), gl.shader_file("prefilter.frag"))
         vao = ctx.vertex_array(prog, [])
@@ -135,7 +135,7 @@ class Targets:
     HDR_DTYPE = "f2"
 
     def __init__(self, width: int, height: int, msaa: int):
-        ctx = gl.context()
+        ctx = gl.current()
         self.size = (width, height)
         self.samples = msaa if msaa > 1 else 0
         self.resolved_tex = ctx.texture(self.size, 4, dtype=self.HDR_DTYPE)
@@ -186,7 +186,7 @@ def targets(width: int, height: int, msaa: int) -> Targets:
 def mesh_buffers(mesh: Mesh):
     key = id(mesh)
     if key not in _MESHES:
-        ctx = gl.context()
+        ctx = gl.current()
         _MESHES[key] = (mesh, ctx.buffer(mesh.interleaved().tobytes()), ctx.buffer(mesh.indices.astype("u4").tobytes()))
     return _MESHES[key][1:]
 
@@ -284,7 +284,7 @@ class Renderer:
         self.width, self.height = width, height or width
         self.msaa = msaa
         self.edge_aa = edge_aa          # the tone-map pass's edge filter, used when msaa <= 1
-        self.ctx = gl.context()
+        self.ctx = gl.current()
 
     # -- programs
     def object_program(self, shader: MaterialShader, tier: Tier):
@@ -396,6 +396,7 @@ class Renderer:
     def draw(self, scene: Scene, material: dict, tier: Tier | str = DEFAULT_TIER, glsl_options: dict | None = None,
              model: np.ndarray | None = None, overlay=None) -> Targets:
         """Draw into the targets (no read-back); `overlay(renderer, scene)` draws extra geometry."""
+        self.ctx.__enter__()  # ours must be the current context (another may have been made current)
         tier = parse_tier(tier) if isinstance(tier, str) else tier
         shader = material_shader(material, glsl_options)
         res = env_resources(scene.env)

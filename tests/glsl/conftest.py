@@ -73,6 +73,9 @@ def glslang():
     return GLSLANG
 
 
+_SESSION_CONTEXTS: list = []
+
+
 @pytest.fixture(scope="session")
 def gl():
     try:
@@ -80,5 +83,15 @@ def gl():
         ctx = moderngl.create_context(standalone=True, backend="egl")
     except Exception as exc:  # noqa: BLE001 - any failure here means no EGL/GL
         pytest.skip(f"no OpenGL context on EGL ({exc}); install libegl1 libgl1 libegl-mesa0")
+    _SESSION_CONTEXTS.append(ctx)
     yield ctx
+    _SESSION_CONTEXTS.remove(ctx)
     ctx.release()
+
+
+@pytest.fixture(autouse=True)
+def _our_context_is_current():
+    """Other test folders (the preview) make their own GL context current: take ours back."""
+    for ctx in _SESSION_CONTEXTS:
+        ctx.__enter__()
+    yield
