@@ -13,6 +13,7 @@ import math
 
 import MaterialX as mx
 
+from . import materialx_native as native
 from .capabilities import ALL_FEATURES, EmitResult, check_material
 from .materialx_params import (SURFACES, SURFACE_NAMES, bake_textures, capabilities_for, exchange_options,
                                phrase_text, surface_inputs, tangent_rotation, unique_identifiers)
@@ -21,6 +22,8 @@ from .registry import Artifact
 NAME = "materialx"
 DESCRIPTION = "MaterialX document (.mtlx): OpenPBR Surface (or standard_surface) with baked image maps"
 OPTIONS = {"surface": ("open_pbr_surface", SURFACES)}
+# maps: bake (default), none, or native (MaterialX nodes where materialx_native has a recipe)
+MAP_MODES = ("bake", "none", "native")
 
 BAKED = ("bake", "procedural graph baked to an image read by an image node (no MaterialX nodes for cnlmc graphs)")
 _SHARED = {
@@ -91,17 +94,22 @@ def texture_source(doc, material: dict, ident: str, texture, surface: str, input
     """The node whose output feeds the surface input for one baked role."""
     concept, mx_type = TEXTURE_INPUTS[texture.role]
     image = add_image(doc, ident, texture, mx_type)
+    return map_source(doc, material, ident, texture.role, image, surface, inputs)
+
+
+def map_source(doc, material: dict, ident: str, role: str, image, surface: str, inputs: dict):
+    """A map's node (baked image or native recipe) -> the node that feeds the surface input."""
     base = material["model"]["base"]
-    if texture.role == "normal":
+    if role == "normal":
         normal = doc.addNode("normalmap", f"{ident}_normalmap", "vector3")
         normal.setConnectedNode("in", image)
         return normal
-    if texture.role == "base_color" and base == "conductor":       # the map is the tint on f0
+    if role == "base_color" and base == "conductor":       # the map is the tint on f0
         tint = doc.addNode("multiply", f"{ident}_base_color_f0", "color3")
         tint.setConnectedNode("in1", image)
         _set(tint, "in2", "color3", inputs[SURFACE_NAMES[surface]["base_color"]][1])
         return tint
-    if texture.role == "roughness" and material["params"].get("alpha_convention") == "linear":
+    if role == "roughness" and material["params"].get("alpha_convention") == "linear":
         root = doc.addNode("sqrt", f"{ident}_roughness_sqrt", "float")   # alpha = r -> r' = sqrt(r)
         root.setConnectedNode("in", image)
         return root
@@ -133,7 +141,17 @@ def add_tangent_rotation(doc, ident: str, shader, angle: float, surface: str) ->
     shader.setConnectedNode(SURFACE_NAMES[surface]["tangent"], unit)
 
 
-def add_material(doc, material: dict, ident: str, surface: str, textures: dict) -> None:
+def native_maps(material: dict) -> dict:
+    """role -> map ref for the maps maps=native expresses with MaterialX nodes. A rust-like
+    mask becomes metalness = 1 - mask, only on a conductor without a metallic map of its own."""
+    found = native.native_roles(material, tuple(TEXTURE_INPUTS) + ("mask",))
+    if "mask" in found and (material["model"]["base"] != "conductor" or "metallic" in (material.get("maps") or {})
+                            or native.recipe_for({**found["mask"], "output": "metallic"}) is None):
+        del found["mask"]
+    return found
+
+
+def add_material(doc, material: dict, ident: str, surface: str, textures: dict, natives=None) -> None:
     shader = doc.addNode(surface, f"SR_{ident}", "surfaceshader")
     inputs = surface_inputs(material, surface)
     for name, (mx_type, value) in inputs.items():
@@ -144,6 +162,12 @@ def add_material(doc, material: dict, ident: str, surface: str, textures: dict) 
         source = texture_source(doc, material, ident, texture, surface, inputs)
         for target in texture_targets(material, role, surface):
             shader.setConnectedNode(target, source)
+    for role, ref in (natives or {}).items():
+        node = native.build(doc, material, ident, role, ref)
+        role = "metallic" if role == "mask" else role
+        source = map_source(doc, material, ident, role, node, surface, inputs)
+        for target in texture_targets(material, role, surface):
+            shader.setConnectedNode(target, source)
     angle = tangent_rotation(material)
     if angle and "rotation" not in SURFACE_NAMES[surface]:
         add_tangent_rotation(doc, ident, shader, angle, surface)
@@ -152,14 +176,15 @@ def add_material(doc, material: dict, ident: str, surface: str, textures: dict) 
 
 
 def build_document(materials: list[dict], surface: str = "open_pbr_surface", textures=None,
-                   idents=None):
-    """IR materials -> a MaterialX Document (not yet validated)."""
+                   idents=None, natives=None):
+    """IR materials -> a MaterialX Document (not yet validated). `natives`: ident -> role -> map
+    ref for the maps expressed with MaterialX nodes (maps=native)."""
     idents = idents or unique_identifiers(m["name"] for m in materials)
-    textures = textures or {}
+    textures, natives = textures or {}, natives or {}
     doc = mx.createDocument()
     doc.setColorSpace("lin_rec709")
     for material, ident in zip(materials, idents):
-        add_material(doc, material, ident, surface, textures.get(ident, {}))
+        add_material(doc, material, ident, surface, textures.get(ident, {}), natives.get(ident, {}))
     return doc
 
 
@@ -196,22 +221,41 @@ def to_xml(doc) -> str:
     return xml
 
 
+def map_mode(options: dict | None, target: str) -> tuple[dict, str]:
+    """Take maps=native out (the shared option check knows bake and none); check the value."""
+    options = dict(options or {})
+    mode = str(options.get("maps", "bake"))
+    if mode not in MAP_MODES:
+        raise ValueError(f"{target}: option maps={mode!r}: use one of {', '.join(MAP_MODES)}")
+    if mode == "native":
+        options["maps"] = "bake"
+    return options, mode
+
+
 def prepare(ir: dict, options: dict, target: str = NAME, extra=None):
-    """Options, identifiers, capability notes and baked textures for a list of materials."""
+    """Options, identifiers, capability notes and baked textures for a list of materials.
+    With maps=native, `natives` (ident -> role -> map ref) are the maps with a recipe; the
+    rest are baked through the same capability path."""
+    options, mode = map_mode(options, target)
     opts = exchange_options(options, target, {**OPTIONS, **(extra or {})})
+    opts["maps"] = mode
     caps = capabilities_for(CAPABILITIES_BY_SURFACE[opts["surface"]], opts)
     materials = ir["materials"]
     idents = unique_identifiers(m["name"] for m in materials)
-    notes, textures, artifacts = [], {}, []
+    notes, textures, natives, artifacts = [], {}, {}, []
     for material, ident in zip(materials, idents):
-        check_material(notes, target, caps, material)
-        textures[ident], baked = bake_textures(material, ident, opts, roles=tuple(TEXTURE_INPUTS))
+        natives[ident] = native_maps(material) if mode == "native" else {}
+        material_caps = {**caps, **{f"maps.{role}": native.NATIVE for role in natives[ident]}}
+        check_material(notes, target, material_caps, material)
+        roles = tuple(r for r in TEXTURE_INPUTS if r not in natives[ident])
+        textures[ident], baked = bake_textures(material, ident, {**opts, "maps": "none" if mode == "none" else "bake"},
+                                               roles=roles)
         artifacts += baked
-    return opts, idents, notes, textures, artifacts
+    return opts, idents, notes, textures, natives, artifacts
 
 
 def emit(ir: dict, options: dict) -> EmitResult:
-    opts, idents, notes, textures, images = prepare(ir, options)
-    doc = build_document(ir["materials"], opts["surface"], textures, idents)
+    opts, idents, notes, textures, natives, images = prepare(ir, options)
+    doc = build_document(ir["materials"], opts["surface"], textures, idents, natives)
     validate(doc)
     return EmitResult([Artifact("materials.mtlx", to_xml(doc))] + images, notes)
