@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from . import ast
-from .diagnostics import did_you_mean, error
+from .diagnostics import error
 from .lexicon import Lexicon
 from .mistakes import known_mistake
 from .parser import ParseFailure, describe_expected, parse_tagged

@@ -15,10 +15,7 @@ from lark import Lark, Token, Tree
 from lark.lexer import Lexer
 from lark.exceptions import UnexpectedInput, UnexpectedToken
 
-from . import ast
-from .diagnostics import error
-from .spans import Span
-from .tagger import Tagged, Tagger
+from .tagger import Tagged
 
 MAX_BRANCHES = 256  # ambiguous words are few; this bounds the search on hostile input
 

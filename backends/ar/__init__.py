@@ -232,7 +232,6 @@ class ARReport:
 def ar_command(photo_path, ir: dict, out_path, options: dict | None = None) -> ARReport:
     """Photo with a printed marker -> the same photo with the material's object standing on it.
     Raises NoMarkerFound ("no marker found in photo.jpg ..."), PhotoUnreadable, AROptionError."""
-    import cv2
     opts = parse_options(options)
     material = pick_material(ir, opts.material)
     photo = read_photo(photo_path)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .colour import align, as_array, hsv_to_rgb, is_rgb, luminance, rgb_to_hsv
+from .colour import as_array, hsv_to_rgb, is_rgb, luminance, rgb_to_hsv
 from .grid import Grid, lattice_vector
 
 BLEND_MODES = ("mix", "multiply", "add", "subtract", "screen", "overlay", "max", "min")

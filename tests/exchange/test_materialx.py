@@ -12,7 +12,6 @@ import MaterialX.PyMaterialXGenGlsl as mxg  # noqa: E402
 import MaterialX.PyMaterialXGenShader as mxs  # noqa: E402
 
 from cnlmc.api import emit  # noqa: E402
-from cnlmc.backends import materialx as backend  # noqa: E402
 from cnlmc.backends.materialx_params import (f82_tint, gulbrandsen_edge, openpbr_roughness,  # noqa: E402
                                              standard_roughness)
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from cnlmc.backends.preview import compose, parse_options, PreviewOptionError, preview_command, render_ir
+from cnlmc.backends.preview import compose, parse_options, PreviewOptionError, preview_command
 from cnlmc.backends.preview.tiers import QUALITY_ORDER, TIERS, TierError, parse_tier, select_tier
 
 from .conftest import material_of, stdlib_nouns
