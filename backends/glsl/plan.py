@@ -33,7 +33,7 @@ FRESNEL_SNIPPETS = {
     ("glass", "exact"): ("fresnel_dielectric",),
     ("glass", "schlick"): ("fresnel_schlick",),
 }
-DISTRIBUTION_SNIPPETS = {("ggx", False): ("ggx_isotropic",), ("ggx", True): ("ggx_anisotropic",),
+DISTRIBUTION_SNIPPETS = {("ggx", False): ("ggx_isotropic",), ("ggx", True): ("ggx_aniso_terms", "ggx_anisotropic"),
                          ("ward", True): ("ward",), ("ward", False): ("ward",)}
 DIFFUSE_SNIPPETS = {"lambert": ("diffuse_lambert",), "oren_nayar": ("diffuse_oren_nayar",), None: ()}
 ALPHA_SNIPPETS = {"squared": ("alpha_squared",), "linear": ("alpha_linear",)}
@@ -151,7 +151,7 @@ def snippet_names(plan: Plan) -> list[str]:
         names += FRESNEL_SNIPPETS[(plan.base, plan.fresnel)]
         names += DISTRIBUTION_SNIPPETS[(plan.distribution, plan.anisotropic)]
     if plan.transmission:
-        names.append("ggx_transmission")
+        names += ["ggx_aniso_terms", "ggx_transmission"]
     names += DIFFUSE_SNIPPETS[plan.diffuse]
     if "mask" in plan.maps:
         names += DIFFUSE_SNIPPETS["lambert"]
@@ -243,7 +243,7 @@ UBER_SELECTORS = {
     "cnlm_use_multiscatter": ("multiscatter", {False: 0, True: 1}),
 }
 UBER_SNIPPETS = ("common", "any_tangent", "frame", "rotate_tangent", "fresnel_dielectric",
-                 "fresnel_conductor", "fresnel_schlick", "fresnel_f82", "ggx_isotropic", "ggx_anisotropic",
+                 "fresnel_conductor", "fresnel_schlick", "fresnel_f82", "ggx_isotropic", "ggx_aniso_terms", "ggx_anisotropic",
                  "ward", "diffuse_lambert", "diffuse_oren_nayar", "coat", "coat_absorption", "normal_map")
 
 

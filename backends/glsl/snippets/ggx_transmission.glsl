@@ -23,13 +23,8 @@ float cnlm_ggx_btdf(vec3 wo, vec3 wi, vec2 alpha, float ior, out float cos_out) 
     if (oh * wo.z <= 0.0 || ih * wi.z <= 0.0 || h.z <= 0.0) return 0.0;
     cos_out = abs(wo.z > 0.0 ? oh : ih);
     vec2 a = max(alpha, vec2(CNLM_ALPHA_MIRROR));
-    vec2 hs = h.xy / a;
-    float q = dot(hs, hs) + h.z * h.z;
-    float d = 1.0 / (CNLM_PI * a.x * a.y * q * q);
-    vec2 so = a * wo.xy, si = a * wi.xy;
-    float len_o = sqrt(dot(so, so) + wo.z * wo.z);
-    float len_i = sqrt(dot(si, si) + wi.z * wi.z);
-    float g_over_cos = 2.0 / (abs(wi.z) * len_o + abs(wo.z) * len_i);
+    float d = cnlm_ggx_d_aniso(h, a);
+    float g_over_cos = 2.0 / (abs(wi.z) * cnlm_alpha_length(wo, a) + abs(wo.z) * cnlm_alpha_length(wi, a));
     return abs(oh * ih) * eta_o * eta_o * d * g_over_cos / s2;
 }
 

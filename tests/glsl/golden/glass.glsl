@@ -87,6 +87,21 @@ float cnlm_ggx_dv(vec3 wo, vec3 wi, vec3 h, float alpha) {
     return d / (2.0 * (wi.z * len_o + wo.z * len_i));
 }
 
+// Anisotropic GGX pieces shared by the reflection and the transmission lobes
+// (Walter 2007; Heitz 2014), alpha = (ax, ay) already clamped to CNLM_ALPHA_MIRROR:
+//   D(h) = 1/(pi ax ay q^2), q = hx^2/ax^2 + hy^2/ay^2 + hz^2
+//   |w|_a = sqrt(ax^2 wx^2 + ay^2 wy^2 + wz^2)   (the Smith Lambda written without 1/cos)
+float cnlm_ggx_d_aniso(vec3 h, vec2 a) {
+    vec2 hs = h.xy / a;
+    float q = dot(hs, hs) + h.z * h.z;
+    return 1.0 / (CNLM_PI * a.x * a.y * q * q);
+}
+
+float cnlm_alpha_length(vec3 w, vec2 a) {
+    vec2 s = a * w.xy;
+    return sqrt(dot(s, s) + w.z * w.z);
+}
+
 // Rough dielectric transmission, Walter et al. 2007 eq. 21, GGX with the height-correlated
 // Smith G2 = 1/(1 + L(wo) + L(wi)) of the reflection lobe (directions mirrored to z > 0).
 // Outside (index 1) is z > 0, inside (index ior) z < 0; eta_o / eta_i index of wo's / wi's side.
@@ -112,13 +127,8 @@ float cnlm_ggx_btdf(vec3 wo, vec3 wi, vec2 alpha, float ior, out float cos_out) 
     if (oh * wo.z <= 0.0 || ih * wi.z <= 0.0 || h.z <= 0.0) return 0.0;
     cos_out = abs(wo.z > 0.0 ? oh : ih);
     vec2 a = max(alpha, vec2(CNLM_ALPHA_MIRROR));
-    vec2 hs = h.xy / a;
-    float q = dot(hs, hs) + h.z * h.z;
-    float d = 1.0 / (CNLM_PI * a.x * a.y * q * q);
-    vec2 so = a * wo.xy, si = a * wi.xy;
-    float len_o = sqrt(dot(so, so) + wo.z * wo.z);
-    float len_i = sqrt(dot(si, si) + wi.z * wi.z);
-    float g_over_cos = 2.0 / (abs(wi.z) * len_o + abs(wo.z) * len_i);
+    float d = cnlm_ggx_d_aniso(h, a);
+    float g_over_cos = 2.0 / (abs(wi.z) * cnlm_alpha_length(wo, a) + abs(wo.z) * cnlm_alpha_length(wi, a));
     return abs(oh * ih) * eta_o * eta_o * d * g_over_cos / s2;
 }
 
