@@ -6,9 +6,8 @@ from . import ast
 from .diagnostics import error
 from .lexicon import Lexicon
 from .mistakes import known_mistake
-from .parser import ParseFailure, describe_expected, parse_tagged
+from .parser import ParseFailure, describe_expected, parse_line_shape
 from .spans import Span
-from .syntax import TreeToAst
 from .tagger import Tagger
 
 MAX_LINE_CHARS = 2000
@@ -51,11 +50,11 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list)
                            f"phrase is too long ({len(words)} words; at most {MAX_LINE_WORDS})"))
         return None
     try:
-        tree, chosen = parse_tagged(words)
+        shape, picks = parse_line_shape(words)
     except ParseFailure as failure:
         diags.append(_syntax_error(failure, words, tagger.lexicon))
         return None
-    return TreeToAst({t.span.start: t for t in words}, chosen, text).build(tree)
+    return shape.build(words, picks, text)
 
 
 def _syntax_error(failure: ParseFailure, words, lexicon):

@@ -4,6 +4,11 @@ A word with several candidate tags ("gold": colour or noun) is resolved by a dep
 search over the interactive parser: each candidate is fed in the tagger's order of
 preference and the first one that lets the whole line parse wins. Lines without
 ambiguous words take a single pass.
+
+The tree depends only on the sequence of terminal types, so parse_line_shape keeps the
+compiled shape of each sequence it has parsed (syntax.Shape, with the chosen candidate per
+word) in a bounded cache keyed by the candidate tags of each word: a line whose words
+carry the same tags as an earlier line skips the parser. Failures are never cached.
 """
 
 from __future__ import annotations
@@ -15,9 +20,12 @@ from lark import Lark, Token, Tree
 from lark.lexer import Lexer
 from lark.exceptions import UnexpectedInput, UnexpectedToken
 
+from .syntax import Shape
 from .tagger import Tagged
 
 MAX_BRANCHES = 256  # ambiguous words are few; this bounds the search on hostile input
+MAX_SHAPES = 4096  # distinct terminal sequences kept; the cache starts over when full
+_shapes: dict = {}  # candidate tags per word -> (Shape, chosen candidate index per word or None)
 
 TERMINAL_NAMES = {
     "NOUN": "a material noun (e.g. 'aluminum')", "ADJ": "an adjective (e.g. 'brushed')",
@@ -84,6 +92,33 @@ def parse_tagged(tagged: list[Tagged]) -> tuple[Tree, dict]:
     if all(len(t.candidates) == 1 for t in words):
         return _parse_direct(words), {t.span.start: t.candidates[0] for t in words}
     return _parse_search(words)
+
+
+def parse_line_shape(words: list[Tagged]) -> tuple[Shape, list]:
+    """The shape of a line's parse and the chosen candidate of each word (raises ParseFailure)."""
+    key = tuple([t.candidates[0].tag if len(t.candidates) == 1 else tuple([c.tag for c in t.candidates])
+                 for t in words])
+    found = _shapes.get(key)
+    if found is None:
+        found = _compile_shape(words)
+        if len(_shapes) >= MAX_SHAPES:
+            _shapes.clear()
+        _shapes[key] = found
+    shape, choice = found
+    if choice is None:
+        return shape, [t.candidates[0] for t in words]
+    return shape, [t.candidates[k] for t, k in zip(words, choice)]
+
+
+def _compile_shape(words: list[Tagged]) -> tuple[Shape, tuple | None]:
+    tree, chosen = parse_tagged(words)
+    choice = tuple(_position(t.candidates, chosen[t.span.start]) for t in words)
+    shape = Shape(tree, {t.span.start: i for i, t in enumerate(words)})
+    return shape, (choice if any(choice) else None)
+
+
+def _position(candidates: tuple, chosen) -> int:
+    return next(k for k, c in enumerate(candidates) if c is chosen)
 
 
 def _parse_direct(words: list[Tagged]) -> Tree:
