@@ -58,13 +58,39 @@ def midpoint(a, b):
     return _per_channel(lambda x, y: (x + y) / 2, a, b)
 
 
+def round6(x: float) -> float:
+    """round(x, 6), with -0.0 made 0.0. Exactly equal to it, about twice as fast: x * 1e6 is
+    off the exact product by under 1.3e-4 when |x| < 1e6, so where it lies at least 0.001 from a
+    tie its nearest integer n is the correctly rounded one, and n / 1e6 is the double nearest
+    to that decimal, which is what round() returns. Ties, huge values, inf and NaN use round()."""
+    y = x * 1e6
+    if -1e12 < y < 1e12:
+        n = round(y)
+        if -0.499 < y - n < 0.499:
+            return n / 1e6
+    return round(x, 6) or 0.0
+
+
 def rounded(value, digits: int = 6):
     """Floats rounded to `digits` decimals (and -0.0 made 0.0) so output is stable and small."""
+    if digits != 6:
+        return _rounded_to(value, digits)
+    kind = type(value)
+    if kind is float:
+        return round6(value)
+    if kind is list:
+        return [round6(v) if type(v) is float else rounded(v) for v in value]
+    if kind is dict:
+        return {k: round6(v) if type(v) is float else rounded(v) for k, v in value.items()}
+    return value
+
+
+def _rounded_to(value, digits: int):
     kind = type(value)
     if kind is float:
         return round(value, digits) or 0.0  # 'or' turns -0.0 into 0.0
     if kind is list:
-        return [(round(v, digits) or 0.0) if type(v) is float else rounded(v, digits) for v in value]
+        return [_rounded_to(v, digits) for v in value]
     if kind is dict:
-        return {k: rounded(v, digits) for k, v in value.items()}
+        return {k: _rounded_to(v, digits) for k, v in value.items()}
     return value
