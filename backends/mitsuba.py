@@ -23,7 +23,7 @@ from .registry import Artifact
 NAME = "mitsuba"
 DESCRIPTION = "Mitsuba 3 scene XML (full preview scene or BSDF fragment) with baked bitmap textures"
 OPTIONS = {"form": ("scene", ("scene", "fragment")), "spp": ("64", None), "resolution": ("256", None),
-           "max_depth": ("8", None), "envmap": ("", None)}
+           "max_depth": ("8", None), "envmap": ("", None), "bsdf": ("native", ("native", "cnlm"))}
 ALPHA_MIRROR = 1e-3
 TEXTURED_ALPHA = ("roughconductor", "roughdielectric")   # roughplastic's alpha is a float
 
@@ -49,6 +49,9 @@ CAPABILITIES = {
 }
 assert set(CAPABILITIES) == set(ALL_FEATURES)
 USED_MAPS = ("base_color", "roughness", "normal")
+#: `bsdf=cnlm`: cnlmc's own BSDF through the `cnlm` plugin (backends/mitsuba_cnlm.py), which
+#: reads these maps itself (normals still go through `normalmap`).
+CNLM_MAPS = ("base_color", "roughness", "normal", "mask")
 
 
 # ----------------------------------------------------------------------------- properties
@@ -191,10 +194,26 @@ BUILDERS = {
 TRANSMISSIVE = {"roughdielectric", "dielectric"}
 
 
-def bsdf_for(material: dict, ident: str, tex: dict) -> dict:
+def cnlm_bsdf(material: dict, tex: dict) -> dict:
+    """The `cnlm` plugin: the IR material (name, model, params) as JSON plus the raw maps it
+    reads. '$' is written as a JSON escape: Mitsuba's loader substitutes $parameters in strings."""
+    import json
+    shading = {key: material[key] for key in ("name", "model", "params")}
+    text = json.dumps(shading, sort_keys=True, default=float).replace("$", "\\u0024")
+    props = [prop("string", "material", text)]
+    props += [bitmap(role, tex[role]) for role in ("base_color", "roughness", "mask") if role in tex]
+    return node("cnlm", props)
+
+
+def uses_cnlm(material: dict, opts: dict) -> bool:
+    """bsdf=cnlm applies to every reflective model; glass keeps roughdielectric (its exact match)."""
+    return opts.get("bsdf") == "cnlm" and material["model"]["base"] != "glass"
+
+
+def bsdf_for(material: dict, ident: str, tex: dict, cnlm: bool = False) -> dict:
     """The BSDF tree: plugin, then twosided (opaque ones), then normalmap; the root gets the id."""
-    plugin = plugin_for(material)
-    tree = BUILDERS[plugin](material, tex)
+    plugin = "cnlm" if cnlm else plugin_for(material)
+    tree = cnlm_bsdf(material, tex) if cnlm else BUILDERS[plugin](material, tex)
     if plugin not in TRANSMISSIVE and material["model"]["base"] != "glass":
         tree = node("twosided", [], [tree])
     if "normal" in tex:
@@ -279,12 +298,15 @@ def emit(ir: dict, options: dict) -> EmitResult:
     materials = ir["materials"]
     notes, entries, images = [], [], []
     for material, ident in zip(materials, unique_identifiers(m["name"] for m in materials)):
-        check_material(notes, NAME, caps, material)
-        alpha_maps = AlphaMaps(material)
-        tex, baked = bake_textures(material, ident, opts, roles=USED_MAPS, derive=alpha_maps)
-        if alpha_maps.mean_alpha is not None and plugin_for(material) == "roughplastic":
+        cnlm = uses_cnlm(material, opts)
+        if not cnlm:
+            check_material(notes, NAME, caps, material)
+        alpha_maps = None if cnlm else AlphaMaps(material)
+        tex, baked = bake_textures(material, ident, opts, roles=CNLM_MAPS if cnlm else USED_MAPS, derive=alpha_maps)
+        if alpha_maps and alpha_maps.mean_alpha is not None and plugin_for(material) == "roughplastic":
             tex["mean_alpha"] = alpha_maps.mean_alpha
         images += baked
-        entries.append({"ident": ident, "phrase": material.get("phrase", ""), "bsdf": bsdf_for(material, ident, tex)})
+        entries.append({"ident": ident, "phrase": material.get("phrase", ""),
+                        "bsdf": bsdf_for(material, ident, tex, cnlm)})
     name = "materials.xml" if opts["form"] == "fragment" else "scene.xml"
     return EmitResult([Artifact(name, render_xml(entries, opts))] + images, notes)

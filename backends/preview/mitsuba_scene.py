@@ -65,12 +65,14 @@ def _vec(v) -> str:
 
 
 def export_scene(material: dict, scene: Scene, out_dir, width: int, height: int, spp: int = 64,
-                 seed: int = 0, hide_background: bool = True) -> Path:
-    """Write scene.xml, materials.xml (+ baked textures), mesh.ply and environment.exr."""
+                 seed: int = 0, hide_background: bool = True, bsdf: str = "native") -> Path:
+    """Write scene.xml, materials.xml (+ baked textures), mesh.ply and environment.exr.
+    `bsdf="cnlm"` uses cnlmc's own BSDF through the `cnlm` plugin (backends/mitsuba_cnlm.py)."""
     from cnlmc.backends import mitsuba
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    result = mitsuba.emit({"ir_version": 1, "materials": [material], "diagnostics": []}, {"form": "fragment"})
+    result = mitsuba.emit({"ir_version": 1, "materials": [material], "diagnostics": []},
+                          {"form": "fragment", "bsdf": bsdf})
     for artifact in result.artifacts:
         path = out / artifact.name
         path.parent.mkdir(parents=True, exist_ok=True)
@@ -99,18 +101,30 @@ def _bsdf_id(materials_xml: Path) -> str:
     raise ValueError(f"{materials_xml}: no BSDF with an id")
 
 
-def render_scene(path, spp: int | None = None, seed: int = 0) -> tuple[np.ndarray, float]:
-    """Render with Mitsuba (scalar_rgb): (linear RGBA float32, top row first; seconds)."""
+def render_scene(path, spp: int | None = None, seed: int = 0, variant: str | None = None,
+                 warm: bool = False) -> tuple[np.ndarray, float]:
+    """Render with Mitsuba: (linear RGBA float32, top row first; seconds of the render call).
+
+    `variant`: None keeps the current one (scalar_rgb if none is set); "vectorized" selects
+    llvm_ad_rgb (or CUDA) and registers the `cnlm` plugin, which scenes written with
+    bsdf="cnlm" need. `warm=True` renders once untimed first (JIT compilation and kernel
+    caches), so the time is the steady-state cost, like the preview's warm frame time."""
     import time
 
     import mitsuba as mi
-    if mi.variant() is None:
+    if variant == "vectorized":
+        from cnlmc.backends import mitsuba_cnlm
+        mitsuba_cnlm.register()
+    elif variant:
+        mi.set_variant(variant)
+    elif mi.variant() is None:
         mi.set_variant("scalar_rgb")
     scene = mi.load_file(str(path), **({"spp": spp} if spp else {}))
+    if warm:
+        mi.render(scene, seed=seed + 1).numpy()
     start = time.perf_counter()
-    image = mi.render(scene, seed=seed)
-    seconds = time.perf_counter() - start
-    return np.array(image, np.float32), seconds
+    image = np.array(mi.render(scene, seed=seed), np.float32)
+    return image, time.perf_counter() - start
 
 
 def fov_note(scene: Scene) -> str:

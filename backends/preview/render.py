@@ -12,7 +12,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from cnlmc.bsdf.sampling import lobe_shares
+
 from . import gl
+from .albedo_tables import albedo_tables
 from .camera import Camera, framing_camera
 from .environment import Environment, environment, irradiance_sh9
 from .lut import brdf_lut
@@ -20,13 +23,9 @@ from .meshes import Mesh, fit, mesh_by_name
 from .tiers import DEFAULT_TIER, Tier, parse_tier
 
 MICROFACET = ("dielectric", "conductor", "glass")
-#: base model -> share of IBL samples: (cosine, base specular, coat specular) without / with a coat.
-STRATEGY = {"diffuse": ((1.0, 0.0, 0.0), (0.5, 0.0, 0.5)),
-            "dielectric": ((0.5, 0.5, 0.0), (0.4, 0.3, 0.3)),
-            "conductor": ((0.1, 0.9, 0.0), (0.1, 0.45, 0.45)),
-            "glass": ((0.1, 0.9, 0.0), (0.1, 0.45, 0.45))}
 GLSL_OPTION_KEYS = ("fresnel", "multiscatter", "specialize")
 PREFILTER_LEVELS = 5
+PREFILTER_SAMPLES = 256
 MAP_SIZE = 512
 #: MSAA costs 4x the object pass on llvmpipe (docs/preview.md): off, with the tone map's edge filter.
 DEFAULT_MSAA = 0
@@ -60,8 +59,9 @@ def material_plan(sidecar: dict) -> dict:
     coat = "cnlm_coat_ior" in uniforms
     plan = {"base": base, "microfacet": base in MICROFACET, "anisotropic": bool(model.get("anisotropic")) and base in MICROFACET,
             "coat": coat, "coat_color": "cnlm_coat_color" in uniforms,
-            "normal_map": any(s["role"] == "normal" for s in sidecar["samplers"])}
-    plan["strategy"] = [repr(float(x)) for x in STRATEGY[base][coat]]
+            "normal_map": any(s["role"] == "normal" for s in sidecar["samplers"]),
+            "roughness_map": any(s["role"] == "roughness" for s in sidecar["samplers"])}
+    plan["strategy"] = [repr(float(x)) for x in lobe_shares(base, coat)]
     plan["summary"] = " + ".join(k for k in ("base", "anisotropic", "coat", "normal_map") if plan[k] is True) or base
     plan["summary"] = f"{base}" + "".join(f", {k}" for k in ("anisotropic", "coat", "normal_map") if plan[k])
     return plan
@@ -99,30 +99,49 @@ class EnvResources:
         self.mean = env.mean_radiance
         self.lut = gl.float_texture(brdf_lut(), mipmaps=False, repeat=(False, False))
         self.prefiltered = self._prefilter()
+        self._at_alpha: dict = {}
 
-    def _prefilter(self, samples: int = 256):
+    def prefiltered_at(self, alpha: float):
+        """The environment prefiltered at exactly this GGX alpha (full resolution, one level;
+        cached): the split-sum tier of a material whose alpha is uniform needs no mip blend."""
+        key = round(float(alpha), 6)
+        if key not in self._at_alpha:
+            self._at_alpha[key] = self._prefilter_level(key)
+        return self._at_alpha[key]
+
+    def _prefilter_pass(self, alpha: float, size: tuple, samples: int) -> np.ndarray:
+        """One pass of prefilter.frag at `alpha` into a (h, w, 3) float32 array."""
         import moderngl
         ctx = gl.current()
-        tex = gl.float_texture(self.env.image, repeat=(True, False))
         prog = gl.program(gl.shader_file("fullscreen.vert"), gl.shader_file("prefilter.frag"))
         vao = ctx.vertex_array(prog, [])
         self.radiance.use(0)
         gl.set_uniform(prog, "pv_env", 0)
         gl.set_uniform(prog, "pv_samples", samples)
         gl.set_uniform(prog, "pv_env_size", self.size)
+        gl.set_uniform(prog, "pv_alpha", alpha)
+        target = ctx.texture(size, 4, dtype="f4")
+        fbo = ctx.framebuffer([target])
+        fbo.use()
+        ctx.viewport = (0, 0, *size)
+        vao.render(moderngl.TRIANGLES, vertices=3)
+        data = np.frombuffer(fbo.read(components=4, dtype="f4"), np.float32).reshape(size[1], size[0], 4)[..., :3]
+        for item in (vao, fbo, target):
+            item.release()
+        return np.ascontiguousarray(data)
+
+    def _prefilter_level(self, alpha: float):
+        texture = gl.float_texture(self._prefilter_pass(alpha, self.size, PREFILTER_SAMPLES), mipmaps=False,
+                                   repeat=(True, False))
+        return texture
+
+    def _prefilter(self, samples: int = PREFILTER_SAMPLES):
+        """The mip chain: level k holds the environment prefiltered at sqrt(alpha) = k / LEVELS."""
+        tex = gl.float_texture(self.env.image, repeat=(True, False))
         for level in range(1, PREFILTER_LEVELS + 1):
-            w, h = max(self.size[0] >> level, 4), max(self.size[1] >> level, 2)
-            target = ctx.texture((w, h), 4, dtype="f4")
-            fbo = ctx.framebuffer([target])
-            fbo.use()
-            ctx.viewport = (0, 0, w, h)
-            gl.set_uniform(prog, "pv_alpha", (level / PREFILTER_LEVELS) ** 2)
-            vao.render(moderngl.TRIANGLES, vertices=3)
-            data = np.frombuffer(fbo.read(components=4, dtype="f4"), np.float32).reshape(h, w, 4)[..., :3]
-            tex.write(np.ascontiguousarray(data).tobytes(), level=level)
-            fbo.release()
-            target.release()
-        vao.release()
+            size = (max(self.size[0] >> level, 4), max(self.size[1] >> level, 2))
+            data = self._prefilter_pass((level / PREFILTER_LEVELS) ** 2, size, samples)
+            tex.write(data.tobytes(), level=level)
         return tex
 
 
@@ -257,6 +276,34 @@ def map_textures(material: dict, samplers: list, size: int = MAP_SIZE, seed: int
     return {s["name"]: baked[s["role"]] for s in samplers if s["role"] in baked}
 
 
+_SPLIT_TABLES: dict = {}
+
+
+def specialized_split(plan: dict) -> bool:
+    """The split-sum tier uses the material's own albedo tables (and, with a uniform alpha, an
+    environment prefiltered at exactly that alpha) for every uncoated model; coats keep the
+    generic LUT (their layering is not a sum of two lobes)."""
+    return not plan["coat"]
+
+
+def split_textures(material: dict, plan: dict, res: EnvResources, glsl_options: dict | None) -> dict:
+    """sampler name -> texture for the specialized split-sum tier (docs/preview.md)."""
+    from cnlmc.bsdf.evaluate import material_alpha
+    opts = glsl_options or {}
+    fresnel, multiscatter = str(opts.get("fresnel", "exact")), str(opts.get("multiscatter", "off")) == "on"
+    key = (json.dumps([material["model"], material["params"]], sort_keys=True, default=str), fresnel, multiscatter,
+           plan["roughness_map"])
+    if key not in _SPLIT_TABLES:
+        spec, diffuse = albedo_tables(material, fresnel, multiscatter, plan["roughness_map"])
+        flat = lambda table: gl.float_texture(table, mipmaps=False, repeat=(False, False))  # noqa: E731
+        _SPLIT_TABLES[key] = {"pv_spec_albedo": flat(spec), "pv_diffuse_albedo": flat(diffuse)}
+    textures = dict(_SPLIT_TABLES[key])
+    if plan["microfacet"] and not plan["roughness_map"]:
+        ax, ay = (float(a) for a in material_alpha(material))
+        textures["pv_env_material"] = res.prefiltered_at(max(np.sqrt(ax * ay), 1e-3))
+    return textures
+
+
 # ------------------------------------------------------------------------ render
 
 @dataclass
@@ -339,15 +386,16 @@ class Renderer:
         self.ctx.viewport = (0, 0, self.width, self.height)
 
     def _draw_object(self, scene: Scene, material: dict, shader: MaterialShader, tier: Tier, res: EnvResources,
-                     model: np.ndarray) -> None:
+                     model: np.ndarray, glsl_options: dict | None = None) -> None:
         import moderngl
         prog = self.object_program(shader, tier)
-        unit = 0
-        for name, tex in map_textures(material, shader.samplers).items():
+        textures = dict(map_textures(material, shader.samplers))
+        if tier.ibl == "splitsum" and specialized_split(shader.plan):
+            textures.update(split_textures(material, shader.plan, res, glsl_options))
+        for unit, (name, tex) in enumerate(textures.items()):
             tex.use(unit)
             gl.set_uniform(prog, name, unit)
-            unit += 1
-        self._bind_environment(prog, res, scene, tier, unit)
+        self._bind_environment(prog, res, scene, tier, len(textures))
         cam = scene.camera
         gl.set_uniform(prog, "pv_model", model)
         gl.set_uniform(prog, "pv_normal_matrix", np.linalg.inv(model[:3, :3]).T)
@@ -407,7 +455,7 @@ class Renderer:
         if overlay is not None:
             overlay(self, scene)
             t.draw_target.use()
-        self._draw_object(scene, material, shader, tier, res, np.eye(4) if model is None else model)
+        self._draw_object(scene, material, shader, tier, res, np.eye(4) if model is None else model, glsl_options)
         t.resolve(self.ctx)
         if scene.background == "env":
             self._draw_background(t, scene, res)

@@ -1,0 +1,196 @@
+"""The Mitsuba 3 BSDF plugin `cnlm`: cnlmc's own reflection model inside Mitsuba.
+
+Mitsuba's native plugins approximate some cnlmc models (a different diffuse-under-glaze
+layering in `roughplastic`, no Oren–Nayar, `principled` for coats, no Ward; docs/exchange.md).
+With this plugin Mitsuba renders exactly the BSDF the GLSL shader evaluates: every call goes
+to the numpy reference `cnlmc.bsdf.evaluate` (docs/bsdf.md), vectorized over Mitsuba's
+wavefront. Sampling is the cosine + GGX visible-normal mixture of `cnlmc.bsdf.sampling`.
+
+    from cnlmc.backends import mitsuba_cnlm
+    mitsuba_cnlm.register()            # selects an LLVM/CUDA variant first if none is set
+    scene = mi.load_file("scene.xml")  # written with --target mitsuba --option bsdf=cnlm
+
+The plugin needs a vectorized variant (`llvm_ad_rgb`, `cuda_ad_rgb`) with symbolic calls off
+(`register` does that): numpy sees concrete arrays. Reflection only: `glass` keeps its native
+`roughdielectric` (which is cnlmc's transmission model, docs/bsdf.md). Parameters:
+`material` (string, the IR material as JSON) and optional textures `base_color`,
+`roughness` (perceptual, the IR convention applies) and `mask` (coverage towards Lambert).
+"""
+from __future__ import annotations
+
+import json
+import os
+
+import numpy as np
+
+PLUGIN = "cnlm"
+LLVM_LIBRARY = "/usr/lib/x86_64-linux-gnu/libLLVM.so.19.1"
+VARIANTS = ("llvm_ad_rgb", "cuda_ad_rgb")
+
+
+class PluginError(RuntimeError):
+    """Mitsuba cannot run the plugin here (no vectorized variant)."""
+
+
+def choose_variant() -> str:
+    """Set (if needed) and return a vectorized RGB variant; LLVM 15/16 abort in Mitsuba's
+    llvm variants, so Debian's libLLVM 19 is preferred when it is installed."""
+    if "DRJIT_LIBLLVM_PATH" not in os.environ and os.path.exists(LLVM_LIBRARY):
+        os.environ["DRJIT_LIBLLVM_PATH"] = LLVM_LIBRARY
+    import mitsuba as mi
+    if mi.variant() in VARIANTS:
+        return mi.variant()
+    for variant in VARIANTS:
+        if variant in mi.variants():
+            try:
+                mi.set_variant(variant)
+                return variant
+            except Exception:       # pragma: no cover - depends on the machine's LLVM/CUDA
+                continue
+    raise PluginError("the cnlm Mitsuba plugin needs the llvm_ad_rgb variant (apt install libllvm19)")
+
+
+def register() -> str:
+    """Register `cnlm` for the current (or a chosen vectorized) variant; returns the variant."""
+    import drjit as dr
+    import mitsuba as mi
+    variant = choose_variant()
+    dr.set_flag(dr.JitFlag.SymbolicCalls, False)
+    dr.set_flag(dr.JitFlag.SymbolicLoops, False)
+    mi.register_bsdf(PLUGIN, lambda props: _plugin_class()(props))
+    return variant
+
+
+def _lanes(value) -> np.ndarray:
+    """A Mitsuba vector/colour as (N, k) float64, or a float array as (N,)."""
+    array = np.array(value, dtype=np.float64)
+    return array.T if array.ndim == 2 else array
+
+
+def _vector(mi, array: np.ndarray):
+    a = np.ascontiguousarray(array, dtype=np.float32)
+    return mi.Vector3f(a[:, 0], a[:, 1], a[:, 2])
+
+
+def _colour(mi, array: np.ndarray):
+    a = np.ascontiguousarray(array, dtype=np.float32)
+    return mi.Color3f(a[:, 0], a[:, 1], a[:, 2])
+
+
+class LaneModel:
+    """The IR material evaluated per lane: maps (textures) read at each lane's uv."""
+
+    def __init__(self, material: dict, textures: dict):
+        from cnlmc.bsdf.evaluate import coat_alpha
+        from cnlmc.bsdf.sampling import lobe_shares
+        self.material = material
+        self.textures = textures
+        model, params = material["model"], material["params"]
+        self.shares = lobe_shares(model["base"], bool(model.get("coat") and params.get("coat")))
+        coat = params.get("coat") if model.get("coat") else None
+        self.coat_alpha = coat_alpha(coat, params.get("alpha_convention", "squared")) if coat else (1.0, 1.0)
+
+    def params_at(self, si, active) -> dict:
+        """The material with α per lane when a roughness map is bound."""
+        from cnlmc.bsdf.alpha import alpha_from_roughness
+        if "roughness" not in self.textures:
+            return self.material
+        params = self.material["params"]
+        r = _lanes(self.textures["roughness"].eval_1(si, active))
+        aniso = float(params.get("anisotropy") or 0.0) if self.material["model"].get("anisotropic") else 0.0
+        alpha = alpha_from_roughness(r, aniso, params.get("alpha_convention", "squared"))
+        return {**self.material, "params": {**params, "alpha": alpha}}
+
+    def base_alpha(self, material: dict):
+        from cnlmc.bsdf.evaluate import material_alpha
+        if material["model"]["base"] == "diffuse":
+            return (1.0, 1.0)
+        ax, ay = material_alpha(material)
+        coat = self.shares[2] > 0 and material["model"]["base"] != "diffuse"
+        scale = float(material["params"]["coat"].get("ior", 1.5)) if coat else 1.0   # seen through the coat
+        return np.minimum(ax * scale, 1.0), np.minimum(ay * scale, 1.0)
+
+    def f(self, si, material: dict, wo, wi, active) -> np.ndarray:
+        """f(wo, wi), RGB (N, 3): affine in the base colour, so a colour map costs two calls."""
+        from cnlmc.bsdf.diffuse import lambert
+        from cnlmc.bsdf.evaluate import evaluate
+        if "base_color" not in self.textures:
+            value = evaluate(material, wo, wi)
+            albedo = np.asarray(material["params"].get("base_color", (1.0, 1.0, 1.0)), np.float64)
+        else:
+            albedo = _lanes(self.textures["base_color"].eval(si, active))
+            black = evaluate(_with_colour(material, (0.0, 0.0, 0.0)), wo, wi)
+            white = evaluate(_with_colour(material, (1.0, 1.0, 1.0)), wo, wi)
+            value = black + (white - black) * albedo
+        if "mask" in self.textures:
+            mask = np.clip(_lanes(self.textures["mask"].eval_1(si, active)), 0.0, 1.0)[:, None]
+            value = value * (1.0 - mask) + lambert(wo, wi, np.ones(3)) * albedo * mask
+        return np.where(np.isfinite(value), value, 0.0)
+
+
+def _with_colour(material: dict, colour) -> dict:
+    return {**material, "params": {**material["params"], "base_color": colour}}
+
+
+def _plugin_class():
+    """The mi.BSDF subclass (defined lazily: Mitsuba loads only when the plugin is used)."""
+    import drjit as dr
+    import mitsuba as mi
+    from cnlmc.bsdf.sampling import mixture_pdf, sample_mixture, sampled_weight
+
+    class CnlmBSDF(mi.BSDF):
+        def __init__(self, props):
+            mi.BSDF.__init__(self, props)
+            material = json.loads(props["material"])
+            textures = {role: props[role] for role in ("base_color", "roughness", "mask") if props.has_property(role)}
+            self.lanes = LaneModel(material, textures)
+            flags = mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide
+            if material["model"].get("anisotropic"):
+                flags = flags | mi.BSDFFlags.Anisotropic
+            self.m_flags = flags
+            self.m_components = [flags]
+
+        def _pair(self, si, wo_mitsuba):
+            return _lanes(si.wi), _lanes(wo_mitsuba)
+
+        def _pdf(self, material, wo, wi):
+            return mixture_pdf(wo, wi, self.lanes.shares, self.lanes.base_alpha(material), self.lanes.coat_alpha)
+
+        def eval(self, ctx, si, wo, active=True):
+            v, l = self._pair(si, wo)
+            material = self.lanes.params_at(si, active)
+            value = self.lanes.f(si, material, v, l, active) * np.maximum(l[:, 2], 0.0)[:, None]
+            return dr.select(active, _colour(mi, value), 0.0)
+
+        def pdf(self, ctx, si, wo, active=True):
+            v, l = self._pair(si, wo)
+            pdf = self._pdf(self.lanes.params_at(si, active), v, l)
+            return dr.select(active, mi.Float(np.ascontiguousarray(pdf, np.float32)), 0.0)
+
+        def eval_pdf(self, ctx, si, wo, active=True):
+            return self.eval(ctx, si, wo, active), self.pdf(ctx, si, wo, active)
+
+        def sample(self, ctx, si, sample1, sample2, active=True):
+            v, u = _lanes(si.wi), _lanes(sample2)
+            material = self.lanes.params_at(si, active)
+            base_alpha = self.lanes.base_alpha(material)
+            l = sample_mixture(v, _lanes(sample1), u[:, 0], u[:, 1], self.lanes.shares, base_alpha,
+                               self.lanes.coat_alpha)
+            pdf = mixture_pdf(v, l, self.lanes.shares, base_alpha, self.lanes.coat_alpha)
+            weight = sampled_weight(self.lanes.f(si, material, v, l, active), v, l, pdf)
+            bs = mi.BSDFSample3f()
+            bs.wo = _vector(mi, l)
+            bs.pdf = mi.Float(np.ascontiguousarray(pdf, np.float32))
+            bs.eta = 1.0
+            bs.sampled_type = mi.UInt32(+mi.BSDFFlags.GlossyReflection)
+            bs.sampled_component = mi.UInt32(0)
+            ok = active & (bs.pdf > 0)
+            return bs, dr.select(ok, _colour(mi, weight), 0.0)
+
+        def traverse(self, callback):
+            pass
+
+        def to_string(self):
+            return f"CnlmBSDF[{self.lanes.material.get('name', '')}]"
+
+    return CnlmBSDF

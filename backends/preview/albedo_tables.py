@@ -1,0 +1,79 @@
+"""Per-material directional albedo tables for the split-sum tier (docs/preview.md).
+
+The split-sum approximation (Karis 2013) multiplies the prefiltered environment by the
+directional albedo of the lobe. A generic (F0 A + B) LUT stands in for that albedo with
+Schlick's Fresnel; here it is integrated from the material's own BSDF instead (the numpy
+reference, with the shader's Fresnel mode and multiscatter switch), so exact conductor
+Fresnel, F82 tints, Oren–Nayar and the dielectric's (1 − F)(1 − F) diffuse weighting are
+what the tier shows:
+
+    spec(μ)    = ∫ f_spec(wo, wi) cos θi dωi         (conductor: with a white tint)
+    diffuse(μ) = ∫ f_diffuse(wo, wi) cos θi dωi / ρ   (per unit base colour)
+
+One row when α is uniform; ROWS rows over sqrt(α) when a roughness map varies it.
+"""
+from __future__ import annotations
+
+import json
+from functools import lru_cache
+
+import numpy as np
+
+MU_SIZE = 32
+ROWS = 8
+SAMPLES = 512
+
+
+def _variant(material: dict, colour, alpha=None) -> dict:
+    params = {**material["params"], "base_color": list(colour)}
+    if alpha is not None:
+        params["alpha"] = list(alpha)
+    return {**material, "params": params}
+
+
+def _row_alphas(material: dict, mapped: bool) -> list:
+    """(αx, αy) per row: the material's own, or sqrt(α) at texel centres with its anisotropy."""
+    from cnlmc.bsdf.alpha import anisotropy_stretch
+    from cnlmc.bsdf.evaluate import material_alpha
+    if not mapped:
+        return [tuple(float(a) for a in material_alpha(material))]
+    params = material["params"]
+    aniso = float(params.get("anisotropy") or 0.0) if material["model"].get("anisotropic") else 0.0
+    s = float(anisotropy_stretch(aniso))
+    rows = (((np.arange(ROWS) + 0.5) / ROWS) ** 2)
+    return [(min(max(a / s, 1e-3), 1.0), min(max(a * s, 1e-3), 1.0)) for a in rows]
+
+
+def _directional(material: dict, options: dict) -> np.ndarray:
+    """(MU_SIZE, 3) directional albedo at the texel centres of cos θo (azimuth-averaged
+    when anisotropic)."""
+    from cnlmc.bsdf.evaluate import albedo
+    mus = (np.arange(MU_SIZE) + 0.5) / MU_SIZE
+    phis = (0.0, np.pi / 4, np.pi / 2) if material["model"].get("anisotropic") else (0.0,)
+    return np.array([np.mean([albedo(material, mu, SAMPLES, phi, **options) for phi in phis], 0) for mu in mus])
+
+
+@lru_cache(maxsize=64)
+def _tables(material_json: str, fresnel: str, multiscatter: bool, mapped: bool) -> tuple:
+    material = json.loads(material_json)
+    options = {"fresnel": fresnel, "multiscatter": multiscatter}
+    base = material["model"]["base"]
+    spec_rows, diffuse_rows = [], []
+    for alpha in _row_alphas(material, mapped):
+        black = _directional(_variant(material, (0, 0, 0), alpha), options) if base != "conductor" else None
+        white = _directional(_variant(material, (1, 1, 1), alpha), options)
+        if base == "conductor":
+            spec_rows.append(white)
+            diffuse_rows.append(np.zeros_like(white))
+        else:
+            spec_rows.append(black)
+            diffuse_rows.append(white - black)
+    return np.array(spec_rows, np.float32), np.array(diffuse_rows, np.float32)
+
+
+def albedo_tables(material: dict, fresnel: str = "exact", multiscatter: bool = False,
+                  mapped_roughness: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    """(spec, diffuse) tables, each (rows, MU_SIZE, 3) float32: row = sqrt(α) texel,
+    column = cos θo texel. Cached by the material's model and parameters."""
+    key = json.dumps({"model": material["model"], "params": material["params"]}, sort_keys=True, default=float)
+    return _tables(key, fresnel, bool(multiscatter), bool(mapped_roughness))
