@@ -4,10 +4,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from .records import record
 from .spans import Span
 
 
-@dataclass(frozen=True)
+@record
 class Word:
     """A tagged word: its surface text, its lexicon key and category, and where it stands."""
 
@@ -18,7 +19,7 @@ class Word:
     unknown: bool = False
 
 
-@dataclass(frozen=True)
+@record
 class Colour:
     """Shade words then a colour word ("dark slate blue"), or shades alone ("dark")."""
 
@@ -31,7 +32,7 @@ class Colour:
         return self.shades + ((self.base,) if self.base else ())
 
 
-@dataclass(frozen=True)
+@record
 class Group:
     """Adverbs, colour alternatives and adjective alternatives: "lightly brushed", "red or blue anodized"."""
 
@@ -42,14 +43,14 @@ class Group:
     span: Span
 
 
-@dataclass(frozen=True)
+@record
 class Coat:
     groups: tuple[Group, ...]
     coat: Word
     span: Span
 
 
-@dataclass(frozen=True)
+@record
 class Material:
     name: Word | None
     groups: tuple[Group, ...]
@@ -59,14 +60,14 @@ class Material:
     text: str
 
 
-@dataclass(frozen=True)
+@record
 class RefineItem:
     word: Word
     target: Word | Colour | None
     span: Span
 
 
-@dataclass(frozen=True)
+@record
 class Refinement:
     name: Word | None
     items: tuple[RefineItem, ...]

@@ -63,6 +63,16 @@ class Lexicon:
             self._multi_first = {form[0] for form in self.forms if len(form) > 1}
         return self._multi_first
 
+    def multi_word_lengths(self) -> dict[str, tuple[int, ...]]:
+        """First word -> the word counts (> 1) of the forms it starts, longest first."""
+        if getattr(self, "_multi_lengths", None) is None:
+            lengths: dict[str, set[int]] = {}
+            for form in self.forms:
+                if len(form) > 1:
+                    lengths.setdefault(form[0], set()).add(len(form))
+            self._multi_lengths = {first: tuple(sorted(ns, reverse=True)) for first, ns in lengths.items()}
+        return self._multi_lengths
+
     def entry(self, category: str, key: str) -> Entry | None:
         return self.entries.get(category, {}).get(key)
 

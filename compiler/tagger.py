@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from .diagnostics import did_you_mean, error
 from .lexicon import Lexicon
-from .spans import line_span
+from .spans import Span, line_span
 
 TOKEN_RE = re.compile(r"[^\W\d_](?:[\w'’\-]*\w)?|\d+(?:\.\d+)?%?|[,;:&]|\S", re.UNICODE)
 OPEN_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "REFINE")
@@ -39,6 +39,8 @@ class Tagged:
 
 def raw_tokens(line: str) -> list[tuple[str, int]]:
     """(text, 0-based column) of each word or punctuation mark; '#' starts a comment."""
+    if "#" not in line:
+        return [(match.group(), match.start()) for match in TOKEN_RE.finditer(line)]
     out = []
     for match in TOKEN_RE.finditer(line):
         if match.group() == "#":
@@ -52,21 +54,34 @@ class Tagger:
         self.lexicon = lexicon
         self.keywords = lexicon.keywords
         self.multi_first = lexicon.multi_word_starts()
+        self.lengths_from = lexicon.multi_word_lengths()
         self.memo = lexicon.tag_memo
 
     def tag_line(self, line: str, line_no: int, offset: int):
         """Return (tagged words, diagnostics) for one line of source."""
         raw = raw_tokens(line)
         tagged, diags = [], []
-        start = self._name_prefix(raw, line_no, offset, tagged)
-        i = start
+        i = self._name_prefix(line, raw, line_no, offset, tagged)
+        memo, multi_first = self.memo, self.multi_first
         while i < len(raw):
-            used = self._tag_at(raw, i, line_no, offset, tagged, diags)
-            i += used
+            text, col = raw[i]
+            low = text.lower()
+            if low not in multi_first:  # the common case: a known one-word entry
+                candidates = memo.get((low,))
+                if candidates is None:
+                    candidates = self._candidates((low,))
+                if candidates:
+                    start = offset + col
+                    tagged.append(Tagged(text, Span(start, start + len(text), line_no, col + 1), candidates))
+                    i += 1
+                    continue
+            i += self._tag_at(raw, i, line_no, offset, tagged, diags)
         return tagged, diags
 
-    def _name_prefix(self, raw, line_no, offset, tagged) -> int:
+    def _name_prefix(self, line, raw, line_no, offset, tagged) -> int:
         """'hull: ...' -> NAME COLON; the name may be several words."""
+        if ":" not in line:
+            return 0
         colon = next((j for j, (t, _c) in enumerate(raw) if t == ":"), None)
         if not colon:
             return 0
@@ -78,21 +93,18 @@ class Tagger:
         return colon + 1
 
     def _tag_at(self, raw, i, line_no, offset, tagged, diags) -> int:
-        text, col = raw[i]
-        low = text.lower()
-        if low not in self.multi_first:  # the common case: a one-word entry
-            candidates = self._candidates((low,))
-            if candidates:
-                tagged.append(Tagged(text, line_span(line_no, col + 1, len(text), offset), candidates))
-                return 1
-            tagged.append(self._unknown(raw[i], line_no, offset, diags))
+        """Tag the entry starting at raw[i], longest multi-word form first; returns how many words it took."""
+        text = raw[i][0]
+        for n in self.lengths_from.get(text.lower(), ()):
+            if i + n <= len(raw):
+                candidates = self._candidates(tuple([t.lower() for t, _c in raw[i:i + n]]))
+                if candidates:
+                    tagged.append(Tagged(" ".join(t for t, _c in raw[i:i + n]), self._span(raw, i, n, line_no, offset), candidates))
+                    return n
+        candidates = self._candidates((text.lower(),))
+        if candidates:
+            tagged.append(Tagged(text, self._span(raw, i, 1, line_no, offset), candidates))
             return 1
-        for n in range(min(self.lexicon.max_form_words, len(raw) - i), 0, -1):
-            words = tuple(t.lower() for t, _c in raw[i:i + n])
-            candidates = self._candidates(words)
-            if candidates:
-                tagged.append(Tagged(" ".join(t for t, _c in raw[i:i + n]), self._span(raw, i, n, line_no, offset), candidates))
-                return n
         tagged.append(self._unknown(raw[i], line_no, offset, diags))
         return 1
 
