@@ -142,7 +142,7 @@ def _plugin_class():
         def __init__(self, props):
             mi.BSDF.__init__(self, props)
             material = json.loads(props["material"])
-            textures = {role: props[role] for role in ("base_color", "roughness", "mask") if props.has_property(role)}
+            textures = {role: props[role] for role in ("base_color", "roughness", "mask") if role in props}
             self.lanes = LaneModel(material, textures)
             flags = mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide
             if material["model"].get("anisotropic"):
