@@ -7,8 +7,9 @@ reference, with the shader's Fresnel mode and multiscatter switch), so exact con
 Fresnel, F82 tints, Oren–Nayar and the dielectric's (1 − F)(1 − F) diffuse weighting are
 what the tier shows:
 
-    spec(μ)    = ∫ f_spec(wo, wi) cos θi dωi         (conductor: with a white tint)
-    diffuse(μ) = ∫ f_diffuse(wo, wi) cos θi dωi / ρ   (per unit base colour)
+    black(μ) = ∫ f(wo, wi; ρ = 0) cos θi dωi                 (dielectric lobe, coat)
+    tint(μ)  = ∫ f(wo, wi; ρ = 1) cos θi dωi − black(μ)      (diffuse, or the conductor lobe)
+f is affine in the base colour ρ, so f(ρ) = black + ρ · tint exactly.
 
 One row when α is uniform; ROWS rows over sqrt(α) when a roughness map varies it.
 """
@@ -57,23 +58,18 @@ def _directional(material: dict, options: dict) -> np.ndarray:
 def _tables(material_json: str, fresnel: str, multiscatter: bool, mapped: bool) -> tuple:
     material = json.loads(material_json)
     options = {"fresnel": fresnel, "multiscatter": multiscatter}
-    base = material["model"]["base"]
-    spec_rows, diffuse_rows = [], []
+    black_rows, tint_rows = [], []
     for alpha in _row_alphas(material, mapped):
-        black = _directional(_variant(material, (0, 0, 0), alpha), options) if base != "conductor" else None
+        black = _directional(_variant(material, (0, 0, 0), alpha), options)
         white = _directional(_variant(material, (1, 1, 1), alpha), options)
-        if base == "conductor":
-            spec_rows.append(white)
-            diffuse_rows.append(np.zeros_like(white))
-        else:
-            spec_rows.append(black)
-            diffuse_rows.append(white - black)
-    return np.array(spec_rows, np.float32), np.array(diffuse_rows, np.float32)
+        black_rows.append(black)
+        tint_rows.append(white - black)
+    return np.array(black_rows, np.float32), np.array(tint_rows, np.float32)
 
 
 def albedo_tables(material: dict, fresnel: str = "exact", multiscatter: bool = False,
                   mapped_roughness: bool = False) -> tuple[np.ndarray, np.ndarray]:
-    """(spec, diffuse) tables, each (rows, MU_SIZE, 3) float32: row = sqrt(α) texel,
-    column = cos θo texel. Cached by the material's model and parameters."""
+    """(black, tint) tables, each (rows, MU_SIZE, 3) float32: row = sqrt(α) texel of the base
+    lobe, column = cos θo texel. Cached by the material's model and parameters."""
     key = json.dumps({"model": material["model"], "params": material["params"]}, sort_keys=True, default=float)
     return _tables(key, fresnel, bool(multiscatter), bool(mapped_roughness))

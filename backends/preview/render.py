@@ -18,7 +18,6 @@ from . import gl
 from .albedo_tables import albedo_tables
 from .camera import Camera, framing_camera
 from .environment import Environment, environment, irradiance_sh9
-from .lut import brdf_lut
 from .meshes import Mesh, fit, mesh_by_name
 from .tiers import DEFAULT_TIER, Tier, parse_tier
 
@@ -26,6 +25,7 @@ MICROFACET = ("dielectric", "conductor", "glass")
 GLSL_OPTION_KEYS = ("fresnel", "multiscatter", "specialize")
 PREFILTER_LEVELS = 5
 PREFILTER_SAMPLES = 256
+IRRADIANCE_SIZE, IRRADIANCE_SAMPLES = (64, 32), 2048
 MAP_SIZE = 512
 #: MSAA costs 4x the object pass on llvmpipe (docs/preview.md): off, with the tone map's edge filter.
 DEFAULT_MSAA = 0
@@ -89,7 +89,7 @@ def material_shader(material: dict, glsl_options: dict | None = None) -> Materia
 # ------------------------------------------------------------------ GPU resources
 
 class EnvResources:
-    """Environment textures: radiance (mip-mapped), GGX-prefiltered levels, SH irradiance, LUT."""
+    """Environment textures: radiance (mip-mapped), GGX-prefiltered levels, SH irradiance."""
 
     def __init__(self, env: Environment):
         self.env = env
@@ -97,9 +97,9 @@ class EnvResources:
         self.size = (env.image.shape[1], env.image.shape[0])
         self.sh9 = irradiance_sh9(env.image)
         self.mean = env.mean_radiance
-        self.lut = gl.float_texture(brdf_lut(), mipmaps=False, repeat=(False, False))
         self.prefiltered = self._prefilter()
         self._at_alpha: dict = {}
+        self._irradiance = None
 
     def prefiltered_at(self, alpha: float):
         """The environment prefiltered at exactly this GGX alpha (full resolution, one level;
@@ -109,7 +109,15 @@ class EnvResources:
             self._at_alpha[key] = self._prefilter_level(key)
         return self._at_alpha[key]
 
-    def _prefilter_pass(self, alpha: float, size: tuple, samples: int) -> np.ndarray:
+    @property
+    def irradiance(self):
+        """E(n) / pi as a small equirect texture (cosine-weighted prefilter), made on first use."""
+        if self._irradiance is None:
+            data = self._prefilter_pass(1.0, IRRADIANCE_SIZE, IRRADIANCE_SAMPLES, cosine=True)
+            self._irradiance = gl.float_texture(data, mipmaps=False, repeat=(True, False))
+        return self._irradiance
+
+    def _prefilter_pass(self, alpha: float, size: tuple, samples: int, cosine: bool = False) -> np.ndarray:
         """One pass of prefilter.frag at `alpha` into a (h, w, 3) float32 array."""
         import moderngl
         ctx = gl.current()
@@ -120,6 +128,7 @@ class EnvResources:
         gl.set_uniform(prog, "pv_samples", samples)
         gl.set_uniform(prog, "pv_env_size", self.size)
         gl.set_uniform(prog, "pv_alpha", alpha)
+        gl.set_uniform(prog, "pv_cosine", int(cosine))
         target = ctx.texture(size, 4, dtype="f4")
         fbo = ctx.framebuffer([target])
         fbo.use()
@@ -279,28 +288,29 @@ def map_textures(material: dict, samplers: list, size: int = MAP_SIZE, seed: int
 _SPLIT_TABLES: dict = {}
 
 
-def specialized_split(plan: dict) -> bool:
-    """The split-sum tier uses the material's own albedo tables (and, with a uniform alpha, an
-    environment prefiltered at exactly that alpha) for every uncoated model; coats keep the
-    generic LUT (their layering is not a sum of two lobes)."""
-    return not plan["coat"]
-
-
 def split_textures(material: dict, plan: dict, res: EnvResources, glsl_options: dict | None) -> dict:
-    """sampler name -> texture for the specialized split-sum tier (docs/preview.md)."""
-    from cnlmc.bsdf.evaluate import material_alpha
+    """sampler name -> texture for the split-sum tier: the material's albedo tables, and the
+    environment prefiltered at exactly the base's and the coat's alpha when they are uniform."""
+    from cnlmc.bsdf.evaluate import coat_alpha, material_alpha
     opts = glsl_options or {}
     fresnel, multiscatter = str(opts.get("fresnel", "exact")), str(opts.get("multiscatter", "off")) == "on"
     key = (json.dumps([material["model"], material["params"]], sort_keys=True, default=str), fresnel, multiscatter,
            plan["roughness_map"])
     if key not in _SPLIT_TABLES:
-        spec, diffuse = albedo_tables(material, fresnel, multiscatter, plan["roughness_map"])
+        black, tint = albedo_tables(material, fresnel, multiscatter, plan["roughness_map"])
         flat = lambda table: gl.float_texture(table, mipmaps=False, repeat=(False, False))  # noqa: E731
-        _SPLIT_TABLES[key] = {"pv_spec_albedo": flat(spec), "pv_diffuse_albedo": flat(diffuse)}
+        _SPLIT_TABLES[key] = {"pv_black_albedo": flat(black), "pv_tint_albedo": flat(tint)}
     textures = dict(_SPLIT_TABLES[key])
+    textures["pv_env_irradiance"] = res.irradiance
+    params = material["params"]
+    coat = params.get("coat") if plan["coat"] else None
     if plan["microfacet"] and not plan["roughness_map"]:
         ax, ay = (float(a) for a in material_alpha(material))
-        textures["pv_env_material"] = res.prefiltered_at(max(np.sqrt(ax * ay), 1e-3))
+        widen = float(coat.get("ior", 1.5)) if coat and plan["base"] == "conductor" else 1.0
+        textures["pv_env_material"] = res.prefiltered_at(min(max(np.sqrt(ax * ay), 1e-3) * widen, 1.0))
+    if coat:
+        cx, cy = (float(a) for a in coat_alpha(coat, params.get("alpha_convention", "squared")))
+        textures["pv_env_coat"] = res.prefiltered_at(max(np.sqrt(cx * cy), 1e-3))
     return textures
 
 
@@ -357,7 +367,7 @@ class Renderer:
         return _VAOS[key]
 
     def _bind_environment(self, prog, res: EnvResources, scene: Scene, tier: Tier, first_unit: int) -> int:
-        units = {"pv_env": res.radiance, "pv_env_prefiltered": res.prefiltered, "pv_brdf_lut": res.lut}
+        units = {"pv_env": res.radiance, "pv_env_prefiltered": res.prefiltered}
         for offset, (name, tex) in enumerate(units.items()):
             tex.use(first_unit + offset)
             gl.set_uniform(prog, name, first_unit + offset)
@@ -390,7 +400,7 @@ class Renderer:
         import moderngl
         prog = self.object_program(shader, tier)
         textures = dict(map_textures(material, shader.samplers))
-        if tier.ibl == "splitsum" and specialized_split(shader.plan):
+        if tier.ibl == "splitsum":
             textures.update(split_textures(material, shader.plan, res, glsl_options))
         for unit, (name, tex) in enumerate(textures.items()):
             tex.use(unit)

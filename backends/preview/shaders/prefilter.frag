@@ -6,6 +6,7 @@ uniform sampler2D pv_env;
 uniform float pv_alpha;
 uniform int pv_samples;
 uniform vec2 pv_env_size;
+uniform int pv_cosine;     // 1: cosine lobe around n (irradiance / pi) instead of GGX
 out vec4 pv_color;
 const float PV_PI = 3.14159265358979;
 
@@ -41,15 +42,20 @@ void main() {
         float phi = 2.0 * PV_PI * xi.y;
         vec3 h = vec3(sin_h * cos(phi), sin_h * sin(phi), cos_h);
         vec3 l = 2.0 * h.z * h - vec3(0.0, 0.0, 1.0);
-        if (l.z <= 0.0) continue;
         float denom = cos_h * cos_h * (a2 - 1.0) + 1.0;
-        float d = a2 / (PV_PI * denom * denom);
-        float pdf = d / 4.0;                                  // n = v: pdf(l) = D(h) cos_h / (4 h.l)
+        float pdf = a2 / (PV_PI * denom * denom) / 4.0;      // n = v: pdf(l) = D(h) cos_h / (4 h.l)
+        if (pv_cosine == 1) {                                // cosine-distributed l, weight 1
+            float cos_l = sqrt(1.0 - xi.x);
+            l = vec3(sqrt(xi.x) * cos(phi), sqrt(xi.x) * sin(phi), cos_l);
+            pdf = cos_l / PV_PI;
+        }
+        if (l.z <= 0.0) continue;
         vec3 w = t * l.x + b * l.y + n * l.z;
         float texel = 4.0 * PV_PI / (pv_env_size.x * pv_env_size.y);
         float lod = max(0.5 * log2((1.0 / (float(pv_samples) * pdf)) / texel) + 1.0, 0.0);
-        sum += textureLod(pv_env, pv_uv(w), lod).rgb * l.z;
-        weight += l.z;
+        float w_l = pv_cosine == 1 ? 1.0 : l.z;
+        sum += textureLod(pv_env, pv_uv(w), lod).rgb * w_l;
+        weight += w_l;
     }
     pv_color = vec4(sum / max(weight, 1e-6), 1.0);
 }
