@@ -45,11 +45,18 @@ def invert_op(op: str, x, value, weight: float = 1.0, amount: float | None = Non
     raise ValueError(f"unknown formula op '{op}'")
 
 
+OP_SIGNS = {"set": "=", "mul": "*=", "add": "+="}
+
+
 def describe(effect: dict, weight: float) -> str:
     """'roughness *= 1.2' style text for provenance and explain."""
     op, value = effect["op"], effect.get("value")
-    text = {"set": f"= {value}", "mul": f"*= {value}", "add": f"+= {value}",
-            "blend": f"blend to {value} by {effect.get('amount', 1.0)}"}[op]
+    if op in OP_SIGNS:
+        text = f"{OP_SIGNS[op]} {value}"
+    elif op == "blend":
+        text = f"blend to {value} by {effect.get('amount', 1.0)}"
+    else:
+        raise KeyError(op)
     suffix = f" (weight {weight:g})" if weight != 1.0 else ""
     return f"{effect['param']} {text}{suffix}"
 
@@ -79,10 +86,27 @@ def rounded(value, digits: int = 6):
     if kind is float:
         return round6(value)
     if kind is list:
-        return [round6(v) if type(v) is float else rounded(v) for v in value]
+        return round6_list(value)
     if kind is dict:
         return {k: round6(v) if type(v) is float else rounded(v) for k, v in value.items()}
     return value
+
+
+def round6_list(values: list) -> list:
+    """rounded() of a list, with round6 written out for its floats (colours and optics are lists)."""
+    out = []
+    for v in values:
+        if type(v) is not float:
+            out.append(rounded(v))
+            continue
+        y = v * 1e6
+        if -1e12 < y < 1e12:
+            n = round(y)
+            if -0.499 < y - n < 0.499:
+                out.append(n / 1e6)
+                continue
+        out.append(round(v, 6) or 0.0)
+    return out
 
 
 def _rounded_to(value, digits: int):

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from .conventions import alpha_of
-from .formulas import rounded
+from .formulas import round6_list, rounded
 from .state import MaterialState
 
 IR_VERSION = 1
@@ -23,25 +23,26 @@ def material_ir(state: MaterialState, convention: str) -> dict:
         "phrase": state.phrase,
         "variant": state.variant,
         "model": model,
-        "params": rounded(_params(state, model, convention)),
+        "params": _params(state, model, convention),
         "maps": rounded(state.maps),
         "provenance": _provenance(state),
     }
 
 
 def _params(state: MaterialState, model: dict, convention: str) -> dict:
+    """The parameters the model uses, rounded."""
     p = state.params
-    out = {k: p[k] for k in PARAMS_BY_MODEL[model["base"]] if k in p}
+    out = {k: rounded(p[k]) for k in PARAMS_BY_MODEL[model["base"]] if k in p}
     if model["diffuse"] == "oren_nayar":
-        out["diffuse_roughness"] = p.get("diffuse_roughness", 0.0)
+        out["diffuse_roughness"] = rounded(p.get("diffuse_roughness", 0.0))
     if model["base"] != "diffuse":
         aniso = p.get("anisotropy", 0.0) if model["anisotropic"] else 0.0
-        out["alpha"] = alpha_of(p["roughness"], aniso, convention)
+        out["alpha"] = round6_list(alpha_of(p["roughness"], aniso, convention))
         out["alpha_convention"] = convention
     if model["anisotropic"]:
-        out["anisotropy"] = p["anisotropy"]
-        out["anisotropy_rotation"] = p.get("anisotropy_rotation", 0.0)
-    out["coat"] = _coat(state.coat, convention) if model["coat"] else None
+        out["anisotropy"] = rounded(p["anisotropy"])
+        out["anisotropy_rotation"] = rounded(p.get("anisotropy_rotation", 0.0))
+    out["coat"] = rounded(_coat(state.coat, convention)) if model["coat"] else None
     return out
 
 
@@ -54,8 +55,9 @@ def _coat(coat: dict, convention: str) -> dict:
 
 
 def _provenance(state: MaterialState) -> dict:
-    memo: dict = {}
-    return {param: [step.to_json(memo) for step in steps] for param, steps in state.provenance.items()}
+    """param -> its steps in JSON form; steps naming the same words share their word lists."""
+    shared: dict = {}
+    return {param: [step.to_json(shared) for step in steps] for param, steps in state.provenance.items()}
 
 
 def document_ir(materials: list[dict], diagnostics: list, source_name: str, lexicon_sources) -> dict:

@@ -25,16 +25,16 @@ class Step:
 
     def to_json(self, memo: dict | None = None) -> dict:
         """The JSON form; `memo` shares the word lists of steps that name the same words."""
-        memo = {} if memo is None else memo
-        key = id(self.words)
-        if key not in memo:
-            memo[key] = (self.texts, [w.span.as_list() for w in self.words])
-        texts, spans = memo[key]
-        value = self.value if self.source else rounded(self.value)  # lexicon values are exact
-        out = {"rule": self.rule, "words": texts, "spans": spans, "value": value}
-        if self.source:
-            out["source"] = self.source
-        return out
+        words = self.words
+        shared = None if memo is None else memo.get(id(words))
+        if shared is None:
+            shared = ([w.text for w in words], [w.span.as_list() for w in words])
+            if memo is not None:
+                memo[id(words)] = shared
+        if self.source:  # lexicon values are exact
+            return {"rule": self.rule, "words": shared[0], "spans": shared[1], "value": self.value,
+                    "source": self.source}
+        return {"rule": self.rule, "words": shared[0], "spans": shared[1], "value": rounded(self.value)}
 
 
 @dataclass

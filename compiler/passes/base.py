@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..state import NOUN_PARAMS, Context, MaterialState
+from ..state import NOUN_PARAMS, Context, MaterialState, Step
 
 
 def noun_word(state: MaterialState):
@@ -14,13 +14,15 @@ def apply_noun(state: MaterialState, ctx: Context) -> MaterialState:
     entry = ctx.lexicon.entry("nouns", word.key)
     state.noun = entry
     state.kind = entry.get("model")
-    rule, words, source = f"nouns.{entry.key}", (word,), entry.get("source")
-    for param in NOUN_PARAMS:
-        if param in entry.data:
-            state.record(param, entry.get(param), rule, words, source=source)
-    state.params.setdefault("diffuse_roughness", 0.0)
-    state.params.setdefault("anisotropy", 0.0)
-    state.params.setdefault("anisotropy_rotation", 0.0)
+    rule, words, data = f"nouns.{entry.key}", (word,), entry.data
+    source, params, provenance = data.get("source"), state.params, state.provenance
+    for param in NOUN_PARAMS:  # state.record, written out: nouns set up to eight parameters
+        if param in data:
+            value = params[param] = data[param]
+            provenance.setdefault(param, []).append(Step(rule, words, value, source))
+    params.setdefault("diffuse_roughness", 0.0)
+    params.setdefault("anisotropy", 0.0)
+    params.setdefault("anisotropy_rotation", 0.0)
     for role, ref in entry.get("maps", {}).items():
         state.maps[role] = _map_ref(ref, ctx)
         state.note(f"maps.{role}", ref["graph"], f"nouns.{entry.key}.maps", (word,))

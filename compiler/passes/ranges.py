@@ -24,27 +24,34 @@ def clamp(value, low: float, high: float):
 
 
 def check_ranges(state: MaterialState, ctx: Context) -> MaterialState:
-    for param, (low, high) in RANGES.items():
-        _check(state, state.params, param, param, low, high)
+    _check_all(state, state.params, RANGES, "")
     if state.coat is not None:
-        for param, (low, high) in COAT_RANGES.items():
-            _check(state, state.coat, param, f"coat.{param}", low, high)
+        _check_all(state, state.coat, COAT_RANGES, "coat.")
     for role, ref in state.maps.items():
-        for param, (low, high, _default) in graph_params(ref["graph"]).items():
-            _check(state, ref["params"], param, f"maps.{role}.{param}", low, high)
+        _check_all(state, ref["params"], graph_params(ref["graph"]), f"maps.{role}.")
     return state
 
 
+def _check_all(state, holder: dict, ranges: dict, prefix: str) -> None:
+    """`ranges`: param -> (low, high, ...)."""
+    for param, bounds in ranges.items():
+        value = holder.get(param)
+        if value is not None and not _in_range(value, bounds[0], bounds[1]):
+            _clamp(state, holder, param, prefix + param, bounds[0], bounds[1])
+
+
 def _in_range(value, low: float, high: float) -> bool:
-    if type(value) is list:
-        return all(type(v) in (int, float) and low <= v <= high for v in value)
-    return type(value) in (int, float) and low <= value <= high  # NaN fails both comparisons
+    if type(value) is not list:
+        return (type(value) is float or type(value) is int) and low <= value <= high  # NaN fails both
+    for v in value:
+        if not ((type(v) is float or type(v) is int) and low <= v <= high):
+            return False
+    return True
 
 
-def _check(state, holder: dict, param: str, name: str, low: float, high: float) -> None:
-    value = holder.get(param)
-    if value is None or _in_range(value, low, high):
-        return
+def _clamp(state, holder: dict, param: str, name: str, low: float, high: float) -> None:
+    """Clamp an out-of-range value, with a W107 naming the words that set it."""
+    value = holder[param]
     fixed = clamp(value, low, high)
     holder[param] = fixed
     steps = state.provenance.get(name, [])

@@ -15,6 +15,7 @@ from .. import ast
 from ..diagnostics import error
 
 MAX_VARIANTS = 64
+NON_WORD = re.compile(r"\W+", re.ASCII)
 
 
 def ascii_fold(text: str) -> str:
@@ -27,7 +28,7 @@ def ascii_fold(text: str) -> str:
 
 def identifier(text: str) -> str:
     """A safe identifier from any text: letters, digits and '_', not starting with a digit."""
-    name = re.sub(r"\W+", "_", ascii_fold(text).strip().lower(), flags=re.ASCII).strip("_") or "material"
+    name = NON_WORD.sub("_", ascii_fold(text).strip().lower()).strip("_") or "material"
     return "m_" + name if name[0].isdigit() else name
 
 

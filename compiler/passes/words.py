@@ -131,7 +131,23 @@ def _apply_effect(state, holder, effect: dict, weight: float, rule: str, words) 
     value = apply_op(effect["op"], current, effect.get("value"), weight, effect.get("amount"))
     holder[param] = value
     name = param if holder is state.params else f"coat.{param}"
-    state.note(name, value, f"{rule}: {describe(effect, weight)}", words)
+    state.note(name, value, _effect_rule(rule, effect, weight), words)
+
+
+_EFFECT_RULES: dict = {}  # (id(effect), weight, rule) -> (effect, rule text); the effect is kept to check identity
+
+
+def _effect_rule(rule: str, effect: dict, weight: float) -> str:
+    """'adjectives.brushed: roughness *= 1.2 (weight 0.5)', made once per lexicon effect and weight."""
+    if not weight > 0:  # -0.0 would share 0.0's entry but prints differently; NaN never matches
+        return f"{rule}: {describe(effect, weight)}"
+    key = (id(effect), weight, rule)
+    found = _EFFECT_RULES.get(key)
+    if found is None or found[0] is not effect:
+        if len(_EFFECT_RULES) >= 4096:
+            _EFFECT_RULES.clear()
+        found = _EFFECT_RULES[key] = (effect, f"{rule}: {describe(effect, weight)}")
+    return found[1]
 
 
 def _switch_kind(state, kind: str, rule: str, words) -> None:
