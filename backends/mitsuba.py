@@ -30,7 +30,8 @@ TEXTURED_ALPHA = ("roughconductor", "roughdielectric")   # roughplastic's alpha 
 BAKED = ("bake", "procedural graph baked to a bitmap texture")
 CAPABILITIES = {
     "model.diffuse": ("exact", ""),
-    "model.dielectric": ("exact", ""),
+    "model.dielectric": ("approximate", "roughplastic layers its diffuse base differently (rough-interface "
+                         "transmittance and internal re-reflection, not (1 - F)(1 - F)); bsdf=cnlm renders cnlmc's own"),
     "model.conductor": ("exact", ""),
     "model.glass": ("exact", ""),
     "distribution.ggx": ("exact", ""),
@@ -48,6 +49,9 @@ CAPABILITIES = {
     "maps.mask": ("drop", "a mask has no shading input of its own (the colour and roughness maps it drives are kept)"),
 }
 assert set(CAPABILITIES) == set(ALL_FEATURES)
+#: bsdf=cnlm: the plugin evaluates cnlmc's BSDF itself; like the GLSL backend it has no metallic map.
+CNLM_CAPABILITIES = {feature: ("exact", "") for feature in ALL_FEATURES}
+CNLM_CAPABILITIES["maps.metallic"] = ("drop", "no IR model reads a metallic map")
 USED_MAPS = ("base_color", "roughness", "normal")
 #: `bsdf=cnlm`: cnlmc's own BSDF through the `cnlm` plugin (backends/mitsuba_cnlm.py), which
 #: reads these maps itself (normals still go through `normalmap`).
@@ -299,8 +303,7 @@ def emit(ir: dict, options: dict) -> EmitResult:
     notes, entries, images = [], [], []
     for material, ident in zip(materials, unique_identifiers(m["name"] for m in materials)):
         cnlm = uses_cnlm(material, opts)
-        if not cnlm:
-            check_material(notes, NAME, caps, material)
+        check_material(notes, NAME, capabilities_for(CNLM_CAPABILITIES, opts) if cnlm else caps, material)
         alpha_maps = None if cnlm else AlphaMaps(material)
         tex, baked = bake_textures(material, ident, opts, roles=CNLM_MAPS if cnlm else USED_MAPS, derive=alpha_maps)
         if alpha_maps and alpha_maps.mean_alpha is not None and plugin_for(material) == "roughplastic":

@@ -137,3 +137,11 @@ def test_a_lambert_material_renders_as_mitsubas_own_diffuse(mi, tmp_path):
     inside = images["native"][..., 3] > 0.99
     ratio = images["cnlm"][inside, :3].mean(0) / images["native"][inside, :3].mean(0)
     np.testing.assert_allclose(ratio, 1.0, atol=0.02)
+
+
+def test_native_plugins_warn_where_they_approximate_and_cnlm_does_not():
+    ir = compile_source("terracotta\n").ir
+    native = [n.text() for n in mitsuba.emit(ir, {"form": "fragment"}).notes]
+    cnlm = [n.text() for n in mitsuba.emit(ir, {"form": "fragment", "bsdf": "cnlm"}).notes]
+    assert any("oren_nayar" in t for t in native) and any("model.dielectric" in t for t in native)
+    assert cnlm == []
