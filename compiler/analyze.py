@@ -44,11 +44,16 @@ def material_name(material: ast.Material, used: dict) -> str:
     return unique
 
 
-def _name_words(material: ast.Material):
+def _name_words(material: ast.Material) -> list[str]:
+    """The first colour and first adjective of each group, then the first noun."""
+    words = []
     for group in material.groups:
-        for word in (*[w for c in group.colours[:1] for w in c.words], *group.adjectives[:1]):
-            yield word.text
-    yield material.nouns[0].text
+        if group.colours:
+            words += [w.text for w in group.colours[0].words]
+        if group.adjectives:
+            words.append(group.adjectives[0].text)
+    words.append(material.nouns[0].text)
+    return words
 
 
 def build_states(material: ast.Material, refinements, ctx: Context, name: str, diags: list) -> list[MaterialState]:

@@ -57,11 +57,15 @@ class Lexicon:
         self._suggest_pool = {}
         self.tag_memo = {}  # word tuple -> candidate tags (filled by the tagger)
 
-    def multi_word_starts(self) -> set[str]:
-        """First words of multi-word forms ("stainless" of "stainless steel")."""
-        if getattr(self, "_multi_first", None) is None:
-            self._multi_first = {form[0] for form in self.forms if len(form) > 1}
-        return self._multi_first
+    def multi_word_followers(self) -> dict[str, frozenset[str]]:
+        """First word of a multi-word form -> the words that can come second ("stainless" -> {"steel"})."""
+        if getattr(self, "_followers", None) is None:
+            followers: dict[str, set[str]] = {}
+            for form in self.forms:
+                if len(form) > 1:
+                    followers.setdefault(form[0], set()).add(form[1])
+            self._followers = {first: frozenset(seconds) for first, seconds in followers.items()}
+        return self._followers
 
     def multi_word_lengths(self) -> dict[str, tuple[int, ...]]:
         """First word -> the word counts (> 1) of the forms it starts, longest first."""

@@ -53,7 +53,7 @@ class Tagger:
     def __init__(self, lexicon: Lexicon):
         self.lexicon = lexicon
         self.keywords = lexicon.keywords
-        self.multi_first = lexicon.multi_word_starts()
+        self.followers = lexicon.multi_word_followers()
         self.lengths_from = lexicon.multi_word_lengths()
         self.memo = lexicon.tag_memo
 
@@ -62,12 +62,13 @@ class Tagger:
         raw = raw_tokens(line)
         tagged, diags = [], []
         i = self._name_prefix(line, raw, line_no, offset, tagged)
-        memo, multi_first = self.memo, self.multi_first
-        while i < len(raw):
+        memo, followers, count = self.memo, self.followers, len(raw)
+        while i < count:
             text, col = raw[i]
             low = text.lower()
-            if low not in multi_first:  # the common case: a known one-word entry
-                candidates = memo.get((low,))
+            seconds = followers.get(low)
+            if seconds is None or i + 1 == count or raw[i + 1][0].lower() not in seconds:
+                candidates = memo.get((low,))  # the common case: a one-word entry
                 if candidates is None:
                     candidates = self._candidates((low,))
                 if candidates:

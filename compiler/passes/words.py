@@ -28,7 +28,7 @@ def apply_groups(state: MaterialState, ctx: Context) -> MaterialState:
 
 
 def apply_group(state: MaterialState, ctx: Context, group: ast.Group, target: str) -> None:
-    if any(w.unknown for w in _group_words(group)):
+    if _has_unknown(group):
         return  # already reported as an unknown word
     if group.kind == "dangling":
         _warn_dangling(state, group)
@@ -41,11 +41,20 @@ def apply_group(state: MaterialState, ctx: Context, group: ast.Group, target: st
     apply_adjective(state, ctx, adjective, group, weight, target)
 
 
-def _group_words(group: ast.Group):
-    yield from group.adverbs
+def _has_unknown(group: ast.Group) -> bool:
+    for word in group.adverbs:
+        if word.unknown:
+            return True
     for c in group.colours:
-        yield from c.words
-    yield from group.adjectives
+        for word in c.shades:
+            if word.unknown:
+                return True
+        if c.base is not None and c.base.unknown:
+            return True
+    for word in group.adjectives:
+        if word.unknown:
+            return True
+    return False
 
 
 def _warn_dangling(state: MaterialState, group: ast.Group) -> None:
@@ -83,30 +92,37 @@ def apply_adjective(state, ctx, adjective, group: ast.Group, weight: float, targ
     word = group.adjectives[0]
     if not _applies(state, adjective, word):
         return
-    _check_opposition(state, ctx, adjective, word)
+    if state.applied:
+        _check_opposition(state, ctx, adjective, word)
     state.applied.append((adjective.key, word))
     words = (*group.adverbs, word)
     holder = state.coat if target == "coat" and state.coat is not None else state.params
+    rule, data = f"adjectives.{adjective.key}", adjective.data
     for effect in effects_for(adjective, state):
-        _apply_effect(state, holder, effect, weight, f"adjectives.{adjective.key}", words)
-    _apply_material(state, ctx, adjective, words)
-    _apply_maps(state, ctx, adjective, weight, words)
-    _apply_adjective_coat(state, ctx, adjective, words)
+        _apply_effect(state, holder, effect, weight, rule, words)
+    if data.get("material"):
+        _apply_material(state, ctx, adjective, words)
+    if data.get("maps"):
+        _apply_maps(state, ctx, adjective, weight, words)
+    if data.get("coat"):
+        _apply_adjective_coat(state, ctx, adjective, words)
     for c in group.colours:
         _apply_qualifier(state, ctx, adjective, c, group.adverbs)
 
 
 def effects_for(adjective, state) -> list[dict]:
     """The per-noun formula, else the per-class one, else the default (paper: brushed wood)."""
-    on = adjective.get("on", {})
-    noun = state.noun
-    return on.get(noun.key) or on.get(noun.get("class")) or adjective.get("effects", [])
+    data, noun = adjective.data, state.noun
+    on = data.get("on")
+    if on:
+        return on.get(noun.key) or on.get(noun.data.get("class")) or data.get("effects", [])
+    return data.get("effects", [])
 
 
 def _applies(state, adjective, word) -> bool:
-    classes = adjective.get("applies_to")
+    classes = adjective.data.get("applies_to")
     noun = state.noun
-    if not classes or noun.get("class") in classes or noun.key in classes:
+    if not classes or noun.data.get("class") in classes or noun.key in classes:
         return True
     note = adjective.get("applies_note", f"it applies to {', '.join(classes)}")
     state.diagnostics.append(warning(word.span, "W102", f"'{word.text}' does not apply to {noun.key}: {note}",
