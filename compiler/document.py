@@ -40,9 +40,10 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list)
         diags.append(error(Span(offset, offset + len(text), number, 1), "E004",
                            f"line is too long ({len(text)} characters; at most {MAX_LINE_CHARS})"))
         return None
-    tagged, tag_diags = tagger.tag_line(text, number, offset)
-    diags.extend(tag_diags)
-    words = [t for t in tagged if t.candidates]
+    words, tag_diags = tagger.tag_line(text, number, offset)
+    if tag_diags:  # only unknown words and characters may lack candidates
+        diags.extend(tag_diags)
+        words = [t for t in words if t.candidates]
     if not words:
         return None
     if len(words) > MAX_LINE_WORDS:

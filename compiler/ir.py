@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from .conventions import alpha_of
 from .formulas import round6_list, rounded
-from .state import MaterialState
+from .state import MaterialState, step_json
 
 IR_VERSION = 1
 
@@ -31,11 +31,15 @@ def material_ir(state: MaterialState, convention: str) -> dict:
 
 def _params(state: MaterialState, model: dict, convention: str) -> dict:
     """The parameters the model uses, rounded."""
-    p = state.params
-    out = {k: rounded(p[k]) for k in PARAMS_BY_MODEL[model["base"]] if k in p}
+    p, base = state.params, model["base"]
+    out = {}
+    for k in PARAMS_BY_MODEL[base]:
+        if k in p:
+            value = p[k]
+            out[k] = round6_list(value) if type(value) is list else rounded(value)
     if model["diffuse"] == "oren_nayar":
         out["diffuse_roughness"] = rounded(p.get("diffuse_roughness", 0.0))
-    if model["base"] != "diffuse":
+    if base != "diffuse":
         aniso = p.get("anisotropy", 0.0) if model["anisotropic"] else 0.0
         out["alpha"] = round6_list(alpha_of(p["roughness"], aniso, convention))
         out["alpha_convention"] = convention
@@ -57,7 +61,7 @@ def _coat(coat: dict, convention: str) -> dict:
 def _provenance(state: MaterialState) -> dict:
     """param -> its steps in JSON form; steps naming the same words share their word lists."""
     shared: dict = {}
-    return {param: [step.to_json(shared) for step in steps] for param, steps in state.provenance.items()}
+    return {param: [step_json(step, shared) for step in steps] for param, steps in state.provenance.items()}
 
 
 def document_ir(materials: list[dict], diagnostics: list, source_name: str, lexicon_sources) -> dict:

@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from . import ast
-from .formulas import rounded
+from .formulas import round6, rounded
 from .lexicon import Entry, Lexicon
 
 NOUN_PARAMS = ("base_color", "roughness", "eta", "k", "f0", "f82", "ior", "diffuse_roughness")
@@ -25,16 +25,20 @@ class Step:
 
     def to_json(self, memo: dict | None = None) -> dict:
         """The JSON form; `memo` shares the word lists of steps that name the same words."""
-        words = self.words
-        shared = None if memo is None else memo.get(id(words))
-        if shared is None:
-            shared = ([w.text for w in words], [w.span.as_list() for w in words])
-            if memo is not None:
-                memo[id(words)] = shared
-        if self.source:  # lexicon values are exact
-            return {"rule": self.rule, "words": shared[0], "spans": shared[1], "value": self.value,
-                    "source": self.source}
-        return {"rule": self.rule, "words": shared[0], "spans": shared[1], "value": rounded(self.value)}
+        return step_json(self, {} if memo is None else memo)
+
+
+def step_json(step: Step, shared: dict) -> dict:
+    """A step's JSON form; `shared` (id of a word tuple -> its texts and spans) is filled as it goes."""
+    words = step.words
+    lists = shared.get(id(words))
+    if lists is None:
+        lists = shared[id(words)] = ([w.text for w in words], [w.span.as_list() for w in words])
+    if step.source:  # lexicon values are exact
+        return {"rule": step.rule, "words": lists[0], "spans": lists[1], "value": step.value, "source": step.source}
+    value = step.value
+    return {"rule": step.rule, "words": lists[0], "spans": lists[1],
+            "value": round6(value) if type(value) is float else rounded(value)}
 
 
 @dataclass

@@ -33,10 +33,10 @@ class Shape:
 
     def build(self, tagged: list, picks: list, text: str):
         """The AST of a line: `tagged` are its words, `picks` the chosen candidate of each."""
-        words = [None] * len(tagged)
+        words, make = [None] * len(tagged), ast.Word
         for i in self.used:
             t, c = tagged[i], picks[i]
-            words[i] = ast.Word(t.text, c.key, c.category, t.span, t.unknown)
+            words[i] = make(t.text, c.key, c.category, t.span, t.unknown)
         return self.root(words, tagged, text)
 
 
