@@ -80,12 +80,12 @@ def materials() -> dict[str, dict]:
 
 
 def mitsuba_render(material, scene, size, spp, work: Path, seed=0, bsdf="native", warm=False):
-    """(linear RGBA, seconds) of the preview scene in Mitsuba (llvm_ad_rgb), rendered in chunks
-    of at most 32 spp (bounded memory: the cnlm plugin runs on numpy) and averaged."""
+    """(linear RGBA, seconds) of the preview scene in Mitsuba (llvm_ad_rgb); the cnlm plugin
+    renders in chunks of at most 32 spp (bounded memory: it runs on numpy), averaged."""
     from cnlmc.backends.preview.mitsuba_scene import export_scene, render_scene
     path = export_scene(material, scene, work / bsdf, size, size, spp=spp, bsdf=bsdf)
     image, seconds = 0.0, 0.0
-    for index, chunk in enumerate(spp_chunks(spp)):
+    for index, chunk in enumerate(spp_chunks(spp, 32 if bsdf == "cnlm" else spp)):
         part, t = render_scene(path, spp=chunk, seed=seed * 1000 + index, variant="vectorized", warm=warm)
         image, seconds = image + part * (chunk / spp), seconds + t
     return image, seconds

@@ -45,31 +45,52 @@ def _row_alphas(material: dict, mapped: bool) -> list:
     return [(min(max(a / s, 1e-3), 1.0), min(max(a * s, 1e-3), 1.0)) for a in rows]
 
 
-def _directional(material: dict, options: dict) -> np.ndarray:
-    """(MU_SIZE, 3) directional albedo at the texel centres of cos θo (azimuth-averaged
-    when anisotropic)."""
+def _directional(material: dict, options: dict, moment: bool = False) -> np.ndarray:
+    """(MU_SIZE, 3) directional albedo at the texel centres of cos θo (azimuth-averaged when
+    anisotropic); with `moment`, (MU_SIZE, 2) mean-over-RGB first moments of the lobe instead:
+    its component towards the viewer (in the tangent plane) and along the normal."""
     from cnlmc.bsdf.evaluate import albedo
     mus = (np.arange(MU_SIZE) + 0.5) / MU_SIZE
     phis = (0.0, np.pi / 4, np.pi / 2) if material["model"].get("anisotropic") else (0.0,)
-    return np.array([np.mean([albedo(material, mu, SAMPLES, phi, **options) for phi in phis], 0) for mu in mus])
+
+    def one(mu, phi):
+        if not moment:
+            return albedo(material, mu, SAMPLES, phi, **options)
+        toward = lambda wi: wi[..., 0] * np.cos(phi) + wi[..., 1] * np.sin(phi)  # noqa: E731
+        along = lambda wi: wi[..., 2]  # noqa: E731
+        return [albedo(material, mu, SAMPLES, phi, weight, **options).mean() for weight in (toward, along)]
+    return np.array([np.mean([one(mu, phi) for phi in phis], 0) for mu in mus])
+
+
+def _tilt(material: dict, alpha, options: dict) -> np.ndarray:
+    """(MU_SIZE,) angle (radians) from the normal towards the viewer of the first moment of
+    the diffuse (tint) lobe: Oren–Nayar leans towards the viewer (back-scattering), so its
+    irradiance is looked up around that bent direction (docs/preview.md)."""
+    white = _directional(_variant(material, (1, 1, 1), alpha), options, moment=True)
+    black = _directional(_variant(material, (0, 0, 0), alpha), options, moment=True)
+    tint = white - black
+    return np.arctan2(tint[:, 0], np.maximum(tint[:, 1], 1e-9))
 
 
 @lru_cache(maxsize=64)
 def _tables(material_json: str, fresnel: str, multiscatter: bool, mapped: bool) -> tuple:
     material = json.loads(material_json)
     options = {"fresnel": fresnel, "multiscatter": multiscatter}
+    leaning = material["model"]["base"] in ("diffuse", "dielectric") and material["model"].get("diffuse") == "oren_nayar"
     black_rows, tint_rows = [], []
     for alpha in _row_alphas(material, mapped):
         black = _directional(_variant(material, (0, 0, 0), alpha), options)
         white = _directional(_variant(material, (1, 1, 1), alpha), options)
+        tilt = _tilt(material, alpha, options) if leaning else np.zeros(MU_SIZE)   # Lambert: symmetric
         black_rows.append(black)
-        tint_rows.append(white - black)
+        tint_rows.append(np.concatenate([white - black, tilt[:, None]], 1))
     return np.array(black_rows, np.float32), np.array(tint_rows, np.float32)
 
 
 def albedo_tables(material: dict, fresnel: str = "exact", multiscatter: bool = False,
                   mapped_roughness: bool = False) -> tuple[np.ndarray, np.ndarray]:
-    """(black, tint) tables, each (rows, MU_SIZE, 3) float32: row = sqrt(α) texel of the base
-    lobe, column = cos θo texel. Cached by the material's model and parameters."""
+    """(black, tint) tables, (rows, MU_SIZE, 3) and (rows, MU_SIZE, 4) float32: row = sqrt(α)
+    texel of the base lobe, column = cos θo texel; tint's 4th channel is the diffuse lobe's
+    tilt towards the viewer (radians). Cached by the material's model and parameters."""
     key = json.dumps({"model": material["model"], "params": material["params"]}, sort_keys=True, default=float)
     return _tables(key, fresnel, bool(multiscatter), bool(mapped_roughness))

@@ -107,21 +107,38 @@ def render_scene(path, spp: int | None = None, seed: int = 0, variant: str | Non
 
     `variant`: None keeps the current one (scalar_rgb if none is set); "vectorized" selects
     llvm_ad_rgb (or CUDA) and registers the `cnlm` plugin, which scenes written with
-    bsdf="cnlm" need. `warm=True` renders once untimed first (JIT compilation and kernel
-    caches), so the time is the steady-state cost, like the preview's warm frame time."""
+    bsdf="cnlm" need; scenes without it render with Mitsuba's symbolic calls (its fast default).
+    `warm=True` renders once untimed first (JIT compilation and kernel caches), so the time
+    is the steady-state cost, like the preview's warm frame time."""
+    import mitsuba as mi
+    if variant != "vectorized":
+        if variant:
+            mi.set_variant(variant)
+        elif mi.variant() is None:
+            mi.set_variant("scalar_rgb")
+        return _timed_render(path, spp, seed, warm)
+    from cnlmc.backends import mitsuba_cnlm
+    mitsuba_cnlm.register()
+    previous = mitsuba_cnlm.set_symbolic(not uses_plugin(path))
+    try:
+        return _timed_render(path, spp, seed, warm)
+    finally:
+        mitsuba_cnlm.restore_symbolic(previous)
+
+
+def uses_plugin(scene_path) -> bool:
+    """Does the exported scene (its materials.xml) use the `cnlm` plugin?"""
+    materials = Path(scene_path).parent / "materials.xml"
+    return materials.exists() and 'type="cnlm"' in materials.read_text("utf-8")
+
+
+def _timed_render(path, spp, seed, warm) -> tuple[np.ndarray, float]:
     import time
 
     import mitsuba as mi
-    if variant == "vectorized":
-        from cnlmc.backends import mitsuba_cnlm
-        mitsuba_cnlm.register()
-    elif variant:
-        mi.set_variant(variant)
-    elif mi.variant() is None:
-        mi.set_variant("scalar_rgb")
     scene = mi.load_file(str(path), **({"spp": spp} if spp else {}))
     if warm:
-        mi.render(scene, seed=seed + 1).numpy()
+        np.array(mi.render(scene, seed=seed + 1))
     start = time.perf_counter()
     image = np.array(mi.render(scene, seed=seed), np.float32)
     return image, time.perf_counter() - start

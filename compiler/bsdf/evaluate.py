@@ -186,13 +186,17 @@ def _proposal_lobes(material: dict):
     return lobes
 
 
-def albedo(material: dict, mu, n_samples: int = 4096, phi: float = 0.0, **kwargs):
+def albedo(material: dict, mu, n_samples: int = 4096, phi: float = 0.0, weight=None, **kwargs):
     """Directional albedo A(μ) = ∫ f(wo, wi) cos θi dωi, RGB (3,), for the furnace test.
 
     wo has cos θo = mu and azimuth φ; deterministic QMC with balance-heuristic MIS of
     cosine sampling and GGX visible-normal sampling of each lobe (``integrate``).
-    ``kwargs`` go to ``evaluate`` (fresnel, multiscatter, ward_form).
+    ``weight(wi) -> (...)`` multiplies the integrand (e.g. a component of wi, for the
+    lobe's first moment). ``kwargs`` go to ``evaluate`` (fresnel, multiscatter, ward_form).
     """
     wo = dir_from_mu(mu, phi)
-    bsdf = lambda o, i: evaluate(material, o, i, **kwargs)  # noqa: E731
+    if weight is None:
+        bsdf = lambda o, i: evaluate(material, o, i, **kwargs)  # noqa: E731
+    else:
+        bsdf = lambda o, i: evaluate(material, o, i, **kwargs) * np.asarray(weight(i))[..., None]  # noqa: E731
     return albedo_mis(bsdf, wo, _proposal_lobes(material), n_samples)

@@ -20,12 +20,12 @@ def test_black_plus_colour_times_tint_is_the_albedo_of_that_colour(phrase):
     """f is affine in the base colour, so black + rho * tint reproduces any rho's albedo."""
     m = material_of(phrase)
     black, tint = albedo_tables(m)
-    assert black.shape == tint.shape == (1, MU_SIZE, 3)
+    assert black.shape == (1, MU_SIZE, 3) and tint.shape == (1, MU_SIZE, 4)
     column = 20
     mu = (column + 0.5) / MU_SIZE
     rho = np.array([0.7, 0.3, 0.1])
     want = albedo(with_colour(m, rho), mu, 512)
-    np.testing.assert_allclose(black[0, column] + rho * tint[0, column], want, rtol=1e-4, atol=1e-5)
+    np.testing.assert_allclose(black[0, column] + rho * tint[0, column, :3], want, rtol=1e-4, atol=1e-5)
 
 
 def test_an_uncoated_conductor_is_all_tint_and_a_diffuse_one_has_no_specular_part():
@@ -33,6 +33,15 @@ def test_an_uncoated_conductor_is_all_tint_and_a_diffuse_one_has_no_specular_par
     assert np.all(black == 0) and tint.max() > 0.9
     black, tint = albedo_tables(material_of("suede"))
     assert np.all(black == 0) and 0.5 < tint[0, -1, 0] < 1.0      # Oren-Nayar at normal view
+
+
+def test_oren_nayar_leans_towards_the_viewer_and_lambert_does_not():
+    """The tilt channel: the first moment of the diffuse lobe, 0 at normal view."""
+    _, suede = albedo_tables(material_of("suede"))
+    tilt = np.degrees(suede[0, :, 3])
+    assert 5 < tilt[0] < 30 and abs(tilt[-1]) < 3 and np.all(np.diff(tilt) <= 1e-3)
+    _, plastic = albedo_tables(material_of("glossy blue plastic"))
+    assert np.all(plastic[0, :, 3] == 0)
 
 
 def test_the_dielectric_diffuse_part_sees_the_interface_twice():

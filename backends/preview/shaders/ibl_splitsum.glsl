@@ -13,5 +13,5 @@ vec3 pv_prefiltered(vec3 r, float alpha) {
 vec3 pv_ibl(vec3 ng, vec3 ns, vec3 t, vec3 v, vec2 uv) {
     float nv = clamp(dot(ns, v), 1e-4, 1.0);
     vec3 r = reflect(-v, ns);
-    return pv_split(ns, r, nv, uv);
+    return pv_split(ns, v, r, nv, uv);
 }
