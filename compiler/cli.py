@@ -35,6 +35,8 @@ def build_parser() -> argparse.ArgumentParser:
     prev = sub.add_parser("preview", help="render a material file to a PNG (offscreen OpenGL)")
     _common(prev)
     prev.add_argument("-o", "--output", default="preview.png", help="output PNG (default preview.png)")
+    prev.add_argument("-i", "--interactive", action="store_true",
+                      help="then read refinements (darker, less grain, ...) at a prompt and re-render after each")
     _render_options(prev)
     ar = sub.add_parser("ar", help="place the material on a printed marker in a photo or video")
     ar.add_argument("photo", nargs="?", help="a photo (.jpg/.png) or video (.mp4/.avi/.mov) showing the marker")

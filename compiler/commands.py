@@ -193,6 +193,8 @@ def preview_cmd(args) -> int:
     result = _compiled_or_exit(source, name, args)
     if result is None:
         return EXIT_ERRORS
+    if getattr(args, "interactive", False):
+        return _live_preview(source, args)
     try:
         report = preview.preview_command(result.ir, args.output, _render_options(args))
     except (ValueError, OSError, RuntimeError) as exc:
@@ -201,6 +203,21 @@ def preview_cmd(args) -> int:
         print(f"note: {note}", file=sys.stderr)
     print(f"wrote {report.path}", file=sys.stderr)
     return EXIT_OK
+
+
+def _live_preview(source: str, args) -> int:
+    from pathlib import Path
+
+    from cnlmc.backends.preview import live
+    if args.file == "-":
+        raise UsageError("--interactive reads refinements from standard input: give the material as a file")
+    session = live.LiveSession(source, Path(args.output), _render_options(args), _lexicon(args))
+    try:
+        return live.run(session, window=live.Window.open())
+    except (ValueError, OSError, RuntimeError) as exc:
+        raise UsageError(str(exc)) from None
+    except KeyboardInterrupt:
+        return EXIT_OK
 
 
 def _phrase_source(text: str) -> tuple[str, str]:

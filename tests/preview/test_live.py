@@ -1,0 +1,91 @@
+"""Live refinement at a prompt (`cnlmc preview FILE --interactive`), headless: the PNG on disk
+follows every refinement, errors are reported with a caret and leave the material alone."""
+from __future__ import annotations
+
+import io
+import subprocess
+import sys
+
+import cv2
+import numpy as np
+import pytest
+
+from cnlmc.backends.preview.live import LiveSession, changes, run
+
+
+@pytest.fixture
+def session(renderer, tmp_path):
+    return LiveSession("blue anodized aluminum\n", tmp_path / "live.png", {"size": "64"})
+
+
+def mean_colour(path) -> np.ndarray:
+    image = cv2.imread(str(path), cv2.IMREAD_COLOR)[..., ::-1].astype(float)
+    return image[24:40, 24:40].reshape(-1, 3).mean(0)
+
+
+def test_darker_halves_the_colour_and_the_picture_follows(session):
+    first = session.draw()
+    assert "wrote" in first
+    before = mean_colour(session.out_path)
+    step = session.step("darker")
+    assert step.ok and "base_color" in step.text and "(0, 0, 1) -> (0, 0, 0.5)" in step.text
+    after = mean_colour(session.out_path)
+    assert after[2] < before[2] - 5
+
+
+def test_a_misspelling_is_reported_with_a_caret_and_changes_nothing(session):
+    session.draw()
+    before = session.material
+    step = session.step("dakrer")
+    assert not step.ok
+    assert "error[E001]" in step.text and "^" in step.text and "did you mean 'darker'" in step.text
+    assert session.material == before and session.lines == []
+
+
+def test_paper_refinement_sequence_and_undo(session):
+    assert "0.3 -> 0.2" in session.step("less diffuse").text
+    assert "0.2 -> 0.25" in session.step("more diffuse").text
+    assert "0.25 -> 0.2" in session.step(":undo").text
+    assert session.step(":undo").ok and session.lines == []
+    assert not session.step(":undo").ok
+
+
+def test_commands_switch_tier_and_reject_unknown_ones(session):
+    assert "(analytic," in session.step(":tier analytic").text
+    bad = session.step(":tier nonsense")
+    assert not bad.ok and "unknown preview tier" in bad.text
+    typo = session.step(":tire mc4")
+    assert not typo.ok and "did you mean ':tier'" in typo.text
+    assert session.step(":quit").quit
+
+
+def test_run_reads_until_end_of_input(session):
+    out = io.StringIO()
+    assert run(session, io.StringIO("darker\n\n# a comment\nrougher\n"), out) == 0
+    text = out.getvalue()
+    assert text.count("refine> ") == 4 and "roughness" in text
+
+
+def test_changes_lists_only_what_differs():
+    a = {"model": {"base": "conductor"}, "params": {"roughness": 0.3, "base_color": [0, 0, 1]}}
+    b = {"model": {"base": "conductor"}, "params": {"roughness": 0.3, "base_color": [0, 0, 0.5]}}
+    assert changes(a, b) == ["  base_color         (0, 0, 1) -> (0, 0, 0.5)"]
+
+
+def test_cli_interactive_with_piped_input(renderer, tmp_path):
+    material = tmp_path / "m.cnl"
+    material.write_text("white varnished oak\n")
+    out = tmp_path / "p.png"
+    proc = subprocess.run([sys.executable, "-m", "cnlmc", "preview", str(material), "-o", str(out), "--size", "64",
+                           "--interactive"], input="darker\nwarmer\n", capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    assert "base_color" in proc.stdout and "did you mean" in proc.stdout    # 'warmer' is no refinement word
+    assert cv2.imread(str(out)) is not None
+    assert "Traceback" not in proc.stderr
+
+
+def test_cli_interactive_needs_a_file(tmp_path):
+    proc = subprocess.run([sys.executable, "-m", "cnlmc", "preview", "-", "--interactive", "-o", str(tmp_path / "x.png")],
+                          input="gold\n", capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 2 and "give the material as a file" in proc.stderr
+    assert not (tmp_path / "x.png").exists()
