@@ -15,11 +15,16 @@ One row when α is uniform; ROWS rows over sqrt(α) when a roughness map varies 
 """
 from __future__ import annotations
 
+import hashlib
 import json
 from functools import lru_cache
+from pathlib import Path
 
 import numpy as np
 
+import cnlmc.bsdf
+
+BSDF_SOURCES = Path(cnlmc.bsdf.__file__).parent
 MU_SIZE = 32
 ROWS = 8
 SAMPLES = 512
@@ -74,6 +79,16 @@ def _tilt(material: dict, alpha, options: dict) -> np.ndarray:
 
 @lru_cache(maxsize=64)
 def _tables(material_json: str, fresnel: str, multiscatter: bool, mapped: bool) -> tuple:
+    """Memoized here and on disk (cnlmc.cache, keyed by the inputs and by the source files of
+    the BSDF code): a mapped material's 8 rows take a second or two to integrate."""
+    from cnlmc.cache import cached
+    inputs = json.dumps([material_json, fresnel, multiscatter, mapped, MU_SIZE, ROWS, SAMPLES])
+    kind = "albedo-tables-" + hashlib.sha256(inputs.encode()).hexdigest()[:20]
+    sources = [Path(__file__)] + sorted(BSDF_SOURCES.glob("*.py"))
+    return cached(kind, sources, lambda: _integrate(material_json, fresnel, multiscatter, mapped))
+
+
+def _integrate(material_json: str, fresnel: str, multiscatter: bool, mapped: bool) -> tuple:
     material = json.loads(material_json)
     options = {"fresnel": fresnel, "multiscatter": multiscatter}
     leaning = material["model"]["base"] in ("diffuse", "dielectric") and material["model"].get("diffuse") == "oren_nayar"
