@@ -18,19 +18,33 @@ def _per_channel(fn, x, v):
     return fn(x, v)
 
 
+def _move_towards(a, b, w):  # set, and blend with w = min(1, w t)
+    return a + w * (b - a)
+
+
+def _scale(a, b, w):  # mul
+    return a * (1 + w * (b - 1))
+
+
+def _offset(a, b, w):  # add
+    return a + w * b
+
+
+CHANNEL_OPS = {"set": _move_towards, "mul": _scale, "add": _offset, "blend": _move_towards}
+
+
 def apply_op(op: str, x, value, weight: float = 1.0, amount: float | None = None):
-    if op == "set":
-        if isinstance(value, str) or x is None:
-            return value
-        return _per_channel(lambda a, b: a + weight * (b - a), x, value)
-    if op == "mul":
-        return _per_channel(lambda a, b: a * (1 + weight * (b - 1)), x, value)
-    if op == "add":
-        return _per_channel(lambda a, b: a + weight * b, x, value)
+    if op == "set" and (isinstance(value, str) or x is None):
+        return value
+    fn = CHANNEL_OPS.get(op)
+    if fn is None:
+        raise ValueError(f"unknown formula op '{op}'")
     if op == "blend":
-        t = min(1.0, weight * (1.0 if amount is None else amount))
-        return _per_channel(lambda a, b: a + t * (b - a), x, value)
-    raise ValueError(f"unknown formula op '{op}'")
+        weight = min(1.0, weight * (1.0 if amount is None else amount))
+    if isinstance(x, list):
+        vs = value if isinstance(value, list) else [value] * len(x)
+        return [fn(a, b, weight) for a, b in zip(x, vs)]
+    return fn(x, value, weight)
 
 
 def invert_op(op: str, x, value, weight: float = 1.0, amount: float | None = None):

@@ -78,7 +78,8 @@ class Lexicon:
         return self._multi_lengths
 
     def entry(self, category: str, key: str) -> Entry | None:
-        return self.entries.get(category, {}).get(key)
+        by_key = self.entries.get(category)
+        return None if by_key is None else by_key.get(key)
 
     def lookup(self, words: tuple[str, ...]) -> list[Entry]:
         return self.forms.get(words, [])

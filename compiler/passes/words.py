@@ -81,8 +81,10 @@ def _colour_slot(state, target: str):
 
 
 def _warn_second_colour(state, param: str, c: ast.Colour) -> None:
-    earlier = [s for s in state.provenance.get(param, []) if s.rule.startswith("colours: ")]
-    if earlier and c.base is not None:
+    if c.base is None:
+        return
+    earlier = [s for s in state.provenance.get(param, ()) if s.rule.startswith("colours: ")]
+    if earlier:
         state.diagnostics.append(warning(c.span, "W105", f"a second colour for the {param.replace('_', ' ')}: "
                                          f"'{earlier[-1].words[-1].text}' is replaced by '{colour_text(c)}'",
                                          ("use 'or' for alternatives: 'red or blue plastic'",)))
