@@ -16,6 +16,9 @@ MAX_LINE_WORDS = 64
 
 def iter_lines(source: str):
     """(1-based line number, offset, text) for each line."""
+    if "\n" not in source:
+        yield 1, 0, source.rstrip("\r")
+        return
     offset = 0
     for number, line in enumerate(source.split("\n"), start=1):
         yield number, offset, line.rstrip("\r")
