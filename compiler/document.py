@@ -28,12 +28,20 @@ def iter_lines(source: str):
 def parse_document(source: str, lexicon: Lexicon, filename: str = "<input>") -> ast.Document:
     """Parse every line; problems become diagnostics and the next line is parsed anyway."""
     doc = ast.Document(filename, source)
-    tagger = Tagger(lexicon)
+    tagger = tagger_for(lexicon)
     for number, offset, text in iter_lines(source):
         node = parse_line(text, number, offset, tagger, doc.diagnostics)
         if node is not None:
             doc.items.append(node)
     return doc
+
+
+def tagger_for(lexicon: Lexicon) -> Tagger:
+    """The lexicon's tagger, made once (it keeps no state of its own between lines)."""
+    tagger = lexicon.__dict__.get("_tagger")
+    if tagger is None:
+        tagger = lexicon.__dict__["_tagger"] = Tagger(lexicon)
+    return tagger
 
 
 def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list):

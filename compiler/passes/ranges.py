@@ -36,7 +36,9 @@ def _check_all(state, holder: dict, ranges: dict, prefix: str) -> None:
     """`ranges`: param -> (low, high, ...)."""
     for param, bounds in ranges.items():
         value = holder.get(param)
-        if value is not None and not _in_range(value, bounds[0], bounds[1]):
+        if value is None or (type(value) is float and bounds[0] <= value <= bounds[1]):
+            continue  # absent, or a number in range: the common cases, checked without a call
+        if not _in_range(value, bounds[0], bounds[1]):
             _clamp(state, holder, param, prefix + param, bounds[0], bounds[1])
 
 
