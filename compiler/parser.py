@@ -110,6 +110,11 @@ def parse_line_shape(words: list[Tagged]) -> tuple[Shape, list]:
     return shape, [t.candidates[k] for t, k in zip(words, choice)]
 
 
+def clear_shape_cache() -> None:
+    """Forget every cached shape (the next line of each terminal sequence runs the parser again)."""
+    _shapes.clear()
+
+
 def _compile_shape(words: list[Tagged]) -> tuple[Shape, tuple | None]:
     tree, chosen = parse_tagged(words)
     choice = tuple(_position(t.candidates, chosen[t.span.start]) for t in words)
