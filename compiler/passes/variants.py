@@ -9,7 +9,6 @@ from __future__ import annotations
 import itertools
 import re
 import unicodedata
-from dataclasses import replace
 
 from .. import ast
 from ..diagnostics import error
@@ -46,14 +45,16 @@ def choice_points(material: ast.Material) -> list[tuple]:
 def _pick_group(group: ast.Group, picks: dict) -> ast.Group:
     colours = (picks[id(group.colours)],) if id(group.colours) in picks else group.colours
     adjectives = (picks[id(group.adjectives)],) if id(group.adjectives) in picks else group.adjectives
-    return replace(group, colours=colours, adjectives=adjectives)
+    return ast.Group(group.kind, group.adverbs, colours, adjectives, group.span)
 
 
 def _select(material: ast.Material, picks: dict) -> ast.Material:
-    groups = tuple(_pick_group(g, picks) for g in material.groups)
-    coat = material.coat and replace(material.coat, groups=tuple(_pick_group(g, picks) for g in material.coat.groups))
+    groups = tuple([_pick_group(g, picks) for g in material.groups])
+    coat = material.coat
+    if coat:
+        coat = ast.Coat(tuple([_pick_group(g, picks) for g in coat.groups]), coat.coat, coat.span)
     nouns = (picks[id(material.nouns)],) if id(material.nouns) in picks else material.nouns
-    return replace(material, groups=groups, nouns=nouns, coat=coat)
+    return ast.Material(material.name, groups, nouns, coat, material.span, material.text)
 
 
 def _choice_text(choice) -> str:
