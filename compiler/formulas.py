@@ -106,7 +106,11 @@ def rounded(value, digits: int = 6):
     if kind is list:
         return round6_list(value)
     if kind is dict:
-        return {k: round6(v) if type(v) is float else rounded(v) for k, v in value.items()}
+        out = {}
+        for k, v in value.items():
+            kind = type(v)
+            out[k] = round6(v) if kind is float else rounded(v) if kind is list or kind is dict else v
+        return out
     return value
 
 

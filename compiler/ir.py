@@ -80,7 +80,10 @@ def _coat(coat: dict, convention: str) -> dict:
 def _provenance(state: MaterialState) -> dict:
     """param -> its steps in JSON form; steps naming the same words share their word lists."""
     shared: dict = {}
-    return {param: [step_json(step, shared) for step in steps] for param, steps in state.provenance.items()}
+    out = {}
+    for param, steps in state.provenance.items():  # most parameters have a single step
+        out[param] = [step_json(steps[0], shared)] if len(steps) == 1 else [step_json(s, shared) for s in steps]
+    return out
 
 
 def document_ir(materials: list[dict], diagnostics: list, source_name: str, lexicon_sources) -> dict:
