@@ -67,20 +67,26 @@ def _directional(material: dict, options: dict, moment: bool = False) -> np.ndar
     return np.array([np.mean([one(mu, phi) for phi in phis], 0) for mu in mus])
 
 
-def _tilt(material: dict, alpha, options: dict) -> np.ndarray:
-    """(MU_SIZE,) angle (radians) from the normal towards the viewer of the first moment of
-    the diffuse (tint) lobe: Oren–Nayar leans towards the viewer (back-scattering), so its
-    irradiance is looked up around that bent direction (docs/preview.md)."""
+def _lean(toward: np.ndarray, along: np.ndarray) -> np.ndarray:
+    """Where a lobe's first moment points, as a fraction of the view angle θv measured from the
+    normal towards the mirror direction: 1 = the mirror direction, 0 = the normal, < 0 leaning
+    towards the viewer (back-scattering). Smooth in μ, unlike the angle itself near μ = 1."""
+    theta_v = np.arccos((np.arange(MU_SIZE) + 0.5) / MU_SIZE)
+    return -np.arctan2(toward, np.maximum(along, 1e-12)) / theta_v
+
+
+def _leans(material: dict, alpha, options: dict) -> tuple[np.ndarray, np.ndarray]:
+    """(MU_SIZE,) lean of the black lobe and of the tint lobe (tint = white − black)."""
     white = _directional(_variant(material, (1, 1, 1), alpha), options, moment=True)
     black = _directional(_variant(material, (0, 0, 0), alpha), options, moment=True)
     tint = white - black
-    return np.arctan2(tint[:, 0], np.maximum(tint[:, 1], 1e-9))
+    return _lean(black[:, 0], black[:, 1]), _lean(tint[:, 0], tint[:, 1])
 
 
 @lru_cache(maxsize=64)
 def _tables(material_json: str, fresnel: str, multiscatter: bool, mapped: bool) -> tuple:
     """Memoized here and on disk (cnlmc.cache, keyed by the inputs and by the source files of
-    the BSDF code): a mapped material's 8 rows take a second or two to integrate."""
+    the BSDF code): a mapped material's 8 rows take a few seconds to integrate."""
     from cnlmc.cache import cached
     inputs = json.dumps([material_json, fresnel, multiscatter, mapped, MU_SIZE, ROWS, SAMPLES])
     kind = "albedo-tables-" + hashlib.sha256(inputs.encode()).hexdigest()[:20]
@@ -91,21 +97,20 @@ def _tables(material_json: str, fresnel: str, multiscatter: bool, mapped: bool) 
 def _integrate(material_json: str, fresnel: str, multiscatter: bool, mapped: bool) -> tuple:
     material = json.loads(material_json)
     options = {"fresnel": fresnel, "multiscatter": multiscatter}
-    leaning = material["model"]["base"] in ("diffuse", "dielectric") and material["model"].get("diffuse") == "oren_nayar"
     black_rows, tint_rows = [], []
     for alpha in _row_alphas(material, mapped):
         black = _directional(_variant(material, (0, 0, 0), alpha), options)
         white = _directional(_variant(material, (1, 1, 1), alpha), options)
-        tilt = _tilt(material, alpha, options) if leaning else np.zeros(MU_SIZE)   # Lambert: symmetric
-        black_rows.append(black)
-        tint_rows.append(np.concatenate([white - black, tilt[:, None]], 1))
+        black_lean, tint_lean = _leans(material, alpha, options)
+        black_rows.append(np.concatenate([black, black_lean[:, None]], 1))
+        tint_rows.append(np.concatenate([white - black, tint_lean[:, None]], 1))
     return np.array(black_rows, np.float32), np.array(tint_rows, np.float32)
 
 
 def albedo_tables(material: dict, fresnel: str = "exact", multiscatter: bool = False,
                   mapped_roughness: bool = False) -> tuple[np.ndarray, np.ndarray]:
-    """(black, tint) tables, (rows, MU_SIZE, 3) and (rows, MU_SIZE, 4) float32: row = sqrt(α)
-    texel of the base lobe, column = cos θo texel; tint's 4th channel is the diffuse lobe's
-    tilt towards the viewer (radians). Cached by the material's model and parameters."""
+    """(black, tint) tables, each (rows, MU_SIZE, 4) float32: row = sqrt(α) texel of the base
+    lobe, column = cos θo texel; RGB = directional albedo, A = the lobe's lean (`_lean`): the
+    direction the split-sum tier looks the environment up in. Cached (memory and disk)."""
     key = json.dumps({"model": material["model"], "params": material["params"]}, sort_keys=True, default=float)
     return _tables(key, fresnel, bool(multiscatter), bool(mapped_roughness))

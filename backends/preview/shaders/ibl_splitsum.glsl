@@ -1,7 +1,7 @@
 // ---- tier "splitsum": Karis 2013, specialized per material. Specular = the environment
-// prefiltered for the lobe's alpha at the mirror direction times the lobe's own directional
-// albedo; diffuse = SH irradiance times the diffuse directional albedo (split.glsl.j2).
-// Anisotropy uses sqrt(ax ay).
+// prefiltered for the lobe's alpha, looked up where the lobe's first moment points, times
+// the lobe's own directional albedo; diffuse = cosine-prefiltered irradiance likewise
+// (split.glsl.j2). Anisotropy uses sqrt(ax ay).
 
 vec3 pv_prefiltered(vec3 r, float alpha) {
     float lod = sqrt(clamp(alpha, 0.0, 1.0)) * pv_prefilter_levels;
@@ -12,6 +12,5 @@ vec3 pv_prefiltered(vec3 r, float alpha) {
 
 vec3 pv_ibl(vec3 ng, vec3 ns, vec3 t, vec3 v, vec2 uv) {
     float nv = clamp(dot(ns, v), 1e-4, 1.0);
-    vec3 r = reflect(-v, ns);
-    return pv_split(ns, v, r, nv, uv);
+    return pv_split(ns, v, nv, uv);
 }
