@@ -294,13 +294,15 @@ def plot(summary: dict, rows: list[dict], size: int, ref_spp: int, path: Path) -
             ax.axhline(0.02, color="black", lw=0.8, ls=":")
         ax.set_xscale("log")
         ax.set_ylim(bottom=0)
-        ax.set_xlabel(f"time per frame, ms, log scale ({size}x{size}; preview: llvmpipe, Mitsuba: scalar_rgb)")
-        ax.set_ylabel(("FLIP mean" if key == "flip" else "RMSE, tone-mapped sRGB") + f" vs Mitsuba {ref_spp} spp")
+        ax.set_xlabel(f"time per frame, ms, log scale ({size}x{size}; preview: llvmpipe; Mitsuba: llvm_ad_rgb, "
+                      "native plugins)")
+        ax.set_ylabel(("FLIP mean" if key == "flip" else "RMSE, tone-mapped sRGB") + f" vs converged Mitsuba ({ref_spp} spp)")
         ax.grid(alpha=0.3, which="both")
     axes[0].legend(fontsize=8, loc="upper right")
     materials = len({r["material"] for r in rows})
     fig.suptitle(f"cnlmc preview tiers vs Mitsuba: {materials} materials (small: per material; large: mean error, "
-                 "median time; dashed: FLIP 0.05, dotted: 0.02)", fontsize=10)
+                 "median time; dashed: FLIP 0.05, dotted: 0.02)\ntiers against Mitsuba rendering cnlmc's BSDF (cnlm "
+                 "plugin); Mitsuba's curve against its own converged native render", fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
