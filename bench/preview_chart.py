@@ -294,8 +294,7 @@ def plot(summary: dict, rows: list[dict], size: int, ref_spp: int, path: Path) -
             ax.axhline(0.02, color="black", lw=0.8, ls=":")
         ax.set_xscale("log")
         ax.set_ylim(bottom=0)
-        ax.set_xlabel(f"time per frame, ms, log scale ({size}x{size}; preview: llvmpipe; Mitsuba: llvm_ad_rgb, "
-                      "native plugins)")
+        ax.set_xlabel(f"ms per frame, log ({size}x{size}; preview: llvmpipe; Mitsuba: llvm_ad_rgb)")
         ax.set_ylabel(("FLIP mean" if key == "flip" else "RMSE, tone-mapped sRGB") + f" vs converged Mitsuba ({ref_spp} spp)")
         ax.grid(alpha=0.3, which="both")
     axes[0].legend(fontsize=8, loc="upper right")
