@@ -53,7 +53,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _render_options(p) -> None:
-    p.add_argument("--mesh", help="sphere, shader_ball, teapot, or an .obj/.ply file")
+    p.add_argument("--mesh", help="sphere, shader_ball, teapot, or an .obj/.ply/.gltf/.glb file")
     p.add_argument("--size", help="image size in pixels (preview default 512)")
     p.add_argument("--tier", help="quality tier: analytic, splitsum, fisN, mcN (see docs/preview.md)")
     p.add_argument("--budget-ms", dest="budget_ms", help="pick the best tier whose frame time fits")

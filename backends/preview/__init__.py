@@ -6,7 +6,7 @@ preview mesh under a key light and an HDR environment (docs/preview.md).
     emit(ir, options) -> EmitResult  (one PNG per material, plus sheet.png for 'or' variants)
 
 Options (strings, as from `--option key=value`): size (512), mesh (sphere | shader_ball |
-teapot | path to .obj/.ply), tier (see tiers.TIERS; default fis16), budget_ms (pick the best
+teapot | path to .obj/.ply/.gltf/.glb), tier (see tiers.TIERS; default splitsum), budget_ms (pick the best
 tier that fits), env (studio | sky | sun | path to .hdr/.exr), background (env | transparent),
 exposure (1.0), msaa (0: off, an edge filter in the tone map; 2 or 4 cost 3-4x the frame on llvmpipe), fresnel / multiscatter (the GLSL backend's options), seed.
 """

@@ -1,4 +1,5 @@
-"""User meshes: OBJ (v/vt/vn, polygons fanned) and PLY (ascii, binary little/big endian) in;
+"""User meshes: OBJ (v/vt/vn, polygons fanned), PLY (ascii, binary little/big endian) and glTF 2.0
+(.gltf/.glb, gltf.py) in;
 PLY (binary, what Mitsuba reads) and OBJ out. Missing normals/UVs/tangents are derived."""
 from __future__ import annotations
 
@@ -159,7 +160,12 @@ def write_ply(mesh: Mesh, path, flip_v: bool = False) -> None:
         f.write(faces.tobytes())
 
 
-LOADERS = {".obj": load_obj, ".ply": load_ply}
+def _load_gltf(path) -> Mesh:
+    from .gltf import load_gltf
+    return load_gltf(path)
+
+
+LOADERS = {".obj": load_obj, ".ply": load_ply, ".gltf": _load_gltf, ".glb": _load_gltf}
 
 
 def load_mesh(path) -> Mesh:
