@@ -33,13 +33,17 @@ class PluginError(RuntimeError):
 
 
 def choose_variant() -> str:
-    """Set (if needed) and return a vectorized RGB variant; LLVM 15/16 abort in Mitsuba's
-    llvm variants, so Debian's libLLVM 19 is preferred when it is installed."""
-    if "DRJIT_LIBLLVM_PATH" not in os.environ and os.path.exists(LLVM_LIBRARY):
-        os.environ["DRJIT_LIBLLVM_PATH"] = LLVM_LIBRARY
+    """Set (if needed) and return a vectorized RGB variant. Mitsuba's llvm variants abort the
+    process (not an exception) with Debian's LLVM 15/16, so they are used only with LLVM 19
+    (apt libllvm19, found at LLVM_LIBRARY) or a library the user names in DRJIT_LIBLLVM_PATH."""
     import mitsuba as mi
     if mi.variant() in VARIANTS:
         return mi.variant()
+    if "DRJIT_LIBLLVM_PATH" not in os.environ:
+        if not os.path.exists(LLVM_LIBRARY):
+            raise PluginError(f"the cnlm Mitsuba plugin needs Mitsuba's llvm_ad_rgb variant with LLVM 19 "
+                              f"({LLVM_LIBRARY}: apt install libllvm19), or DRJIT_LIBLLVM_PATH set to a working libLLVM")
+        os.environ["DRJIT_LIBLLVM_PATH"] = LLVM_LIBRARY
     for variant in VARIANTS:
         if variant in mi.variants():
             try:

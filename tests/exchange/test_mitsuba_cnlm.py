@@ -145,3 +145,16 @@ def test_native_plugins_warn_where_they_approximate_and_cnlm_does_not():
     cnlm = [n.text() for n in mitsuba.emit(ir, {"form": "fragment", "bsdf": "cnlm"}).notes]
     assert any("oren_nayar" in t for t in native) and any("model.dielectric" in t for t in native)
     assert cnlm == []
+
+
+def test_without_llvm_19_the_plugin_refuses_clearly_instead_of_aborting():
+    """Mitsuba's llvm variants abort the process with LLVM 15/16: no LLVM 19, no attempt."""
+    import subprocess
+    import sys
+    code = ("import os; os.environ.pop('DRJIT_LIBLLVM_PATH', None)\n"
+            "from cnlmc.backends import mitsuba_cnlm\n"
+            "mitsuba_cnlm.LLVM_LIBRARY = '/nonexistent/libLLVM.so.19.1'\n"
+            "try:\n    mitsuba_cnlm.register()\nexcept mitsuba_cnlm.PluginError as exc:\n    print('refused:', exc)\n")
+    env = {k: v for k, v in __import__("os").environ.items() if k != "DRJIT_LIBLLVM_PATH"}
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120, env=env)
+    assert proc.returncode == 0 and "refused:" in proc.stdout and "libllvm19" in proc.stdout
