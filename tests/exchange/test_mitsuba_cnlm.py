@@ -3,6 +3,9 @@ evaluates, samples and renders cnlmc's BSDF, and the values equal the numpy refe
 from __future__ import annotations
 
 import json
+import os
+import subprocess
+import sys
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -149,12 +152,10 @@ def test_native_plugins_warn_where_they_approximate_and_cnlm_does_not():
 
 def test_without_llvm_19_the_plugin_refuses_clearly_instead_of_aborting():
     """Mitsuba's llvm variants abort the process with LLVM 15/16: no LLVM 19, no attempt."""
-    import subprocess
-    import sys
     code = ("import os; os.environ.pop('DRJIT_LIBLLVM_PATH', None)\n"
             "from cnlmc.backends import mitsuba_cnlm\n"
             "mitsuba_cnlm.LLVM_LIBRARY = '/nonexistent/libLLVM.so.19.1'\n"
             "try:\n    mitsuba_cnlm.register()\nexcept mitsuba_cnlm.PluginError as exc:\n    print('refused:', exc)\n")
-    env = {k: v for k, v in __import__("os").environ.items() if k != "DRJIT_LIBLLVM_PATH"}
+    env = {k: v for k, v in os.environ.items() if k != "DRJIT_LIBLLVM_PATH"}
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120, env=env)
     assert proc.returncode == 0 and "refused:" in proc.stdout and "libllvm19" in proc.stdout
