@@ -58,13 +58,14 @@ def _directional(material: dict, options: dict, moment: bool = False) -> np.ndar
     mus = (np.arange(MU_SIZE) + 0.5) / MU_SIZE
     phis = (0.0, np.pi / 4, np.pi / 2) if material["model"].get("anisotropic") else (0.0,)
 
-    def one(mu, phi):
+    def one(phi):                                  # every mu at once (a batch of directions)
         if not moment:
-            return albedo(material, mu, SAMPLES, phi, **options)
+            return albedo(material, mus, SAMPLES, phi, **options)
         toward = lambda wi: wi[..., 0] * np.cos(phi) + wi[..., 1] * np.sin(phi)  # noqa: E731
         along = lambda wi: wi[..., 2]  # noqa: E731
-        return [albedo(material, mu, SAMPLES, phi, weight, **options).mean() for weight in (toward, along)]
-    return np.array([np.mean([one(mu, phi) for phi in phis], 0) for mu in mus])
+        return np.stack([albedo(material, mus, SAMPLES, phi, weight, **options).mean(-1)
+                         for weight in (toward, along)], -1)
+    return np.mean([one(phi) for phi in phis], 0)
 
 
 def _lean(toward: np.ndarray, along: np.ndarray) -> np.ndarray:

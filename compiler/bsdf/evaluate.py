@@ -190,7 +190,8 @@ def albedo(material: dict, mu, n_samples: int = 4096, phi: float = 0.0, weight=N
     """Directional albedo A(μ) = ∫ f(wo, wi) cos θi dωi, RGB (3,), for the furnace test.
 
     wo has cos θo = mu and azimuth φ; deterministic QMC with balance-heuristic MIS of
-    cosine sampling and GGX visible-normal sampling of each lobe (``integrate``).
+    cosine sampling and GGX visible-normal sampling of each lobe (``integrate``). ``mu``
+    may be an array: one integration per value, batched (result (len(mu), 3)).
     ``weight(wi) -> (...)`` multiplies the integrand (e.g. a component of wi, for the
     lobe's first moment). ``kwargs`` go to ``evaluate`` (fresnel, multiscatter, ward_form).
     """

@@ -36,9 +36,11 @@ def cosine_pdf(wi):
 
 
 def _weighted(values, weights):
+    """Σ over the sample axis (the last one of `weights`) of values × weights."""
     values = np.asarray(values, dtype=np.float64)
-    w = weights if values.ndim == weights.ndim else weights[..., None]
-    return np.sum(values * w, axis=0)
+    if values.ndim == weights.ndim:
+        return np.sum(values * weights, axis=-1)
+    return np.sum(values * weights[..., None], axis=-2)
 
 
 def albedo_cosine(bsdf, wo, n: int = 4096):
@@ -53,16 +55,17 @@ def albedo_mis(bsdf, wo, lobes, n: int = 4096):
     for every (αx, αy) in ``lobes`` (n samples per strategy):
 
         A ≈ Σ_{all samples} f cos θi / (n Σ_s p_s(wi))
-    Robust for sharp lobes (GGX, Ward) down to α = 1e-3 and for grazing wo.
+    Robust for sharp lobes (GGX, Ward) down to α = 1e-3 and for grazing wo. ``wo`` may be
+    one direction (3,) or a batch (..., 3): every direction gets the same point set, and
+    the result has the batch's shape (followed by the BSDF's channels).
     """
     wo = as_dirs(wo)
     u1, u2 = lattice_2d(n)
-    wi_c = sample_cosine(u1, u2)
-    wo_n = np.broadcast_to(wo, wi_c.shape)
-    samples = [wi_c] + [reflect_about(wo_n, sample_ggx_vndf(wo_n, ax, ay, u1, u2))
-                        for ax, ay in lobes]
-    wi = np.concatenate(samples)
-    wo_all = np.broadcast_to(wo, wi.shape)
+    wo_n = np.broadcast_to(wo[..., None, :], wo.shape[:-1] + (n, 3))
+    wi_c = np.broadcast_to(sample_cosine(u1, u2), wo_n.shape)
+    samples = [wi_c] + [reflect_about(wo_n, sample_ggx_vndf(wo_n, ax, ay, u1, u2)) for ax, ay in lobes]
+    wi = np.concatenate(samples, axis=-2)
+    wo_all = np.broadcast_to(wo[..., None, :], wi.shape)
     pdf = cosine_pdf(wi) + sum(vndf_pdf(wo_all, wi, ax, ay) for ax, ay in lobes)
     ok = (pdf > 0) & (cos_theta(wi) > 0)
     weight = np.where(ok, cos_theta(wi) / np.where(ok, pdf * n, 1.0), 0.0)
