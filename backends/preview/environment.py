@@ -160,24 +160,3 @@ def environment(name_or_path: str = "studio", key: KeyLight | None = None) -> En
             image = np.nan_to_num(image, nan=0.0, posinf=0.0, neginf=0.0)
         _CACHE[cache_key] = Environment(str(name_or_path), np.maximum(image, 0).astype(np.float32), key or KeyLight())
     return _CACHE[cache_key]
-
-
-# ----------------------------------------------------------- irradiance (order-2 SH)
-
-def sh9_basis(d: np.ndarray) -> np.ndarray:
-    x, y, z = d[..., 0], d[..., 1], d[..., 2]
-    return np.stack([0.282095 * np.ones_like(x), 0.488603 * y, 0.488603 * z, 0.488603 * x,
-                     1.092548 * x * y, 1.092548 * y * z, 0.315392 * (3 * z * z - 1),
-                     1.092548 * x * z, 0.546274 * (x * x - y * y)], -1)
-
-
-def irradiance_sh9(image: np.ndarray) -> np.ndarray:
-    """(9, 3) coefficients of the cosine-convolved radiance: E(n) = sum_k c_k Y_k(n)
-    (Ramamoorthi & Hanrahan 2001 band factors pi, 2pi/3, pi/4 folded in)."""
-    h, w = image.shape[:2]
-    d = pixel_directions(h, w)
-    weights = pixel_solid_angles(h, w)[..., None]
-    basis = sh9_basis(d)
-    coeffs = np.einsum("hwk,hwc->kc", basis * weights, image.astype(np.float64))
-    band = np.array([np.pi] + [2 * np.pi / 3] * 3 + [np.pi / 4] * 5)
-    return (coeffs * band[:, None]).astype(np.float32)

@@ -17,7 +17,7 @@ from cnlmc.bsdf.sampling import lobe_shares
 from . import gl
 from .albedo_tables import albedo_tables
 from .camera import Camera, framing_camera
-from .environment import Environment, environment, irradiance_sh9
+from .environment import Environment, environment
 from .meshes import Mesh, fit, mesh_by_name
 from .tiers import DEFAULT_TIER, Tier, parse_tier
 
@@ -89,13 +89,13 @@ def material_shader(material: dict, glsl_options: dict | None = None) -> Materia
 # ------------------------------------------------------------------ GPU resources
 
 class EnvResources:
-    """Environment textures: radiance (mip-mapped), GGX-prefiltered levels, SH irradiance."""
+    """Environment textures: radiance (mip-mapped), GGX-prefiltered levels, and on demand the
+    environment prefiltered at one alpha and the irradiance map."""
 
     def __init__(self, env: Environment):
         self.env = env
         self.radiance = gl.float_texture(env.image, repeat=(True, False))
         self.size = (env.image.shape[1], env.image.shape[0])
-        self.sh9 = irradiance_sh9(env.image)
         self.mean = env.mean_radiance
         self.prefiltered = self._prefilter()
         self._at_alpha: dict = {}
@@ -373,7 +373,6 @@ class Renderer:
             gl.set_uniform(prog, name, first_unit + offset)
         gl.set_uniform(prog, "pv_prefilter_levels", float(PREFILTER_LEVELS))
         gl.set_uniform(prog, "pv_env_intensity", scene.env_intensity)
-        gl.set_uniform(prog, "pv_sh", res.sh9)
         gl.set_uniform(prog, "pv_ambient", res.mean * scene.env_intensity)
         gl.set_uniform(prog, "pv_env_size", res.size)
         gl.set_uniform(prog, "pv_samples", max(tier.samples, 1))

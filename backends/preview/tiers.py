@@ -23,8 +23,8 @@ class Tier:
 TIERS = {
     "analytic": Tier("analytic", "ambient", doc="key light + constant ambient (mean environment radiance x pi f(v, n))"),
     "splitsum": Tier("splitsum", "splitsum", doc="key light + environment prefiltered at the lobe's alpha x the "
-                     "material's own directional albedo (split sum, Karis 2013, specialized per material) + SH "
-                     "irradiance x the diffuse directional albedo"),
+                     "material's own directional albedo (split sum, Karis 2013, specialized per material) + "
+                     "cosine-prefiltered irradiance x the diffuse directional albedo"),
     "fis16": Tier("fis16", "sampled", 16, True, "key light + 16 BSDF samples per pixel, MIS, environment mip "
                   "level from the pdf (filtered importance sampling, Krivanek & Colbert 2008)"),
     "fis64": Tier("fis64", "sampled", 64, True, "as fis16 with 64 samples"),

@@ -4,7 +4,6 @@ uniform sampler2D pv_env;            // radiance, mip-mapped (box filter), repea
 uniform sampler2D pv_env_prefiltered; // GGX-prefiltered: mip level k <-> sqrt(alpha) = k / pv_prefilter_levels
 uniform float pv_prefilter_levels;
 uniform float pv_env_intensity;
-uniform vec3 pv_sh[9];               // irradiance E(n) as order-2 SH (cosine convolved)
 
 vec2 pv_env_uv(vec3 d) {
     float u = atan(d.x, -d.z) * (0.5 / PV_PI);
@@ -14,15 +13,6 @@ vec2 pv_env_uv(vec3 d) {
 
 vec3 pv_env_lod(vec3 d, float lod) {
     return textureLod(pv_env, pv_env_uv(d), lod).rgb * pv_env_intensity;
-}
-
-vec3 pv_irradiance(vec3 n) {
-    vec3 e = pv_sh[0] * 0.282095
-           + pv_sh[1] * 0.488603 * n.y + pv_sh[2] * 0.488603 * n.z + pv_sh[3] * 0.488603 * n.x
-           + pv_sh[4] * 1.092548 * n.x * n.y + pv_sh[5] * 1.092548 * n.y * n.z
-           + pv_sh[6] * 0.315392 * (3.0 * n.z * n.z - 1.0)
-           + pv_sh[7] * 1.092548 * n.x * n.z + pv_sh[8] * 0.546274 * (n.x * n.x - n.y * n.y);
-    return max(e, 0.0) * pv_env_intensity;
 }
 
 // An orthonormal frame (t, b, n) around n with t as close to `t_hint` as possible.
