@@ -105,14 +105,13 @@ class LaneModel:
     """The IR material evaluated per lane: maps (textures) read at each lane's uv."""
 
     def __init__(self, material: dict, textures: dict):
-        from cnlmc.bsdf.evaluate import coat_alpha
+        from cnlmc.bsdf.evaluate import lobe_alphas
         from cnlmc.bsdf.sampling import lobe_shares
         self.material = material
         self.textures = textures
         model, params = material["model"], material["params"]
         self.shares = lobe_shares(model["base"], bool(model.get("coat") and params.get("coat")))
-        coat = params.get("coat") if model.get("coat") else None
-        self.coat_alpha = coat_alpha(coat, params.get("alpha_convention", "squared")) if coat else (1.0, 1.0)
+        self.coat_alpha = lobe_alphas(material)[1] or (1.0, 1.0)
 
     def params_at(self, si, active) -> dict:
         """The material with α per lane when a roughness map is bound."""
@@ -126,13 +125,9 @@ class LaneModel:
         return {**self.material, "params": {**params, "alpha": alpha}}
 
     def base_alpha(self, material: dict):
-        from cnlmc.bsdf.evaluate import material_alpha
-        if material["model"]["base"] == "diffuse":
-            return (1.0, 1.0)
-        ax, ay = material_alpha(material)
-        coat = self.shares[2] > 0 and material["model"]["base"] != "diffuse"
-        scale = float(material["params"]["coat"].get("ior", 1.5)) if coat else 1.0   # seen through the coat
-        return np.minimum(ax * scale, 1.0), np.minimum(ay * scale, 1.0)
+        """The base lobe's (αx, αy) for sampling (per lane with a roughness map)."""
+        from cnlmc.bsdf.evaluate import lobe_alphas
+        return lobe_alphas(material)[0] or (1.0, 1.0)
 
     def f(self, si, material: dict, wo, wi, active) -> np.ndarray:
         """f(wo, wi), RGB (N, 3): affine in the base colour, so a colour map costs two calls."""
@@ -210,9 +205,6 @@ def _plugin_class():
             bs.sampled_component = mi.UInt32(0)
             ok = active & (bs.pdf > 0)
             return bs, dr.select(ok, _colour(mi, weight), 0.0)
-
-        def traverse(self, callback):
-            pass
 
         def to_string(self):
             return f"CnlmBSDF[{self.lanes.material.get('name', '')}]"

@@ -171,19 +171,23 @@ def evaluate(material: dict, wo, wi, fresnel: str = "exact", multiscatter: bool 
                   _rgb(coat.get("color")), float(coat.get("thickness") or 0.0))
 
 
+def lobe_alphas(material: dict):
+    """(base, coat): the (αx, αy) of the base's specular lobe as seen from outside (widened by
+    the coat's index under a coat; per lane when α is an array) and of the coat; None where
+    the material has no such lobe. Importance sampling draws from these."""
+    model, params = material["model"], material["params"]
+    coat = params.get("coat") if model.get("coat") else None
+    base = None
+    if model["base"] != "diffuse":
+        ax, ay = material_alpha(material)
+        scale = float(coat.get("ior", 1.5)) if coat else 1.0
+        base = (np.minimum(ax * scale, 1.0), np.minimum(ay * scale, 1.0))
+    return base, (coat_alpha(coat) if coat else None)
+
+
 def _proposal_lobes(material: dict):
     """(αx, αy) lobes for MIS in ``albedo``: the base lobe and the coat lobe."""
-    lobes = []
-    if material["model"]["base"] != "diffuse":
-        ax, ay = material_alpha(material)
-        coat = material["params"].get("coat") if material["model"].get("coat") else None
-        scale = float(coat.get("ior", 1.5)) if coat else 1.0  # base lobe seen through coat
-        lobes.append((min(ax * scale, 1.0), min(ay * scale, 1.0)))
-        if coat:
-            lobes.append(coat_alpha(coat))
-    elif material["model"].get("coat") and material["params"].get("coat"):
-        lobes.append(coat_alpha(material["params"]["coat"]))
-    return lobes
+    return [lobe for lobe in lobe_alphas(material) if lobe is not None]
 
 
 def albedo(material: dict, mu, n_samples: int = 4096, phi: float = 0.0, weight=None, **kwargs):
