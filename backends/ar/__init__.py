@@ -129,6 +129,12 @@ class ShadowOverlay:
         self.mesh, self.model, self.opacity = mesh, model, opacity
         self.texture = None
 
+    def world_points(self) -> np.ndarray:
+        """The quad's corners (homogeneous, world): where the overlay draws."""
+        e = SHADOW_EXTENT
+        corners = np.array([[x, 0.0, z, 1.0] for x in (-e, e) for z in (-e, e)])
+        return corners @ np.asarray(self.model, np.float64).T
+
     def __call__(self, renderer, scene) -> None:
         import moderngl
         from cnlmc.backends.preview import gl

@@ -157,6 +157,33 @@ def sphere(rings: int = 64, segments: int = 96) -> Mesh:
     return lathe(arc(0.0, 0.0, 1.0, -math.pi / 2, math.pi / 2, rings + 1), segments)
 
 
+#: the largest distance (pixels) between the tessellated silhouette and the true sphere's.
+SILHOUETTE_ERROR_PX = 0.25
+
+
+def sphere_segments(radius_px: float, error_px: float = SILHOUETTE_ERROR_PX) -> tuple[int, int]:
+    """(rings, segments) of a sphere drawn `radius_px` pixels wide whose silhouette polygon stays
+    within `error_px` of the circle: a chord over angle 2π/n sags r·(1 − cos(π/n)). Segments a
+    multiple of 8 and rings even keep the poles, the equator and ±x, ±z on the mesh (the
+    bounds, hence the framing, are the same at every level); at least 32 segments."""
+    r = max(float(radius_px), 1.0)
+    n = math.pi / math.acos(max(1.0 - error_px / r, -1.0)) if error_px < r else 1.0
+    segments = max(32, 8 * math.ceil(n / 8))
+    return 2 * round(segments / 3), segments
+
+
+_SPHERES: dict = {}
+
+
+def sphere_for_pixels(radius_px: float) -> Mesh:
+    """The fitted sphere with no more triangles than its size on screen needs (cached per level):
+    4k triangles for a 256² preview, 7k at 512², 15k at 1024²."""
+    level = sphere_segments(radius_px)
+    if level not in _SPHERES:
+        _SPHERES[level] = fit(sphere(*level))
+    return _SPHERES[level]
+
+
 def shader_ball(segments: int = 96) -> Mesh:
     """A shader-ball-like form: a sphere with a recessed equatorial groove on a stepped pedestal."""
     ball_c, ball_r = 1.1, 0.8

@@ -18,7 +18,7 @@ from . import gl
 from .albedo_tables import albedo_tables
 from .camera import Camera, framing_camera
 from .environment import Environment, environment
-from .meshes import Mesh, fit, mesh_by_name
+from .meshes import Mesh, fit, mesh_by_name, sphere_for_pixels
 from .tiers import DEFAULT_TIER, Tier, parse_tier
 
 MICROFACET = ("dielectric", "conductor", "glass")
@@ -195,6 +195,7 @@ _MAPS: dict = {}
 _OBJECT_PROGRAMS: dict = {}
 _FULLSCREEN: dict = {}
 _VAOS: dict = {}
+_WARM: set = set()
 
 
 def env_resources(env: Environment) -> EnvResources:
@@ -328,10 +329,31 @@ class Scene:
 
 
 def default_scene(mesh: str | Mesh = "sphere", env: str | Environment = "studio", size=(512, 512)) -> Scene:
+    """The framed preview scene; the built-in sphere is tessellated for its size on screen
+    (the framing fits it inside min(size) pixels: radius below half of that)."""
+    if mesh == "sphere":
+        mesh = sphere_for_pixels(0.5 * min(size))
     mesh = fit(mesh_by_name(mesh)) if isinstance(mesh, str) else mesh
     env = environment(env) if isinstance(env, str) else env
     lo, hi = mesh.bounds
     return Scene(mesh, framing_camera(lo, hi, aspect=size[0] / size[1]), env)
+
+
+def screen_rect(points: np.ndarray, view_projection: np.ndarray, width: int, height: int,
+                pad: int = 0) -> tuple[int, int, int, int] | None:
+    """Pixel rectangle (x, y, w, h; OpenGL window coordinates) covering homogeneous world
+    points (N, 4) after projection, padded and clipped to the frame; None if a point is at or
+    behind the camera plane (its projection is unbounded)."""
+    clip = np.asarray(points, np.float64) @ np.asarray(view_projection, np.float64).T
+    w = clip[:, 3]
+    if not np.all(w > 1e-9):
+        return None
+    ndc = clip[:, :2] / w[:, None]
+    x = (ndc[:, 0] * 0.5 + 0.5) * width
+    y = (ndc[:, 1] * 0.5 + 0.5) * height
+    x0, y0 = max(int(np.floor(x.min())) - pad, 0), max(int(np.floor(y.min())) - pad, 0)
+    x1, y1 = min(int(np.ceil(x.max())) + pad, width), min(int(np.ceil(y.max())) + pad, height)
+    return (x0, y0, max(x1 - x0, 0), max(y1 - y0, 0))
 
 
 class Renderer:
@@ -432,9 +454,12 @@ class Renderer:
                 parts.append(f"{size * 4}x")
         return " ".join(parts), names
 
-    def _tonemap(self, t: Targets, scene: Scene, res: EnvResources, background: bool) -> None:
+    def _tonemap(self, t: Targets, scene: Scene, res: EnvResources, background: bool,
+                 rect: tuple[int, int, int, int] | None = None) -> None:
         """Edge filter (without MSAA), the environment background (where the object does not
-        cover the pixel), exposure, ACES, sRGB: one full-screen pass."""
+        cover the pixel), exposure, ACES, sRGB: one full-screen pass — or, without a
+        background, only over `rect` (x, y, w, h) where something was drawn; the rest is cleared
+        to transparent black, which is what the pass writes there."""
         import moderngl
         prog, vao = self.fullscreen("tonemap.frag")
         t.resolved_tex.use(0)
@@ -448,7 +473,11 @@ class Renderer:
             gl.set_uniform(prog, "pv_background_image", 1)
         self.ctx.disable(moderngl.DEPTH_TEST)
         t.ldr.use()
+        if rect is not None and not background:
+            t.ldr.clear(0.0, 0.0, 0.0, 0.0)
+            self.ctx.scissor = rect
         vao.render(moderngl.TRIANGLES, vertices=3)
+        self.ctx.scissor = None
 
     def draw(self, scene: Scene, material: dict, tier: Tier | str = DEFAULT_TIER, glsl_options: dict | None = None,
              model: np.ndarray | None = None, overlay=None) -> Targets:
@@ -464,12 +493,32 @@ class Renderer:
         if overlay is not None:
             overlay(self, scene)
             t.draw_target.use()
-        self._draw_object(scene, material, shader, tier, res, np.eye(4) if model is None else model, glsl_options)
+        model = np.eye(4) if model is None else model
+        self._draw_object(scene, material, shader, tier, res, model, glsl_options)
         t.resolve(self.ctx)
         if scene.background == "env":
             self._draw_background(t, scene, res)
-        self._tonemap(t, scene, res, scene.background == "env")     # composites the background
+            self._tonemap(t, scene, res, True)                      # composites the background
+        else:
+            self._tonemap(t, scene, res, False, self.drawn_rect(scene, model, overlay))
         return t
+
+    #: pixels around the projected bounds: the edge filter's 1-pixel reach, and rounding.
+    RECT_PAD = 2
+
+    def drawn_rect(self, scene: Scene, model: np.ndarray, overlay=None) -> tuple[int, int, int, int] | None:
+        """The pixel rectangle (x, y, w, h) that holds everything drawn: the object's bounding box
+        (and an overlay's `world_points()`, if it has them) projected; None (the whole frame)
+        when a corner is behind the camera or an overlay cannot say where it draws."""
+        lo, hi = scene.mesh.bounds
+        corners = np.array([[x, y, z, 1.0] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+        points = corners @ np.asarray(model, np.float64).T
+        if overlay is not None:
+            extra = getattr(overlay, "world_points", None)
+            if extra is None:
+                return None
+            points = np.vstack([points, extra()])
+        return screen_rect(points, scene.camera.view_projection, self.width, self.height, self.RECT_PAD)
 
     def render(self, material: dict, mesh: str | Mesh = "sphere", tier: Tier | str = DEFAULT_TIER,
                glsl_options: dict | None = None, env: str | Environment = "studio", scene: Scene | None = None,
@@ -477,8 +526,12 @@ class Renderer:
         """Render one material; returns the sRGB image (top row first) and the frame time."""
         scene = scene or default_scene(mesh, env, (self.width, self.height))
         tier = parse_tier(tier) if isinstance(tier, str) else tier
-        self.draw(scene, material, tier, glsl_options, **draw_options)     # warm-up: compiles, uploads
-        self.ctx.finish()
+        warm_key = (id(material_shader(material, glsl_options)), tier.name, id(scene.mesh), id(scene.env),
+                    self.width, self.height)
+        if warm_key not in _WARM:       # the first frame compiles and uploads: drawn once untimed
+            self.draw(scene, material, tier, glsl_options, **draw_options)
+            self.ctx.finish()
+            _WARM.add(warm_key)
         start = time.perf_counter()
         t = self.draw(scene, material, tier, glsl_options, **draw_options)
         self.ctx.finish()

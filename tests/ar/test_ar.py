@@ -124,3 +124,15 @@ def test_photo_command_and_video(tmp_path, gl_available, gold):
     capture = cv2.VideoCapture(str(tmp_path / "out.mp4"))
     assert int(capture.get(cv2.CAP_PROP_FRAME_COUNT)) == 4
     capture.release()
+
+
+def test_tone_map_rectangle_holds_object_and_shadow(posed_photo, gl_available, gold, monkeypatch):
+    """The AR layer's tone map runs over the object's and the shadow's rectangle only; the
+    composite is the same as with the whole frame tone mapped."""
+    from cnlmc.backends.preview.render import Renderer
+    opts = {"mesh": "teapot", "tier": "splitsum", "shadow": "0.6"}
+    clipped = composite(posed_photo["photo"], gold["materials"][0], opts).image
+    monkeypatch.setattr(Renderer, "drawn_rect", lambda self, *a, **k: None)
+    whole = composite(posed_photo["photo"], gold["materials"][0], opts).image
+    assert np.abs(clipped.astype(int) - posed_photo["photo"].astype(int)).max() > 50     # something drawn
+    np.testing.assert_array_equal(clipped, whole)

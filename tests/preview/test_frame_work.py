@@ -1,0 +1,96 @@
+"""A frame does no more work than it needs, and the shortcuts change no pixel: the sphere is
+tessellated for its size on screen, the tone map runs only where something was drawn (no
+background), and a warm material is drawn once per render()."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from cnlmc.backends.preview import render as render_module
+from cnlmc.backends.preview.meshes import SILHOUETTE_ERROR_PX, sphere_for_pixels, sphere_segments
+
+from .conftest import material_of
+
+
+@pytest.mark.parametrize("radius_px", [1, 20, 64, 128, 256, 511, 2048])
+def test_sphere_level_keeps_the_silhouette_within_a_quarter_pixel(radius_px):
+    rings, segments = sphere_segments(radius_px)
+    assert segments % 8 == 0 and rings % 2 == 0 and segments >= 32
+    assert radius_px * (1 - math.cos(math.pi / segments)) <= SILHOUETTE_ERROR_PX + 1e-12
+    # no coarser than needed: the next level down would break the bound (above the minimum)
+    if segments > 32:
+        assert radius_px * (1 - math.cos(math.pi / (segments - 8))) > SILHOUETTE_ERROR_PX
+
+
+def test_sphere_levels_share_the_bounds_hence_the_framing():
+    levels = [sphere_for_pixels(r) for r in (32, 128, 256, 700)]
+    assert len({len(m.indices) for m in levels}) == 4
+    for mesh in levels:
+        np.testing.assert_allclose(mesh.bounds[0], levels[0].bounds[0], atol=1e-6)
+        np.testing.assert_allclose(mesh.bounds[1], levels[0].bounds[1], atol=1e-6)
+    assert sphere_for_pixels(128) is sphere_for_pixels(128)          # cached: uploaded once
+
+
+def test_default_scene_sphere_grows_finer_with_the_frame():
+    small = render_module.default_scene("sphere", "studio", (256, 256)).mesh
+    large = render_module.default_scene("sphere", "studio", (1024, 1024)).mesh
+    assert len(small.indices) < 12288 < len(large.indices)
+
+
+def off_centre_scene(size: int):
+    scene = render_module.default_scene("sphere", "studio", (size, size))
+    scene.background = "transparent"
+    model = np.diag([0.45, 0.45, 0.45, 1.0])
+    model[:3, 3] = (0.35, 0.1, 0.0)
+    return scene, model
+
+
+def full_frame(monkeypatch):
+    monkeypatch.setattr(render_module.Renderer, "drawn_rect", lambda self, *a, **k: None)
+
+
+@pytest.mark.parametrize("phrase", ["gold", "white varnished oak"])
+def test_tone_map_over_the_drawn_rectangle_changes_no_pixel(renderer, phrase, monkeypatch):
+    scene, model = off_centre_scene(renderer.width)
+    material = material_of(phrase)
+    rect = renderer.drawn_rect(scene, model)
+    assert rect is not None and rect[2] * rect[3] < 0.5 * renderer.width * renderer.height
+    clipped = renderer.render(material, tier="splitsum", scene=scene, model=model).rgba
+    full_frame(monkeypatch)
+    whole = renderer.render(material, tier="splitsum", scene=scene, model=model).rgba
+    assert clipped[..., 3].max() == 255                      # the object is there
+    np.testing.assert_array_equal(clipped, whole)
+
+
+def test_drawn_rectangle_holds_every_covered_pixel(renderer):
+    scene, model = off_centre_scene(renderer.width)
+    rgba = renderer.render(material_of("blue plastic"), tier="analytic", scene=scene, model=model).rgba
+    x, y, w, h = renderer.drawn_rect(scene, model)
+    rows, cols = np.nonzero(rgba[..., 3])
+    gl_rows = renderer.height - 1 - rows                     # rgba is top row first
+    assert cols.min() >= x and cols.max() < x + w and gl_rows.min() >= y and gl_rows.max() < y + h
+
+
+def test_no_rectangle_when_the_object_reaches_behind_the_camera(renderer):
+    scene, _ = off_centre_scene(renderer.width)
+    lo, hi = scene.mesh.bounds
+    model = np.eye(4)
+    model[:3, 3] = scene.camera.position - (lo + hi) / 2      # the camera inside the object's box
+    assert renderer.drawn_rect(scene, model) is None
+
+
+def test_an_overlay_without_world_points_gets_the_whole_frame(renderer):
+    scene, model = off_centre_scene(renderer.width)
+    assert renderer.drawn_rect(scene, model, overlay=lambda r, s: None) is None
+
+
+def test_a_warm_material_is_drawn_once_per_render(renderer, scene, monkeypatch):
+    material = material_of("copper")
+    renderer.render(material, tier="analytic", scene=scene)
+    calls = []
+    original = render_module.Renderer.draw
+    monkeypatch.setattr(render_module.Renderer, "draw", lambda self, *a, **k: calls.append(1) or original(self, *a, **k))
+    frame = renderer.render(material, tier="analytic", scene=scene)
+    assert len(calls) == 1 and frame.ms > 0
