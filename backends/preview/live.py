@@ -6,8 +6,10 @@ PNG (atomically, so an image viewer that reloads shows every step), and the para
 changed are printed. A line that does not compile is reported with its caret and "did you
 mean" and leaves the material as it was. Lines starting with ':' are commands (`:help`).
 
-With a display (DISPLAY or WAYLAND_DISPLAY set and Tk available) the image also appears in a
-window that follows every step; headless, the PNG on disk is the view.
+With a display (DISPLAY or WAYLAND_DISPLAY set and Tk able to connect) the image also appears in
+a window that follows every step, keeps handling its events while the prompt waits, and ends
+the session when closed; headless, the PNG on disk is the view and nothing else changes.
+Tested under Xvfb: tests/preview/test_live_window.py.
 """
 from __future__ import annotations
 
@@ -151,14 +153,21 @@ def _fmt(value) -> str:
 # ------------------------------------------------------------------------- the loop
 
 class Window:
-    """A Tk window showing the PNG; None when there is no display."""
+    """A Tk window showing the output PNG after every step; `Window.open()` is None without a
+    display. The window is exactly the image's size; closing it (the window manager's close
+    button, WM_DELETE_WINDOW) ends the session like :quit."""
+
+    TICK = 0.03        # seconds between event-loop turns while the prompt waits for a line
 
     def __init__(self, root):
         import tkinter
         self.root = root
-        self.label = tkinter.Label(root)
-        self.label.pack()
+        self.closed = False
+        self.image = None
         root.title("cnlmc preview")
+        self.label = tkinter.Label(root, borderwidth=0, highlightthickness=0, padx=0, pady=0)
+        self.label.pack()
+        root.protocol("WM_DELETE_WINDOW", self.close)
 
     @classmethod
     def open(cls):
@@ -166,29 +175,112 @@ class Window:
             return None
         try:
             import tkinter
-            return cls(tkinter.Tk())
-        except Exception:                      # no Tk, or the display refuses the connection
+        except ImportError:                    # Python built without Tk
+            return None
+        try:
+            return cls(tkinter.Tk(className="cnlmc"))
+        except tkinter.TclError:               # the display refuses the connection
             return None
 
     def show(self, png_path: Path) -> None:
+        """Display the PNG at `png_path` (replacing the previous image) and draw it now."""
+        if self.closed:
+            return
         import tkinter
-        self.image = tkinter.PhotoImage(data=base64.b64encode(Path(png_path).read_bytes()))
-        self.label.configure(image=self.image)
-        self.root.update()
+        png_path = Path(png_path)
+        try:
+            image = tkinter.PhotoImage(master=self.root, format="png",
+                                       data=base64.b64encode(png_path.read_bytes()))
+            self.label.configure(image=image)
+            self.image = image                 # the label does not keep the image alive
+            self.root.title(f"{png_path.name} - cnlmc preview")
+        except tkinter.TclError:               # the window went away under us
+            self.close()
+            return
+        self.update()
+
+    def update(self) -> None:
+        """Handle pending window events (redraws, the close button)."""
+        if self.closed:
+            return
+        import tkinter
+        try:
+            self.root.update()
+        except tkinter.TclError:
+            self.closed = True
+
+    def close(self) -> None:
+        if self.closed:
+            return
+        self.closed = True
+        import tkinter
+        try:
+            self.root.destroy()
+        except tkinter.TclError:
+            pass
+
+    def readline(self, stdin) -> str | None:
+        """stdin's next line, keeping the window alive (redrawn, closable) while waiting;
+        None when the window was closed first."""
+        try:
+            fd = stdin.fileno()
+        except (AttributeError, OSError, ValueError):
+            fd = None
+        if fd is None or os.name == "nt":      # no descriptor to wait on: read, then catch up
+            line = stdin.readline()
+            self.update()
+            return None if self.closed else line
+        import select
+        pending = getattr(self, "_pending", b"")
+        while True:
+            end = pending.find(b"\n")
+            if end >= 0:
+                self._pending = pending[end + 1:]
+                return _decode(pending[:end + 1], stdin)
+            self.update()
+            if self.closed:
+                self._pending = pending
+                return None
+            ready, _, _ = select.select([fd], [], [], self.TICK)
+            if ready:
+                chunk = os.read(fd, 65536)
+                if not chunk:                  # end of input: the last line may lack its newline
+                    self._pending = b""
+                    return _decode(pending, stdin)
+                pending += chunk
+
+
+def _decode(data: bytes, stdin) -> str:
+    return data.decode(getattr(stdin, "encoding", None) or "utf-8", errors="replace")
 
 
 def run(session: LiveSession, stdin=None, stdout=None, window=None) -> int:
-    """Read lines until end of input or :quit. Returns 0 (every error was reported and undone)."""
+    """Read lines until end of input, :quit or the window being closed. Returns 0 (every error
+    was reported and undone). Closes the window on the way out."""
     stdin, stdout = stdin or sys.stdin, stdout or sys.stdout
+    try:
+        return _loop(session, stdin, stdout, window)
+    finally:
+        if window:
+            window.close()
+
+
+def _loop(session: LiveSession, stdin, stdout, window) -> int:
     interactive = stdin.isatty()
     print(session.draw(), file=stdout)
     if window:
         window.show(session.out_path)
-    print("type a refinement (darker, less grain, ...) or :help", file=stdout)
+        print(f"  showing {session.out_path.name} in a window (closing it ends the session)", file=stdout)
+    print("type a refinement (darker, less grain, ...) or :help", file=stdout, flush=True)
     while True:
         if interactive:
             print(PROMPT, end="", file=stdout, flush=True)
-        line = stdin.readline()
+        line = window.readline(stdin) if window else stdin.readline()
+        if line is None:
+            if interactive:
+                print(file=stdout)
+            print("window closed", file=stdout, flush=True)
+            return 0
         if not line:
             return 0
         if not interactive:

@@ -77,7 +77,7 @@ def test_cli_interactive_with_piped_input(renderer, tmp_path):
     material.write_text("white varnished oak\n")
     out = tmp_path / "p.png"
     proc = subprocess.run([sys.executable, "-m", "cnlmc", "preview", str(material), "-o", str(out), "--size", "64",
-                           "--interactive"], input="darker\nwarmer\n", capture_output=True, text=True, timeout=300)
+                           "--interactive"], input="darker\nwarmer\n", capture_output=True, text=True, timeout=300, check=False)
     assert proc.returncode == 0, proc.stderr
     assert "base_color" in proc.stdout and "did you mean" in proc.stdout    # 'warmer' is no refinement word
     assert cv2.imread(str(out)) is not None
@@ -86,6 +86,76 @@ def test_cli_interactive_with_piped_input(renderer, tmp_path):
 
 def test_cli_interactive_needs_a_file(tmp_path):
     proc = subprocess.run([sys.executable, "-m", "cnlmc", "preview", "-", "--interactive", "-o", str(tmp_path / "x.png")],
-                          input="gold\n", capture_output=True, text=True, timeout=120)
+                          input="gold\n", capture_output=True, text=True, timeout=120, check=False)
     assert proc.returncode == 2 and "give the material as a file" in proc.stderr
     assert not (tmp_path / "x.png").exists()
+
+
+def test_no_window_without_a_display(monkeypatch):
+    from cnlmc.backends.preview.live import Window
+    monkeypatch.delenv("DISPLAY", raising=False)
+    monkeypatch.delenv("WAYLAND_DISPLAY", raising=False)
+    assert Window.open() is None
+    pytest.importorskip("tkinter")
+    monkeypatch.setenv("DISPLAY", ":65001")        # no such server: Tk cannot connect, still no window
+    assert Window.open() is None
+
+
+class _Root:
+    """Stands in for a Tk root: counts event-loop turns, can be 'closed by the user'."""
+
+    def __init__(self, close_after=None):
+        self.turns, self.close_after, self.destroyed, self.on_delete = 0, close_after, False, None
+
+    def update(self):
+        self.turns += 1
+        if self.close_after is not None and self.turns >= self.close_after:
+            self.on_delete()
+
+    def destroy(self):
+        self.destroyed = True
+
+
+def _window(root):
+    from cnlmc.backends.preview.live import Window
+    window = Window.__new__(Window)
+    window.root, window.closed, window.image = root, False, None
+    root.on_delete = window.close
+    return window
+
+
+def test_window_readline_splits_a_pipe_into_lines_and_turns_the_event_loop():
+    import os
+    import threading
+    import time
+    read, write = os.pipe()
+    stdin = os.fdopen(read, "r")
+    root = _Root()
+    window = _window(root)
+
+    def slowly():
+        os.write(write, b"darker\nless ")
+        time.sleep(0.2)                        # the window keeps turning while the line is incomplete
+        os.write(write, b"grain\nlast, no newline")
+        os.close(write)
+    threading.Thread(target=slowly).start()
+    assert window.readline(stdin) == "darker\n"
+    assert window.readline(stdin) == "less grain\n"
+    assert window.readline(stdin) == "last, no newline"
+    assert window.readline(stdin) == ""
+    assert root.turns >= 3
+    stdin.close()
+
+
+def test_window_closed_while_waiting_ends_run(session):
+    import os
+    read, write = os.pipe()                    # nothing is ever typed
+    root = _Root(close_after=5)
+    out = io.StringIO()
+    with os.fdopen(read, "r") as stdin:
+        window = _window(root)
+        window.show = lambda path: None
+        assert run(session, stdin, out, window) == 0
+    os.close(write)
+    assert window.closed and root.destroyed
+    assert out.getvalue().endswith("window closed\n") and "showing live.png in a window" in out.getvalue()
