@@ -9,7 +9,8 @@ Options (strings): marker_length (0.1; any unit, the scene is relative to it), m
 scale (1.0: the object's bounding-sphere diameter in marker lengths), intrinsics ("fx,fy,cx,cy";
 default from the image size and fov), fov (60 degrees, horizontal), dist (k1,k2,p1,p2,k3),
 mesh (teapot), tier (splitsum), env (studio), shadow (0.65 opacity, 0 = none), material (name or
-index of the IR material, default the first), exposure (1.0), msaa (4), fresnel, multiscatter.
+index of the IR material, default the first), exposure (1.0), msaa (4 for a photo; 0 for a
+video: the tone map's edge filter instead, about 3x less time per frame), fresnel, multiscatter.
 Errors are ARError subclasses with an `exit_code` (NoMarkerFound 65, PhotoUnreadable 66,
 AROptionError 2).
 """
@@ -30,6 +31,8 @@ NAME = "ar"
 DEFAULTS = {"marker_length": "0.1", "marker_id": "", "scale": "1.0", "intrinsics": "", "fov": "60", "dist": "",
             "mesh": "teapot", "tier": "splitsum", "env": "studio", "shadow": "0.65", "material": "",
             "exposure": "1.0", "msaa": "4", "fresnel": "exact", "multiscatter": "off"}
+#: video frames: no multisampling (bench/ar_frames.py: msaa 4 costs about 3x per frame on llvmpipe).
+VIDEO_MSAA = "0"
 SHADOW_EXTENT = 1.6       # half-size of the shadow quad, in units of the fitted object's radius
 
 
@@ -114,7 +117,7 @@ def footprint(mesh, extent: float = SHADOW_EXTENT, size: int = 128, height: floa
     low = tri[:, :, 1].min(1) < height
     xz = (tri[low][:, :, [0, 2]] / extent * 0.5 + 0.5) * size
     occupancy = np.zeros((size, size), np.uint8)
-    cv2.fillPoly(occupancy, [np.round(t * 16).astype(np.int32) for t in xz], 255, cv2.LINE_8, shift=4)
+    cv2.fillPoly(occupancy, list(np.round(xz * 16).astype(np.int32)), 255, cv2.LINE_8, shift=4)
     occ = occupancy.astype(np.float32) / 255.0
     tight = cv2.GaussianBlur(occ, (0, 0), size * 0.02)
     wide = cv2.GaussianBlur(occ, (0, 0), size * 0.08)
@@ -127,7 +130,6 @@ class ShadowOverlay:
 
     def __init__(self, mesh, model: np.ndarray, opacity: float):
         self.mesh, self.model, self.opacity = mesh, model, opacity
-        self.texture = None
 
     def world_points(self) -> np.ndarray:
         """The quad's corners (homogeneous, world): where the overlay draws."""
@@ -138,23 +140,38 @@ class ShadowOverlay:
     def __call__(self, renderer, scene) -> None:
         import moderngl
         from cnlmc.backends.preview import gl
-        ctx = renderer.ctx
-        if self.texture is None:
-            self.texture = gl.float_texture(footprint(self.mesh), mipmaps=False, repeat=(False, False))
-        shaders = Path(__file__).parent / "shaders"
-        prog = gl.program((shaders / "ground.vert").read_text(), (shaders / "shadow.frag").read_text())
-        quad = ctx.buffer(np.array([-1, -1, 1, -1, -1, 1, 1, 1], "f4").tobytes())
-        vao = ctx.vertex_array(prog, [(quad, "2f", "in_xz")])
-        self.texture.use(0)
+        prog, vao = shadow_quad()
+        shadow_texture(self.mesh).use(0)
         gl.set_uniform(prog, "pv_shadow", 0)
         gl.set_uniform(prog, "pv_opacity", self.opacity)
         gl.set_uniform(prog, "pv_extent", SHADOW_EXTENT)
         gl.set_uniform(prog, "pv_model", self.model)
         gl.set_uniform(prog, "pv_view_projection", scene.camera.view_projection)
-        ctx.disable(moderngl.DEPTH_TEST)
+        renderer.ctx.disable(moderngl.DEPTH_TEST)
         vao.render(moderngl.TRIANGLE_STRIP)
-        vao.release()
-        quad.release()
+
+
+_SHADOW_GL: dict = {}
+
+
+def shadow_texture(mesh):
+    """The mesh's footprint as a texture, made once per mesh (the video form draws it every frame)."""
+    from cnlmc.backends.preview import gl
+    key = ("footprint", id(mesh))
+    if key not in _SHADOW_GL:
+        _SHADOW_GL[key] = (mesh, gl.float_texture(footprint(mesh), mipmaps=False, repeat=(False, False)))
+    return _SHADOW_GL[key][1]
+
+
+def shadow_quad():
+    """(program, vertex array) of the ground quad, made once."""
+    from cnlmc.backends.preview import gl
+    if "quad" not in _SHADOW_GL:
+        shaders = Path(__file__).parent / "shaders"
+        prog = gl.program((shaders / "ground.vert").read_text(), (shaders / "shadow.frag").read_text())
+        quad = gl.current().buffer(np.array([-1, -1, 1, -1, -1, 1, 1, 1], "f4").tobytes())
+        _SHADOW_GL["quad"] = (prog, gl.current().vertex_array(prog, [(quad, "2f", "in_xz")]))
+    return _SHADOW_GL["quad"]
 
 
 # ----------------------------------------------------------------- compositing
@@ -210,9 +227,17 @@ def render_layer(pose: Pose, width: int, height: int, material: dict, opts: AROp
 
 
 def over_photo(rgba: np.ndarray, photo_bgr: np.ndarray) -> np.ndarray:
-    a = rgba[..., 3:4].astype(np.float32) / 255.0
-    layer = rgba[..., 2::-1].astype(np.float32)          # RGB -> BGR
-    return np.round(layer * a + photo_bgr.astype(np.float32) * (1 - a)).astype(np.uint8)
+    """The layer (straight alpha, RGB) over the photo (BGR), rounded to 8 bits; only the rows and
+    columns the layer covers are blended, the rest of the photo is copied."""
+    out = photo_bgr.copy()
+    rows, cols = np.nonzero(rgba[..., 3].max(1))[0], np.nonzero(rgba[..., 3].max(0))[0]
+    if not len(rows):
+        return out
+    box = (slice(rows[0], rows[-1] + 1), slice(cols[0], cols[-1] + 1))
+    a = rgba[box][..., 3:4].astype(np.float32) / 255.0
+    layer = rgba[box][..., 2::-1].astype(np.float32)          # RGB -> BGR
+    out[box] = np.round(layer * a + photo_bgr[box].astype(np.float32) * (1 - a)).astype(np.uint8)
+    return out
 
 
 def read_photo(path) -> np.ndarray:
@@ -262,7 +287,7 @@ def ar_video(video_path, ir: dict, out_path, options: dict | None = None, max_fr
     """Frames in, frames out (OpenCV VideoCapture / VideoWriter, mp4v). Frames without a marker
     pass through unchanged and are counted in `missed`; none found at all raises NoMarkerFound."""
     import cv2
-    opts = parse_options(options)
+    opts = parse_options({"msaa": VIDEO_MSAA, **(options or {})})
     material = pick_material(ir, opts.material)
     capture = cv2.VideoCapture(str(video_path))
     if not capture.isOpened():

@@ -136,3 +136,47 @@ def test_tone_map_rectangle_holds_object_and_shadow(posed_photo, gl_available, g
     whole = composite(posed_photo["photo"], gold["materials"][0], opts).image
     assert np.abs(clipped.astype(int) - posed_photo["photo"].astype(int)).max() > 50     # something drawn
     np.testing.assert_array_equal(clipped, whole)
+
+
+def test_over_photo_blends_only_where_the_layer_is():
+    from cnlmc.backends.ar import over_photo
+    rng = np.random.default_rng(3)
+    photo = rng.integers(0, 256, (40, 60, 3), dtype=np.uint8)
+    rgba = np.zeros((40, 60, 4), np.uint8)
+    rgba[10:25, 5:30] = rng.integers(0, 256, (15, 25, 4), dtype=np.uint8)
+    a = rgba[..., 3:4] / 255.0
+    expected = np.round(rgba[..., 2::-1] * a + photo * (1 - a)).astype(np.uint8)
+    np.testing.assert_array_equal(over_photo(rgba, photo), expected)
+    empty = over_photo(np.zeros_like(rgba), photo)
+    np.testing.assert_array_equal(empty, photo)
+    assert empty is not photo
+
+
+def test_shadow_footprint_is_made_once_per_mesh(posed_photo, gl_available, gold, monkeypatch):
+    import cnlmc.backends.ar as ar
+    made = []
+    original = ar.footprint
+    monkeypatch.setattr(ar, "footprint", lambda mesh, *a, **k: made.append(1) or original(mesh, *a, **k))
+    monkeypatch.setattr(ar, "_SHADOW_GL", {})
+    for _ in range(3):
+        composite(posed_photo["photo"], gold["materials"][0], {"mesh": "teapot", "tier": "analytic"})
+    assert len(made) == 1
+
+
+def test_video_frames_default_to_no_multisampling(tmp_path, monkeypatch, gold):
+    import cnlmc.backends.ar as ar
+    from cnlmc.backends.ar.synthetic import synthetic_photo
+    video = tmp_path / "in.mp4"
+    writer = cv2.VideoWriter(str(video), cv2.VideoWriter_fourcc(*"mp4v"), 10, (160, 120))
+    if not writer.isOpened():
+        pytest.skip("no mp4v encoder in this OpenCV build")
+    writer.write(synthetic_photo(np.array([2.2, 0.3, -0.2]), np.array([0.0, 0.02, 0.5]), 160, 120)[0])
+    writer.release()
+    seen = []
+    monkeypatch.setattr(ar, "composite", lambda frame, material, opts, source: seen.append(opts.msaa) or
+                        (_ for _ in ()).throw(NoMarkerFound("skip")))
+    with pytest.raises(NoMarkerFound):
+        ar_video(video, gold, tmp_path / "a.mp4", {"tier": "analytic"})
+    with pytest.raises(NoMarkerFound):
+        ar_video(video, gold, tmp_path / "b.mp4", {"tier": "analytic", "msaa": "4"})
+    assert seen == [0, 4]
