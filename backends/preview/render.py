@@ -165,6 +165,7 @@ class Targets:
     def __init__(self, width: int, height: int, msaa: int):
         ctx = gl.current()
         self.size = (width, height)
+        self.rect = None           # what the last draw() cleared, tone mapped and will read (None: all)
         self.samples = msaa if msaa > 1 else 0
         self.resolved_tex = ctx.texture(self.size, 4, dtype=self.HDR_DTYPE)
         if self.samples:
@@ -356,6 +357,31 @@ def screen_rect(points: np.ndarray, view_projection: np.ndarray, width: int, hei
     return (x0, y0, max(x1 - x0, 0), max(y1 - y0, 0))
 
 
+def grown(rect: tuple[int, int, int, int] | None, pixels: int, width: int, height: int):
+    """`rect` grown by `pixels` on every side, clipped to the frame (None stays None)."""
+    if rect is None:
+        return None
+    x0, y0 = max(rect[0] - pixels, 0), max(rect[1] - pixels, 0)
+    x1, y1 = min(rect[0] + rect[2] + pixels, width), min(rect[1] + rect[3] + pixels, height)
+    return (x0, y0, max(x1 - x0, 0), max(y1 - y0, 0))
+
+
+def read_image(fbo, rect: tuple[int, int, int, int] | None, size: tuple[int, int], dtype: str) -> np.ndarray:
+    """RGBA of the framebuffer, top row first; with `rect` only that rectangle is read, the rest
+    is zero (transparent black, what the frame holds there)."""
+    width, height = size
+    numpy_type = np.uint8 if dtype == "f1" else np.float32
+    if rect is None:
+        data = np.frombuffer(fbo.read(components=4, dtype=dtype), numpy_type)
+        return data.reshape(height, width, 4)[::-1].copy()
+    image = np.zeros((height, width, 4), numpy_type)
+    x, y, w, h = rect
+    if w and h:
+        data = np.frombuffer(fbo.read(viewport=rect, components=4, dtype=dtype), numpy_type).reshape(h, w, 4)
+        image[height - y - h:height - y, x:x + w] = data[::-1]
+    return image
+
+
 class Renderer:
     """Offscreen renderer of one size; programs, textures and meshes are cached process-wide."""
 
@@ -458,8 +484,8 @@ class Renderer:
                  rect: tuple[int, int, int, int] | None = None) -> None:
         """Edge filter (without MSAA), the environment background (where the object does not
         cover the pixel), exposure, ACES, sRGB: one full-screen pass — or, without a
-        background, only over `rect` (x, y, w, h) where something was drawn; the rest is cleared
-        to transparent black, which is what the pass writes there."""
+        background, only over `rect` (x, y, w, h) where something was drawn (read_image() reads
+        that rectangle back; outside it the image is transparent black, what the pass writes)."""
         import moderngl
         prog, vao = self.fullscreen("tonemap.frag")
         t.resolved_tex.use(0)
@@ -474,7 +500,6 @@ class Renderer:
         self.ctx.disable(moderngl.DEPTH_TEST)
         t.ldr.use()
         if rect is not None and not background:
-            t.ldr.clear(0.0, 0.0, 0.0, 0.0)
             self.ctx.scissor = rect
         vao.render(moderngl.TRIANGLES, vertices=3)
         self.ctx.scissor = None
@@ -487,20 +512,21 @@ class Renderer:
         shader = material_shader(material, glsl_options)
         res = env_resources(scene.env)
         t = targets(self.width, self.height, self.msaa)
+        model = np.eye(4) if model is None else model
+        # Without a background only the rectangle around what is drawn is cleared, tone mapped
+        # and read back (one pixel more is cleared: the edge filter reads its neighbours).
+        t.rect = None if scene.background == "env" else self.drawn_rect(scene, model, overlay)
         t.draw_target.use()
         self.ctx.viewport = (0, 0, self.width, self.height)
-        t.draw_target.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
+        t.draw_target.clear(0.0, 0.0, 0.0, 0.0, depth=1.0, viewport=grown(t.rect, 1, self.width, self.height))
         if overlay is not None:
             overlay(self, scene)
             t.draw_target.use()
-        model = np.eye(4) if model is None else model
         self._draw_object(scene, material, shader, tier, res, model, glsl_options)
         t.resolve(self.ctx)
         if scene.background == "env":
             self._draw_background(t, scene, res)
-            self._tonemap(t, scene, res, True)                      # composites the background
-        else:
-            self._tonemap(t, scene, res, False, self.drawn_rect(scene, model, overlay))
+        self._tonemap(t, scene, res, scene.background == "env", t.rect)     # composites the background
         return t
 
     #: pixels around the projected bounds: the edge filter's 1-pixel reach, and rounding.
@@ -536,11 +562,8 @@ class Renderer:
         t = self.draw(scene, material, tier, glsl_options, **draw_options)
         self.ctx.finish()
         ms = (time.perf_counter() - start) * 1000.0
-        rgba = np.frombuffer(t.ldr.read(components=4), np.uint8).reshape(self.height, self.width, 4)[::-1].copy()
-        linear = None
-        if hdr:
-            linear = np.frombuffer(t.resolved.read(components=4, dtype="f4"), np.float32)
-            linear = linear.reshape(self.height, self.width, 4)[::-1].copy()
+        rgba = read_image(t.ldr, t.rect, (self.width, self.height), "f1")
+        linear = read_image(t.resolved, t.rect, (self.width, self.height), "f4") if hdr else None
         return Frame(rgba, linear, ms, tier.name, material_shader(material, glsl_options).notes)
 
     def frame_time(self, scene: Scene, material: dict, tier: Tier | str, glsl_options=None, repeats: int = 5) -> float:

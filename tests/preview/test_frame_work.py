@@ -1,6 +1,6 @@
 """A frame does no more work than it needs, and the shortcuts change no pixel: the sphere is
-tessellated for its size on screen, the tone map runs only where something was drawn (no
-background), and a warm material is drawn once per render()."""
+tessellated for its size on screen; without a background only the rectangle around what is
+drawn is cleared, tone mapped and read back; a warm material is drawn once per render()."""
 from __future__ import annotations
 
 import math
@@ -57,11 +57,19 @@ def test_tone_map_over_the_drawn_rectangle_changes_no_pixel(renderer, phrase, mo
     material = material_of(phrase)
     rect = renderer.drawn_rect(scene, model)
     assert rect is not None and rect[2] * rect[3] < 0.5 * renderer.width * renderer.height
-    clipped = renderer.render(material, tier="splitsum", scene=scene, model=model).rgba
+    renderer.render(material, tier="splitsum", scene=renderer_scene_filled(renderer))   # leaves pixels behind
+    clipped = renderer.render(material, tier="splitsum", scene=scene, model=model, hdr=True)
     full_frame(monkeypatch)
-    whole = renderer.render(material, tier="splitsum", scene=scene, model=model).rgba
-    assert clipped[..., 3].max() == 255                      # the object is there
-    np.testing.assert_array_equal(clipped, whole)
+    whole = renderer.render(material, tier="splitsum", scene=scene, model=model, hdr=True)
+    assert clipped.rgba[..., 3].max() == 255                 # the object is there
+    np.testing.assert_array_equal(clipped.rgba, whole.rgba)
+    np.testing.assert_array_equal(clipped.hdr, whole.hdr)
+
+
+def renderer_scene_filled(renderer):
+    scene = render_module.default_scene("sphere", "studio", (renderer.width, renderer.height))
+    scene.background = "transparent"
+    return scene
 
 
 def test_drawn_rectangle_holds_every_covered_pixel(renderer):
