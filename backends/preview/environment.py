@@ -1,9 +1,12 @@
 """Lighting of the preview scene: an HDR environment (equirectangular, linear Rec.709) and a
 key light. Environments are generated in numpy (`ENVIRONMENTS`) or read with OpenImageIO.
 
-Direction <-> equirect pixel follows Mitsuba 3's `envmap` plugin, so the same image lights
-both renderers: u = atan2(d.x, -d.z) / 2pi (wrapped to [0, 1)), v = acos(d.y) / pi (v = 0 is
-the top row, +y up).
+Direction <-> equirect coordinates follow Mitsuba 3's `envmap` plugin: u = atan2(d.x, -d.z) / 2pi
+(wrapped to [0, 1)), v = acos(d.y) / pi (v = 0 is the top, +y up). Texels are read as OpenGL
+does: texel (i, j) is the value at the centre u = (i + 0.5) / W, v = (j + 0.5) / H, bilinear in
+between (rows clamped at the poles). Mitsuba agrees in u but puts row j at v = j / (H - 1) (its
+first and last rows at the poles), so the image it is given is `mitsuba_rows(image)`: the same
+bilinear function, resampled onto its rows.
 """
 from __future__ import annotations
 
@@ -133,6 +136,30 @@ def read_image(path) -> np.ndarray:
     if pixels.ndim == 2:
         pixels = pixels[..., None]
     return np.repeat(pixels, 3, axis=2) if pixels.shape[2] == 1 else pixels[..., :3]
+
+
+#: above this many rows, mitsuba_rows() resamples to H + 1 rows (not exact) instead of 2H + 1.
+MITSUBA_EXACT_ROWS = 1024
+
+
+def mitsuba_rows(image: np.ndarray) -> np.ndarray:
+    """The environment resampled for Mitsuba's `envmap`, which reads row j of an H' row image at
+    v = j / (H' - 1) (this module's rows, and the preview's texture, are at v = (j + 0.5) / H).
+
+    With H' = 2H + 1 rows the preview's bilinear function is represented exactly: the odd rows
+    are the original rows, the even ones the midpoints between them, the first and last the
+    clamped polar rows. Columns need no change (Mitsuba's texel i is at u = (i + 0.5) / W too).
+    Images taller than MITSUBA_EXACT_ROWS get H + 1 rows at v = k / H instead (bilinear
+    samples of the same function; half a row of extra blur, at a resolution where it is small)."""
+    image = np.asarray(image, np.float32)
+    h = image.shape[0]
+    rows = 2 * h + 1 if h <= MITSUBA_EXACT_ROWS else h + 1
+    v = np.arange(rows) / (rows - 1)                   # Mitsuba's row positions
+    y = np.clip(v * h - 0.5, 0.0, h - 1.0)             # -> continuous row index of the image
+    j0 = np.minimum(np.floor(y).astype(np.int64), h - 1)
+    j1 = np.minimum(j0 + 1, h - 1)
+    w = (y - j0).astype(np.float32)[:, None, None]
+    return np.ascontiguousarray(image[j0] * (1 - w) + image[j1] * w, np.float32)
 
 
 def write_exr(path, image: np.ndarray) -> None:
