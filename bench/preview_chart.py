@@ -46,9 +46,11 @@ FAILURES = {
 
 
 def tonemap(linear_rgba: np.ndarray, background: float = 0.18) -> np.ndarray:
-    """The preview's tone map (tonemap.frag) in numpy, over a constant linear background."""
+    """The preview's tone map (tonemap.frag) in numpy, over a constant linear background. Both
+    renderers' colour is premultiplied by coverage (Mitsuba's film and the preview's target:
+    zero where nothing was drawn), so the background is added under the uncovered part only."""
     a = np.clip(linear_rgba[..., 3:4], 0, 1)
-    x = np.maximum(linear_rgba[..., :3], 0) * a + background * (1 - a)
+    x = np.maximum(linear_rgba[..., :3], 0) + background * (1 - a)
     x = np.clip(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0, 1)
     return np.where(x <= 0.0031308, 12.92 * x, 1.055 * np.power(x, 1 / 2.4) - 0.055).astype(np.float32)
 
