@@ -87,17 +87,22 @@ def materials() -> dict[str, dict]:
 
 def mitsuba_render(material, scene, size, spp, work: Path, seed=0, bsdf="native", warm=False):
     """(linear RGBA, seconds) of the preview scene in Mitsuba (llvm_ad_rgb); the cnlm plugin
-    renders in chunks of at most 32 spp (bounded memory: it runs on numpy), averaged."""
+    renders in chunks of CNLM_CHUNK spp (bounded memory: it runs on numpy), averaged."""
     from cnlmc.backends.preview.mitsuba_scene import export_scene, render_scene
     path = export_scene(material, scene, work / bsdf, size, size, spp=spp, bsdf=bsdf)
     image, seconds = 0.0, 0.0
-    for index, chunk in enumerate(spp_chunks(spp, 32 if bsdf == "cnlm" else spp)):
+    for index, chunk in enumerate(spp_chunks(spp, CNLM_CHUNK if bsdf == "cnlm" else spp)):
         part, t = render_scene(path, spp=chunk, seed=seed * 1000 + index, variant="vectorized", warm=warm)
         image, seconds = image + part * (chunk / spp), seconds + t
     return image, seconds
 
 
-def spp_chunks(spp: int, chunk: int = 32) -> list[int]:
+#: spp per cnlm-plugin render: a square power of two, which the exported ldsampler needs
+#: (it rounds any other count up: 32 would render 64).
+CNLM_CHUNK = 16
+
+
+def spp_chunks(spp: int, chunk: int = CNLM_CHUNK) -> list[int]:
     return [chunk] * (spp // chunk) + ([spp % chunk] if spp % chunk else [])
 
 
