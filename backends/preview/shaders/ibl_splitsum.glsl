@@ -1,6 +1,7 @@
 // ---- tier "splitsum": Karis 2013, specialized per material. Specular = the environment
-// prefiltered for the lobe's alpha, looked up where the lobe's first moment points, times
-// the lobe's own directional albedo; diffuse = cosine-prefiltered irradiance likewise
+// prefiltered for the lobe's alpha, looked up where the lobe's first moment points (a rough
+// lobe: a mixture of two prefiltered kernels fitted to its shape per cos theta_v), times the
+// lobe's own directional albedo; diffuse = cosine-prefiltered irradiance likewise
 // (split.glsl.j2). Anisotropy uses sqrt(ax ay).
 
 vec3 pv_prefiltered(vec3 r, float alpha) {
