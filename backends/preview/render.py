@@ -15,7 +15,7 @@ import numpy as np
 from cnlmc.bsdf.sampling import lobe_shares
 
 from . import gl
-from .albedo_tables import albedo_tables
+from .albedo_tables import albedo_tables, split_fitted
 from .camera import Camera, framing_camera
 from .environment import Environment, environment
 from .meshes import Mesh, fit, mesh_by_name, sphere_for_pixels
@@ -81,7 +81,9 @@ def material_shader(material: dict, glsl_options: dict | None = None) -> Materia
         files = {a.name: a.content for a in result.artifacts}
         name = material["name"]
         sidecar = json.loads(files[f"{name}.glsl.json"])
-        _SHADERS[key] = MaterialShader(name, files[f"{name}.glsl"], material_plan(sidecar), sidecar["samplers"],
+        plan = material_plan(sidecar)
+        plan["split_fitted"] = split_fitted(material, plan["roughness_map"])   # split.glsl.j2: two lookups
+        _SHADERS[key] = MaterialShader(name, files[f"{name}.glsl"], plan, sidecar["samplers"],
                                        [n.text() for n in result.notes])
     return _SHADERS[key]
 
@@ -394,10 +396,11 @@ class Renderer:
     # -- programs
     def object_program(self, shader: MaterialShader, tier: Tier):
         key = (id(shader), tier.ibl)
-        if key not in _OBJECT_PROGRAMS:
+        cached = _OBJECT_PROGRAMS.get(key)
+        if cached is None or cached[0] is not shader:     # an id can be reused once its object is gone
             frag = gl.preview_fragment(shader.name, shader.library, shader.plan, tier.ibl)
-            _OBJECT_PROGRAMS[key] = gl.program(gl.shader_file("preview.vert"), frag)
-        return _OBJECT_PROGRAMS[key]
+            cached = _OBJECT_PROGRAMS[key] = (shader, gl.program(gl.shader_file("preview.vert"), frag))
+        return cached[1]
 
     def fullscreen(self, fragment_file: str):
         """(program, vertex array) of a full-screen pass, cached."""

@@ -83,26 +83,19 @@ def kernels(table: np.ndarray, row: int = 0) -> tuple[np.ndarray, np.ndarray]:
 
 
 #: shaders with plan["split_fitted"]: kept alive, since the renderer caches programs by id(shader)
-_FITTED: dict = {}
-
-
-def tell_fitted(monkeypatch) -> None:
-    """The renderer's side of the fit: material_shader() sets plan["split_fitted"] =
-    albedo_tables.split_fitted(material, roughness_map), which makes the shader read the fitted
-    kernel pair (a change to render.py that is the renderer's to make; done here if it has not)."""
+def single_lookup(monkeypatch) -> None:
+    """Shaders as if no table held a fitted pair (plan["split_fitted"] = False): every lobe
+    looked up once, at its lean and exactly its alpha — the split sum before the fit."""
     from dataclasses import replace
 
     from cnlmc.backends.preview import render
-    original = render.material_shader
+    original, unfitted = render.material_shader, {}
 
     def material_shader(material, glsl_options=None):
         shader = original(material, glsl_options)
-        if "split_fitted" in shader.plan:
-            return shader
-        if id(shader) not in _FITTED:
-            plan = {**shader.plan, "split_fitted": split_fitted(material, shader.plan["roughness_map"])}
-            _FITTED[id(shader)] = replace(shader, plan=plan)
-        return _FITTED[id(shader)]
+        if id(shader) not in unfitted:
+            unfitted[id(shader)] = replace(shader, plan={**shader.plan, "split_fitted": False})
+        return unfitted[id(shader)]
     monkeypatch.setattr(render, "material_shader", material_shader)
 
 
@@ -158,7 +151,6 @@ def test_smooth_lobes_keep_one_lookup_at_exactly_their_alpha():
 def test_split_sum_stays_close_to_brute_force_integration(renderer, scene, monkeypatch, phrase):
     """Mean absolute difference of the linear image (object pixels) to mc1024: a few percent
     (rough iron was 10 % with one lookup per lobe, rubber 7 %)."""
-    tell_fitted(monkeypatch)
     m = material_of(phrase)
     split = renderer.render(m, tier="splitsum", scene=scene, hdr=True).hdr
     brute = renderer.render(m, tier="mc1024", scene=scene, hdr=True).hdr
@@ -170,7 +162,6 @@ def test_split_sum_stays_close_to_brute_force_integration(renderer, scene, monke
 def test_a_rough_metal_stays_close_to_brute_force_integration_at_grazing_view(renderer, scene, monkeypatch):
     """The outer ring of the sphere (cos theta_v < 0.6), where one kernel at the lobe's first
     moment was 17 % off for rough iron: the two-kernel fit brings it under 10 %."""
-    tell_fitted(monkeypatch)
     m = material_of("rough iron")
     split = renderer.render(m, tier="splitsum", scene=scene, hdr=True).hdr
     brute = renderer.render(m, tier="mc1024", scene=scene, hdr=True).hdr
@@ -198,8 +189,9 @@ def test_only_fitted_lobes_get_two_lookups(renderer, scene, monkeypatch, phrase,
     as before the fit (the same image: a smooth material costs nothing more)."""
     m = material_of(phrase)
     from cnlmc.backends.preview.render import material_shader
-    assert split_fitted(m, material_shader(m).plan["roughness_map"]) is fitted
-    before = renderer.render(m, tier="splitsum", scene=scene, hdr=True).hdr
-    tell_fitted(monkeypatch)
+    plan = material_shader(m).plan
+    assert plan["split_fitted"] is split_fitted(m, plan["roughness_map"]) is fitted
     after = renderer.render(m, tier="splitsum", scene=scene, hdr=True).hdr
+    single_lookup(monkeypatch)
+    before = renderer.render(m, tier="splitsum", scene=scene, hdr=True).hdr
     assert bool(np.abs(after - before).max() > 0.01) == fitted
