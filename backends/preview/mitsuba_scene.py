@@ -60,11 +60,20 @@ SCENE_TEMPLATE = """<?xml version="1.0" encoding="utf-8"?>
 """
 
 
-#: Mitsuba's sampler: low-discrepancy over each pixel's samples (spp should be a power of two;
-#: Mitsuba rounds up otherwise). With "independent", the random one-sample choice between the
-#: BSDF's lobes (a metal's 10 % cosine share) adds binomial noise; FLIP between two seeds at
-#: 256 spp, 256x256: gold's rim 0.020 -> 0.007, mirror chrome 0.0038 -> 0.0011 (ldsampler).
+#: Mitsuba's sampler: low-discrepancy over each pixel's samples ("ldsampler"). With
+#: "independent", the random one-sample choice between the BSDF's lobes (a metal's 10 % cosine
+#: share) adds binomial noise; FLIP between two seeds at 256 spp, 256x256: gold's rim 0.020 ->
+#: 0.007, mirror chrome 0.0038 -> 0.0011 (ldsampler). ldsampler takes 4, 16, 64, 256, ... spp
+#: only (it rounds any other count up, 1 to 4, 32 to 64): other counts get "independent".
 SAMPLER = "ldsampler"
+
+
+def sampler_for(spp: int) -> str:
+    """The sampler that renders exactly `spp` samples per pixel, low-discrepancy when it can."""
+    power = 4
+    while power < spp:
+        power *= 4
+    return SAMPLER if spp >= 4 and power == spp else "independent"
 
 
 def _vec(v) -> str:
@@ -72,9 +81,10 @@ def _vec(v) -> str:
 
 
 def export_scene(material: dict, scene: Scene, out_dir, width: int, height: int, spp: int = 64,
-                 seed: int = 0, hide_background: bool = True, bsdf: str = "native", sampler: str = SAMPLER) -> Path:
+                 seed: int = 0, hide_background: bool = True, bsdf: str = "native", sampler: str | None = None) -> Path:
     """Write scene.xml, materials.xml (+ baked textures), mesh.ply and environment.exr.
-    `bsdf="cnlm"` uses cnlmc's own BSDF through the `cnlm` plugin (backends/mitsuba_cnlm.py)."""
+    `bsdf="cnlm"` uses cnlmc's own BSDF through the `cnlm` plugin (backends/mitsuba_cnlm.py).
+    `sampler`: default `sampler_for(spp)` (render at that spp: ldsampler rounds others up)."""
     from cnlmc.backends import mitsuba
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -92,7 +102,7 @@ def export_scene(material: dict, scene: Scene, out_dir, width: int, height: int,
     xml = SCENE_TEMPLATE.format(
         spp=int(spp), width=int(width), height=int(height), hide="true" if hide_background else "false",
         fov=cam.fov_y, near=max(distance * 0.01, 1e-3), far=distance * 10, eye=_vec(cam.eye),
-        target=_vec(cam.target), up=_vec(cam.up), seed=int(seed), sampler=sampler, env_scale=scene.env_intensity,
+        target=_vec(cam.target), up=_vec(cam.up), seed=int(seed), sampler=sampler or sampler_for(spp), env_scale=scene.env_intensity,
         light_dir=_vec(-scene.env.key.unit), irradiance=scene.env.key.irradiance * scene.env_intensity,
         bsdf_id=quoteattr(bsdf_id))
     (out / "scene.xml").write_text(xml)

@@ -82,3 +82,20 @@ def test_texture_orientation_matches_mitsuba(tmp_path, mitsuba, renderer, monkey
         top, bottom = inside.copy(), inside.copy()
         top[size // 2:], bottom[: size // 2] = False, False
         assert red[top].mean() > 0.8 and red[bottom].mean() < 0.5, name
+
+
+@pytest.mark.parametrize("spp, sampler", [(1, "independent"), (2, "independent"), (4, "ldsampler"),
+                                          (16, "ldsampler"), (32, "independent"), (64, "ldsampler"),
+                                          (128, "independent"), (256, "ldsampler")])
+def test_the_exported_sampler_renders_exactly_the_asked_samples(tmp_path, spp, sampler):
+    """ldsampler takes only 4^k spp (it rounds 1 up to 4, 32 to 64): any other count gets the
+    independent sampler, so a 1-spp render is one sample (the chart's Mitsuba curve)."""
+    mi = pytest.importorskip("mitsuba")
+    from cnlmc.backends.preview.mitsuba_scene import export_scene, sampler_for
+    from cnlmc.backends.preview.render import default_scene
+    assert sampler_for(spp) == sampler
+    path = export_scene(material_of("gold"), default_scene("sphere", "studio", (8, 8)), tmp_path, 8, 8, spp=spp)
+    assert f'<sampler type="{sampler}">' in path.read_text()
+    if mi.variant() is None:
+        mi.set_variant("scalar_rgb")
+    assert mi.load_file(str(path)).sensors()[0].sampler().sample_count() == spp
