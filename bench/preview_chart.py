@@ -321,8 +321,7 @@ def plot(summary: dict, rows: list[dict], size: int, ref_spp: int, path: Path) -
             ax.axhline(0.02, color="black", lw=0.8, ls=":")
         ax.set_xscale("log")
         ax.set_ylim(bottom=0)
-        ax.set_xlabel(f"ms per frame at {timed_at}x{timed_at}, log (preview: llvmpipe; Mitsuba: llvm_ad_rgb; "
-                      f"errors at {size}x{size})")
+        ax.set_xlabel(f"ms per {timed_at}² frame, log (llvmpipe; Mitsuba llvm_ad_rgb); errors at {size}²")
         ax.set_ylabel(("FLIP mean" if key == "flip" else "RMSE, tone-mapped sRGB") + f" vs converged Mitsuba ({ref_spp} spp)")
         ax.grid(alpha=0.3, which="both")
     axes[0].legend(fontsize=8, loc="upper right")
