@@ -368,6 +368,13 @@ def grown(rect: tuple[int, int, int, int] | None, pixels: int, width: int, heigh
     return (x0, y0, max(x1 - x0, 0), max(y1 - y0, 0))
 
 
+def strips_around(rect: tuple[int, int, int, int], width: int, height: int) -> list[tuple[int, int, int, int]]:
+    """The frame outside `rect` as up to four non-empty rectangles: below, above, left, right."""
+    x, y, w, h = rect
+    strips = [(0, 0, width, y), (0, y + h, width, height - y - h), (0, y, x, h), (x + w, y, width - x - w, h)]
+    return [s for s in strips if s[2] > 0 and s[3] > 0]
+
+
 def read_image(fbo, rect: tuple[int, int, int, int] | None, size: tuple[int, int], dtype: str) -> np.ndarray:
     """RGBA of the framebuffer, top row first; with `rect` only that rectangle is read, the rest
     is zero (transparent black, what the frame holds there)."""
@@ -402,12 +409,19 @@ class Renderer:
             cached = _OBJECT_PROGRAMS[key] = (shader, gl.program(gl.shader_file("preview.vert"), frag))
         return cached[1]
 
-    def fullscreen(self, fragment_file: str):
-        """(program, vertex array) of a full-screen pass, cached."""
-        if fragment_file not in _FULLSCREEN:
-            prog = gl.program(gl.shader_file("fullscreen.vert"), gl.shader_file(fragment_file))
-            _FULLSCREEN[fragment_file] = (prog, self.ctx.vertex_array(prog, []))
-        return _FULLSCREEN[fragment_file]
+    def fullscreen(self, fragment_file: str, define: str = ""):
+        """(program, vertex array) of a full-screen pass, cached; `define` names a preprocessor
+        symbol defined for this variant (llvmpipe runs both sides of every branch, even on a
+        uniform: a variant that leaves work out must be its own program)."""
+        key = (fragment_file, define)
+        if key not in _FULLSCREEN:
+            source = gl.shader_file(fragment_file)
+            if define:
+                version, rest = source.split("\n", 1)
+                source = f"{version}\n#define {define}\n{rest}"
+            prog = gl.program(gl.shader_file("fullscreen.vert"), source)
+            _FULLSCREEN[key] = (prog, self.ctx.vertex_array(prog, []))
+        return _FULLSCREEN[key]
 
     def object_vao(self, prog, mesh: Mesh):
         key = (id(prog), id(mesh))
@@ -486,11 +500,26 @@ class Renderer:
     def _tonemap(self, t: Targets, scene: Scene, res: EnvResources, background: bool,
                  rect: tuple[int, int, int, int] | None = None) -> None:
         """Edge filter (without MSAA), the environment background (where the object does not
-        cover the pixel), exposure, ACES, sRGB: one full-screen pass — or, without a
-        background, only over `rect` (x, y, w, h) where something was drawn (read_image() reads
-        that rectangle back; outside it the image is transparent black, what the pass writes)."""
+        cover the pixel), exposure, ACES, sRGB, in one pass over `rect` (x, y, w, h), where
+        something was drawn, or over the whole frame when rect is None. Outside `rect`: the
+        background alone (a variant without the object layer's five reads), or nothing
+        (read_image() reads `rect` back; the rest is transparent black, what the pass writes)."""
         import moderngl
-        prog, vao = self.fullscreen("tonemap.frag")
+        self.ctx.disable(moderngl.DEPTH_TEST)
+        t.ldr.use()
+        vao = self._tonemap_program(t, scene, background)
+        self.ctx.scissor = rect
+        vao.render(moderngl.TRIANGLES, vertices=3)
+        if rect is not None and background:
+            vao = self._tonemap_program(t, scene, background, "PV_BACKGROUND_ONLY")
+            for strip in strips_around(rect, self.width, self.height):
+                self.ctx.scissor = strip
+                vao.render(moderngl.TRIANGLES, vertices=3)
+        self.ctx.scissor = None
+
+    def _tonemap_program(self, t: Targets, scene: Scene, background: bool, define: str = ""):
+        """The tone-map variant's vertex array, its textures bound and uniforms set."""
+        prog, vao = self.fullscreen("tonemap.frag", define)
         t.resolved_tex.use(0)
         gl.set_uniform(prog, "pv_hdr", 0)
         gl.set_uniform(prog, "pv_exposure", scene.exposure)
@@ -500,12 +529,7 @@ class Renderer:
         if background:
             t.background_tex.use(1)
             gl.set_uniform(prog, "pv_background_image", 1)
-        self.ctx.disable(moderngl.DEPTH_TEST)
-        t.ldr.use()
-        if rect is not None and not background:
-            self.ctx.scissor = rect
-        vao.render(moderngl.TRIANGLES, vertices=3)
-        self.ctx.scissor = None
+        return vao
 
     def draw(self, scene: Scene, material: dict, tier: Tier | str = DEFAULT_TIER, glsl_options: dict | None = None,
              model: np.ndarray | None = None, overlay=None) -> Targets:
@@ -516,12 +540,14 @@ class Renderer:
         res = env_resources(scene.env)
         t = targets(self.width, self.height, self.msaa)
         model = np.eye(4) if model is None else model
-        # Without a background only the rectangle around what is drawn is cleared, tone mapped
-        # and read back (one pixel more is cleared: the edge filter reads its neighbours).
-        t.rect = None if scene.background == "env" else self.drawn_rect(scene, model, overlay)
+        # Only the rectangle around what is drawn is cleared and tone mapped with the object
+        # layer (one pixel more is cleared: the edge filter reads its neighbours); without a
+        # background only it is read back.
+        drawn = self.drawn_rect(scene, model, overlay)
+        t.rect = None if scene.background == "env" else drawn
         t.draw_target.use()
         self.ctx.viewport = (0, 0, self.width, self.height)
-        t.draw_target.clear(0.0, 0.0, 0.0, 0.0, depth=1.0, viewport=grown(t.rect, 1, self.width, self.height))
+        t.draw_target.clear(0.0, 0.0, 0.0, 0.0, depth=1.0, viewport=grown(drawn, 1, self.width, self.height))
         if overlay is not None:
             overlay(self, scene)
             t.draw_target.use()
@@ -529,7 +555,7 @@ class Renderer:
         t.resolve(self.ctx)
         if scene.background == "env":
             self._draw_background(t, scene, res)
-        self._tonemap(t, scene, res, scene.background == "env", t.rect)     # composites the background
+        self._tonemap(t, scene, res, scene.background == "env", drawn)     # composites the background
         return t
 
     #: pixels around the projected bounds: the edge filter's 1-pixel reach, and rounding.

@@ -102,3 +102,26 @@ def test_a_warm_material_is_drawn_once_per_render(renderer, scene, monkeypatch):
     monkeypatch.setattr(render_module.Renderer, "draw", lambda self, *a, **k: calls.append(1) or original(self, *a, **k))
     frame = renderer.render(material, tier="analytic", scene=scene)
     assert len(calls) == 1 and frame.ms > 0
+
+
+def test_the_background_outside_the_drawn_rectangle_changes_no_pixel(renderer, monkeypatch):
+    """With the environment background the frame outside the object's rectangle is tone mapped
+    by the background-only variant: the same image as one whole-frame pass."""
+    scene, model = off_centre_scene(renderer.width)
+    scene.background = "env"
+    rect = renderer.drawn_rect(scene, model)
+    assert len(render_module.strips_around(rect, renderer.width, renderer.height)) == 4
+    split = renderer.render(material_of("gold"), tier="splitsum", scene=scene, model=model).rgba
+    full_frame(monkeypatch)
+    whole = renderer.render(material_of("gold"), tier="splitsum", scene=scene, model=model).rgba
+    assert split[..., 3].min() == 255                          # the background covers every pixel
+    np.testing.assert_array_equal(split, whole)
+
+
+def test_strips_around_tile_the_frame_outside_the_rectangle():
+    rect = (3, 5, 7, 4)
+    covered = np.zeros((20, 16), int)
+    for x, y, w, h in render_module.strips_around(rect, 16, 20) + [rect]:
+        covered[y:y + h, x:x + w] += 1
+    assert np.all(covered == 1)
+    assert render_module.strips_around((0, 0, 16, 20), 16, 20) == []

@@ -42,3 +42,18 @@ def test_back_faces_are_culled_only_on_closed_meshes(scene, monkeypatch):
     monkeypatch.setattr(render, "is_closed", lambda mesh: False)
     both = render.Renderer(SMALL).render(material, tier="splitsum", scene=scene)
     assert np.array_equal(culled.rgba, both.rgba)             # culling changes the cost, not the image
+
+
+def test_the_tone_map_pass_encodes_exactly_to_eight_bits(scene):
+    """The 8-bit output is the exact tone map (exposure, ACES fit, sRGB with pow) of the HDR
+    frame, rounded: within half a level plus the shader's sRGB curve's error (a fitted sum of
+    square roots, 3e-5 = 0.008 of a level)."""
+    from cnlmc.backends.preview.render import Renderer
+    renderer = Renderer(SMALL, edge_aa=False)
+    frame = renderer.render(material_of("white varnished oak"), tier="splitsum", scene=scene, hdr=True)
+    x = np.maximum(frame.hdr[..., :3], 0) * scene.exposure
+    x = np.clip(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0, 1)
+    exact = np.where(x <= 0.0031308, 12.92 * x, 1.055 * np.power(x, 1 / 2.4) - 0.055) * 255
+    covered = frame.hdr[..., 3] > 0.5
+    diff = np.abs(frame.rgba[..., :3].astype(float) - exact)[covered]
+    assert covered.sum() > 500 and diff.max() < 0.52, diff.max()     # rounding: 0.5; the curve: 0.008

@@ -7,6 +7,8 @@
 // background is then composited under it with the filtered coverage, as an MSAA resolve would.
 // Background (pv_background = 1): background.frag's quarter-resolution image of the blurred
 // environment, upsampled bilinearly where the object does not cover the pixel entirely.
+// PV_BACKGROUND_ONLY (defined by the renderer for the frame outside the object's rectangle):
+// the background alone, without the object layer's reads.
 in vec2 v_uv;
 in vec2 v_ndc;
 uniform sampler2D pv_hdr;
@@ -23,9 +25,15 @@ vec3 pv_aces(vec3 x) {
     return clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
 }
 
+// sRGB encoding. Above the linear toe, 1.055 x^(1/2.4) - 0.055 is evaluated as a sum of
+// x^(1/2), x^(1/4), x^(1/8) and x (square roots, coefficients fitted in numpy by reweighted
+// least squares on [0.0031308, 1]): largest error 3.1e-5, 0.008 of an 8-bit step. llvmpipe
+// computes pow() as exp2(log2()) in software: this halves the cost of the tone-map pass.
 vec3 pv_srgb(vec3 c) {
     vec3 x = clamp(c, 0.0, 1.0);
-    return mix(12.92 * x, 1.055 * pow(x, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), x));
+    vec3 r2 = sqrt(x), r4 = sqrt(r2), r8 = sqrt(r4);
+    vec3 curve = -0.00406562 + 0.65398271 * r2 + 0.68872019 * r4 - 0.31848075 * r8 - 0.02018794 * x;
+    return mix(12.92 * x, curve, step(vec3(0.0031308), x));
 }
 
 float pv_key(vec4 c) {
@@ -49,7 +57,11 @@ vec4 pv_object(ivec2 p) {
 }
 
 void main() {
+#ifdef PV_BACKGROUND_ONLY
+    vec4 c = vec4(0.0);          // outside the rectangle the object was drawn in: nothing there
+#else
     vec4 c = pv_object(ivec2(gl_FragCoord.xy));
+#endif
     c.a = clamp(c.a, 0.0, 1.0);
     if (pv_background != 0) {
         if (c.a < 1.0) c.rgb += (1.0 - c.a) * texture(pv_background_image, v_uv).rgb;
