@@ -34,6 +34,8 @@ DEFAULTS = {"marker_length": "0.1", "marker_id": "", "scale": "1.0", "intrinsics
 #: video frames: no multisampling (bench/ar_frames.py: msaa 4 costs about 3x per frame on llvmpipe).
 VIDEO_MSAA = "0"
 SHADOW_EXTENT = 1.6       # half-size of the shadow quad, in units of the fitted object's radius
+#: the shadow quad's corners (x, z) in units of SHADOW_EXTENT, in triangle-strip order
+QUAD_CORNERS = ((-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0))
 
 
 @dataclass
@@ -134,7 +136,7 @@ class ShadowOverlay:
     def world_points(self) -> np.ndarray:
         """The quad's corners (homogeneous, world): where the overlay draws."""
         e = SHADOW_EXTENT
-        corners = np.array([[x, 0.0, z, 1.0] for x in (-e, e) for z in (-e, e)])
+        corners = np.array([[x * e, 0.0, z * e, 1.0] for x, z in QUAD_CORNERS])
         return corners @ np.asarray(self.model, np.float64).T
 
     def __call__(self, renderer, scene) -> None:
@@ -151,27 +153,27 @@ class ShadowOverlay:
         vao.render(moderngl.TRIANGLE_STRIP)
 
 
-_SHADOW_GL: dict = {}
+_FOOTPRINTS: dict = {}      # id(mesh) -> (mesh, texture): the mesh is kept, so its id stays its own
+_QUAD: list = []            # [(program, vertex array)] once made
 
 
 def shadow_texture(mesh):
     """The mesh's footprint as a texture, made once per mesh (the video form draws it every frame)."""
     from cnlmc.backends.preview import gl
-    key = ("footprint", id(mesh))
-    if key not in _SHADOW_GL:
-        _SHADOW_GL[key] = (mesh, gl.float_texture(footprint(mesh), mipmaps=False, repeat=(False, False)))
-    return _SHADOW_GL[key][1]
+    if id(mesh) not in _FOOTPRINTS:
+        _FOOTPRINTS[id(mesh)] = (mesh, gl.float_texture(footprint(mesh), mipmaps=False, repeat=(False, False)))
+    return _FOOTPRINTS[id(mesh)][1]
 
 
 def shadow_quad():
     """(program, vertex array) of the ground quad, made once."""
     from cnlmc.backends.preview import gl
-    if "quad" not in _SHADOW_GL:
+    if not _QUAD:
         shaders = Path(__file__).parent / "shaders"
         prog = gl.program((shaders / "ground.vert").read_text(), (shaders / "shadow.frag").read_text())
-        quad = gl.current().buffer(np.array([-1, -1, 1, -1, -1, 1, 1, 1], "f4").tobytes())
-        _SHADOW_GL["quad"] = (prog, gl.current().vertex_array(prog, [(quad, "2f", "in_xz")]))
-    return _SHADOW_GL["quad"]
+        quad = gl.current().buffer(np.array(QUAD_CORNERS, "f4").tobytes())
+        _QUAD.append((prog, gl.current().vertex_array(prog, [(quad, "2f", "in_xz")])))
+    return _QUAD[0]
 
 
 # ----------------------------------------------------------------- compositing

@@ -104,10 +104,10 @@ def _lean(toward: np.ndarray, along: np.ndarray) -> np.ndarray:
     return -np.arctan2(toward, np.maximum(along, 1e-12)) / theta_v
 
 
-def _leans(material: dict, alpha, options: dict) -> tuple[np.ndarray, np.ndarray]:
+def _leans(black_material: dict, white_material: dict, options: dict) -> tuple[np.ndarray, np.ndarray]:
     """(MU_SIZE,) lean of the black lobe and of the tint lobe (tint = white − black)."""
-    white = _directional(_variant(material, (1, 1, 1), alpha), options, moment=True)
-    black = _directional(_variant(material, (0, 0, 0), alpha), options, moment=True)
+    white = _directional(white_material, options, moment=True)
+    black = _directional(black_material, options, moment=True)
     tint = white - black
     return _lean(black[:, 0], black[:, 1]), _lean(tint[:, 0], tint[:, 1])
 
@@ -283,7 +283,7 @@ def _integrate(material_json: str, fresnel: str, multiscatter: bool, mapped: boo
         white_material = _variant(material, (1, 1, 1), alpha)
         black = _directional(black_material, options)
         white = _directional(white_material, options)
-        black_lean, tint_lean = _leans(material, alpha, options)
+        black_lean, tint_lean = _leans(black_material, white_material, options)
         black_rows.append(np.concatenate([
             np.concatenate([black, black_lean[:, None]], 1),
             _kernels(black_material, alpha, options, black_lean, fit_black)]))

@@ -164,6 +164,7 @@ class Window:
         self.root = root
         self.closed = False
         self.image = None
+        self._pending = b""            # what stdin gave after the last full line
         root.title("cnlmc preview")
         self.label = tkinter.Label(root, borderwidth=0, highlightthickness=0, padx=0, pady=0)
         self.label.pack()
@@ -231,7 +232,7 @@ class Window:
             self.update()
             return None if self.closed else line
         import select
-        pending = getattr(self, "_pending", b"")
+        pending = self._pending
         while True:
             end = pending.find(b"\n")
             if end >= 0:

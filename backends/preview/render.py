@@ -354,9 +354,8 @@ def screen_rect(points: np.ndarray, view_projection: np.ndarray, width: int, hei
     ndc = clip[:, :2] / w[:, None]
     x = (ndc[:, 0] * 0.5 + 0.5) * width
     y = (ndc[:, 1] * 0.5 + 0.5) * height
-    x0, y0 = max(int(np.floor(x.min())) - pad, 0), max(int(np.floor(y.min())) - pad, 0)
-    x1, y1 = min(int(np.ceil(x.max())) + pad, width), min(int(np.ceil(y.max())) + pad, height)
-    return (x0, y0, max(x1 - x0, 0), max(y1 - y0, 0))
+    x0, y0 = int(np.floor(x.min())), int(np.floor(y.min()))
+    return grown((x0, y0, int(np.ceil(x.max())) - x0, int(np.ceil(y.max())) - y0), pad, width, height)
 
 
 def grown(rect: tuple[int, int, int, int] | None, pixels: int, width: int, height: int):
@@ -581,8 +580,8 @@ class Renderer:
         """Render one material; returns the sRGB image (top row first) and the frame time."""
         scene = scene or default_scene(mesh, env, (self.width, self.height))
         tier = parse_tier(tier) if isinstance(tier, str) else tier
-        warm_key = (id(material_shader(material, glsl_options)), tier.name, id(scene.mesh), id(scene.env),
-                    self.width, self.height)
+        shader = material_shader(material, glsl_options)
+        warm_key = (id(shader), tier.name, id(scene.mesh), id(scene.env), self.width, self.height)
         if warm_key not in _WARM:       # the first frame compiles and uploads: drawn once untimed
             self.draw(scene, material, tier, glsl_options, **draw_options)
             self.ctx.finish()
@@ -593,7 +592,7 @@ class Renderer:
         ms = (time.perf_counter() - start) * 1000.0
         rgba = read_image(t.ldr, t.rect, (self.width, self.height), "f1")
         linear = read_image(t.resolved, t.rect, (self.width, self.height), "f4") if hdr else None
-        return Frame(rgba, linear, ms, tier.name, material_shader(material, glsl_options).notes)
+        return Frame(rgba, linear, ms, tier.name, shader.notes)
 
     def frame_time(self, scene: Scene, material: dict, tier: Tier | str, glsl_options=None, repeats: int = 5) -> float:
         """Median frame time (ms) over `repeats` frames, after one warm-up frame."""

@@ -157,7 +157,7 @@ def test_shadow_footprint_is_made_once_per_mesh(posed_photo, gl_available, gold,
     made = []
     original = ar.footprint
     monkeypatch.setattr(ar, "footprint", lambda mesh, *a, **k: made.append(1) or original(mesh, *a, **k))
-    monkeypatch.setattr(ar, "_SHADOW_GL", {})
+    monkeypatch.setattr(ar, "_FOOTPRINTS", {})
     for _ in range(3):
         composite(posed_photo["photo"], gold["materials"][0], {"mesh": "teapot", "tier": "analytic"})
     assert len(made) == 1

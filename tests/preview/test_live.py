@@ -119,7 +119,7 @@ class _Root:
 def _window(root):
     from cnlmc.backends.preview.live import Window
     window = Window.__new__(Window)
-    window.root, window.closed, window.image = root, False, None
+    window.root, window.closed, window.image, window._pending = root, False, None, b""
     root.on_delete = window.close
     return window
 
