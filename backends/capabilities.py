@@ -38,9 +38,23 @@ def material_features(material: dict) -> list[str]:
     return features
 
 
-ALL_FEATURES = ("model.diffuse", "model.dielectric", "model.conductor", "model.glass", "distribution.ggx",
-                "distribution.ward", "anisotropic", "diffuse.oren_nayar", "coat", "coat.color",
-                "maps.base_color", "maps.normal", "maps.roughness", "maps.mask", "maps.metallic")
+ALL_FEATURES = (
+    "model.diffuse",
+    "model.dielectric",
+    "model.conductor",
+    "model.glass",
+    "distribution.ggx",
+    "distribution.ward",
+    "anisotropic",
+    "diffuse.oren_nayar",
+    "coat",
+    "coat.color",
+    "maps.base_color",
+    "maps.normal",
+    "maps.roughness",
+    "maps.mask",
+    "maps.metallic",
+)
 
 
 class BackendRefused(Exception):

@@ -9,7 +9,7 @@ from .registry import Artifact
 
 NAME = "ir"
 DESCRIPTION = "the intermediate representation as JSON (docs/ir.md)"
-CAPABILITIES = {feature: ("exact", "the IR is the source of truth") for feature in ALL_FEATURES}
+CAPABILITIES = dict.fromkeys(ALL_FEATURES, ("exact", "the IR is the source of truth"))
 
 
 def emit(ir: dict, options: dict) -> EmitResult:

@@ -15,8 +15,17 @@ import MaterialX as mx
 
 from . import materialx_native as native
 from .capabilities import ALL_FEATURES, EmitResult, check_material
-from .materialx_params import (SURFACES, SURFACE_NAMES, bake_textures, capabilities_for, exchange_options,
-                               phrase_text, surface_inputs, tangent_rotation, unique_identifiers)
+from .materialx_params import (
+    SURFACE_NAMES,
+    SURFACES,
+    bake_textures,
+    capabilities_for,
+    exchange_options,
+    phrase_text,
+    surface_inputs,
+    tangent_rotation,
+    unique_identifiers,
+)
 from .registry import Artifact
 
 NAME = "materialx"
@@ -31,26 +40,51 @@ _SHARED = {
     "model.dielectric": ("exact", ""),
     "model.glass": ("exact", ""),
     "distribution.ggx": ("exact", ""),
-    "distribution.ward": ("approximate", "no Ward lobe in MaterialX surfaces: anisotropic GGX with the same alpha_x, alpha_y"),
+    "distribution.ward": (
+        "approximate",
+        "no Ward lobe in MaterialX surfaces: anisotropic GGX with the same alpha_x, alpha_y",
+    ),
     "anisotropic": ("exact", ""),
-    "coat.color": ("approximate", "coat_color = color^thickness, the normal-incidence tint; the angular absorption is the shader's own"),
-    "maps.base_color": BAKED, "maps.normal": BAKED, "maps.roughness": BAKED, "maps.metallic": BAKED,
+    "coat.color": (
+        "approximate",
+        "coat_color = color^thickness, the normal-incidence tint; the angular absorption is the shader's own",
+    ),
+    "maps.base_color": BAKED,
+    "maps.normal": BAKED,
+    "maps.roughness": BAKED,
+    "maps.metallic": BAKED,
     "maps.mask": ("drop", "a mask has no shading input of its own (the colour and roughness maps it drives are kept)"),
 }
 # Per-surface differences as a table.
 CAPABILITIES_BY_SURFACE = {
-    "open_pbr_surface": {**_SHARED,
-        "model.conductor": ("approximate", "OpenPBR's F82-tint Schlick conductor fitted to the measured eta/k at 0 and 82 "
-                            "degrees: base_color = f0 (clipped to [0,1]), specular_color = f82 / Schlick(f0, 1/7)"),
-        "diffuse.oren_nayar": ("approximate", "OpenPBR's energy-preserving Oren-Nayar with base_diffuse_roughness = sigma "
-                               "(clipped to [0,1])"),
-        "coat": ("approximate", "OpenPBR coat (coat_ior, coat_roughness); OpenPBR also roughens and darkens the base "
-                 "under the coat, unlike the IR's Weidlich-Wilkie stack"),
+    "open_pbr_surface": {
+        **_SHARED,
+        "model.conductor": (
+            "approximate",
+            "OpenPBR's F82-tint Schlick conductor fitted to the measured eta/k at 0 and 82 "
+            "degrees: base_color = f0 (clipped to [0,1]), specular_color = f82 / Schlick(f0, 1/7)",
+        ),
+        "diffuse.oren_nayar": (
+            "approximate",
+            "OpenPBR's energy-preserving Oren-Nayar with base_diffuse_roughness = sigma (clipped to [0,1])",
+        ),
+        "coat": (
+            "approximate",
+            "OpenPBR coat (coat_ior, coat_roughness); OpenPBR also roughens and darkens the base "
+            "under the coat, unlike the IR's Weidlich-Wilkie stack",
+        ),
     },
-    "standard_surface": {**_SHARED,
-        "model.conductor": ("approximate", "Standard Surface's artistic conductor (Gulbrandsen): base_color = f0, "
-                            "specular_color = the edge tint that gives back the measured eta"),
-        "diffuse.oren_nayar": ("approximate", "Standard Surface's Oren-Nayar with diffuse_roughness = sigma (clipped to [0,1])"),
+    "standard_surface": {
+        **_SHARED,
+        "model.conductor": (
+            "approximate",
+            "Standard Surface's artistic conductor (Gulbrandsen): base_color = f0, "
+            "specular_color = the edge tint that gives back the measured eta",
+        ),
+        "diffuse.oren_nayar": (
+            "approximate",
+            "Standard Surface's Oren-Nayar with diffuse_roughness = sigma (clipped to [0,1])",
+        ),
         "coat": ("approximate", "Standard Surface coat (coat_IOR, coat_roughness); coat_affect_color/roughness stay 0"),
     },
 }
@@ -58,8 +92,12 @@ CAPABILITIES = CAPABILITIES_BY_SURFACE["open_pbr_surface"]
 assert all(set(t) == set(ALL_FEATURES) for t in CAPABILITIES_BY_SURFACE.values())
 
 # texture role -> (concept, image type); the concept is named per surface by SURFACE_NAMES
-TEXTURE_INPUTS = {"base_color": ("base_color", "color3"), "roughness": ("roughness", "float"),
-                  "metallic": ("metalness", "float"), "normal": ("normal", "vector3")}
+TEXTURE_INPUTS = {
+    "base_color": ("base_color", "color3"),
+    "roughness": ("roughness", "float"),
+    "metallic": ("metalness", "float"),
+    "normal": ("normal", "vector3"),
+}
 COLOUR_SPACES = {"srgb": "srgb_texture", "linear": "lin_rec709"}
 
 
@@ -104,13 +142,13 @@ def map_source(doc, material: dict, ident: str, role: str, image, surface: str, 
         normal = doc.addNode("normalmap", f"{ident}_normalmap", "vector3")
         normal.setConnectedNode("in", image)
         return normal
-    if role == "base_color" and base == "conductor":       # the map is the tint on f0
+    if role == "base_color" and base == "conductor":  # the map is the tint on f0
         tint = doc.addNode("multiply", f"{ident}_base_color_f0", "color3")
         tint.setConnectedNode("in1", image)
         _set(tint, "in2", "color3", inputs[SURFACE_NAMES[surface]["base_color"]][1])
         return tint
     if role == "roughness" and material["params"].get("alpha_convention") == "linear":
-        root = doc.addNode("sqrt", f"{ident}_roughness_sqrt", "float")   # alpha = r -> r' = sqrt(r)
+        root = doc.addNode("sqrt", f"{ident}_roughness_sqrt", "float")  # alpha = r -> r' = sqrt(r)
         root.setConnectedNode("in", image)
         return root
     return image
@@ -145,8 +183,11 @@ def native_maps(material: dict) -> dict:
     """role -> map ref for the maps maps=native expresses with MaterialX nodes. A rust-like
     mask becomes metalness = 1 - mask, only on a conductor without a metallic map of its own."""
     found = native.native_roles(material, tuple(TEXTURE_INPUTS) + ("mask",))
-    if "mask" in found and (material["model"]["base"] != "conductor" or "metallic" in (material.get("maps") or {})
-                            or native.recipe_for({**found["mask"], "output": "metallic"}) is None):
+    if "mask" in found and (
+        material["model"]["base"] != "conductor"
+        or "metallic" in (material.get("maps") or {})
+        or native.recipe_for({**found["mask"], "output": "metallic"}) is None
+    ):
         del found["mask"]
     return found
 
@@ -175,8 +216,7 @@ def add_material(doc, material: dict, ident: str, surface: str, textures: dict, 
     node.setDocString(phrase_text(material))
 
 
-def build_document(materials: list[dict], surface: str = "open_pbr_surface", textures=None,
-                   idents=None, natives=None):
+def build_document(materials: list[dict], surface: str = "open_pbr_surface", textures=None, idents=None, natives=None):
     """IR materials -> a MaterialX Document (not yet validated). `natives`: ident -> role -> map
     ref for the maps expressed with MaterialX nodes (maps=native)."""
     idents = idents or unique_identifiers(m["name"] for m in materials)
@@ -248,8 +288,9 @@ def prepare(ir: dict, options: dict, target: str = NAME, extra=None):
         material_caps = {**caps, **{f"maps.{role}": native.NATIVE for role in natives[ident]}}
         check_material(notes, target, material_caps, material)
         roles = tuple(r for r in TEXTURE_INPUTS if r not in natives[ident])
-        textures[ident], baked = bake_textures(material, ident, {**opts, "maps": "none" if mode == "none" else "bake"},
-                                               roles=roles)
+        textures[ident], baked = bake_textures(
+            material, ident, {**opts, "maps": "none" if mode == "none" else "bake"}, roles=roles
+        )
         artifacts += baked
     return opts, idents, notes, textures, natives, artifacts
 

@@ -42,7 +42,7 @@ class Ctx:
         for key, value in inputs.items():
             if isinstance(value, mx.Node):
                 node.setConnectedNode(key, value)
-            elif isinstance(value, tuple):          # (type, value)
+            elif isinstance(value, tuple):  # (type, value)
                 kind, raw = value
                 node.setInputValue(key, _TYPES[kind](*raw) if kind in _TYPES else raw, kind)
             elif isinstance(value, int) and not isinstance(value, bool):
@@ -75,13 +75,15 @@ def _scaled(colour, factor: float) -> tuple:
 
 # ---------------------------------------------------------------------------- sandblasted
 
+
 def sandblasted_roughness(ctx: Ctx):
     """Low-frequency fractal2d blotches: roughness +-0.05*contrast around the material's."""
     r, contrast = float(ctx.input("roughness", 0.6)), ctx.param("contrast", 1.0)
     blotches = ctx.node("fractal2d", "blotches", "float", octaves=3, texcoord=ctx.uv("blotches", 4.0))
     spread = 0.05 * contrast
-    remap = ctx.node("remap", "roughness", "float", **{"in": blotches}, inlow=-1.0, inhigh=1.0,
-                     outlow=r - spread, outhigh=r + spread)
+    remap = ctx.node(
+        "remap", "roughness", "float", **{"in": blotches}, inlow=-1.0, inhigh=1.0, outlow=r - spread, outhigh=r + spread
+    )
     return ctx.node("clamp", "roughness_clamp", "float", **{"in": remap})
 
 
@@ -94,14 +96,21 @@ def sandblasted_normal(ctx: Ctx):
 
 # --------------------------------------------------------------------------------- marble
 
+
 def marble_veins(ctx: Ctx):
     """Vein darkness in [0,1]: 1 - |sin(bands + turbulence)|^0.3 (thin dark lines)."""
     scale, grain = ctx.param("scale", 1.0), ctx.param("grain", 1.0)
     angle = math.radians(ctx.param("direction", 30.0))
-    turbulence = ctx.node("fractal2d", "turbulence", "float", octaves=6, diminish=0.55,
-                          texcoord=ctx.uv("turbulence", 3.0))
-    across = ctx.node("dotproduct", "across", "float", in1=ctx.uv("bands", 1.0),
-                      in2=("vector2", (round(math.cos(angle), 6), round(math.sin(angle), 6))))
+    turbulence = ctx.node(
+        "fractal2d", "turbulence", "float", octaves=6, diminish=0.55, texcoord=ctx.uv("turbulence", 3.0)
+    )
+    across = ctx.node(
+        "dotproduct",
+        "across",
+        "float",
+        in1=ctx.uv("bands", 1.0),
+        in2=("vector2", (round(math.cos(angle), 6), round(math.sin(angle), 6))),
+    )
     bands = ctx.node("multiply", "bands", "float", in1=across, in2=round(math.pi * 3.0 * scale, 6))
     bend = ctx.node("multiply", "bend", "float", in1=turbulence, in2=round(1.4 * grain * math.pi, 6))
     phase = ctx.node("add", "phase", "float", in1=bands, in2=bend)
@@ -124,12 +133,14 @@ def marble_roughness(ctx: Ctx):
 
 # -------------------------------------------------------------------------------- granite
 
+
 def granite_minerals(ctx: Ctx):
     """Crystals (cellnoise2d, one value per cell) blended with fine worleynoise2d speckles."""
     scale = ctx.param("scale", 1.0)
     crystals = ctx.node("cellnoise2d", "crystals", "float", texcoord=ctx.uv("crystals", 40.0 * scale))
-    speckle = ctx.node("worleynoise2d", "speckle", "float", jitter=1.0,
-                       texcoord=ctx.uv("speckle", 64.0 * scale, (0.37, 0.71)))
+    speckle = ctx.node(
+        "worleynoise2d", "speckle", "float", jitter=1.0, texcoord=ctx.uv("speckle", 64.0 * scale, (0.37, 0.71))
+    )
     return ctx.node("mix", "minerals", "float", fg=speckle, bg=crystals, mix=0.35)
 
 
@@ -143,8 +154,7 @@ def granite_color(ctx: Ctx):
 
 def granite_roughness(ctx: Ctx):
     r = float(ctx.input("roughness", 0.35))
-    return ctx.node("remap", "roughness", "float", **{"in": granite_minerals(ctx)},
-                    outlow=r + 0.05, outhigh=r - 0.05)
+    return ctx.node("remap", "roughness", "float", **{"in": granite_minerals(ctx)}, outlow=r + 0.05, outhigh=r - 0.05)
 
 
 # ----------------------------------------------------------------------------------- rust
@@ -155,27 +165,38 @@ RUST_DARK, RUST_LIGHT = (0.09, 0.03, 0.012), (0.5, 0.2, 0.05)
 def rust_mask(ctx: Ctx):
     """Corrosion patches: fractal2d minus worley pits, thresholded by coverage (soft edge)."""
     scale, coverage = ctx.param("scale", 1.0), ctx.param("coverage", 0.4)
-    patches = ctx.node("fractal2d", "patches", "float", octaves=7, diminish=0.6, texcoord=ctx.uv("patches", 3.0 * scale))
+    patches = ctx.node(
+        "fractal2d", "patches", "float", octaves=7, diminish=0.6, texcoord=ctx.uv("patches", 3.0 * scale)
+    )
     pits = ctx.node("worleynoise2d", "pits", "float", texcoord=ctx.uv("pits", 24.0 * scale, (0.13, 0.59)))
-    pitted = ctx.node("subtract", "corrosion", "float", in1=patches,
-                      in2=ctx.node("multiply", "pits_amount", "float", in1=pits, in2=0.15))
+    pitted = ctx.node(
+        "subtract",
+        "corrosion",
+        "float",
+        in1=patches,
+        in2=ctx.node("multiply", "pits_amount", "float", in1=pits, in2=0.15),
+    )
     threshold = (0.5 - coverage) * 1.2 - (1.0 if coverage >= 1.0 else 0.0)
-    return ctx.node("smoothstep", "mask", "float", **{"in": pitted}, low=round(threshold - 0.04, 6),
-                    high=round(threshold + 0.04, 6))
+    return ctx.node(
+        "smoothstep", "mask", "float", **{"in": pitted}, low=round(threshold - 0.04, 6), high=round(threshold + 0.04, 6)
+    )
 
 
 def rust_flakes(ctx: Ctx):
     scale = ctx.param("scale", 1.0)
     flakes = ctx.node("fractal2d", "flakes", "float", octaves=4, texcoord=ctx.uv("flakes", 16.0 * scale, (0.41, 0.23)))
-    contrast = ctx.node("multiply", "flakes_contrast", "float", in1=flakes, in2=round(1.5 * ctx.param("contrast", 1.0), 6))
+    contrast = ctx.node(
+        "multiply", "flakes_contrast", "float", in1=flakes, in2=round(1.5 * ctx.param("contrast", 1.0), 6)
+    )
     return ctx.unit("flakes", contrast)
 
 
 def rust_color(ctx: Ctx):
     """mix(base_color, rust colour (dark..orange flakes), mask)."""
     flaky = ctx.node("mix", "rust_color", "color3", fg=_colour(RUST_LIGHT), bg=_colour(RUST_DARK), mix=rust_flakes(ctx))
-    return ctx.node("mix", "color", "color3", fg=flaky, bg=_colour(ctx.input("base_color", [0.9, 0.9, 0.9])),
-                    mix=rust_mask(ctx))
+    return ctx.node(
+        "mix", "color", "color3", fg=flaky, bg=_colour(ctx.input("base_color", [0.9, 0.9, 0.9])), mix=rust_mask(ctx)
+    )
 
 
 def rust_roughness(ctx: Ctx):
@@ -197,7 +218,7 @@ RECIPES = {
     ("granite", "roughness"): granite_roughness,
     ("rust", "color"): rust_color,
     ("rust", "roughness"): rust_roughness,
-    ("rust", "mask"): rust_metallic,       # the mask drives base metalness = 1 - mask
+    ("rust", "mask"): rust_metallic,  # the mask drives base metalness = 1 - mask
     ("rust", "metallic"): rust_metallic,
 }
 
@@ -208,8 +229,9 @@ def recipe_for(ref: dict):
 
 def native_roles(material: dict, roles) -> dict:
     """role -> map ref for the maps of a material that have a recipe (roles: the ones used)."""
-    return {role: ref for role, ref in (material.get("maps") or {}).items()
-            if role in roles and recipe_for(ref) is not None}
+    return {
+        role: ref for role, ref in (material.get("maps") or {}).items() if role in roles and recipe_for(ref) is not None
+    }
 
 
 def build(doc, material: dict, ident: str, role: str, ref: dict):

@@ -19,11 +19,12 @@ from pathlib import Path
 from .capabilities import COMPILER_OPTIONS
 from .registry import Artifact
 
-MU_82 = 1.0 / 7.0          # cos 82 degrees, rounded as OpenPBR does: the F82 angle
-DIGITS = 6                 # values are rounded so documents are stable (golden files)
+MU_82 = 1.0 / 7.0  # cos 82 degrees, rounded as OpenPBR does: the F82 angle
+DIGITS = 6  # values are rounded so documents are stable (golden files)
 
 
 # ---------------------------------------------------------------------------------- names
+
 
 def identifier(text: str, fallback: str = "material") -> str:
     """Any text -> [A-Za-z_][A-Za-z0-9_]*: accents folded, everything else becomes '_'."""
@@ -92,6 +93,7 @@ def capabilities_for(capabilities: dict, opts: dict) -> dict:
 
 # --------------------------------------------------------------------------- conductors
 
+
 def clip01(values) -> list[float]:
     return [min(max(float(v), 0.0), 1.0) for v in values]
 
@@ -135,9 +137,10 @@ def gulbrandsen_edge(params: dict) -> list[float]:
 
 # ------------------------------------------------------------------------- roughness
 
+
 def alpha_pair(params: dict) -> tuple[float, float]:
     """(alpha_x, alpha_y) as microfacet widths (alpha is authoritative in the IR)."""
-    ax, ay = params["alpha"]        # widths in either convention: only r differs
+    ax, ay = params["alpha"]  # widths in either convention: only r differs
     return float(ax), float(ay)
 
 
@@ -169,21 +172,43 @@ def standard_roughness(ax: float, ay: float) -> tuple[float, float]:
 # IR concept -> input name, per MaterialX surface shader (per-target differences as a table).
 SURFACE_NAMES = {
     "open_pbr_surface": {
-        "base_weight": "base_weight", "base_color": "base_color", "metalness": "base_metalness",
-        "diffuse_roughness": "base_diffuse_roughness", "specular_weight": "specular_weight",
-        "specular_color": "specular_color", "roughness": "specular_roughness", "ior": "specular_ior",
-        "anisotropy": "specular_roughness_anisotropy", "transmission": "transmission_weight",
-        "transmission_color": "transmission_color", "coat": "coat_weight", "coat_color": "coat_color",
-        "coat_roughness": "coat_roughness", "coat_ior": "coat_ior", "normal": "geometry_normal",
+        "base_weight": "base_weight",
+        "base_color": "base_color",
+        "metalness": "base_metalness",
+        "diffuse_roughness": "base_diffuse_roughness",
+        "specular_weight": "specular_weight",
+        "specular_color": "specular_color",
+        "roughness": "specular_roughness",
+        "ior": "specular_ior",
+        "anisotropy": "specular_roughness_anisotropy",
+        "transmission": "transmission_weight",
+        "transmission_color": "transmission_color",
+        "coat": "coat_weight",
+        "coat_color": "coat_color",
+        "coat_roughness": "coat_roughness",
+        "coat_ior": "coat_ior",
+        "normal": "geometry_normal",
         "tangent": "geometry_tangent",
     },
     "standard_surface": {
-        "base_weight": "base", "base_color": "base_color", "metalness": "metalness",
-        "diffuse_roughness": "diffuse_roughness", "specular_weight": "specular",
-        "specular_color": "specular_color", "roughness": "specular_roughness", "ior": "specular_IOR",
-        "anisotropy": "specular_anisotropy", "rotation": "specular_rotation", "transmission": "transmission",
-        "transmission_color": "transmission_color", "coat": "coat", "coat_color": "coat_color",
-        "coat_roughness": "coat_roughness", "coat_ior": "coat_IOR", "normal": "normal", "tangent": "tangent",
+        "base_weight": "base",
+        "base_color": "base_color",
+        "metalness": "metalness",
+        "diffuse_roughness": "diffuse_roughness",
+        "specular_weight": "specular",
+        "specular_color": "specular_color",
+        "roughness": "specular_roughness",
+        "ior": "specular_IOR",
+        "anisotropy": "specular_anisotropy",
+        "rotation": "specular_rotation",
+        "transmission": "transmission",
+        "transmission_color": "transmission_color",
+        "coat": "coat",
+        "coat_color": "coat_color",
+        "coat_roughness": "coat_roughness",
+        "coat_ior": "coat_IOR",
+        "normal": "normal",
+        "tangent": "tangent",
     },
 }
 ROUGHNESS_FIT = {"open_pbr_surface": openpbr_roughness, "standard_surface": standard_roughness}
@@ -235,9 +260,12 @@ def _coat_inputs(coat: dict) -> dict:
     """The IR's coat colour is a normal-incidence round-trip tint scaled by thickness."""
     thickness = float(coat.get("thickness", 1.0))
     color = [max(float(c), 0.0) ** thickness for c in coat["color"]]
-    return {"coat": ("float", 1.0), "coat_color": ("color3", clip01(color)),
-            "coat_roughness": ("float", alpha_to_roughness(float(coat["alpha"][0]))),
-            "coat_ior": ("float", float(coat["ior"]))}
+    return {
+        "coat": ("float", 1.0),
+        "coat_color": ("color3", clip01(color)),
+        "coat_roughness": ("float", alpha_to_roughness(float(coat["alpha"][0]))),
+        "coat_ior": ("float", float(coat["ior"])),
+    }
 
 
 def surface_inputs(material: dict, surface: str = "open_pbr_surface") -> dict[str, tuple[str, object]]:
@@ -264,7 +292,7 @@ class Texture:
 
     role: str
     path: str
-    encoding: str   # "srgb" (8/16-bit PNG colour), "linear" (EXR colour) or "raw" (data)
+    encoding: str  # "srgb" (8/16-bit PNG colour), "linear" (EXR colour) or "raw" (data)
 
     @property
     def is_colour(self) -> bool:
@@ -277,8 +305,9 @@ def texture_encoding(role: str, fmt: str) -> str:
     return "raw"
 
 
-def bake_textures(material: dict, ident: str, opts: dict, folder: str = "textures",
-                  roles=None, derive=None) -> tuple[dict[str, Texture], list[Artifact]]:
+def bake_textures(
+    material: dict, ident: str, opts: dict, folder: str = "textures", roles=None, derive=None
+) -> tuple[dict[str, Texture], list[Artifact]]:
     """Bake the material's maps (the roles given, default all) into image Artifacts.
 
     `derive(arrays) -> arrays` may add roles computed from the baked ones (e.g. Mitsuba's
@@ -288,13 +317,14 @@ def bake_textures(material: dict, ident: str, opts: dict, folder: str = "texture
     if opts["maps"] == "none" or not refs:
         return {}, []
     from cnlmc.backends.maps import MapError, bake, write_maps
+
     try:
         arrays = bake(refs, material["params"], opts["map_size"], opts["seed"])
         if derive:
             arrays = derive(arrays)
         with tempfile.TemporaryDirectory(prefix="cnlmc-tex-") as tmp:
             paths = write_maps(arrays, tmp, fmt=opts["map_format"], stem=ident)
-            files = {p.stem[len(ident) + 1:]: (p.name, p.read_bytes()) for p in paths}
+            files = {p.stem[len(ident) + 1 :]: (p.name, p.read_bytes()) for p in paths}
     except MapError as exc:
         raise ValueError(f"{material['name']}: cannot bake maps: {exc}") from None
     textures, artifacts = {}, []

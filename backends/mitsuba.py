@@ -16,41 +16,70 @@ import re
 import numpy as np
 
 from .capabilities import ALL_FEATURES, EmitResult, check_material
-from .materialx_params import (alpha_pair, alpha_to_roughness, bake_textures, capabilities_for, clip01,
-                               conductor_f0, exchange_options, rounded, unique_identifiers, xml_text)
+from .materialx_params import (
+    alpha_pair,
+    alpha_to_roughness,
+    bake_textures,
+    capabilities_for,
+    clip01,
+    conductor_f0,
+    exchange_options,
+    rounded,
+    unique_identifiers,
+    xml_text,
+)
 from .registry import Artifact
 
 NAME = "mitsuba"
 DESCRIPTION = "Mitsuba 3 scene XML (full preview scene or BSDF fragment) with baked bitmap textures"
-OPTIONS = {"form": ("scene", ("scene", "fragment")), "spp": ("64", None), "resolution": ("256", None),
-           "max_depth": ("8", None), "envmap": ("", None), "bsdf": ("native", ("native", "cnlm"))}
+OPTIONS = {
+    "form": ("scene", ("scene", "fragment")),
+    "spp": ("64", None),
+    "resolution": ("256", None),
+    "max_depth": ("8", None),
+    "envmap": ("", None),
+    "bsdf": ("native", ("native", "cnlm")),
+}
 ALPHA_MIRROR = 1e-3
-TEXTURED_ALPHA = ("roughconductor", "roughdielectric")   # roughplastic's alpha is a float
+TEXTURED_ALPHA = ("roughconductor", "roughdielectric")  # roughplastic's alpha is a float
 
 BAKED = ("bake", "procedural graph baked to a bitmap texture")
 CAPABILITIES = {
     "model.diffuse": ("exact", ""),
-    "model.dielectric": ("approximate", "roughplastic layers its diffuse base differently (rough-interface "
-                         "transmittance and internal re-reflection, not (1 - F)(1 - F)); bsdf=cnlm renders cnlmc's own"),
+    "model.dielectric": (
+        "approximate",
+        "roughplastic layers its diffuse base differently (rough-interface "
+        "transmittance and internal re-reflection, not (1 - F)(1 - F)); bsdf=cnlm renders cnlmc's own",
+    ),
     "model.conductor": ("exact", ""),
     "model.glass": ("exact", ""),
     "distribution.ggx": ("exact", ""),
     "distribution.ward": ("approximate", "Mitsuba 3 has no Ward BSDF: anisotropic GGX with the same alpha_u, alpha_v"),
-    "anisotropic": ("approximate", "rough conductors and glass take alpha_u/alpha_v directly, but the streaks follow "
-                    "the UV tangent (no rotation); an anisotropic plastic becomes `principled` (Disney diffuse, Schlick)"),
+    "anisotropic": (
+        "approximate",
+        "rough conductors and glass take alpha_u/alpha_v directly, but the streaks follow "
+        "the UV tangent (no rotation); an anisotropic plastic becomes `principled` (Disney diffuse, Schlick)",
+    ),
     "diffuse.oren_nayar": ("approximate", "Mitsuba 3 has no Oren-Nayar plugin: Lambertian `diffuse`"),
-    "coat": ("approximate", "Mitsuba 3 has no coating BSDF: `principled` with clearcoat 1 (Disney's GTR1 coat at a "
-             "fixed IOR 1.5, gloss from the coat roughness); a coated metal uses Schlick with base_color = f0"),
+    "coat": (
+        "approximate",
+        "Mitsuba 3 has no coating BSDF: `principled` with clearcoat 1 (Disney's GTR1 coat at a "
+        "fixed IOR 1.5, gloss from the coat roughness); a coated metal uses Schlick with base_color = f0",
+    ),
     "coat.color": ("drop", "principled's clear coat is colourless"),
-    "maps.base_color": BAKED, "maps.roughness": ("bake", "baked and converted to alpha = r^2 bitmaps; roughplastic takes one float "
-                       "alpha, so there the map's mean is used"),
+    "maps.base_color": BAKED,
+    "maps.roughness": (
+        "bake",
+        "baked and converted to alpha = r^2 bitmaps; roughplastic takes one float "
+        "alpha, so there the map's mean is used",
+    ),
     "maps.normal": ("bake", "baked tangent-space normals through the `normalmap` plugin"),
     "maps.metallic": ("drop", "a metallic map would need a blend of two BSDFs; the uniform metalness is used"),
     "maps.mask": ("drop", "a mask has no shading input of its own (the colour and roughness maps it drives are kept)"),
 }
 assert set(CAPABILITIES) == set(ALL_FEATURES)
 #: bsdf=cnlm: the plugin evaluates cnlmc's BSDF itself; like the GLSL backend it has no metallic map.
-CNLM_CAPABILITIES = {feature: ("exact", "") for feature in ALL_FEATURES}
+CNLM_CAPABILITIES = dict.fromkeys(ALL_FEATURES, ("exact", ""))
 CNLM_CAPABILITIES["maps.metallic"] = ("drop", "no IR model reads a metallic map")
 USED_MAPS = ("base_color", "roughness", "normal")
 #: `bsdf=cnlm`: cnlmc's own BSDF through the `cnlm` plugin (backends/mitsuba_cnlm.py), which
@@ -59,6 +88,7 @@ CNLM_MAPS = ("base_color", "roughness", "normal", "mask")
 
 
 # ----------------------------------------------------------------------------- properties
+
 
 def prop(kind: str, name: str, value) -> dict:
     if kind == "float":
@@ -83,6 +113,7 @@ def node(plugin: str, props, children=()) -> dict:
 
 # -------------------------------------------------------------------------- plugin choice
 
+
 def plugin_for(material: dict) -> str:
     """The Mitsuba plugin for an IR material (the decision table, in order)."""
     model, params = material["model"], material["params"]
@@ -92,8 +123,11 @@ def plugin_for(material: dict) -> str:
     if model["coat"] or (base == "dielectric" and model["anisotropic"]):
         return "principled"
     mirror = max(alpha_pair(params)) < ALPHA_MIRROR
-    return {"dielectric": ("roughplastic", "plastic"), "conductor": ("roughconductor", "conductor"),
-            "glass": ("roughdielectric", "dielectric")}[base][mirror]
+    return {
+        "dielectric": ("roughplastic", "plastic"),
+        "conductor": ("roughconductor", "conductor"),
+        "glass": ("roughdielectric", "dielectric"),
+    }[base][mirror]
 
 
 class AlphaMaps:
@@ -116,7 +150,7 @@ class AlphaMaps:
         if self.plugin == "principled":
             arrays["principled_roughness"] = np.sqrt(alpha)
         elif self.plugin not in TEXTURED_ALPHA:
-            self.mean_alpha = float(alpha.mean())          # plastic: one float; mirrors: none
+            self.mean_alpha = float(alpha.mean())  # plastic: one float; mirrors: none
         elif self.anisotropy:
             s = math.sqrt(1.0 - 0.9 * self.anisotropy)
             arrays["alpha_u"], arrays["alpha_v"] = np.clip(alpha / s, 0, 1), alpha * s
@@ -144,22 +178,31 @@ def diffuse_bsdf(material, tex):
 
 def plastic_bsdf(material, tex, rough: bool):
     params = material["params"]
-    props = [prop("float", "int_ior", params["ior"]), prop("float", "ext_ior", 1.0),
-             colour("diffuse_reflectance", params["base_color"], tex.get("base_color"))]
+    props = [
+        prop("float", "int_ior", params["ior"]),
+        prop("float", "ext_ior", 1.0),
+        colour("diffuse_reflectance", params["base_color"], tex.get("base_color")),
+    ]
     return node("roughplastic" if rough else "plastic", (roughness_props(material, tex) if rough else []) + props)
 
 
 def conductor_bsdf(material, tex, rough: bool):
     params = material["params"]
-    props = [prop("rgb", "eta", rounded(params["eta"])), prop("rgb", "k", rounded(params["k"])),
-             colour("specular_reflectance", params["base_color"], tex.get("base_color"))]
+    props = [
+        prop("rgb", "eta", rounded(params["eta"])),
+        prop("rgb", "k", rounded(params["k"])),
+        colour("specular_reflectance", params["base_color"], tex.get("base_color")),
+    ]
     return node("roughconductor" if rough else "conductor", (roughness_props(material, tex) if rough else []) + props)
 
 
 def glass_bsdf(material, tex, rough: bool):
     params = material["params"]
-    props = [prop("float", "int_ior", params["ior"]), prop("float", "ext_ior", 1.0),
-             colour("specular_transmittance", params["base_color"], tex.get("base_color"))]
+    props = [
+        prop("float", "int_ior", params["ior"]),
+        prop("float", "ext_ior", 1.0),
+        colour("specular_transmittance", params["base_color"], tex.get("base_color")),
+    ]
     return node("roughdielectric" if rough else "dielectric", (roughness_props(material, tex) if rough else []) + props)
 
 
@@ -170,11 +213,16 @@ def principled_bsdf(material, tex):
     ax, ay = alpha_pair(params)
     alpha = math.sqrt(ax * ay)
     base_color = conductor_f0(params) if base == "conductor" else params["base_color"]
-    props = [colour("base_color", base_color, tex.get("base_color") if base != "conductor" else None),
-             prop("float", "metallic", 1.0 if base == "conductor" else 0.0)]
-    roughness = alpha_to_roughness(alpha)     # principled: alpha = roughness^2
-    props.append(bitmap("roughness", tex["principled_roughness"]) if "principled_roughness" in tex
-                 else prop("float", "roughness", roughness))
+    props = [
+        colour("base_color", base_color, tex.get("base_color") if base != "conductor" else None),
+        prop("float", "metallic", 1.0 if base == "conductor" else 0.0),
+    ]
+    roughness = alpha_to_roughness(alpha)  # principled: alpha = roughness^2
+    props.append(
+        bitmap("roughness", tex["principled_roughness"])
+        if "principled_roughness" in tex
+        else prop("float", "roughness", roughness)
+    )
     if model["anisotropic"]:
         props.append(prop("float", "anisotropic", min(max(float(params.get("anisotropy") or 0.0), 0.0), 1.0)))
     if "ior" in params:
@@ -183,17 +231,20 @@ def principled_bsdf(material, tex):
         props.append(prop("float", "spec_trans", 1.0))
     if model["coat"] and params.get("coat"):
         coat_alpha = float(params["coat"]["alpha"][0])
-        gloss = min(max((0.1 - coat_alpha) / 0.099, 0.0), 1.0)   # Disney: alpha_c = lerp(0.1, 0.001, gloss)
+        gloss = min(max((0.1 - coat_alpha) / 0.099, 0.0), 1.0)  # Disney: alpha_c = lerp(0.1, 0.001, gloss)
         props += [prop("float", "clearcoat", 1.0), prop("float", "clearcoat_gloss", gloss)]
     return node("principled", props)
 
 
 BUILDERS = {
-    "diffuse": diffuse_bsdf, "principled": principled_bsdf,
-    "roughplastic": functools.partial(plastic_bsdf, rough=True), "plastic": functools.partial(plastic_bsdf, rough=False),
+    "diffuse": diffuse_bsdf,
+    "principled": principled_bsdf,
+    "roughplastic": functools.partial(plastic_bsdf, rough=True),
+    "plastic": functools.partial(plastic_bsdf, rough=False),
     "roughconductor": functools.partial(conductor_bsdf, rough=True),
     "conductor": functools.partial(conductor_bsdf, rough=False),
-    "roughdielectric": functools.partial(glass_bsdf, rough=True), "dielectric": functools.partial(glass_bsdf, rough=False),
+    "roughdielectric": functools.partial(glass_bsdf, rough=True),
+    "dielectric": functools.partial(glass_bsdf, rough=False),
 }
 TRANSMISSIVE = {"roughdielectric", "dielectric"}
 
@@ -202,6 +253,7 @@ def cnlm_bsdf(material: dict, tex: dict) -> dict:
     """The `cnlm` plugin: the IR material (name, model, params) as JSON plus the raw maps it
     reads. '$' is written as a JSON escape: Mitsuba's loader substitutes $parameters in strings."""
     import json
+
     shading = {key: material[key] for key in ("name", "model", "params")}
     text = json.dumps(shading, sort_keys=True, default=float).replace("$", "\\u0024")
     props = [prop("string", "material", text)]
@@ -228,6 +280,7 @@ def bsdf_for(material: dict, ident: str, tex: dict, cnlm: bool = False) -> dict:
 
 # ------------------------------------------------------------------------------- templates
 
+
 def comment(value) -> str:
     """Safe inside <!-- -->: no '--', no trailing '-', one line."""
     text = xml_text(value).replace("\r", " ").replace("\n", " ")
@@ -237,15 +290,21 @@ def comment(value) -> str:
 
 def _finalize(value):
     import markupsafe
+
     return xml_text(value) if isinstance(value, str) and not isinstance(value, markupsafe.Markup) else value
 
 
 @functools.lru_cache(maxsize=1)
 def environment():
     import jinja2
-    env = jinja2.Environment(loader=jinja2.PackageLoader("cnlmc.backends", "templates/mitsuba"),
-                             autoescape=True, undefined=jinja2.StrictUndefined, keep_trailing_newline=True,
-                             finalize=_finalize)
+
+    env = jinja2.Environment(
+        loader=jinja2.PackageLoader("cnlmc.backends", "templates/mitsuba"),
+        autoescape=True,
+        undefined=jinja2.StrictUndefined,
+        keep_trailing_newline=True,
+        finalize=_finalize,
+    )
     env.filters["comment"] = comment
     return env
 
@@ -255,8 +314,9 @@ def layout(count: int) -> tuple[list[list[float]], dict]:
     cols = math.ceil(math.sqrt(count))
     rows = math.ceil(count / cols)
     spacing = 2.5
-    centres = [[(i % cols - (cols - 1) / 2) * spacing, ((rows - 1) / 2 - i // cols) * spacing, 0.0]
-               for i in range(count)]
+    centres = [
+        [(i % cols - (cols - 1) / 2) * spacing, ((rows - 1) / 2 - i // cols) * spacing, 0.0] for i in range(count)
+    ]
     extent = max(cols, rows) * spacing
     fov = 40.0
     distance = extent / (2 * math.tan(math.radians(fov / 2))) + 1.5
@@ -267,6 +327,7 @@ def layout(count: int) -> tuple[list[list[float]], dict]:
 def version() -> str:
     try:
         from importlib.metadata import version as dist_version
+
         return dist_version("cnlmc")
     except Exception:  # pragma: no cover - not installed
         return "dev"
@@ -280,8 +341,14 @@ def render_xml(entries: list[dict], opts: dict) -> str:
     for entry, centre in zip(entries, centres):
         entry["center"] = centre
     return env.get_template("scene.xml.j2").render(
-        materials=entries, camera=camera, spp=opts["spp"], resolution=opts["resolution"],
-        max_depth=opts["max_depth"], envmap=opts["envmap"], version=version())
+        materials=entries,
+        camera=camera,
+        spp=opts["spp"],
+        resolution=opts["resolution"],
+        max_depth=opts["max_depth"],
+        envmap=opts["envmap"],
+        version=version(),
+    )
 
 
 def parse_options(options: dict) -> dict:
@@ -309,7 +376,8 @@ def emit(ir: dict, options: dict) -> EmitResult:
         if alpha_maps and alpha_maps.mean_alpha is not None and plugin_for(material) == "roughplastic":
             tex["mean_alpha"] = alpha_maps.mean_alpha
         images += baked
-        entries.append({"ident": ident, "phrase": material.get("phrase", ""),
-                        "bsdf": bsdf_for(material, ident, tex, cnlm)})
+        entries.append(
+            {"ident": ident, "phrase": material.get("phrase", ""), "bsdf": bsdf_for(material, ident, tex, cnlm)}
+        )
     name = "materials.xml" if opts["form"] == "fragment" else "scene.xml"
     return EmitResult([Artifact(name, render_xml(entries, opts))] + images, notes)

@@ -16,6 +16,7 @@ The plugin needs a vectorized variant (`llvm_ad_rgb`, `cuda_ad_rgb`) with symbol
 `material` (string, the IR material as JSON) and optional textures `base_color`,
 `roughness` (perceptual, the IR convention applies) and `mask` (coverage towards Lambert).
 """
+
 from __future__ import annotations
 
 import json
@@ -37,19 +38,22 @@ def choose_variant() -> str:
     process (not an exception) with Debian's LLVM 15/16, so they are used only with LLVM 19
     (apt libllvm19, found at LLVM_LIBRARY) or a library the user names in DRJIT_LIBLLVM_PATH."""
     import mitsuba as mi
+
     if mi.variant() in VARIANTS:
         return mi.variant()
     if "DRJIT_LIBLLVM_PATH" not in os.environ:
         if not os.path.exists(LLVM_LIBRARY):
-            raise PluginError(f"the cnlm Mitsuba plugin needs Mitsuba's llvm_ad_rgb variant with LLVM 19 "
-                              f"({LLVM_LIBRARY}: apt install libllvm19), or DRJIT_LIBLLVM_PATH set to a working libLLVM")
+            raise PluginError(
+                f"the cnlm Mitsuba plugin needs Mitsuba's llvm_ad_rgb variant with LLVM 19 "
+                f"({LLVM_LIBRARY}: apt install libllvm19), or DRJIT_LIBLLVM_PATH set to a working libLLVM"
+            )
         os.environ["DRJIT_LIBLLVM_PATH"] = LLVM_LIBRARY
     for variant in VARIANTS:
         if variant in mi.variants():
             try:
                 mi.set_variant(variant)
                 return variant
-            except Exception:       # pragma: no cover - depends on the machine's LLVM/CUDA
+            except Exception:  # pragma: no cover - depends on the machine's LLVM/CUDA
                 continue
     raise PluginError("the cnlm Mitsuba plugin needs the llvm_ad_rgb variant (apt install libllvm19)")
 
@@ -61,6 +65,7 @@ def register() -> str:
     """Register `cnlm` for the current (or a chosen vectorized) variant and switch symbolic
     calls and loops off (the plugin needs concrete arrays); returns the variant."""
     import mitsuba as mi
+
     variant = choose_variant()
     set_symbolic(False)
     mi.register_bsdf(PLUGIN, lambda props: _plugin_class()(props))
@@ -71,6 +76,7 @@ def set_symbolic(enabled: bool) -> dict:
     """Set Dr.Jit's symbolic calls/loops; returns the previous values (to restore). Scenes
     without the plugin render about twice as fast with them on (Mitsuba's default)."""
     import drjit as dr
+
     previous = {}
     for name in SYMBOLIC_FLAGS:
         flag = getattr(dr.JitFlag, name)
@@ -81,6 +87,7 @@ def set_symbolic(enabled: bool) -> dict:
 
 def restore_symbolic(previous: dict) -> None:
     import drjit as dr
+
     for name, value in previous.items():
         dr.set_flag(getattr(dr.JitFlag, name), value)
 
@@ -107,6 +114,7 @@ class LaneModel:
     def __init__(self, material: dict, textures: dict):
         from cnlmc.bsdf.evaluate import lobe_alphas
         from cnlmc.bsdf.sampling import lobe_shares
+
         self.material = material
         self.textures = textures
         model, params = material["model"], material["params"]
@@ -116,6 +124,7 @@ class LaneModel:
     def params_at(self, si, active) -> dict:
         """The material with α per lane when a roughness map is bound."""
         from cnlmc.bsdf.alpha import alpha_from_roughness
+
         if "roughness" not in self.textures:
             return self.material
         params = self.material["params"]
@@ -127,12 +136,14 @@ class LaneModel:
     def base_alpha(self, material: dict):
         """The base lobe's (αx, αy) for sampling (per lane with a roughness map)."""
         from cnlmc.bsdf.evaluate import lobe_alphas
+
         return lobe_alphas(material)[0] or (1.0, 1.0)
 
     def f(self, si, material: dict, wo, wi, active) -> np.ndarray:
         """f(wo, wi), RGB (N, 3): affine in the base colour, so a colour map costs two calls."""
         from cnlmc.bsdf.diffuse import lambert
         from cnlmc.bsdf.evaluate import evaluate
+
         if "base_color" not in self.textures:
             value = evaluate(material, wo, wi)
             albedo = np.asarray(material["params"].get("base_color", (1.0, 1.0, 1.0)), np.float64)
@@ -155,6 +166,7 @@ def _plugin_class():
     """The mi.BSDF subclass (defined lazily: Mitsuba loads only when the plugin is used)."""
     import drjit as dr
     import mitsuba as mi
+
     from cnlmc.bsdf.sampling import mixture_pdf, sample_mixture, sampled_weight
 
     class CnlmBSDF(mi.BSDF):
@@ -193,8 +205,9 @@ def _plugin_class():
             v, u = _lanes(si.wi), _lanes(sample2)
             material = self.lanes.params_at(si, active)
             base_alpha = self.lanes.base_alpha(material)
-            l = sample_mixture(v, _lanes(sample1), u[:, 0], u[:, 1], self.lanes.shares, base_alpha,
-                               self.lanes.coat_alpha)
+            l = sample_mixture(
+                v, _lanes(sample1), u[:, 0], u[:, 1], self.lanes.shares, base_alpha, self.lanes.coat_alpha
+            )
             pdf = mixture_pdf(v, l, self.lanes.shares, base_alpha, self.lanes.coat_alpha)
             weight = sampled_weight(self.lanes.f(si, material, v, l, active), v, l, pdf)
             bs = mi.BSDFSample3f()

@@ -41,6 +41,7 @@ def available(include_plugins: bool = True) -> dict[str, str]:
     table = dict(BUILTIN_BACKENDS)
     if include_plugins:
         from importlib.metadata import entry_points  # slow to import: only when asked
+
         for ep in entry_points(group="cnlmc.backends"):
             table.setdefault(ep.name, ep.value)
     return table
@@ -57,5 +58,6 @@ def get_backend(name: str):
     try:
         return importlib.import_module(table[name])
     except ImportError as exc:
-        raise TargetUnavailable(f"target '{name}' cannot load: {exc}; "
-                                f"install it with: pip install 'cnlmc[{name}]'") from None
+        raise TargetUnavailable(
+            f"target '{name}' cannot load: {exc}; install it with: pip install 'cnlmc[{name}]'"
+        ) from None

@@ -17,16 +17,31 @@ from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade
 
 from . import materialx as mtlx_backend
 from .capabilities import ALL_FEATURES, EmitResult, check_material
-from .materialx_params import (alpha_pair, alpha_to_roughness, bake_textures, capabilities_for, clip01,
-                               conductor_f0, exchange_options, identifier, phrase_text, rounded,
-                               unique_identifiers)
+from .materialx_params import (
+    alpha_pair,
+    alpha_to_roughness,
+    bake_textures,
+    capabilities_for,
+    clip01,
+    conductor_f0,
+    exchange_options,
+    identifier,
+    phrase_text,
+    rounded,
+    unique_identifiers,
+)
 from .registry import Artifact
 
 NAME = "usd"
 DESCRIPTION = "USD stage (.usda/.usdc/.usdz): UsdPreviewSurface + MaterialX OpenPBR networks, variants for 'or'"
 FORMATS = ("usda", "usdc", "usdz")
-OPTIONS = {"format": ("", ("",) + FORMATS), "output": ("", None), "mesh": ("none", ("none", "sphere")),
-           "surface": ("open_pbr_surface", mtlx_backend.SURFACES), "root": ("Root", None)}
+OPTIONS = {
+    "format": ("", ("",) + FORMATS),
+    "output": ("", None),
+    "mesh": ("none", ("none", "sphere")),
+    "surface": ("open_pbr_surface", mtlx_backend.SURFACES),
+    "root": ("Root", None),
+}
 VARIANT_SET = "material"
 
 KEPT = "(the MaterialX network beside it keeps it)"
@@ -34,16 +49,27 @@ BAKED = ("bake", "procedural graph baked to an image read by UsdUVTexture (st fr
 CAPABILITIES = {
     "model.diffuse": ("exact", ""),
     "model.dielectric": ("exact", ""),
-    "model.conductor": ("approximate", "UsdPreviewSurface metallic workflow: Schlick with diffuseColor = f0, no "
-                        "edge tint; the OpenPBR network carries the F82 tint"),
+    "model.conductor": (
+        "approximate",
+        "UsdPreviewSurface metallic workflow: Schlick with diffuseColor = f0, no "
+        "edge tint; the OpenPBR network carries the F82 tint",
+    ),
     "model.glass": ("approximate", "UsdPreviewSurface: opacity 0 with ior, no refraction tint " + KEPT),
     "distribution.ggx": ("exact", ""),
-    "distribution.ward": ("approximate", "no Ward lobe: GGX (anisotropic in the OpenPBR network, isotropic in the preview)"),
+    "distribution.ward": (
+        "approximate",
+        "no Ward lobe: GGX (anisotropic in the OpenPBR network, isotropic in the preview)",
+    ),
     "anisotropic": ("drop", "UsdPreviewSurface has no anisotropy: isotropic roughness sqrt(sqrt(ax*ay)) " + KEPT),
-    "diffuse.oren_nayar": ("approximate", "UsdPreviewSurface is Lambertian; the OpenPBR network has base_diffuse_roughness"),
+    "diffuse.oren_nayar": (
+        "approximate",
+        "UsdPreviewSurface is Lambertian; the OpenPBR network has base_diffuse_roughness",
+    ),
     "coat": ("approximate", "UsdPreviewSurface clearcoat (fixed IOR 1.5, clearcoatRoughness); OpenPBR coat beside it"),
     "coat.color": ("drop", "UsdPreviewSurface has no coat colour " + KEPT),
-    "maps.base_color": BAKED, "maps.roughness": BAKED, "maps.metallic": BAKED,
+    "maps.base_color": BAKED,
+    "maps.roughness": BAKED,
+    "maps.metallic": BAKED,
     "maps.normal": ("bake", "baked tangent-space normals, UsdUVTexture scale 2 / bias -1 into normal"),
     "maps.mask": ("drop", "a mask has no shading input of its own (the colour and roughness maps it drives are kept)"),
 }
@@ -73,6 +99,7 @@ SOURCE_COLOUR_SPACE = {"srgb": "sRGB", "linear": "raw", "raw": "raw"}
 
 # -------------------------------------------------------------------------- preview surface
 
+
 def preview_inputs(material: dict) -> dict[str, tuple]:
     """IR material -> UsdPreviewSurface input -> (Sdf type, value)."""
     model, params = material["model"], material["params"]
@@ -80,7 +107,7 @@ def preview_inputs(material: dict) -> dict[str, tuple]:
     F, C, I = Sdf.ValueTypeNames.Float, Sdf.ValueTypeNames.Color3f, Sdf.ValueTypeNames.Int
     colour = conductor_f0(params) if base == "conductor" else clip01(params["base_color"])
     out = {"diffuseColor": (C, colour), "metallic": (F, 1.0 if base == "conductor" else 0.0)}
-    if base == "diffuse":      # no specular lobe: the specular workflow with black specular
+    if base == "diffuse":  # no specular lobe: the specular workflow with black specular
         out.update(useSpecularWorkflow=(I, 1), specularColor=(C, [0.0, 0.0, 0.0]), roughness=(F, 1.0))
     else:
         ax, ay = alpha_pair(params)
@@ -92,8 +119,10 @@ def preview_inputs(material: dict) -> dict[str, tuple]:
     if model["coat"] and params.get("coat"):
         out["clearcoat"] = (F, 1.0)
         out["clearcoatRoughness"] = (F, alpha_to_roughness(float(params["coat"]["alpha"][0])))
-    return {k: (t, rounded(v) if isinstance(v, list) else (round(v, 6) if isinstance(v, float) else v))
-            for k, (t, v) in out.items()}
+    return {
+        k: (t, rounded(v) if isinstance(v, list) else (round(v, 6) if isinstance(v, float) else v))
+        for k, (t, v) in out.items()
+    }
 
 
 def _usd_value(sdf_type, value):
@@ -133,7 +162,7 @@ def author_uv_texture(stage, path, surface, st, material: dict, role: str, textu
     if role == "normal":
         shader.CreateInput("scale", Sdf.ValueTypeNames.Float4).Set(Gf.Vec4f(2, 2, 2, 1))
         shader.CreateInput("bias", Sdf.ValueTypeNames.Float4).Set(Gf.Vec4f(-1, -1, -1, 0))
-    elif role == "base_color" and material["model"]["base"] == "conductor":   # the map tints f0
+    elif role == "base_color" and material["model"]["base"] == "conductor":  # the map tints f0
         shader.CreateInput("scale", Sdf.ValueTypeNames.Float4).Set(Gf.Vec4f(*conductor_f0(material["params"]), 1.0))
     out_type = Sdf.ValueTypeNames.Float3 if channel == "rgb" else Sdf.ValueTypeNames.Float
     output = shader.CreateOutput(channel, out_type)
@@ -142,12 +171,13 @@ def author_uv_texture(stage, path, surface, st, material: dict, role: str, textu
 
 # ---------------------------------------------------------------------- MaterialX network
 
+
 def author_materialx(stage, material_prim: UsdShade.Material, material: dict, textures: dict, surface: str) -> None:
     """The 'materialx' backend's document for this material, as UsdShade prims with ND_* ids."""
     ident = identifier(material["name"])
     doc = mtlx_backend.build_document([material], surface, {ident: textures}, [ident])
     mtlx_backend.validate(doc)
-    scope = material_prim.GetPath()       # shaders sit directly in the Material (a connectable container)
+    scope = material_prim.GetPath()  # shaders sit directly in the Material (a connectable container)
     shaders = {}
     nodes = [n for n in doc.getNodes() if n.getCategory() != "surfacematerial"]
     for node in nodes:
@@ -178,6 +208,7 @@ def _author_mx_inputs(node, shader, shaders) -> None:
 
 # ------------------------------------------------------------------------------ materials
 
+
 def author_network(stage, material_prim, material: dict, textures: dict, surface: str) -> None:
     author_preview(stage, material_prim, material, textures)
     author_materialx(stage, material_prim, material, textures, surface)
@@ -204,15 +235,23 @@ def groups_of(materials: list[dict]) -> list[tuple[str, list[int]]]:
     return [(name, groups[key]) for name, key in order]
 
 
-def author_materials(stage, looks: Sdf.Path, materials: list[dict], textures: list[dict],
-                     surface: str = "open_pbr_surface") -> list[UsdShade.Material]:
+def author_materials(
+    stage, looks: Sdf.Path, materials: list[dict], textures: list[dict], surface: str = "open_pbr_surface"
+) -> list[UsdShade.Material]:
     """Author every IR material (variant groups as one prim) under `looks`."""
     groups = groups_of(materials)
     prims = []
     for prim_name, (group_name, indices) in zip(unique_identifiers(n for n, _ in groups), groups):
         del group_name
-        prims.append(author_group(stage, looks.AppendChild(prim_name), [materials[i] for i in indices],
-                                  [textures[i] for i in indices], surface))
+        prims.append(
+            author_group(
+                stage,
+                looks.AppendChild(prim_name),
+                [materials[i] for i in indices],
+                [textures[i] for i in indices],
+                surface,
+            )
+        )
     return prims
 
 
@@ -236,6 +275,7 @@ def author_group(stage, path: Sdf.Path, materials: list[dict], textures: list[di
 
 # ---------------------------------------------------------------------------- preview mesh
 
+
 def uv_sphere(stage, path: Sdf.Path, centre, radius: float = 1.0, rings: int = 16, segments: int = 32):
     """A UV sphere mesh with faceVarying-free vertex st, so baked textures map onto it."""
     points, st, counts, indices = [], [], [], []
@@ -245,9 +285,13 @@ def uv_sphere(stage, path: Sdf.Path, centre, radius: float = 1.0, rings: int = 1
         for j in range(segments + 1):
             u = j / segments
             phi = u * 2 * math.pi
-            points.append(Gf.Vec3f(centre[0] + radius * math.sin(theta) * math.cos(phi),
-                                   centre[1] + radius * math.cos(theta),
-                                   centre[2] - radius * math.sin(theta) * math.sin(phi)))
+            points.append(
+                Gf.Vec3f(
+                    centre[0] + radius * math.sin(theta) * math.cos(phi),
+                    centre[1] + radius * math.cos(theta),
+                    centre[2] - radius * math.sin(theta) * math.sin(phi),
+                )
+            )
             st.append(Gf.Vec2f(u, 1.0 - v))
     row = segments + 1
     for i in range(rings):
@@ -260,10 +304,13 @@ def uv_sphere(stage, path: Sdf.Path, centre, radius: float = 1.0, rings: int = 1
     mesh.CreateFaceVertexCountsAttr(counts)
     mesh.CreateFaceVertexIndicesAttr(indices)
     mesh.CreateSubdivisionSchemeAttr("none")
-    mesh.CreateExtentAttr([Gf.Vec3f(centre[0] - radius, centre[1] - radius, centre[2] - radius),
-                           Gf.Vec3f(centre[0] + radius, centre[1] + radius, centre[2] + radius)])
-    UsdGeom.PrimvarsAPI(mesh).CreatePrimvar("st", Sdf.ValueTypeNames.TexCoord2fArray,
-                                            UsdGeom.Tokens.vertex).Set(st)
+    mesh.CreateExtentAttr(
+        [
+            Gf.Vec3f(centre[0] - radius, centre[1] - radius, centre[2] - radius),
+            Gf.Vec3f(centre[0] + radius, centre[1] + radius, centre[2] + radius),
+        ]
+    )
+    UsdGeom.PrimvarsAPI(mesh).CreatePrimvar("st", Sdf.ValueTypeNames.TexCoord2fArray, UsdGeom.Tokens.vertex).Set(st)
     return mesh
 
 
@@ -275,12 +322,16 @@ def bind(prim, material: UsdShade.Material) -> None:
 def author_preview_meshes(stage, root: Sdf.Path, materials: list[UsdShade.Material]) -> None:
     UsdGeom.Scope.Define(stage, root.AppendChild("Preview"))
     for i, material in enumerate(materials):
-        mesh = uv_sphere(stage, root.AppendChild("Preview").AppendChild(f"Sphere_{material.GetPrim().GetName()}"),
-                         (i * 2.5, 0.0, 0.0))
+        mesh = uv_sphere(
+            stage,
+            root.AppendChild("Preview").AppendChild(f"Sphere_{material.GetPrim().GetName()}"),
+            (i * 2.5, 0.0, 0.0),
+        )
         bind(mesh.GetPrim(), material)
 
 
 # ------------------------------------------------------------------------------------ emit
+
 
 def output_format(opts: dict) -> str:
     if opts["format"]:
@@ -316,11 +367,12 @@ def export(stage, fmt: str, images: list[Artifact], stem: str = "materials") -> 
         stage.GetRootLayer().Export(str(layer_path))
         if fmt == "usdc":
             return [Artifact(layer_path.name, layer_path.read_bytes(), "binary")] + images
-        for image in images:                  # usdz: the textures travel inside the package
+        for image in images:  # usdz: the textures travel inside the package
             target = Path(tmp) / image.name
             target.parent.mkdir(parents=True, exist_ok=True)
             target.write_bytes(image.content)
         from pxr import UsdUtils
+
         package = Path(tmp) / f"{stem}.usdz"
         if not UsdUtils.CreateNewUsdzPackage(Sdf.AssetPath(str(layer_path)), str(package)):
             raise RuntimeError("usd: could not write the usdz package")

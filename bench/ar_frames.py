@@ -8,6 +8,7 @@ detection (OpenCV's ArUco detector, the peer in this process), pose, render of t
 (object + contact shadow), read-back, composite; then the whole frame, fps, and the ratio of
 the whole frame to OpenCV's detection alone. The paper shows its AR at 50 fps on a GPU.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -20,6 +21,7 @@ import numpy as np
 def orbit(frames: int) -> list[tuple[np.ndarray, np.ndarray]]:
     """(rvec, tvec) of a marker seen from a camera circling it at 45-60 degrees of elevation."""
     import cv2
+
     poses = []
     for i in range(frames):
         turn = 2 * np.pi * i / frames
@@ -34,6 +36,7 @@ def orbit(frames: int) -> list[tuple[np.ndarray, np.ndarray]]:
 def stage_times(photo: np.ndarray, material: dict, opts) -> dict[str, float]:
     from cnlmc.backends.ar import camera_matrix, over_photo, render_layer
     from cnlmc.backends.ar.pose import detect, estimate_pose, find_marker
+
     height, width = photo.shape[:2]
     t0 = time.perf_counter()
     detect(photo)
@@ -47,12 +50,17 @@ def stage_times(photo: np.ndarray, material: dict, opts) -> dict[str, float]:
     t4 = time.perf_counter()
     # find_marker detects again: the pose stage is its time minus one detection
     detect_ms = (t1 - t0) * 1e3
-    return {"detect": detect_ms, "pose": max((t2 - t1) * 1e3 - detect_ms, 0.0), "render": (t3 - t2) * 1e3,
-            "composite": (t4 - t3) * 1e3}
+    return {
+        "detect": detect_ms,
+        "pose": max((t2 - t1) * 1e3 - detect_ms, 0.0),
+        "render": (t3 - t2) * 1e3,
+        "composite": (t4 - t3) * 1e3,
+    }
 
 
 def whole_frame_ms(photo: np.ndarray, material: dict, opts) -> float:
     from cnlmc.backends.ar import composite
+
     start = time.perf_counter()
     composite(photo, material, opts)
     return (time.perf_counter() - start) * 1e3
@@ -70,21 +78,26 @@ def main(argv=None) -> int:
     from cnlmc.api import compile_source
     from cnlmc.backends.ar import parse_options
     from cnlmc.backends.ar.synthetic import synthetic_photo
+
     material = compile_source(args.phrase + "\n").ir["materials"][0]
     opts = parse_options({"mesh": args.mesh, "tier": args.tier, **({"msaa": args.msaa} if args.msaa else {})})
     print(f"{args.phrase!r} on the {args.mesh}, tier {args.tier}, msaa {opts.msaa}, {args.frames} frames per size")
-    print(f"{'size':>10s} {'detect':>7s} {'pose':>6s} {'render':>7s} {'composite':>9s} {'frame':>7s} {'fps':>5s} "
-          f"{'frame/detect':>12s}")
+    print(
+        f"{'size':>10s} {'detect':>7s} {'pose':>6s} {'render':>7s} {'composite':>9s} {'frame':>7s} {'fps':>5s} "
+        f"{'frame/detect':>12s}"
+    )
     for size in args.sizes.split(","):
         width, height = (int(x) for x in size.split("x"))
         photos = [synthetic_photo(r, t, width, height, seed=i)[0] for i, (r, t) in enumerate(orbit(args.frames))]
-        whole_frame_ms(photos[0], material, opts)                      # warm-up: compile, tables
+        whole_frame_ms(photos[0], material, opts)  # warm-up: compile, tables
         stages = [stage_times(p, material, opts) for p in photos]
         frames = [whole_frame_ms(p, material, opts) for p in photos]
         med = {k: float(np.median([s[k] for s in stages])) for k in stages[0]}
         frame = float(np.median(frames))
-        print(f"{size:>10s} {med['detect']:7.1f} {med['pose']:6.1f} {med['render']:7.1f} {med['composite']:9.1f} "
-              f"{frame:7.1f} {1000 / frame:5.1f} {frame / med['detect']:12.1f}")
+        print(
+            f"{size:>10s} {med['detect']:7.1f} {med['pose']:6.1f} {med['render']:7.1f} {med['composite']:9.1f} "
+            f"{frame:7.1f} {1000 / frame:5.1f} {frame / med['detect']:12.1f}"
+        )
     return 0
 
 

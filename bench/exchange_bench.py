@@ -3,6 +3,7 @@ document built directly with each library's API (no IR mapping, no checks, no no
 
     .venv/bin/python bench/exchange_bench.py [--repeat 30]
 """
+
 from __future__ import annotations
 
 import argparse
@@ -13,8 +14,14 @@ import xml.etree.ElementTree as ET
 
 from cnlmc.api import compile_source, emit
 
-PHRASES = ["lightly brushed, blue anodized aluminum", "white varnished oak", "frosted glass",
-           "deep red velvet", "clear-coated red car paint", "polished gold"]
+PHRASES = [
+    "lightly brushed, blue anodized aluminum",
+    "white varnished oak",
+    "frosted glass",
+    "deep red velvet",
+    "clear-coated red car paint",
+    "polished gold",
+]
 
 
 def single_material_irs() -> list[dict]:
@@ -29,6 +36,7 @@ def single_material_irs() -> list[dict]:
 
 def floor_materialx() -> str:
     import MaterialX as mx
+
     doc = mx.createDocument()
     shader = doc.addNode("open_pbr_surface", "SR_x", "surfaceshader")
     shader.setInputValue("base_color", mx.Color3(0.9, 0.9, 0.9), "color3")
@@ -42,6 +50,7 @@ def floor_materialx() -> str:
 
 def floor_usd() -> str:
     from pxr import Gf, Sdf, Usd, UsdShade
+
     stage = Usd.Stage.CreateInMemory()
     material = UsdShade.Material.Define(stage, "/Root/Looks/x")
     preview = UsdShade.Shader.Define(stage, "/Root/Looks/x/PreviewSurface")
@@ -77,7 +86,7 @@ OPTIONS = {"materialx": {"maps": "none"}, "usd": {"maps": "none"}, "mitsuba": {"
 
 
 def median_ms(fn, repeat: int) -> float:
-    fn()   # warm caches (library loading, template compilation)
+    fn()  # warm caches (library loading, template compilation)
     times = []
     for _ in range(repeat):
         start = time.perf_counter()

@@ -12,6 +12,7 @@ grid) are printed alongside. Prints a Markdown table and writes docs/fresnel_tab
 
     .venv/bin/python bench/fresnel_table.py
 """
+
 from __future__ import annotations
 
 import csv
@@ -27,8 +28,7 @@ REPO = Path(__file__).resolve().parents[1]
 DATA = REPO.parent / "shared" / "data"
 OUT = REPO / "docs" / "fresnel_table.md"
 METHODS = ("schlick", "f82", "exact_fit")
-DATA_KEYS = {"schlick": "schlick_with_true_F0", "f82": "f82_tint_model",
-             "exact_fit": "exact_fresnel_with_fitted_nk"}
+DATA_KEYS = {"schlick": "schlick_with_true_F0", "f82": "f82_tint_model", "exact_fit": "exact_fresnel_with_fitted_nk"}
 
 
 def read_curve(key: str, data: Path = DATA):
@@ -45,8 +45,11 @@ def approximations(primary: dict, mu: np.ndarray) -> dict:
     m = mu[:, None]
     f0, f82 = np.array(primary["F0_srgb_linear"]), np.array(primary["F82_srgb_linear"])
     eta, k = np.array(primary["eta_rgb_fit"]), np.array(primary["k_rgb_fit"])
-    return {"schlick": fresnel_schlick(m, f0), "f82": fresnel_f82(m, f0, f82),
-            "exact_fit": fresnel_conductor(m, eta, k)}
+    return {
+        "schlick": fresnel_schlick(m, f0),
+        "f82": fresnel_f82(m, f0, f82),
+        "exact_fit": fresnel_conductor(m, eta, k),
+    }
 
 
 def metal_errors(metal: dict, data: Path = DATA) -> dict:
@@ -65,9 +68,14 @@ def table_rows(data: Path = DATA) -> list[dict]:
     rows = []
     for metal in metals:
         ref = metal["primary"]["fresnel_errors_vs_spectral_reference"]
-        rows.append({"key": metal["key"], "dataset": metal["primary"]["dataset"],
-                     "ours": metal_errors(metal, data),
-                     "data": {m: ref[DATA_KEYS[m]]["max_abs"] for m in METHODS}})
+        rows.append(
+            {
+                "key": metal["key"],
+                "dataset": metal["primary"]["dataset"],
+                "ours": metal_errors(metal, data),
+                "data": {m: ref[DATA_KEYS[m]]["max_abs"] for m in METHODS},
+            }
+        )
     return rows
 
 
@@ -77,12 +85,18 @@ def _fmt(err) -> str:
 
 
 def markdown(rows: list[dict]) -> str:
-    head = ("| metal | dataset | Schlick | F82 | exact (fit η/k) "
-            "| data: Schlick | data: F82 | data: exact |\n" + "|---" * 8 + "|\n")
+    head = (
+        "| metal | dataset | Schlick | F82 | exact (fit η/k) "
+        "| data: Schlick | data: F82 | data: exact |\n" + "|---" * 8 + "|\n"
+    )
     body = "".join(
-        f"| {r['key']} | {r['dataset']} | " + " | ".join(_fmt(r["ours"][m]) for m in METHODS)
-        + " | " + " | ".join(f"{r['data'][m]:.4f}" for m in METHODS) + " |\n"
-        for r in rows)
+        f"| {r['key']} | {r['dataset']} | "
+        + " | ".join(_fmt(r["ours"][m]) for m in METHODS)
+        + " | "
+        + " | ".join(f"{r['data'][m]:.4f}" for m in METHODS)
+        + " |\n"
+        for r in rows
+    )
     return head + body
 
 

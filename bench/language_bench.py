@@ -24,10 +24,21 @@ from cnlmc.parser import _token, clear_shape_cache, lark_parser, parse_tagged
 from cnlmc.tagger import Tagger
 
 PHRASES = [
-    "aluminum", "anodized aluminum", "blue anodized aluminum", "lightly brushed, blue anodized aluminum",
-    "white varnished oak", "oak with a glossy white varnish", "red or blue anodized aluminum",
-    "heavily rusted iron", "polished white marble", "matte black rubber", "gold plated steel",
-    "brushed and anodized titanium", "frosted glass", "deep red velvet", "metallic red car paint",
+    "aluminum",
+    "anodized aluminum",
+    "blue anodized aluminum",
+    "lightly brushed, blue anodized aluminum",
+    "white varnished oak",
+    "oak with a glossy white varnish",
+    "red or blue anodized aluminum",
+    "heavily rusted iron",
+    "polished white marble",
+    "matte black rubber",
+    "gold plated steel",
+    "brushed and anodized titanium",
+    "frosted glass",
+    "deep red velvet",
+    "metallic red car paint",
 ]
 
 
@@ -42,6 +53,7 @@ WORD: /[^\W\d_][\w'-]*/
 def raw_text_parser():
     """lark parsing the phrase text itself with its own lexer: the peer a lark user would write."""
     from lark import Lark
+
     return Lark(RAW_GRAMMAR, parser="lalr")
 
 
@@ -95,16 +107,22 @@ def main() -> None:
     print(f"{'stage':<32}{'median':>12}{'p99':>12}")
     print(f"{'phrase -> IR (cnlmc)':<32}{med_c * 1e6:>10.1f}us{p99(stats['compile']) * 1e6:>10.1f}us")
     unshaped = stats["unshaped"]
-    print(f"{'  shape cache cleared each time':<32}{statistics.median(unshaped) * 1e6:>10.1f}us"
-          f"{p99(unshaped) * 1e6:>10.1f}us")
+    print(
+        f"{'  shape cache cleared each time':<32}{statistics.median(unshaped) * 1e6:>10.1f}us"
+        f"{p99(unshaped) * 1e6:>10.1f}us"
+    )
     print(f"{'lark LALR parse of the tokens':<32}{med_p * 1e6:>10.1f}us{p99(stats['parse']) * 1e6:>10.1f}us")
     med_r = statistics.median(stats["raw"])
     print(f"{'lark LALR parse of the raw text':<32}{med_r * 1e6:>10.1f}us{p99(stats['raw']) * 1e6:>10.1f}us")
-    print(f"ratio phrase->IR / lark raw-text parse: {med_c / med_r:.2f}x   "
-          f"/ parse of tagged tokens: {med_c / med_p:.2f}x   phrases/s: {1 / med_c:,.0f}")
+    print(
+        f"ratio phrase->IR / lark raw-text parse: {med_c / med_r:.2f}x   "
+        f"/ parse of tagged tokens: {med_c / med_p:.2f}x   phrases/s: {1 / med_c:,.0f}"
+    )
     cold = cold_cli()
-    print(f"cold `cnlmc compile --target ir` wall time: median {statistics.median(cold) * 1e3:.0f} ms, "
-          f"min {min(cold) * 1e3:.0f} ms over {len(cold)} runs")
+    print(
+        f"cold `cnlmc compile --target ir` wall time: median {statistics.median(cold) * 1e3:.0f} ms, "
+        f"min {min(cold) * 1e3:.0f} ms over {len(cold)} runs"
+    )
 
 
 if __name__ == "__main__":

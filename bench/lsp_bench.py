@@ -95,15 +95,18 @@ class TimedClient(LanguageClient):
                 raise TimeoutError(f"no diagnostics for {uri} v{version}")
             try:
                 await asyncio.wait_for(self.event.wait(), remaining)
-            except asyncio.TimeoutError:
+            except TimeoutError:
                 pass
         return self.arrivals[(uri, version)]
 
 
 async def measure(client: TimedClient, name: str, lines: list[str], edits: int) -> list[float]:
     uri = f"file:///bench/{name}.cnl"
-    client.text_document_did_open(types.DidOpenTextDocumentParams(
-        types.TextDocumentItem(uri=uri, language_id="cnl", version=1, text="\n".join(lines))))
+    client.text_document_did_open(
+        types.DidOpenTextDocumentParams(
+            types.TextDocumentItem(uri=uri, language_id="cnl", version=1, text="\n".join(lines))
+        )
+    )
     await client.wait_version(uri, 1)
     rng = random.Random(1)
     latencies, at_frame = [], []
@@ -111,12 +114,14 @@ async def measure(client: TimedClient, name: str, lines: list[str], edits: int) 
         line = rng.randrange(len(lines))
         new = edited_line(i)
         change = types.TextDocumentContentChangePartial(
-            range=types.Range(types.Position(line, 0), types.Position(line, len(lines[line]))), text=new)
+            range=types.Range(types.Position(line, 0), types.Position(line, len(lines[line]))), text=new
+        )
         lines[line] = new
         version = i + 2
         sent = time.perf_counter()
-        client.text_document_did_change(types.DidChangeTextDocumentParams(
-            types.VersionedTextDocumentIdentifier(uri=uri, version=version), [change]))
+        client.text_document_did_change(
+            types.DidChangeTextDocumentParams(types.VersionedTextDocumentIdentifier(uri=uri, version=version), [change])
+        )
         arrived = await client.wait_version(uri, version)
         latencies.append((arrived - sent) * 1000)
         at_frame.append((client.frames[(uri, version)] - sent) * 1000)
@@ -132,16 +137,28 @@ def percentile(values: list[float], p: float) -> float:
 async def run(edits: int, debounce: int) -> list[tuple]:
     client = TimedClient()
     await client.start_io(sys.executable, "-m", "cnlmc", "lsp")
-    await client.initialize_async(types.InitializeParams(
-        capabilities=types.ClientCapabilities(), initialization_options={"debounceMs": debounce}))
+    await client.initialize_async(
+        types.InitializeParams(capabilities=types.ClientCapabilities(), initialization_options={"debounceMs": debounce})
+    )
     client.initialized(types.InitializedParams())
     rows = []
-    for name, count, nouns in (("one-line", 1, None), ("thousand-lines", 1000, None),
-                               ("thousand-clean", 1000, METALS)):
+    for name, count, nouns in (("one-line", 1, None), ("thousand-lines", 1000, None), ("thousand-clean", 1000, METALS)):
         latencies, at_frame = await measure(client, f"{name}-{debounce}", document(count, nouns=nouns), edits)
         diagnostics = client.counts[(f"file:///bench/{name}-{debounce}.cnl", edits + 1)]
-        rows.append((name, count, diagnostics, debounce, edits, statistics.median(at_frame), percentile(at_frame, 99),
-                     statistics.median(latencies), percentile(latencies, 99), max(latencies)))
+        rows.append(
+            (
+                name,
+                count,
+                diagnostics,
+                debounce,
+                edits,
+                statistics.median(at_frame),
+                percentile(at_frame, 99),
+                statistics.median(latencies),
+                percentile(latencies, 99),
+                max(latencies),
+            )
+        )
     await client.shutdown_async(None)
     client.exit(None)
     await client.stop()
@@ -154,6 +171,7 @@ def whole_compile_stages(lines: list[str]) -> list[tuple[str, float]]:
     from cnlmc.api import lexicon_for
     from cnlmc.document import parse_document
     from cnlmc.state import Context
+
     lexicon = lexicon_for()
     text = "\n".join(lines)
     t0 = time.perf_counter()
@@ -164,25 +182,34 @@ def whole_compile_stages(lines: list[str]) -> list[tuple[str, float]]:
     t2 = time.perf_counter()
     to_ir(states, diags, ctx)
     t3 = time.perf_counter()
-    return [("parse (tag + LALR)", (t1 - t0) * 1000), ("analyze (passes)", (t2 - t1) * 1000),
-            ("to_ir (rounding, provenance)", (t3 - t2) * 1000), ("total", (t3 - t0) * 1000)]
+    return [
+        ("parse (tag + LALR)", (t1 - t0) * 1000),
+        ("analyze (passes)", (t2 - t1) * 1000),
+        ("to_ir (rounding, provenance)", (t3 - t2) * 1000),
+        ("total", (t3 - t0) * 1000),
+    ]
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--edits", type=int, default=200)
-    parser.add_argument("--debounce", type=int, nargs="*", default=[0, 120],
-                        help="server debounce settings to measure (ms)")
+    parser.add_argument(
+        "--debounce", type=int, nargs="*", default=[0, 120], help="server debounce settings to measure (ms)"
+    )
     args = parser.parse_args()
     rows = []
     for debounce in args.debounce:
         rows += asyncio.run(run(args.edits if debounce == 0 else min(args.edits, 40), debounce))
     print("latency from didChange sent to publishDiagnostics: when its frame arrives | after the client parsed it")
-    print(f"{'document':<16}{'lines':>6}{'diags':>6}{'debounce':>9}{'edits':>6}"
-          f"{'frame med':>10}{'frame p99':>10}{'parsed med':>11}{'parsed p99':>11}{'max':>8}")
+    print(
+        f"{'document':<16}{'lines':>6}{'diags':>6}{'debounce':>9}{'edits':>6}"
+        f"{'frame med':>10}{'frame p99':>10}{'parsed med':>11}{'parsed p99':>11}{'max':>8}"
+    )
     for name, count, diags, debounce, edits, f_med, f_p99, median, p99, worst in rows:
-        print(f"{name:<16}{count:>6}{diags:>6}{debounce:>9}{edits:>6}"
-              f"{f_med:>10.2f}{f_p99:>10.2f}{median:>11.2f}{p99:>11.2f}{worst:>8.2f}")
+        print(
+            f"{name:<16}{count:>6}{diags:>6}{debounce:>9}{edits:>6}"
+            f"{f_med:>10.2f}{f_p99:>10.2f}{median:>11.2f}{p99:>11.2f}{worst:>8.2f}"
+        )
     print("(ms; goal: p99 <= 50 ms at 1,000 lines with debounce 0)")
     print("\nfor reference, compiling the whole 1,000-line text once (no incremental cache):")
     whole_compile_stages(document(1000))  # warm up the grammar and lexicon

@@ -1,7 +1,8 @@
 """Procedural-map benchmark: prints numbers, asserts nothing.
 
-    .venv/bin/python bench/maps_bench.py [--size 1024] [--runs 7]
+.venv/bin/python bench/maps_bench.py [--size 1024] [--runs 7]
 """
+
 from __future__ import annotations
 
 import argparse
@@ -14,8 +15,10 @@ from cnlmc.backends.maps import NODE_TYPES, bake, write_maps
 from cnlmc.backends.maps.blas import single_threaded_blas
 from cnlmc.backends.maps.grid import Grid
 
-WOOD = {role: {"graph": "wood", "output": output, "params": {}, "seed": 0}
-        for role, output in (("base_color", "color"), ("normal", "normal"), ("roughness", "roughness"))}
+WOOD = {
+    role: {"graph": "wood", "output": output, "params": {}, "seed": 0}
+    for role, output in (("base_color", "color"), ("normal", "normal"), ("roughness", "roughness"))
+}
 
 
 def median_seconds(function, runs: int) -> float:
@@ -30,7 +33,9 @@ def median_seconds(function, runs: int) -> float:
 
 def bench_bake(size: int, runs: int):
     seconds = median_seconds(lambda: bake(WOOD, {"base_color": [0.42, 0.24, 0.11]}, size, 0), runs)
-    print(f"bake wood color+normal+roughness {size}^2: median {seconds * 1000:.1f} ms over {runs} runs (goal <= 150 ms)")
+    print(
+        f"bake wood color+normal+roughness {size}^2: median {seconds * 1000:.1f} ms over {runs} runs (goal <= 150 ms)"
+    )
 
 
 def bench_write(size: int, runs: int):

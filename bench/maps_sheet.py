@@ -1,7 +1,8 @@
 """Write docs/maps_sheet.png: every stdlib graph's outputs, labelled.
 
-    .venv/bin/python bench/maps_sheet.py [--size 256] [--out docs/maps_sheet.png]
+.venv/bin/python bench/maps_sheet.py [--size 256] [--out docs/maps_sheet.png]
 """
+
 import argparse
 from pathlib import Path
 

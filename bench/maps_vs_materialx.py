@@ -10,6 +10,7 @@ under `xvfb-run -a` (Mesa llvmpipe on this machine: the CPU does the GPU's work)
 It always writes its images; so the peer is compared with our bake *and* with our bake
 plus writing the same three maps as 8-bit PNG.  Prints numbers, asserts nothing.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -75,6 +76,7 @@ def median_ms(function, runs: int) -> tuple[float, float]:
 
 def materialx_document():
     import MaterialX as mx
+
     library = mx.createDocument()
     mx.loadLibraries(mx.getDefaultDataLibraryFolders(), mx.getDefaultDataSearchPath(), library)
     doc = mx.createDocument()
@@ -91,6 +93,7 @@ def bake_with_texture_baker(size: int, out_dir: str):
     import MaterialX as mx
     import MaterialX.PyMaterialXRender as mx_render
     import MaterialX.PyMaterialXRenderGlsl as mx_glsl
+
     doc = materialx_document()
     baker = mx_glsl.TextureBaker.create(size, size, mx_render.BaseType.UINT8)
     baker.setOutputImagePath(mx.FilePath(out_dir))
@@ -123,7 +126,9 @@ def run_peer(size: int, runs: int) -> dict:
 def ours(size: int, runs: int) -> dict:
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     from maps_bench import WOOD
+
     from cnlmc.backends.maps import bake, write_maps
+
     material = {"base_color": [0.42, 0.24, 0.11]}
     bake_ms, _ = median_ms(lambda: bake(WOOD, material, size, 0), runs)
     with tempfile.TemporaryDirectory() as out:
@@ -140,7 +145,9 @@ def main():
     if args.peer:
         peer_main(args.size, args.runs)
         return
-    print(f"cpu count {os.cpu_count()}, load average {os.getloadavg()[0]:.2f}, size {args.size}^2, median of {args.runs}")
+    print(
+        f"cpu count {os.cpu_count()}, load average {os.getloadavg()[0]:.2f}, size {args.size}^2, median of {args.runs}"
+    )
     mine = ours(args.size, args.runs)
     print(f"cnlmc maps bake wood color+normal+roughness:      {mine['bake_ms']:8.1f} ms")
     print(f"cnlmc maps bake + write 3 png8:                   {mine['bake_write_png8_ms']:8.1f} ms")
@@ -148,8 +155,10 @@ def main():
     if "error" in peer:
         print(f"MaterialX TextureBaker could not run: {peer['error']}")
         return
-    print(f"MaterialX TextureBaker (GLSL, llvmpipe, Xvfb), bake + write {len(peer['images'])} images "
-          f"{peer['images']}: {peer['median_ms']:8.1f} ms (first bake {peer['first_ms']:.0f} ms)")
+    print(
+        f"MaterialX TextureBaker (GLSL, llvmpipe, Xvfb), bake + write {len(peer['images'])} images "
+        f"{peer['images']}: {peer['median_ms']:8.1f} ms (first bake {peer['first_ms']:.0f} ms)"
+    )
     print(f"ratio TextureBaker / cnlmc bake:         {peer['median_ms'] / mine['bake_ms']:6.1f}x")
     print(f"ratio TextureBaker / cnlmc bake + write: {peer['median_ms'] / mine['bake_write_png8_ms']:6.1f}x")
 

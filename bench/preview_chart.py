@@ -15,6 +15,7 @@ Then a table of failure cases.
 
 Writes docs/preview_chart.png, docs/preview_chart.csv and docs/preview_failures.csv.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -27,8 +28,12 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
-VARIANTS = {"anisotropic": "lightly brushed, blue anodized aluminum", "coat": "clear-coated red car paint",
-            "rough": "rough iron", "mirror": "mirror chrome"}
+VARIANTS = {
+    "anisotropic": "lightly brushed, blue anodized aluminum",
+    "coat": "clear-coated red car paint",
+    "rough": "rough iron",
+    "mirror": "mirror chrome",
+}
 TIERS = ("analytic", "splitsum", "mc16", "fis16", "mc64", "fis64")
 VARIANT_TIERS = TIERS + ("mc256",)
 MITSUBA_SPP = (1, 4, 16, 64)
@@ -57,6 +62,7 @@ def tonemap(linear_rgba: np.ndarray, background: float = 0.18) -> np.ndarray:
 
 def errors(reference: np.ndarray, test: np.ndarray, mask: np.ndarray | None = None) -> tuple[float, float]:
     import flip_evaluator
+
     flip_map, mean, _ = flip_evaluator.evaluate(reference, test, "LDR", applyMagma=False)
     diff2 = np.mean((reference - test) ** 2, axis=2)
     if mask is not None:
@@ -68,6 +74,7 @@ def rim_mask(alpha: np.ndarray) -> np.ndarray:
     """The grazing ring: inside the silhouette, outside 88 % of the radius, without the 2 pixels
     at the silhouette itself (whose error is the anti-aliasing, not the shading)."""
     import cv2
+
     inside = (alpha > 0.5).astype(np.uint8)
     radius = max(2, int(np.sqrt(inside.sum() / np.pi) * 0.12))
     core = cv2.erode(inside, np.ones((2 * radius + 1, 2 * radius + 1), np.uint8))
@@ -77,6 +84,7 @@ def rim_mask(alpha: np.ndarray) -> np.ndarray:
 
 def materials() -> dict[str, dict]:
     from cnlmc.api import compile_source, lexicon_for
+
     out = {}
     for noun in sorted(lexicon_for().all_of("nouns")):
         out[noun] = compile_source(noun + "\n").ir["materials"][0]
@@ -89,6 +97,7 @@ def mitsuba_render(material, scene, size, spp, work: Path, seed=0, bsdf="native"
     """(linear RGBA, seconds) of the preview scene in Mitsuba (llvm_ad_rgb); the cnlm plugin
     renders in chunks of CNLM_CHUNK spp (bounded memory: it runs on numpy), averaged."""
     from cnlmc.backends.preview.mitsuba_scene import export_scene, render_scene
+
     path = export_scene(material, scene, work / bsdf, size, size, spp=spp, bsdf=bsdf)
     image, seconds = 0.0, 0.0
     for index, chunk in enumerate(spp_chunks(spp, CNLM_CHUNK if bsdf == "cnlm" else spp)):
@@ -113,6 +122,7 @@ def mitsuba_reference(material, scene, size, spp, work: Path, seed=0):
 
 def run(size: int, ref_spp: int, quick: bool, out_csv: Path, out_png: Path | None = None) -> list[dict]:
     from cnlmc.backends.preview.render import Renderer, default_scene
+
     renderer, renderer512 = Renderer(size), Renderer(TIMING_SIZE)
     rows = []
     mats = materials()
@@ -132,16 +142,28 @@ def run(size: int, ref_spp: int, quick: bool, out_csv: Path, out_png: Path | Non
                 native_ref, _ = mitsuba_render(material, scene, size, ref_spp, Path(tmp), seed=7)
                 native_ldr = tonemap(native_ref)
                 flip, rmse = errors(ref_ldr, native_ldr)
-                rows.append({"material": label, "method": NATIVE_MODEL, "ms": 0.0, "ms512": 0.0, "flip": flip, "rmse": rmse})
+                rows.append(
+                    {"material": label, "method": NATIVE_MODEL, "ms": 0.0, "ms512": 0.0, "flip": flip, "rmse": rmse}
+                )
                 writer.writerow(rows[-1])
                 for spp in MITSUBA_SPP:
                     img, seconds = mitsuba_render(material, scene, size, spp, Path(tmp), seed=1, warm=True)
-                    _, seconds512 = mitsuba_render(material, big, TIMING_SIZE, spp, Path(tmp) / "big", seed=1, warm=True)
+                    _, seconds512 = mitsuba_render(
+                        material, big, TIMING_SIZE, spp, Path(tmp) / "big", seed=1, warm=True
+                    )
                     flip, rmse = errors(native_ldr, tonemap(img))
-                    rows.append({"material": label, "method": f"mitsuba{spp}", "ms": seconds * 1000,
-                                 "ms512": seconds512 * 1000, "flip": flip, "rmse": rmse})
+                    rows.append(
+                        {
+                            "material": label,
+                            "method": f"mitsuba{spp}",
+                            "ms": seconds * 1000,
+                            "ms512": seconds512 * 1000,
+                            "flip": flip,
+                            "rmse": rmse,
+                        }
+                    )
                     writer.writerow(rows[-1])
-            for tier in (VARIANT_TIERS if ":" in label else TIERS):
+            for tier in VARIANT_TIERS if ":" in label else TIERS:
                 frame = renderer.render(material, tier=tier, scene=scene, hdr=True)
                 ms = renderer.frame_time(scene, material, tier, repeats=2)
                 ms512 = renderer512.frame_time(big, material, tier, repeats=2)
@@ -149,9 +171,11 @@ def run(size: int, ref_spp: int, quick: bool, out_csv: Path, out_png: Path | Non
                 rows.append({"material": label, "method": tier, "ms": ms, "ms512": ms512, "flip": flip, "rmse": rmse})
                 writer.writerow(rows[-1])
             f.flush()
-            print(f"{label:48s} " + " ".join(f"{r['method']}={r['flip']:.3f}" for r in rows if r["material"] == label),
-                  flush=True)
-            if out_png is not None:          # a partial run still leaves a chart
+            print(
+                f"{label:48s} " + " ".join(f"{r['method']}={r['flip']:.3f}" for r in rows if r["material"] == label),
+                flush=True,
+            )
+            if out_png is not None:  # a partial run still leaves a chart
                 plot(summarise(rows), rows, size, ref_spp, out_png)
     return rows
 
@@ -166,6 +190,7 @@ def failures(size: int, ref_spp: int, out_csv: Path) -> list[dict]:
     model differences between cnlm_bsdf and Mitsuba's plugins."""
     from cnlmc.api import compile_source
     from cnlmc.backends.preview.render import Renderer, default_scene
+
     renderer = Renderer(size)
     rows = []
     for case, (phrase, env, region) in FAILURES.items():
@@ -181,8 +206,9 @@ def failures(size: int, ref_spp: int, out_csv: Path) -> list[dict]:
             test = tonemap(renderer.render(material, tier=tier, scene=scene, hdr=True).hdr)
             flip, rmse = errors(ref_ldr, test, mask)
             flip_self, _ = errors(own, test, mask)
-            rows.append({"case": case, "phrase": phrase, "tier": tier, "flip": flip, "rmse": rmse,
-                         "flip_self": flip_self})
+            rows.append(
+                {"case": case, "phrase": phrase, "tier": tier, "flip": flip, "rmse": rmse, "flip_self": flip_self}
+            )
     with open(out_csv, "w", newline="") as f:
         writer = csv.DictWriter(f, ["case", "phrase", "tier", "flip", "rmse", "flip_self"])
         writer.writeheader()
@@ -230,35 +256,56 @@ def goals(rows: list[dict], classes: dict[str, str]) -> list[dict]:
         timed512 = all(r.get("ms512", 0.0) > 0 for r in per if r["method"].startswith("mitsuba")) and best["ms512"] > 0
         mitsuba_ms512 = equal_error_ms(per, best["flip"], "ms512") if timed512 else float("nan")
         native = next((r["flip"] for r in per if r["method"] == NATIVE_MODEL), float("nan"))
-        out.append({"material": label, "class": cls, "tier": best["method"], "flip": best["flip"], "goal": limit,
-                    "met": best["flip"] <= limit, "ms": best["ms"], "ms512": best.get("ms512", 0.0),
-                    "mitsuba_ms": mitsuba_ms, "speedup": mitsuba_ms / best["ms"], "mitsuba_ms512": mitsuba_ms512,
-                    "speedup512": mitsuba_ms512 / best["ms512"] if timed512 else float("nan"), "native_model": native})
+        out.append(
+            {
+                "material": label,
+                "class": cls,
+                "tier": best["method"],
+                "flip": best["flip"],
+                "goal": limit,
+                "met": best["flip"] <= limit,
+                "ms": best["ms"],
+                "ms512": best.get("ms512", 0.0),
+                "mitsuba_ms": mitsuba_ms,
+                "speedup": mitsuba_ms / best["ms"],
+                "mitsuba_ms512": mitsuba_ms512,
+                "speedup512": mitsuba_ms512 / best["ms512"] if timed512 else float("nan"),
+                "native_model": native,
+            }
+        )
     return out
 
 
 def print_goals(table: list[dict]) -> None:
-    print(f"\n{'material':48s} {'class':12s} {'tier':9s} {'FLIP':>6s} {'goal':>5s} {'ms':>6s} {'Mitsuba':>8s} "
-          f"{'x':>6s} {'ms512':>6s} {'Mitsuba512':>10s} {'x512':>6s} {'native':>6s}")
+    print(
+        f"\n{'material':48s} {'class':12s} {'tier':9s} {'FLIP':>6s} {'goal':>5s} {'ms':>6s} {'Mitsuba':>8s} "
+        f"{'x':>6s} {'ms512':>6s} {'Mitsuba512':>10s} {'x512':>6s} {'native':>6s}"
+    )
     for g in table:
-        print(f"{g['material']:48s} {g['class']:12s} {g['tier']:9s} {g['flip']:6.3f} {g['goal']:5.2f} {g['ms']:6.1f} "
-              f"{g['mitsuba_ms']:8.0f} {g['speedup']:6.1f} {g['ms512']:6.1f} {g['mitsuba_ms512']:10.0f} "
-              f"{g['speedup512']:6.1f} {g['native_model']:6.3f}{'' if g['met'] else '  (FLIP goal missed)'}")
+        print(
+            f"{g['material']:48s} {g['class']:12s} {g['tier']:9s} {g['flip']:6.3f} {g['goal']:5.2f} {g['ms']:6.1f} "
+            f"{g['mitsuba_ms']:8.0f} {g['speedup']:6.1f} {g['ms512']:6.1f} {g['mitsuba_ms512']:10.0f} "
+            f"{g['speedup512']:6.1f} {g['native_model']:6.3f}{'' if g['met'] else '  (FLIP goal missed)'}"
+        )
     by = {}
     for g in table:
         by.setdefault(g["class"], []).append(g)
     print("\nclass        n  FLIP goal met  median speed-up 256^2 / 512^2  >= 100x at 512^2  tiers")
     for cls, gs in sorted(by.items()):
         tiers = ", ".join(f"{t} {sum(g['tier'] == t for g in gs)}" for t in REALTIME if any(g["tier"] == t for g in gs))
-        print(f"{cls:12s} {len(gs):2d}  {sum(g['met'] for g in gs):2d}/{len(gs):<2d}          "
-              f"{np.median([g['speedup'] for g in gs]):8.1f} / {np.median([g['speedup512'] for g in gs]):6.1f}"
-              f"          {sum(g['speedup512'] >= 100 for g in gs):2d}/{len(gs):<2d}        {tiers}")
+        print(
+            f"{cls:12s} {len(gs):2d}  {sum(g['met'] for g in gs):2d}/{len(gs):<2d}          "
+            f"{np.median([g['speedup'] for g in gs]):8.1f} / {np.median([g['speedup512'] for g in gs]):6.1f}"
+            f"          {sum(g['speedup512'] >= 100 for g in gs):2d}/{len(gs):<2d}        {tiers}"
+        )
 
 
 def read_rows(path: Path) -> list[dict]:
     with open(path) as f:
-        return [dict(r, ms=float(r["ms"]), ms512=float(r.get("ms512") or 0.0), flip=float(r["flip"]),
-                     rmse=float(r["rmse"])) for r in csv.DictReader(f)]
+        return [
+            dict(r, ms=float(r["ms"]), ms512=float(r.get("ms512") or 0.0), flip=float(r["flip"]), rmse=float(r["rmse"]))
+            for r in csv.DictReader(f)
+        ]
 
 
 def print_failures(fail: list[dict]) -> None:
@@ -269,12 +316,15 @@ def print_failures(fail: list[dict]) -> None:
         per = {r["tier"]: r for r in fail if r["case"] == case}
         best = min(r["flip"] for r in per.values())
         cheapest_ok = next((t for t in VARIANT_TIERS if per[t]["flip"] <= 1.25 * best), "")
-        print(f"{case:34s} " + " ".join(f"{per[t]['flip']:6.3f}/{per[t]['flip_self']:6.3f}" for t in VARIANT_TIERS)
-              + f"  {cheapest_ok}")
+        print(
+            f"{case:34s} "
+            + " ".join(f"{per[t]['flip']:6.3f}/{per[t]['flip_self']:6.3f}" for t in VARIANT_TIERS)
+            + f"  {cheapest_ok}"
+        )
 
 
 def time_key(rows: list[dict]) -> str:
-    """"ms512" when every method was timed at 512^2 (the issue's frame size), else "ms"."""
+    """ "ms512" when every method was timed at 512^2 (the issue's frame size), else "ms"."""
     timed = [r for r in rows if r["method"] != NATIVE_MODEL]
     return "ms512" if timed and all(r.get("ms512", 0.0) > 0 for r in timed) else "ms"
 
@@ -286,21 +336,35 @@ def summarise(rows: list[dict]) -> dict[str, tuple[float, float, float]]:
     for r in rows:
         if r["method"] != NATIVE_MODEL:
             methods.setdefault(r["method"], []).append(r)
-    return {m: (float(np.median([r[key] for r in rs])), float(np.mean([r["flip"] for r in rs])),
-                float(np.mean([r["rmse"] for r in rs]))) for m, rs in methods.items()}
+    return {
+        m: (
+            float(np.median([r[key] for r in rs])),
+            float(np.mean([r["flip"] for r in rs])),
+            float(np.mean([r["rmse"] for r in rs])),
+        )
+        for m, rs in methods.items()
+    }
 
 
-TIER_STYLE = {"analytic": ("tab:gray", "v"), "splitsum": ("tab:blue", "o"), "mc16": ("tab:orange", "s"),
-              "fis16": ("tab:green", "D"), "mc64": ("tab:purple", "s"), "fis64": ("tab:olive", "D"),
-              "mc256": ("tab:brown", "P")}
+TIER_STYLE = {
+    "analytic": ("tab:gray", "v"),
+    "splitsum": ("tab:blue", "o"),
+    "mc16": ("tab:orange", "s"),
+    "fis16": ("tab:green", "D"),
+    "mc64": ("tab:purple", "s"),
+    "fis64": ("tab:olive", "D"),
+    "mc256": ("tab:brown", "P"),
+}
 
 
 def plot(summary: dict, rows: list[dict], size: int, ref_spp: int, path: Path) -> None:
     """Time (log x) against error: one marker style per tier (small: per material, large: mean
     error at the median time), Mitsuba at 1...64 spp as a red line."""
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+
     timing = time_key(rows)
     timed_at = TIMING_SIZE if timing == "ms512" else size
     fig, axes = plt.subplots(1, 2, figsize=(13, 5.2))
@@ -310,25 +374,43 @@ def plot(summary: dict, rows: list[dict], size: int, ref_spp: int, path: Path) -
             mitsuba = method.startswith("mitsuba")
             colour, marker = ("tab:red", "x") if mitsuba else TIER_STYLE.get(method, ("black", "o"))
             ax.scatter([r[timing] for r in per], [r[key] for r in per], s=10, alpha=0.3, color=colour, marker=marker)
-            ax.scatter([values[0]], [values[index]], s=90, color=colour, marker=marker if not mitsuba else "o",
-                       edgecolor="black", zorder=3, label=None if mitsuba else method)
+            ax.scatter(
+                [values[0]],
+                [values[index]],
+                s=90,
+                color=colour,
+                marker=marker if not mitsuba else "o",
+                edgecolor="black",
+                zorder=3,
+                label=None if mitsuba else method,
+            )
             ax.annotate(method, (values[0], values[index]), textcoords="offset points", xytext=(6, 5), fontsize=8)
         spp = sorted((m for m in summary if m.startswith("mitsuba")), key=lambda m: int(m[7:]))
-        ax.plot([summary[m][0] for m in spp], [summary[m][index] for m in spp], color="tab:red", lw=1.5,
-                label="Mitsuba 1-64 spp")
+        ax.plot(
+            [summary[m][0] for m in spp],
+            [summary[m][index] for m in spp],
+            color="tab:red",
+            lw=1.5,
+            label="Mitsuba 1-64 spp",
+        )
         if key == "flip":
             ax.axhline(0.05, color="black", lw=0.8, ls="--")
             ax.axhline(0.02, color="black", lw=0.8, ls=":")
         ax.set_xscale("log")
         ax.set_ylim(bottom=0)
         ax.set_xlabel(f"ms per {timed_at}² frame, log (llvmpipe; Mitsuba llvm_ad_rgb); errors at {size}²")
-        ax.set_ylabel(("FLIP mean" if key == "flip" else "RMSE, tone-mapped sRGB") + f" vs converged Mitsuba ({ref_spp} spp)")
+        ax.set_ylabel(
+            ("FLIP mean" if key == "flip" else "RMSE, tone-mapped sRGB") + f" vs converged Mitsuba ({ref_spp} spp)"
+        )
         ax.grid(alpha=0.3, which="both")
     axes[0].legend(fontsize=8, loc="upper right")
     materials = len({r["material"] for r in rows})
-    fig.suptitle(f"cnlmc preview tiers vs Mitsuba: {materials} materials (small: per material; large: mean error, "
-                 "median time; dashed: FLIP 0.05, dotted: 0.02)\ntiers against Mitsuba rendering cnlmc's BSDF (cnlm "
-                 "plugin); Mitsuba's curve against its own converged native render", fontsize=10)
+    fig.suptitle(
+        f"cnlmc preview tiers vs Mitsuba: {materials} materials (small: per material; large: mean error, "
+        "median time; dashed: FLIP 0.05, dotted: 0.02)\ntiers against Mitsuba rendering cnlmc's BSDF (cnlm "
+        "plugin); Mitsuba's curve against its own converged native render",
+        fontsize=10,
+    )
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -364,13 +446,17 @@ def main(argv=None) -> int:
     summary = summarise(rows)
     plot(summary, rows, args.size, args.ref_spp, docs / "preview_chart.png")
     timed_at = TIMING_SIZE if time_key(rows) == "ms512" else args.size
-    print(f"\n{'method':10s} {f'ms {timed_at}^2':>12s} {'FLIP':>7s} {'RMSE':>7s}   (median time, mean error at {args.size}^2)")
+    print(
+        f"\n{'method':10s} {f'ms {timed_at}^2':>12s} {'FLIP':>7s} {'RMSE':>7s}   (median time, mean error at {args.size}^2)"
+    )
     for method, (ms, flip, rmse) in sorted(summary.items(), key=lambda kv: kv[1][0]):
         print(f"{method:10s} {ms:12.1f} {flip:7.4f} {rmse:7.4f}")
     print_goals(goals(rows, {k: material_class(m) for k, m in materials().items()}))
     choice = default_tier(summary, args.budget_ms)
-    print(f"\ndefault tier: {choice} -- the lowest mean FLIP among tiers whose median frame time at "
-          f"{timed_at}x{timed_at} fits {args.budget_ms:.0f} ms on llvmpipe")
+    print(
+        f"\ndefault tier: {choice} -- the lowest mean FLIP among tiers whose median frame time at "
+        f"{timed_at}x{timed_at} fits {args.budget_ms:.0f} ms on llvmpipe"
+    )
     print(f"\n({time.time() - start:.0f} s)")
     return 0
 

@@ -7,6 +7,7 @@ frame (compiles the shader, integrates the split-sum tables), then `--frames` fr
 timed from the first draw call to `finish()`. Prints min / median ms and fps of the median,
 and the first (cold) frame, which includes compiling.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -15,8 +16,15 @@ import time
 
 import numpy as np
 
-MATERIALS = ("blue plastic", "gold", "granite", "clear-coated red car paint", "lightly brushed, blue anodized aluminum",
-             "white varnished oak", "suede")
+MATERIALS = (
+    "blue plastic",
+    "gold",
+    "granite",
+    "clear-coated red car paint",
+    "lightly brushed, blue anodized aluminum",
+    "white varnished oak",
+    "suede",
+)
 
 
 def measure(renderer, scene, material, tier, frames: int) -> tuple[float, list[float]]:
@@ -41,6 +49,7 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     from cnlmc.api import compile_source
     from cnlmc.backends.preview.render import Renderer, default_scene
+
     renderer = Renderer(args.size)
     scene = default_scene("sphere", "studio", (args.size, args.size))
     print(f"{'material':42s} {'tier':9s} {'cold ms':>8s} {'min ms':>7s} {'median':>7s} {'fps':>5s}")
@@ -51,11 +60,15 @@ def main(argv=None) -> int:
             cold, times = measure(renderer, scene, material, tier, args.frames)
             median = float(np.median(times))
             medians.append((tier, median))
-            print(f"{phrase:42s} {tier:9s} {cold:8.0f} {min(times):7.1f} {median:7.1f} {1000 / median:5.0f}", flush=True)
+            print(
+                f"{phrase:42s} {tier:9s} {cold:8.0f} {min(times):7.1f} {median:7.1f} {1000 / median:5.0f}", flush=True
+            )
     for tier in args.tiers.split(","):
         values = [m for t, m in medians if t == tier]
-        print(f"{tier}: median frame {min(values):.1f}-{max(values):.1f} ms over {len(values)} materials "
-              f"({1000 / max(values):.0f}-{1000 / min(values):.0f} fps) at {args.size}x{args.size}")
+        print(
+            f"{tier}: median frame {min(values):.1f}-{max(values):.1f} ms over {len(values)} materials "
+            f"({1000 / max(values):.0f}-{1000 / min(values):.0f} fps) at {args.size}x{args.size}"
+        )
     return 0
 
 

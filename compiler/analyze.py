@@ -27,8 +27,14 @@ def attach_refinements(doc: ast.Document) -> list[tuple[ast.Material, list[ast.R
         elif pairs:
             pairs[-1][1].append(item)
         else:
-            doc.diagnostics.append(warning(item.span, "W104", "a refinement needs a material above it",
-                                           ("write the material first, e.g. 'blue anodized aluminum' then 'darker'",)))
+            doc.diagnostics.append(
+                warning(
+                    item.span,
+                    "W104",
+                    "a refinement needs a material above it",
+                    ("write the material first, e.g. 'blue anodized aluminum' then 'darker'",),
+                )
+            )
     return pairs
 
 

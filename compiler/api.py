@@ -12,7 +12,7 @@ from .lexicon import cached_lexicon
 from .state import Context
 
 
-def lexicon_for(specs=()) -> "Lexicon":  # noqa: F821
+def lexicon_for(specs=()) -> Lexicon:  # noqa: F821
     """`specs` are overlay names ('paper') or lexicon folders; folders are searched first."""
     paths = tuple(str(s) for s in specs if Path(s).is_dir())
     overlays = tuple(str(s) for s in specs if not Path(s).is_dir())
@@ -50,14 +50,18 @@ def compile_phrase(phrase: str, lexicon=None, seed: int = 0) -> dict:
     result = compile_source(phrase, "<phrase>", lexicon, seed)
     if not result.ok or not result.materials:
         from .diagnostics import render
-        raise ValueError("\n".join(render(d, phrase, "<phrase>") for d in result.diagnostics if d.is_error)
-                         or "the phrase names no material")
+
+        raise ValueError(
+            "\n".join(render(d, phrase, "<phrase>") for d in result.diagnostics if d.is_error)
+            or "the phrase names no material"
+        )
     return result.materials[0]
 
 
 def emit(ir: dict, target: str, options: dict | None = None):
     """Run a backend on an IR document; returns its artifacts."""
     from cnlmc.backends.registry import get_backend
+
     return get_backend(target).emit(ir, options or {})
 
 

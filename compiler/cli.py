@@ -12,16 +12,24 @@ STAGES = ("tokens", "ast", "ir")
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="cnlmc", description="Compile material phrases such as "
-                                     "'lightly brushed, blue anodized aluminum' into renderable materials.")
+    parser = argparse.ArgumentParser(
+        prog="cnlmc",
+        description="Compile material phrases such as "
+        "'lightly brushed, blue anodized aluminum' into renderable materials.",
+    )
     sub = parser.add_subparsers(dest="command", required=True)
     comp = sub.add_parser("compile", help="compile a material file (or - for stdin)")
     _common(comp)
     comp.add_argument("--target", "-t", default="ir", help="backend: see `cnlmc targets` (default: ir)")
     comp.add_argument("--emit", choices=STAGES, help="stop at a stage and print it")
     comp.add_argument("-o", "--output", help="output file or folder (default: stdout)")
-    comp.add_argument("--option", action="append", default=[], metavar="KEY=VALUE",
-                      help="a backend option, e.g. --option fresnel=schlick")
+    comp.add_argument(
+        "--option",
+        action="append",
+        default=[],
+        metavar="KEY=VALUE",
+        help="a backend option, e.g. --option fresnel=schlick",
+    )
     expl = sub.add_parser("explain", help="show every parameter and the words and rules that set it")
     _common(expl)
     sub.add_parser("targets", help="list the available targets")
@@ -30,13 +38,21 @@ def build_parser() -> argparse.ArgumentParser:
     _common(bake)
     bake.add_argument("-o", "--output", required=True, help="output folder")
     bake.add_argument("--size", type=int, default=1024, help="map size in pixels (default 1024)")
-    bake.add_argument("--format", default="png8", choices=["png8", "png16", "exr-half", "exr-float"],
-                      help="image format (default png8)")
+    bake.add_argument(
+        "--format",
+        default="png8",
+        choices=["png8", "png16", "exr-half", "exr-float"],
+        help="image format (default png8)",
+    )
     prev = sub.add_parser("preview", help="render a material file to a PNG (offscreen OpenGL)")
     _common(prev)
     prev.add_argument("-o", "--output", default="preview.png", help="output PNG (default preview.png)")
-    prev.add_argument("-i", "--interactive", action="store_true",
-                      help="then read refinements (darker, less grain, ...) at a prompt and re-render after each")
+    prev.add_argument(
+        "-i",
+        "--interactive",
+        action="store_true",
+        help="then read refinements (darker, less grain, ...) at a prompt and re-render after each",
+    )
     _render_options(prev)
     ar = sub.add_parser("ar", help="place the material on a printed marker in a photo or video")
     ar.add_argument("photo", nargs="?", help="a photo (.jpg/.png) or video (.mp4/.avi/.mov) showing the marker")
@@ -63,8 +79,13 @@ def _render_options(p) -> None:
 
 def _common(p) -> None:
     p.add_argument("file", help="a material file, or - to read standard input")
-    p.add_argument("--lexicon", "-L", action="append", default=[],
-                   help="an overlay name (e.g. 'paper') or a lexicon folder; may repeat; folders are searched first")
+    p.add_argument(
+        "--lexicon",
+        "-L",
+        action="append",
+        default=[],
+        help="an overlay name (e.g. 'paper') or a lexicon folder; may repeat; folders are searched first",
+    )
     p.add_argument("--seed", type=int, default=0, help="seed for procedural maps (default 0)")
 
 
@@ -93,16 +114,26 @@ def main(argv=None) -> int:
     except BrokenPipeError:
         return EXIT_OK
     except Exception as exc:  # the last line of defence: never a traceback
-        print(f"cnlmc: internal error: {type(exc).__name__}: {exc}\n"
-              "please report this with the input that caused it", file=sys.stderr)
+        print(
+            f"cnlmc: internal error: {type(exc).__name__}: {exc}\nplease report this with the input that caused it",
+            file=sys.stderr,
+        )
         return EXIT_INTERNAL
 
 
 def _run(args) -> int:
     from . import commands
-    handler = {"compile": commands.compile_cmd, "explain": commands.explain_cmd,
-               "targets": commands.targets_cmd, "lsp": commands.lsp_cmd, "bake": commands.bake_cmd,
-               "sheet": commands.sheet_cmd, "preview": commands.preview_cmd, "ar": commands.ar_cmd}[args.command]
+
+    handler = {
+        "compile": commands.compile_cmd,
+        "explain": commands.explain_cmd,
+        "targets": commands.targets_cmd,
+        "lsp": commands.lsp_cmd,
+        "bake": commands.bake_cmd,
+        "sheet": commands.sheet_cmd,
+        "preview": commands.preview_cmd,
+        "ar": commands.ar_cmd,
+    }[args.command]
     return handler(args)
 
 

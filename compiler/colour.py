@@ -18,7 +18,7 @@ def linear_to_srgb(c: float) -> float:
 def hex_to_linear(hex_code: str) -> list[float]:
     """'#0000ff' -> [0.0, 0.0, 1.0], rounded to 6 decimals so output is stable."""
     h = hex_code.lstrip("#")
-    return [round(srgb_to_linear(int(h[i:i + 2], 16) / 255), 6) for i in (0, 2, 4)]
+    return [round(srgb_to_linear(int(h[i : i + 2], 16) / 255), 6) for i in (0, 2, 4)]
 
 
 def linear_to_hex(rgb) -> str:

@@ -7,13 +7,14 @@ import sys
 from dataclasses import asdict
 
 from .cli import EXIT_ERRORS, EXIT_OK, read_source
-from .errors import UsageError
 from .diagnostics import render
+from .errors import UsageError
 
 
 def _lexicon(args):
     from .api import lexicon_for
     from .lexicon_schema import LexiconError
+
     try:
         return lexicon_for(tuple(args.lexicon))
     except LexiconError as exc:
@@ -36,8 +37,10 @@ def _parse_options(pairs) -> dict:
 
 
 def compile_cmd(args) -> int:
-    from .api import compile_source
     from cnlmc.backends.registry import TargetUnavailable, UnknownTarget, get_backend
+
+    from .api import compile_source
+
     try:
         backend = get_backend("ir" if args.emit == "ir" else args.target)
     except (UnknownTarget, TargetUnavailable) as exc:
@@ -62,6 +65,7 @@ def compile_cmd(args) -> int:
 def _run_backend(backend, ir, options):
     """Emit; approximation notes become warnings, a refusal an error (exit 1)."""
     from cnlmc.backends.capabilities import BackendRefused
+
     try:
         emitted = backend.emit(ir, options)
     except BackendRefused as exc:
@@ -76,6 +80,7 @@ def _run_backend(backend, ir, options):
 
 def _deliver(artifacts, output) -> int:
     from .output import write_artifacts
+
     if output:
         for path in write_artifacts(artifacts, output):
             print(f"wrote {path}", file=sys.stderr)
@@ -92,6 +97,7 @@ def _deliver(artifacts, output) -> int:
 def _emit_stage(stage: str, source: str, name: str, lexicon) -> int:
     from .document import iter_lines, parse_document
     from .tagger import Tagger
+
     if stage == "tokens":
         tagger = Tagger(lexicon)
         for number, offset, text in iter_lines(source):
@@ -111,6 +117,7 @@ def _emit_stage(stage: str, source: str, name: str, lexicon) -> int:
 def explain_cmd(args) -> int:
     from .api import compile_source
     from .explain import explain
+
     source, name = read_source(args.file)
     result = compile_source(source, name, _lexicon(args), args.seed)
     _report(result, source, name)
@@ -120,6 +127,7 @@ def explain_cmd(args) -> int:
 
 def targets_cmd(args) -> int:
     from cnlmc.backends.registry import available
+
     for name, module in sorted(available().items()):
         print(f"{name:<10} {module}")
     return EXIT_OK
@@ -137,6 +145,7 @@ def lsp_cmd(args) -> int:
 def bake_cmd(args) -> int:
     from .api import compile_source
     from .bake import bake_materials
+
     source, name = read_source(args.file)
     result = compile_source(source, name, _lexicon(args), args.seed)
     _report(result, source, name)
@@ -175,6 +184,7 @@ def _render_options(args) -> dict:
 
 def _compiled_or_exit(source: str, name: str, args):
     from .api import compile_source
+
     result = compile_source(source, name, _lexicon(args), args.seed)
     _report(result, source, name)
     if not result.ok:
@@ -209,6 +219,7 @@ def _live_preview(source: str, args) -> int:
     from pathlib import Path
 
     from cnlmc.backends.preview import live
+
     if args.file == "-":
         raise UsageError("--interactive reads refinements from standard input: give the material as a file")
     session = live.LiveSession(source, Path(args.output), _render_options(args), _lexicon(args))
@@ -223,6 +234,7 @@ def _live_preview(source: str, args) -> int:
 def _phrase_source(text: str) -> tuple[str, str]:
     """The AR phrase argument: a material file when such a file exists, else the phrase itself."""
     from pathlib import Path
+
     if Path(text).is_file():
         return read_source(text)
     return text, "<phrase>"
@@ -237,7 +249,7 @@ def ar_cmd(args) -> int:
         print(f"wrote {ar.write_marker(args.marker)}", file=sys.stderr)
         return EXIT_OK
     if not (args.photo and args.phrase and args.output):
-        raise UsageError("usage: cnlmc ar PHOTO \"PHRASE\" -o OUT.png   (or: cnlmc ar --marker marker.png)")
+        raise UsageError('usage: cnlmc ar PHOTO "PHRASE" -o OUT.png   (or: cnlmc ar --marker marker.png)')
     source, name = _phrase_source(args.phrase)
     result = _compiled_or_exit(source, name, args)
     if result is None:

@@ -1,8 +1,8 @@
 """The roughness -> alpha convention, stated once; every backend reads alpha from the IR.
 
-    alpha = r^2 ("squared", the stdlib)  or  alpha = r ("linear", the paper's m)
-    s = sqrt(1 - 0.9 a),  alpha_x = alpha / s,  alpha_y = alpha * s   (a = anisotropy in [0, 1])
-    alpha_x, alpha_y are clamped to at most 1. Below ALPHA_MIRROR a lobe is a perfect mirror.
+alpha = r^2 ("squared", the stdlib)  or  alpha = r ("linear", the paper's m)
+s = sqrt(1 - 0.9 a),  alpha_x = alpha / s,  alpha_y = alpha * s   (a = anisotropy in [0, 1])
+alpha_x, alpha_y are clamped to at most 1. Below ALPHA_MIRROR a lobe is a perfect mirror.
 """
 
 from __future__ import annotations

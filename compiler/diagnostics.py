@@ -8,7 +8,7 @@ from enum import Enum
 from .spans import Span
 
 
-class Severity(str, Enum):
+class Severity(str, Enum):  # noqa: UP042 -- str() of a member stays "Severity.ERROR"
     ERROR = "error"
     WARNING = "warning"
     NOTE = "note"

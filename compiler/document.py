@@ -48,8 +48,13 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list)
     if not text.strip() or text.lstrip().startswith("#"):
         return None
     if len(text) > MAX_LINE_CHARS:
-        diags.append(error(Span(offset, offset + len(text), number, 1), "E004",
-                           f"line is too long ({len(text)} characters; at most {MAX_LINE_CHARS})"))
+        diags.append(
+            error(
+                Span(offset, offset + len(text), number, 1),
+                "E004",
+                f"line is too long ({len(text)} characters; at most {MAX_LINE_CHARS})",
+            )
+        )
         return None
     words, tag_diags = tagger.tag_line(text, number, offset)
     if tag_diags:  # only unknown words and characters may lack candidates
@@ -58,8 +63,13 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list)
     if not words:
         return None
     if len(words) > MAX_LINE_WORDS:
-        diags.append(error(words[0].span.to(words[-1].span), "E004",
-                           f"phrase is too long ({len(words)} words; at most {MAX_LINE_WORDS})"))
+        diags.append(
+            error(
+                words[0].span.to(words[-1].span),
+                "E004",
+                f"phrase is too long ({len(words)} words; at most {MAX_LINE_WORDS})",
+            )
+        )
         return None
     try:
         shape, picks = parse_line_shape(words)
@@ -77,25 +87,38 @@ def _syntax_error(failure: ParseFailure, words, lexicon):
     span = at.span if failure.tagged else words[0].span.to(words[-1].span)
     mistake = known_mistake(lexicon, failure)
     if mistake is not None:
-        return error(span if failure.tagged else at.span, "E002", mistake.message.format(word=at.text),
-                     (mistake.hint,))
+        return error(span if failure.tagged else at.span, "E002", mistake.message.format(word=at.text), (mistake.hint,))
     if failure.tagged is None and not has_noun and not is_refinement:
-        return error(span, "E003", "this phrase names no material: end it with a noun",
-                     ("for example 'brushed aluminum' or 'white varnished oak'",))
+        return error(
+            span,
+            "E003",
+            "this phrase names no material: end it with a noun",
+            ("for example 'brushed aluminum' or 'white varnished oak'",),
+        )
     if failure.tagged is None:
         in_coat = any(c.tag == "WITH" for t in words for c in t.candidates)
         return _early_end(at, failure.expected, in_coat)
-    return error(at.span, "E002", f"'{at.text}' cannot stand here",
-                 (f"expected {describe_expected(failure.expected)}",))
+    return error(
+        at.span, "E002", f"'{at.text}' cannot stand here", (f"expected {describe_expected(failure.expected)}",)
+    )
 
 
 def _early_end(last, expected: set[str], in_coat: bool):
     """The line stopped before the grammar was done: say what is missing."""
     if "COAT" in expected and (in_coat or "NOUN" not in expected):
-        return error(last.span, "E002", f"the coat clause ends at '{last.text}' without naming the coat",
-                     ("end it with a coat word, e.g. 'oak with a glossy varnish'",))
+        return error(
+            last.span,
+            "E002",
+            f"the coat clause ends at '{last.text}' without naming the coat",
+            ("end it with a coat word, e.g. 'oak with a glossy varnish'",),
+        )
     if "NOUN" in expected:
-        return error(last.span, "E002", f"the phrase ends at '{last.text}' without naming the material",
-                     ("end it with a material noun, e.g. 'brushed aluminum'",))
-    return error(last.span, "E002", f"the phrase cannot end after '{last.text}'",
-                 (f"expected {describe_expected(expected)}",))
+        return error(
+            last.span,
+            "E002",
+            f"the phrase ends at '{last.text}' without naming the material",
+            ("end it with a material noun, e.g. 'brushed aluminum'",),
+        )
+    return error(
+        last.span, "E002", f"the phrase cannot end after '{last.text}'", (f"expected {describe_expected(expected)}",)
+    )

@@ -14,10 +14,12 @@ def _fmt(value) -> str:
 def explain_material(material: dict) -> list[str]:
     model = material["model"]
     parts = [model["base"]] + [k for k in ("anisotropic", "coat") if model[k]]
-    lines = [f"{material['name']}: {material['phrase']}",
-             f"  model: {' + '.join(parts)}"
-             + (f", {model['distribution']}" if model["distribution"] else "")
-             + (f", {model['diffuse']} diffuse" if model["diffuse"] else "")]
+    lines = [
+        f"{material['name']}: {material['phrase']}",
+        f"  model: {' + '.join(parts)}"
+        + (f", {model['distribution']}" if model["distribution"] else "")
+        + (f", {model['diffuse']} diffuse" if model["diffuse"] else ""),
+    ]
     rows = [("parameter", "value", "set by", "rule")]
     for param, steps in material["provenance"].items():
         for i, step in enumerate(steps):

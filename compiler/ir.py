@@ -71,9 +71,12 @@ def _rounded_lexicon_list(values: list) -> list:
 
 def _coat(coat: dict, convention: str) -> dict:
     return {
-        "name": coat["name"], "ior": coat["ior"], "roughness": coat["roughness"],
+        "name": coat["name"],
+        "ior": coat["ior"],
+        "roughness": coat["roughness"],
         "alpha": alpha_of(coat["roughness"], 0.0, convention),
-        "color": coat["color"], "thickness": coat["thickness"],
+        "color": coat["color"],
+        "thickness": coat["thickness"],
     }
 
 

@@ -16,8 +16,14 @@ from .colour import hex_to_linear
 from .lexicon_schema import LexiconError, check_entry
 
 CATEGORY_TAGS = {
-    "nouns": "NOUN", "adjectives": "ADJ", "adverbs": "ADV", "colours": "COLOR",
-    "shades": "SHADE", "refinements": "REFINE", "properties": "PROP", "coats": "COAT",
+    "nouns": "NOUN",
+    "adjectives": "ADJ",
+    "adverbs": "ADV",
+    "colours": "COLOR",
+    "shades": "SHADE",
+    "refinements": "REFINE",
+    "properties": "PROP",
+    "coats": "COAT",
 }
 SPECIAL_FILES = ("settings", "inflections", "keywords")
 
@@ -45,8 +51,9 @@ def normalise(surface: str) -> tuple[str, ...]:
 class Lexicon:
     """Entries by category, an index of surface forms, inflection rules and settings."""
 
-    def __init__(self, entries: dict, settings: dict, inflections: list, sources: list[str],
-                 keywords: dict | None = None):
+    def __init__(
+        self, entries: dict, settings: dict, inflections: list, sources: list[str], keywords: dict | None = None
+    ):
         self.keywords = {**keyword_table(), **(keywords or {})}
         self.entries = entries
         self.settings = settings
@@ -104,14 +111,15 @@ class Lexicon:
 
     def _closest(self, word: str, categories: tuple, limit: int) -> list[str]:
         from rapidfuzz import fuzz, process  # only needed when a word is unknown
+
         found = process.extract(word, self._pool(categories), scorer=fuzz.ratio, limit=limit, score_cutoff=70)
         return [match for match, _score, _i in found]
 
     def _pool(self, categories: tuple) -> list[str]:
         if categories not in self._suggest_pool:
             self._suggest_pool[categories] = sorted(
-                " ".join(form) for form, hits in self.forms.items()
-                if any(e.category in categories for e in hits))
+                " ".join(form) for form, hits in self.forms.items() if any(e.category in categories for e in hits)
+            )
         return self._suggest_pool[categories]
 
     def all_of(self, category: str) -> dict[str, Entry]:
@@ -131,6 +139,7 @@ def _index_forms(entries: dict) -> dict:
 
 def _schema() -> dict:
     import tomllib
+
     text = resources.files("cnlmc.stdlib").joinpath("schema.toml").read_text("utf-8")
     return tomllib.loads(text)
 
@@ -139,6 +148,7 @@ def keyword_table(table: dict | None = None) -> dict[str, str]:
     """Closed-class words -> grammar terminal, from grammar/keywords.toml (or a given table)."""
     if table is None:
         import tomllib
+
         text = resources.files("cnlmc.grammar").joinpath("keywords.toml").read_text("utf-8")
         table = tomllib.loads(text)
     return {word: terminal for terminal, words in table["terminals"].items() for word in words}
@@ -153,6 +163,7 @@ def _category_of(stem: str) -> str | None:
 
 def _read_toml(path) -> dict:
     import tomllib
+
     try:
         return tomllib.loads(path.read_text("utf-8"))
     except tomllib.TOMLDecodeError as exc:
@@ -185,8 +196,10 @@ class _Builder:
         stem = path.name[:-5]
         category = _category_of(stem)
         if category is None:
-            raise LexiconError(f"{path}: unknown lexicon file (its name must start with one of: "
-                               f"{', '.join([*CATEGORY_TAGS, *SPECIAL_FILES])})")
+            raise LexiconError(
+                f"{path}: unknown lexicon file (its name must start with one of: "
+                f"{', '.join([*CATEGORY_TAGS, *SPECIAL_FILES])})"
+            )
         data = _read_toml(path)
         if category == "inflections":  # every layer's rules, the most specific layer's first
             self.inflections += [tuple(r) for r in data.get("rules", [])]
@@ -251,6 +264,7 @@ def overlay_folder(name: str):
     folder = resources.files("cnlmc.stdlib").joinpath("overlays").joinpath(name)
     if not folder.is_dir():
         import difflib
+
         close = difflib.get_close_matches(name, available_overlays(), n=1)
         hint = f"; did you mean '{close[0]}'?" if close else ""
         raise LexiconError(f"no lexicon overlay named '{name}' (available: {', '.join(available_overlays())}){hint}")
@@ -286,12 +300,15 @@ def load_lexicon(user_paths=(), overlay: str | tuple | None = None) -> Lexicon:
 def cached_lexicon(user_paths: tuple = (), overlay: str | tuple | None = None) -> Lexicon:
     """The lexicon, from the on-disk cache when no source file changed since it was written."""
     from .cache import cached
+
     folders = [Path(p) for p in user_paths]
     folders += [Path(str(overlay_folder(name))) for name in _overlay_names(overlay)]
     folders.append(Path(str(stdlib_folder())))
-    sources = [Path(str(resources.files("cnlmc.stdlib").joinpath("schema.toml"))),
-               Path(str(resources.files("cnlmc.grammar").joinpath("keywords.toml"))),
-               Path(__file__)]  # the classes that are pickled: a change to them rebuilds the cache
+    sources = [
+        Path(str(resources.files("cnlmc.stdlib").joinpath("schema.toml"))),
+        Path(str(resources.files("cnlmc.grammar").joinpath("keywords.toml"))),
+        Path(__file__),
+    ]  # the classes that are pickled: a change to them rebuilds the cache
     sources += [p for folder in folders if folder.is_dir() for p in sorted(folder.glob("*.toml"))]
     lexicon = cached("lexicon", sources, lambda: load_lexicon(user_paths, overlay))
     _freeze_long_lived()
@@ -309,6 +326,7 @@ def _freeze_long_lived() -> None:
     import atexit
     import gc
     import os
+
     if not os.environ.get("CNLMC_NO_GC_FREEZE"):
         gc.freeze()
         atexit.register(gc.unfreeze)  # let extension modules see their objects freed at exit

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import asyncio
 import gc
+import logging
 import os
 import time
-import logging
 from concurrent.futures import ThreadPoolExecutor
 
 from lsprotocol import types
@@ -60,6 +60,7 @@ class CnlServer(LanguageServer):
     def use_lexicon(self, specs: tuple) -> None:
         """Overlay names ('de', 'paper') or lexicon folders, as `--lexicon` takes them."""
         from .lexicon_schema import LexiconError
+
         try:
             lexicon = lexicon_for(specs)
         except LexiconError as exc:
@@ -118,7 +119,7 @@ class CnlServer(LanguageServer):
             return
         version = self.workspace.get_text_document(uri).version
         t0 = time.perf_counter()
-        current = lambda: self.generation.get(uri) == generation  # noqa: E731
+        current = lambda: self.generation.get(uri) == generation
         loop = asyncio.get_running_loop()
         try:
             snap = await loop.run_in_executor(self.worker, self.analyzer.analyse, text, self.encoding, current)
@@ -138,8 +139,10 @@ class CnlServer(LanguageServer):
         gc.freeze()  # see keep_collections_small()
         if TRACE:
             with open(TRACE, "a", encoding="utf-8") as trace:
-                trace.write(f"{uri} v{version} analyse {(t1 - t0) * 1000:.1f} convert {(t2 - t1) * 1000:.1f} "
-                            f"send {(t3 - t2) * 1000:.1f} ms\n")
+                trace.write(
+                    f"{uri} v{version} analyse {(t1 - t0) * 1000:.1f} convert {(t2 - t1) * 1000:.1f} "
+                    f"send {(t3 - t2) * 1000:.1f} ms\n"
+                )
 
 
 def keep_collections_small() -> None:
@@ -192,8 +195,9 @@ async def on_hover(ls: CnlServer, params: types.HoverParams):
     return hover.hover(snap, params.position, ls.analyzer.lexicon) if snap else None
 
 
-@server.feature(types.TEXT_DOCUMENT_COMPLETION,
-                types.CompletionOptions(trigger_characters=[" ", ","], resolve_provider=False))
+@server.feature(
+    types.TEXT_DOCUMENT_COMPLETION, types.CompletionOptions(trigger_characters=[" ", ","], resolve_provider=False)
+)
 async def on_completion(ls: CnlServer, params: types.CompletionParams):
     snap = await ls.snapshot(params.text_document.uri)
     if snap is None:
@@ -201,8 +205,9 @@ async def on_completion(ls: CnlServer, params: types.CompletionParams):
     return completion.complete(snap, params.position, ls.analyzer.lexicon)
 
 
-@server.feature(types.TEXT_DOCUMENT_CODE_ACTION,
-                types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))
+@server.feature(
+    types.TEXT_DOCUMENT_CODE_ACTION, types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix])
+)
 async def on_code_action(ls: CnlServer, params: types.CodeActionParams):
     snap = await ls.snapshot(params.text_document.uri)
     if snap is None:

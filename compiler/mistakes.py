@@ -21,6 +21,7 @@ class Mistake:
 
 def _read_table() -> list[dict]:
     import tomllib
+
     text = resources.files("cnlmc.grammar").joinpath("bad_examples.toml").read_text("utf-8")
     return tomllib.loads(text)["mistake"]
 

@@ -17,8 +17,8 @@ from functools import lru_cache
 from importlib import resources
 
 from lark import Lark, Token, Tree
-from lark.lexer import Lexer
 from lark.exceptions import UnexpectedInput, UnexpectedToken
+from lark.lexer import Lexer
 
 from .syntax import Shape
 from .tagger import Tagged
@@ -28,12 +28,22 @@ MAX_SHAPES = 4096  # distinct terminal sequences kept; the cache starts over whe
 _shapes: dict = {}  # candidate tags per word -> (Shape, chosen candidate index per word or None)
 
 TERMINAL_NAMES = {
-    "NOUN": "a material noun (e.g. 'aluminum')", "ADJ": "an adjective (e.g. 'brushed')",
-    "ADV": "an adverb (e.g. 'lightly')", "COLOR": "a colour (e.g. 'blue')",
-    "SHADE": "a shade (e.g. 'dark')", "COAT": "a coat (e.g. 'varnish')",
-    "REFINE": "a refinement (e.g. 'darker')", "PROP": "a property (e.g. 'grain')",
-    "ARTICLE": "an article", "AND": "'and'", "OR": "'or'", "WITH": "'with'", "COMMA": "','",
-    "NAME": "a name", "COLON": "':'", "$END": "the end of the line",
+    "NOUN": "a material noun (e.g. 'aluminum')",
+    "ADJ": "an adjective (e.g. 'brushed')",
+    "ADV": "an adverb (e.g. 'lightly')",
+    "COLOR": "a colour (e.g. 'blue')",
+    "SHADE": "a shade (e.g. 'dark')",
+    "COAT": "a coat (e.g. 'varnish')",
+    "REFINE": "a refinement (e.g. 'darker')",
+    "PROP": "a property (e.g. 'grain')",
+    "ARTICLE": "an article",
+    "AND": "'and'",
+    "OR": "'or'",
+    "WITH": "'with'",
+    "COMMA": "','",
+    "NAME": "a name",
+    "COLON": "':'",
+    "$END": "the end of the line",
 }
 
 
@@ -50,8 +60,10 @@ class _Lexer(Lexer):
 def _grammar_cache_path(grammar: str):
     """Where lark keeps the built LALR tables for this grammar text (rebuilt when it changes)."""
     import hashlib
-    from .cache import cache_dir
     import os
+
+    from .cache import cache_dir
+
     folder = cache_dir()
     try:
         folder.mkdir(parents=True, exist_ok=True)
@@ -65,8 +77,14 @@ def _grammar_cache_path(grammar: str):
 @lru_cache(maxsize=1)
 def lark_parser() -> Lark:
     grammar = resources.files("cnlmc.grammar").joinpath("cnl.lark").read_text("utf-8")
-    return Lark(grammar, parser="lalr", lexer=_Lexer, propagate_positions=False, maybe_placeholders=False,
-                cache=_grammar_cache_path(grammar))
+    return Lark(
+        grammar,
+        parser="lalr",
+        lexer=_Lexer,
+        propagate_positions=False,
+        maybe_placeholders=False,
+        cache=_grammar_cache_path(grammar),
+    )
 
 
 def _token(t: Tagged, tag: str) -> Token:
@@ -96,8 +114,9 @@ def parse_tagged(tagged: list[Tagged]) -> tuple[Tree, dict]:
 
 def parse_line_shape(words: list[Tagged]) -> tuple[Shape, list]:
     """The shape of a line's parse and the chosen candidate of each word (raises ParseFailure)."""
-    key = tuple([t.candidates[0].tag if len(t.candidates) == 1 else tuple([c.tag for c in t.candidates])
-                 for t in words])
+    key = tuple(
+        [t.candidates[0].tag if len(t.candidates) == 1 else tuple([c.tag for c in t.candidates]) for t in words]
+    )
     found = _shapes.get(key)
     if found is None:
         found = _compile_shape(words)

@@ -29,7 +29,7 @@ def _fast_init(cls):
     body = "".join(f"\n    d['{f.name}'] = {f.name}" for f in fields(cls))
     source = f"def __init__(self, {', '.join(params)}):\n    d = self.__dict__{body}\n"
     namespace: dict = {}
-    exec(source, dict(defaults), namespace)  # noqa: S102 - the source is built from field names only
+    exec(source, dict(defaults), namespace)
     init = namespace["__init__"]
     init.__qualname__ = f"{cls.__qualname__}.__init__"
     return init

@@ -18,7 +18,7 @@ class Span:
     def end_col(self) -> int:
         return self.col + (self.end - self.start)
 
-    def to(self, other: "Span") -> "Span":
+    def to(self, other: Span) -> Span:
         """The span from the start of self to the end of other (same line)."""
         return Span(self.start, max(self.end, other.end), self.line, self.col)
 

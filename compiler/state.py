@@ -37,8 +37,12 @@ def step_json(step: Step, shared: dict) -> dict:
     if step.source:  # lexicon values are exact
         return {"rule": step.rule, "words": lists[0], "spans": lists[1], "value": step.value, "source": step.source}
     value = step.value
-    return {"rule": step.rule, "words": lists[0], "spans": lists[1],
-            "value": round6(value) if type(value) is float else rounded(value)}
+    return {
+        "rule": step.rule,
+        "words": lists[0],
+        "spans": lists[1],
+        "value": round6(value) if type(value) is float else rounded(value),
+    }
 
 
 @dataclass
@@ -67,7 +71,7 @@ class MaterialState:
     maps: dict = field(default_factory=dict)
     provenance: dict = field(default_factory=dict)
     diagnostics: list = field(default_factory=list)
-    applied: list = field(default_factory=list)   # (adjective key, Word) in order
+    applied: list = field(default_factory=list)  # (adjective key, Word) in order
     brackets: dict = field(default_factory=dict)  # refinement search state per target
     model: dict | None = None
 

@@ -75,15 +75,25 @@ class Shape:
 def builder_source(tree: Tree, index: dict) -> str:
     walk = _Walk(index, _Source())
     body = walk.start(tree)
-    lines = [f"    w{i} = Word(t[{i}].text, p[{i}].key, p[{i}].category, t[{i}].span, t[{i}].unknown)"
-             for i in sorted(walk.used)]
+    lines = [
+        f"    w{i} = Word(t[{i}].text, p[{i}].key, p[{i}].category, t[{i}].span, t[{i}].unknown)"
+        for i in sorted(walk.used)
+    ]
     return "def build(t, p, text):\n" + "\n".join([*lines, f"    return {body}"]) + "\n"
 
 
 def compile_source_builder(tree: Tree, index: dict):
-    namespace = {"Word": ast.Word, "Material": ast.Material, "Group": ast.Group, "Coat": ast.Coat,
-                 "Refinement": ast.Refinement, "RefineItem": ast.RefineItem, "span": span, "colour": colour}
-    exec(builder_source(tree, index), namespace)  # noqa: S102 - word indices and rule names only
+    namespace = {
+        "Word": ast.Word,
+        "Material": ast.Material,
+        "Group": ast.Group,
+        "Coat": ast.Coat,
+        "Refinement": ast.Refinement,
+        "RefineItem": ast.RefineItem,
+        "span": span,
+        "colour": colour,
+    }
+    exec(builder_source(tree, index), namespace)
     return namespace["build"]
 
 
@@ -138,8 +148,9 @@ class _Walk:
         return self.make.material(name, groups, nouns, coat, self.edges(tree))
 
     def groups(self, tree: Tree):
-        return self.make.sequence([self.group(c) for c in tree.children
-                                   if isinstance(c, Tree) and c.data in GROUP_RULES])
+        return self.make.sequence(
+            [self.group(c) for c in tree.children if isinstance(c, Tree) and c.data in GROUP_RULES]
+        )
 
     def group(self, tree: Tree):
         adverbs, colours, adjectives = (), [], ()
@@ -196,9 +207,15 @@ class _Closures:
         first, last = edges
 
         def build(words, tagged, text):
-            return ast.Material(name(words, tagged) if name else None, groups(words, tagged) if groups else (),
-                                tuple([words[i] for i in nouns]), coat(words, tagged) if coat else None,
-                                span(tagged, first, last), text)
+            return ast.Material(
+                name(words, tagged) if name else None,
+                groups(words, tagged) if groups else (),
+                tuple([words[i] for i in nouns]),
+                coat(words, tagged) if coat else None,
+                span(tagged, first, last),
+                text,
+            )
+
         return build
 
     @staticmethod
@@ -206,8 +223,14 @@ class _Closures:
         first, last = edges
 
         def build(words, tagged):
-            return ast.Group(kind, tuple([words[i] for i in adverbs]), colours(words, tagged),
-                             tuple([words[i] for i in adjectives]), span(tagged, first, last))
+            return ast.Group(
+                kind,
+                tuple([words[i] for i in adverbs]),
+                colours(words, tagged),
+                tuple([words[i] for i in adjectives]),
+                span(tagged, first, last),
+            )
+
         return build
 
     @staticmethod
@@ -218,21 +241,25 @@ class _Closures:
     @staticmethod
     def coat(groups, coat_word, edges):
         first, last = edges
-        return lambda words, tagged: ast.Coat(groups(words, tagged) if groups else (),
-                                              coat_word(words, tagged) if coat_word else None,
-                                              span(tagged, first, last))
+        return lambda words, tagged: ast.Coat(
+            groups(words, tagged) if groups else (),
+            coat_word(words, tagged) if coat_word else None,
+            span(tagged, first, last),
+        )
 
     @staticmethod
     def refinement(name, items, edges):
         first, last = edges
-        return lambda words, tagged, text: ast.Refinement(name(words, tagged) if name else None,
-                                                          items(words, tagged), span(tagged, first, last), text)
+        return lambda words, tagged, text: ast.Refinement(
+            name(words, tagged) if name else None, items(words, tagged), span(tagged, first, last), text
+        )
 
     @staticmethod
     def refine_item(word, target, edges):
         first, last = edges
-        return lambda words, tagged: ast.RefineItem(word(words, tagged), target(words, tagged) if target else None,
-                                                    span(tagged, first, last))
+        return lambda words, tagged: ast.RefineItem(
+            word(words, tagged), target(words, tagged) if target else None, span(tagged, first, last)
+        )
 
 
 def _tuple(items) -> str:
@@ -257,13 +284,17 @@ class _Source:
 
     @staticmethod
     def material(name, groups, nouns: tuple, coat, edges) -> str:
-        return (f"Material({name or 'None'}, {groups or '()'}, {_tuple([f'w{i}' for i in nouns])}, "
-                f"{coat or 'None'}, {_span(edges)}, text)")
+        return (
+            f"Material({name or 'None'}, {groups or '()'}, {_tuple([f'w{i}' for i in nouns])}, "
+            f"{coat or 'None'}, {_span(edges)}, text)"
+        )
 
     @staticmethod
     def group(kind: str, adverbs: tuple, colours: str, adjectives: tuple, edges) -> str:
-        return (f"Group({kind!r}, {_tuple([f'w{i}' for i in adverbs])}, {colours}, "
-                f"{_tuple([f'w{i}' for i in adjectives])}, {_span(edges)})")
+        return (
+            f"Group({kind!r}, {_tuple([f'w{i}' for i in adverbs])}, {colours}, "
+            f"{_tuple([f'w{i}' for i in adjectives])}, {_span(edges)})"
+        )
 
     @staticmethod
     def colour(indices: tuple, may_have_base: bool, edges) -> str:

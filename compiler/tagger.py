@@ -90,7 +90,9 @@ class Tagger:
         text = " ".join(t for t, _c in raw[:colon])
         span = line_span(line_no, first_col + 1, last_col + len(last_text) - first_col, offset)
         tagged.append(Tagged(text, span, (Candidate("NAME", text, "name"),)))
-        tagged.append(Tagged(":", line_span(line_no, raw[colon][1] + 1, 1, offset), (Candidate("COLON", ":", "punct"),)))
+        tagged.append(
+            Tagged(":", line_span(line_no, raw[colon][1] + 1, 1, offset), (Candidate("COLON", ":", "punct"),))
+        )
         return colon + 1
 
     def _tag_at(self, raw, i, line_no, offset, tagged, diags) -> int:
@@ -98,9 +100,13 @@ class Tagger:
         text = raw[i][0]
         for n in self.lengths_from.get(text.lower(), ()):
             if i + n <= len(raw):
-                candidates = self._candidates(tuple([t.lower() for t, _c in raw[i:i + n]]))
+                candidates = self._candidates(tuple([t.lower() for t, _c in raw[i : i + n]]))
                 if candidates:
-                    tagged.append(Tagged(" ".join(t for t, _c in raw[i:i + n]), self._span(raw, i, n, line_no, offset), candidates))
+                    tagged.append(
+                        Tagged(
+                            " ".join(t for t, _c in raw[i : i + n]), self._span(raw, i, n, line_no, offset), candidates
+                        )
+                    )
                     return n
         candidates = self._candidates((text.lower(),))
         if candidates:

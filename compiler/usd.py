@@ -17,6 +17,7 @@ from pathlib import Path
 def _compile(phrase: str, lexicon, seed: int) -> list[dict]:
     from .api import compile_source
     from .diagnostics import render
+
     result = compile_source(phrase, "<phrase>", lexicon, seed)
     if not result.ok or not result.materials:
         errors = [render(d, phrase, "<phrase>") for d in result.diagnostics if d.is_error]
@@ -24,9 +25,18 @@ def _compile(phrase: str, lexicon, seed: int) -> list[dict]:
     return result.materials
 
 
-def author_material(stage, path: str, phrase: str, bind_to=(), lexicon=None, *, seed: int = 0,
-                    texture_dir: str | Path | None = None, map_size: int = 512,
-                    surface: str = "open_pbr_surface"):
+def author_material(
+    stage,
+    path: str,
+    phrase: str,
+    bind_to=(),
+    lexicon=None,
+    *,
+    seed: int = 0,
+    texture_dir: str | Path | None = None,
+    map_size: int = 512,
+    surface: str = "open_pbr_surface",
+):
     """Author `phrase` as a UsdShade.Material at `path` (an "or" phrase: one prim with a VariantSet)
     and bind it to the prims at `bind_to`. Returns the UsdShade.Material.
 
@@ -47,8 +57,7 @@ def author_material(stage, path: str, phrase: str, bind_to=(), lexicon=None, *, 
     missing = [str(p) for p, prim in zip(bind_to, targets) if not prim.IsValid()]
     if missing:
         raise ValueError(f"cannot bind: no prim at {', '.join(missing)}")
-    opts = exchange_options({"maps": "bake" if texture_dir else "none", "map_size": map_size, "seed": seed},
-                            "usd", {})
+    opts = exchange_options({"maps": "bake" if texture_dir else "none", "map_size": map_size, "seed": seed}, "usd", {})
     textures = []
     for material, ident in zip(materials, unique_identifiers(m["name"] for m in materials)):
         tex, images = bake_textures(material, ident, opts)
@@ -67,7 +76,9 @@ def author_material(stage, path: str, phrase: str, bind_to=(), lexicon=None, *, 
 def _write_textures(stage, folder: Path, textures: dict, images) -> dict:
     """Write baked images and point the texture paths at them."""
     from dataclasses import replace
+
     from cnlmc.output import write_atomic
+
     folder.mkdir(parents=True, exist_ok=True)
     layer_path = stage.GetRootLayer().realPath
     out = {}

@@ -14,26 +14,40 @@ video: the tone map's edge filter instead, about 3x less time per frame), fresne
 Errors are ARError subclasses with an `exit_code` (NoMarkerFound 65, PhotoUnreadable 66,
 AROptionError 2).
 """
+
 from __future__ import annotations
 
 import os
-
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
-from .errors import AROptionError, ARError, NoMarkerFound, PhotoUnreadable
+from .errors import ARError, AROptionError, NoMarkerFound, PhotoUnreadable
 from .marker import write_marker
 from .pose import Pose, default_intrinsics, estimate_pose, find_marker, gl_projection, gl_view
 
 NAME = "ar"
-DEFAULTS = {"marker_length": "0.1", "marker_id": "", "scale": "1.0", "intrinsics": "", "fov": "60", "dist": "",
-            "mesh": "teapot", "tier": "splitsum", "env": "studio", "shadow": "0.65", "material": "",
-            "exposure": "1.0", "msaa": "4", "fresnel": "exact", "multiscatter": "off"}
+DEFAULTS = {
+    "marker_length": "0.1",
+    "marker_id": "",
+    "scale": "1.0",
+    "intrinsics": "",
+    "fov": "60",
+    "dist": "",
+    "mesh": "teapot",
+    "tier": "splitsum",
+    "env": "studio",
+    "shadow": "0.65",
+    "material": "",
+    "exposure": "1.0",
+    "msaa": "4",
+    "fresnel": "exact",
+    "multiscatter": "off",
+}
 #: video frames: no multisampling (bench/ar_frames.py: msaa 4 costs about 3x per frame on llvmpipe).
 VIDEO_MSAA = "0"
-SHADOW_EXTENT = 1.6       # half-size of the shadow quad, in units of the fitted object's radius
+SHADOW_EXTENT = 1.6  # half-size of the shadow quad, in units of the fitted object's radius
 #: the shadow quad's corners (x, z) in units of SHADOW_EXTENT, in triangle-strip order
 QUAD_CORNERS = ((-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0))
 
@@ -70,6 +84,7 @@ def _floats(text: str, count: tuple, what: str) -> tuple | None:
 
 def parse_options(options: dict | None) -> AROptions:
     from ..capabilities import COMPILER_OPTIONS
+
     options = {k: str(v) for k, v in (options or {}).items() if k not in COMPILER_OPTIONS}
     unknown = sorted(set(options) - set(DEFAULTS))
     if unknown:
@@ -83,9 +98,22 @@ def parse_options(options: dict | None) -> AROptions:
         raise AROptionError(f"ar: {exc}") from None
     if length <= 0 or scale <= 0 or not 1 < fov < 179:
         raise AROptionError("ar: marker_length and scale must be positive and fov within (1, 179) degrees")
-    return AROptions(length, marker_id, scale, _floats(o["intrinsics"], (4,), "intrinsics"), fov,
-                     _floats(o["dist"], (4, 5, 8), "dist"), o["mesh"], o["tier"], o["env"], shadow, o["material"],
-                     exposure, msaa, {"fresnel": o["fresnel"], "multiscatter": o["multiscatter"]})
+    return AROptions(
+        length,
+        marker_id,
+        scale,
+        _floats(o["intrinsics"], (4,), "intrinsics"),
+        fov,
+        _floats(o["dist"], (4, 5, 8), "dist"),
+        o["mesh"],
+        o["tier"],
+        o["env"],
+        shadow,
+        o["material"],
+        exposure,
+        msaa,
+        {"fresnel": o["fresnel"], "multiscatter": o["multiscatter"]},
+    )
 
 
 def camera_matrix(opts: AROptions, width: int, height: int) -> np.ndarray:
@@ -111,10 +139,12 @@ def pick_material(ir: dict, which: str) -> dict:
 
 # -------------------------------------------------------------------- shadow
 
+
 def footprint(mesh, extent: float = SHADOW_EXTENT, size: int = 128, height: float = 0.25) -> np.ndarray:
     """Soft contact-shadow opacity on the ground (rows: z from -extent, columns: x), in [0, 1].
     Triangles lower than `height` (fitted units) are rasterised from above and blurred twice."""
     import cv2
+
     tri = mesh.positions[mesh.indices]
     low = tri[:, :, 1].min(1) < height
     xz = (tri[low][:, :, [0, 2]] / extent * 0.5 + 0.5) * size
@@ -141,7 +171,9 @@ class ShadowOverlay:
 
     def __call__(self, renderer, scene) -> None:
         import moderngl
+
         from cnlmc.backends.preview import gl
+
         prog, vao = shadow_quad()
         shadow_texture(self.mesh).use(0)
         gl.set_uniform(prog, "pv_shadow", 0)
@@ -153,13 +185,14 @@ class ShadowOverlay:
         vao.render(moderngl.TRIANGLE_STRIP)
 
 
-_FOOTPRINTS: dict = {}      # id(mesh) -> (mesh, texture): the mesh is kept, so its id stays its own
-_QUAD: list = []            # [(program, vertex array)] once made
+_FOOTPRINTS: dict = {}  # id(mesh) -> (mesh, texture): the mesh is kept, so its id stays its own
+_QUAD: list = []  # [(program, vertex array)] once made
 
 
 def shadow_texture(mesh):
     """The mesh's footprint as a texture, made once per mesh (the video form draws it every frame)."""
     from cnlmc.backends.preview import gl
+
     if id(mesh) not in _FOOTPRINTS:
         _FOOTPRINTS[id(mesh)] = (mesh, gl.float_texture(footprint(mesh), mipmaps=False, repeat=(False, False)))
     return _FOOTPRINTS[id(mesh)][1]
@@ -168,6 +201,7 @@ def shadow_texture(mesh):
 def shadow_quad():
     """(program, vertex array) of the ground quad, made once."""
     from cnlmc.backends.preview import gl
+
     if not _QUAD:
         shaders = Path(__file__).parent / "shaders"
         prog = gl.program((shaders / "ground.vert").read_text(), (shaders / "shadow.frag").read_text())
@@ -178,12 +212,13 @@ def shadow_quad():
 
 # ----------------------------------------------------------------- compositing
 
+
 @dataclass
 class ARFrame:
-    image: np.ndarray          # BGR uint8, the photo with the object
+    image: np.ndarray  # BGR uint8, the photo with the object
     pose: Pose
-    rgba: np.ndarray           # the rendered layer (RGBA, sRGB), top row first
-    model: np.ndarray          # object (fitted, y-up) -> world scale matrix
+    rgba: np.ndarray  # the rendered layer (RGBA, sRGB), top row first
+    model: np.ndarray  # object (fitted, y-up) -> world scale matrix
     view_projection: np.ndarray
 
 
@@ -192,13 +227,15 @@ _MESH_CACHE: dict = {}
 
 def fitted_mesh(name: str):
     from cnlmc.backends.preview.meshes import fit, mesh_by_name
+
     if name not in _MESH_CACHE:
         _MESH_CACHE[name] = fit(mesh_by_name(name), stand=True)
     return _MESH_CACHE[name]
 
 
-def composite(photo: np.ndarray, material: dict, options: dict | AROptions | None = None,
-              source: str = "the image") -> ARFrame:
+def composite(
+    photo: np.ndarray, material: dict, options: dict | AROptions | None = None, source: str = "the image"
+) -> ARFrame:
     """Detect the marker, estimate the pose, render the object on it and composite (BGR in, BGR out)."""
     opts = options if isinstance(options, AROptions) else parse_options(options)
     height, width = photo.shape[:2]
@@ -214,17 +251,23 @@ def render_layer(pose: Pose, width: int, height: int, material: dict, opts: AROp
     from cnlmc.backends.preview.camera import Camera
     from cnlmc.backends.preview.environment import environment
     from cnlmc.backends.preview.render import Renderer, Scene
+
     K = pose.K
     distance = float(np.linalg.norm(pose.tvec))
     s = opts.marker_length * opts.scale / 2
     model = np.diag([s, s, s, 1.0])
-    camera = Camera((0, 0, 0), (0, 0, -1), view_override=gl_view(pose),
-                    projection_override=gl_projection(K, width, height, distance * 0.01, distance * 10 + 10 * s))
+    camera = Camera(
+        (0, 0, 0),
+        (0, 0, -1),
+        view_override=gl_view(pose),
+        projection_override=gl_projection(K, width, height, distance * 0.01, distance * 10 + 10 * s),
+    )
     mesh = fitted_mesh(opts.mesh)
     scene = Scene(mesh, camera, environment(opts.env), background="transparent", exposure=opts.exposure)
     overlay = ShadowOverlay(mesh, model, opts.shadow) if opts.shadow > 0 else None
-    frame = Renderer(width, height, msaa=opts.msaa).render(material, tier=opts.tier, glsl_options=opts.glsl,
-                                                            scene=scene, model=model, overlay=overlay)
+    frame = Renderer(width, height, msaa=opts.msaa).render(
+        material, tier=opts.tier, glsl_options=opts.glsl, scene=scene, model=model, overlay=overlay
+    )
     return frame.rgba, model, camera.view_projection
 
 
@@ -237,13 +280,14 @@ def over_photo(rgba: np.ndarray, photo_bgr: np.ndarray) -> np.ndarray:
         return out
     box = (slice(rows[0], rows[-1] + 1), slice(cols[0], cols[-1] + 1))
     a = rgba[box][..., 3:4].astype(np.float32) / 255.0
-    layer = rgba[box][..., 2::-1].astype(np.float32)          # RGB -> BGR
+    layer = rgba[box][..., 2::-1].astype(np.float32)  # RGB -> BGR
     out[box] = np.round(layer * a + photo_bgr[box].astype(np.float32) * (1 - a)).astype(np.uint8)
     return out
 
 
 def read_photo(path) -> np.ndarray:
     import cv2
+
     path = Path(path)
     if not path.exists():
         raise PhotoUnreadable(f"photo {path} does not exist")
@@ -279,6 +323,7 @@ def write_image_atomic(path: Path, image) -> None:
     import cv2
 
     from cnlmc.output import write_atomic
+
     ok, data = cv2.imencode(path.suffix or ".png", image)
     if not ok:
         raise AROptionError(f"cannot encode an image as '{path.suffix}': use .png or .jpg")
@@ -289,6 +334,7 @@ def ar_video(video_path, ir: dict, out_path, options: dict | None = None, max_fr
     """Frames in, frames out (OpenCV VideoCapture / VideoWriter, mp4v). Frames without a marker
     pass through unchanged and are counted in `missed`; none found at all raises NoMarkerFound."""
     import cv2
+
     opts = parse_options({"msaa": VIDEO_MSAA, **(options or {})})
     material = pick_material(ir, opts.material)
     capture = cv2.VideoCapture(str(video_path))
@@ -312,8 +358,9 @@ def ar_video(video_path, ir: dict, out_path, options: dict | None = None, max_fr
                 missed += 1
             if writer is None:
                 out_path.parent.mkdir(parents=True, exist_ok=True)
-                writer = cv2.VideoWriter(str(partial), cv2.VideoWriter_fourcc(*"mp4v"), fps,
-                                         (frame.shape[1], frame.shape[0]))
+                writer = cv2.VideoWriter(
+                    str(partial), cv2.VideoWriter_fourcc(*"mp4v"), fps, (frame.shape[1], frame.shape[0])
+                )
             writer.write(frame)
     finally:
         capture.release()
@@ -329,5 +376,16 @@ def ar_video(video_path, ir: dict, out_path, options: dict | None = None, max_fr
     return ARReport(out_path, count, poses, missed)
 
 
-__all__ = ["write_marker", "ar_command", "ar_video", "composite", "parse_options", "ARError", "NoMarkerFound",
-           "PhotoUnreadable", "AROptionError", "ARReport", "ARFrame"]
+__all__ = [
+    "write_marker",
+    "ar_command",
+    "ar_video",
+    "composite",
+    "parse_options",
+    "ARError",
+    "NoMarkerFound",
+    "PhotoUnreadable",
+    "AROptionError",
+    "ARReport",
+    "ARFrame",
+]

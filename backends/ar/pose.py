@@ -4,6 +4,7 @@ Marker frame: origin at the marker centre, x to the right, y up the printed mark
 the paper. The world of the preview scene is y-up; `MARKER_FROM_WORLD` stands it on the
 marker: world (x, y, z) -> marker (x, -z, y).
 """
+
 from __future__ import annotations
 
 import math
@@ -21,7 +22,7 @@ CV_TO_GL = np.diag([1.0, -1.0, -1.0, 1.0])
 @dataclass
 class Detection:
     marker_id: int
-    corners: np.ndarray       # (4, 2) pixel coordinates: top-left, top-right, bottom-right, bottom-left
+    corners: np.ndarray  # (4, 2) pixel coordinates: top-left, top-right, bottom-right, bottom-left
 
 
 @dataclass
@@ -35,6 +36,7 @@ class Pose:
     @property
     def rotation(self) -> np.ndarray:
         import cv2
+
         return cv2.Rodrigues(self.rvec)[0]
 
     def camera_from_marker(self) -> np.ndarray:
@@ -44,8 +46,10 @@ class Pose:
 
     def project(self, points_marker: np.ndarray) -> np.ndarray:
         import cv2
-        pts, _ = cv2.projectPoints(np.ascontiguousarray(points_marker, np.float64).reshape(-1, 3), self.rvec, self.tvec,
-                                   self.K, self.dist)
+
+        pts, _ = cv2.projectPoints(
+            np.ascontiguousarray(points_marker, np.float64).reshape(-1, 3), self.rvec, self.tvec, self.K, self.dist
+        )
         return pts.reshape(-1, 2)
 
 
@@ -63,6 +67,7 @@ def marker_object_points(length: float) -> np.ndarray:
 
 def detect(image: np.ndarray, name: str = DICTIONARY_NAME) -> list[Detection]:
     import cv2
+
     grey = image if image.ndim == 2 else cv2.cvtColor(image, cv2.COLOR_BGR2GRAY)
     params = cv2.aruco.DetectorParameters()
     params.cornerRefinementMethod = cv2.aruco.CORNER_REFINE_SUBPIX
@@ -78,8 +83,7 @@ def find_marker(image: np.ndarray, marker_id: int | None = None, source: str = "
         found = [d for d in found if d.marker_id == marker_id]
     if not found:
         which = f"marker {marker_id}" if marker_id is not None else "marker"
-        raise NoMarkerFound(f"no {which} found in {source} (ArUco {DICTIONARY_NAME}; "
-                            "print one with `write_marker`)")
+        raise NoMarkerFound(f"no {which} found in {source} (ArUco {DICTIONARY_NAME}; print one with `write_marker`)")
     return max(found, key=lambda d: abs(_area(d.corners)))
 
 
@@ -90,9 +94,11 @@ def _area(c: np.ndarray) -> float:
 
 def estimate_pose(detection: Detection, marker_length: float, K: np.ndarray, dist=None) -> Pose:
     import cv2
+
     dist = np.zeros(5) if dist is None else np.asarray(dist, np.float64)
-    ok, rvec, tvec = cv2.solvePnP(marker_object_points(marker_length), detection.corners, K, dist,
-                                  flags=cv2.SOLVEPNP_IPPE_SQUARE)
+    ok, rvec, tvec = cv2.solvePnP(
+        marker_object_points(marker_length), detection.corners, K, dist, flags=cv2.SOLVEPNP_IPPE_SQUARE
+    )
     if not ok:
         raise NoMarkerFound("the marker was found but its pose could not be estimated")
     return Pose(rvec, tvec, K, dist, marker_length)

@@ -1,4 +1,5 @@
 """One material -> the library form, the standalone pair and the JSON sidecar."""
+
 from __future__ import annotations
 
 import json
@@ -44,12 +45,19 @@ def model_summary(plan: Plan) -> str:
 
 def library_context(material: dict, plan: Plan, options: GlslOptions) -> dict:
     profile = PROFILES[options.profile]
-    return {"name": material["name"], "phrase": material.get("phrase", ""),
-            "model_summary": model_summary(plan), "options": options.as_dict(), "plan": plan,
-            "uniforms": plan.uniforms, "samplers": plan.samplers,
-            "precision": profile["precision"], "initializers": profile["initializers"],
-            "snippets": [snippet(name) for name in plan.snippets],
-            "ms": multiscatter_tables() if plan.multiscatter else None}
+    return {
+        "name": material["name"],
+        "phrase": material.get("phrase", ""),
+        "model_summary": model_summary(plan),
+        "options": options.as_dict(),
+        "plan": plan,
+        "uniforms": plan.uniforms,
+        "samplers": plan.samplers,
+        "precision": profile["precision"],
+        "initializers": profile["initializers"],
+        "snippets": [snippet(name) for name in plan.snippets],
+        "ms": multiscatter_tables() if plan.multiscatter else None,
+    }
 
 
 def library_source(material: dict, options: GlslOptions) -> tuple[str, Plan]:
@@ -59,39 +67,59 @@ def library_source(material: dict, options: GlslOptions) -> tuple[str, Plan]:
     return render(template, **library_context(material, plan, options)), plan
 
 
-def standalone_sources(material: dict, library: str, options: GlslOptions,
-                       transmission: bool = False) -> tuple[str, str]:
+def standalone_sources(
+    material: dict, library: str, options: GlslOptions, transmission: bool = False
+) -> tuple[str, str]:
     profile = PROFILES[options.profile]
-    common = {"name": material["name"], "version": profile["version"], "precision": profile["precision"],
-              "initializers": profile["initializers"]}
-    frag = render("standalone.frag.j2", library=library, main_snippets=[snippet("srgb")],
-                  transmission=transmission, **common)
+    common = {
+        "name": material["name"],
+        "version": profile["version"],
+        "precision": profile["precision"],
+        "initializers": profile["initializers"],
+    }
+    frag = render(
+        "standalone.frag.j2", library=library, main_snippets=[snippet("srgb")], transmission=transmission, **common
+    )
     return frag, render("standalone.vert.j2", **common)
 
 
-BTDF_ENTRY_POINTS = ["vec3 cnlm_btdf(vec3 n, vec3 t, vec3 v, vec3 l, vec2 uv)",
-                     "vec3 cnlm_btdf(vec3 n, vec3 v, vec3 l, vec2 uv)"]
-BTDF_RETURNS = ("BTDF f_t for v and l on opposite sides of n (outside = the side n points to, index 1; "
-                "inside index cnlm_ior), radiance transport (includes the eta_v^2 factor: f_t(v, l)/eta_v^2 "
-                "is symmetric), linear Rec.709 RGB tinted by the base colour, not multiplied by |cos(theta_l)|")
+BTDF_ENTRY_POINTS = [
+    "vec3 cnlm_btdf(vec3 n, vec3 t, vec3 v, vec3 l, vec2 uv)",
+    "vec3 cnlm_btdf(vec3 n, vec3 v, vec3 l, vec2 uv)",
+]
+BTDF_RETURNS = (
+    "BTDF f_t for v and l on opposite sides of n (outside = the side n points to, index 1; "
+    "inside index cnlm_ior), radiance transport (includes the eta_v^2 factor: f_t(v, l)/eta_v^2 "
+    "is symmetric), linear Rec.709 RGB tinted by the base colour, not multiplied by |cos(theta_l)|"
+)
 
 
 def sidecar(material: dict, plan: Plan, options: GlslOptions, files: list[str]) -> dict:
     maps = material.get("maps", {})
     extra = {"btdf_entry_points": BTDF_ENTRY_POINTS, "btdf_returns": BTDF_RETURNS} if plan.transmission else {}
     return {
-        "cnlmc_glsl": 1, "material": material["name"], "phrase": material.get("phrase", ""),
-        "model": material["model"], "options": options.as_dict(), "files": files,
-        "entry_points": ["vec3 cnlm_bsdf(vec3 n, vec3 t, vec3 v, vec3 l, vec2 uv)",
-                         "vec3 cnlm_bsdf(vec3 n, vec3 v, vec3 l, vec2 uv)"],
+        "cnlmc_glsl": 1,
+        "material": material["name"],
+        "phrase": material.get("phrase", ""),
+        "model": material["model"],
+        "options": options.as_dict(),
+        "files": files,
+        "entry_points": [
+            "vec3 cnlm_bsdf(vec3 n, vec3 t, vec3 v, vec3 l, vec2 uv)",
+            "vec3 cnlm_bsdf(vec3 n, vec3 v, vec3 l, vec2 uv)",
+        ],
         "returns": "BRDF f, linear Rec.709 RGB, not multiplied by cos(theta_l)",
         **extra,
         "uniforms": [{"name": u.name, "type": u.type, "value": u.value} for u in plan.uniforms],
-        "samplers": [{"name": s.name, "role": s.role, "colour_space": s.colour_space, "doc": s.doc,
-                      "map": maps.get(s.role)} for s in plan.samplers],
-        "standalone": {"output": "sRGB-encoded colour",
-                       "attributes": STANDALONE_ATTRIBUTES,
-                       "uniforms": {k: {"type": t, "doc": d} for k, (t, d) in STANDALONE_UNIFORMS.items()}},
+        "samplers": [
+            {"name": s.name, "role": s.role, "colour_space": s.colour_space, "doc": s.doc, "map": maps.get(s.role)}
+            for s in plan.samplers
+        ],
+        "standalone": {
+            "output": "sRGB-encoded colour",
+            "attributes": STANDALONE_ATTRIBUTES,
+            "uniforms": {k: {"type": t, "doc": d} for k, (t, d) in STANDALONE_UNIFORMS.items()},
+        },
     }
 
 

@@ -4,14 +4,14 @@ Everything model-specific is a table here; the templates only arrange what the p
 Values are taken with the reference library's own helpers (`cnlmc.bsdf`), so the shader
 and the ground truth share one reading of the IR (α clamping, coat α, F_avg).
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from cnlmc.bsdf import f0_conductor, fresnel_average, material_alpha
-from cnlmc.bsdf import coat_alpha, conductor_fresnel
+from cnlmc.bsdf import coat_alpha, conductor_fresnel, f0_conductor, fresnel_average, material_alpha
 
 from .options import GlslOptions
 
@@ -33,19 +33,32 @@ FRESNEL_SNIPPETS = {
     ("glass", "exact"): ("fresnel_dielectric",),
     ("glass", "schlick"): ("fresnel_schlick",),
 }
-DISTRIBUTION_SNIPPETS = {("ggx", False): ("ggx_isotropic",), ("ggx", True): ("ggx_aniso_terms", "ggx_anisotropic"),
-                         ("ward", True): ("ward",), ("ward", False): ("ward",)}
+DISTRIBUTION_SNIPPETS = {
+    ("ggx", False): ("ggx_isotropic",),
+    ("ggx", True): ("ggx_aniso_terms", "ggx_anisotropic"),
+    ("ward", True): ("ward",),
+    ("ward", False): ("ward",),
+}
 DIFFUSE_SNIPPETS = {"lambert": ("diffuse_lambert",), "oren_nayar": ("diffuse_oren_nayar",), None: ()}
 ALPHA_SNIPPETS = {"squared": ("alpha_squared",), "linear": ("alpha_linear",)}
 #: Sampler role -> (GLSL name, colour space / encoding, what the shader reads).
 SAMPLER_ROLES = {
-    "base_color": ("cnlm_map_base_color", "srgb",
-                   "RGB albedo/tint; upload as an sRGB texture (GL_SRGB8[_ALPHA8]) so texture() returns linear"),
-    "normal": ("cnlm_map_normal", "linear",
-               "tangent-space normal, OpenGL convention (+Y up the image), stored as n * 0.5 + 0.5"),
+    "base_color": (
+        "cnlm_map_base_color",
+        "srgb",
+        "RGB albedo/tint; upload as an sRGB texture (GL_SRGB8[_ALPHA8]) so texture() returns linear",
+    ),
+    "normal": (
+        "cnlm_map_normal",
+        "linear",
+        "tangent-space normal, OpenGL convention (+Y up the image), stored as n * 0.5 + 0.5",
+    ),
     "roughness": ("cnlm_map_roughness", "linear", "perceptual roughness in the red channel"),
-    "mask": ("cnlm_map_mask", "linear",
-             "coverage in the red channel: blends the surface towards a Lambert lobe of the base colour"),
+    "mask": (
+        "cnlm_map_mask",
+        "linear",
+        "coverage in the red channel: blends the surface towards a Lambert lobe of the base colour",
+    ),
 }
 #: Roles the shader reads (others go through the capability table).
 SHADER_ROLES = tuple(SAMPLER_ROLES)
@@ -122,16 +135,18 @@ def make_plan(material: dict, options: GlslOptions) -> Plan:
     model, params = material["model"], material["params"]
     base = model["base"]
     coat = has_coat(material)
-    plan = Plan(base=base,
-                distribution=(model.get("distribution") or "ggx") if base in MICROFACET_BASES else None,
-                anisotropic=bool(model.get("anisotropic")) and base in MICROFACET_BASES,
-                diffuse=diffuse_kind(material),
-                fresnel=EFFECTIVE_FRESNEL[base][options.fresnel],
-                coat=coat,
-                coat_color=coat and any(abs(c - 1.0) > 1e-6 for c in _rgb(params["coat"].get("color"))),
-                multiscatter=options.multiscatter and base == "conductor",
-                maps=tuple(role for role in SHADER_ROLES if role in material.get("maps", {})),
-                alpha_convention=params.get("alpha_convention", "squared"))
+    plan = Plan(
+        base=base,
+        distribution=(model.get("distribution") or "ggx") if base in MICROFACET_BASES else None,
+        anisotropic=bool(model.get("anisotropic")) and base in MICROFACET_BASES,
+        diffuse=diffuse_kind(material),
+        fresnel=EFFECTIVE_FRESNEL[base][options.fresnel],
+        coat=coat,
+        coat_color=coat and any(abs(c - 1.0) > 1e-6 for c in _rgb(params["coat"].get("color"))),
+        multiscatter=options.multiscatter and base == "conductor",
+        maps=tuple(role for role in SHADER_ROLES if role in material.get("maps", {})),
+        alpha_convention=params.get("alpha_convention", "squared"),
+    )
     plan.snippets = snippet_names(plan)
     plan.uniforms = uniforms_for(plan, material)
     plan.samplers = [Sampler(SAMPLER_ROLES[r][0], r, SAMPLER_ROLES[r][1], SAMPLER_ROLES[r][2]) for r in plan.maps]
@@ -187,49 +202,79 @@ def _coat_params(material: dict) -> dict:
 
 #: uniform name -> (type, when it is needed, its value). Read by `uniforms_for`.
 UNIFORM_TABLE = {
-    "cnlm_base_color": ("vec3", lambda p: "base_color" not in p.maps,
-                        lambda m, p: _rgb(m["params"].get("base_color"))),
-    "cnlm_alpha": (None, lambda p: p.microfacet and "roughness" not in p.maps,  # float or vec2
-                   lambda m, p: _alpha_value(p, m)),
-    "cnlm_anisotropy": ("float", lambda p: p.anisotropic and "roughness" in p.maps,
-                        lambda m, p: float(m["params"].get("anisotropy", 0.0))),
-    "cnlm_anisotropy_rotation": ("float", lambda p: p.anisotropic,
-                                 lambda m, p: float(m["params"].get("anisotropy_rotation") or 0.0)),
-    "cnlm_eta": ("vec3", lambda p: p.base == "conductor" and p.fresnel == "exact",
-                 lambda m, p: _rgb(m["params"]["eta"])),
-    "cnlm_k": ("vec3", lambda p: p.base == "conductor" and p.fresnel == "exact",
-               lambda m, p: _rgb(m["params"]["k"])),
-    "cnlm_f0": ("vec3", lambda p: p.base == "conductor" and p.fresnel in ("schlick", "f82"),
-                lambda m, p: _f0(m["params"])),
-    "cnlm_f82": ("vec3", lambda p: p.base == "conductor" and p.fresnel == "f82",
-                 lambda m, p: _rgb(m["params"]["f82"])),
-    "cnlm_ior": ("float", lambda p: p.base in ("dielectric", "glass"),
-                 lambda m, p: float(m["params"].get("ior", 1.5))),
-    "cnlm_diffuse_roughness": ("float", lambda p: p.diffuse == "oren_nayar",
-                               lambda m, p: float(m["params"].get("diffuse_roughness") or 0.0)),
+    "cnlm_base_color": ("vec3", lambda p: "base_color" not in p.maps, lambda m, p: _rgb(m["params"].get("base_color"))),
+    "cnlm_alpha": (
+        None,
+        lambda p: p.microfacet and "roughness" not in p.maps,  # float or vec2
+        lambda m, p: _alpha_value(p, m),
+    ),
+    "cnlm_anisotropy": (
+        "float",
+        lambda p: p.anisotropic and "roughness" in p.maps,
+        lambda m, p: float(m["params"].get("anisotropy", 0.0)),
+    ),
+    "cnlm_anisotropy_rotation": (
+        "float",
+        lambda p: p.anisotropic,
+        lambda m, p: float(m["params"].get("anisotropy_rotation") or 0.0),
+    ),
+    "cnlm_eta": (
+        "vec3",
+        lambda p: p.base == "conductor" and p.fresnel == "exact",
+        lambda m, p: _rgb(m["params"]["eta"]),
+    ),
+    "cnlm_k": ("vec3", lambda p: p.base == "conductor" and p.fresnel == "exact", lambda m, p: _rgb(m["params"]["k"])),
+    "cnlm_f0": (
+        "vec3",
+        lambda p: p.base == "conductor" and p.fresnel in ("schlick", "f82"),
+        lambda m, p: _f0(m["params"]),
+    ),
+    "cnlm_f82": ("vec3", lambda p: p.base == "conductor" and p.fresnel == "f82", lambda m, p: _rgb(m["params"]["f82"])),
+    "cnlm_ior": ("float", lambda p: p.base in ("dielectric", "glass"), lambda m, p: float(m["params"].get("ior", 1.5))),
+    "cnlm_diffuse_roughness": (
+        "float",
+        lambda p: p.diffuse == "oren_nayar",
+        lambda m, p: float(m["params"].get("diffuse_roughness") or 0.0),
+    ),
     "cnlm_coat_ior": ("float", lambda p: p.coat, lambda m, p: float(_coat_params(m).get("ior", 1.5))),
-    "cnlm_coat_alpha": ("float", lambda p: p.coat,
-                        lambda m, p: float(coat_alpha(_coat_params(m), m["params"].get("alpha_convention",
-                                                                                          "squared"))[0])),
+    "cnlm_coat_alpha": (
+        "float",
+        lambda p: p.coat,
+        lambda m, p: float(coat_alpha(_coat_params(m), m["params"].get("alpha_convention", "squared"))[0]),
+    ),
     "cnlm_coat_color": ("vec3", lambda p: p.coat_color, lambda m, p: _rgb(_coat_params(m).get("color"))),
-    "cnlm_coat_thickness": ("float", lambda p: p.coat_color,
-                            lambda m, p: float(_coat_params(m).get("thickness") or 0.0)),
+    "cnlm_coat_thickness": (
+        "float",
+        lambda p: p.coat_color,
+        lambda m, p: float(_coat_params(m).get("thickness") or 0.0),
+    ),
     "cnlm_ms_favg": ("vec3", lambda p: p.multiscatter, lambda m, p: _multiscatter_favg(m, p.fresnel)),
 }
 
 
 def uniforms_for(plan: Plan, material: dict) -> list[Uniform]:
     """The uniforms the plan's code reads, with the material's values."""
-    return [Uniform(name, gl_type or plan.alpha_type, value(material, plan))
-            for name, (gl_type, needed, value) in UNIFORM_TABLE.items() if needed(plan)]
+    return [
+        Uniform(name, gl_type or plan.alpha_type, value(material, plan))
+        for name, (gl_type, needed, value) in UNIFORM_TABLE.items()
+        if needed(plan)
+    ]
 
 
 # ---- the all-features ("uber") form: option specialize=off ----
 
 #: Parameters an uber shader needs even when the material does not use them (neutral values).
-UBER_PARAM_DEFAULTS = {"eta": [1.5, 1.5, 1.5], "k": [0.0, 0.0, 0.0], "f0": [0.04, 0.04, 0.04],
-                       "f82": [0.04, 0.04, 0.04], "ior": 1.5, "diffuse_roughness": 0.0,
-                       "anisotropy": 0.0, "anisotropy_rotation": 0.0, "base_color": [0.8, 0.8, 0.8]}
+UBER_PARAM_DEFAULTS = {
+    "eta": [1.5, 1.5, 1.5],
+    "k": [0.0, 0.0, 0.0],
+    "f0": [0.04, 0.04, 0.04],
+    "f82": [0.04, 0.04, 0.04],
+    "ior": 1.5,
+    "diffuse_roughness": 0.0,
+    "anisotropy": 0.0,
+    "anisotropy_rotation": 0.0,
+    "base_color": [0.8, 0.8, 0.8],
+}
 UBER_COAT_DEFAULT = {"ior": 1.5, "roughness": 0.0, "color": [1.0, 1.0, 1.0], "thickness": 0.0}
 #: selector uniform -> plan attribute -> integer code read by templates/uber.glsl.j2.
 UBER_SELECTORS = {
@@ -242,9 +287,25 @@ UBER_SELECTORS = {
     "cnlm_use_coat": ("coat", {False: 0, True: 1}),
     "cnlm_use_multiscatter": ("multiscatter", {False: 0, True: 1}),
 }
-UBER_SNIPPETS = ("common", "any_tangent", "frame", "rotate_tangent", "fresnel_dielectric",
-                 "fresnel_conductor", "fresnel_schlick", "fresnel_f82", "ggx_isotropic", "ggx_aniso_terms", "ggx_anisotropic",
-                 "ward", "diffuse_lambert", "diffuse_oren_nayar", "coat", "coat_absorption", "normal_map")
+UBER_SNIPPETS = (
+    "common",
+    "any_tangent",
+    "frame",
+    "rotate_tangent",
+    "fresnel_dielectric",
+    "fresnel_conductor",
+    "fresnel_schlick",
+    "fresnel_f82",
+    "ggx_isotropic",
+    "ggx_aniso_terms",
+    "ggx_anisotropic",
+    "ward",
+    "diffuse_lambert",
+    "diffuse_oren_nayar",
+    "coat",
+    "coat_absorption",
+    "normal_map",
+)
 
 
 def complete_material(material: dict) -> dict:
@@ -257,16 +318,27 @@ def complete_material(material: dict) -> dict:
 def make_uber_plan(material: dict, options: GlslOptions) -> Plan:
     """Every branch compiled in: the material's choices become integer uniforms."""
     plan = make_plan(material, options)
-    every = Plan(base="conductor", distribution="ggx", anisotropic=True, diffuse="oren_nayar",
-                 fresnel=options.fresnel, coat=True, coat_color=True, multiscatter=True, maps=SHADER_ROLES,
-                 alpha_convention=plan.alpha_convention, snippets=list(UBER_SNIPPETS))
-    selectors = [Uniform(name, "int", codes[getattr(plan, attribute)])
-                 for name, (attribute, codes) in UBER_SELECTORS.items()]
+    every = Plan(
+        base="conductor",
+        distribution="ggx",
+        anisotropic=True,
+        diffuse="oren_nayar",
+        fresnel=options.fresnel,
+        coat=True,
+        coat_color=True,
+        multiscatter=True,
+        maps=SHADER_ROLES,
+        alpha_convention=plan.alpha_convention,
+        snippets=list(UBER_SNIPPETS),
+    )
+    selectors = [
+        Uniform(name, "int", codes[getattr(plan, attribute)]) for name, (attribute, codes) in UBER_SELECTORS.items()
+    ]
     map_flags = [Uniform(f"cnlm_use_map_{role}", "int", int(role in plan.maps)) for role in SHADER_ROLES]
     full = complete_material(material)
-    params = [Uniform(name, gl_type or "vec2", value(full, every))
-              for name, (gl_type, _, value) in UNIFORM_TABLE.items()]
+    params = [
+        Uniform(name, gl_type or "vec2", value(full, every)) for name, (gl_type, _, value) in UNIFORM_TABLE.items()
+    ]
     every.uniforms = selectors + map_flags + params
-    every.samplers = [Sampler(SAMPLER_ROLES[r][0], r, SAMPLER_ROLES[r][1], SAMPLER_ROLES[r][2])
-                      for r in SHADER_ROLES]
+    every.samplers = [Sampler(SAMPLER_ROLES[r][0], r, SAMPLER_ROLES[r][1], SAMPLER_ROLES[r][2]) for r in SHADER_ROLES]
     return every

@@ -1,8 +1,9 @@
 """Rendering plans into GLSL text with jinja2 (templates/*.j2, snippets/*.glsl)."""
+
 from __future__ import annotations
 
 import re
-from functools import lru_cache
+from functools import cache, lru_cache
 from importlib import resources
 
 import jinja2
@@ -11,11 +12,13 @@ from cnlmc.bsdf.multiscatter import TABLE_SIZE, albedo_table, average_albedo_tab
 
 #: profile -> how its sources start and whether uniforms may carry initialisers.
 PROFILES = {
-    "330": {"version": "#version 330 core", "precision": (), "initializers": True,
-            "glsl_stage_flag": "330"},
-    "es300": {"version": "#version 300 es",
-              "precision": ("precision highp float;", "precision highp int;"),
-              "initializers": False, "glsl_stage_flag": "es300"},
+    "330": {"version": "#version 330 core", "precision": (), "initializers": True, "glsl_stage_flag": "330"},
+    "es300": {
+        "version": "#version 300 es",
+        "precision": ("precision highp float;", "precision highp int;"),
+        "initializers": False,
+        "glsl_stage_flag": "es300",
+    },
 }
 
 _UNSAFE_IN_COMMENT = re.compile(r"[^\x20-\x7e]")
@@ -48,15 +51,20 @@ def glsl_value(value, gl_type: str) -> str:
 
 @lru_cache(maxsize=1)
 def environment() -> jinja2.Environment:
-    env = jinja2.Environment(loader=jinja2.PackageLoader("cnlmc.backends.glsl", "templates"),
-                             undefined=jinja2.StrictUndefined, keep_trailing_newline=True,
-                             trim_blocks=True, lstrip_blocks=True, autoescape=False)
+    env = jinja2.Environment(
+        loader=jinja2.PackageLoader("cnlmc.backends.glsl", "templates"),
+        undefined=jinja2.StrictUndefined,
+        keep_trailing_newline=True,
+        trim_blocks=True,
+        lstrip_blocks=True,
+        autoescape=False,
+    )
     env.filters["comment"] = comment_text
     env.filters["glsl_value"] = glsl_value
     return env
 
 
-@lru_cache(maxsize=None)
+@cache
 def snippet(name: str) -> str:
     return resources.files("cnlmc.backends.glsl").joinpath("snippets", f"{name}.glsl").read_text("utf-8")
 
@@ -64,8 +72,8 @@ def snippet(name: str) -> str:
 @lru_cache(maxsize=1)
 def multiscatter_tables() -> dict:
     """The reference tables as missing energy 1 − E(μ, α) and 1 − E_avg(α), 9-digit literals."""
-    fmt = lambda v: format(float(v), ".9g")  # noqa: E731  (9 digits round-trip float32)
-    fix = lambda s: s if any(c in s for c in ".e") else s + ".0"  # noqa: E731
+    fmt = lambda v: format(float(v), ".9g")
+    fix = lambda s: s if any(c in s for c in ".e") else s + ".0"
     rows = [[fix(fmt(v)) for v in row] for row in 1.0 - albedo_table()]
     return {"size": TABLE_SIZE, "table": rows, "average": [fix(fmt(v)) for v in 1.0 - average_albedo_table()]}
 

@@ -1,9 +1,10 @@
 """Baking the IR `maps` dict: role -> {"graph", "output", "params", "seed"} -> arrays."""
+
 from __future__ import annotations
 
 import json
+from collections.abc import Callable
 from numbers import Integral
-from typing import Callable
 
 import numpy as np
 
@@ -59,8 +60,13 @@ def start_evaluation(key: tuple, material: dict, size: int, seed: int, on_node) 
     return Evaluation(graph, grid, resolve_params(graph, json.loads(params)), resolve_inputs(graph, material), on_node)
 
 
-def bake(map_refs: dict, material_params: dict | None = None, size: int = 1024, seed: int = 0,
-         on_progress: OnProgress | None = None) -> dict[str, np.ndarray]:
+def bake(
+    map_refs: dict,
+    material_params: dict | None = None,
+    size: int = 1024,
+    seed: int = 0,
+    on_progress: OnProgress | None = None,
+) -> dict[str, np.ndarray]:
     """Evaluate every map reference; each graph (with its params and seed) runs once.
 
     Returns role -> float32 array: colour roles (H, W, 3) linear RGB, `normal` (H, W, 3)
@@ -77,6 +83,7 @@ def bake(map_refs: dict, material_params: dict | None = None, size: int = 1024, 
             done[0] += 1
             if on_progress:
                 on_progress(done[0], total, f"{graph_name}/{node}")
+
         return report
 
     arrays = {}

@@ -5,6 +5,7 @@ OpenBLAS worker threads spin-wait after each product, stealing the core the elem
 numpy work needs (a wood bake ran ~2x slower with the default thread count).  Found with
 ctypes in numpy's bundled library; when it cannot be found this is a no-op.
 """
+
 from __future__ import annotations
 
 import ctypes

@@ -1,4 +1,5 @@
 """Colour helpers: broadcasting scalar and RGB maps, sRGB transfer, HSV conversion."""
+
 from __future__ import annotations
 
 import numpy as np

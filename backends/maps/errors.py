@@ -1,4 +1,5 @@
 """Errors raised by the procedural map engine."""
+
 from __future__ import annotations
 
 import difflib

@@ -1,7 +1,8 @@
 """Evaluating a checked graph on a grid: parameters, material inputs, nodes on demand."""
+
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 
@@ -32,7 +33,9 @@ def resolve_params(graph: Graph, given: dict) -> dict[str, float]:
 def checked_param(graph: Graph, name: str, value) -> float:
     if name not in graph.params:
         known = ", ".join(graph.params) or "none"
-        raise MapError(f"graph '{graph.name}' has no parameter '{name}'{did_you_mean(name, graph.params)}; parameters: {known}")
+        raise MapError(
+            f"graph '{graph.name}' has no parameter '{name}'{did_you_mean(name, graph.params)}; parameters: {known}"
+        )
     spec = graph.params[name]
     if not spec.low <= float(value) <= spec.high:
         raise MapError(f"graph '{graph.name}': {name} = {value} is outside [{spec.low}, {spec.high}]")
@@ -77,7 +80,9 @@ class Evaluation:
     def output(self, role: str) -> np.ndarray:
         if role not in self.graph.outputs:
             outputs = ", ".join(self.graph.outputs)
-            raise MapError(f"graph '{self.graph.name}' has no output '{role}'{did_you_mean(role, self.graph.outputs)}; outputs: {outputs}")
+            raise MapError(
+                f"graph '{self.graph.name}' has no output '{role}'{did_you_mean(role, self.graph.outputs)}; outputs: {outputs}"
+            )
         node = self.graph.outputs[role]
         return finish(role, self.node(node), self.grid.size, f"{self.graph.name}.{role}")
 
@@ -85,6 +90,7 @@ class Evaluation:
 def nodes_needed(graph: Graph, roles) -> list[str]:
     """Nodes the given outputs depend on (for progress totals)."""
     from .schema import node_refs
+
     seen: list[str] = []
     stack = [graph.outputs[r] for r in roles if r in graph.outputs]
     while stack:
@@ -95,10 +101,22 @@ def nodes_needed(graph: Graph, roles) -> list[str]:
     return seen
 
 
-def evaluate(graph: Graph, size: int, seed: int = 0, params: dict | None = None,
-             material: dict | None = None, outputs=None, on_node: Progress | None = None) -> dict[str, np.ndarray]:
+def evaluate(
+    graph: Graph,
+    size: int,
+    seed: int = 0,
+    params: dict | None = None,
+    material: dict | None = None,
+    outputs=None,
+    on_node: Progress | None = None,
+) -> dict[str, np.ndarray]:
     """All (or the named) outputs of one graph, each finished for its role."""
-    evaluation = Evaluation(graph, Grid(size, derive_seed(seed, graph.name)), resolve_params(graph, params or {}),
-                            resolve_inputs(graph, material), on_node)
+    evaluation = Evaluation(
+        graph,
+        Grid(size, derive_seed(seed, graph.name)),
+        resolve_params(graph, params or {}),
+        resolve_inputs(graph, material),
+        on_node,
+    )
     with single_threaded_blas():
         return {role: evaluation.output(role) for role in (outputs or graph.outputs)}

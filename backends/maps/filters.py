@@ -1,5 +1,6 @@
 """Filters: blending, blurs (exact and periodic, through the FFT), tone and colour
 adjustments, domain warp, transform, threshold.  Inputs are float32 maps (H, W) or (H, W, 3)."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -213,5 +214,7 @@ def coverage_mask(grid: Grid, input=0.0, coverage=0.5, softness=0.05):
         return np.zeros_like(x)
     if coverage >= 1.0:
         return np.ones_like(x)
-    low, centre, high = np.quantile(x, [max(0.0, 1 - coverage - softness), 1 - coverage, min(1.0, 1 - coverage + softness)])
+    low, centre, high = np.quantile(
+        x, [max(0.0, 1 - coverage - softness), 1 - coverage, min(1.0, 1 - coverage + softness)]
+    )
     return threshold(grid, x, min(low, centre - 1e-6), max(high, centre + 1e-6))

@@ -1,4 +1,5 @@
 """Evaluation context: the pixel grid over the unit square and per-node seeds."""
+
 from __future__ import annotations
 
 import hashlib
@@ -24,7 +25,7 @@ class Grid:
     def rng(self, *salt) -> np.random.Generator:
         return np.random.default_rng(derive_seed(self.seed, *salt))
 
-    def with_seed(self, *salt) -> "Grid":
+    def with_seed(self, *salt) -> Grid:
         return Grid(self.size, derive_seed(self.seed, *salt))
 
     @cached_property

@@ -8,6 +8,7 @@ function of y, so over a regular grid they are matrix products:
 where W holds fade weights and D fade weights times the offset to the lattice point.
 Lattice indices wrap modulo the integer period, so every noise tiles over the unit square.
 """
+
 from __future__ import annotations
 
 from functools import lru_cache
@@ -125,8 +126,9 @@ def clip01(array: np.ndarray) -> np.ndarray:
     return np.clip(array, 0.0, 1.0, out=array)
 
 
-def fractal_sum(grid: Grid, basis: str, scales: list[int], weights: list[float], stretch: int, salt,
-                offset: float = 0.0) -> np.ndarray:
+def fractal_sum(
+    grid: Grid, basis: str, scales: list[int], weights: list[float], stretch: int, salt, offset: float = 0.0
+) -> np.ndarray:
     """offset + weighted sum of signed octaves (salts (salt, k)) as one matrix product."""
     layers = [(s, w, (salt, k)) for k, (s, w) in enumerate(zip(scales, weights))]
     return noise_sum(grid, basis, layers, stretch, offset)

@@ -1,8 +1,9 @@
 """Finding and loading graph files: the stdlib graphs ship in cnlmc.stdlib/graphs/*.toml."""
+
 from __future__ import annotations
 
 import tomllib
-from functools import lru_cache
+from functools import cache
 from importlib.resources import files
 from pathlib import Path
 
@@ -34,7 +35,7 @@ def graph_names() -> list[str]:
     return sorted(entry.name[:-5] for entry in graph_dir().iterdir() if entry.name.endswith(".toml"))
 
 
-@lru_cache(maxsize=None)
+@cache
 def load_graph(name: str) -> Graph:
     """A stdlib graph by name; unknown names suggest the closest one."""
     names = graph_names()

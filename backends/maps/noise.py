@@ -1,4 +1,5 @@
 """Noise generators for the node graph: single octaves, fBm and turbulence."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -59,9 +60,9 @@ def folded_lattice_sum(grid: Grid, basis: str, scales, weights, stretch: int) ->
     chunk = max(1, MIN_BLOCK_ELEMENTS // grid.size)
     with single_threaded_blas():  # many small products: waking BLAS threads costs more
         for r0 in range(0, grid.size, chunk):
-            block = total[r0:r0 + chunk]
+            block = total[r0 : r0 + chunk]
             for left, right, weight in pairs:
-                layer = left[r0:r0 + chunk] @ right
+                layer = left[r0 : r0 + chunk] @ right
                 np.abs(layer, out=layer)
                 block += np.minimum(layer, weight, out=layer)
     return total
@@ -80,6 +81,7 @@ def turbulence(grid: Grid, basis="perlin", scale=4, octaves=5, gain=0.5, stretch
 def single(basis: str):
     def generate(grid: Grid, scale=8, stretch=1):
         return BASES[basis](grid, scale, stretch)
+
     generate.__doc__ = f"One octave of periodic {basis} noise in [0, 1]."
     return generate
 

@@ -1,4 +1,5 @@
 """Height to tangent-space normal (OpenGL convention: +X right, +Y up the image, +Z out)."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -30,7 +31,9 @@ def slopes(height: np.ndarray, factor: float = 1.0) -> tuple[np.ndarray, np.ndar
     rounds exactly like scaling twice."""
     half = np.float32(height.shape[0] / 2.0)
     factor = np.float32(factor)
-    return central_difference(height, 1, half * factor), central_difference(height, 0, -half * factor)  # row 0 is the top
+    return central_difference(height, 1, half * factor), central_difference(
+        height, 0, -half * factor
+    )  # row 0 is the top
 
 
 def height_to_normal(grid: Grid, input=0.5, strength=1.0):

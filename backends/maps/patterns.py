@@ -2,6 +2,7 @@
 
 All return float32 maps in [0, 1] over a (size, size) grid that tile over the unit square.
 """
+
 from __future__ import annotations
 
 import numpy as np

@@ -1,4 +1,5 @@
 """Schema check of graph TOML files; every error names the file and the dotted key."""
+
 from __future__ import annotations
 
 from numbers import Real

@@ -1,4 +1,5 @@
 """Contact sheet: every stdlib graph's outputs, one row per graph, labelled (matplotlib)."""
+
 from __future__ import annotations
 
 import os
@@ -7,11 +8,12 @@ from pathlib import Path
 
 import numpy as np
 
+from cnlmc.output import usual_mode
+
 from .colour import linear_to_srgb
 from .evaluate import evaluate
 from .library import graph_names, load_graph
 from .targets import COLOR_ROLES
-from cnlmc.output import usual_mode
 
 
 def display_pixels(role: str, array: np.ndarray) -> np.ndarray:
@@ -30,6 +32,7 @@ def sheet_rows(size: int, seed: int = 0) -> list[tuple[str, dict[str, np.ndarray
 def render_contact_sheet(path, size: int = 256, seed: int = 0) -> Path:
     """Write a PNG with one row per stdlib graph and one labelled tile per output."""
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 

@@ -7,6 +7,7 @@ along its diagonal into two triangles and each of the three corners contributes
 The kernel reaches zero at distance sqrt(0.5), so only the three corners of the
 containing triangle can contribute and the field is continuous and periodic.
 """
+
 from __future__ import annotations
 
 import numpy as np

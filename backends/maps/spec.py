@@ -1,4 +1,5 @@
 """Graph data model: what a graph TOML file becomes after the schema check."""
+
 from __future__ import annotations
 
 from dataclasses import dataclass, field

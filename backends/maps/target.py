@@ -17,8 +17,9 @@ from .writer import write_maps
 
 NAME = "maps"
 DESCRIPTION = "baked procedural maps (PNG/EXR through OpenImageIO)"
-CAPABILITIES = {f: ("exact", "maps are this target's whole output; BSDF features are not its concern")
-                for f in ALL_FEATURES}
+CAPABILITIES = dict.fromkeys(
+    ALL_FEATURES, ("exact", "maps are this target's whole output; BSDF features are not its concern")
+)
 OPTIONS = {"size": "1024", "format": "png8"}
 
 

@@ -4,6 +4,7 @@ color             -> (H, W, 3) linear RGB in [0, 1] (scalar outputs become grey)
 normal            -> (H, W, 3) unit tangent-space normals, OpenGL convention (+Y up the image)
 roughness, metallic, mask, height -> (H, W) linear values in [0, 1]
 """
+
 from __future__ import annotations
 
 import numpy as np

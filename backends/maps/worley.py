@@ -4,6 +4,7 @@ Distances are taken to the feature points of the 3x3 neighbouring cells, with ce
 indices wrapped modulo the integer period, so the pattern tiles over the unit square.
 Distances are in cell units: F1 in [0, ~1.1], F2 - F1 (the cell-edge distance) in [0, ~1].
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -87,8 +88,9 @@ def nearest_two(grid: Grid, py: int, px: int, jitter: float, salt, need_f2: bool
     return f1, f2, value
 
 
-def worley_noise(grid: Grid, scale: int, feature: str = "f1", jitter: float = 1.0,
-                 stretch: int = 1, salt="worley") -> np.ndarray:
+def worley_noise(
+    grid: Grid, scale: int, feature: str = "f1", jitter: float = 1.0, stretch: int = 1, salt="worley"
+) -> np.ndarray:
     py, px = periods(scale, stretch)
     f1, f2, value = nearest_two(grid, py, px, jitter, salt, feature in ("f2", "edge"), feature == "cell")
     if feature == "f1":

@@ -5,6 +5,7 @@ Colour roles are written sRGB-encoded to PNG (oiio:ColorSpace "sRGB") and linear
 and "lin_rec709" in PNG (PNG cannot say "Raw"; this writes gAMA 1.0, so readers do not
 apply the sRGB curve, whereas an untagged PNG reads back as sRGB).
 """
+
 from __future__ import annotations
 
 import os
@@ -13,10 +14,11 @@ from pathlib import Path
 
 import numpy as np
 
+from cnlmc.output import usual_mode
+
 from .colour import linear_to_srgb
 from .errors import MapError
 from .targets import COLOR_ROLES
-from cnlmc.output import usual_mode
 
 FORMATS = {  # fmt -> (extension, OIIO pixel type)
     "png8": (".png", "uint8"),

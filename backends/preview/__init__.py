@@ -10,6 +10,7 @@ teapot | path to .obj/.ply/.gltf/.glb), tier (see tiers.TIERS; default splitsum)
 tier that fits), env (studio | sky | sun | path to .hdr/.exr), background (env | transparent),
 exposure (1.0), msaa (0: off, an edge filter in the tone map; 2 or 4 cost 3-4x the frame on llvmpipe), fresnel / multiscatter (the GLSL backend's options), seed.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, field
@@ -22,17 +23,35 @@ NAME = "preview"
 DESCRIPTION = "PNG previews rendered with OpenGL (moderngl/EGL) from the GLSL backend's BSDF (docs/preview.md)"
 _BAKED = "procedural map baked with cnlmc.backends.maps and bound as a texture"
 CAPABILITIES = {
-    "model.diffuse": ("exact", ""), "model.dielectric": ("exact", ""), "model.conductor": ("exact", ""),
+    "model.diffuse": ("exact", ""),
+    "model.dielectric": ("exact", ""),
+    "model.conductor": ("exact", ""),
     "model.glass": ("approximate", "reflection only (the GLSL backend renders no transmission)"),
-    "distribution.ggx": ("exact", ""), "distribution.ward": ("exact", ""),
+    "distribution.ggx": ("exact", ""),
+    "distribution.ward": ("exact", ""),
     "anisotropic": ("exact", "exact in the key light and the mc/fis tiers; split-sum uses sqrt(ax ay)"),
     "diffuse.oren_nayar": ("exact", "exact in the key light and the mc/fis tiers; split-sum uses Lambert"),
-    "coat": ("exact", ""), "coat.color": ("exact", ""),
-    "maps.base_color": ("bake", _BAKED), "maps.normal": ("bake", _BAKED), "maps.roughness": ("bake", _BAKED),
-    "maps.mask": ("bake", _BAKED), "maps.metallic": ("drop", "no IR model reads a metallic map"),
+    "coat": ("exact", ""),
+    "coat.color": ("exact", ""),
+    "maps.base_color": ("bake", _BAKED),
+    "maps.normal": ("bake", _BAKED),
+    "maps.roughness": ("bake", _BAKED),
+    "maps.mask": ("bake", _BAKED),
+    "maps.metallic": ("drop", "no IR model reads a metallic map"),
 }
-OPTIONS = {"size": "512", "mesh": "sphere", "tier": "", "budget_ms": "", "env": "studio", "background": "env",
-           "exposure": "1.0", "msaa": "0", "fresnel": "exact", "multiscatter": "off", "seed": "0"}
+OPTIONS = {
+    "size": "512",
+    "mesh": "sphere",
+    "tier": "",
+    "budget_ms": "",
+    "env": "studio",
+    "background": "env",
+    "exposure": "1.0",
+    "msaa": "0",
+    "fresnel": "exact",
+    "multiscatter": "off",
+    "seed": "0",
+}
 
 
 class PreviewOptionError(ValueError):
@@ -54,6 +73,7 @@ class PreviewOptions:
 
 def parse_options(options: dict | None) -> PreviewOptions:
     from ..capabilities import COMPILER_OPTIONS
+
     options = {k: str(v) for k, v in (options or {}).items() if k in OPTIONS or k not in COMPILER_OPTIONS}
     unknown = sorted(set(options) - set(OPTIONS))
     if unknown:
@@ -70,17 +90,28 @@ def parse_options(options: dict | None) -> PreviewOptions:
         raise PreviewOptionError("preview: background must be env or transparent")
     if o["tier"]:
         from .tiers import parse_tier
+
         try:
             parse_tier(o["tier"])
         except ValueError as exc:
             raise PreviewOptionError(str(exc)) from None
-    return PreviewOptions(size, o["mesh"], o["tier"], budget, o["env"], o["background"], exposure, msaa,
-                          {"fresnel": o["fresnel"], "multiscatter": o["multiscatter"]})
+    return PreviewOptions(
+        size,
+        o["mesh"],
+        o["tier"],
+        budget,
+        o["env"],
+        o["background"],
+        exposure,
+        msaa,
+        {"fresnel": o["fresnel"], "multiscatter": o["multiscatter"]},
+    )
 
 
 def choose_tier(renderer, scene, material: dict, opts: PreviewOptions):
     """The tier option, else the best tier within budget_ms, else the default."""
     from .tiers import DEFAULT_TIER, parse_tier, select_tier
+
     if opts.tier:
         return parse_tier(opts.tier), {}
     if opts.budget_ms is None:
@@ -91,6 +122,7 @@ def choose_tier(renderer, scene, material: dict, opts: PreviewOptions):
 def render_ir(ir: dict, options: dict | None = None) -> list[tuple[dict, object]]:
     """Render every material of the IR: [(material, Frame)]."""
     from .render import Renderer, default_scene
+
     opts = parse_options(options)
     renderer = Renderer(opts.size, msaa=opts.msaa)
     scene = default_scene(opts.mesh, opts.env, (opts.size, opts.size))
@@ -100,8 +132,10 @@ def render_ir(ir: dict, options: dict | None = None) -> list[tuple[dict, object]
         tier, timings = choose_tier(renderer, scene, material, opts)
         frame = renderer.render(material, tier=tier, glsl_options=opts.glsl, scene=scene)
         if timings:
-            frame.notes.append("preview: budget %.1f ms: measured %s -> %s" % (
-                opts.budget_ms, ", ".join(f"{k} {v:.1f}" for k, v in timings.items()), tier.name))
+            frame.notes.append(
+                f"preview: budget {opts.budget_ms:.1f} ms: measured "
+                f"{', '.join(f'{k} {v:.1f}' for k, v in timings.items())} -> {tier.name}"
+            )
         frames.append((material, frame))
     return frames
 
@@ -109,13 +143,14 @@ def render_ir(ir: dict, options: dict | None = None) -> list[tuple[dict, object]
 def compose(frames: list[tuple[dict, object]]):
     """One image: a single material as is; several as a labelled sheet, one row per variant group."""
     from .sheet import groups_of, label, sheet
+
     if len(frames) == 1:
         return frames[0][1].rgba
     by_name = {m["name"]: f for m, f in frames}
     rows = []
     for group in groups_of([m for m, _ in frames]):
         rows.append([label(by_name[m["name"]].rgba, (m.get("variant") or {}).get("name") or m["name"]) for m in group])
-    if all(len(r) == 1 for r in rows):                       # no variants: one row of everything
+    if all(len(r) == 1 for r in rows):  # no variants: one row of everything
         rows = [[r[0] for r in rows]]
     return sheet(rows)
 
@@ -135,6 +170,7 @@ def preview_command(ir: dict, out_path, options: dict | None = None) -> PreviewR
     from cnlmc.output import write_atomic
 
     from .sheet import png_bytes
+
     frames = render_ir(ir, options)
     out_path = Path(out_path)
     write_atomic(out_path, png_bytes(compose(frames)))
@@ -144,6 +180,7 @@ def preview_command(ir: dict, out_path, options: dict | None = None) -> PreviewR
 
 def emit(ir: dict, options: dict) -> EmitResult:
     from .sheet import png_bytes
+
     notes: list = []
     for material in ir["materials"]:
         check_material(notes, NAME, CAPABILITIES, material)
@@ -154,5 +191,15 @@ def emit(ir: dict, options: dict) -> EmitResult:
     return EmitResult(artifacts, notes)
 
 
-__all__ = ["NAME", "DESCRIPTION", "CAPABILITIES", "OPTIONS", "emit", "preview_command", "render_ir",
-           "parse_options", "PreviewOptionError", "PreviewReport"]
+__all__ = [
+    "NAME",
+    "DESCRIPTION",
+    "CAPABILITIES",
+    "OPTIONS",
+    "emit",
+    "preview_command",
+    "render_ir",
+    "parse_options",
+    "PreviewOptionError",
+    "PreviewReport",
+]

@@ -20,6 +20,7 @@ looks the environment up twice (`_kernels`, split.glsl.j2).
 
 One row when α is uniform; ROWS rows over sqrt(α) when a roughness map varies it.
 """
+
 from __future__ import annotations
 
 import hashlib
@@ -46,12 +47,12 @@ FIT_ALPHA = 0.15
 FIT_POINTS = 1500
 FIT_CORRELATION = np.radians(15.0)
 FIT_PSI = np.radians(np.arange(-85.0, 85.0 + 1e-9, 2.5))
-FIT_ROOT_ALPHA = np.arange(0.35, 1.0 + 1e-9, 0.05)     # α ≥ 0.12: resolved by FIT_POINTS
-FIT_MIN_SCALE = 0.5          # a kernel is at least half as wide as the lobe's own α
-FIT_MAX_WEIGHT = 0.6         # of the second kernel
-FIT_STEP = (np.radians(10.0), 0.1)   # the parameter change between neighbouring cos θv that costs ...
-FIT_SMOOTH = 0.05                    # ... this fraction of the fit's error (keeps the tables smooth)
-FIT_BLUR = 1.5                       # then a Gaussian of this many texels over cos θv (no steps)
+FIT_ROOT_ALPHA = np.arange(0.35, 1.0 + 1e-9, 0.05)  # α ≥ 0.12: resolved by FIT_POINTS
+FIT_MIN_SCALE = 0.5  # a kernel is at least half as wide as the lobe's own α
+FIT_MAX_WEIGHT = 0.6  # of the second kernel
+FIT_STEP = (np.radians(10.0), 0.1)  # the parameter change between neighbouring cos θv that costs ...
+FIT_SMOOTH = 0.05  # ... this fraction of the fit's error (keeps the tables smooth)
+FIT_BLUR = 1.5  # then a Gaussian of this many texels over cos θv (no steps)
 
 
 def _variant(material: dict, colour, alpha=None) -> dict:
@@ -65,12 +66,13 @@ def _row_alphas(material: dict, mapped: bool) -> list:
     """(αx, αy) per row: the material's own, or sqrt(α) at texel centres with its anisotropy."""
     from cnlmc.bsdf.alpha import anisotropy_stretch
     from cnlmc.bsdf.evaluate import material_alpha
+
     if not mapped:
         return [tuple(float(a) for a in material_alpha(material))]
     params = material["params"]
     aniso = float(params.get("anisotropy") or 0.0) if material["model"].get("anisotropic") else 0.0
     s = float(anisotropy_stretch(aniso))
-    rows = (((np.arange(ROWS) + 0.5) / ROWS) ** 2)
+    rows = ((np.arange(ROWS) + 0.5) / ROWS) ** 2
     return [(min(max(a / s, 1e-3), 1.0), min(max(a * s, 1e-3), 1.0)) for a in rows]
 
 
@@ -83,16 +85,19 @@ def _directional(material: dict, options: dict, moment: bool = False) -> np.ndar
     anisotropic); with `moment`, (MU_SIZE, 2) mean-over-RGB first moments of the lobe instead:
     its component towards the viewer (in the tangent plane) and along the normal."""
     from cnlmc.bsdf.evaluate import albedo
+
     mus = _mus()
     phis = (0.0, np.pi / 4, np.pi / 2) if material["model"].get("anisotropic") else (0.0,)
 
-    def one(phi):                                  # every mu at once (a batch of directions)
+    def one(phi):  # every mu at once (a batch of directions)
         if not moment:
             return albedo(material, mus, SAMPLES, phi, **options)
-        toward = lambda wi: wi[..., 0] * np.cos(phi) + wi[..., 1] * np.sin(phi)  # noqa: E731
-        along = lambda wi: wi[..., 2]  # noqa: E731
-        return np.stack([albedo(material, mus, SAMPLES, phi, weight, **options).mean(-1)
-                         for weight in (toward, along)], -1)
+        toward = lambda wi: wi[..., 0] * np.cos(phi) + wi[..., 1] * np.sin(phi)
+        along = lambda wi: wi[..., 2]
+        return np.stack(
+            [albedo(material, mus, SAMPLES, phi, weight, **options).mean(-1) for weight in (toward, along)], -1
+        )
+
     return np.mean([one(phi) for phi in phis], 0)
 
 
@@ -113,6 +118,7 @@ def _leans(black_material: dict, white_material: dict, options: dict) -> tuple[n
 
 
 # ------------------------------------------------------------------ the two-kernel fit
+
 
 def _sphere(n: int) -> np.ndarray:
     """n near-equal-area points on the unit sphere (Fibonacci lattice)."""
@@ -155,6 +161,7 @@ def _lobe_masses(material: dict, options: dict) -> np.ndarray:
     (the viewer at azimuth 0: the mirror side is −x), each row summing to 1 (0 for no lobe)."""
     from cnlmc.bsdf.evaluate import evaluate
     from cnlmc.bsdf.geometry import dir_from_mu
+
     points = _basis()[0]
     up = points[:, 2] > 0
     wi = points[up]
@@ -187,17 +194,18 @@ def _fit(masses: np.ndarray, alpha: float) -> np.ndarray:
             out[j] = ((0.0, alpha, 1.0), (0.0, alpha, 0.0))
             continue
         cp = corr @ p
-        kp = kernels @ cp                                    # <k, p>
+        kp = kernels @ cp  # <k, p>
         single = np.where(allowed, diag - 2.0 * kp + p @ cp, np.inf)
         scale = max(float(single.min()), 1e-30) * FIT_SMOOTH
 
         def cost(index, which):
             return 0.0 if prev is None else scale * np.sum((coords[index] - coords[prev[which]]) ** 2, -1)
+
         firsts = np.argsort(single + cost(slice(None), 0))[:8]
         best = None
         for i in firsts:
-            ab = gram[i] - diag[i] - kp + kp[i]              # <k_i − p, k − k_i>
-            bb = diag - 2.0 * gram[i] + diag[i]              # |k − k_i|²
+            ab = gram[i] - diag[i] - kp + kp[i]  # <k_i − p, k − k_i>
+            bb = diag - 2.0 * gram[i] + diag[i]  # |k − k_i|²
             w = np.clip(-ab / np.maximum(bb, 1e-30), 0.0, FIT_MAX_WEIGHT)
             err = single[i] + 2.0 * w * ab + w * w * bb
             total = np.where(allowed, err + cost(slice(None), 1), np.inf) + cost(i, 0)
@@ -241,13 +249,14 @@ def _blur(values: np.ndarray) -> np.ndarray:
     taps = np.exp(-0.5 * (np.arange(-radius, radius + 1) / FIT_BLUR) ** 2)
     taps /= taps.sum()
     padded = np.concatenate([np.repeat(values[:1], radius, 0), values, np.repeat(values[-1:], radius, 0)])
-    return sum(t * padded[i:i + len(values)] for i, t in enumerate(taps))
+    return sum(t * padded[i : i + len(values)] for i, t in enumerate(taps))
 
 
 def split_fitted(material: dict, mapped_roughness: bool = False) -> bool:
     """Whether the material's tables hold a fitted kernel pair (for the shader: two environment
     lookups for its specular lobe, or one). Mapped roughness: its rougher rows are fitted."""
     from cnlmc.bsdf.evaluate import material_alpha
+
     if not any(_fitted_lobes(material)):
         return False
     return bool(mapped_roughness) or float(np.sqrt(np.prod(material_alpha(material)))) >= FIT_ALPHA
@@ -257,8 +266,9 @@ def _fitted_lobes(material: dict) -> tuple[bool, bool]:
     """(black, tint): which lobe is one isotropic microfacet reflection (fitted): the
     dielectric's specular lobe (black) or the conductor's (tint); none under a coat."""
     model = material["model"]
-    simple = model["base"] in ("dielectric", "conductor", "glass") and not model.get("coat") \
-        and not model.get("anisotropic")
+    simple = (
+        model["base"] in ("dielectric", "conductor", "glass") and not model.get("coat") and not model.get("anisotropic")
+    )
     return simple and model["base"] != "conductor", simple and model["base"] == "conductor"
 
 
@@ -267,6 +277,7 @@ def _tables(material_json: str, fresnel: str, multiscatter: bool, mapped: bool) 
     """Memoized here and on disk (cnlmc.cache, keyed by the inputs and by the source files of
     the BSDF code and of this module): a mapped material's 8 rows take a few seconds."""
     from cnlmc.cache import cached
+
     inputs = json.dumps([material_json, fresnel, multiscatter, mapped, MU_SIZE, ROWS, SAMPLES, SECTIONS])
     kind = "albedo-tables-" + hashlib.sha256(inputs.encode()).hexdigest()[:20]
     sources = [Path(__file__)] + sorted(BSDF_SOURCES.glob("*.py"))
@@ -284,18 +295,29 @@ def _integrate(material_json: str, fresnel: str, multiscatter: bool, mapped: boo
         black = _directional(black_material, options)
         white = _directional(white_material, options)
         black_lean, tint_lean = _leans(black_material, white_material, options)
-        black_rows.append(np.concatenate([
-            np.concatenate([black, black_lean[:, None]], 1),
-            _kernels(black_material, alpha, options, black_lean, fit_black)]))
+        black_rows.append(
+            np.concatenate(
+                [
+                    np.concatenate([black, black_lean[:, None]], 1),
+                    _kernels(black_material, alpha, options, black_lean, fit_black),
+                ]
+            )
+        )
         # the tint lobe is fitted only for conductors, whose black part is zero (white = tint)
-        tint_rows.append(np.concatenate([
-            np.concatenate([white - black, tint_lean[:, None]], 1),
-            _kernels(white_material, alpha, options, tint_lean, fit_tint)]))
+        tint_rows.append(
+            np.concatenate(
+                [
+                    np.concatenate([white - black, tint_lean[:, None]], 1),
+                    _kernels(white_material, alpha, options, tint_lean, fit_tint),
+                ]
+            )
+        )
     return np.array(black_rows, np.float32), np.array(tint_rows, np.float32)
 
 
-def albedo_tables(material: dict, fresnel: str = "exact", multiscatter: bool = False,
-                  mapped_roughness: bool = False) -> tuple[np.ndarray, np.ndarray]:
+def albedo_tables(
+    material: dict, fresnel: str = "exact", multiscatter: bool = False, mapped_roughness: bool = False
+) -> tuple[np.ndarray, np.ndarray]:
     """(black, tint) tables, each (rows, SECTIONS * MU_SIZE, 4) float32: row = sqrt(α) texel of
     the base lobe; three sections of MU_SIZE columns over cos θo:
       [0, MU)     RGB = directional albedo, A = the lobe's lean (`_lean`);

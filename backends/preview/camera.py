@@ -1,4 +1,5 @@
 """Camera matrices (OpenGL conventions: right-handed, looking down -z, clip z in [-1, 1])."""
+
 from __future__ import annotations
 
 import math
@@ -60,8 +61,15 @@ class Camera:
         return np.linalg.inv(self.view)[:3, 3]
 
 
-def framing_camera(lo, hi, fov_y: float = 30.0, aspect: float = 1.0, elevation_deg: float = 18.0,
-                   azimuth_deg: float = 0.0, margin: float = 1.08) -> Camera:
+def framing_camera(
+    lo,
+    hi,
+    fov_y: float = 30.0,
+    aspect: float = 1.0,
+    elevation_deg: float = 18.0,
+    azimuth_deg: float = 0.0,
+    margin: float = 1.08,
+) -> Camera:
     """A camera that sees the whole bounding sphere of the box [lo, hi] from the front (+z)."""
     lo, hi = np.asarray(lo, np.float64), np.asarray(hi, np.float64)
     centre = (lo + hi) / 2

@@ -8,6 +8,7 @@ between (rows clamped at the poles). Mitsuba agrees in u but puts row j at v = j
 first and last rows at the poles), so the image it is given is `mitsuba_rows(image)`: the same
 bilinear function, resampled onto its rows.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, field
@@ -20,8 +21,8 @@ ENV_WIDTH, ENV_HEIGHT = 512, 256
 
 @dataclass(frozen=True)
 class KeyLight:
-    direction: tuple = (0.45, 0.6, 0.66)   # towards the light (world, y up); normalised on use
-    irradiance: float = 2.0                # W/m^2 on a surface facing the light (linear RGB grey)
+    direction: tuple = (0.45, 0.6, 0.66)  # towards the light (world, y up); normalised on use
+    irradiance: float = 2.0  # W/m^2 on a surface facing the light (linear RGB grey)
 
     @property
     def unit(self) -> np.ndarray:
@@ -32,7 +33,7 @@ class KeyLight:
 @dataclass
 class Environment:
     name: str
-    image: np.ndarray                      # (H, W, 3) float32 linear radiance, row 0 = top (+y)
+    image: np.ndarray  # (H, W, 3) float32 linear radiance, row 0 = top (+y)
     key: KeyLight = field(default_factory=KeyLight)
 
     @property
@@ -45,6 +46,7 @@ class EnvironmentError(ValueError):
 
 
 # ------------------------------------------------------------------------ mapping
+
 
 def pixel_directions(height: int, width: int) -> np.ndarray:
     """(H, W, 3) unit directions of the pixel centres (Mitsuba's envmap convention)."""
@@ -69,6 +71,7 @@ def pixel_solid_angles(height: int, width: int) -> np.ndarray:
 
 # ------------------------------------------------------------------ generated maps
 
+
 def _smooth_box(d: np.ndarray, centre, half_width: float, half_height: float, softness: float = 0.03):
     """A soft rectangular light (a softbox) facing the origin: 1 inside, smooth edge."""
     c = np.asarray(centre, np.float64)
@@ -78,7 +81,7 @@ def _smooth_box(d: np.ndarray, centre, half_width: float, half_height: float, so
     up = np.cross(c, right)
     facing = d @ c
     x, y = (d @ right) / np.maximum(facing, 1e-3), (d @ up) / np.maximum(facing, 1e-3)
-    edge = lambda q, h: np.clip((h - np.abs(q)) / softness + 0.5, 0, 1)  # noqa: E731
+    edge = lambda q, h: np.clip((h - np.abs(q)) / softness + 0.5, 0, 1)
     return np.where(facing > 0, edge(x, half_width) * edge(y, half_height), 0.0)
 
 
@@ -86,7 +89,10 @@ def _sky_gradient(d: np.ndarray, zenith, horizon, ground) -> np.ndarray:
     y = d[..., 1:2]
     up = np.clip(y, 0, 1) ** 0.6
     sky = np.asarray(horizon) * (1 - up) + np.asarray(zenith) * up
-    below = np.asarray(ground) * (1 - np.exp(-8 * np.clip(-y, 0, 1))) + np.asarray(horizon) * np.exp(-8 * np.clip(-y, 0, 1)) * 0.5
+    below = (
+        np.asarray(ground) * (1 - np.exp(-8 * np.clip(-y, 0, 1)))
+        + np.asarray(horizon) * np.exp(-8 * np.clip(-y, 0, 1)) * 0.5
+    )
     return np.where(y >= 0, sky, below)
 
 
@@ -103,8 +109,9 @@ def studio(height: int = ENV_HEIGHT, width: int = ENV_WIDTH) -> np.ndarray:
 def sky(height: int = ENV_HEIGHT, width: int = ENV_WIDTH) -> np.ndarray:
     """Overcast outdoor sky over a dark ground."""
     d = pixel_directions(height, width)
-    return _sky_gradient(d, zenith=(0.35, 0.5, 0.9), horizon=(0.9, 0.9, 0.95),
-                         ground=(0.12, 0.1, 0.08)).astype(np.float32)
+    return _sky_gradient(d, zenith=(0.35, 0.5, 0.9), horizon=(0.9, 0.9, 0.95), ground=(0.12, 0.1, 0.08)).astype(
+        np.float32
+    )
 
 
 def sun(height: int = ENV_HEIGHT, width: int = ENV_WIDTH) -> np.ndarray:
@@ -123,6 +130,7 @@ _CACHE: dict = {}
 
 def read_image(path) -> np.ndarray:
     import OpenImageIO as oiio
+
     inp = oiio.ImageInput.open(str(path))
     if inp is None:
         raise EnvironmentError(f"cannot read environment map {path}: {oiio.geterror()}")
@@ -154,8 +162,8 @@ def mitsuba_rows(image: np.ndarray) -> np.ndarray:
     image = np.asarray(image, np.float32)
     h = image.shape[0]
     rows = 2 * h + 1 if h <= MITSUBA_EXACT_ROWS else h + 1
-    v = np.arange(rows) / (rows - 1)                   # Mitsuba's row positions
-    y = np.clip(v * h - 0.5, 0.0, h - 1.0)             # -> continuous row index of the image
+    v = np.arange(rows) / (rows - 1)  # Mitsuba's row positions
+    y = np.clip(v * h - 0.5, 0.0, h - 1.0)  # -> continuous row index of the image
     j0 = np.minimum(np.floor(y).astype(np.int64), h - 1)
     j1 = np.minimum(j0 + 1, h - 1)
     w = (y - j0).astype(np.float32)[:, None, None]
@@ -164,6 +172,7 @@ def mitsuba_rows(image: np.ndarray) -> np.ndarray:
 
 def write_exr(path, image: np.ndarray) -> None:
     import OpenImageIO as oiio
+
     h, w, c = image.shape
     out = oiio.ImageOutput.create(str(path))
     out.open(str(path), oiio.ImageSpec(w, h, c, oiio.FLOAT))
@@ -180,8 +189,9 @@ def environment(name_or_path: str = "studio", key: KeyLight | None = None) -> En
         else:
             path = Path(name_or_path)
             if not path.exists():
-                raise EnvironmentError(f"environment {name_or_path!r} is neither a file nor one of "
-                                       f"{', '.join(ENVIRONMENTS)}")
+                raise EnvironmentError(
+                    f"environment {name_or_path!r} is neither a file nor one of {', '.join(ENVIRONMENTS)}"
+                )
             image = read_image(path)
         if not np.isfinite(image).all():
             image = np.nan_to_num(image, nan=0.0, posinf=0.0, neginf=0.0)

@@ -1,5 +1,6 @@
 """The headless OpenGL context (moderngl on EGL) and caches of what is costly to build:
 programs (compiling on llvmpipe takes seconds), textures and vertex arrays."""
+
 from __future__ import annotations
 
 import hashlib
@@ -22,10 +23,13 @@ def context():
     """One process-wide standalone EGL context (GL 3.3+ core)."""
     try:
         import moderngl
+
         return moderngl.create_context(standalone=True, backend="egl", require=330)
     except Exception as exc:  # pragma: no cover - depends on the machine
-        raise PreviewUnavailable(f"preview: cannot create an OpenGL context on EGL ({exc}); "
-                                 "install libegl1 libgl1 libegl-mesa0 libgl1-mesa-dri") from None
+        raise PreviewUnavailable(
+            f"preview: cannot create an OpenGL context on EGL ({exc}); "
+            "install libegl1 libgl1 libegl-mesa0 libgl1-mesa-dri"
+        ) from None
 
 
 def current():
@@ -38,8 +42,14 @@ def current():
 
 @lru_cache(maxsize=1)
 def templates() -> jinja2.Environment:
-    return jinja2.Environment(loader=jinja2.FileSystemLoader(str(SHADERS)), undefined=jinja2.StrictUndefined,
-                              keep_trailing_newline=True, trim_blocks=True, lstrip_blocks=True, autoescape=False)
+    return jinja2.Environment(
+        loader=jinja2.FileSystemLoader(str(SHADERS)),
+        undefined=jinja2.StrictUndefined,
+        keep_trailing_newline=True,
+        trim_blocks=True,
+        lstrip_blocks=True,
+        autoescape=False,
+    )
 
 
 def shader_file(name: str) -> str:
@@ -47,8 +57,11 @@ def shader_file(name: str) -> str:
 
 
 def preview_fragment(name: str, library: str, plan: dict, ibl: str) -> str:
-    return templates().get_template("preview.frag.j2").render(name=name, library=library, plan=plan, ibl=ibl,
-                                                               IBL_FILES=IBL_FILES)
+    return (
+        templates()
+        .get_template("preview.frag.j2")
+        .render(name=name, library=library, plan=plan, ibl=ibl, IBL_FILES=IBL_FILES)
+    )
 
 
 _PROGRAMS: dict = {}
@@ -83,6 +96,7 @@ def set_uniform(prog, name: str, value) -> None:
 def float_texture(array: np.ndarray, mipmaps: bool = True, repeat: tuple = (True, True)):
     """A float32 texture from (H, W[, C]) with row 0 at v = 0, trilinear and mip-mapped."""
     import moderngl
+
     array = np.ascontiguousarray(array, np.float32)
     components = 1 if array.ndim == 2 else array.shape[2]
     tex = current().texture((array.shape[1], array.shape[0]), components, array.tobytes(), dtype="f4")

@@ -6,6 +6,7 @@ TEXCOORD_0 when present (missing normals/UVs are derived by `make_mesh`), and in
 integer type. glTF puts the image's top row at v = 0 and the preview at v = 1, so v is
 flipped. Anything the preview cannot draw is a MeshError naming the file and the reason.
 """
+
 from __future__ import annotations
 
 import base64
@@ -24,6 +25,7 @@ TRIANGLES = 4
 
 
 # ----------------------------------------------------------------------------- reading
+
 
 def load_gltf(path) -> Mesh:
     path = Path(path)
@@ -50,7 +52,7 @@ def _read_container(path: Path) -> tuple[dict, bytes | None]:
     doc, binary, offset = None, None, 12
     while offset + 8 <= len(data):
         size, kind = struct.unpack_from("<II", data, offset)
-        chunk = data[offset + 8: offset + 8 + size]
+        chunk = data[offset + 8 : offset + 8 + size]
         if kind == JSON_CHUNK:
             doc = json.loads(chunk.decode("utf-8"))
         elif kind == BIN_CHUNK and binary is None:
@@ -90,11 +92,15 @@ def _accessor(doc: dict, buffers: list, index: int) -> np.ndarray:
 
 def _node_matrix(node: dict) -> np.ndarray:
     if "matrix" in node:
-        return np.array(node["matrix"], np.float64).reshape(4, 4).T      # column-major
+        return np.array(node["matrix"], np.float64).reshape(4, 4).T  # column-major
     x, y, z, w = node.get("rotation", (0.0, 0.0, 0.0, 1.0))
-    rotation = np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-                         [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-                         [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+    rotation = np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+        ]
+    )
     m = np.eye(4)
     m[:3, :3] = rotation * np.asarray(node.get("scale", (1.0, 1.0, 1.0)))
     m[:3, 3] = node.get("translation", (0.0, 0.0, 0.0))
@@ -131,11 +137,14 @@ def _primitive(doc: dict, buffers: list, prim: dict, world: np.ndarray) -> dict:
         raise MeshError(f"a primitive of mode {prim['mode']} (only triangles, mode 4, are drawn)")
     attrs = prim["attributes"]
     positions = _accessor(doc, buffers, attrs["POSITION"])[:, :3]
-    indices = (_accessor(doc, buffers, prim["indices"])[:, 0].astype(np.int64) if "indices" in prim
-               else np.arange(len(positions)))
+    indices = (
+        _accessor(doc, buffers, prim["indices"])[:, 0].astype(np.int64)
+        if "indices" in prim
+        else np.arange(len(positions))
+    )
     if len(indices) % 3 or (len(indices) and (indices.min() < 0 or indices.max() >= len(positions))):
         raise MeshError("triangle indices out of range or not a multiple of three")
-    if np.linalg.det(world[:3, :3]) < 0:                   # a mirroring transform flips the winding
+    if np.linalg.det(world[:3, :3]) < 0:  # a mirroring transform flips the winding
         indices = indices.reshape(-1, 3)[:, ::-1].ravel()
     part = {"positions": positions @ world[:3, :3].T + world[:3, 3], "indices": indices.reshape(-1, 3)}
     if "NORMAL" in attrs:
@@ -157,6 +166,7 @@ def _merge(parts: list[dict]) -> Mesh:
 
 # ----------------------------------------------------------------------------- writing
 
+
 def write_glb(mesh: Mesh, path) -> None:
     """One mesh, one primitive: float positions/normals/UVs (v flipped back) and uint32 indices."""
     uvs = np.column_stack([mesh.uvs[:, 0], 1.0 - mesh.uvs[:, 1]])
@@ -168,15 +178,29 @@ def write_glb(mesh: Mesh, path) -> None:
         blob += data + b"\0" * (-len(data) % 4)
         offset = len(blob)
     lo, hi = mesh.positions.min(0), mesh.positions.max(0)
-    accessors = [{"bufferView": 0, "componentType": 5126, "count": len(mesh.positions), "type": "VEC3",
-                  "min": [float(x) for x in lo], "max": [float(x) for x in hi]},
-                 {"bufferView": 1, "componentType": 5126, "count": len(mesh.normals), "type": "VEC3"},
-                 {"bufferView": 2, "componentType": 5126, "count": len(uvs), "type": "VEC2"},
-                 {"bufferView": 3, "componentType": 5125, "count": mesh.indices.size, "type": "SCALAR"}]
-    doc = {"asset": {"version": "2.0", "generator": "cnlmc"}, "buffers": [{"byteLength": len(blob)}],
-           "bufferViews": views, "accessors": accessors, "scene": 0, "scenes": [{"nodes": [0]}],
-           "nodes": [{"mesh": 0}],
-           "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3}]}]}
+    accessors = [
+        {
+            "bufferView": 0,
+            "componentType": 5126,
+            "count": len(mesh.positions),
+            "type": "VEC3",
+            "min": [float(x) for x in lo],
+            "max": [float(x) for x in hi],
+        },
+        {"bufferView": 1, "componentType": 5126, "count": len(mesh.normals), "type": "VEC3"},
+        {"bufferView": 2, "componentType": 5126, "count": len(uvs), "type": "VEC2"},
+        {"bufferView": 3, "componentType": 5125, "count": mesh.indices.size, "type": "SCALAR"},
+    ]
+    doc = {
+        "asset": {"version": "2.0", "generator": "cnlmc"},
+        "buffers": [{"byteLength": len(blob)}],
+        "bufferViews": views,
+        "accessors": accessors,
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3}]}],
+    }
     text = json.dumps(doc).encode("utf-8")
     text += b" " * (-len(text) % 4)
     body = struct.pack("<II", len(text), JSON_CHUNK) + text + struct.pack("<II", len(blob), BIN_CHUNK) + blob

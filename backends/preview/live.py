@@ -11,6 +11,7 @@ a window that follows every step, keeps handling its events while the prompt wai
 the session when closed; headless, the PNG on disk is the view and nothing else changes.
 Tested under Xvfb: tests/preview/test_live_window.py.
 """
+
 from __future__ import annotations
 
 import base64
@@ -20,9 +21,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 PROMPT = "refine> "
-COMMANDS = {":help": "this list", ":undo": "drop the last refinement", ":tier NAME": "switch the quality tier",
-            ":mesh NAME": "switch the preview mesh (sphere, shader_ball, teapot, a file)",
-            ":show": "the current material's parameters", ":quit": "leave (also end of input)"}
+COMMANDS = {
+    ":help": "this list",
+    ":undo": "drop the last refinement",
+    ":tier NAME": "switch the quality tier",
+    ":mesh NAME": "switch the preview mesh (sphere, shader_ball, teapot, a file)",
+    ":show": "the current material's parameters",
+    ":quit": "leave (also end of input)",
+}
 SOURCE_NAME = "<live>"
 
 
@@ -36,6 +42,7 @@ class Step:
 @dataclass
 class LiveSession:
     """The material file plus the refinement lines typed so far, and how it is rendered."""
+
     source: str
     out_path: Path
     options: dict
@@ -54,6 +61,7 @@ class LiveSession:
 
     def _compile(self, lines):
         from cnlmc.api import compile_source
+
         return compile_source(self.text(lines), SOURCE_NAME, self.lexicon)
 
     @property
@@ -71,6 +79,7 @@ class LiveSession:
 
     def refine(self, line: str) -> Step:
         from cnlmc.diagnostics import render
+
         trial = self._compile(self.lines + [line])
         if not trial.ok:
             source = self.text(self.lines + [line])
@@ -78,7 +87,9 @@ class LiveSession:
         before = self.material
         self.lines.append(line)
         self.result = trial
-        return Step(True, "\n".join(changes(before, self.material) or ["  (no parameter changed)"]) + "\n" + self.draw())
+        return Step(
+            True, "\n".join(changes(before, self.material) or ["  (no parameter changed)"]) + "\n" + self.draw()
+        )
 
     def command(self, line: str) -> Step:
         name, _, arg = line.partition(" ")
@@ -101,11 +112,13 @@ class LiveSession:
         import difflib
 
         from cnlmc.diagnostics import did_you_mean
+
         hint = did_you_mean(difflib.get_close_matches(name, [c.split()[0] for c in COMMANDS], n=2))
         return Step(False, f"unknown command {line!r}" + "".join(f"; {h}" for h in hint) + " (:help lists them)")
 
     def switch(self, key: str, value: str) -> Step:
         from . import parse_options
+
         trial = {**self.options, key: value}
         try:
             parse_options(trial)
@@ -118,6 +131,7 @@ class LiveSession:
     def draw(self) -> str:
         """Render the current material to the output PNG; returns a one-line report."""
         from . import preview_command
+
         report = preview_command(self.result.ir, self.out_path, self.options)
         frame = report.frames[-1][1]
         return f"  wrote {self.out_path} ({frame.tier}, {frame.ms:.0f} ms)"
@@ -152,19 +166,21 @@ def _fmt(value) -> str:
 
 # ------------------------------------------------------------------------- the loop
 
+
 class Window:
     """A Tk window showing the output PNG after every step; `Window.open()` is None without a
     display. The window is exactly the image's size; closing it (the window manager's close
     button, WM_DELETE_WINDOW) ends the session like :quit."""
 
-    TICK = 0.03        # seconds between event-loop turns while the prompt waits for a line
+    TICK = 0.03  # seconds between event-loop turns while the prompt waits for a line
 
     def __init__(self, root):
         import tkinter
+
         self.root = root
         self.closed = False
         self.image = None
-        self._pending = b""            # what stdin gave after the last full line
+        self._pending = b""  # what stdin gave after the last full line
         root.title("cnlmc preview")
         self.label = tkinter.Label(root, borderwidth=0, highlightthickness=0, padx=0, pady=0)
         self.label.pack()
@@ -176,11 +192,11 @@ class Window:
             return None
         try:
             import tkinter
-        except ImportError:                    # Python built without Tk
+        except ImportError:  # Python built without Tk
             return None
         try:
             return cls(tkinter.Tk(className="cnlmc"))
-        except tkinter.TclError:               # the display refuses the connection
+        except tkinter.TclError:  # the display refuses the connection
             return None
 
     def show(self, png_path: Path) -> None:
@@ -188,14 +204,14 @@ class Window:
         if self.closed:
             return
         import tkinter
+
         png_path = Path(png_path)
         try:
-            image = tkinter.PhotoImage(master=self.root, format="png",
-                                       data=base64.b64encode(png_path.read_bytes()))
+            image = tkinter.PhotoImage(master=self.root, format="png", data=base64.b64encode(png_path.read_bytes()))
             self.label.configure(image=image)
-            self.image = image                 # the label does not keep the image alive
+            self.image = image  # the label does not keep the image alive
             self.root.title(f"{png_path.name} - cnlmc preview")
-        except tkinter.TclError:               # the window went away under us
+        except tkinter.TclError:  # the window went away under us
             self.close()
             return
         self.update()
@@ -205,6 +221,7 @@ class Window:
         if self.closed:
             return
         import tkinter
+
         try:
             self.root.update()
         except tkinter.TclError:
@@ -215,6 +232,7 @@ class Window:
             return
         self.closed = True
         import tkinter
+
         try:
             self.root.destroy()
         except tkinter.TclError:
@@ -227,17 +245,18 @@ class Window:
             fd = stdin.fileno()
         except (AttributeError, OSError, ValueError):
             fd = None
-        if fd is None or os.name == "nt":      # no descriptor to wait on: read, then catch up
+        if fd is None or os.name == "nt":  # no descriptor to wait on: read, then catch up
             line = stdin.readline()
             self.update()
             return None if self.closed else line
         import select
+
         pending = self._pending
         while True:
             end = pending.find(b"\n")
             if end >= 0:
-                self._pending = pending[end + 1:]
-                return _decode(pending[:end + 1], stdin)
+                self._pending = pending[end + 1 :]
+                return _decode(pending[: end + 1], stdin)
             self.update()
             if self.closed:
                 self._pending = pending
@@ -245,7 +264,7 @@ class Window:
             ready, _, _ = select.select([fd], [], [], self.TICK)
             if ready:
                 chunk = os.read(fd, 65536)
-                if not chunk:                  # end of input: the last line may lack its newline
+                if not chunk:  # end of input: the last line may lack its newline
                     self._pending = b""
                     return _decode(pending, stdin)
                 pending += chunk

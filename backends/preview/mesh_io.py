@@ -1,6 +1,7 @@
 """User meshes: OBJ (v/vt/vn, polygons fanned), PLY (ascii, binary little/big endian) and glTF 2.0
 (.gltf/.glb, gltf.py) in;
 PLY (binary, what Mitsuba reads) and OBJ out. Missing normals/UVs/tangents are derived."""
+
 from __future__ import annotations
 
 from pathlib import Path
@@ -9,13 +10,29 @@ import numpy as np
 
 from .meshes import Mesh, MeshError, make_mesh
 
-PLY_TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
-             "ushort": "u2", "uint16": "u2", "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4",
-             "float": "f4", "float32": "f4", "double": "f8", "float64": "f8"}
+PLY_TYPES = {
+    "char": "i1",
+    "int8": "i1",
+    "uchar": "u1",
+    "uint8": "u1",
+    "short": "i2",
+    "int16": "i2",
+    "ushort": "u2",
+    "uint16": "u2",
+    "int": "i4",
+    "int32": "i4",
+    "uint": "u4",
+    "uint32": "u4",
+    "float": "f4",
+    "float32": "f4",
+    "double": "f8",
+    "float64": "f8",
+}
 UV_NAMES = (("u", "v"), ("s", "t"), ("texture_u", "texture_v"))
 
 
 # ------------------------------------------------------------------------------- OBJ
+
 
 def _obj_index(token: str, count: int) -> int:
     i = int(token)
@@ -37,8 +54,10 @@ def load_obj(path) -> Mesh:
                 vn.append([float(x) for x in parts[1:4]])
             elif parts[0] == "f":
                 refs = [(p.split("/") + ["", ""])[:3] for p in parts[1:]]
-                face = [tuple(_obj_index(r[k], n) if r[k] else -1 for k, n in ((0, len(v)), (1, len(vt)), (2, len(vn))))
-                        for r in refs]
+                face = [
+                    tuple(_obj_index(r[k], n) if r[k] else -1 for k, n in ((0, len(v)), (1, len(vt)), (2, len(vn))))
+                    for r in refs
+                ]
                 corners += [(face[0], face[k], face[k + 1]) for k in range(1, len(face) - 1)]
         except (ValueError, IndexError) as exc:
             raise MeshError(f"{path}:{number}: cannot read {line.strip()!r} ({exc})") from None
@@ -68,6 +87,7 @@ def write_obj(mesh: Mesh, path) -> None:
 
 
 # ------------------------------------------------------------------------------- PLY
+
 
 def _ply_header(f, path):
     if f.readline().strip() != b"ply":
@@ -109,7 +129,7 @@ def _read_binary_element(f, element, endian):
 def _read_ascii_element(f, element):
     rows = [f.readline().split() for _ in range(element["count"])]
     if any(p[0] == "list" for p in element["props"]):
-        return None, [np.array(r[1:1 + int(r[0])], np.int64) for r in rows]
+        return None, [np.array(r[1 : 1 + int(r[0])], np.int64) for r in rows]
     names = [p[1] for p in element["props"]]
     data = np.array(rows, np.float64).reshape(-1, len(names))
     return {n: data[:, k] for k, n in enumerate(names)}, None
@@ -132,7 +152,7 @@ def load_ply(path) -> Mesh:
                 faces = lists
     if vertices is None or not faces:
         raise MeshError(f"{path}: PLY has no vertex or face element")
-    col = lambda n: np.asarray(vertices[n], np.float64)  # noqa: E731
+    col = lambda n: np.asarray(vertices[n], np.float64)
     names = vertices.dtype.names if hasattr(vertices, "dtype") else tuple(vertices)
     pos = np.stack([col("x"), col("y"), col("z")], 1)
     normals = np.stack([col("nx"), col("ny"), col("nz")], 1) if "nx" in names else None
@@ -147,9 +167,12 @@ def write_ply(mesh: Mesh, path, flip_v: bool = False) -> None:
     `flip_v` writes v' = 1 - v: Mitsuba 3 samples a bitmap's top row at v = 0 and does not flip
     PLY texture coordinates (its OBJ loader does), while our UVs put the top row at v = 1."""
     n, m = len(mesh.positions), len(mesh.indices)
-    header = ("ply\nformat binary_little_endian 1.0\ncomment cnlmc preview mesh\n"
-              f"element vertex {n}\n" + "".join(f"property float {p}\n" for p in ("x", "y", "z", "nx", "ny", "nz", "u", "v"))
-              + f"element face {m}\nproperty list uchar int vertex_indices\nend_header\n")
+    header = (
+        "ply\nformat binary_little_endian 1.0\ncomment cnlmc preview mesh\n"
+        f"element vertex {n}\n"
+        + "".join(f"property float {p}\n" for p in ("x", "y", "z", "nx", "ny", "nz", "u", "v"))
+        + f"element face {m}\nproperty list uchar int vertex_indices\nend_header\n"
+    )
     uvs = np.column_stack([mesh.uvs[:, 0], 1.0 - mesh.uvs[:, 1]]) if flip_v else mesh.uvs
     verts = np.hstack([mesh.positions, mesh.normals, uvs]).astype("<f4")
     faces = np.zeros(m, np.dtype([("n", "u1"), ("i", "<i4", (3,))]))
@@ -162,6 +185,7 @@ def write_ply(mesh: Mesh, path, flip_v: bool = False) -> None:
 
 def _load_gltf(path) -> Mesh:
     from .gltf import load_gltf
+
     return load_gltf(path)
 
 

@@ -4,6 +4,7 @@ Every mesh is indexed triangles with per-vertex position, unit normal, unit tang
 direction, Gram-Schmidt against the normal) and UV. World space is y-up; `MESHES` maps a
 name to its generator. `fit()` scales a mesh to a unit bounding sphere standing on y = 0.
 """
+
 from __future__ import annotations
 
 import math
@@ -17,11 +18,11 @@ DATA = Path(__file__).parent / "data"
 
 @dataclass
 class Mesh:
-    positions: np.ndarray   # (N, 3) float32
-    normals: np.ndarray     # (N, 3) float32, unit
-    tangents: np.ndarray    # (N, 3) float32, unit, orthogonal to the normal
-    uvs: np.ndarray         # (N, 2) float32
-    indices: np.ndarray     # (M, 3) uint32, counter-clockwise seen from outside
+    positions: np.ndarray  # (N, 3) float32
+    normals: np.ndarray  # (N, 3) float32, unit
+    tangents: np.ndarray  # (N, 3) float32, unit, orthogonal to the normal
+    uvs: np.ndarray  # (N, 2) float32
+    indices: np.ndarray  # (M, 3) uint32, counter-clockwise seen from outside
 
     def interleaved(self) -> np.ndarray:
         """position, normal, tangent, uv per vertex (11 floats): the preview's vertex layout."""
@@ -37,6 +38,7 @@ class MeshError(ValueError):
 
 
 # ------------------------------------------------------------------ normals and tangents
+
 
 def _unit(v: np.ndarray) -> np.ndarray:
     n = np.linalg.norm(v, axis=-1, keepdims=True)
@@ -93,10 +95,14 @@ def make_mesh(positions, indices, normals=None, uvs=None, tangents=None) -> Mesh
     if uvs is None:
         uvs = spherical_uvs(positions)
     uvs = np.asarray(uvs, np.float64)
-    tangents = (uv_tangents(positions, uvs, indices, normals) if tangents is None
-                else orthonormal_tangents(np.asarray(tangents, np.float64), normals))
-    return Mesh(positions.astype("f4"), normals.astype("f4"), tangents.astype("f4"), uvs.astype("f4"),
-                indices.astype("u4"))
+    tangents = (
+        uv_tangents(positions, uvs, indices, normals)
+        if tangents is None
+        else orthonormal_tangents(np.asarray(tangents, np.float64), normals)
+    )
+    return Mesh(
+        positions.astype("f4"), normals.astype("f4"), tangents.astype("f4"), uvs.astype("f4"), indices.astype("u4")
+    )
 
 
 def spherical_uvs(positions: np.ndarray) -> np.ndarray:
@@ -115,14 +121,15 @@ def grid_indices(rows: int, cols: int, offset: int = 0) -> np.ndarray:
 
 # ------------------------------------------------------------------------ generators
 
+
 def lathe(profile: list[tuple[float, float]], segments: int = 96) -> Mesh:
     """A surface of revolution about +y of one smooth polyline (r, y), from bottom to top.
 
     Normals come from the profile's tangent, so each call is one smoothly shaded part."""
     prof = np.asarray(profile, np.float64)
     d = np.gradient(prof, axis=0)
-    n2 = _unit(np.stack([d[:, 1], -d[:, 0]], 1))       # outward normal of the profile (r, y)
-    on_axis = prof[:, 0] < 1e-9                          # poles: the normal is the axis itself
+    n2 = _unit(np.stack([d[:, 1], -d[:, 0]], 1))  # outward normal of the profile (r, y)
+    on_axis = prof[:, 0] < 1e-9  # poles: the normal is the axis itself
     n2[on_axis] = np.stack([np.zeros(on_axis.sum()), np.sign(n2[on_axis, 1])], 1)
     phi = np.linspace(0, 2 * np.pi, segments + 1)
     s, c = np.sin(phi)[None, :], np.cos(phi)[None, :]
@@ -135,16 +142,22 @@ def lathe(profile: list[tuple[float, float]], segments: int = 96) -> Mesh:
     v = np.broadcast_to((arc / max(arc[-1], 1e-9))[:, None], pos.shape[:2])
     u = np.broadcast_to((phi / (2 * np.pi))[None, :], pos.shape[:2])
     idx = grid_indices(len(prof) - 1, segments)
-    idx = idx[:, [0, 2, 1]]                              # counter-clockwise from outside
-    return make_mesh(pos.reshape(-1, 3), idx, nor.reshape(-1, 3), np.stack([u, v], -1).reshape(-1, 2),
-                     tan.reshape(-1, 3))
+    idx = idx[:, [0, 2, 1]]  # counter-clockwise from outside
+    return make_mesh(
+        pos.reshape(-1, 3), idx, nor.reshape(-1, 3), np.stack([u, v], -1).reshape(-1, 2), tan.reshape(-1, 3)
+    )
 
 
 def merge(meshes: list[Mesh]) -> Mesh:
     offsets = np.cumsum([0] + [len(m.positions) for m in meshes[:-1]])
-    cat = lambda attr: np.concatenate([getattr(m, attr) for m in meshes])  # noqa: E731
-    return Mesh(cat("positions"), cat("normals"), cat("tangents"), cat("uvs"),
-                np.concatenate([m.indices + o for m, o in zip(meshes, offsets)]).astype("u4"))
+    cat = lambda attr: np.concatenate([getattr(m, attr) for m in meshes])
+    return Mesh(
+        cat("positions"),
+        cat("normals"),
+        cat("tangents"),
+        cat("uvs"),
+        np.concatenate([m.indices + o for m, o in zip(meshes, offsets)]).astype("u4"),
+    )
 
 
 def arc(cx: float, cy: float, radius: float, a0: float, a1: float, steps: int) -> list[tuple[float, float]]:
@@ -188,17 +201,21 @@ def shader_ball(segments: int = 96) -> Mesh:
     """A shader-ball-like form: a sphere with a recessed equatorial groove on a stepped pedestal."""
     ball_c, ball_r = 1.1, 0.8
     parts = [
-        [(0.0, 0.0), (0.55, 0.0)],                                       # base underside
-        [(0.55, 0.0), (0.55, 0.12)],                                     # base rim
-        [(0.55, 0.12), (0.22, 0.12)],                                    # base top
-        [(0.22, 0.12), (0.22, ball_c - ball_r * math.cos(0.28))],        # neck
-        arc(0.0, ball_c, ball_r, -math.pi / 2 + 0.28, -0.12, 28),        # lower ball
-        [(ball_r * math.cos(0.12), ball_c - ball_r * math.sin(0.12)),
-         (0.68, ball_c - ball_r * math.sin(0.12))],                      # groove floor (lower)
+        [(0.0, 0.0), (0.55, 0.0)],  # base underside
+        [(0.55, 0.0), (0.55, 0.12)],  # base rim
+        [(0.55, 0.12), (0.22, 0.12)],  # base top
+        [(0.22, 0.12), (0.22, ball_c - ball_r * math.cos(0.28))],  # neck
+        arc(0.0, ball_c, ball_r, -math.pi / 2 + 0.28, -0.12, 28),  # lower ball
+        [
+            (ball_r * math.cos(0.12), ball_c - ball_r * math.sin(0.12)),
+            (0.68, ball_c - ball_r * math.sin(0.12)),
+        ],  # groove floor (lower)
         [(0.68, ball_c - ball_r * math.sin(0.12)), (0.68, ball_c + ball_r * math.sin(0.12))],
-        [(0.68, ball_c + ball_r * math.sin(0.12)),
-         (ball_r * math.cos(0.12), ball_c + ball_r * math.sin(0.12))],   # groove ceiling
-        arc(0.0, ball_c, ball_r, 0.12, math.pi / 2, 28),                 # upper ball
+        [
+            (0.68, ball_c + ball_r * math.sin(0.12)),
+            (ball_r * math.cos(0.12), ball_c + ball_r * math.sin(0.12)),
+        ],  # groove ceiling
+        arc(0.0, ball_c, ball_r, 0.12, math.pi / 2, 28),  # upper ball
     ]
     # One walk up the outside: every part has the outside on its right (outward normals).
     return merge([lathe(p, segments) for p in parts])
@@ -208,9 +225,9 @@ def _read_teapot() -> tuple[np.ndarray, np.ndarray]:
     text = (DATA / "teapot.txt").read_text("utf-8")
     lines = [ln for ln in text.splitlines() if ln.strip() and not ln.startswith("#")]
     n_patches = int(lines[0])
-    patches = np.array([[int(i) - 1 for i in ln.split(",")] for ln in lines[1:1 + n_patches]])
+    patches = np.array([[int(i) - 1 for i in ln.split(",")] for ln in lines[1 : 1 + n_patches]])
     n_points = int(lines[1 + n_patches])
-    points = np.array([[float(x) for x in ln.split(",")] for ln in lines[2 + n_patches:2 + n_patches + n_points]])
+    points = np.array([[float(x) for x in ln.split(",")] for ln in lines[2 + n_patches : 2 + n_patches + n_points]])
     return patches, points
 
 
@@ -222,7 +239,7 @@ def teapot_patches() -> np.ndarray:
 
 def bernstein(t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     s = 1.0 - t
-    b = np.stack([s ** 3, 3 * s * s * t, 3 * s * t * t, t ** 3], -1)
+    b = np.stack([s**3, 3 * s * s * t, 3 * s * t * t, t**3], -1)
     db = np.stack([-3 * s * s, 3 * s * s - 6 * s * t, 6 * s * t - 3 * t * t, 3 * t * t], -1)
     return b, db
 
@@ -238,17 +255,17 @@ def teapot(steps: int = 12) -> Mesh:
     ctrl = teapot_patches()
     t = np.linspace(0.0, 1.0, steps + 1)
     b, _ = bernstein(t)
-    pos = np.einsum("ui,vj,pijc->puvc", b, b, ctrl)          # (P, u, v, 3)
+    pos = np.einsum("ui,vj,pijc->puvc", b, b, ctrl)  # (P, u, v, 3)
     P = len(ctrl)
     idx = np.concatenate([grid_indices(steps, steps, p * (steps + 1) ** 2) for p in range(P)])
     uv = np.stack(np.meshgrid(t, t, indexing="ij"), -1)
     uvs = np.broadcast_to(uv, (P,) + uv.shape).reshape(-1, 2)
     flat = pos.reshape(-1, 3)
-    flat = flat[:, [0, 2, 1]] * [1.0, 1.0, -1.0]              # z-up -> y-up (right-handed)
+    flat = flat[:, [0, 2, 1]] * [1.0, 1.0, -1.0]  # z-up -> y-up (right-handed)
     welded, widx, first = _weld(flat, idx)
     keep = (widx[:, 0] != widx[:, 1]) & (widx[:, 1] != widx[:, 2]) & (widx[:, 0] != widx[:, 2])
     widx = widx[keep]
-    if signed_volume(welded, widx) < 0:                       # make the winding outward
+    if signed_volume(welded, widx) < 0:  # make the winding outward
         widx = widx[:, [0, 2, 1]]
     normals = vertex_normals(welded, widx)
     return make_mesh(welded, widx, normals, uvs[first])
@@ -278,4 +295,5 @@ def mesh_by_name(name_or_path: str) -> Mesh:
     if name_or_path in MESHES:
         return MESHES[name_or_path]()
     from .mesh_io import load_mesh
+
     return load_mesh(name_or_path)

@@ -3,6 +3,7 @@ in Mitsuba's envmap convention), key light (`directional`) and the material as t
 backend's BSDF (`form=fragment`, included by id). Used by bench/preview_chart.py as the
 reference renderer.
 """
+
 from __future__ import annotations
 
 import math
@@ -80,37 +81,62 @@ def _vec(v) -> str:
     return ", ".join(f"{float(x):.9g}" for x in v)
 
 
-def export_scene(material: dict, scene: Scene, out_dir, width: int, height: int, spp: int = 64,
-                 seed: int = 0, hide_background: bool = True, bsdf: str = "native", sampler: str | None = None) -> Path:
+def export_scene(
+    material: dict,
+    scene: Scene,
+    out_dir,
+    width: int,
+    height: int,
+    spp: int = 64,
+    seed: int = 0,
+    hide_background: bool = True,
+    bsdf: str = "native",
+    sampler: str | None = None,
+) -> Path:
     """Write scene.xml, materials.xml (+ baked textures), mesh.ply and environment.exr.
     `bsdf="cnlm"` uses cnlmc's own BSDF through the `cnlm` plugin (backends/mitsuba_cnlm.py).
     `sampler`: default `sampler_for(spp)` (render at that spp: ldsampler rounds others up)."""
     from cnlmc.backends import mitsuba
+
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    result = mitsuba.emit({"ir_version": 1, "materials": [material], "diagnostics": []},
-                          {"form": "fragment", "bsdf": bsdf})
+    result = mitsuba.emit(
+        {"ir_version": 1, "materials": [material], "diagnostics": []}, {"form": "fragment", "bsdf": bsdf}
+    )
     for artifact in result.artifacts:
         path = out / artifact.name
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_bytes(artifact.content if isinstance(artifact.content, bytes) else artifact.content.encode())
     bsdf_id = _bsdf_id(out / "materials.xml")
-    write_ply(scene.mesh, out / "mesh.ply", flip_v=True)   # Mitsuba: bitmap top row at v = 0
-    write_exr(out / "environment.exr", mitsuba_rows(scene.env.image))   # Mitsuba's row positions
+    write_ply(scene.mesh, out / "mesh.ply", flip_v=True)  # Mitsuba: bitmap top row at v = 0
+    write_exr(out / "environment.exr", mitsuba_rows(scene.env.image))  # Mitsuba's row positions
     cam = scene.camera
     distance = float(np.linalg.norm(np.subtract(cam.eye, cam.target)))
     xml = SCENE_TEMPLATE.format(
-        spp=int(spp), width=int(width), height=int(height), hide="true" if hide_background else "false",
-        fov=cam.fov_y, near=max(distance * 0.01, 1e-3), far=distance * 10, eye=_vec(cam.eye),
-        target=_vec(cam.target), up=_vec(cam.up), seed=int(seed), sampler=sampler or sampler_for(spp), env_scale=scene.env_intensity,
-        light_dir=_vec(-scene.env.key.unit), irradiance=scene.env.key.irradiance * scene.env_intensity,
-        bsdf_id=quoteattr(bsdf_id))
+        spp=int(spp),
+        width=int(width),
+        height=int(height),
+        hide="true" if hide_background else "false",
+        fov=cam.fov_y,
+        near=max(distance * 0.01, 1e-3),
+        far=distance * 10,
+        eye=_vec(cam.eye),
+        target=_vec(cam.target),
+        up=_vec(cam.up),
+        seed=int(seed),
+        sampler=sampler or sampler_for(spp),
+        env_scale=scene.env_intensity,
+        light_dir=_vec(-scene.env.key.unit),
+        irradiance=scene.env.key.irradiance * scene.env_intensity,
+        bsdf_id=quoteattr(bsdf_id),
+    )
     (out / "scene.xml").write_text(xml)
     return out / "scene.xml"
 
 
 def _bsdf_id(materials_xml: Path) -> str:
     import xml.etree.ElementTree as ET
+
     root = ET.parse(materials_xml).getroot()
     for child in root:
         if child.tag == "bsdf" and child.get("id"):
@@ -118,8 +144,9 @@ def _bsdf_id(materials_xml: Path) -> str:
     raise ValueError(f"{materials_xml}: no BSDF with an id")
 
 
-def render_scene(path, spp: int | None = None, seed: int = 0, variant: str | None = None,
-                 warm: bool = False) -> tuple[np.ndarray, float]:
+def render_scene(
+    path, spp: int | None = None, seed: int = 0, variant: str | None = None, warm: bool = False
+) -> tuple[np.ndarray, float]:
     """Render with Mitsuba: (linear RGBA float32, top row first; seconds of the render call).
     RGB is premultiplied by the alpha (coverage): composite as rgb + background * (1 - alpha).
 
@@ -129,6 +156,7 @@ def render_scene(path, spp: int | None = None, seed: int = 0, variant: str | Non
     `warm=True` renders once untimed first (JIT compilation and kernel caches), so the time
     is the steady-state cost, like the preview's warm frame time."""
     import mitsuba as mi
+
     if variant != "vectorized":
         if variant:
             mi.set_variant(variant)
@@ -136,6 +164,7 @@ def render_scene(path, spp: int | None = None, seed: int = 0, variant: str | Non
             mi.set_variant("scalar_rgb")
         return _timed_render(path, spp, seed, warm)
     from cnlmc.backends import mitsuba_cnlm
+
     mitsuba_cnlm.register()
     previous = mitsuba_cnlm.set_symbolic(not uses_plugin(path))
     try:
@@ -154,6 +183,7 @@ def _timed_render(path, spp, seed, warm) -> tuple[np.ndarray, float]:
     import time
 
     import mitsuba as mi
+
     scene = mi.load_file(str(path), **({"spp": spp} if spp else {}))
     if warm:
         np.array(mi.render(scene, seed=seed + 1))

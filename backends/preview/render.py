@@ -4,6 +4,7 @@ environment, rendered offscreen with MSAA, tone mapped to sRGB.
     r = Renderer(size=512)
     frame = r.render(material, mesh="sphere", tier="fis16")   # -> Frame(rgba8, hdr, ms)
 """
+
 from __future__ import annotations
 
 import json
@@ -35,9 +36,9 @@ BACKGROUND_SCALE = 4
 
 @dataclass
 class Frame:
-    rgba: np.ndarray         # (H, W, 4) uint8, sRGB, top row first; alpha = coverage
-    hdr: np.ndarray | None   # (H, W, 4) float32 linear radiance before tone mapping (top row first)
-    ms: float                # GPU frame time (draw + resolve + tone map, finished), milliseconds
+    rgba: np.ndarray  # (H, W, 4) uint8, sRGB, top row first; alpha = coverage
+    hdr: np.ndarray | None  # (H, W, 4) float32 linear radiance before tone mapping (top row first)
+    ms: float  # GPU frame time (draw + resolve + tone map, finished), milliseconds
     tier: str = ""
     notes: list = field(default_factory=list)
 
@@ -47,7 +48,7 @@ class MaterialShader:
     name: str
     library: str
     plan: dict
-    samplers: list           # [{"name", "role", ...}] from the sidecar
+    samplers: list  # [{"name", "role", ...}] from the sidecar
     notes: list
 
 
@@ -57,10 +58,15 @@ def material_plan(sidecar: dict) -> dict:
     base = model["base"]
     uniforms = {u["name"] for u in sidecar["uniforms"]}
     coat = "cnlm_coat_ior" in uniforms
-    plan = {"base": base, "microfacet": base in MICROFACET, "anisotropic": bool(model.get("anisotropic")) and base in MICROFACET,
-            "coat": coat, "coat_color": "cnlm_coat_color" in uniforms,
-            "normal_map": any(s["role"] == "normal" for s in sidecar["samplers"]),
-            "roughness_map": any(s["role"] == "roughness" for s in sidecar["samplers"])}
+    plan = {
+        "base": base,
+        "microfacet": base in MICROFACET,
+        "anisotropic": bool(model.get("anisotropic")) and base in MICROFACET,
+        "coat": coat,
+        "coat_color": "cnlm_coat_color" in uniforms,
+        "normal_map": any(s["role"] == "normal" for s in sidecar["samplers"]),
+        "roughness_map": any(s["role"] == "roughness" for s in sidecar["samplers"]),
+    }
     plan["strategy"] = [repr(float(x)) for x in lobe_shares(base, coat)]
     plan["summary"] = " + ".join(k for k in ("base", "anisotropic", "coat", "normal_map") if plan[k] is True) or base
     plan["summary"] = f"{base}" + "".join(f", {k}" for k in ("anisotropic", "coat", "normal_map") if plan[k])
@@ -73,6 +79,7 @@ _SHADERS: dict = {}
 def material_shader(material: dict, glsl_options: dict | None = None) -> MaterialShader:
     """The library form of one material (cached by material and options)."""
     from cnlmc.backends import glsl
+
     opts = {k: str(v) for k, v in (glsl_options or {}).items() if k in GLSL_OPTION_KEYS}
     key = json.dumps([material, opts], sort_keys=True, default=str)
     if key not in _SHADERS:
@@ -82,13 +89,15 @@ def material_shader(material: dict, glsl_options: dict | None = None) -> Materia
         name = material["name"]
         sidecar = json.loads(files[f"{name}.glsl.json"])
         plan = material_plan(sidecar)
-        plan["split_fitted"] = split_fitted(material, plan["roughness_map"])   # split.glsl.j2: two lookups
-        _SHADERS[key] = MaterialShader(name, files[f"{name}.glsl"], plan, sidecar["samplers"],
-                                       [n.text() for n in result.notes])
+        plan["split_fitted"] = split_fitted(material, plan["roughness_map"])  # split.glsl.j2: two lookups
+        _SHADERS[key] = MaterialShader(
+            name, files[f"{name}.glsl"], plan, sidecar["samplers"], [n.text() for n in result.notes]
+        )
     return _SHADERS[key]
 
 
 # ------------------------------------------------------------------ GPU resources
+
 
 class EnvResources:
     """Environment textures: radiance (mip-mapped), GGX-prefiltered levels, and on demand the
@@ -122,6 +131,7 @@ class EnvResources:
     def _prefilter_pass(self, alpha: float, size: tuple, samples: int, cosine: bool = False) -> np.ndarray:
         """One pass of prefilter.frag at `alpha` into a (h, w, 3) float32 array."""
         import moderngl
+
         ctx = gl.current()
         prog = gl.program(gl.shader_file("fullscreen.vert"), gl.shader_file("prefilter.frag"))
         vao = ctx.vertex_array(prog, [])
@@ -142,8 +152,9 @@ class EnvResources:
         return np.ascontiguousarray(data)
 
     def _prefilter_level(self, alpha: float):
-        texture = gl.float_texture(self._prefilter_pass(alpha, self.size, PREFILTER_SAMPLES), mipmaps=False,
-                                   repeat=(True, False))
+        texture = gl.float_texture(
+            self._prefilter_pass(alpha, self.size, PREFILTER_SAMPLES), mipmaps=False, repeat=(True, False)
+        )
         return texture
 
     def _prefilter(self, samples: int = PREFILTER_SAMPLES):
@@ -167,12 +178,14 @@ class Targets:
     def __init__(self, width: int, height: int, msaa: int):
         ctx = gl.current()
         self.size = (width, height)
-        self.rect = None           # what the last draw() cleared, tone mapped and will read (None: all)
+        self.rect = None  # what the last draw() cleared, tone mapped and will read (None: all)
         self.samples = msaa if msaa > 1 else 0
         self.resolved_tex = ctx.texture(self.size, 4, dtype=self.HDR_DTYPE)
         if self.samples:
-            self.msaa = ctx.framebuffer([ctx.renderbuffer(self.size, 4, samples=msaa, dtype=self.HDR_DTYPE)],
-                                        ctx.depth_renderbuffer(self.size, samples=msaa))
+            self.msaa = ctx.framebuffer(
+                [ctx.renderbuffer(self.size, 4, samples=msaa, dtype=self.HDR_DTYPE)],
+                ctx.depth_renderbuffer(self.size, samples=msaa),
+            )
             self.resolved = ctx.framebuffer([self.resolved_tex])
         else:
             self.msaa = self.resolved = ctx.framebuffer([self.resolved_tex], ctx.depth_renderbuffer(self.size))
@@ -232,13 +245,13 @@ def is_closed(mesh: Mesh) -> bool:
     key = id(mesh)
     if key not in _CLOSED:
         _, weld = np.unique(np.round(np.asarray(mesh.positions, np.float64), 6), axis=0, return_inverse=True)
-        tri = weld.reshape(-1)[np.asarray(mesh.indices, np.int64)]       # UV seams welded by position
+        tri = weld.reshape(-1)[np.asarray(mesh.indices, np.int64)]  # UV seams welded by position
         tri = tri[(tri[:, 0] != tri[:, 1]) & (tri[:, 1] != tri[:, 2]) & (tri[:, 2] != tri[:, 0])]
         edges = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
         n = int(edges.max()) + 1
         forward = np.unique(edges[:, 0] * n + edges[:, 1])
         backward = np.unique(edges[:, 1] * n + edges[:, 0])
-        _CLOSED[key] = (len(forward) == len(edges) and np.array_equal(forward, backward))
+        _CLOSED[key] = len(forward) == len(edges) and np.array_equal(forward, backward)
     return _CLOSED[key]
 
 
@@ -252,14 +265,20 @@ def encode_map(role: str, array: np.ndarray) -> np.ndarray:
 
 def neutral_map(role: str, params: dict, size: int = 4) -> np.ndarray:
     """A uniform stand-in for a map that cannot be baked (the material's own value)."""
-    value = {"base_color": params.get("base_color", [0.8, 0.8, 0.8]), "normal": [0.0, 0.0, 1.0],
-             "roughness": params.get("roughness", 0.5), "mask": 0.0, "metallic": 0.0}.get(role, 0.0)
+    value = {
+        "base_color": params.get("base_color", [0.8, 0.8, 0.8]),
+        "normal": [0.0, 0.0, 1.0],
+        "roughness": params.get("roughness", 0.5),
+        "mask": 0.0,
+        "metallic": 0.0,
+    }.get(role, 0.0)
     return np.broadcast_to(np.asarray(value, np.float32), (size, size) + np.shape(value)).copy()
 
 
 def bake_maps(material: dict, size: int, seed: int, notes: list | None = None) -> dict:
     """Bake every map role; a role whose graph fails gets a neutral map and a note."""
     from cnlmc.backends.maps import MapError, bake
+
     refs, params = material.get("maps", {}), material["params"]
     try:
         return bake(refs, params, size, seed)
@@ -280,8 +299,12 @@ def map_textures(material: dict, samplers: list, size: int = MAP_SIZE, seed: int
     """sampler name -> texture, baked with cnlmc.backends.maps (cached per material maps)."""
     if not samplers:
         return {}
-    key = (json.dumps(material.get("maps", {}), sort_keys=True), json.dumps(material["params"], sort_keys=True,
-                                                                                  default=str), size, seed)
+    key = (
+        json.dumps(material.get("maps", {}), sort_keys=True),
+        json.dumps(material["params"], sort_keys=True, default=str),
+        size,
+        seed,
+    )
     if key not in _MAPS:
         arrays = bake_maps(material, size, seed)
         _MAPS[key] = {role: gl.float_texture(encode_map(role, arr)) for role, arr in arrays.items()}
@@ -296,13 +319,18 @@ def split_textures(material: dict, plan: dict, res: EnvResources, glsl_options: 
     """sampler name -> texture for the split-sum tier: the material's albedo tables, and the
     environment prefiltered at exactly the base's and the coat's alpha when they are uniform."""
     from cnlmc.bsdf.evaluate import coat_alpha, material_alpha
+
     opts = glsl_options or {}
     fresnel, multiscatter = str(opts.get("fresnel", "exact")), str(opts.get("multiscatter", "off")) == "on"
-    key = (json.dumps([material["model"], material["params"]], sort_keys=True, default=str), fresnel, multiscatter,
-           plan["roughness_map"])
+    key = (
+        json.dumps([material["model"], material["params"]], sort_keys=True, default=str),
+        fresnel,
+        multiscatter,
+        plan["roughness_map"],
+    )
     if key not in _SPLIT_TABLES:
         black, tint = albedo_tables(material, fresnel, multiscatter, plan["roughness_map"])
-        flat = lambda table: gl.float_texture(table, mipmaps=False, repeat=(False, False))  # noqa: E731
+        flat = lambda table: gl.float_texture(table, mipmaps=False, repeat=(False, False))
         _SPLIT_TABLES[key] = {"pv_black_albedo": flat(black), "pv_tint_albedo": flat(tint)}
     textures = dict(_SPLIT_TABLES[key])
     textures["pv_env_irradiance"] = res.irradiance
@@ -320,12 +348,13 @@ def split_textures(material: dict, plan: dict, res: EnvResources, glsl_options: 
 
 # ------------------------------------------------------------------------ render
 
+
 @dataclass
 class Scene:
     mesh: Mesh
     camera: Camera
     env: Environment
-    background: str = "env"          # "env" (blurred environment), "transparent", "none"
+    background: str = "env"  # "env" (blurred environment), "transparent", "none"
     background_lod: float = 3.0
     exposure: float = 1.0
     env_intensity: float = 1.0
@@ -342,8 +371,9 @@ def default_scene(mesh: str | Mesh = "sphere", env: str | Environment = "studio"
     return Scene(mesh, framing_camera(lo, hi, aspect=size[0] / size[1]), env)
 
 
-def screen_rect(points: np.ndarray, view_projection: np.ndarray, width: int, height: int,
-                pad: int = 0) -> tuple[int, int, int, int] | None:
+def screen_rect(
+    points: np.ndarray, view_projection: np.ndarray, width: int, height: int, pad: int = 0
+) -> tuple[int, int, int, int] | None:
     """Pixel rectangle (x, y, w, h; OpenGL window coordinates) covering homogeneous world
     points (N, 4) after projection, padded and clipped to the frame; None if a point is at or
     behind the camera plane (its projection is unbounded)."""
@@ -386,7 +416,7 @@ def read_image(fbo, rect: tuple[int, int, int, int] | None, size: tuple[int, int
     x, y, w, h = rect
     if w and h:
         data = np.frombuffer(fbo.read(viewport=rect, components=4, dtype=dtype), numpy_type).reshape(h, w, 4)
-        image[height - y - h:height - y, x:x + w] = data[::-1]
+        image[height - y - h : height - y, x : x + w] = data[::-1]
     return image
 
 
@@ -396,14 +426,14 @@ class Renderer:
     def __init__(self, width: int = 512, height: int | None = None, msaa: int = DEFAULT_MSAA, edge_aa: bool = True):
         self.width, self.height = width, height or width
         self.msaa = msaa
-        self.edge_aa = edge_aa          # the tone-map pass's edge filter, used when msaa <= 1
+        self.edge_aa = edge_aa  # the tone-map pass's edge filter, used when msaa <= 1
         self.ctx = gl.current()
 
     # -- programs
     def object_program(self, shader: MaterialShader, tier: Tier):
         key = (id(shader), tier.ibl)
         cached = _OBJECT_PROGRAMS.get(key)
-        if cached is None or cached[0] is not shader:     # an id can be reused once its object is gone
+        if cached is None or cached[0] is not shader:  # an id can be reused once its object is gone
             frag = gl.preview_fragment(shader.name, shader.library, shader.plan, tier.ibl)
             cached = _OBJECT_PROGRAMS[key] = (shader, gl.program(gl.shader_file("preview.vert"), frag))
         return cached[1]
@@ -446,6 +476,7 @@ class Renderer:
     def _draw_background(self, t: Targets, scene: Scene, res: EnvResources) -> None:
         """The blurred environment seen through each pixel, at 1/BACKGROUND_SCALE resolution."""
         import moderngl
+
         prog, vao = self.fullscreen("background.frag")
         res.radiance.use(0)
         gl.set_uniform(prog, "pv_env", 0)
@@ -458,9 +489,18 @@ class Renderer:
         vao.render(moderngl.TRIANGLES, vertices=3)
         self.ctx.viewport = (0, 0, self.width, self.height)
 
-    def _draw_object(self, scene: Scene, material: dict, shader: MaterialShader, tier: Tier, res: EnvResources,
-                     model: np.ndarray, glsl_options: dict | None = None) -> None:
+    def _draw_object(
+        self,
+        scene: Scene,
+        material: dict,
+        shader: MaterialShader,
+        tier: Tier,
+        res: EnvResources,
+        model: np.ndarray,
+        glsl_options: dict | None = None,
+    ) -> None:
         import moderngl
+
         prog = self.object_program(shader, tier)
         textures = dict(map_textures(material, shader.samplers))
         if tier.ibl == "splitsum":
@@ -477,7 +517,7 @@ class Renderer:
         gl.set_uniform(prog, "pv_key_direction", scene.env.key.unit)
         gl.set_uniform(prog, "pv_key_irradiance", [scene.env.key.irradiance * scene.env_intensity] * 3)
         self.ctx.enable(moderngl.DEPTH_TEST)
-        if is_closed(scene.mesh):            # back faces of a closed mesh are never seen: not shaded
+        if is_closed(scene.mesh):  # back faces of a closed mesh are never seen: not shaded
             self.ctx.enable(moderngl.CULL_FACE)
         self.object_vao(prog, scene.mesh).render(moderngl.TRIANGLES)
         self.ctx.disable(moderngl.CULL_FACE)
@@ -496,14 +536,21 @@ class Renderer:
                 parts.append(f"{size * 4}x")
         return " ".join(parts), names
 
-    def _tonemap(self, t: Targets, scene: Scene, res: EnvResources, background: bool,
-                 rect: tuple[int, int, int, int] | None = None) -> None:
+    def _tonemap(
+        self,
+        t: Targets,
+        scene: Scene,
+        res: EnvResources,
+        background: bool,
+        rect: tuple[int, int, int, int] | None = None,
+    ) -> None:
         """Edge filter (without MSAA), the environment background (where the object does not
         cover the pixel), exposure, ACES, sRGB, in one pass over `rect` (x, y, w, h), where
         something was drawn, or over the whole frame when rect is None. Outside `rect`: the
         background alone (a variant without the object layer's five reads), or nothing
         (read_image() reads `rect` back; the rest is transparent black, what the pass writes)."""
         import moderngl
+
         self.ctx.disable(moderngl.DEPTH_TEST)
         t.ldr.use()
         vao = self._tonemap_program(t, scene, background)
@@ -530,8 +577,15 @@ class Renderer:
             gl.set_uniform(prog, "pv_background_image", 1)
         return vao
 
-    def draw(self, scene: Scene, material: dict, tier: Tier | str = DEFAULT_TIER, glsl_options: dict | None = None,
-             model: np.ndarray | None = None, overlay=None) -> Targets:
+    def draw(
+        self,
+        scene: Scene,
+        material: dict,
+        tier: Tier | str = DEFAULT_TIER,
+        glsl_options: dict | None = None,
+        model: np.ndarray | None = None,
+        overlay=None,
+    ) -> Targets:
         """Draw into the targets (no read-back); `overlay(renderer, scene)` draws extra geometry."""
         self.ctx.__enter__()  # ours must be the current context (another may have been made current)
         tier = parse_tier(tier) if isinstance(tier, str) else tier
@@ -554,7 +608,7 @@ class Renderer:
         t.resolve(self.ctx)
         if scene.background == "env":
             self._draw_background(t, scene, res)
-        self._tonemap(t, scene, res, scene.background == "env", drawn)     # composites the background
+        self._tonemap(t, scene, res, scene.background == "env", drawn)  # composites the background
         return t
 
     #: pixels around the projected bounds: the edge filter's 1-pixel reach, and rounding.
@@ -574,15 +628,23 @@ class Renderer:
             points = np.vstack([points, extra()])
         return screen_rect(points, scene.camera.view_projection, self.width, self.height, self.RECT_PAD)
 
-    def render(self, material: dict, mesh: str | Mesh = "sphere", tier: Tier | str = DEFAULT_TIER,
-               glsl_options: dict | None = None, env: str | Environment = "studio", scene: Scene | None = None,
-               hdr: bool = False, **draw_options) -> Frame:
+    def render(
+        self,
+        material: dict,
+        mesh: str | Mesh = "sphere",
+        tier: Tier | str = DEFAULT_TIER,
+        glsl_options: dict | None = None,
+        env: str | Environment = "studio",
+        scene: Scene | None = None,
+        hdr: bool = False,
+        **draw_options,
+    ) -> Frame:
         """Render one material; returns the sRGB image (top row first) and the frame time."""
         scene = scene or default_scene(mesh, env, (self.width, self.height))
         tier = parse_tier(tier) if isinstance(tier, str) else tier
         shader = material_shader(material, glsl_options)
         warm_key = (id(shader), tier.name, id(scene.mesh), id(scene.env), self.width, self.height)
-        if warm_key not in _WARM:       # the first frame compiles and uploads: drawn once untimed
+        if warm_key not in _WARM:  # the first frame compiles and uploads: drawn once untimed
             self.draw(scene, material, tier, glsl_options, **draw_options)
             self.ctx.finish()
             _WARM.add(warm_key)

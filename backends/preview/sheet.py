@@ -1,4 +1,5 @@
 """Images out: PNG encoding, labelled tiles and the side-by-side sheet of 'or' variants."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -6,6 +7,7 @@ import numpy as np
 
 def png_bytes(rgba: np.ndarray) -> bytes:
     import cv2
+
     image = cv2.cvtColor(rgba, cv2.COLOR_RGBA2BGRA if rgba.shape[2] == 4 else cv2.COLOR_RGB2BGR)
     ok, data = cv2.imencode(".png", image)
     if not ok:
@@ -23,6 +25,7 @@ def over(rgba: np.ndarray, background=(0.5, 0.5, 0.5)) -> np.ndarray:
 def label(tile: np.ndarray, text: str) -> np.ndarray:
     """The tile with a caption strip at the bottom (ASCII only, shortened to fit)."""
     import cv2
+
     h, w = tile.shape[:2]
     strip = max(14, h // 12)
     out = np.vstack([tile, np.full((strip, w, 4), (32, 32, 32, 255), np.uint8)])
@@ -30,8 +33,9 @@ def label(tile: np.ndarray, text: str) -> np.ndarray:
     text = text.encode("ascii", "replace").decode()
     while text and cv2.getTextSize(text, cv2.FONT_HERSHEY_SIMPLEX, scale, 1)[0][0] > w - 6:
         text = text[:-2] + "~" if len(text) > 2 else ""
-    cv2.putText(out, text, (3, h + int(strip * 0.72)), cv2.FONT_HERSHEY_SIMPLEX, scale, (235, 235, 235, 255), 1,
-                cv2.LINE_AA)
+    cv2.putText(
+        out, text, (3, h + int(strip * 0.72)), cv2.FONT_HERSHEY_SIMPLEX, scale, (235, 235, 235, 255), 1, cv2.LINE_AA
+    )
     return out
 
 
@@ -51,5 +55,5 @@ def sheet(rows: list[list[np.ndarray]], gap: int = 4) -> np.ndarray:
     out = np.full((len(rows) * (h + gap) - gap, cols * (w + gap) - gap, 4), (20, 20, 20, 255), np.uint8)
     for i, row in enumerate(rows):
         for j, tile in enumerate(row):
-            out[i * (h + gap):i * (h + gap) + h, j * (w + gap):j * (w + gap) + w] = tile
+            out[i * (h + gap) : i * (h + gap) + h, j * (w + gap) : j * (w + gap) + w] = tile
     return out

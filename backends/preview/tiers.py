@@ -4,39 +4,58 @@ A tier is how the environment light is integrated; the key light is always evalu
 with cnlm_bsdf. Every tier combines with the GLSL backend's options (fresnel=exact|f82|schlick,
 multiscatter=on|off), which change the BSDF the tier integrates.
 """
+
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 
 @dataclass(frozen=True)
 class Tier:
     name: str
-    ibl: str            # "ambient" | "splitsum" | "sampled"
+    ibl: str  # "ambient" | "splitsum" | "sampled"
     samples: int = 0
     filtered: bool = False
     doc: str = ""
 
 
 TIERS = {
-    "analytic": Tier("analytic", "ambient", doc="key light + constant ambient (mean environment radiance x pi f(v, n))"),
-    "splitsum": Tier("splitsum", "splitsum", doc="key light + environment prefiltered at the lobe's alpha x the "
-                     "material's own directional albedo (split sum, Karis 2013, specialized per material) + "
-                     "cosine-prefiltered irradiance x the diffuse directional albedo"),
-    "fis16": Tier("fis16", "sampled", 16, True, "key light + 16 BSDF samples per pixel, MIS, environment mip "
-                  "level from the pdf (filtered importance sampling, Krivanek & Colbert 2008)"),
+    "analytic": Tier(
+        "analytic", "ambient", doc="key light + constant ambient (mean environment radiance x pi f(v, n))"
+    ),
+    "splitsum": Tier(
+        "splitsum",
+        "splitsum",
+        doc="key light + environment prefiltered at the lobe's alpha x the "
+        "material's own directional albedo (split sum, Karis 2013, specialized per material) + "
+        "cosine-prefiltered irradiance x the diffuse directional albedo",
+    ),
+    "fis16": Tier(
+        "fis16",
+        "sampled",
+        16,
+        True,
+        "key light + 16 BSDF samples per pixel, MIS, environment mip "
+        "level from the pdf (filtered importance sampling, Krivanek & Colbert 2008)",
+    ),
     "fis64": Tier("fis64", "sampled", 64, True, "as fis16 with 64 samples"),
-    "mc16": Tier("mc16", "sampled", 16, False, "key light + 16-sample Monte Carlo IBL per pixel (MIS of cosine and "
-                 "GGX visible normals), per-pixel rotated Hammersley, unfiltered: unbiased, noisy"),
+    "mc16": Tier(
+        "mc16",
+        "sampled",
+        16,
+        False,
+        "key light + 16-sample Monte Carlo IBL per pixel (MIS of cosine and "
+        "GGX visible normals), per-pixel rotated Hammersley, unfiltered: unbiased, noisy",
+    ),
     "mc64": Tier("mc64", "sampled", 64, False, "as mc16 with 64 samples"),
     "mc256": Tier("mc256", "sampled", 256, False, "as mc16 with 256 samples"),
     "mc1024": Tier("mc1024", "sampled", 1024, False, "as mc16 with 1024 samples (reference-like)"),
 }
 #: Worst to best image quality (by the error against Mitsuba, bench/preview_chart.py).
 QUALITY_ORDER = ("analytic", "splitsum", "mc16", "fis16", "mc64", "fis64", "mc256", "mc1024")
-DEFAULT_TIER = "splitsum"   # lowest mean FLIP per ms in bench/preview_chart.py (docs/preview.md)
+DEFAULT_TIER = "splitsum"  # lowest mean FLIP per ms in bench/preview_chart.py (docs/preview.md)
 _GENERIC = re.compile(r"^(mc|fis)(\d+)$")
 
 
@@ -56,8 +75,9 @@ def parse_tier(name: str) -> Tier:
     raise TierError(f"unknown preview tier {name!r}: use one of {', '.join(TIERS)} or mc<N> / fis<N>")
 
 
-def select_tier(budget_ms: float, measure: Callable[[Tier], float],
-                candidates=QUALITY_ORDER) -> tuple[Tier, dict[str, float]]:
+def select_tier(
+    budget_ms: float, measure: Callable[[Tier], float], candidates=QUALITY_ORDER
+) -> tuple[Tier, dict[str, float]]:
     """The best-quality tier whose measured frame time (ms) fits the budget.
 
     Tiers are measured in quality order (which is also, roughly, cost order) and measuring

@@ -9,6 +9,7 @@
 Below ALPHA_MIRROR = 1e-3 a lobe is a perfect mirror: the GGX D term breaks down in
 float32 there (data/README.md, brdf_accuracy_checks.json "ggx_small_alpha_float32").
 """
+
 from __future__ import annotations
 
 import numpy as np

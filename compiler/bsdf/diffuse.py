@@ -3,6 +3,7 @@
 Both return RGB (..., 3) BRDF values for an albedo of shape (3,) (or broadcastable),
 0 when either direction is below the horizon. Both are reciprocal.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -24,7 +25,7 @@ def lambert(wo, wi, albedo=(1.0, 1.0, 1.0)):
 def oren_nayar_ab(sigma):
     """Oren & Nayar 1994 qualitative-model coefficients for slope deviation σ (rad).
 
-        A = 1 − 0.5 σ² / (σ² + 0.33),   B = 0.45 σ² / (σ² + 0.09)
+    A = 1 − 0.5 σ² / (σ² + 0.33),   B = 0.45 σ² / (σ² + 0.09)
     """
     s2 = np.asarray(sigma, dtype=np.float64) ** 2
     return 1.0 - 0.5 * s2 / (s2 + 0.33), 0.45 * s2 / (s2 + 0.09)

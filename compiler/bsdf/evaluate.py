@@ -25,14 +25,22 @@ the base's Fresnel then uses IORs relative to the coat (η/η_c, k/η_c, ior/η_
 of the Schlick/F82 modes stay as measured in air — an approximation).
 For dielectrics, ``fresnel="schlick"`` or ``"f82"`` both mean Schlick(f0_from_ior).
 """
+
 from __future__ import annotations
 
 import numpy as np
 
 from .alpha import alpha_from_roughness, clamp_alpha
 from .diffuse import lambert, oren_nayar
-from .fresnel import (f0_conductor, f0_from_ior, fresnel_average, fresnel_conductor,
-                      fresnel_dielectric, fresnel_f82, fresnel_schlick)
+from .fresnel import (
+    f0_conductor,
+    f0_from_ior,
+    fresnel_average,
+    fresnel_conductor,
+    fresnel_dielectric,
+    fresnel_f82,
+    fresnel_schlick,
+)
 from .geometry import as_dirs, cos_theta, dir_from_mu, half_vector, rotate_tangent
 from .integrate import albedo_mis
 from .layered import coated
@@ -56,8 +64,7 @@ def material_alpha(material: dict):
         ax, ay = params["alpha"]
         return clamp_alpha(ax), clamp_alpha(ay)
     aniso = params.get("anisotropy", 0.0) if model.get("anisotropic") else 0.0
-    return alpha_from_roughness(params.get("roughness", 0.5), aniso,
-                                params.get("alpha_convention", "squared"))
+    return alpha_from_roughness(params.get("roughness", 0.5), aniso, params.get("alpha_convention", "squared"))
 
 
 def coat_alpha(coat: dict, convention: str = "squared"):
@@ -90,8 +97,9 @@ def conductor_fresnel(params: dict, mode: str = "exact", outside_ior: float = 1.
     if mode == "exact":
         eta, k = _rgb(params["eta"]) / outside_ior, _rgb(params["k"]) / outside_ior
         return lambda c: fresnel_conductor(np.asarray(c)[..., None], eta, k)
-    f0 = _rgb(params.get("f0")) if params.get("f0") is not None else \
-        f0_conductor(_rgb(params["eta"]), _rgb(params["k"]))
+    f0 = (
+        _rgb(params.get("f0")) if params.get("f0") is not None else f0_conductor(_rgb(params["eta"]), _rgb(params["k"]))
+    )
     if mode == "schlick":
         return lambda c: fresnel_schlick(np.asarray(c)[..., None], f0)
     if mode == "f82":
@@ -154,8 +162,9 @@ def _local_dirs(material, wo, wi):
     return wo, wi
 
 
-def evaluate(material: dict, wo, wi, fresnel: str = "exact", multiscatter: bool = False,
-             ward_form: str = "gmd") -> np.ndarray:
+def evaluate(
+    material: dict, wo, wi, fresnel: str = "exact", multiscatter: bool = False, ward_form: str = "gmd"
+) -> np.ndarray:
     """The material's reflection BRDF f(wo, wi), RGB (..., 3). See the module docstring."""
     if fresnel not in FRESNEL_MODES:
         raise ValueError(f"unknown fresnel mode {fresnel!r}; use one of {FRESNEL_MODES}")
@@ -166,9 +175,10 @@ def evaluate(material: dict, wo, wi, fresnel: str = "exact", multiscatter: bool 
         return spec + diff
     ior = float(coat.get("ior", 1.5))
     convention = material["params"].get("alpha_convention", "squared")
-    base = lambda o, i: _base_parts(material, o, i, fresnel, multiscatter, ward_form, ior)  # noqa: E731
-    return coated(wo, wi, base, ior, coat_alpha(coat, convention),
-                  _rgb(coat.get("color")), float(coat.get("thickness") or 0.0))
+    base = lambda o, i: _base_parts(material, o, i, fresnel, multiscatter, ward_form, ior)
+    return coated(
+        wo, wi, base, ior, coat_alpha(coat, convention), _rgb(coat.get("color")), float(coat.get("thickness") or 0.0)
+    )
 
 
 def lobe_alphas(material: dict):
@@ -201,7 +211,7 @@ def albedo(material: dict, mu, n_samples: int = 4096, phi: float = 0.0, weight=N
     """
     wo = dir_from_mu(mu, phi)
     if weight is None:
-        bsdf = lambda o, i: evaluate(material, o, i, **kwargs)  # noqa: E731
+        bsdf = lambda o, i: evaluate(material, o, i, **kwargs)
     else:
-        bsdf = lambda o, i: evaluate(material, o, i, **kwargs) * np.asarray(weight(i))[..., None]  # noqa: E731
+        bsdf = lambda o, i: evaluate(material, o, i, **kwargs) * np.asarray(weight(i))[..., None]
     return albedo_mis(bsdf, wo, _proposal_lobes(material), n_samples)

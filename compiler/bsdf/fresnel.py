@@ -5,6 +5,7 @@ and use |cos θ| clipped to [0, 1]; they broadcast over their arguments. Colour 
 through array parameters with a trailing RGB axis, e.g. ``eta`` of shape (3,) with
 ``cos_theta[..., None]``; the helpers ``*_rgb`` do that broadcasting for you.
 """
+
 from __future__ import annotations
 
 import numpy as np

@@ -8,6 +8,7 @@ Directions whose cos θ is below ``COS_EPS`` count as on or below the horizon: e
 BRDF returns exactly 0 for them. This keeps all normalisation terms (1/cos θ, 1/cos⁴θh)
 finite, also in a float32 port.
 """
+
 from __future__ import annotations
 
 import numpy as np

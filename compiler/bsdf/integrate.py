@@ -7,6 +7,7 @@ balance heuristic (Veach 1997) when a lobe width is given:
 
     A(wo) = ∫ f(wo, wi) cos θi dωi ≈ Σ_{all 2N samples} f cos θi / (N (p_cos + p_vndf))
 """
+
 from __future__ import annotations
 
 import numpy as np

@@ -27,6 +27,7 @@ and base; refraction at the macro normal (the coat's roughness does not blur the
 transmitted directions); transmission Fresnel at the macro-normal angle. The sum is
 symmetric in wo, wi, hence reciprocal if the base is.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -58,8 +59,7 @@ def coat_absorption(wo_in, wi_in, color, thickness):
 
 def coat_transmission(wo, wi, ior):
     """(1 − F(cos θo)) (1 − F(cos θi)) with the exact dielectric Fresnel of the coat."""
-    return (1.0 - fresnel_dielectric(cos_theta(wo), ior)) * \
-        (1.0 - fresnel_dielectric(cos_theta(wi), ior))
+    return (1.0 - fresnel_dielectric(cos_theta(wo), ior)) * (1.0 - fresnel_dielectric(cos_theta(wi), ior))
 
 
 def coat_specular(wo, wi, ior, ax, ay):
@@ -67,8 +67,7 @@ def coat_specular(wo, wi, ior, ax, ay):
     return microfacet_reflection(wo, wi, ax, ay, lambda c: fresnel_dielectric(c, ior))
 
 
-def coated(wo, wi, base, ior=1.5, alpha=(0.001, 0.001), color=(1.0, 1.0, 1.0),
-           thickness=0.0):
+def coated(wo, wi, base, ior=1.5, alpha=(0.001, 0.001), color=(1.0, 1.0, 1.0), thickness=0.0):
     """Weidlich–Wilkie coat over ``base``: a callable (wo', wi') → (f_spec, f_diff),
     both RGB (..., 3) (see the module docstring for how each part is transmitted).
 

@@ -8,13 +8,13 @@ Every function is written so that it has no 0/0 or ∞ for unit directions: the
 stretched length ``|w|_α = sqrt(αx² wx² + αy² wy² + wz²)`` replaces tan θ, and the
 BRDF uses the visibility form V = G2 / (4 cos θo cos θi), which is finite at grazing.
 """
+
 from __future__ import annotations
 
 import numpy as np
 
 from .alpha import ALPHA_MIRROR
-from .geometry import (as_dirs, both_upper, cos_theta, dot, half_vector, reflect,
-                       safe_div, upper)
+from .geometry import as_dirs, both_upper, cos_theta, dot, half_vector, reflect, safe_div, upper
 
 
 def stretched_length(w, ax, ay):

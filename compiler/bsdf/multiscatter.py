@@ -15,6 +15,7 @@ precomputed once per process (``lru_cache``) on a TABLE_SIZE² grid by QMC
 visible-normal sampling and interpolated bilinearly; anisotropic lobes use
 α = sqrt(αx αy) (an approximation).
 """
+
 from __future__ import annotations
 
 from functools import lru_cache
@@ -44,8 +45,7 @@ def ggx_albedo(mu, alpha, n: int = 4096, correlated: bool = True):
     u1, u2 = lattice_2d(n)
     wo = dir_from_mu(mu)[..., None, :]
     a = alpha[..., None]
-    wi = reflect_about(np.broadcast_to(wo, wo.shape[:-2] + (n, 3)),
-                       sample_ggx_vndf(wo, a, a, u1, u2))
+    wi = reflect_about(np.broadcast_to(wo, wo.shape[:-2] + (n, 3)), sample_ggx_vndf(wo, a, a, u1, u2))
     if correlated:
         ratio = smith_g2(wo, wi, a, a) / np.maximum(smith_g1(wo, a, a), 1e-300)
     else:

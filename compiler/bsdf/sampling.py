@@ -6,6 +6,7 @@ The shares per strategy depend on the model (`lobe_shares`); the preview's Monte
 tiers and the Mitsuba `cnlm` plugin both use them. Everything is vectorized over lanes:
 α may be one number or one value per lane.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -15,10 +16,12 @@ from .integrate import cosine_pdf, sample_cosine
 from .microfacet import reflect_about, sample_ggx_vndf, vndf_pdf
 
 #: base model -> share of samples (cosine, base specular, coat specular): without, with a coat.
-LOBE_SHARES = {"diffuse": ((1.0, 0.0, 0.0), (0.5, 0.0, 0.5)),
-               "dielectric": ((0.5, 0.5, 0.0), (0.4, 0.3, 0.3)),
-               "conductor": ((0.1, 0.9, 0.0), (0.1, 0.45, 0.45)),
-               "glass": ((0.1, 0.9, 0.0), (0.1, 0.45, 0.45))}
+LOBE_SHARES = {
+    "diffuse": ((1.0, 0.0, 0.0), (0.5, 0.0, 0.5)),
+    "dielectric": ((0.5, 0.5, 0.0), (0.4, 0.3, 0.3)),
+    "conductor": ((0.1, 0.9, 0.0), (0.1, 0.45, 0.45)),
+    "glass": ((0.1, 0.9, 0.0), (0.1, 0.45, 0.45)),
+}
 
 
 def lobe_shares(base: str, coated: bool) -> tuple[float, float, float]:

@@ -25,6 +25,7 @@ the non-delta part returned here is 0); pairs no microfacet can refract into eac
 smooth interface (non-delta part 0, see ``mirror_transmittance``); directions within
 COS_EPS of the plane give 0.
 """
+
 from __future__ import annotations
 
 import math
@@ -114,8 +115,9 @@ def mode_scale(eta_o, eta_i, mode: str = "radiance"):
     raise ValueError(f"unknown transport mode {mode!r}; use one of {MODES}")
 
 
-def microfacet_transmission(wo, wi, ax, ay, ior, g2: str = "correlated", mode: str = "radiance",
-                            fresnel: str = "exact"):
+def microfacet_transmission(
+    wo, wi, ax, ay, ior, g2: str = "correlated", mode: str = "radiance", fresnel: str = "exact"
+):
     """The rough dielectric BTDF f_t(wo, wi) of the module docstring (scalar, shape (...)).
 
     Exactly 0 for same-side pairs, directions within COS_EPS of the plane, ior = 1, pairs no
@@ -132,7 +134,7 @@ def microfacet_transmission(wo, wi, ax, ay, ior, g2: str = "correlated", mode: s
     cos_out = np.abs(np.where(wo[..., 2] > 0.0, oh, ih))
     one_minus_f = 1.0 - interface_fresnel(cos_out, ior, fresnel)
     den = (eta_i * ih + eta_o * oh) ** 2 * np.abs(wo[..., 2] * wi[..., 2])
-    jac = safe_div(np.abs(ih * oh) * eta_o ** 2, np.where(ok, den, 1.0))
+    jac = safe_div(np.abs(ih * oh) * eta_o**2, np.where(ok, den, 1.0))
     value = jac * one_minus_f * ggx_d(h, ax_c, ay_c) * transmission_g2(wo, wi, ax_c, ay_c, g2)
     value = value * mode_scale(eta_o, eta_i, mode)
     return np.where(ok & np.isfinite(value), value, 0.0)
@@ -202,18 +204,19 @@ def mirror_transmittance(wo, ior, mode: str = "radiance"):
 
 
 def _tint(material: dict) -> np.ndarray:
-    return np.broadcast_to(np.asarray(material["params"].get("base_color") or (1.0, 1.0, 1.0), float),
-                           (3,)).copy()
+    return np.broadcast_to(np.asarray(material["params"].get("base_color") or (1.0, 1.0, 1.0), float), (3,)).copy()
 
 
-def evaluate_transmission(material: dict, wo, wi, g2: str = "correlated", mode: str = "radiance",
-                          fresnel: str = "exact") -> np.ndarray:
+def evaluate_transmission(
+    material: dict, wo, wi, g2: str = "correlated", mode: str = "radiance", fresnel: str = "exact"
+) -> np.ndarray:
     """The material's BTDF f_t(wo, wi) ⊙ base_color (the transmittance tint), RGB (..., 3).
 
     Non-zero only for ``model.base == "glass"`` and pairs on opposite sides of the surface.
     ``fresnel="schlick"``/``"f82"``: 1 − Schlick(F0(ior)) at the outside angle.
     """
     from .evaluate import _local_dirs, material_alpha
+
     wo, wi = _local_dirs(material, wo, wi)
     shape = np.broadcast_shapes(wo.shape, wi.shape)[:-1]
     if material["model"]["base"] != "glass":
@@ -224,14 +227,23 @@ def evaluate_transmission(material: dict, wo, wi, g2: str = "correlated", mode: 
     return np.broadcast_to(ft, shape)[..., None] * _tint(material)
 
 
-def evaluate_bsdf(material: dict, wo, wi, fresnel: str = "exact", multiscatter: bool = False,
-                  ward_form: str = "gmd", g2: str = "correlated", mode: str = "radiance") -> np.ndarray:
+def evaluate_bsdf(
+    material: dict,
+    wo,
+    wi,
+    fresnel: str = "exact",
+    multiscatter: bool = False,
+    ward_form: str = "gmd",
+    g2: str = "correlated",
+    mode: str = "radiance",
+) -> np.ndarray:
     """The full BSDF, RGB (..., 3): ``evaluate`` (reflection) for pairs above the surface,
     ``evaluate_transmission`` for pairs on opposite sides and, for glass, the internal
     reflection (the mirrored pair with η = 1/ior) for pairs below it. Opaque models are 0
     below the horizon, as in ``evaluate``.
     """
     from .evaluate import evaluate
+
     wo, wi = as_dirs(wo), as_dirs(wi)
     shape = np.broadcast_shapes(wo.shape, wi.shape)[:-1]
     wo, wi = np.broadcast_to(wo, shape + (3,)), np.broadcast_to(wi, shape + (3,))
@@ -243,11 +255,23 @@ def evaluate_bsdf(material: dict, wo, wi, fresnel: str = "exact", multiscatter: 
     if below.any():
         inner = {**material, "params": {**material["params"], "ior": 1.0 / float(material["params"].get("ior", 1.5))}}
         flip = np.array([1.0, 1.0, -1.0])
-        out = out + np.where(below[..., None], evaluate(inner, wo * flip, wi * flip, fresnel=fresnel,
-                                                        ward_form=ward_form), 0.0)
+        out = out + np.where(
+            below[..., None], evaluate(inner, wo * flip, wi * flip, fresnel=fresnel, ward_form=ward_form), 0.0
+        )
     return out
 
 
-__all__ = ["G2_FORMS", "MODES", "dielectric_reflection", "evaluate_bsdf", "evaluate_transmission",
-           "generalized_half_vector", "microfacet_transmission", "mirror_transmittance", "refract",
-           "refraction_possible", "side_index", "transmission_g2"]
+__all__ = [
+    "G2_FORMS",
+    "MODES",
+    "dielectric_reflection",
+    "evaluate_bsdf",
+    "evaluate_transmission",
+    "generalized_half_vector",
+    "microfacet_transmission",
+    "mirror_transmittance",
+    "refract",
+    "refraction_possible",
+    "side_index",
+    "transmission_g2",
+]

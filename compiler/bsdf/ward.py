@@ -7,6 +7,7 @@ and differ only in the normalisation. ρs is the specular reflectance (scalar or
 They are evaluated in the log domain, exp(−E − log(normalisation)), so that no
 1/cos overflows at grazing; 0 below the horizon. All three are reciprocal.
 """
+
 from __future__ import annotations
 
 import numpy as np

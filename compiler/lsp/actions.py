@@ -44,15 +44,27 @@ def _edit(snapshot, uri, line, start, end, text) -> types.WorkspaceEdit:
 def spelling_fixes(snapshot, uri, diag, lsp_diag, lexicon) -> list[types.CodeAction]:
     line, start, end = _columns(snapshot, diag)
     word = snapshot.index.lines[line][start:end]
-    fixes = [types.CodeAction(title=f"Replace '{word}' with '{s}'", kind=types.CodeActionKind.QuickFix,
-                              diagnostics=[lsp_diag], is_preferred=(i == 0),
-                              edit=_edit(snapshot, uri, line, start, end, s))
-             for i, s in enumerate(diag.suggestions)]
+    fixes = [
+        types.CodeAction(
+            title=f"Replace '{word}' with '{s}'",
+            kind=types.CodeActionKind.QuickFix,
+            diagnostics=[lsp_diag],
+            is_preferred=(i == 0),
+            edit=_edit(snapshot, uri, line, start, end, s),
+        )
+        for i, s in enumerate(diag.suggestions)
+    ]
     colour = nearest_colour_name(word, lexicon)
     if colour and colour not in diag.suggestions and colour_fits(snapshot, line, start, lexicon):
-        fixes.append(types.CodeAction(title=f"Use the nearest named colour '{colour}'",
-                                      kind=types.CodeActionKind.QuickFix, diagnostics=[lsp_diag],
-                                      is_preferred=not fixes, edit=_edit(snapshot, uri, line, start, end, colour)))
+        fixes.append(
+            types.CodeAction(
+                title=f"Use the nearest named colour '{colour}'",
+                kind=types.CodeActionKind.QuickFix,
+                diagnostics=[lsp_diag],
+                is_preferred=not fixes,
+                edit=_edit(snapshot, uri, line, start, end, colour),
+            )
+        )
     return fixes
 
 
@@ -79,17 +91,21 @@ def removal_fix(snapshot, uri, diag, lsp_diag, lexicon) -> types.CodeAction:
     text = snapshot.index.lines[line]
     start = _with_adverbs(snapshot, line, start, lexicon)
     start, end = _with_separator(text, start, end)
-    word = text[diag.span.start - snapshot.index.starts[line]:_columns(snapshot, diag)[2]]
-    return types.CodeAction(title=f"Remove '{word}'", kind=types.CodeActionKind.QuickFix,
-                            diagnostics=[lsp_diag], is_preferred=True,
-                            edit=_edit(snapshot, uri, line, start, end, ""))
+    word = text[diag.span.start - snapshot.index.starts[line] : _columns(snapshot, diag)[2]]
+    return types.CodeAction(
+        title=f"Remove '{word}'",
+        kind=types.CodeActionKind.QuickFix,
+        diagnostics=[lsp_diag],
+        is_preferred=True,
+        edit=_edit(snapshot, uri, line, start, end, ""),
+    )
 
 
 def _with_adverbs(snapshot, line: int, start: int, lexicon) -> int:
     """Extend a removal to the adverbs right before the word ('lightly anodized')."""
     words = [w for w in line_words(snapshot, line, lexicon) if w.end <= start]
     for word in reversed(words):
-        if word.category != "adverbs" or snapshot.index.lines[line][word.end:start].strip():
+        if word.category != "adverbs" or snapshot.index.lines[line][word.end : start].strip():
             break
         start = word.start
     return start

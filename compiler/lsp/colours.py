@@ -25,8 +25,11 @@ def document_colours(snapshot, lexicon) -> list[types.ColorInformation]:
     for line in range(len(snapshot.index.lines)):
         for phrase, start, end in snapshot.colours_on(line):
             if phrase.base is not None and not phrase.base.unknown:
-                out.append(types.ColorInformation(snapshot.index.range_of(line, start, end),
-                                                  swatch(resolve_colour(phrase, ctx))))
+                out.append(
+                    types.ColorInformation(
+                        snapshot.index.range_of(line, start, end), swatch(resolve_colour(phrase, ctx))
+                    )
+                )
         out += material_swatches(snapshot, line)
     return out
 
@@ -99,5 +102,5 @@ def is_colour_range(snapshot, where: types.Range) -> bool:
         return True
     found = snapshot.index.line_col(where.start)
     return any(start == found[1] for _phrase, start, _end in snapshot.colours_on(line)) or not any(
-        col == found[1] and w.category == "nouns" for w, col in snapshot.words_on(line))
-
+        col == found[1] and w.category == "nouns" for w, col in snapshot.words_on(line)
+    )

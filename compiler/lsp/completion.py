@@ -32,10 +32,16 @@ ORDER_AFTER = {  # what to list first after the word before the cursor
     "COLOR": ("adjectives", "nouns"),
     "REFINE": ("colours", "properties", "adjectives"),
 }
-KINDS = {"nouns": types.CompletionItemKind.Class, "adjectives": types.CompletionItemKind.Function,
-         "adverbs": types.CompletionItemKind.Operator, "colours": types.CompletionItemKind.Color,
-         "shades": types.CompletionItemKind.Color, "refinements": types.CompletionItemKind.Event,
-         "properties": types.CompletionItemKind.Property, "coats": types.CompletionItemKind.Struct}
+KINDS = {
+    "nouns": types.CompletionItemKind.Class,
+    "adjectives": types.CompletionItemKind.Function,
+    "adverbs": types.CompletionItemKind.Operator,
+    "colours": types.CompletionItemKind.Color,
+    "shades": types.CompletionItemKind.Color,
+    "refinements": types.CompletionItemKind.Event,
+    "properties": types.CompletionItemKind.Property,
+    "coats": types.CompletionItemKind.Struct,
+}
 
 
 @dataclass(frozen=True)
@@ -66,8 +72,10 @@ def complete(snapshot, position: types.Position, lexicon) -> types.CompletionLis
     context = line_context(text, start, col, lexicon)
     where = snapshot.index.range_of(line, start, col)
     order = category_order(previous)
-    items = [*lexicon_items(accepted, partial, context, where, lexicon, order),
-             *keyword_items(accepted, partial, where)]
+    items = [
+        *lexicon_items(accepted, partial, context, where, lexicon, order),
+        *keyword_items(accepted, partial, where),
+    ]
     return types.CompletionList(is_incomplete=False, items=items)
 
 
@@ -115,8 +123,13 @@ def line_context(text: str, start: int, end: int, lexicon) -> LineContext:
     with_at = next((t.span.start for t in words if any(c.tag == "WITH" for c in t.candidates)), len(text) + 1)
     nouns = [c for t in words if t.span.start < with_at for c in t.candidates if c.tag == "NOUN"]
     noun = lexicon.entry("nouns", nouns[-1].key) if nouns else None
-    adjectives = tuple(lexicon.entry("adjectives", c.key) for t in words if t.span.start < with_at
-                       for c in t.candidates[:1] if c.tag == "ADJ")
+    adjectives = tuple(
+        lexicon.entry("adjectives", c.key)
+        for t in words
+        if t.span.start < with_at
+        for c in t.candidates[:1]
+        if c.tag == "ADJ"
+    )
     return LineContext(noun, tuple(a for a in adjectives if a is not None))
 
 
@@ -171,5 +184,9 @@ def completion_item(entry, surface: str, where, rank: int) -> types.CompletionIt
 def keyword_items(accepted, partial, where):
     for tag, word in KEYWORDS.items():
         if tag in accepted and word.startswith(partial.lower()):
-            yield types.CompletionItem(label=word, kind=types.CompletionItemKind.Keyword, sort_text=f"9_{word}",
-                                       text_edit=types.TextEdit(where, word))
+            yield types.CompletionItem(
+                label=word,
+                kind=types.CompletionItemKind.Keyword,
+                sort_text=f"9_{word}",
+                text_edit=types.TextEdit(where, word),
+            )

@@ -52,8 +52,9 @@ class LspDiagnostics:
             key = (block.result, block.first_line, uri, snapshot.index.encoding)
             found = self._by_block.get(key)
             if found is None:
-                found = [self._converter.unstructure(to_lsp(d, snapshot.index, uri, block.first_line))
-                         for d in relative]
+                found = [
+                    self._converter.unstructure(to_lsp(d, snapshot.index, uri, block.first_line)) for d in relative
+                ]
                 self._by_block[key] = found
                 if len(self._by_block) > self.limit:
                     self._by_block.popitem(last=False)

@@ -6,17 +6,28 @@ from ..colour import linear_to_hex
 from ..formulas import describe
 
 CATEGORY_NAMES = {
-    "nouns": "material noun", "adjectives": "adjective", "adverbs": "adverb", "colours": "colour",
-    "shades": "shade", "refinements": "refinement", "properties": "property", "coats": "coat",
+    "nouns": "material noun",
+    "adjectives": "adjective",
+    "adverbs": "adverb",
+    "colours": "colour",
+    "shades": "shade",
+    "refinements": "refinement",
+    "properties": "property",
+    "coats": "coat",
 }
 
 
 def effect_lines(entry) -> list[str]:
     """What the word does to the material parameters, one line each."""
     describe_by_category = {
-        "adjectives": _adjective_effects, "nouns": _noun_effects, "adverbs": _adverb_effects,
-        "colours": _colour_effects, "shades": _shade_effects, "refinements": _refinement_effects,
-        "properties": _property_effects, "coats": _coat_effects,
+        "adjectives": _adjective_effects,
+        "nouns": _noun_effects,
+        "adverbs": _adverb_effects,
+        "colours": _colour_effects,
+        "shades": _shade_effects,
+        "refinements": _refinement_effects,
+        "properties": _property_effects,
+        "coats": _coat_effects,
     }
     return describe_by_category[entry.category](entry)
 
@@ -83,7 +94,9 @@ def _property_effects(entry) -> list[str]:
 
 
 def _coat_effects(entry) -> list[str]:
-    return [f"coat ior {entry.get('ior')}, roughness {entry.get('roughness')}, colour {_rgb(entry.get('color', [1, 1, 1]))}"]
+    return [
+        f"coat ior {entry.get('ior')}, roughness {entry.get('roughness')}, colour {_rgb(entry.get('color', [1, 1, 1]))}"
+    ]
 
 
 def _rgb(values) -> str:

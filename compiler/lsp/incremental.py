@@ -34,16 +34,16 @@ class BlockResult:
     """What compiling one block gives, in block-relative positions."""
 
     diagnostics: tuple
-    materials: tuple          # IR material dicts
-    material_lines: tuple     # 1-based block line of each material
-    items: tuple              # AST items (Material / Refinement)
+    materials: tuple  # IR material dicts
+    material_lines: tuple  # 1-based block line of each material
+    items: tuple  # AST items (Material / Refinement)
 
 
 @dataclass(frozen=True, eq=False)
 class Block:
-    first_line: int           # 0-based document line
+    first_line: int  # 0-based document line
     line_count: int
-    offset: int               # character offset of the block's first line
+    offset: int  # character offset of the block's first line
     result: BlockResult
 
     def contains(self, line: int) -> bool:
@@ -64,8 +64,11 @@ class Snapshot:
     def diagnostics(self) -> list:
         """Every diagnostic with its span in document positions (computed on first use)."""
         if self._diagnostics is None:
-            self._diagnostics = [dataclasses.replace(d, span=shift_span(d.span, b.first_line, b.offset))
-                                 for b in self.blocks for d in b.result.diagnostics]
+            self._diagnostics = [
+                dataclasses.replace(d, span=shift_span(d.span, b.first_line, b.offset))
+                for b in self.blocks
+                for d in b.result.diagnostics
+            ]
         return self._diagnostics
 
     def block_at(self, line: int) -> Block | None:
@@ -156,8 +159,12 @@ class Analyzer:
             self._blocks.move_to_end(text)
             return found
         result = compile_source(text, self.filename, self.lexicon)
-        block = BlockResult(tuple(_with_spans(result)), tuple(result.materials),
-                            tuple(s.selection.span.line for s in result.states), tuple(result.document.items))
+        block = BlockResult(
+            tuple(_with_spans(result)),
+            tuple(result.materials),
+            tuple(s.selection.span.line for s in result.states),
+            tuple(result.document.items),
+        )
         _remember(self._blocks, text, block, MAX_CACHED_BLOCKS)
         return block
 
@@ -167,7 +174,7 @@ class Analyzer:
         for first, count in self.block_bounds(index.lines, keep_going):
             if not keep_going():
                 raise Cancelled()
-            result = self.compile_block("\n".join(index.lines[first:first + count]))
+            result = self.compile_block("\n".join(index.lines[first : first + count]))
             blocks.append(Block(first, count, index.starts[first], result))
         return Snapshot(text, index, blocks)
 

@@ -10,12 +10,12 @@ from ..tagger import TOKEN_RE, Tagger
 
 @dataclass(frozen=True)
 class LineWord:
-    start: int        # character columns on the line, half-open
+    start: int  # character columns on the line, half-open
     end: int
     text: str
-    category: str     # lexicon category, 'name', 'keyword', 'punct' or 'unknown'
+    category: str  # lexicon category, 'name', 'keyword', 'punct' or 'unknown'
     key: str
-    tags: tuple       # every candidate tag the tagger found
+    tags: tuple  # every candidate tag the tagger found
 
 
 def tag_text(text: str, lexicon):

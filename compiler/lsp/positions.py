@@ -74,5 +74,7 @@ class LineIndex:
 
     def range_of(self, line: int, start_col: int, end_col: int) -> types.Range:
         text = self.lines[line]
-        return types.Range(types.Position(line, code_units(text[:start_col], self.encoding)),
-                           types.Position(line, code_units(text[:end_col], self.encoding)))
+        return types.Range(
+            types.Position(line, code_units(text[:start_col], self.encoding)),
+            types.Position(line, code_units(text[:end_col], self.encoding)),
+        )

@@ -7,13 +7,31 @@ from lsprotocol import types
 from .lines import comment_start, line_words
 from .positions import code_units
 
-TOKEN_TYPES = ["noun", "adjective", "adverb", "colour", "shade", "refinement", "property", "coat",
-               "name", "comment", "keyword"]
+TOKEN_TYPES = [
+    "noun",
+    "adjective",
+    "adverb",
+    "colour",
+    "shade",
+    "refinement",
+    "property",
+    "coat",
+    "name",
+    "comment",
+    "keyword",
+]
 LEGEND = types.SemanticTokensLegend(token_types=TOKEN_TYPES, token_modifiers=[])
 TYPE_OF_CATEGORY = {
-    "nouns": "noun", "adjectives": "adjective", "adverbs": "adverb", "colours": "colour",
-    "shades": "shade", "refinements": "refinement", "properties": "property", "coats": "coat",
-    "name": "name", "keyword": "keyword",
+    "nouns": "noun",
+    "adjectives": "adjective",
+    "adverbs": "adverb",
+    "colours": "colour",
+    "shades": "shade",
+    "refinements": "refinement",
+    "properties": "property",
+    "coats": "coat",
+    "name": "name",
+    "keyword": "keyword",
 }
 INDEX = {name: i for i, name in enumerate(TOKEN_TYPES)}
 
@@ -21,8 +39,11 @@ INDEX = {name: i for i, name in enumerate(TOKEN_TYPES)}
 def line_tokens(snapshot, line: int, lexicon) -> list[tuple[int, int, str]]:
     """(start column, end column, token type) on one line, in order."""
     text = snapshot.index.lines[line]
-    found = [(w.start, w.end, TYPE_OF_CATEGORY[w.category]) for w in line_words(snapshot, line, lexicon)
-             if w.category in TYPE_OF_CATEGORY]
+    found = [
+        (w.start, w.end, TYPE_OF_CATEGORY[w.category])
+        for w in line_words(snapshot, line, lexicon)
+        if w.category in TYPE_OF_CATEGORY
+    ]
     comment = comment_start(text)
     if comment is not None:
         found.append((comment, len(text), "comment"))

@@ -52,6 +52,12 @@ def _warn_no_highlight(state) -> None:
     last = with_words[-1].words[-1] if with_words else None
     word = last.text if last else "anisotropy"
     span = last.span if last else state.selection.span
-    state.diagnostics.append(warning(span, "W108", f"'{word}' stretches the highlight, but this {state.noun.key} "
-                                     "is matte and has none: anisotropy is not modelled",
-                                     ("make it glossier for a visible highlight",)))
+    state.diagnostics.append(
+        warning(
+            span,
+            "W108",
+            f"'{word}' stretches the highlight, but this {state.noun.key} "
+            "is matte and has none: anisotropy is not modelled",
+            ("make it glossier for a visible highlight",),
+        )
+    )

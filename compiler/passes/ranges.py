@@ -9,8 +9,11 @@ from ..graphs import graph_params
 from ..state import Context, MaterialState
 
 RANGES = {
-    "roughness": (0.0, 1.0), "anisotropy": (0.0, 1.0), "diffuse_roughness": (0.0, 1.6),
-    "ior": (1.0, 5.0), "base_color": (0.0, 1.0),
+    "roughness": (0.0, 1.0),
+    "anisotropy": (0.0, 1.0),
+    "diffuse_roughness": (0.0, 1.6),
+    "ior": (1.0, 5.0),
+    "base_color": (0.0, 1.0),
 }
 COAT_RANGES = {"roughness": (0.0, 1.0), "ior": (1.0, 3.0), "color": (0.0, 1.0), "thickness": (0.0, 10.0)}
 
@@ -60,9 +63,14 @@ def _clamp(state, holder: dict, param: str, name: str, low: float, high: float) 
     words = [w.text for s in steps for w in s.words]
     span = _last_span(steps)
     state.note(name, fixed, f"range check: clamped to [{low}, {high}]")
-    state.diagnostics.append(warning(span, "W107", f"{name.replace('_', ' ')} {_fmt(value)} is outside "
-                                     f"[{low}, {high}] and was clamped to {_fmt(fixed)}",
-                                     (f"set by: {' '.join(words)}" if words else "",)))
+    state.diagnostics.append(
+        warning(
+            span,
+            "W107",
+            f"{name.replace('_', ' ')} {_fmt(value)} is outside [{low}, {high}] and was clamped to {_fmt(fixed)}",
+            (f"set by: {' '.join(words)}" if words else "",),
+        )
+    )
 
 
 def _last_span(steps):

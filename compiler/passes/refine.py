@@ -48,8 +48,14 @@ def apply_refinement(state: MaterialState, ctx: Context, item: ast.RefineItem) -
     elif target != "any":
         _refine_property(state, ctx, ctx.lexicon.entry("properties", target), item, direction)
     elif item.target is None:
-        state.diagnostics.append(warning(item.span, "W104", f"'{item.word.text}' of what?",
-                                         ("name what to change, e.g. 'more grain' or 'less diffuse'",)))
+        state.diagnostics.append(
+            warning(
+                item.span,
+                "W104",
+                f"'{item.word.text}' of what?",
+                ("name what to change, e.g. 'more grain' or 'less diffuse'",),
+            )
+        )
     else:
         _refine_named(state, ctx, item, direction)
 
@@ -90,8 +96,14 @@ def _refine_colour(state, entry, item, direction) -> None:
 
 
 def _refine_saturation(state, item, direction) -> None:
-    new = bracket_move(state, "saturation", state.params["base_color"], direction,
-                       lambda x: saturate(x, 0.25), lambda x: saturate(x, -0.25))
+    new = bracket_move(
+        state,
+        "saturation",
+        state.params["base_color"],
+        direction,
+        lambda x: saturate(x, 0.25),
+        lambda x: saturate(x, -0.25),
+    )
     state.record("base_color", new, f"refinements.{item.word.key}: saturation", _item_words(item))
 
 
@@ -115,9 +127,14 @@ def _refine_map_param(state, prop, item, direction) -> None:
     roles = [role for role, ref in state.maps.items() if name in graph_params(ref["graph"])]
     if not roles:
         what = "no procedural map" if not state.maps else f"no map with '{name}'"
-        state.diagnostics.append(warning(item.span, "W106", f"'{prop.key}' has nothing to act on: "
-                                         f"{state.noun.key} has {what}",
-                                         ("maps come from words such as 'wood', 'marble', 'brushed' or 'rusty'",)))
+        state.diagnostics.append(
+            warning(
+                item.span,
+                "W106",
+                f"'{prop.key}' has nothing to act on: {state.noun.key} has {what}",
+                ("maps come from words such as 'wood', 'marble', 'brushed' or 'rusty'",),
+            )
+        )
         return
     up, down = _step_fns(prop.get("step"))
     for role in roles:
@@ -132,8 +149,14 @@ def _refine_map_param(state, prop, item, direction) -> None:
 def _refine_adjective(state, ctx, adjective, item, direction) -> None:
     """'stronger brushing': apply the adjective's formulas again at the weight step (or undo them)."""
     if adjective.key not in [k for k, _w in state.applied]:
-        state.diagnostics.append(warning(item.span, "W104", f"'{item.target.text}' is not part of this material",
-                                         ("refine a word the material has, or add it to the phrase",)))
+        state.diagnostics.append(
+            warning(
+                item.span,
+                "W104",
+                f"'{item.target.text}' is not part of this material",
+                ("refine a word the material has, or add it to the phrase",),
+            )
+        )
         return
     w = ctx.settings.get("weight_step", 0.5)
     for effect in effects_for(adjective, state):
@@ -158,8 +181,9 @@ def _refine_weighted_map(state, role, name, item, direction, w) -> None:
     if ref is None:
         return
     key = f"maps.{role}.{name}"
-    new = bracket_move(state, key, ref["params"].get(name, 1.0), direction,
-                       lambda x: x * (1 + w), lambda x: x / (1 + w))
+    new = bracket_move(
+        state, key, ref["params"].get(name, 1.0), direction, lambda x: x * (1 + w), lambda x: x / (1 + w)
+    )
     ref["params"][name] = new
     state.note(key, new, f"refinements.{item.word.key} {item.target.key}: bracket step", _item_words(item))
 

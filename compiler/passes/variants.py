@@ -70,8 +70,14 @@ def expand(material: ast.Material, base_name: str, diags: list) -> list[tuple[as
         return [(material, None)]
     combos = list(itertools.islice(itertools.product(*points), MAX_VARIANTS + 1))
     if len(combos) > MAX_VARIANTS:
-        diags.append(error(material.span, "E005", f"too many alternatives: more than {MAX_VARIANTS} variants",
-                           ("split the phrase into several lines",)))
+        diags.append(
+            error(
+                material.span,
+                "E005",
+                f"too many alternatives: more than {MAX_VARIANTS} variants",
+                ("split the phrase into several lines",),
+            )
+        )
         combos = combos[:MAX_VARIANTS]
     out = []
     for combo in combos:

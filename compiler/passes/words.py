@@ -59,8 +59,14 @@ def _has_unknown(group: ast.Group) -> bool:
 
 def _warn_dangling(state: MaterialState, group: ast.Group) -> None:
     text = " ".join(w.text for w in group.adverbs)
-    state.diagnostics.append(warning(group.span, "W103", f"'{text}' has nothing to modify",
-                                     ("put an adjective after it, e.g. 'lightly brushed'",)))
+    state.diagnostics.append(
+        warning(
+            group.span,
+            "W103",
+            f"'{text}' has nothing to modify",
+            ("put an adjective after it, e.g. 'lightly brushed'",),
+        )
+    )
 
 
 def apply_colour(state, ctx, c: ast.Colour, adverbs, target: str, weight: float) -> None:
@@ -85,9 +91,15 @@ def _warn_second_colour(state, param: str, c: ast.Colour) -> None:
         return
     earlier = [s for s in state.provenance.get(param, ()) if s.rule.startswith("colours: ")]
     if earlier:
-        state.diagnostics.append(warning(c.span, "W105", f"a second colour for the {param.replace('_', ' ')}: "
-                                         f"'{earlier[-1].words[-1].text}' is replaced by '{colour_text(c)}'",
-                                         ("use 'or' for alternatives: 'red or blue plastic'",)))
+        state.diagnostics.append(
+            warning(
+                c.span,
+                "W105",
+                f"a second colour for the {param.replace('_', ' ')}: "
+                f"'{earlier[-1].words[-1].text}' is replaced by '{colour_text(c)}'",
+                ("use 'or' for alternatives: 'red or blue plastic'",),
+            )
+        )
 
 
 def apply_adjective(state, ctx, adjective, group: ast.Group, weight: float, target: str) -> None:
@@ -127,8 +139,9 @@ def _applies(state, adjective, word) -> bool:
     if not classes or noun.data.get("class") in classes or noun.key in classes:
         return True
     note = adjective.get("applies_note", f"it applies to {', '.join(classes)}")
-    state.diagnostics.append(warning(word.span, "W102", f"'{word.text}' does not apply to {noun.key}: {note}",
-                                     ("the word is ignored",)))
+    state.diagnostics.append(
+        warning(word.span, "W102", f"'{word.text}' does not apply to {noun.key}: {note}", ("the word is ignored",))
+    )
     return False
 
 
@@ -136,8 +149,14 @@ def _check_opposition(state, ctx, adjective, word) -> None:
     for earlier_key, earlier in state.applied:
         earlier_opposes = ctx.lexicon.entry("adjectives", earlier_key).get("opposes", [])
         if earlier_key in adjective.get("opposes", []) or adjective.key in earlier_opposes:
-            state.diagnostics.append(warning(word.span, "W101", f"'{word.text}' contradicts '{earlier.text}'",
-                                             (f"both are applied in order, so '{word.text}' wins",)))
+            state.diagnostics.append(
+                warning(
+                    word.span,
+                    "W101",
+                    f"'{word.text}' contradicts '{earlier.text}'",
+                    (f"both are applied in order, so '{word.text}' wins",),
+                )
+            )
 
 
 def _apply_effect(state, holder, effect: dict, weight: float, rule: str, words) -> None:

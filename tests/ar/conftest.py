@@ -1,4 +1,5 @@
 """Fixtures for the AR tests: synthetic photos of a marker at known poses."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -17,12 +18,14 @@ MARKER_LENGTH = 0.1
 @pytest.fixture(scope="session")
 def gold():
     from cnlmc.api import compile_source
+
     return compile_source("polished gold\n").ir
 
 
 @pytest.fixture(params=sorted(POSES))
 def posed_photo(request):
     from cnlmc.backends.ar.synthetic import synthetic_photo
+
     rvec, tvec = (np.array(v, float) for v in POSES[request.param])
     photo, K, truth = synthetic_photo(rvec, tvec, marker_length=MARKER_LENGTH, seed=1)
     return {"name": request.param, "photo": photo, "K": K, "truth": truth, "rvec": rvec, "tvec": tvec}
@@ -32,6 +35,7 @@ def posed_photo(request):
 def gl_available():
     try:
         from cnlmc.backends.preview.gl import context
+
         context()
     except Exception as exc:  # pragma: no cover
         pytest.skip(f"no OpenGL on EGL here: {exc}")

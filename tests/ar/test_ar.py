@@ -1,15 +1,31 @@
 """AR: detection and pose on synthetic photos land within 2 px; the rendered object sits on
 the marker; clear errors; marker PNGs; video frames."""
+
 from __future__ import annotations
 
 import cv2
 import numpy as np
 import pytest
 
-from cnlmc.backends.ar import (AROptionError, NoMarkerFound, PhotoUnreadable, ar_command, ar_video, composite,
-                               parse_options, write_marker)
-from cnlmc.backends.ar.pose import (MARKER_FROM_WORLD, Pose, detect, estimate_pose, find_marker,
-                                    marker_object_points, project_gl)
+from cnlmc.backends.ar import (
+    AROptionError,
+    NoMarkerFound,
+    PhotoUnreadable,
+    ar_command,
+    ar_video,
+    composite,
+    parse_options,
+    write_marker,
+)
+from cnlmc.backends.ar.pose import (
+    MARKER_FROM_WORLD,
+    Pose,
+    detect,
+    estimate_pose,
+    find_marker,
+    marker_object_points,
+    project_gl,
+)
 
 from .conftest import MARKER_LENGTH
 
@@ -106,8 +122,11 @@ def test_marker_png_round_trip(tmp_path):
 
 def test_photo_command_and_video(tmp_path, gl_available, gold):
     from cnlmc.backends.ar.synthetic import synthetic_photo
-    frames = [synthetic_photo(np.array([2.2, 0.3 + 0.05 * i, -0.2]), np.array([0.0, 0.02, 0.5]), 320, 240)[0]
-              for i in range(3)]
+
+    frames = [
+        synthetic_photo(np.array([2.2, 0.3 + 0.05 * i, -0.2]), np.array([0.0, 0.02, 0.5]), 320, 240)[0]
+        for i in range(3)
+    ]
     photo = tmp_path / "photo.png"
     cv2.imwrite(str(photo), frames[0])
     report = ar_command(photo, gold, tmp_path / "ar.png", {"tier": "analytic"})
@@ -130,16 +149,18 @@ def test_tone_map_rectangle_holds_object_and_shadow(posed_photo, gl_available, g
     """The AR layer's tone map runs over the object's and the shadow's rectangle only; the
     composite is the same as with the whole frame tone mapped."""
     from cnlmc.backends.preview.render import Renderer
+
     opts = {"mesh": "teapot", "tier": "splitsum", "shadow": "0.6"}
     clipped = composite(posed_photo["photo"], gold["materials"][0], opts).image
     monkeypatch.setattr(Renderer, "drawn_rect", lambda self, *a, **k: None)
     whole = composite(posed_photo["photo"], gold["materials"][0], opts).image
-    assert np.abs(clipped.astype(int) - posed_photo["photo"].astype(int)).max() > 50     # something drawn
+    assert np.abs(clipped.astype(int) - posed_photo["photo"].astype(int)).max() > 50  # something drawn
     np.testing.assert_array_equal(clipped, whole)
 
 
 def test_over_photo_blends_only_where_the_layer_is():
     from cnlmc.backends.ar import over_photo
+
     rng = np.random.default_rng(3)
     photo = rng.integers(0, 256, (40, 60, 3), dtype=np.uint8)
     rgba = np.zeros((40, 60, 4), np.uint8)
@@ -154,6 +175,7 @@ def test_over_photo_blends_only_where_the_layer_is():
 
 def test_shadow_footprint_is_made_once_per_mesh(posed_photo, gl_available, gold, monkeypatch):
     import cnlmc.backends.ar as ar
+
     made = []
     original = ar.footprint
     monkeypatch.setattr(ar, "footprint", lambda mesh, *a, **k: made.append(1) or original(mesh, *a, **k))
@@ -166,6 +188,7 @@ def test_shadow_footprint_is_made_once_per_mesh(posed_photo, gl_available, gold,
 def test_video_frames_default_to_no_multisampling(tmp_path, monkeypatch, gold):
     import cnlmc.backends.ar as ar
     from cnlmc.backends.ar.synthetic import synthetic_photo
+
     video = tmp_path / "in.mp4"
     writer = cv2.VideoWriter(str(video), cv2.VideoWriter_fourcc(*"mp4v"), 10, (160, 120))
     if not writer.isOpened():
@@ -173,8 +196,11 @@ def test_video_frames_default_to_no_multisampling(tmp_path, monkeypatch, gold):
     writer.write(synthetic_photo(np.array([2.2, 0.3, -0.2]), np.array([0.0, 0.02, 0.5]), 160, 120)[0])
     writer.release()
     seen = []
-    monkeypatch.setattr(ar, "composite", lambda frame, material, opts, source: seen.append(opts.msaa) or
-                        (_ for _ in ()).throw(NoMarkerFound("skip")))
+    monkeypatch.setattr(
+        ar,
+        "composite",
+        lambda frame, material, opts, source: seen.append(opts.msaa) or (_ for _ in ()).throw(NoMarkerFound("skip")),
+    )
     with pytest.raises(NoMarkerFound):
         ar_video(video, gold, tmp_path / "a.mp4", {"tier": "analytic"})
     with pytest.raises(NoMarkerFound):

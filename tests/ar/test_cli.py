@@ -17,6 +17,7 @@ def cnlmc(*args):
 @pytest.fixture(scope="module")
 def photo(tmp_path_factory):
     from cnlmc.backends.ar.synthetic import synthetic_photo
+
     rvec, tvec = (np.array(v, float) for v in POSES["oblique"])
     image, _K, _truth = synthetic_photo(rvec, tvec, marker_length=MARKER_LENGTH, seed=1)
     path = tmp_path_factory.mktemp("ar") / "photo.png"
@@ -36,8 +37,7 @@ def test_marker_command_writes_a_detectable_marker(tmp_path):
 
 def test_ar_places_a_phrase_on_the_photo(tmp_path, photo):
     out = tmp_path / "out.png"
-    r = cnlmc("ar", str(photo), "blue anodized aluminum", "-o", str(out), "--option",
-              f"marker_length={MARKER_LENGTH}")
+    r = cnlmc("ar", str(photo), "blue anodized aluminum", "-o", str(out), "--option", f"marker_length={MARKER_LENGTH}")
     assert r.returncode == 0, r.stderr
     before, after = cv2.imread(str(photo)), cv2.imread(str(out))
     assert before.shape == after.shape

@@ -65,10 +65,15 @@ def test_every_kind_emits_and_reports_its_approximations(target, kind):
 def test_every_target_from_the_command_line(tmp_path, target):
     import subprocess
     import sys
+
     backend(target)
     extra = {"preview": ["--option", "size=32"], "maps": ["--option", "size=16"]}.get(target, [])
-    r = subprocess.run([sys.executable, "-m", "cnlmc", "compile", "-", "-t", target, "-o", str(tmp_path) + "/", *extra],
-                       input="hull: lightly brushed, blue anodized aluminum\ndeck: red or blue plastic\n",
-                       capture_output=True, text=True, timeout=300)
+    r = subprocess.run(
+        [sys.executable, "-m", "cnlmc", "compile", "-", "-t", target, "-o", str(tmp_path) + "/", *extra],
+        input="hull: lightly brushed, blue anodized aluminum\ndeck: red or blue plastic\n",
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert r.returncode == 0, r.stderr
     assert any(tmp_path.iterdir()), f"{target} wrote nothing"

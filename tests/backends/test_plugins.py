@@ -6,7 +6,8 @@ import textwrap
 
 
 def make_plugin(root):
-    (root / "toy_target.py").write_text(textwrap.dedent('''
+    (root / "toy_target.py").write_text(
+        textwrap.dedent("""
         from cnlmc.backends.capabilities import ALL_FEATURES, EmitResult
         from cnlmc.backends.registry import Artifact
         NAME = "toy"
@@ -15,7 +16,8 @@ def make_plugin(root):
         def emit(ir, options):
             lines = [f"{m['name']} {m['params']['base_color']}" for m in ir["materials"]]
             return EmitResult([Artifact("toy.txt", "\\n".join(lines) + "\\n")])
-    '''))
+    """)
+    )
     info = root / "toy_target-1.0.dist-info"
     info.mkdir()
     (info / "METADATA").write_text("Metadata-Version: 2.1\nName: toy-target\nVersion: 1.0\n")
@@ -24,7 +26,7 @@ def make_plugin(root):
 
 def cnlmc(root, *args, stdin=None):
     env_path = f"{root}"
-    code = "import sys; sys.path.insert(0, %r); from cnlmc.cli import main; sys.exit(main(sys.argv[1:]))" % env_path
+    code = f"import sys; sys.path.insert(0, {env_path!r}); from cnlmc.cli import main; sys.exit(main(sys.argv[1:]))"
     return subprocess.run([sys.executable, "-c", code, *args], input=stdin, capture_output=True, text=True, timeout=60)
 
 

@@ -1,4 +1,5 @@
 """Fixtures for the reference-BSDF tests: the shared reference data (../shared/data)."""
+
 from __future__ import annotations
 
 import csv

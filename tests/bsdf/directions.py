@@ -1,11 +1,13 @@
 """Direction grids for the stability tests (importable helper, not a test module)."""
+
 from __future__ import annotations
 
 import numpy as np
 
 # θ from 0 to exactly 90° (with near-grazing values) and past it (below the horizon).
-THETAS_DEG = np.array([0.0, 1e-6, 0.1, 10.0, 30.0, 45.0, 60.0, 75.0, 85.0, 89.0, 89.9,
-                       89.99999, 90.0, 90.5, 120.0, 180.0])
+THETAS_DEG = np.array(
+    [0.0, 1e-6, 0.1, 10.0, 30.0, 45.0, 60.0, 75.0, 85.0, 89.0, 89.9, 89.99999, 90.0, 90.5, 120.0, 180.0]
+)
 PHIS_DEG = np.array([0.0, 45.0, 90.0, 137.0, 180.0, 270.0])
 
 

@@ -1,4 +1,5 @@
 """evaluate(material): every model on the dense grid, reciprocity, furnace, options."""
+
 from __future__ import annotations
 
 import sys
@@ -6,26 +7,34 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from cnlmc.bsdf import ALPHA_MIRROR, albedo, evaluate, material_alpha, rotate_tangent
 from cnlmc.bsdf.geometry import spherical_dir
 
 sys.path.insert(0, str(Path(__file__).parent))
-from directions import all_pairs  # noqa: E402
+from directions import all_pairs
 
-AL = {"eta": [1.5022, 0.9853, 0.606], "k": [7.6534, 6.5496, 5.3505],
-      "f0": [0.9073, 0.9159, 0.9223], "f82": [0.8302, 0.8622, 0.8938]}
+AL = {
+    "eta": [1.5022, 0.9853, 0.606],
+    "k": [7.6534, 6.5496, 5.3505],
+    "f0": [0.9073, 0.9159, 0.9223],
+    "f82": [0.8302, 0.8622, 0.8938],
+}
 WHITE_MIRROR_METAL = {"eta": [1.0, 1.0, 1.0], "k": [1e6, 1e6, 1e6]}
 
 
 def material(base, roughness=0.4, **kw):
-    model = {"base": base, "distribution": None if base == "diffuse" else "ggx",
-             "anisotropic": False, "coat": False,
-             "diffuse": "lambert" if base in ("diffuse", "dielectric") else None}
+    model = {
+        "base": base,
+        "distribution": None if base == "diffuse" else "ggx",
+        "anisotropic": False,
+        "coat": False,
+        "diffuse": "lambert" if base in ("diffuse", "dielectric") else None,
+    }
     model.update(kw.pop("model", {}))
-    params = {"base_color": [1.0, 1.0, 1.0], "roughness": roughness, "ior": 1.5,
-              "alpha_convention": "squared", **AL}
+    params = {"base_color": [1.0, 1.0, 1.0], "roughness": roughness, "ior": 1.5, "alpha_convention": "squared", **AL}
     params.update(kw)
     return {"model": model, "params": params}
 
@@ -41,18 +50,25 @@ CASES = {
     "aluminium": material("conductor", 0.3),
     "mirror_metal": material("conductor", 0.0),
     "k0_conductor": material("conductor", 0.5, eta=[1.5, 1.0, 0.5], k=[0.0, 0.0, 0.0]),
-    "brushed": material("conductor", 0.5, anisotropy=1.0, anisotropy_rotation=0.7,
-                        model={"anisotropic": True}),
+    "brushed": material("conductor", 0.5, anisotropy=1.0, anisotropy_rotation=0.7, model={"anisotropic": True}),
     "extreme_aniso": material("conductor", alpha=[1.0, 1e-3], model={"anisotropic": True}),
-    "ward": material("conductor", 0.5, anisotropy=0.8, model={"anisotropic": True,
-                                                              "distribution": "ward"}),
-    "coated_wood": material("dielectric", 0.6, base_color=[0.5, 0.3, 0.1], coat=COAT,
-                            model={"coat": True}),
+    "ward": material("conductor", 0.5, anisotropy=0.8, model={"anisotropic": True, "distribution": "ward"}),
+    "coated_wood": material("dielectric", 0.6, base_color=[0.5, 0.3, 0.1], coat=COAT, model={"coat": True}),
     "coated_metal": material("conductor", 0.3, coat=COAT, model={"coat": True}),
 }
-ENERGY_BOUNDED = ["lambert", "plastic", "plastic_rough0", "glass", "aluminium",
-                  "mirror_metal", "k0_conductor", "brushed", "ward", "coated_wood",
-                  "coated_metal"]
+ENERGY_BOUNDED = [
+    "lambert",
+    "plastic",
+    "plastic_rough0",
+    "glass",
+    "aluminium",
+    "mirror_metal",
+    "k0_conductor",
+    "brushed",
+    "ward",
+    "coated_wood",
+    "coated_metal",
+]
 
 
 @pytest.mark.parametrize("name", sorted(CASES))
@@ -62,14 +78,19 @@ def test_finite_nonnegative_reciprocal_on_dense_grid(name, fresnel):
     f = evaluate(CASES[name], wo, wi, fresnel=fresnel)
     assert f.shape == wo.shape
     assert np.all(np.isfinite(f)) and np.all(f >= 0)
-    np.testing.assert_allclose(f, evaluate(CASES[name], wi, wo, fresnel=fresnel),
-                               rtol=1e-10, atol=1e-300)
+    np.testing.assert_allclose(f, evaluate(CASES[name], wi, wo, fresnel=fresnel), rtol=1e-10, atol=1e-300)
     assert np.all(f[(wo[:, 2] <= 0) | (wi[:, 2] <= 0)] == 0)
 
 
-@given(name=st.sampled_from(sorted(CASES)), t_o=st.floats(0, np.pi / 2),
-       p_o=st.floats(0, 2 * np.pi), t_i=st.floats(0, np.pi / 2), p_i=st.floats(0, 2 * np.pi),
-       rough=st.floats(0.0, 1.0), ms=st.booleans())
+@given(
+    name=st.sampled_from(sorted(CASES)),
+    t_o=st.floats(0, np.pi / 2),
+    p_o=st.floats(0, 2 * np.pi),
+    t_i=st.floats(0, np.pi / 2),
+    p_i=st.floats(0, 2 * np.pi),
+    rough=st.floats(0.0, 1.0),
+    ms=st.booleans(),
+)
 @settings(max_examples=200, deadline=None)
 def test_random_directions_and_roughness(name, t_o, p_o, t_i, p_i, rough, ms):
     mat = {**CASES[name], "params": {**CASES[name]["params"], "roughness": rough}}
@@ -85,8 +106,7 @@ def test_white_furnace_at_most_one(name):
     if mat["model"]["base"] == "conductor" and "eta" in mat["params"]:
         mat = {**mat, "params": {**mat["params"], **WHITE_MIRROR_METAL}}
     if mat["params"].get("coat"):
-        mat = {**mat, "params": {**mat["params"], "base_color": [1.0, 1.0, 1.0],
-                                 "coat": {**COAT, "thickness": 0.0}}}
+        mat = {**mat, "params": {**mat["params"], "base_color": [1.0, 1.0, 1.0], "coat": {**COAT, "thickness": 0.0}}}
     for mu in [1.0, 0.6, 0.2, 0.03]:
         a = albedo(mat, mu, 1 << 11)
         # 5e-3: QMC error of 2^11 MIS samples at the sharpest lobes (α = 1e-3)
@@ -108,8 +128,7 @@ def test_mirror_metal_is_mirror_limit():
     off = evaluate(mat, wo, spherical_dir(0.52, np.pi))
     assert np.all(peak > 1e4) and np.all(off < 2e-4 * peak)
     # the whole lobe still integrates to the Fresnel reflectance at the mirror angle
-    np.testing.assert_allclose(albedo(mat, np.cos(0.5), 1 << 12), albedo(mat, np.cos(0.5), 1 << 13),
-                               atol=2e-3)
+    np.testing.assert_allclose(albedo(mat, np.cos(0.5), 1 << 12), albedo(mat, np.cos(0.5), 1 << 13), atol=2e-3)
 
 
 def test_anisotropy_rotation_rotates_the_lobe():

@@ -1,14 +1,26 @@
 """Fresnel: exact dielectric/conductor edges, Schlick and F82 against the data."""
+
 from __future__ import annotations
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from cnlmc.bsdf.fresnel import (MU_BAR, f0_conductor, f0_from_ior, f82_from_tint,
-                                fresnel_average, fresnel_conductor, fresnel_dielectric,
-                                fresnel_f82, fresnel_f82_tint, fresnel_schlick,
-                                fresnel_schlick_average, ior_from_f0)
+from cnlmc.bsdf.fresnel import (
+    MU_BAR,
+    f0_conductor,
+    f0_from_ior,
+    f82_from_tint,
+    fresnel_average,
+    fresnel_conductor,
+    fresnel_dielectric,
+    fresnel_f82,
+    fresnel_f82_tint,
+    fresnel_schlick,
+    fresnel_schlick_average,
+    ior_from_f0,
+)
 
 MU = np.concatenate([np.linspace(0.0, 1.0, 1001), [1e-300, 1e-12, 1e-7]])
 
@@ -35,8 +47,7 @@ def test_dielectric_total_internal_reflection():
     assert np.all(f[mu > critical + 1e-3] < 1.0)
     # η and 1/η give the same reflectance for corresponding angles (Stokes relations).
     mu_t = np.sqrt(1 - (1 - mu**2) / 1.5**2)
-    np.testing.assert_allclose(fresnel_dielectric(mu, 1.5), fresnel_dielectric(mu_t, eta),
-                               atol=1e-12)
+    np.testing.assert_allclose(fresnel_dielectric(mu, 1.5), fresnel_dielectric(mu_t, eta), atol=1e-12)
 
 
 @given(eta=st.floats(0.2, 5.0), mu=st.floats(0.0, 1.0))
@@ -77,8 +88,8 @@ def test_ior_f0_round_trip_and_averages():
     np.testing.assert_allclose(ior_from_f0(f0_from_ior(ior)), ior, rtol=1e-9)
     f0 = np.array([0.04, 0.5, 0.95])
     np.testing.assert_allclose(
-        fresnel_average(lambda m: fresnel_schlick(m[:, None], f0)), fresnel_schlick_average(f0),
-        atol=1e-12)
+        fresnel_average(lambda m: fresnel_schlick(m[:, None], f0)), fresnel_schlick_average(f0), atol=1e-12
+    )
 
 
 def test_schlick_dielectric_errors_match_reference(accuracy_checks):

@@ -1,4 +1,5 @@
 """Conductor Fresnel per metal against the spectral reference curves (metals_rgb.json)."""
+
 from __future__ import annotations
 
 import importlib.util
@@ -15,16 +16,17 @@ BENCH = Path(__file__).parents[2] / "bench" / "fresnel_table.py"
 # grid must not exceed the listed max by more than that rounding (2e-4), and where the
 # listed maximum lies on the 5° grid it must be reproduced to the same 2e-4.
 ROUNDING = 2e-4
-METHODS = {"schlick_with_true_F0": "schlick", "f82_tint_model": "f82",
-           "exact_fresnel_with_fitted_nk": "exact_fit"}
+METHODS = {"schlick_with_true_F0": "schlick", "f82_tint_model": "f82", "exact_fresnel_with_fitted_nk": "exact_fit"}
 
 
 def _approx(primary, mu):
     m = mu[:, None]
     f0, f82 = np.array(primary["F0_srgb_linear"]), np.array(primary["F82_srgb_linear"])
-    return {"schlick": fresnel_schlick(m, f0), "f82": fresnel_f82(m, f0, f82),
-            "exact_fit": fresnel_conductor(m, np.array(primary["eta_rgb_fit"]),
-                                           np.array(primary["k_rgb_fit"]))}
+    return {
+        "schlick": fresnel_schlick(m, f0),
+        "f82": fresnel_f82(m, f0, f82),
+        "exact_fit": fresnel_conductor(m, np.array(primary["eta_rgb_fit"]), np.array(primary["k_rgb_fit"])),
+    }
 
 
 def test_every_metal_has_a_reference_curve(metals, angular_reference):
@@ -44,8 +46,7 @@ def test_fresnel_errors_reproduce_metals_json(metals, angular_reference):
             on_grid = np.isclose(theta, expect["at_theta_deg"])
             if on_grid.any():
                 ch = "rgb".index(expect["channel"])
-                assert err[on_grid, ch][0] == pytest.approx(expect["max_abs"], abs=ROUNDING), \
-                    (metal["key"], name)
+                assert err[on_grid, ch][0] == pytest.approx(expect["max_abs"], abs=ROUNDING), (metal["key"], name)
 
 
 def test_exact_fit_within_3e3_where_f0_is_inside_srgb(metals, angular_reference):

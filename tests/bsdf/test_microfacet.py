@@ -1,4 +1,5 @@
 """GGX microfacet: stability at the edges, reciprocity, furnace values vs the data."""
+
 from __future__ import annotations
 
 import sys
@@ -6,23 +7,38 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
 from cnlmc.bsdf.alpha import ALPHA_MIRROR, alpha_from_roughness
 from cnlmc.bsdf.fresnel import fresnel_conductor
 from cnlmc.bsdf.geometry import dir_from_mu, reflect
 from cnlmc.bsdf.integrate import albedo_at_mu
-from cnlmc.bsdf.microfacet import (ggx_d, ggx_d_common_form, ggx_d_isotropic,
-                                   microfacet_reflection, mirror_reflectance, smith_g1,
-                                   smith_g2, smith_lambda)
+from cnlmc.bsdf.microfacet import (
+    ggx_d,
+    ggx_d_common_form,
+    ggx_d_isotropic,
+    microfacet_reflection,
+    mirror_reflectance,
+    smith_g1,
+    smith_g2,
+    smith_lambda,
+)
 from cnlmc.bsdf.multiscatter import average_over_mu, ggx_albedo
 
 sys.path.insert(0, str(Path(__file__).parent))
-from directions import all_pairs  # noqa: E402
+from directions import all_pairs
 
-ALPHAS = [(ALPHA_MIRROR, ALPHA_MIRROR), (0.01, 0.01), (0.3, 0.3), (1.0, 1.0),
-          (1.0, ALPHA_MIRROR), (ALPHA_MIRROR, 1.0), (0.5, 0.05)]
+ALPHAS = [
+    (ALPHA_MIRROR, ALPHA_MIRROR),
+    (0.01, 0.01),
+    (0.3, 0.3),
+    (1.0, 1.0),
+    (1.0, ALPHA_MIRROR),
+    (ALPHA_MIRROR, 1.0),
+    (0.5, 0.05),
+]
 
 
 def test_alpha_mapping():
@@ -115,10 +131,10 @@ def test_ggx_white_furnace_reproduces_data(accuracy_checks):
     for a_key, ref in accuracy_checks["ggx_white_furnace"].items():
         alpha = float(a_key)
         mus = np.array([float(m) for m in ref["E_mu"]])
-        np.testing.assert_allclose(ggx_albedo(mus, alpha, 1 << 14),
-                                   list(ref["E_mu"].values()), atol=2e-3)
-        np.testing.assert_allclose(ggx_albedo(mus, alpha, 1 << 14, correlated=False),
-                                   list(ref["E_mu_separable_smith"].values()), atol=2e-3)
+        np.testing.assert_allclose(ggx_albedo(mus, alpha, 1 << 14), list(ref["E_mu"].values()), atol=2e-3)
+        np.testing.assert_allclose(
+            ggx_albedo(mus, alpha, 1 << 14, correlated=False), list(ref["E_mu_separable_smith"].values()), atol=2e-3
+        )
         e_avg = average_over_mu(lambda m: ggx_albedo(m, alpha, 2048))
         assert e_avg == pytest.approx(ref["E_avg"], abs=2e-3)
 
@@ -128,8 +144,7 @@ def test_furnace_through_brdf_matches_estimator():
     VNDF estimator, including α = 1e-3 and grazing; and stays ≤ 1."""
     for alpha in [ALPHA_MIRROR, 0.05, 0.3, 1.0]:
         for mu in [1.0, 0.5, 0.1, 0.02]:
-            e = albedo_at_mu(lambda o, i: microfacet_reflection(o, i, alpha, alpha), mu,
-                             alpha, alpha, n=1 << 12)
+            e = albedo_at_mu(lambda o, i: microfacet_reflection(o, i, alpha, alpha), mu, alpha, alpha, n=1 << 12)
             assert e == pytest.approx(ggx_albedo(mu, alpha, 1 << 12), abs=3e-3)
             assert e <= 1.0 + 1e-3
 
@@ -145,8 +160,7 @@ def test_ggx_small_alpha_float32_reproduces_data(accuracy_checks):
             assert np.isinf(at_normal)
         else:
             assert float(at_normal) == pytest.approx(ref["D_at_normal_f32"], rel=2e-5)
-        assert float(ggx_d_common_form(np.float32(c01), a32)) == \
-            pytest.approx(ref["D_0p1deg_f32"], rel=2e-5)
+        assert float(ggx_d_common_form(np.float32(c01), a32)) == pytest.approx(ref["D_0p1deg_f32"], rel=2e-5)
         assert ggx_d_isotropic(1.0, float(a_key)) == pytest.approx(ref["D_exact_at_normal"], rel=1e-12)
         assert ggx_d_isotropic(c01, float(a_key)) == pytest.approx(ref["D_0p1deg_f64"], rel=1e-9)
         stable32 = ggx_d(np.array([0.0, 0.0, 1.0], np.float32), a32, a32)

@@ -1,4 +1,5 @@
 """Kulla–Conty energy compensation against brdf_accuracy_checks.json "kulla_conty"."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -8,8 +9,14 @@ from cnlmc.bsdf.evaluate import albedo
 from cnlmc.bsdf.fresnel import fresnel_average, fresnel_conductor
 from cnlmc.bsdf.integrate import albedo_at_mu
 from cnlmc.bsdf.microfacet import microfacet_reflection
-from cnlmc.bsdf.multiscatter import (TABLE_SIZE, albedo_lookup, albedo_table, average_albedo,
-                                     fresnel_multiscatter, multiscatter_lobe)
+from cnlmc.bsdf.multiscatter import (
+    TABLE_SIZE,
+    albedo_lookup,
+    albedo_table,
+    average_albedo,
+    fresnel_multiscatter,
+    multiscatter_lobe,
+)
 
 # Tolerances: table E(μ, α) is a 32² QMC table (2048 samples/entry, ~5e-4) with
 # bilinear interpolation (~3e-4 at these α); the listed values are rounded to 1e-4.
@@ -32,8 +39,7 @@ def test_white_furnace_after_compensation(accuracy_checks):
         alpha = float(a_key)
         assert average_albedo(alpha) == pytest.approx(ref["E_avg"], abs=TOL)
         for mu in [1.0, 0.7, 0.4, 0.1]:
-            both = lambda o, i: (microfacet_reflection(o, i, alpha, alpha)  # noqa: E731
-                                 + multiscatter_lobe(o, i, alpha))
+            both = lambda o, i: microfacet_reflection(o, i, alpha, alpha) + multiscatter_lobe(o, i, alpha)
             total = albedo_at_mu(both, mu, alpha, alpha, n=1 << 12)
             assert total == pytest.approx(1.0, abs=3e-3), (alpha, mu)
 
@@ -44,12 +50,12 @@ def test_coloured_metals_reproduce_data(accuracy_checks, metals):
         for key in ("Au", "Cu", "Al", "Fe"):
             p = _metal(metals, key)
             eta, k = np.array(p["eta_rgb_fit"]), np.array(p["k_rgb_fit"])
-            fres = lambda c: fresnel_conductor(np.asarray(c)[..., None], eta, k)  # noqa: E731
+            fres = lambda c: fresnel_conductor(np.asarray(c)[..., None], eta, k)
             f_avg = fresnel_average(fres)
-            single = albedo_at_mu(lambda o, i: microfacet_reflection(o, i, alpha, alpha, fres),
-                                  1.0, alpha, alpha, n=1 << 12)
-            added = albedo_at_mu(lambda o, i: multiscatter_lobe(o, i, alpha, f_avg), 1.0,
-                                 n=1 << 12)
+            single = albedo_at_mu(
+                lambda o, i: microfacet_reflection(o, i, alpha, alpha, fres), 1.0, alpha, alpha, n=1 << 12
+            )
+            added = albedo_at_mu(lambda o, i: multiscatter_lobe(o, i, alpha, f_avg), 1.0, n=1 << 12)
             for c, ch in enumerate("rgb"):
                 want = ref[key][ch]
                 assert f_avg[c] == pytest.approx(want["F_avg"], abs=2e-4)
@@ -66,10 +72,10 @@ def test_fresnel_multiscatter_limits():
 
 
 def test_evaluate_multiscatter_flag_adds_energy_but_stays_bounded():
-    mat = {"model": {"base": "conductor", "distribution": "ggx", "anisotropic": False,
-                     "coat": False, "diffuse": None},
-           "params": {"base_color": [1, 1, 1], "roughness": 0.8, "eta": [1.0, 1.0, 1.0],
-                      "k": [1e6, 1e6, 1e6]}}
+    mat = {
+        "model": {"base": "conductor", "distribution": "ggx", "anisotropic": False, "coat": False, "diffuse": None},
+        "params": {"base_color": [1, 1, 1], "roughness": 0.8, "eta": [1.0, 1.0, 1.0], "k": [1e6, 1e6, 1e6]},
+    }
     for mu in [1.0, 0.3]:
         single = albedo(mat, mu, 1 << 12)
         multi = albedo(mat, mu, 1 << 12, multiscatter=True)

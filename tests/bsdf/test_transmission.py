@@ -4,6 +4,7 @@ Checks: finite and non-negative everywhere (η = 1, TIR, grazing, in-plane, tiny
 generalized reciprocity f_t(wo, wi)/η_o² = f_t(wi, wo)/η_i²; white-furnace energy against
 an independent brute-force Monte Carlo of the microfacet model and the smooth-interface
 limit R + T = 1; agreement with Mitsuba 3's roughdielectric."""
+
 from __future__ import annotations
 
 import copy
@@ -13,19 +14,30 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from cnlmc.bsdf import (ALPHA_MIRROR, dielectric_reflection, evaluate, evaluate_bsdf,
-                        evaluate_transmission, fresnel_dielectric, microfacet_transmission,
-                        mirror_transmittance, sample_ggx_vndf, smith_lambda, transmission_g2)
+from cnlmc.bsdf import (
+    ALPHA_MIRROR,
+    dielectric_reflection,
+    evaluate,
+    evaluate_bsdf,
+    evaluate_transmission,
+    fresnel_dielectric,
+    microfacet_transmission,
+    mirror_transmittance,
+    sample_ggx_vndf,
+    smith_lambda,
+    transmission_g2,
+)
 from cnlmc.bsdf.integrate import lattice_2d
 from cnlmc.bsdf.transmission import G2_FORMS, refract
 
 sys.path.insert(0, str(Path(__file__).parent))
-from directions import sphere_dirs  # noqa: E402
+from directions import sphere_dirs
 
-GLASS = {"name": "glass", "model": {"base": "glass", "distribution": "ggx", "anisotropic": False,
-                                    "diffuse": None, "coat": False},
-         "params": {"ior": 1.5, "roughness": 0.3, "base_color": [0.9, 0.95, 1.0],
-                    "alpha_convention": "squared"}}
+GLASS = {
+    "name": "glass",
+    "model": {"base": "glass", "distribution": "ggx", "anisotropic": False, "diffuse": None, "coat": False},
+    "params": {"ior": 1.5, "roughness": 0.3, "base_color": [0.9, 0.95, 1.0], "alpha_convention": "squared"},
+}
 
 
 def glass(**params):
@@ -97,7 +109,7 @@ def test_tir_region_is_exactly_zero(ior):
     mu = np.linspace(0.0, 1.0, 101)
     w_in = np.stack([np.sqrt(1 - mu * mu), 0 * mu, -mu], -1)
     t, weight = mirror_transmittance(w_in, ior)
-    beyond = mu < np.sqrt(1.0 - 1.0 / ior ** 2)
+    beyond = mu < np.sqrt(1.0 - 1.0 / ior**2)
     assert np.all(weight[beyond] == 0.0) and np.all(t[beyond] == 0.0)
     assert np.all(weight[~beyond & (mu > 1e-6)] > 0.0)
 
@@ -109,7 +121,7 @@ def test_mirror_transmittance_weights():
     t, w_rad = mirror_transmittance(wo, 1.5)
     _, w_imp = mirror_transmittance(wo, 1.5, "importance")
     np.testing.assert_allclose(w_imp, 1.0 - fresnel_dielectric(mu, 1.5), rtol=1e-12)
-    np.testing.assert_allclose(w_rad, w_imp / 1.5 ** 2, rtol=1e-12)
+    np.testing.assert_allclose(w_rad, w_imp / 1.5**2, rtol=1e-12)
     np.testing.assert_allclose(np.linalg.norm(t, axis=-1), 1.0, rtol=1e-12)
     np.testing.assert_allclose(np.sqrt(1 - t[:, 2] ** 2) * 1.5, np.sqrt(1 - mu * mu), rtol=1e-12)  # Snell
     t1, w1 = mirror_transmittance(wo, 1.0)
@@ -125,7 +137,7 @@ def test_generalized_reciprocity(g2, ior):
     rng = np.random.default_rng(5)
     wo, wi = unit(rng.normal(size=(5000, 3))), unit(rng.normal(size=(5000, 3)))
     wi[:, 2] = -np.sign(wo[:, 2]) * np.abs(wi[:, 2])
-    eta = lambda w: np.where(w[:, 2] > 0, 1.0, ior)  # noqa: E731
+    eta = lambda w: np.where(w[:, 2] > 0, 1.0, ior)
     a = microfacet_transmission(wo, wi, 0.2, 0.4, ior, g2) / eta(wo) ** 2
     b = microfacet_transmission(wi, wo, 0.2, 0.4, ior, g2) / eta(wi) ** 2
     assert np.count_nonzero(a) > 300
@@ -156,7 +168,7 @@ def brute_force_split(mu, alpha, ior, inside=False, n=1 << 16):
     """(R, T) energy fractions from wo straight from the microfacet model: visible normals
     m ~ D_wo (Heitz 2018), then reflect with weight F·G2/G1(wo) or refract with
     (1 − F)·G2/G1(wo) (height-correlated G2 = 1/(1 + Λo + Λi)). No BSDF formula involved."""
-    eta = 1.0 / ior if inside else ior            # relative index seen from wo's side
+    eta = 1.0 / ior if inside else ior  # relative index seen from wo's side
     u1, u2 = lattice_2d(n)
     wo = np.tile([np.sqrt(1 - mu * mu), 0.0, mu], (n, 1))
     m = sample_ggx_vndf(wo, alpha, alpha, u1, u2)
@@ -165,7 +177,7 @@ def brute_force_split(mu, alpha, ior, inside=False, n=1 << 16):
     lo = smith_lambda(wo, alpha, alpha)
     r = 2 * c[:, None] * m - wo
     lr = smith_lambda(r, alpha, alpha)
-    ct2 = 1.0 - (1.0 - c * c) / eta ** 2
+    ct2 = 1.0 - (1.0 - c * c) / eta**2
     ct = np.sqrt(np.maximum(ct2, 0.0))
     t = -wo / eta + (c / eta - ct)[:, None] * m
     lt = smith_lambda(t * np.array([1, 1, -1.0]), alpha, alpha)
@@ -195,8 +207,9 @@ def transmitted_energy(mu, alpha, ior, inside=False, n=1 << 15):
     axis = t0 if ok else unit(np.array([-wo[0], 0.0, -sign * 0.05]))
     u1, u2 = lattice_2d(n)
     r = np.sqrt(u1)
-    cosine = np.stack([r * np.cos(2 * np.pi * u2), r * np.sin(2 * np.pi * u2),
-                       -sign * np.sqrt(np.maximum(1 - u1, 0))], -1)
+    cosine = np.stack(
+        [r * np.cos(2 * np.pi * u2), r * np.sin(2 * np.pi * u2), -sign * np.sqrt(np.maximum(1 - u1, 0))], -1
+    )
     strategies = [(cosine, None)] + [cap_samples(axis, min(k * alpha, 1.5), n) for k in (4.0, 20.0)]
 
     def pdf_all(w):
@@ -229,6 +242,7 @@ def test_furnace_outside_at_most_one(mu, alpha):
     to the brute-force microfacet numbers."""
     m = glass(alpha=[alpha, alpha], base_color=[1.0, 1.0, 1.0])
     from cnlmc.bsdf import albedo
+
     R = albedo(m, mu)[0]
     T = transmitted_energy(mu, alpha, 1.5)
     R_mc, T_mc = brute_force_split(mu, alpha, 1.5)
@@ -276,7 +290,7 @@ def _mitsuba():
     mi = pytest.importorskip("mitsuba")
     try:
         mi.set_variant("scalar_rgb")
-    except Exception as exc:  # noqa: BLE001
+    except Exception as exc:
         pytest.skip(f"mitsuba scalar_rgb variant unavailable: {exc}")
     return mi
 
@@ -298,13 +312,16 @@ def test_agrees_with_mitsuba_roughdielectric(alpha, ior, mode):
     and its wo = our wi returns f · |cos θi| in its transport mode; Mitsuba 3's GGX uses the
     separable Smith G2 = G1 G1, so we compare g2="separable". Reflection and transmission."""
     mi = _mitsuba()
-    bsdf = mi.load_dict({"type": "roughdielectric", "distribution": "ggx", "alpha": alpha,
-                         "int_ior": ior, "ext_ior": 1.0})
+    bsdf = mi.load_dict(
+        {"type": "roughdielectric", "distribution": "ggx", "alpha": alpha, "int_ior": ior, "ext_ior": 1.0}
+    )
     ctx = mi.BSDFContext(mi.TransportMode.Radiance if mode == "radiance" else mi.TransportMode.Importance)
     rng = np.random.default_rng(11)
     wo, wi = mitsuba_pairs(rng, 600, ior, alpha)
-    ours = (microfacet_transmission(wo, wi, alpha, alpha, ior, "separable", mode)
-            + dielectric_reflection(wo, wi, alpha, alpha, ior, "separable")) * np.abs(wi[:, 2])
+    ours = (
+        microfacet_transmission(wo, wi, alpha, alpha, ior, "separable", mode)
+        + dielectric_reflection(wo, wi, alpha, alpha, ior, "separable")
+    ) * np.abs(wi[:, 2])
     theirs = np.empty(len(wo))
     si = mi.SurfaceInteraction3f()
     si.n = mi.Normal3f(0, 0, 1)
@@ -316,6 +333,6 @@ def test_agrees_with_mitsuba_roughdielectric(alpha, ior, mode):
     assert np.count_nonzero(trans & (theirs > 1e-3)) > 100
     big = theirs > 1e-3
     rel = np.abs(ours - theirs)[big] / theirs[big]
-    assert np.max(rel) < 5e-3, np.max(rel)   # Mitsuba evaluates in float32
+    assert np.max(rel) < 5e-3, np.max(rel)  # Mitsuba evaluates in float32
     assert np.median(rel) < 1e-5
     assert np.all(np.abs(ours - theirs)[~big] < 2e-3)

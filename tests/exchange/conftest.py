@@ -3,6 +3,7 @@
 Maps whose graph the maps library cannot bake yet are stripped (the backends are tested
 map-free for those); everything bakes at 16x16 so the folder runs quickly.
 """
+
 from __future__ import annotations
 
 import copy
@@ -14,10 +15,24 @@ import pytest
 from cnlmc.api import compile_source, lexicon_for
 
 PHRASES = [
-    "white varnished oak", "lightly brushed, blue anodized aluminum", "clear-coated red car paint",
-    "frosted glass", "red or green glass", "rusty iron", "polished gold", "deep red velvet",
-    "brushed steel", "lacquered maple", "glazed terracotta", "hammered copper", "tinted glass",
-    "varnished brass", "rough stone", "blue or red or green plastic", "satin nickel", "wet asphalt",
+    "white varnished oak",
+    "lightly brushed, blue anodized aluminum",
+    "clear-coated red car paint",
+    "frosted glass",
+    "red or green glass",
+    "rusty iron",
+    "polished gold",
+    "deep red velvet",
+    "brushed steel",
+    "lacquered maple",
+    "glazed terracotta",
+    "hammered copper",
+    "tinted glass",
+    "varnished brass",
+    "rough stone",
+    "blue or red or green plastic",
+    "satin nickel",
+    "wet asphalt",
 ]
 FAST = {"map_size": "16"}
 
@@ -40,7 +55,7 @@ def bakeable(ir: dict) -> dict:
     return ir
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _compiled(source: str) -> dict:
     result = compile_source(source + "\n")
     assert result.ok, [d.message for d in result.diagnostics]
@@ -73,12 +88,30 @@ def synthetic_materials() -> list[dict]:
             target[keys[-1]] = value
         out.append(m)
 
-    variant(plastic, "aniso_plastic", model__anisotropic=True, model__distribution="ward",
-            params__anisotropy=0.6, params__anisotropy_rotation=math.pi / 4, params__alpha=[0.08, 0.03])
-    variant(gold, "coated_tinted_gold", model__coat=True,
-            params__coat={"ior": 1.5, "roughness": 0.2, "alpha": [0.04, 0.04], "color": [0.9, 0.5, 0.2], "thickness": 2.0})
-    variant(glass, "aniso_glass", model__anisotropic=True, params__anisotropy=0.5, params__anisotropy_rotation=0.3,
-            params__alpha=[0.09, 0.02], params__roughness=0.2)
+    variant(
+        plastic,
+        "aniso_plastic",
+        model__anisotropic=True,
+        model__distribution="ward",
+        params__anisotropy=0.6,
+        params__anisotropy_rotation=math.pi / 4,
+        params__alpha=[0.08, 0.03],
+    )
+    variant(
+        gold,
+        "coated_tinted_gold",
+        model__coat=True,
+        params__coat={"ior": 1.5, "roughness": 0.2, "alpha": [0.04, 0.04], "color": [0.9, 0.5, 0.2], "thickness": 2.0},
+    )
+    variant(
+        glass,
+        "aniso_glass",
+        model__anisotropic=True,
+        params__anisotropy=0.5,
+        params__anisotropy_rotation=0.3,
+        params__alpha=[0.09, 0.02],
+        params__roughness=0.2,
+    )
     variant(plastic, "linear_plastic", params__alpha_convention="linear", params__alpha=[0.3, 0.3])
     return out
 
@@ -96,12 +129,14 @@ def all_sources() -> list[str]:
 @pytest.fixture(scope="session")
 def mx_library():
     from cnlmc.backends.materialx import standard_library
+
     return standard_library()
 
 
 def write_artifacts(artifacts, folder) -> None:
     """Write artifacts as the CLI would (text as UTF-8), so relative texture paths resolve."""
     from pathlib import Path
+
     for artifact in artifacts:
         path = Path(folder) / artifact.name
         path.parent.mkdir(parents=True, exist_ok=True)

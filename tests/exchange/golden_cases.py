@@ -4,6 +4,7 @@ The IR input is frozen in golden/input.ir.json so the golden outputs change only
 backend changes (not when the lexicon does). Regenerate explicitly:
     .venv/bin/python -m tests.exchange.regenerate_golden
 """
+
 from __future__ import annotations
 
 import json
@@ -11,10 +12,20 @@ from pathlib import Path
 
 GOLDEN = Path(__file__).parent / "golden"
 INPUT = GOLDEN / "input.ir.json"
-SOURCE = "\n".join([
-    "white varnished oak", "lightly brushed, blue anodized aluminum", "red or green glass",
-    "deep red velvet", "clear-coated red car paint", "polished gold", "frosted glass",
-]) + "\n"
+SOURCE = (
+    "\n".join(
+        [
+            "white varnished oak",
+            "lightly brushed, blue anodized aluminum",
+            "red or green glass",
+            "deep red velvet",
+            "clear-coated red car paint",
+            "polished gold",
+            "frosted glass",
+        ]
+    )
+    + "\n"
+)
 # (target, options, golden file name)
 CASES = [
     ("materialx", {"maps": "none"}, "materialx/open_pbr.mtlx"),
@@ -31,5 +42,6 @@ def frozen_ir() -> dict:
 
 def render(target: str, options: dict, ir: dict) -> str:
     from cnlmc.api import emit
+
     (artifact,) = emit(ir, target, options).artifacts
     return artifact.content

@@ -1,5 +1,6 @@
 """Every backend has a policy for every feature and a reason for every non-exact one, and every
 non-exact feature a material uses reaches the notes (IR model kinds x backends)."""
+
 from __future__ import annotations
 
 import pytest
@@ -10,11 +11,24 @@ from cnlmc.backends.capabilities import ALL_FEATURES, POLICIES, material_feature
 
 from .conftest import ir_of, synthetic_ir
 
-TABLES = {"materialx": materialx.CAPABILITIES, "usd": usd.CAPABILITIES, "mitsuba": mitsuba.CAPABILITIES,
-          **{f"materialx/{s}": t for s, t in materialx.CAPABILITIES_BY_SURFACE.items()}}
-MODEL_KINDS = ["deep red velvet", "glossy red plastic", "polished gold", "frosted glass",
-               "lightly brushed, blue anodized aluminum", "clear-coated red car paint", "varnished brass",
-               "rusty iron", "rough stone", "white varnished oak"]
+TABLES = {
+    "materialx": materialx.CAPABILITIES,
+    "usd": usd.CAPABILITIES,
+    "mitsuba": mitsuba.CAPABILITIES,
+    **{f"materialx/{s}": t for s, t in materialx.CAPABILITIES_BY_SURFACE.items()},
+}
+MODEL_KINDS = [
+    "deep red velvet",
+    "glossy red plastic",
+    "polished gold",
+    "frosted glass",
+    "lightly brushed, blue anodized aluminum",
+    "clear-coated red car paint",
+    "varnished brass",
+    "rusty iron",
+    "rough stone",
+    "white varnished oak",
+]
 
 
 @pytest.mark.parametrize("table", TABLES)

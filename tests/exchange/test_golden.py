@@ -1,4 +1,5 @@
 """Backend output for a frozen IR equals the reviewed golden files (regenerate_golden.py)."""
+
 from __future__ import annotations
 
 import pytest
@@ -10,4 +11,5 @@ from .golden_cases import CASES, GOLDEN, frozen_ir, render
 def test_golden(target, options, name):
     expected = (GOLDEN / name).read_text(encoding="utf-8")
     assert render(target, options, frozen_ir()) == expected, (
-        f"{name} changed; if intended, run: .venv/bin/python -m tests.exchange.regenerate_golden")
+        f"{name} changed; if intended, run: .venv/bin/python -m tests.exchange.regenerate_golden"
+    )

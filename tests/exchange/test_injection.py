@@ -1,4 +1,5 @@
 """Hostile names and phrases cannot break or inject into MaterialX, USD or Mitsuba output."""
+
 from __future__ import annotations
 
 import copy
@@ -13,7 +14,7 @@ from .conftest import ir_of, write_artifacts
 
 HOSTILE = [
     'evil" injected="1',
-    "</bsdf><bsdf type=\"diffuse\" id=\"pwn\"/><!--",
+    '</bsdf><bsdf type="diffuse" id="pwn"/><!--',
     "a & b < c > d",
     "]]><![CDATA[ x",
     "*/ /* -- --> <!-- ",
@@ -49,6 +50,7 @@ def test_identifiers_stay_unique():
 @pytest.mark.parametrize("phrase", HOSTILE)
 def test_materialx(phrase, mx_library):
     import MaterialX as mx
+
     ir = hostile_ir(phrase)
     xml = emit(ir, "materialx", {"maps": "none"}).artifacts[0].content
     ET.fromstring(xml.encode("utf-8"))
@@ -64,6 +66,7 @@ def test_materialx(phrase, mx_library):
 @pytest.mark.parametrize("phrase", HOSTILE)
 def test_usd(phrase, tmp_path):
     from pxr import Usd
+
     ir = hostile_ir(phrase, "red or green glass")
     write_artifacts(emit(ir, "usd", {"maps": "none", "mesh": "sphere"}).artifacts, tmp_path)
     stage = Usd.Stage.Open(str(tmp_path / "materials.usda"))

@@ -1,4 +1,5 @@
 """MaterialX: every stdlib noun and phrase validates and goes through MaterialX's GLSL generator."""
+
 from __future__ import annotations
 
 import json
@@ -12,8 +13,7 @@ import MaterialX.PyMaterialXGenGlsl as mxg  # noqa: E402
 import MaterialX.PyMaterialXGenShader as mxs  # noqa: E402
 
 from cnlmc.api import emit  # noqa: E402
-from cnlmc.backends.materialx_params import (f82_tint, gulbrandsen_edge, openpbr_roughness,  # noqa: E402
-                                             standard_roughness)
+from cnlmc.backends.materialx_params import f82_tint, gulbrandsen_edge, openpbr_roughness, standard_roughness  # noqa: E402
 
 from .conftest import FAST, all_sources, ir_of, synthetic_ir  # noqa: E402
 
@@ -69,7 +69,7 @@ def test_synthetic_models(surface, mx_library, glsl):
     doc, result = check_document(synthetic_ir(), {"surface": surface}, mx_library, glsl)
     features = {n.feature for n in result.notes}
     assert {"coat", "coat.color", "distribution.ward"} <= features
-    if surface == "open_pbr_surface":   # rotated streaks: a rotated tangent feeds geometry_tangent
+    if surface == "open_pbr_surface":  # rotated streaks: a rotated tangent feeds geometry_tangent
         shader = doc.getChild("SR_aniso_plastic")
         assert shader.getInput("geometry_tangent").getNodeName() == "aniso_plastic_tangent_rotated"
 

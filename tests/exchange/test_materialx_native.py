@@ -1,4 +1,5 @@
 """MaterialX maps=native: procedural maps with a recipe become MaterialX nodes, the rest are baked."""
+
 from __future__ import annotations
 
 import subprocess
@@ -19,8 +20,11 @@ CASES = {
     "sandblasted aluminum": ({"noise2d", "heighttonormal", "texcoord"}, {"normal"}, set()),
     "polished white marble": ({"fractal2d", "sin", "mix", "texcoord"}, {"base_color"}, set()),
     "polished granite": ({"cellnoise2d", "worleynoise2d", "mix"}, {"base_color"}, set()),
-    "heavily rusted iron": ({"fractal2d", "worleynoise2d", "smoothstep", "mix"}, {"base_color", "roughness", "mask"},
-                            set()),
+    "heavily rusted iron": (
+        {"fractal2d", "worleynoise2d", "smoothstep", "mix"},
+        {"base_color", "roughness", "mask"},
+        set(),
+    ),
     "white varnished oak": (set(), set(), {"base_color", "roughness"}),
 }
 
@@ -31,7 +35,7 @@ def test_native_maps(phrase, surface, mx_library, glsl):  # noqa: F811
     categories, native_roles, baked_roles = CASES[phrase]
     ir = ir_of(phrase)
     material = ir["materials"][0]
-    assert set(material["maps"]) == native_roles | baked_roles     # the phrase still has these maps
+    assert set(material["maps"]) == native_roles | baked_roles  # the phrase still has these maps
     doc, result = check_document(ir, {"surface": surface, "maps": "native"}, mx_library, glsl)
     present = {n.getCategory() for n in doc.getNodes()}
     assert categories <= present
@@ -59,8 +63,12 @@ def test_rust_mask_drives_metalness(mx_library, glsl):  # noqa: F811
 def test_roughness_recipe_follows_the_material(mx_library, glsl):  # noqa: F811
     ir = ir_of("sandblasted aluminum")
     material = ir["materials"][0]
-    material["maps"]["roughness"] = {"graph": "sandblasted", "output": "roughness", "params": {"contrast": 2.0},
-                                     "seed": 0}
+    material["maps"]["roughness"] = {
+        "graph": "sandblasted",
+        "output": "roughness",
+        "params": {"contrast": 2.0},
+        "seed": 0,
+    }
     doc, result = check_document(ir, {"maps": "native"}, mx_library, glsl)
     remap = doc.getNode(f"{material['name']}_sandblasted_roughness")
     r = material["params"]["roughness"]
@@ -89,9 +97,14 @@ def test_bogus_map_mode_is_an_error():
 
 def test_native_from_the_command_line(tmp_path):
     out = tmp_path / "out.mtlx"
-    r = subprocess.run([sys.executable, "-m", "cnlmc", "compile", "-", "-t", "materialx", "--option", "maps=native",
-                        "-o", str(out)], input="stone: polished white marble\nhull: heavily rusted iron\n",
-                       capture_output=True, text=True, timeout=300, cwd=tmp_path)
+    r = subprocess.run(
+        [sys.executable, "-m", "cnlmc", "compile", "-", "-t", "materialx", "--option", "maps=native", "-o", str(out)],
+        input="stone: polished white marble\nhull: heavily rusted iron\n",
+        capture_output=True,
+        text=True,
+        timeout=300,
+        cwd=tmp_path,
+    )
     assert r.returncode == 0, r.stderr
     written = list(tmp_path.rglob("*.mtlx"))
     assert written, "nothing written"

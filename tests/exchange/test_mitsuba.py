@@ -1,4 +1,5 @@
 """Mitsuba 3: every stdlib noun and phrase loads (scalar_rgb) and renders finite pixels."""
+
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
@@ -60,16 +61,19 @@ def bsdf_types(xml: str) -> dict[str, list[str]]:
     return {b.get("id"): [e.get("type") for e in b.iter("bsdf")] for b in root.findall("bsdf")}
 
 
-@pytest.mark.parametrize("source, expected", [
-    ("gold", ["twosided", "roughconductor"]),
-    ("polished gold", ["twosided", "conductor"]),
-    ("lightly brushed, blue anodized aluminum", ["twosided", "roughconductor"]),
-    ("clear-coated red car paint", ["twosided", "principled"]),
-    ("glossy red plastic", ["twosided", "roughplastic"]),
-    ("deep red velvet", ["twosided", "diffuse"]),
-    ("glass", ["dielectric"]),
-    ("frosted glass", ["roughdielectric"]),
-])
+@pytest.mark.parametrize(
+    "source, expected",
+    [
+        ("gold", ["twosided", "roughconductor"]),
+        ("polished gold", ["twosided", "conductor"]),
+        ("lightly brushed, blue anodized aluminum", ["twosided", "roughconductor"]),
+        ("clear-coated red car paint", ["twosided", "principled"]),
+        ("glossy red plastic", ["twosided", "roughplastic"]),
+        ("deep red velvet", ["twosided", "diffuse"]),
+        ("glass", ["dielectric"]),
+        ("frosted glass", ["roughdielectric"]),
+    ],
+)
 def test_plugin_choice(source, expected):
     xml = emit(ir_of(source), "mitsuba", {"maps": "none", "form": "fragment"}).artifacts[0].content
     (types,) = bsdf_types(xml).values()

@@ -1,5 +1,6 @@
 """`--target mitsuba --option bsdf=cnlm` and the `cnlm` Mitsuba plugin: Mitsuba itself
 evaluates, samples and renders cnlmc's BSDF, and the values equal the numpy reference."""
+
 from __future__ import annotations
 
 import json
@@ -62,11 +63,14 @@ def test_unknown_bsdf_option_is_refused():
 
 # ----------------------------------------------------------------- inside Mitsuba
 
+
 @pytest.fixture(scope="module")
 def mi():
     mitsuba_module = pytest.importorskip("mitsuba")
     import drjit as dr
+
     from cnlmc.backends import mitsuba_cnlm
+
     previous = mitsuba_module.variant()
     flags = {f: dr.flag(f) for f in (dr.JitFlag.SymbolicCalls, dr.JitFlag.SymbolicLoops)}
     try:
@@ -89,6 +93,7 @@ def directions(n: int, seed: int) -> np.ndarray:
 
 def interaction(mi, wo: np.ndarray):
     import drjit as dr
+
     si = dr.zeros(mi.SurfaceInteraction3f, len(wo))
     si.wi = mi.Vector3f(*(np.ascontiguousarray(wo[:, k], np.float32) for k in range(3)))
     si.sh_frame = mi.Frame3f(mi.Vector3f(0, 0, 1))
@@ -129,8 +134,9 @@ def test_a_lambert_material_renders_as_mitsubas_own_diffuse(mi, tmp_path):
     """Same scene, `cnlm` plugin vs native `diffuse`: Lambert is exact in both."""
     from cnlmc.backends.preview.mitsuba_scene import export_scene, render_scene
     from cnlmc.backends.preview.render import default_scene
+
     m = material("paper")
-    m["model"]["diffuse"] = "lambert"                    # stdlib paper is Oren-Nayar
+    m["model"]["diffuse"] = "lambert"  # stdlib paper is Oren-Nayar
     scene = default_scene("sphere", "studio", (48, 48))
     images = {}
     for kind in ("cnlm", "native"):
@@ -152,10 +158,12 @@ def test_native_plugins_warn_where_they_approximate_and_cnlm_does_not():
 
 def test_without_llvm_19_the_plugin_refuses_clearly_instead_of_aborting():
     """Mitsuba's llvm variants abort the process with LLVM 15/16: no LLVM 19, no attempt."""
-    code = ("import os; os.environ.pop('DRJIT_LIBLLVM_PATH', None)\n"
-            "from cnlmc.backends import mitsuba_cnlm\n"
-            "mitsuba_cnlm.LLVM_LIBRARY = '/nonexistent/libLLVM.so.19.1'\n"
-            "try:\n    mitsuba_cnlm.register()\nexcept mitsuba_cnlm.PluginError as exc:\n    print('refused:', exc)\n")
+    code = (
+        "import os; os.environ.pop('DRJIT_LIBLLVM_PATH', None)\n"
+        "from cnlmc.backends import mitsuba_cnlm\n"
+        "mitsuba_cnlm.LLVM_LIBRARY = '/nonexistent/libLLVM.so.19.1'\n"
+        "try:\n    mitsuba_cnlm.register()\nexcept mitsuba_cnlm.PluginError as exc:\n    print('refused:', exc)\n"
+    )
     env = {k: v for k, v in os.environ.items() if k != "DRJIT_LIBLLVM_PATH"}
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120, env=env)
     assert proc.returncode == 0 and "refused:" in proc.stdout and "libllvm19" in proc.stdout

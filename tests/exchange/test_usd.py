@@ -1,5 +1,6 @@
 """USD: every stdlib noun and phrase passes UsdValidation (bar the documented sdrRegistry error
 for ND_* ids), reopens with the same values; variants, binary formats and the pipeline API."""
+
 from __future__ import annotations
 
 import zipfile
@@ -24,8 +25,11 @@ def validators():
 
 def unexpected_errors(stage, validators) -> list[str]:
     errors = [e for e in validators.Validate(stage) if e.GetType() == UsdValidation.ValidationErrorType.Error]
-    return [e.GetMessage() for e in errors
-            if not ("not found in sdrRegistry" in e.GetMessage() and "'ND_" in e.GetMessage())]
+    return [
+        e.GetMessage()
+        for e in errors
+        if not ("not found in sdrRegistry" in e.GetMessage() and "'ND_" in e.GetMessage())
+    ]
 
 
 def close(a, b) -> bool:
@@ -145,8 +149,14 @@ def test_author_material_into_a_stage_with_binding(tmp_path):
 def test_author_material_with_textures(tmp_path):
     stage = Usd.Stage.CreateNew(str(tmp_path / "shot.usda"))
     UsdGeom.Mesh.Define(stage, "/World/Table")
-    author_material(stage, "/Looks/Table", "white varnished oak", bind_to=["/World/Table"],
-                    texture_dir=tmp_path / "tex", map_size=16)
+    author_material(
+        stage,
+        "/Looks/Table",
+        "white varnished oak",
+        bind_to=["/World/Table"],
+        texture_dir=tmp_path / "tex",
+        map_size=16,
+    )
     stage.Save()
     files = sorted(p.name for p in (tmp_path / "tex").glob("*")) if (tmp_path / "tex").exists() else []
     if not files:
@@ -163,7 +173,7 @@ def test_author_material_errors():
         author_material(stage, "/Looks/X", "polished gold", bind_to=["/World/Missing"])
 
 
-def test_preview_is_gf():   # the diffuse preview has no specular lobe
+def test_preview_is_gf():  # the diffuse preview has no specular lobe
     inputs = backend.preview_inputs(ir_of("deep red velvet")["materials"][0])
     assert inputs["useSpecularWorkflow"][1] == 1 and inputs["specularColor"][1] == [0.0, 0.0, 0.0]
     assert Gf.Vec3f(*inputs["diffuseColor"][1])

@@ -1,13 +1,14 @@
 """Fixtures for the GLSL backend tests: the real consumers (glslangValidator, moderngl on EGL).
 
 Tests skip with a clear message only when a tool is truly absent."""
+
 from __future__ import annotations
 
 import shutil
 import subprocess
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
-from functools import lru_cache
+from functools import cache
 from pathlib import Path
 
 import pytest
@@ -33,7 +34,7 @@ COMBINATIONS = {
 }
 
 
-@lru_cache(maxsize=None)
+@cache
 def material_of(phrase: str) -> dict:
     result = compile_source(phrase + "\n")
     assert result.ir["materials"], f"{phrase!r} compiled to no material: {result.ir['diagnostics']}"
@@ -80,8 +81,9 @@ _SESSION_CONTEXTS: list = []
 def gl():
     try:
         import moderngl
+
         ctx = moderngl.create_context(standalone=True, backend="egl")
-    except Exception as exc:  # noqa: BLE001 - any failure here means no EGL/GL
+    except Exception as exc:
         pytest.skip(f"no OpenGL context on EGL ({exc}); install libegl1 libgl1 libegl-mesa0")
     _SESSION_CONTEXTS.append(ctx)
     yield ctx

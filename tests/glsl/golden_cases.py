@@ -1,4 +1,5 @@
 """The golden cases: one phrase per material kind, with the options they are emitted with."""
+
 from __future__ import annotations
 
 from pathlib import Path

@@ -3,6 +3,7 @@
 
 Directions go in as two RGBA32F data textures (wo, wi), one pair per pixel; a full-screen
 triangle calls cnlm_bsdf (or cnlm_btdf)(n = +z, t = +x, wo, wi) and writes RGBA32F."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -56,17 +57,23 @@ def direction_pairs(seed: int = 7) -> tuple[np.ndarray, np.ndarray]:
     n = SIDE * SIDE
     q = n // 8
     wo_parts, wi_parts = [], []
-    wo_parts.append(_hemisphere(rng, 3 * q)); wi_parts.append(_hemisphere(rng, 3 * q))
-    wo_parts.append(_hemisphere(rng, q, 1e-6, 2e-2)); wi_parts.append(_hemisphere(rng, q))  # grazing view
-    wo_parts.append(_hemisphere(rng, q)); wi_parts.append(_hemisphere(rng, q, 1e-6, 2e-2))  # grazing light
+    wo_parts.append(_hemisphere(rng, 3 * q))
+    wi_parts.append(_hemisphere(rng, 3 * q))
+    wo_parts.append(_hemisphere(rng, q, 1e-6, 2e-2))
+    wi_parts.append(_hemisphere(rng, q))  # grazing view
+    wo_parts.append(_hemisphere(rng, q))
+    wi_parts.append(_hemisphere(rng, q, 1e-6, 2e-2))  # grazing light
     for spread in (3e-3, 0.2):
         wo = _hemisphere(rng, q // 2, 0.05, 1.0)
-        wo_parts.append(wo); wi_parts.append(_near_mirror(rng, wo, rng.uniform(0, spread, q // 2)))
+        wo_parts.append(wo)
+        wi_parts.append(_near_mirror(rng, wo, rng.uniform(0, spread, q // 2)))
     wo = _hemisphere(rng, q // 2, 0.02, 1.0)
-    wo_parts.append(wo); wi_parts.append(wo * np.array([-1.0, -1.0, 1.0]))  # exact mirror
+    wo_parts.append(wo)
+    wi_parts.append(wo * np.array([-1.0, -1.0, 1.0]))  # exact mirror
     rest = n - sum(len(p) for p in wo_parts)
     wo = _hemisphere(rng, rest)
-    wo_parts.append(wo); wi_parts.append(-wo[::-1])  # below the horizon: must be 0
+    wo_parts.append(wo)
+    wi_parts.append(-wo[::-1])  # below the horizon: must be 0
     wo = np.concatenate(wo_parts).astype(np.float32)
     wi = np.concatenate(wi_parts).astype(np.float32)
     return wo.reshape(SIDE, SIDE, 3), wi.reshape(SIDE, SIDE, 3)
@@ -94,24 +101,28 @@ class Evaluator:
         tex.filter = (self.ctx.NEAREST, self.ctx.NEAREST)
         return tex
 
-    def evaluate(self, library: str, uniforms: list[dict], wo, wi, frame=np.eye(3),
-                 entry: str = "cnlm_bsdf") -> np.ndarray:
+    def evaluate(self, library: str, uniforms: list[dict], wo, wi, frame=None, entry: str = "cnlm_bsdf") -> np.ndarray:
         """``entry``(n, t, v, l, uv) per pixel: cnlm_bsdf, or cnlm_btdf for glass."""
         prog = self.program(library, entry)
-        prog["cnlm_test_frame"].value = tuple(np.asarray(frame, np.float64).T.ravel())  # column-major
+        prog["cnlm_test_frame"].value = tuple(
+            np.asarray(np.eye(3) if frame is None else frame, np.float64).T.ravel()
+        )  # column-major
         for u in uniforms:
             if u["name"] in prog:
                 value = u["value"]
                 prog[u["name"]].value = tuple(value) if isinstance(value, list) else value
         tex_o, tex_i = self._texture(wo), self._texture(wi)
-        tex_o.use(0); tex_i.use(1)
+        tex_o.use(0)
+        tex_i.use(1)
         prog["cnlm_test_wo"].value, prog["cnlm_test_wi"].value = 0, 1
         vao = self.ctx.vertex_array(prog, [(self.quad, "2f", "in_vert")])
         self.fbo.use()
         self.fbo.clear(0.0, 0.0, 0.0, 0.0)
         vao.render(vertices=3)
         out = np.frombuffer(self.fbo.read(components=4, dtype="f4"), np.float32).reshape(SIDE, SIDE, 4)
-        vao.release(); tex_o.release(); tex_i.release()
+        vao.release()
+        tex_o.release()
+        tex_i.release()
         return out[..., :3]
 
 
@@ -128,8 +139,8 @@ def relative_error(gpu: np.ndarray, ref: np.ndarray, floor: float = 1e-3) -> tup
 def _refracted(w, ior):
     """Smooth refraction of w through the plane z = 0 (outside index 1 above, ``ior`` below);
     the zero vector under total internal reflection."""
-    eta = np.where(w[:, 2] > 0, ior, 1.0 / ior)      # index behind / index on w's side
-    ct2 = 1.0 - (1.0 - w[:, 2] ** 2) / eta ** 2
+    eta = np.where(w[:, 2] > 0, ior, 1.0 / ior)  # index behind / index on w's side
+    ct2 = 1.0 - (1.0 - w[:, 2] ** 2) / eta**2
     t = -w / eta[:, None]
     t[:, 2] = -np.sign(w[:, 2]) * np.sqrt(np.maximum(ct2, 0.0))
     return np.where((ct2 >= 0)[:, None], t, 0.0)
@@ -155,30 +166,41 @@ def transmission_pairs(ior: float = 1.5, seed: int = 11) -> tuple[np.ndarray, np
         return wi
 
     wo_parts, wi_parts = [], []
-    wo = flip_some(_hemisphere(rng, 2 * q)); wo_parts.append(wo); wi_parts.append(opposite(wo, _hemisphere(rng, 2 * q)))
-    wo = flip_some(_hemisphere(rng, q // 2, 1e-6, 2e-2)); wo_parts.append(wo)
-    wi_parts.append(opposite(wo, _hemisphere(rng, q // 2)))                      # grazing view
-    wo = flip_some(_hemisphere(rng, q // 2)); wo_parts.append(wo)
-    wi_parts.append(opposite(wo, _hemisphere(rng, q // 2, 1e-6, 2e-2)))          # grazing light
+    wo = flip_some(_hemisphere(rng, 2 * q))
+    wo_parts.append(wo)
+    wi_parts.append(opposite(wo, _hemisphere(rng, 2 * q)))
+    wo = flip_some(_hemisphere(rng, q // 2, 1e-6, 2e-2))
+    wo_parts.append(wo)
+    wi_parts.append(opposite(wo, _hemisphere(rng, q // 2)))  # grazing view
+    wo = flip_some(_hemisphere(rng, q // 2))
+    wo_parts.append(wo)
+    wi_parts.append(opposite(wo, _hemisphere(rng, q // 2, 1e-6, 2e-2)))  # grazing light
     for spread in (1e-3, 0.2):
         wo = flip_some(_hemisphere(rng, q, 0.05, 1.0))
         t = _refracted(wo, ior)
         ok = np.any(t != 0, axis=1)
         wo, t = wo[ok], t[ok]
         wi = _unit(t + rng.normal(size=t.shape) * rng.uniform(0, spread, len(t))[:, None])
-        wo_parts.append(wo); wi_parts.append(opposite(wo, wi))
+        wo_parts.append(wo)
+        wi_parts.append(opposite(wo, wi))
     wo = flip_some(_hemisphere(rng, q // 2, 0.05, 1.0))
     t = _refracted(wo, ior)
     ok = np.any(t != 0, axis=1)
-    wo_parts.append(wo[ok]); wi_parts.append(t[ok])                               # exact refraction
-    mu_c = np.sqrt(1.0 - 1.0 / ior ** 2)
-    wo = _hemisphere(rng, q, 1e-3, mu_c) * np.array([1.0, 1.0, -1.0])            # inside, beyond critical
-    wo_parts.append(wo); wi_parts.append(_hemisphere(rng, q))
-    wo = flip_some(_hemisphere(rng, q // 2)); wo_parts.append(wo)
-    wi_parts.append(-opposite(wo, _hemisphere(rng, q // 2)))                      # same side: 0
-    wo = flip_some(_hemisphere(rng, 64)); wi = opposite(wo, _hemisphere(rng, 64))
-    wi[:32, 2] = 0.0; wo[32:, 2] = 0.0                                           # in the plane: 0
-    wo_parts.append(_unit(wo)); wi_parts.append(_unit(wi))
+    wo_parts.append(wo[ok])
+    wi_parts.append(t[ok])  # exact refraction
+    mu_c = np.sqrt(1.0 - 1.0 / ior**2)
+    wo = _hemisphere(rng, q, 1e-3, mu_c) * np.array([1.0, 1.0, -1.0])  # inside, beyond critical
+    wo_parts.append(wo)
+    wi_parts.append(_hemisphere(rng, q))
+    wo = flip_some(_hemisphere(rng, q // 2))
+    wo_parts.append(wo)
+    wi_parts.append(-opposite(wo, _hemisphere(rng, q // 2)))  # same side: 0
+    wo = flip_some(_hemisphere(rng, 64))
+    wi = opposite(wo, _hemisphere(rng, 64))
+    wi[:32, 2] = 0.0
+    wo[32:, 2] = 0.0  # in the plane: 0
+    wo_parts.append(_unit(wo))
+    wi_parts.append(_unit(wi))
     wo, wi = np.concatenate(wo_parts), np.concatenate(wi_parts)
     rest = n - len(wo)
     extra = flip_some(_hemisphere(rng, rest))

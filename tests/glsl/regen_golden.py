@@ -1,6 +1,7 @@
 """Regenerate tests/glsl/golden/ (run explicitly: python -m tests.glsl.regen_golden).
 
 Review the diff before committing: a golden change is a change of the emitted code."""
+
 from __future__ import annotations
 
 from .conftest import emit_phrase

@@ -1,6 +1,7 @@
 """The emitted cnlm_bsdf agrees with the numpy reference (cnlmc.bsdf.evaluate):
 max relative error <= 1e-3 wherever the reference exceeds 1e-3, for every model kind x
 Fresnel option, including grazing angles, roughness 0 and below-horizon pairs (exactly 0)."""
+
 from __future__ import annotations
 
 import copy
@@ -36,8 +37,9 @@ MODEL_KINDS = {
     "dielectric_coat_tinted": lambda: _variant("red varnished oak"),
     "conductor_ggx": lambda: _variant("gold"),
     "conductor_ward_anisotropic": lambda: _variant("lightly brushed, blue anodized aluminum"),
-    "conductor_ggx_anisotropic": lambda: _variant("brushed steel", {"distribution": "ggx"},
-                                                  {"anisotropy_rotation": 0.7}),
+    "conductor_ggx_anisotropic": lambda: _variant(
+        "brushed steel", {"distribution": "ggx"}, {"anisotropy_rotation": 0.7}
+    ),
     "conductor_coat": lambda: _variant("lacquered brass"),
     "conductor_roughness_0": lambda: _variant("mirror chrome", params={"roughness": 0.0, "alpha": [0.0, 0.0]}),
     "glass_roughness_0": lambda: _variant("glass"),
@@ -58,19 +60,19 @@ def directions():
 
 
 def check_agreement(evaluator, directions, material, fresnel, multiscatter=False):
-    files = emit_material(material, fresnel=fresnel, multiscatter="on" if multiscatter else "off",
-                          form="library")
+    files = emit_material(material, fresnel=fresnel, multiscatter="on" if multiscatter else "off", form="library")
     uniforms = json.loads(files["glsl.json"])["uniforms"]
     wo, wi = directions
     gpu = evaluator.evaluate(files["glsl"], uniforms, wo, wi)
-    ref = evaluate(material, wo.astype(np.float64), wi.astype(np.float64), fresnel=fresnel,
-                   multiscatter=multiscatter)
+    ref = evaluate(material, wo.astype(np.float64), wi.astype(np.float64), fresnel=fresnel, multiscatter=multiscatter)
     assert np.isfinite(gpu).all(), "NaN/Inf in the shader output"
     below = (wo[..., 2] < 1e-7) | (wi[..., 2] < 1e-7)
     assert np.all(gpu[below] == 0.0), "non-zero below the horizon"
     err, where = relative_error(gpu, ref)
-    assert err <= TOLERANCE, (f"max relative error {err:.2e} at wo={wo[where[:2]]}, wi={wi[where[:2]]}: "
-                              f"gpu {gpu[where[:2]]} vs reference {ref[where[:2]]}")
+    assert err <= TOLERANCE, (
+        f"max relative error {err:.2e} at wo={wo[where[:2]]}, wi={wi[where[:2]]}: "
+        f"gpu {gpu[where[:2]]} vs reference {ref[where[:2]]}"
+    )
     return err
 
 
@@ -96,8 +98,9 @@ def test_rotated_frame_matches_local(evaluator, directions):
     frame = np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]]) @ np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
     gpu = evaluator.evaluate(files["glsl"], uniforms, wo, wi, frame)
     ref = evaluate(material, wo.astype(np.float64), wi.astype(np.float64))
-    err, _ = relative_error(gpu[(wo[..., 2] > 1e-3) & (wi[..., 2] > 1e-3)],
-                            ref[(wo[..., 2] > 1e-3) & (wi[..., 2] > 1e-3)])
+    err, _ = relative_error(
+        gpu[(wo[..., 2] > 1e-3) & (wi[..., 2] > 1e-3)], ref[(wo[..., 2] > 1e-3) & (wi[..., 2] > 1e-3)]
+    )
     assert err < 1e-2  # float32 rounding of the rotation itself, amplified at the lobe's flanks
 
 
@@ -105,12 +108,12 @@ def test_rotated_frame_matches_local(evaluator, directions):
 def test_uber_form_agrees_too(evaluator, directions, kind):
     """specialize=off (every branch compiled in, selected by uniforms) computes the same BRDF."""
     material = MODEL_KINDS[kind]()
-    files = emit_material(material, form="library", specialize="off",
-                          multiscatter="on" if kind in MULTISCATTER_KINDS else "off")
+    files = emit_material(
+        material, form="library", specialize="off", multiscatter="on" if kind in MULTISCATTER_KINDS else "off"
+    )
     uniforms = json.loads(files["glsl.json"])["uniforms"]
     wo, wi = directions
     gpu = evaluator.evaluate(files["glsl"], uniforms, wo, wi)
-    ref = evaluate(material, wo.astype(np.float64), wi.astype(np.float64),
-                   multiscatter=kind in MULTISCATTER_KINDS)
+    ref = evaluate(material, wo.astype(np.float64), wi.astype(np.float64), multiscatter=kind in MULTISCATTER_KINDS)
     err, _ = relative_error(gpu, ref)
     assert np.isfinite(gpu).all() and err <= TOLERANCE

@@ -1,4 +1,5 @@
 """End to end: `cnlmc compile phrase.txt --target glsl -o out/` writes the four files."""
+
 from __future__ import annotations
 
 import json
@@ -10,12 +11,28 @@ def test_cli_writes_library_standalone_and_sidecar(tmp_path, glslang):
     source = tmp_path / "phrase.txt"
     source.write_text("lightly brushed, blue anodized aluminum\n")
     out = tmp_path / "out"
-    done = subprocess.run([sys.executable, "-m", "cnlmc", "compile", str(source), "--target", "glsl",
-                           "-o", str(out), "--option", "fresnel=f82"], capture_output=True, text=True)
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "cnlmc",
+            "compile",
+            str(source),
+            "--target",
+            "glsl",
+            "-o",
+            str(out),
+            "--option",
+            "fresnel=f82",
+        ],
+        capture_output=True,
+        text=True,
+    )
     assert done.returncode == 0, done.stderr
     stem = "brushed_blue_anodized_aluminum"
     assert sorted(p.name for p in out.iterdir()) == sorted(
-        f"{stem}{s}" for s in (".glsl", ".frag", ".vert", ".glsl.json"))
+        f"{stem}{s}" for s in (".glsl", ".frag", ".vert", ".glsl.json")
+    )
     assert "warning[W202]" in done.stderr  # the normal map must be baked: said, not dropped
     assert json.loads((out / f"{stem}.glsl.json").read_text())["options"]["fresnel"] == "f82"
     for name in (f"{stem}.frag", f"{stem}.vert"):
@@ -25,6 +42,9 @@ def test_cli_writes_library_standalone_and_sidecar(tmp_path, glslang):
 def test_cli_rejects_an_unknown_option_value(tmp_path):
     source = tmp_path / "phrase.txt"
     source.write_text("gold\n")
-    done = subprocess.run([sys.executable, "-m", "cnlmc", "compile", str(source), "--target", "glsl",
-                           "--option", "fresnel=fast"], capture_output=True, text=True)
+    done = subprocess.run(
+        [sys.executable, "-m", "cnlmc", "compile", str(source), "--target", "glsl", "--option", "fresnel=fast"],
+        capture_output=True,
+        text=True,
+    )
     assert done.returncode != 0 and "exact, f82, schlick" in done.stderr

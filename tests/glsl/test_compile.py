@@ -1,5 +1,6 @@
 """Every stdlib noun and the adjective combinations compile with glslangValidator for both
 profiles (library, standalone fragment and vertex shaders) and link in moderngl on EGL."""
+
 from __future__ import annotations
 
 import re
@@ -25,15 +26,22 @@ def all_phrases() -> list[str]:
 def sources_for(phrase: str, profile: str, **options) -> list[tuple[str, str]]:
     files = emit_phrase(phrase, profile=profile, **options)
     stem = re.sub(r"\W", "_", f"{phrase}_{profile}_{'_'.join(options.values())}")
-    return [(f"{stem}.frag", files["frag"]), (f"{stem}.vert", files["vert"]),
-            (f"{stem}_library.frag", PROFILE_VERSION[profile] + files["glsl"] + LIBRARY_PROBE)]
+    return [
+        (f"{stem}.frag", files["frag"]),
+        (f"{stem}.vert", files["vert"]),
+        (f"{stem}_library.frag", PROFILE_VERSION[profile] + files["glsl"] + LIBRARY_PROBE),
+    ]
 
 
 @pytest.mark.parametrize("profile", PROFILES)
 def test_glslang_accepts_every_noun_and_combination(glslang, profile):
     sources = [s for phrase in all_phrases() for s in sources_for(phrase, profile)]
-    sources += [s for phrase in COMBINATIONS.values() for fresnel in ("f82", "schlick")
-                for s in sources_for(phrase, profile, fresnel=fresnel, multiscatter="on")]
+    sources += [
+        s
+        for phrase in COMBINATIONS.values()
+        for fresnel in ("f82", "schlick")
+        for s in sources_for(phrase, profile, fresnel=fresnel, multiscatter="on")
+    ]
     failures = [f"{name}:\n{out}" for name, code, out in run_glslang(sources) if code != 0]
     assert not failures, "\n".join(failures[:5])
 

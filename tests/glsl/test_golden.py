@@ -1,4 +1,5 @@
 """Emitted files match tests/glsl/golden/ (regenerate with python -m tests.glsl.regen_golden)."""
+
 from __future__ import annotations
 
 import pytest
@@ -14,7 +15,8 @@ def test_matches_golden(stem):
     goldens = sorted(GOLDEN_DIR.glob(f"{stem}.*"))
     assert goldens, f"no golden files for {stem}: run python -m tests.glsl.regen_golden"
     for path in goldens:
-        suffix = path.name[len(stem) + 1:]
+        suffix = path.name[len(stem) + 1 :]
         assert emitted[suffix] == path.read_text(), (
             f"{path.name} differs from the emitted text; if the change is intended, "
-            "run python -m tests.glsl.regen_golden and review the diff")
+            "run python -m tests.glsl.regen_golden and review the diff"
+        )

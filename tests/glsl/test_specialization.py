@@ -1,5 +1,6 @@
 """Specialization (only the code a model needs), maps -> samplers, hostile phrase text,
 options and the sidecar."""
+
 from __future__ import annotations
 
 import copy
@@ -48,16 +49,22 @@ def test_multiscatter_only_for_conductors():
     assert "cnlm_multiscatter" not in code_only(emit_phrase("glossy red plastic", multiscatter="on")["glsl"])
 
 
-@pytest.mark.parametrize("phrase, roles", [("rusty iron", ["base_color", "roughness", "mask"]),
-                                           ("hammered copper", ["normal"]),
-                                           ("oak", ["base_color", "roughness"])])
+@pytest.mark.parametrize(
+    "phrase, roles",
+    [
+        ("rusty iron", ["base_color", "roughness", "mask"]),
+        ("hammered copper", ["normal"]),
+        ("oak", ["base_color", "roughness"]),
+    ],
+)
 def test_maps_become_samplers_by_role(phrase, roles):
     files = emit_phrase(phrase)
     meta = json.loads(files["glsl.json"])
     assert [s["role"] for s in meta["samplers"]] == roles
     spaces = {s["role"]: s["colour_space"] for s in meta["samplers"]}
     assert spaces.get("base_color", "srgb") == "srgb" and all(
-        v == "linear" for k, v in spaces.items() if k != "base_color")
+        v == "linear" for k, v in spaces.items() if k != "base_color"
+    )
     code = code_only(files["glsl"])
     for sampler in meta["samplers"]:
         assert f"uniform sampler2D {sampler['name']};" in code
@@ -73,8 +80,14 @@ def test_no_samplers_without_maps():
     assert "sampler" not in code_only(files["frag"])
 
 
-HOSTILE = ["red plastic */ void main() { discard; } /*", "gold\n#version 450\nvoid main(){}",
-           "steel \\\nuniform float pwned;", "caf\u00e9 \u2028 plastic\r\x00\x1b[31m", "/* open", "*/"]
+HOSTILE = [
+    "red plastic */ void main() { discard; } /*",
+    "gold\n#version 450\nvoid main(){}",
+    "steel \\\nuniform float pwned;",
+    "caf\u00e9 \u2028 plastic\r\x00\x1b[31m",
+    "/* open",
+    "*/",
+]
 
 
 @pytest.mark.parametrize("phrase", HOSTILE)
@@ -103,8 +116,13 @@ def test_options_are_validated_and_recorded():
     with pytest.raises(OptionError, match="unknown option"):
         emit_phrase("gold", colour="blue")
     meta = json.loads(emit_phrase("gold", fresnel="f82", profile="es300")["glsl.json"])
-    assert meta["options"] == {"fresnel": "f82", "multiscatter": "off", "profile": "es300",
-                               "form": "both", "specialize": "on"}
+    assert meta["options"] == {
+        "fresnel": "f82",
+        "multiscatter": "off",
+        "profile": "es300",
+        "form": "both",
+        "specialize": "on",
+    }
 
 
 def test_forms_select_files():
@@ -135,5 +153,6 @@ def test_capability_notes_for_non_exact_features():
     assert ("rusty_iron", "maps.mask", "approximate") in features
     assert ("rusty_iron", "maps.base_color", "bake") in features
     assert not any(f == "model.glass" for _, f, p in features)  # glass is exact (cnlm_btdf)
-    assert set(glsl.CAPABILITIES) >= set(__import__("cnlmc.backends.capabilities",
-                                                    fromlist=["ALL_FEATURES"]).ALL_FEATURES)
+    assert set(glsl.CAPABILITIES) >= set(
+        __import__("cnlmc.backends.capabilities", fromlist=["ALL_FEATURES"]).ALL_FEATURES
+    )

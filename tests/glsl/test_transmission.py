@@ -2,6 +2,7 @@
 error <= 1e-3 wherever the reference exceeds 1e-3, for both sides of the interface, grazing
 angles, the refraction peak at roughness 0 (alpha = 1e-3) and the total-internal-reflection
 region; exactly 0 for same-side and in-plane pairs. Both profiles pass glslangValidator."""
+
 from __future__ import annotations
 
 import json
@@ -20,8 +21,9 @@ GLASS_KINDS = {
     "roughness_0": lambda: _variant("glass"),
     "frosted": lambda: _variant("frosted glass"),
     "diamond_rough": lambda: _variant("frosted glass", params={"ior": 2.42, "base_color": [0.7, 0.9, 1.0]}),
-    "anisotropic": lambda: _variant("frosted glass", {"anisotropic": True},
-                                    {"anisotropy": 0.8, "anisotropy_rotation": 0.5}),
+    "anisotropic": lambda: _variant(
+        "frosted glass", {"anisotropic": True}, {"anisotropy": 0.8, "anisotropy_rotation": 0.5}
+    ),
     "near_index_1": lambda: _variant("frosted glass", params={"ior": 1.05}),
 }
 
@@ -49,8 +51,10 @@ def test_btdf_agreement(evaluator, kind, fresnel):
     assert np.all(gpu[zero] == 0.0), "non-zero for a same-side or in-plane pair"
     assert np.count_nonzero(ref[..., 0] > 1e-3) > 400
     err, where = relative_error(gpu, ref)
-    assert err <= TOLERANCE, (f"max relative error {err:.2e} at wo={wo[where[:2]]}, wi={wi[where[:2]]}: "
-                              f"gpu {gpu[where[:2]]} vs reference {ref[where[:2]]}")
+    assert err <= TOLERANCE, (
+        f"max relative error {err:.2e} at wo={wo[where[:2]]}, wi={wi[where[:2]]}: "
+        f"gpu {gpu[where[:2]]} vs reference {ref[where[:2]]}"
+    )
     # where the reference is exactly 0 (TIR region, no refracting microfacet) the shader is 0
     assert np.all(gpu[ref[..., 0] == 0.0] == 0.0)
 
@@ -59,8 +63,7 @@ def test_btdf_index_1_is_zero(evaluator):
     material = _variant("frosted glass", params={"ior": 1.0})
     files = emit_material(material, form="library")
     wo, wi = transmission_pairs(1.5)
-    gpu = evaluator.evaluate(files["glsl"], json.loads(files["glsl.json"])["uniforms"], wo, wi,
-                             entry="cnlm_btdf")
+    gpu = evaluator.evaluate(files["glsl"], json.loads(files["glsl.json"])["uniforms"], wo, wi, entry="cnlm_btdf")
     assert np.all(gpu == 0.0)
 
 
@@ -70,8 +73,9 @@ def test_btdf_frame_independent(evaluator):
     wo, wi = transmission_pairs(1.5)
     c, s = np.cos(0.9), np.sin(0.9)
     frame = np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
-    gpu = evaluator.evaluate(files["glsl"], json.loads(files["glsl.json"])["uniforms"], wo, wi, frame,
-                             entry="cnlm_btdf")
+    gpu = evaluator.evaluate(
+        files["glsl"], json.loads(files["glsl.json"])["uniforms"], wo, wi, frame, entry="cnlm_btdf"
+    )
     ref = evaluate_transmission(material, wo.astype(np.float64), wi.astype(np.float64))
     keep = (np.abs(wo[..., 2]) > 1e-2) & (np.abs(wi[..., 2]) > 1e-2)
     err, _ = relative_error(gpu[keep], ref[keep])
@@ -92,8 +96,10 @@ void main() {
     for kind, make in GLASS_KINDS.items():
         for fresnel in ("exact", "schlick"):
             files = emit_material(make(), profile=profile, fresnel=fresnel)
-            sources += [(f"{kind}_{fresnel}_{profile}_lib.frag", version + files["glsl"] + probe),
-                        (f"{kind}_{fresnel}_{profile}.frag", files["frag"])]
+            sources += [
+                (f"{kind}_{fresnel}_{profile}_lib.frag", version + files["glsl"] + probe),
+                (f"{kind}_{fresnel}_{profile}.frag", files["frag"]),
+            ]
             assert "cnlm_btdf(n, v_tangent, v, l, v_uv)" in files["frag"]
     failures = [f"{name}:\n{out}" for name, code, out in run_glslang(sources) if code != 0]
     assert not failures, "\n".join(failures[:3])

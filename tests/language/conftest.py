@@ -17,6 +17,7 @@ def paper():
 def compile_text(stdlib):
     def run(text, lexicon=None):
         return compile_source(text, "test.cnl", lexicon or stdlib)
+
     return run
 
 

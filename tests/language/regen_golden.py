@@ -1,6 +1,6 @@
 """Rewrite the golden files: run only after a deliberate change, then review the diff.
 
-    .venv/bin/python tests/language/regen_golden.py
+.venv/bin/python tests/language/regen_golden.py
 """
 
 import sys
@@ -8,7 +8,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 
-from tests.language.golden_cases import CASES, GOLDEN, dump, golden_path, stages  # noqa: E402
+from tests.language.golden_cases import CASES, GOLDEN, dump, golden_path, stages
 
 if __name__ == "__main__":
     GOLDEN.mkdir(exist_ok=True)

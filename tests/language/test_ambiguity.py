@@ -5,15 +5,18 @@ import pytest
 from .conftest import first
 
 
-@pytest.mark.parametrize("text,noun,colour_words", [
-    ("gold plated steel", "steel", None),
-    ("polished gold", "gold", None),
-    ("gold or silver", "gold", None),
-    ("bright alice blue silk", "silk", ["bright", "alice blue"]),  # silk: a noun, and 'satin' adjective
-    ("white wax", "wax", ["white"]),
-    ("pine with a wax", "pine", None),
-    ("more gloss", None, None),
-])
+@pytest.mark.parametrize(
+    "text,noun,colour_words",
+    [
+        ("gold plated steel", "steel", None),
+        ("polished gold", "gold", None),
+        ("gold or silver", "gold", None),
+        ("bright alice blue silk", "silk", ["bright", "alice blue"]),  # silk: a noun, and 'satin' adjective
+        ("white wax", "wax", ["white"]),
+        ("pine with a wax", "pine", None),
+        ("more gloss", None, None),
+    ],
+)
 def test_reading_is_the_one_that_parses(compile_text, text, noun, colour_words):
     if noun is None:
         r = compile_text("steel\n" + text)

@@ -11,8 +11,9 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def cnlmc(*args, stdin=None, timeout=60):
-    return subprocess.run([sys.executable, "-m", "cnlmc", *args], input=stdin,
-                          capture_output=True, text=True, timeout=timeout)
+    return subprocess.run(
+        [sys.executable, "-m", "cnlmc", *args], input=stdin, capture_output=True, text=True, timeout=timeout
+    )
 
 
 def test_compile_to_ir_on_stdout():
@@ -54,8 +55,9 @@ def test_missing_file_is_a_usage_error():
 
 
 def test_binary_input_is_refused_cleanly():
-    r = subprocess.run([sys.executable, "-m", "cnlmc", "compile", "-"], input=b"\x00\xff\xfe",
-                       capture_output=True, timeout=60)
+    r = subprocess.run(
+        [sys.executable, "-m", "cnlmc", "compile", "-"], input=b"\x00\xff\xfe", capture_output=True, timeout=60
+    )
     assert r.returncode == 2
     assert b"not a text file" in r.stderr and b"Traceback" not in r.stderr
 
@@ -119,6 +121,7 @@ def test_written_files_get_the_usual_permissions(tmp_path):
 
 def _umask():
     import os
+
     mask = os.umask(0)
     os.umask(mask)
     return mask

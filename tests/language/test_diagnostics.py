@@ -6,8 +6,9 @@ from cnlmc.diagnostics import render
 
 
 def diags(result):
-    return [(d.code, d.span.line if d.span else None, d.span.col if d.span else None, d.message)
-            for d in result.diagnostics]
+    return [
+        (d.code, d.span.line if d.span else None, d.span.col if d.span else None, d.message) for d in result.diagnostics
+    ]
 
 
 def test_misspelling_says_did_you_mean(compile_text):
@@ -25,7 +26,8 @@ def test_rendered_with_file_line_col_source_and_caret(compile_text):
         "hull.cnl:2:32: error[E001]: unknown word 'aluminim'\n"
         "   2 | lightly brushed, blue anodized aluminim\n"
         "     |                                ^~~~~~~~\n"
-        "     = did you mean 'aluminium' or 'aluminum'?")
+        "     = did you mean 'aluminium' or 'aluminum'?"
+    )
 
 
 def test_all_errors_of_a_file_are_reported(compile_text):
@@ -42,15 +44,18 @@ def test_word_in_the_wrong_place(compile_text):
     assert d.hints == ("write 'brushed aluminum', not 'aluminum brushed'",)
 
 
-@pytest.mark.parametrize("text,message", [
-    ("steel aluminum", "a second material 'aluminum': a phrase names one material, at its end"),
-    ("oak with", "'with' needs a coat after it"),
-    ("oak with a glossy", "the coat clause ends at 'glossy' without naming the coat"),
-    ("gold brushed", "the phrase ends at 'brushed' without naming the material"),
-    ("darker blue aluminum", "a refinement changes the material above it and stands on its own line"),
-    ("red or anodized aluminum", "'anodized' cannot follow 'or': an alternative of the same kind must"),
-    ("brushed and steel", "'steel' cannot follow 'and': another describing group must"),
-])
+@pytest.mark.parametrize(
+    "text,message",
+    [
+        ("steel aluminum", "a second material 'aluminum': a phrase names one material, at its end"),
+        ("oak with", "'with' needs a coat after it"),
+        ("oak with a glossy", "the coat clause ends at 'glossy' without naming the coat"),
+        ("gold brushed", "the phrase ends at 'brushed' without naming the material"),
+        ("darker blue aluminum", "a refinement changes the material above it and stands on its own line"),
+        ("red or anodized aluminum", "'anodized' cannot follow 'or': an alternative of the same kind must"),
+        ("brushed and steel", "'steel' cannot follow 'and': another describing group must"),
+    ],
+)
 def test_mistakes_learned_from_the_bad_examples_table(compile_text, text, message):
     assert [d.message for d in compile_text(text).diagnostics] == [message]
 
@@ -106,4 +111,5 @@ def test_numbers_and_symbols_are_reported_not_crashed_on(compile_text):
     r = compile_text("50% rusty iron @")
     assert [m for *_x, m in diags(r)] == [
         "numbers are not part of the language: '50%' (describe the look in words)",
-        "unexpected character '@'"]
+        "unexpected character '@'",
+    ]

@@ -19,8 +19,18 @@ def material(compile_text, text):
     return first(compile_text(text))
 
 
-@pytest.mark.parametrize("text", ["brushed stainless steel", "polished brass", "hammered copper",
-                                  "satin nickel", "raw aluminum", "tarnished silver", "polished chrome"])
+@pytest.mark.parametrize(
+    "text",
+    [
+        "brushed stainless steel",
+        "polished brass",
+        "hammered copper",
+        "satin nickel",
+        "raw aluminum",
+        "tarnished silver",
+        "polished chrome",
+    ],
+)
 def test_metals_are_conductors_with_measured_f0(compile_text, text):
     m = material(compile_text, text)
     assert m["model"]["base"] == "conductor"
@@ -37,9 +47,17 @@ def test_matte_is_rough_and_polished_is_smooth(compile_text):
     assert material(compile_text, "glossy white porcelain")["params"]["roughness"] <= 0.1
 
 
-@pytest.mark.parametrize("text,hue", [("glossy red plastic", 0), ("dark green paint", 120),
-                                      ("navy blue velvet", 240), ("bright yellow plastic", 60),
-                                      ("orange powder-coated steel", 39), ("teal ceramic", 180)])
+@pytest.mark.parametrize(
+    "text,hue",
+    [
+        ("glossy red plastic", 0),
+        ("dark green paint", 120),
+        ("navy blue velvet", 240),
+        ("bright yellow plastic", 60),
+        ("orange powder-coated steel", 39),
+        ("teal ceramic", 180),
+    ],
+)
 def test_colours_land_in_the_right_hue(compile_text, text, hue):
     rgb = material(compile_text, text)["params"]["base_color"]
     distance = abs((hue_deg(rgb) - hue + 180) % 360 - 180)
@@ -56,7 +74,12 @@ def test_pale_is_lighter_and_dark_is_darker(compile_text):
 def test_model_is_no_more_than_needed(compile_text):
     assert material(compile_text, "weathered concrete")["model"]["base"] == "diffuse"
     assert material(compile_text, "red plastic")["model"] == {
-        "base": "dielectric", "distribution": "ggx", "anisotropic": False, "coat": False, "diffuse": "lambert"}
+        "base": "dielectric",
+        "distribution": "ggx",
+        "anisotropic": False,
+        "coat": False,
+        "diffuse": "lambert",
+    }
     assert material(compile_text, "red plastic")["maps"] == {}
     assert material(compile_text, "glossy paper")["model"]["base"] == "dielectric"
     assert material(compile_text, "velvet")["model"]["diffuse"] == "oren_nayar"
@@ -118,11 +141,14 @@ def test_designer_phrases_compile_cleanly(compile_text, phrase):
     assert len(result.materials) == 1
 
 
-@pytest.mark.parametrize("text,same_as", [
-    ("lightly rusty, iron", "lightly rusty iron"),                       # a comma before the noun
-    ("brushed, and anodized aluminum", "brushed and anodized aluminum"),  # ', and' between groups
-    ("oak with a glossy, white varnish", "oak with a glossy white varnish"),
-])
+@pytest.mark.parametrize(
+    "text,same_as",
+    [
+        ("lightly rusty, iron", "lightly rusty iron"),  # a comma before the noun
+        ("brushed, and anodized aluminum", "brushed and anodized aluminum"),  # ', and' between groups
+        ("oak with a glossy, white varnish", "oak with a glossy white varnish"),
+    ],
+)
 def test_extra_punctuation_is_tolerated(compile_text, text, same_as):
     a, b = material(compile_text, text), material(compile_text, same_as)
     assert a["params"] == b["params"] and a["model"] == b["model"]

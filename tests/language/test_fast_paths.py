@@ -9,9 +9,9 @@ import random
 
 import pytest
 
+from cnlmc import parser
 from cnlmc.api import compile_source, lexicon_for
 from cnlmc.document import parse_document
-from cnlmc import parser
 from cnlmc.formulas import round6, rounded
 from cnlmc.parser import ParseFailure, clear_shape_cache, parse_line_shape, parse_tagged
 from cnlmc.syntax import PROMOTE_AFTER
@@ -39,8 +39,13 @@ def test_one_shape_serves_lines_with_the_same_tags(lexicon):
 
 
 def test_compiled_shape_builds_what_the_closures_build(lexicon):
-    lines = ["hull: lightly brushed, blue anodized aluminum", "oak with a glossy white varnish",
-             "red or blue anodized aluminum", "darker blue, less diffuse", "pale dark slate gray plastic"]
+    lines = [
+        "hull: lightly brushed, blue anodized aluminum",
+        "oak with a glossy white varnish",
+        "red or blue anodized aluminum",
+        "darker blue, less diffuse",
+        "pale dark slate gray plastic",
+    ]
     for line in lines:
         clear_shape_cache()
         words = _words(lexicon, line)
@@ -86,9 +91,14 @@ def test_round6_is_round_to_6_digits():
     rng = random.Random(11)
     values = [0.0, -0.0, 5e-7, -5e-7, 2.5e-6, 0.165, 1e300, -1e-300, math.inf, -math.inf]
     for _ in range(20000):
-        k = rng.randint(-10**8, 10**8)
-        values += [rng.uniform(-3, 3), k / 1e6, (k + 0.5) / 1e6, math.nextafter((k + 0.5) / 1e6, 0.0),
-                   rng.uniform(-1e7, 1e7)]
+        k = rng.randint(-(10**8), 10**8)
+        values += [
+            rng.uniform(-3, 3),
+            k / 1e6,
+            (k + 0.5) / 1e6,
+            math.nextafter((k + 0.5) / 1e6, 0.0),
+            rng.uniform(-1e7, 1e7),
+        ]
     for x in values:
         expected = round(x, 6) or 0.0
         assert round6(x) == expected and math.copysign(1, round6(x)) == math.copysign(1, expected), x

@@ -40,14 +40,17 @@ def test_paper_numbers_in_german(paper_de):
     assert s.refine("mehr diffus")["params"]["roughness"] == 0.25
 
 
-@pytest.mark.parametrize("german,english", [
-    ("weiß lackierte Eiche", "white lacquered oak"),
-    ("Eiche mit einer glänzenden weißen Lasur", "oak with a glossy white varnish"),
-    ("stark verrostetes Eisen", "heavily rusty iron"),
-    ("poliertes Messing", "polished brass"),
-    ("mattes schwarzes Gummi", "matte black rubber"),
-    ("sandgestrahltes Edelstahl", "sandblasted stainless steel"),
-])
+@pytest.mark.parametrize(
+    "german,english",
+    [
+        ("weiß lackierte Eiche", "white lacquered oak"),
+        ("Eiche mit einer glänzenden weißen Lasur", "oak with a glossy white varnish"),
+        ("stark verrostetes Eisen", "heavily rusty iron"),
+        ("poliertes Messing", "polished brass"),
+        ("mattes schwarzes Gummi", "matte black rubber"),
+        ("sandgestrahltes Edelstahl", "sandblasted stainless steel"),
+    ],
+)
 def test_everyday_german_phrases(de, german, english):
     a, b = material(german, de), material(english, de)
     assert a["params"] == b["params"] and a["maps"] == b["maps"]

@@ -43,6 +43,7 @@ def test_refinement_examples_compile_after_a_material(stdlib):
 def test_metals_cite_the_dataset_and_use_its_numbers(stdlib):
     import json
     from pathlib import Path
+
     data = Path(__file__).resolve().parents[3] / "shared" / "data" / "metals_rgb.json"
     if not data.exists():
         pytest.skip("../shared/data is not beside this checkout")
@@ -53,13 +54,25 @@ def test_metals_cite_the_dataset_and_use_its_numbers(stdlib):
     assert stdlib.entry("nouns", "gold").get("f0") == metals["Au"]["F0_srgb_linear"]
 
 
-@pytest.mark.parametrize("spelling,key", [
-    ("anodised", "anodized"), ("anodize", "anodized"), ("aluminium", "aluminum"), ("grey", "gray"),
-    ("brush", "brushed"), ("bricks", "brick"), ("coppers", "copper"), ("oxidised", "oxidized"),
-    ("colour", "colour"), ("dark slate grey", "dark slate gray"), ("navy blue", "navy"),
-])
+@pytest.mark.parametrize(
+    "spelling,key",
+    [
+        ("anodised", "anodized"),
+        ("anodize", "anodized"),
+        ("aluminium", "aluminum"),
+        ("grey", "gray"),
+        ("brush", "brushed"),
+        ("bricks", "brick"),
+        ("coppers", "copper"),
+        ("oxidised", "oxidized"),
+        ("colour", "colour"),
+        ("dark slate grey", "dark slate gray"),
+        ("navy blue", "navy"),
+    ],
+)
 def test_spellings_resolve_to_one_entry(stdlib, spelling, key):
     from cnlmc.tagger import Tagger
+
     tagged, diags = Tagger(stdlib).tag_line(spelling, 1, 0)
     assert not diags and len(tagged) == 1
     assert key in {c.key for c in tagged[0].candidates}
@@ -67,6 +80,7 @@ def test_spellings_resolve_to_one_entry(stdlib, spelling, key):
 
 def test_multi_word_entries_match_longest_first(stdlib):
     from cnlmc.tagger import Tagger
+
     tagged, _ = Tagger(stdlib).tag_line("brushed stainless steel with a clear coat", 1, 0)
     assert [t.text for t in tagged] == ["brushed", "stainless steel", "with", "a", "clear coat"]
 
@@ -77,10 +91,14 @@ def write(folder, name, text):
 
 
 def test_user_lexicon_adds_and_overrides(tmp_path):
-    write(tmp_path, "nouns_studio.toml", '[unobtainium]\nclass = "metal"\nmodel = "conductor"\n'
-          'roughness = 0.2\nbase_color = [1.0, 0.5, 0.2]\neta = [1.0, 1.0, 1.0]\nk = [3.0, 3.0, 3.0]\n'
-          'source = "studio"\ndoc = "A studio metal."\nexample = "brushed unobtainium"\n'
-          '[steel]\nroughness = 0.5\n')
+    write(
+        tmp_path,
+        "nouns_studio.toml",
+        '[unobtainium]\nclass = "metal"\nmodel = "conductor"\n'
+        "roughness = 0.2\nbase_color = [1.0, 0.5, 0.2]\neta = [1.0, 1.0, 1.0]\nk = [3.0, 3.0, 3.0]\n"
+        'source = "studio"\ndoc = "A studio metal."\nexample = "brushed unobtainium"\n'
+        "[steel]\nroughness = 0.5\n",
+    )
     lex = load_lexicon([tmp_path])
     assert lex.entry("nouns", "steel").get("roughness") == 0.5
     assert lex.entry("nouns", "steel").get("class") == "metal"  # the rest comes from the stdlib
@@ -88,13 +106,16 @@ def test_user_lexicon_adds_and_overrides(tmp_path):
     assert result.ok and result.materials[0]["model"]["base"] == "conductor"
 
 
-@pytest.mark.parametrize("text,message", [
-    ('[steel]\nroughness = "high"\n', "nouns_bad.toml [steel].roughness: expected float, got 'high'"),
-    ('[steel]\nshininess = 1.0\n', "nouns_bad.toml [steel]: unknown field 'shininess'"),
-    ('[steel]\nroughness = 7.0\n', "nouns_bad.toml [steel].roughness: 7.0 is outside [0.0, 1.0]"),
-    ('[newmetal]\nroughness = 0.1\n', "[newmetal]: missing required field"),
-    ('[steel\n', "nouns_bad.toml: not valid TOML"),
-])
+@pytest.mark.parametrize(
+    "text,message",
+    [
+        ('[steel]\nroughness = "high"\n', "nouns_bad.toml [steel].roughness: expected float, got 'high'"),
+        ("[steel]\nshininess = 1.0\n", "nouns_bad.toml [steel]: unknown field 'shininess'"),
+        ("[steel]\nroughness = 7.0\n", "nouns_bad.toml [steel].roughness: 7.0 is outside [0.0, 1.0]"),
+        ("[newmetal]\nroughness = 0.1\n", "[newmetal]: missing required field"),
+        ("[steel\n", "nouns_bad.toml: not valid TOML"),
+    ],
+)
 def test_schema_errors_name_file_and_key(tmp_path, text, message):
     write(tmp_path, "nouns_bad.toml", text)
     with pytest.raises(LexiconError) as info:
@@ -111,10 +132,15 @@ def test_paper_overlay_changes_only_what_the_paper_says(stdlib, paper):
 
 def test_graph_references_name_stdlib_graphs(stdlib):
     from importlib import resources
+
     folder = resources.files("cnlmc.stdlib").joinpath("graphs")
     if not folder.is_dir():
         pytest.skip("no procedural graphs bundled yet")
     graphs = {p.name[:-5] for p in folder.iterdir() if p.name.endswith(".toml")}
-    used = {ref["graph"] for c in ("nouns", "adjectives") for e in stdlib.all_of(c).values()
-            for ref in e.get("maps", {}).values()}
+    used = {
+        ref["graph"]
+        for c in ("nouns", "adjectives")
+        for e in stdlib.all_of(c).values()
+        for ref in e.get("maps", {}).values()
+    }
     assert used <= graphs, used - graphs

@@ -21,8 +21,13 @@ def test_aluminium_base_values(paper):
 
 def test_aluminium_is_isotropic_microfacet(paper):
     m = first(compile_source("aluminium", "paper.cnl", paper))
-    assert m["model"] == {"base": "conductor", "distribution": "ggx", "anisotropic": False,
-                          "coat": False, "diffuse": None}
+    assert m["model"] == {
+        "base": "conductor",
+        "distribution": "ggx",
+        "anisotropic": False,
+        "coat": False,
+        "diffuse": None,
+    }
 
 
 def test_anodized_sets_m_to_0_3(paper):
@@ -90,6 +95,7 @@ def test_paper_f0_follows_from_its_eta_and_k(paper):
     import numpy as np
 
     from cnlmc.bsdf import fresnel_conductor
+
     p = params("aluminium", paper)
     exact = fresnel_conductor(np.array([1.0, 1 / 7]), np.array(1.097), np.array(6.794))
     assert p["f0"] == pytest.approx([exact[0]] * 3, abs=1e-4)

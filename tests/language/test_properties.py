@@ -14,9 +14,27 @@ ADVERBS = sorted(LEX.all_of("adverbs"))
 COLOURS = sorted(LEX.all_of("colours"))
 SHADES = sorted(LEX.all_of("shades"))
 COATS = sorted(LEX.all_of("coats"))
-REFINEMENTS = ["darker", "lighter", "rougher", "smoother", "less diffuse", "more diffuse", "more grain",
-               "less grain", "higher contrast", "finer", "coarser", "glossier", "duller", "stronger brushing",
-               "weaker brushing", "more gloss", "less anisotropy", "more rust", "lighter blue"]
+REFINEMENTS = [
+    "darker",
+    "lighter",
+    "rougher",
+    "smoother",
+    "less diffuse",
+    "more diffuse",
+    "more grain",
+    "less grain",
+    "higher contrast",
+    "finer",
+    "coarser",
+    "glossier",
+    "duller",
+    "stronger brushing",
+    "weaker brushing",
+    "more gloss",
+    "less anisotropy",
+    "more rust",
+    "lighter blue",
+]
 
 FAST = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
@@ -29,8 +47,9 @@ def test_random_text_never_crashes(text):
         assert d.code and d.message
 
 
-words = st.sampled_from(NOUNS + ADJECTIVES + ADVERBS + COLOURS + SHADES + COATS + REFINEMENTS +
-                        [",", "and", "or", "with", "a", ":", "#"])
+words = st.sampled_from(
+    NOUNS + ADJECTIVES + ADVERBS + COLOURS + SHADES + COATS + REFINEMENTS + [",", "and", "or", "with", "a", ":", "#"]
+)
 
 
 @FAST
@@ -40,9 +59,11 @@ def test_random_word_salad_never_crashes(tokens):
     assert isinstance(result.diagnostics, list)
 
 
-group = st.tuples(st.lists(st.sampled_from(ADVERBS), max_size=2),
-                  st.one_of(st.none(), st.tuples(st.lists(st.sampled_from(SHADES), max_size=1), st.sampled_from(COLOURS))),
-                  st.one_of(st.none(), st.sampled_from(ADJECTIVES)))
+group = st.tuples(
+    st.lists(st.sampled_from(ADVERBS), max_size=2),
+    st.one_of(st.none(), st.tuples(st.lists(st.sampled_from(SHADES), max_size=1), st.sampled_from(COLOURS))),
+    st.one_of(st.none(), st.sampled_from(ADJECTIVES)),
+)
 
 
 def group_text(g):
@@ -69,12 +90,17 @@ def finite_in(value, low, high):
 
 
 @FAST
-@given(st.lists(group, max_size=3), st.sampled_from(NOUNS), st.one_of(st.none(), st.sampled_from(COATS)),
-       st.lists(st.sampled_from(REFINEMENTS), max_size=5))
+@given(
+    st.lists(group, max_size=3),
+    st.sampled_from(NOUNS),
+    st.one_of(st.none(), st.sampled_from(COATS)),
+    st.lists(st.sampled_from(REFINEMENTS), max_size=5),
+)
 def test_lexicon_combinations_give_finite_in_range_ir(groups, noun, coat, refinements):
     result = compile_source(phrase_of(groups, noun, coat, refinements), "combo.cnl", LEX)
-    assert not [d for d in result.diagnostics if d.code in ("E001", "E002", "E003")], \
-        [d.message for d in result.diagnostics]
+    assert not [d for d in result.diagnostics if d.code in ("E001", "E002", "E003")], [
+        d.message for d in result.diagnostics
+    ]
     for m in result.materials:
         p = m["params"]
         assert finite_in(p["base_color"], 0.0, 1.0)

@@ -12,9 +12,9 @@ from pathlib import Path
 
 import pytest_lsp
 from lsprotocol import types
+from pygls.protocol import default_converter
 from pytest_lsp import ClientServerConfig, LanguageClient
 from pytest_lsp.client import DEFAULT_CLIENT_FEATURES, register_lsp_features
-from pygls.protocol import default_converter
 
 FIXTURES = Path(__file__).parent / "fixtures"
 SERVER_COMMAND = [sys.executable, "-m", "cnlmc", "lsp"]
@@ -28,8 +28,7 @@ def _record_publish(client: LanguageClient, params: types.PublishDiagnosticsPara
 def make_recording_client() -> LanguageClient:
     client = LanguageClient(converter_factory=default_converter)
     client.published = []
-    register_lsp_features(client, {**DEFAULT_CLIENT_FEATURES,
-                                   types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS: _record_publish})
+    register_lsp_features(client, {**DEFAULT_CLIENT_FEATURES, types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS: _record_publish})
     return client
 
 
@@ -41,15 +40,19 @@ def initialize_params(**options) -> types.InitializeParams:
         general=types.GeneralClientCapabilities(position_encodings=[types.PositionEncodingKind.Utf16]),
         text_document=types.TextDocumentClientCapabilities(
             completion=types.CompletionClientCapabilities(
-                completion_item=types.ClientCompletionItemOptions(snippet_support=False,
-                                                                  documentation_format=[types.MarkupKind.Markdown])),
+                completion_item=types.ClientCompletionItemOptions(
+                    snippet_support=False, documentation_format=[types.MarkupKind.Markdown]
+                )
+            ),
             hover=types.HoverClientCapabilities(content_format=[types.MarkupKind.Markdown]),
-            publish_diagnostics=types.PublishDiagnosticsClientCapabilities(related_information=True,
-                                                                           version_support=True),
+            publish_diagnostics=types.PublishDiagnosticsClientCapabilities(
+                related_information=True, version_support=True
+            ),
         ),
     )
-    return types.InitializeParams(capabilities=capabilities,
-                                  initialization_options={"debounceMs": 20, "inlayHints": True, **options})
+    return types.InitializeParams(
+        capabilities=capabilities, initialization_options={"debounceMs": 20, "inlayHints": True, **options}
+    )
 
 
 @pytest_lsp.fixture(config=CONFIG, scope="module")
@@ -89,8 +92,9 @@ def raw_request(client: LanguageClient, method: str, params, msg_id: int = 90000
 
 
 def open_document(client: LanguageClient, uri: str, text: str, version: int = 1) -> None:
-    client.text_document_did_open(types.DidOpenTextDocumentParams(
-        types.TextDocumentItem(uri=uri, language_id="cnl", version=version, text=text)))
+    client.text_document_did_open(
+        types.DidOpenTextDocumentParams(types.TextDocumentItem(uri=uri, language_id="cnl", version=version, text=text))
+    )
 
 
 async def open_fixture(client: LanguageClient, name: str):
@@ -103,9 +107,12 @@ async def open_fixture(client: LanguageClient, name: str):
 
 
 def replace_all(client: LanguageClient, uri: str, text: str, version: int) -> None:
-    client.text_document_did_change(types.DidChangeTextDocumentParams(
-        types.VersionedTextDocumentIdentifier(uri=uri, version=version),
-        [types.TextDocumentContentChangeWholeDocument(text=text)]))
+    client.text_document_did_change(
+        types.DidChangeTextDocumentParams(
+            types.VersionedTextDocumentIdentifier(uri=uri, version=version),
+            [types.TextDocumentContentChangeWholeDocument(text=text)],
+        )
+    )
 
 
 def position_of(text: str, needle: str, line_hint: int | None = None, offset: int = 0) -> types.Position:

@@ -55,10 +55,16 @@ async def test_change_updates_diagnostics(client):
 async def test_incremental_change_is_applied(client):
     uri, text, _diags = await open_fixture(client, "clean.cnl")
     start = position_of(text, "plastic")
-    client.text_document_did_change(types.DidChangeTextDocumentParams(
-        types.VersionedTextDocumentIdentifier(uri=uri, version=2),
-        [types.TextDocumentContentChangePartial(
-            range=types.Range(start, types.Position(start.line, start.character + 7)), text="plastik")]))
+    client.text_document_did_change(
+        types.DidChangeTextDocumentParams(
+            types.VersionedTextDocumentIdentifier(uri=uri, version=2),
+            [
+                types.TextDocumentContentChangePartial(
+                    range=types.Range(start, types.Position(start.line, start.character + 7)), text="plastik"
+                )
+            ],
+        )
+    )
     after = await wait_diagnostics(client, uri, 2)
     assert [d.code for d in after] == ["E001"]
     assert after[0].range.start == start

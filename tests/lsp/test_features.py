@@ -22,8 +22,9 @@ async def complete_at(client, text: str, uri=None):
     uri = uri or fresh_uri("complete")
     open_document(client, uri, text)
     await wait_diagnostics(client, uri, 1)
-    result = await client.text_document_completion_async(types.CompletionParams(
-        text_document=doc_id(uri), position=types.Position(0, len(text))))
+    result = await client.text_document_completion_async(
+        types.CompletionParams(text_document=doc_id(uri), position=types.Position(0, len(text)))
+    )
     return sorted(result.items, key=lambda item: item.sort_text)
 
 
@@ -55,8 +56,9 @@ async def test_completion_knows_the_noun_after_the_cursor(client):
     text = "lightly  oak"
     open_document(client, uri, text)
     await wait_diagnostics(client, uri, 1)
-    result = await client.text_document_completion_async(types.CompletionParams(
-        text_document=doc_id(uri), position=types.Position(0, 8)))
+    result = await client.text_document_completion_async(
+        types.CompletionParams(text_document=doc_id(uri), position=types.Position(0, 8))
+    )
     labels = {i.label for i in result.items}
     assert "brushed" in labels and "anodized" not in labels
 
@@ -73,8 +75,9 @@ async def test_completion_in_a_comment_is_empty(client):
 
 async def test_hover_on_a_word_shows_doc_and_effect(client):
     uri, text, _ = await open_fixture(client, "materials.cnl")
-    hover = await client.text_document_hover_async(types.HoverParams(
-        text_document=doc_id(uri), position=position_of(text, "anodized aluminum", offset=2)))
+    hover = await client.text_document_hover_async(
+        types.HoverParams(text_document=doc_id(uri), position=position_of(text, "anodized aluminum", offset=2))
+    )
     value = hover.contents.value
     assert "**anodized** — adjective" in value
     assert "roughness = 0.3" in value
@@ -83,8 +86,9 @@ async def test_hover_on_a_word_shows_doc_and_effect(client):
 
 async def test_hover_on_a_material_line_shows_the_explain_table(client):
     uri, text, _ = await open_fixture(client, "materials.cnl")
-    hover = await client.text_document_hover_async(types.HoverParams(
-        text_document=doc_id(uri), position=position_of(text, "aluminum", offset=1)))
+    hover = await client.text_document_hover_async(
+        types.HoverParams(text_document=doc_id(uri), position=position_of(text, "aluminum", offset=1))
+    )
     value = hover.contents.value
     material = compile_source(text, "x").materials[0]
     assert "model: conductor + anisotropic" in value
@@ -95,9 +99,13 @@ async def test_hover_on_a_material_line_shows_the_explain_table(client):
 
 async def test_quick_fixes(client):
     uri, text, diags = await open_fixture(client, "materials.cnl")
-    actions = await client.text_document_code_action_async(types.CodeActionParams(
-        text_document=doc_id(uri), range=types.Range(types.Position(0, 0), types.Position(20, 0)),
-        context=types.CodeActionContext(diagnostics=list(diags))))
+    actions = await client.text_document_code_action_async(
+        types.CodeActionParams(
+            text_document=doc_id(uri),
+            range=types.Range(types.Position(0, 0), types.Position(20, 0)),
+            context=types.CodeActionContext(diagnostics=list(diags)),
+        )
+    )
     titles = [a.title for a in actions]
     assert "Replace 'blu' with 'blue'" in titles
     assert "Remove 'brushed'" in titles and "Remove 'anodized'" in titles and "Remove 'lightly'" in titles
@@ -109,8 +117,11 @@ async def test_quick_fix_nearest_named_colour(client):
     uri = fresh_uri("colour")
     open_document(client, uri, "bluish plastic")
     diags = await wait_diagnostics(client, uri, 1)
-    actions = await client.text_document_code_action_async(types.CodeActionParams(
-        text_document=doc_id(uri), range=diags[0].range, context=types.CodeActionContext(diagnostics=list(diags))))
+    actions = await client.text_document_code_action_async(
+        types.CodeActionParams(
+            text_document=doc_id(uri), range=diags[0].range, context=types.CodeActionContext(diagnostics=list(diags))
+        )
+    )
     colour = next(a for a in actions if a.title.startswith("Use the nearest named colour"))
     assert colour.edit.changes[uri][0].new_text == "blue"
 
@@ -118,11 +129,16 @@ async def test_quick_fix_nearest_named_colour(client):
 def apply_all(text: str, actions, uri) -> str:
     """Apply single-line edits, rightmost first."""
     lines = text.split("\n")
-    edits = sorted((e for a in actions for e in a.edit.changes[uri]),
-                   key=lambda e: (e.range.start.line, e.range.start.character), reverse=True)
+    edits = sorted(
+        (e for a in actions for e in a.edit.changes[uri]),
+        key=lambda e: (e.range.start.line, e.range.start.character),
+        reverse=True,
+    )
     for edit in edits:
         line = lines[edit.range.start.line]
-        lines[edit.range.start.line] = line[:edit.range.start.character] + edit.new_text + line[edit.range.end.character:]
+        lines[edit.range.start.line] = (
+            line[: edit.range.start.character] + edit.new_text + line[edit.range.end.character :]
+        )
     return "\n".join(lines)
 
 
@@ -131,10 +147,10 @@ def decode_tokens(data, text):
     line = col = 0
     out = []
     for i in range(0, len(data), 5):
-        delta_line, delta_col, length, kind, _mods = data[i:i + 5]
+        delta_line, delta_col, length, kind, _mods = data[i : i + 5]
         line += delta_line
         col = col + delta_col if delta_line == 0 else delta_col
-        out.append((lines[line][col:col + length], TOKEN_TYPES[kind]))
+        out.append((lines[line][col : col + length], TOKEN_TYPES[kind]))
     return out
 
 
@@ -143,27 +159,43 @@ async def test_semantic_tokens(client):
     text = "# every kind\nhull: lightly brushed, pale orange plastic with a clear coat\nless diffuse\ndark slate blue steel"
     open_document(client, uri, text)
     await wait_diagnostics(client, uri, 1)
-    result = await client.text_document_semantic_tokens_full_async(types.SemanticTokensParams(text_document=doc_id(uri)))
+    result = await client.text_document_semantic_tokens_full_async(
+        types.SemanticTokensParams(text_document=doc_id(uri))
+    )
     tokens = decode_tokens(result.data, text)
     assert tokens == [
-        ("# every kind", "comment"), ("hull", "name"), ("lightly", "adverb"), ("brushed", "adjective"),
-        (",", "keyword"), ("pale", "shade"), ("orange", "colour"), ("plastic", "noun"), ("with", "keyword"),
-        ("a", "keyword"), ("clear coat", "coat"), ("less", "refinement"), ("diffuse", "property"),
-        ("dark slate blue", "colour"), ("steel", "noun")]
+        ("# every kind", "comment"),
+        ("hull", "name"),
+        ("lightly", "adverb"),
+        ("brushed", "adjective"),
+        (",", "keyword"),
+        ("pale", "shade"),
+        ("orange", "colour"),
+        ("plastic", "noun"),
+        ("with", "keyword"),
+        ("a", "keyword"),
+        ("clear coat", "coat"),
+        ("less", "refinement"),
+        ("diffuse", "property"),
+        ("dark slate blue", "colour"),
+        ("steel", "noun"),
+    ]
 
 
 async def test_semantic_tokens_count_utf16(client):
     uri, text, _ = await open_fixture(client, "unicode.cnl")
-    result = await client.text_document_semantic_tokens_full_async(types.SemanticTokensParams(text_document=doc_id(uri)))
+    result = await client.text_document_semantic_tokens_full_async(
+        types.SemanticTokensParams(text_document=doc_id(uri))
+    )
     # decode in UTF-16 code units
     lines = [line.encode("utf-16-le") for line in text.split("\n")]
     line = col = 0
     found = []
     for i in range(0, len(result.data), 5):
-        delta_line, delta_col, length, kind, _ = result.data[i:i + 5]
+        delta_line, delta_col, length, kind, _ = result.data[i : i + 5]
         line += delta_line
         col = col + delta_col if delta_line == 0 else delta_col
-        found.append((lines[line][2 * col:2 * (col + length)].decode("utf-16-le"), TOKEN_TYPES[kind]))
+        found.append((lines[line][2 * col : 2 * (col + length)].decode("utf-16-le"), TOKEN_TYPES[kind]))
     assert ("plastic", "noun") in found and ("aluminum", "noun") in found and ("木材", "name") in found
 
 
@@ -175,25 +207,35 @@ async def test_document_colours_and_presentation(client):
     assert abs(swatch.color.red - 72 / 255) < 0.01 and abs(swatch.color.blue - 139 / 255) < 0.01
     noun = next(i for i in infos if i.range.start == position_of(text, "aluminum"))
     assert noun.color.blue > 0.5 and noun.color.red < 0.01  # the resolved base colour (darker blue)
-    answers = await client.text_document_color_presentation_async(types.ColorPresentationParams(
-        text_document=doc_id(uri), color=swatch.color, range=swatch.range))
+    answers = await client.text_document_color_presentation_async(
+        types.ColorPresentationParams(text_document=doc_id(uri), color=swatch.color, range=swatch.range)
+    )
     assert answers[0].label == "dark slate blue"
     assert answers[0].text_edit.range == swatch.range
-    answers = await client.text_document_color_presentation_async(types.ColorPresentationParams(
-        text_document=doc_id(uri), color=types.Color(0.0, 0.0, 0.5, 1.0), range=swatch.range))
+    answers = await client.text_document_color_presentation_async(
+        types.ColorPresentationParams(
+            text_document=doc_id(uri), color=types.Color(0.0, 0.0, 0.5, 1.0), range=swatch.range
+        )
+    )
     assert {"navy", "dark blue"} & {a.label for a in answers}
 
 
 async def test_inlay_hints(client):
     uri, text, _ = await open_fixture(client, "materials.cnl")
-    hints = await client.text_document_inlay_hint_async(types.InlayHintParams(
-        text_document=doc_id(uri), range=types.Range(types.Position(0, 0), types.Position(20, 0))))
+    hints = await client.text_document_inlay_hint_async(
+        types.InlayHintParams(text_document=doc_id(uri), range=types.Range(types.Position(0, 0), types.Position(20, 0)))
+    )
     by_line = {h.position.line: h.label for h in hints}
     assert by_line[1] == "→ roughness 0.3 · #0000bc"
     assert hints[0].position == types.Position(1, len(text.split("\n")[1]))
     assert 2 not in by_line  # refinement lines carry no hint
-    client.workspace_did_change_configuration(types.DidChangeConfigurationParams(settings={"cnlmc": {"inlayHints": False}}))
-    hints = await client.text_document_inlay_hint_async(types.InlayHintParams(
-        text_document=doc_id(uri), range=types.Range(types.Position(0, 0), types.Position(20, 0))))
+    client.workspace_did_change_configuration(
+        types.DidChangeConfigurationParams(settings={"cnlmc": {"inlayHints": False}})
+    )
+    hints = await client.text_document_inlay_hint_async(
+        types.InlayHintParams(text_document=doc_id(uri), range=types.Range(types.Position(0, 0), types.Position(20, 0)))
+    )
     assert list(hints) == []
-    client.workspace_did_change_configuration(types.DidChangeConfigurationParams(settings={"cnlmc": {"inlayHints": True}}))
+    client.workspace_did_change_configuration(
+        types.DidChangeConfigurationParams(settings={"cnlmc": {"inlayHints": True}})
+    )

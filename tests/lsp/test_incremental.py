@@ -2,17 +2,34 @@
 
 from __future__ import annotations
 
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from cnlmc.api import compile_source, lexicon_for
 from cnlmc.lsp.incremental import Analyzer
 from cnlmc.lsp.positions import LineIndex, chars_for_units, code_units
 
 LINES = [
-    "lightly brushed, blue anodized aluminum", "darker blue", "less diffuse", "", "# a comment",
-    "deck: white varnished oak", "polished brushed steel", "anodized oak", "blu plastic", "lightly aluminum",
-    "red or green plastic", "darker", "rougher", "plastic brushed", "with a clear coat", "😀 bleu steel",
-    "hull: dark slate blue plastic with a clear coat", "gold plated steel", "very", "mirror polished brass",
+    "lightly brushed, blue anodized aluminum",
+    "darker blue",
+    "less diffuse",
+    "",
+    "# a comment",
+    "deck: white varnished oak",
+    "polished brushed steel",
+    "anodized oak",
+    "blu plastic",
+    "lightly aluminum",
+    "red or green plastic",
+    "darker",
+    "rougher",
+    "plastic brushed",
+    "with a clear coat",
+    "😀 bleu steel",
+    "hull: dark slate blue plastic with a clear coat",
+    "gold plated steel",
+    "very",
+    "mirror polished brass",
 ]
 LEXICON = lexicon_for()
 ANALYZER = Analyzer(LEXICON, "test.cnl")
@@ -30,9 +47,11 @@ def test_blocks_equal_the_whole_document(lines):
     snap = ANALYZER.analyse(text)
     with_span = [d for d in whole.diagnostics if d.span is not None]
     assert summary([d for d in snap.diagnostics if d.code != "W108"]) == summary(
-        [d for d in with_span if d.code != "W108"])
+        [d for d in with_span if d.code != "W108"]
+    )
     assert sorted(m["phrase"] for b in snap.blocks for m in b.result.materials) == sorted(
-        m["phrase"] for m in whole.materials)
+        m["phrase"] for m in whole.materials
+    )
 
 
 def test_materials_are_found_by_line():
@@ -56,4 +75,4 @@ def test_line_index_positions():
     offset = index.starts[1] + 2  # 'c'
     assert (index.position(offset).line, index.position(offset).character) == (1, 3)
     assert index.line_col(index.position(offset)) == (1, 2)
-    assert index.line_col(index.position(10 ** 6)) == (2, 1)
+    assert index.line_col(index.position(10**6)) == (2, 1)

@@ -24,10 +24,20 @@ def nvim_results(tmp_path_factory):
     document = folder / "hull.cnl"
     document.write_text(DOCUMENT, "utf-8")
     out = folder / "results.json"
-    env = {**os.environ, "CNLMC_FILE": str(document), "CNLMC_OUT": str(out),
-           "CNLMC_LSP_CMD": json.dumps([sys.executable, "-m", "cnlmc", "lsp"])}
-    proc = subprocess.run([NVIM, "--headless", "-u", "NONE", "-i", "NONE", "-c", f"luafile {SCRIPT}"],
-                          env=env, capture_output=True, text=True, timeout=90, cwd=folder)
+    env = {
+        **os.environ,
+        "CNLMC_FILE": str(document),
+        "CNLMC_OUT": str(out),
+        "CNLMC_LSP_CMD": json.dumps([sys.executable, "-m", "cnlmc", "lsp"]),
+    }
+    proc = subprocess.run(
+        [NVIM, "--headless", "-u", "NONE", "-i", "NONE", "-c", f"luafile {SCRIPT}"],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=90,
+        cwd=folder,
+    )
     assert out.exists(), f"nvim wrote no results: {proc.stdout}\n{proc.stderr}"
     results = json.loads(out.read_text("utf-8"))
     assert results["errors"] == [], results["errors"]

@@ -9,10 +9,17 @@ from lsprotocol import types
 
 from cnlmc.api import compile_source
 
-from .conftest import fresh_uri, open_document, raw_request, send_raw, replace_all, wait_diagnostics
+from .conftest import fresh_uri, open_document, raw_request, replace_all, send_raw, wait_diagnostics
 
-BLOCK = ["hull: lightly brushed, blue anodized aluminum", "darker blue", "blu plastic", "# comment",
-         "polished brushed steel", "white varnished oak with a clear coat", ""]
+BLOCK = [
+    "hull: lightly brushed, blue anodized aluminum",
+    "darker blue",
+    "blu plastic",
+    "# comment",
+    "polished brushed steel",
+    "white varnished oak with a clear coat",
+    "",
+]
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
@@ -38,10 +45,11 @@ async def test_unknown_document_and_out_of_range_positions(client):
     far = types.Position(999, 999)
     assert await client.text_document_hover_async(types.HoverParams(doc_id(uri), far)) is None
     assert await client.text_document_completion_async(types.CompletionParams(doc_id(uri), far)) is None
-    wide = await client.text_document_hover_async(types.HoverParams(doc_id(uri), types.Position(0, 10 ** 6)))
+    wide = await client.text_document_hover_async(types.HoverParams(doc_id(uri), types.Position(0, 10**6)))
     assert wide is not None  # clamped to the end of the line: 'plastic'
-    actions = await client.text_document_code_action_async(types.CodeActionParams(
-        doc_id(uri), types.Range(far, far), types.CodeActionContext(diagnostics=[])))
+    actions = await client.text_document_code_action_async(
+        types.CodeActionParams(doc_id(uri), types.Range(far, far), types.CodeActionContext(diagnostics=[]))
+    )
     assert list(actions) == []
     hints = await client.text_document_inlay_hint_async(types.InlayHintParams(doc_id(uri), types.Range(far, far)))
     assert list(hints) == []
@@ -52,14 +60,26 @@ async def test_malformed_json_rpc_does_not_kill_the_server(client):
     uri = fresh_uri("malformed")
     open_document(client, uri, "blue plastic")
     await wait_diagnostics(client, uri, 1)
-    raw_request(client, "textDocument/hover", {"textDocument": {"uri": uri}})          # no position
-    raw_request(client, "textDocument/hover", {"textDocument": {"uri": uri}, "position": {"line": -1, "character": "x"}})
+    raw_request(client, "textDocument/hover", {"textDocument": {"uri": uri}})  # no position
+    raw_request(
+        client, "textDocument/hover", {"textDocument": {"uri": uri}, "position": {"line": -1, "character": "x"}}
+    )
     raw_request(client, "textDocument/completion", None)
     raw_request(client, "cnlmc/noSuchMethod", {})
     send_raw(client, b"{ this is not json")
-    send_raw(client, json.dumps({"jsonrpc": "2.0", "method": "textDocument/didChange",
-                                 "params": {"textDocument": {"uri": "file:///ghost.cnl", "version": 3},
-                                            "contentChanges": [{"text": "x"}]}}).encode())
+    send_raw(
+        client,
+        json.dumps(
+            {
+                "jsonrpc": "2.0",
+                "method": "textDocument/didChange",
+                "params": {
+                    "textDocument": {"uri": "file:///ghost.cnl", "version": 3},
+                    "contentChanges": [{"text": "x"}],
+                },
+            }
+        ).encode(),
+    )
     assert await alive(client, uri)
     open_document(client, fresh_uri("after-malformed"), "blu plastic")
     assert await alive(client, uri)
@@ -93,15 +113,19 @@ async def test_two_hundred_rapid_edits(client):
     line = len(BLOCK * 20)  # a new last line, typed one character at a time, with some backspaces
     current = text + "\n"
     version = 1
-    client.text_document_did_change(types.DidChangeTextDocumentParams(
-        types.VersionedTextDocumentIdentifier(uri=uri, version=version + 1),
-        [types.TextDocumentContentChangePartial(range=_at(line - 1, len(BLOCK[-1])), text="\n")]))
+    client.text_document_did_change(
+        types.DidChangeTextDocumentParams(
+            types.VersionedTextDocumentIdentifier(uri=uri, version=version + 1),
+            [types.TextDocumentContentChangePartial(range=_at(line - 1, len(BLOCK[-1])), text="\n")],
+        )
+    )
     version += 1
     col = 0
     for i in range(199):
         if i % 10 == 9 and col > 0:  # backspace
             change = types.TextDocumentContentChangePartial(
-                range=types.Range(types.Position(line, col - 1), types.Position(line, col)), text="")
+                range=types.Range(types.Position(line, col - 1), types.Position(line, col)), text=""
+            )
             current = current[:-1]
             col -= 1
         else:
@@ -110,12 +134,14 @@ async def test_two_hundred_rapid_edits(client):
             current += ch
             col += 1
         version += 1
-        client.text_document_did_change(types.DidChangeTextDocumentParams(
-            types.VersionedTextDocumentIdentifier(uri=uri, version=version), [change]))
+        client.text_document_did_change(
+            types.DidChangeTextDocumentParams(types.VersionedTextDocumentIdentifier(uri=uri, version=version), [change])
+        )
     final = await wait_diagnostics(client, uri, version)
     expected = compile_source(current, "x").diagnostics
     assert [(d.code, d.span.line - 1, d.span.col - 1) for d in expected] == [
-        (d.code, d.range.start.line, d.range.start.character) for d in final]
+        (d.code, d.range.start.line, d.range.start.character) for d in final
+    ]
     stale = [p for p in client.published if p.uri == uri and 1 < p.version < version]
     assert len(stale) < 20  # debounced: most intermediate versions were never analysed
 
@@ -128,9 +154,12 @@ async def test_unicode_edit_before_a_word(client):
     uri = fresh_uri("uni")
     open_document(client, uri, "blu plastic\nbleu steel")
     await wait_diagnostics(client, uri, 1)
-    client.text_document_did_change(types.DidChangeTextDocumentParams(
-        types.VersionedTextDocumentIdentifier(uri=uri, version=2),
-        [types.TextDocumentContentChangePartial(range=_at(1, 0), text="漢字 🎨🎨 ")]))
+    client.text_document_did_change(
+        types.DidChangeTextDocumentParams(
+            types.VersionedTextDocumentIdentifier(uri=uri, version=2),
+            [types.TextDocumentContentChangePartial(range=_at(1, 0), text="漢字 🎨🎨 ")],
+        )
+    )
     diags = await wait_diagnostics(client, uri, 2)
     bleu = next(d for d in diags if "'bleu'" in d.message)
     # '漢字 🎨🎨 ' = 2 + 1 + 4 + 1 = 8 UTF-16 code units

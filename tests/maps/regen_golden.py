@@ -1,13 +1,14 @@
 """Regenerate tests/maps/golden/*.npy.  Run explicitly after an intended visual change:
-    .venv/bin/python tests/maps/regen_golden.py
+.venv/bin/python tests/maps/regen_golden.py
 """
+
 import sys
 from pathlib import Path
 
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).parent))
-from conftest import golden_thumbnails  # noqa: E402
+from conftest import golden_thumbnails
 
 GOLDEN = Path(__file__).parent / "golden"
 

@@ -1,4 +1,5 @@
 """The baking API, size validation and OpenImageIO output."""
+
 import numpy as np
 import OpenImageIO as oiio
 import pytest

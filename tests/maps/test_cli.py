@@ -8,8 +8,9 @@ import OpenImageIO as oiio
 
 
 def cnlmc(*args, stdin=None):
-    return subprocess.run([sys.executable, "-m", "cnlmc", *args], input=stdin,
-                          capture_output=True, text=True, timeout=300)
+    return subprocess.run(
+        [sys.executable, "-m", "cnlmc", *args], input=stdin, capture_output=True, text=True, timeout=300
+    )
 
 
 def read(path):
@@ -20,12 +21,24 @@ def read(path):
 
 
 def test_bake_writes_only_the_maps_a_material_needs(tmp_path):
-    r = cnlmc("bake", "-", "-o", str(tmp_path), "--size", "64",
-              stdin="deck: white varnished oak\nhull: polished steel\nrusty iron\n")
+    r = cnlmc(
+        "bake",
+        "-",
+        "-o",
+        str(tmp_path),
+        "--size",
+        "64",
+        stdin="deck: white varnished oak\nhull: polished steel\nrusty iron\n",
+    )
     assert r.returncode == 0, r.stderr
     names = sorted(p.name for p in tmp_path.iterdir())
-    assert names == ["deck_base_color.png", "deck_roughness.png",
-                     "rusty_iron_base_color.png", "rusty_iron_mask.png", "rusty_iron_roughness.png"]
+    assert names == [
+        "deck_base_color.png",
+        "deck_roughness.png",
+        "rusty_iron_base_color.png",
+        "rusty_iron_mask.png",
+        "rusty_iron_roughness.png",
+    ]
     assert "hull: uniform, no maps to bake" in r.stderr
     pixels, spec = read(tmp_path / "deck_base_color.png")
     assert pixels.shape == (64, 64, 3) and spec.getattribute("oiio:ColorSpace")
@@ -33,8 +46,19 @@ def test_bake_writes_only_the_maps_a_material_needs(tmp_path):
 
 def test_bake_exr_and_a_seed_changes_the_pattern(tmp_path):
     for seed in ("1", "2"):
-        r = cnlmc("bake", "-", "-o", str(tmp_path / seed), "--size", "32", "--format", "exr-half", "--seed", seed,
-                  stdin="marble\n")
+        r = cnlmc(
+            "bake",
+            "-",
+            "-o",
+            str(tmp_path / seed),
+            "--size",
+            "32",
+            "--format",
+            "exr-half",
+            "--seed",
+            seed,
+            stdin="marble\n",
+        )
         assert r.returncode == 0, r.stderr
     a, _ = read(tmp_path / "1" / "marble_base_color.exr")
     b, _ = read(tmp_path / "2" / "marble_base_color.exr")

@@ -1,4 +1,5 @@
 """The fast paths compute what the plain formulas compute (to float32 rounding)."""
+
 import numpy as np
 import pytest
 

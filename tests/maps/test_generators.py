@@ -1,10 +1,11 @@
 """Each registered generator on its own: periodic, deterministic, in [0, 1]."""
+
 import numpy as np
 import pytest
+from conftest import seam_ratio
 
 from cnlmc.backends.maps import NODE_TYPES
 from cnlmc.backends.maps.grid import Grid
-from conftest import seam_ratio
 
 GENERATORS = [name for name, t in NODE_TYPES.items() if t.category == "generator"]
 
@@ -29,5 +30,6 @@ def test_seam_check_catches_a_seam():
 @pytest.mark.parametrize("feature", ["f1", "f2", "edge", "cell"])
 def test_worley_features(feature):
     from cnlmc.backends.maps.worley import worley_noise
+
     out = worley_noise(Grid(64, 1), 8, feature)
     assert out.shape == (64, 64) and 0.0 <= out.min() and out.max() <= 1.0

@@ -1,9 +1,10 @@
 """Graph files are checked at load: errors name the file and the key."""
+
 import pytest
 
 from cnlmc.backends.maps import GraphSchemaError, MapError, bake, load_graph, load_graph_file
 
-GOOD = '''
+GOOD = """
 doc = "test"
 [params.scale]
 default = 1.0
@@ -14,7 +15,7 @@ type = "perlin"
 scale = { param = "scale", mul = 4 }
 [outputs]
 mask = "noise"
-'''
+"""
 
 
 def write(tmp_path, text, name="g"):
@@ -71,7 +72,7 @@ def test_bad_enum(tmp_path):
 
 
 def test_cycle(tmp_path):
-    text = '''
+    text = """
 doc = "cycle"
 [nodes.a]
 type = "invert"
@@ -81,7 +82,7 @@ type = "invert"
 input = { node = "a" }
 [outputs]
 mask = "a"
-'''
+"""
     assert "cycle" in error_for(tmp_path, text)
 
 

@@ -1,6 +1,7 @@
 """A frame does no more work than it needs, and the shortcuts change no pixel: the sphere is
 tessellated for its size on screen; without a background only the rectangle around what is
 drawn is cleared, tone mapped and read back; a warm material is drawn once per render()."""
+
 from __future__ import annotations
 
 import math
@@ -30,7 +31,7 @@ def test_sphere_levels_share_the_bounds_hence_the_framing():
     for mesh in levels:
         np.testing.assert_allclose(mesh.bounds[0], levels[0].bounds[0], atol=1e-6)
         np.testing.assert_allclose(mesh.bounds[1], levels[0].bounds[1], atol=1e-6)
-    assert sphere_for_pixels(128) is sphere_for_pixels(128)          # cached: uploaded once
+    assert sphere_for_pixels(128) is sphere_for_pixels(128)  # cached: uploaded once
 
 
 def test_default_scene_sphere_grows_finer_with_the_frame():
@@ -57,11 +58,11 @@ def test_tone_map_over_the_drawn_rectangle_changes_no_pixel(renderer, phrase, mo
     material = material_of(phrase)
     rect = renderer.drawn_rect(scene, model)
     assert rect is not None and rect[2] * rect[3] < 0.5 * renderer.width * renderer.height
-    renderer.render(material, tier="splitsum", scene=renderer_scene_filled(renderer))   # leaves pixels behind
+    renderer.render(material, tier="splitsum", scene=renderer_scene_filled(renderer))  # leaves pixels behind
     clipped = renderer.render(material, tier="splitsum", scene=scene, model=model, hdr=True)
     full_frame(monkeypatch)
     whole = renderer.render(material, tier="splitsum", scene=scene, model=model, hdr=True)
-    assert clipped.rgba[..., 3].max() == 255                 # the object is there
+    assert clipped.rgba[..., 3].max() == 255  # the object is there
     np.testing.assert_array_equal(clipped.rgba, whole.rgba)
     np.testing.assert_array_equal(clipped.hdr, whole.hdr)
 
@@ -77,7 +78,7 @@ def test_drawn_rectangle_holds_every_covered_pixel(renderer):
     rgba = renderer.render(material_of("blue plastic"), tier="analytic", scene=scene, model=model).rgba
     x, y, w, h = renderer.drawn_rect(scene, model)
     rows, cols = np.nonzero(rgba[..., 3])
-    gl_rows = renderer.height - 1 - rows                     # rgba is top row first
+    gl_rows = renderer.height - 1 - rows  # rgba is top row first
     assert cols.min() >= x and cols.max() < x + w and gl_rows.min() >= y and gl_rows.max() < y + h
 
 
@@ -85,7 +86,7 @@ def test_no_rectangle_when_the_object_reaches_behind_the_camera(renderer):
     scene, _ = off_centre_scene(renderer.width)
     lo, hi = scene.mesh.bounds
     model = np.eye(4)
-    model[:3, 3] = scene.camera.position - (lo + hi) / 2      # the camera inside the object's box
+    model[:3, 3] = scene.camera.position - (lo + hi) / 2  # the camera inside the object's box
     assert renderer.drawn_rect(scene, model) is None
 
 
@@ -99,7 +100,9 @@ def test_a_warm_material_is_drawn_once_per_render(renderer, scene, monkeypatch):
     renderer.render(material, tier="analytic", scene=scene)
     calls = []
     original = render_module.Renderer.draw
-    monkeypatch.setattr(render_module.Renderer, "draw", lambda self, *a, **k: calls.append(1) or original(self, *a, **k))
+    monkeypatch.setattr(
+        render_module.Renderer, "draw", lambda self, *a, **k: calls.append(1) or original(self, *a, **k)
+    )
     frame = renderer.render(material, tier="analytic", scene=scene)
     assert len(calls) == 1 and frame.ms > 0
 
@@ -114,7 +117,7 @@ def test_the_background_outside_the_drawn_rectangle_changes_no_pixel(renderer, m
     split = renderer.render(material_of("gold"), tier="splitsum", scene=scene, model=model).rgba
     full_frame(monkeypatch)
     whole = renderer.render(material_of("gold"), tier="splitsum", scene=scene, model=model).rgba
-    assert split[..., 3].min() == 255                          # the background covers every pixel
+    assert split[..., 3].min() == 255  # the background covers every pixel
     np.testing.assert_array_equal(split, whole)
 
 
@@ -122,6 +125,6 @@ def test_strips_around_tile_the_frame_outside_the_rectangle():
     rect = (3, 5, 7, 4)
     covered = np.zeros((20, 16), int)
     for x, y, w, h in render_module.strips_around(rect, 16, 20) + [rect]:
-        covered[y:y + h, x:x + w] += 1
+        covered[y : y + h, x : x + w] += 1
     assert np.all(covered == 1)
     assert render_module.strips_around((0, 0, 16, 20), 16, 20) == []

@@ -1,5 +1,6 @@
 """Live refinement at a prompt (`cnlmc preview FILE --interactive`), headless: the PNG on disk
 follows every refinement, errors are reported with a caret and leave the material alone."""
+
 from __future__ import annotations
 
 import io
@@ -76,28 +77,41 @@ def test_cli_interactive_with_piped_input(renderer, tmp_path):
     material = tmp_path / "m.cnl"
     material.write_text("white varnished oak\n")
     out = tmp_path / "p.png"
-    proc = subprocess.run([sys.executable, "-m", "cnlmc", "preview", str(material), "-o", str(out), "--size", "64",
-                           "--interactive"], input="darker\nwarmer\n", capture_output=True, text=True, timeout=300, check=False)
+    proc = subprocess.run(
+        [sys.executable, "-m", "cnlmc", "preview", str(material), "-o", str(out), "--size", "64", "--interactive"],
+        input="darker\nwarmer\n",
+        capture_output=True,
+        text=True,
+        timeout=300,
+        check=False,
+    )
     assert proc.returncode == 0, proc.stderr
-    assert "base_color" in proc.stdout and "did you mean" in proc.stdout    # 'warmer' is no refinement word
+    assert "base_color" in proc.stdout and "did you mean" in proc.stdout  # 'warmer' is no refinement word
     assert cv2.imread(str(out)) is not None
     assert "Traceback" not in proc.stderr
 
 
 def test_cli_interactive_needs_a_file(tmp_path):
-    proc = subprocess.run([sys.executable, "-m", "cnlmc", "preview", "-", "--interactive", "-o", str(tmp_path / "x.png")],
-                          input="gold\n", capture_output=True, text=True, timeout=120, check=False)
+    proc = subprocess.run(
+        [sys.executable, "-m", "cnlmc", "preview", "-", "--interactive", "-o", str(tmp_path / "x.png")],
+        input="gold\n",
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
     assert proc.returncode == 2 and "give the material as a file" in proc.stderr
     assert not (tmp_path / "x.png").exists()
 
 
 def test_no_window_without_a_display(monkeypatch):
     from cnlmc.backends.preview.live import Window
+
     monkeypatch.delenv("DISPLAY", raising=False)
     monkeypatch.delenv("WAYLAND_DISPLAY", raising=False)
     assert Window.open() is None
     pytest.importorskip("tkinter")
-    monkeypatch.setenv("DISPLAY", ":65001")        # no such server: Tk cannot connect, still no window
+    monkeypatch.setenv("DISPLAY", ":65001")  # no such server: Tk cannot connect, still no window
     assert Window.open() is None
 
 
@@ -118,6 +132,7 @@ class _Root:
 
 def _window(root):
     from cnlmc.backends.preview.live import Window
+
     window = Window.__new__(Window)
     window.root, window.closed, window.image, window._pending = root, False, None, b""
     root.on_delete = window.close
@@ -128,6 +143,7 @@ def test_window_readline_splits_a_pipe_into_lines_and_turns_the_event_loop():
     import os
     import threading
     import time
+
     read, write = os.pipe()
     stdin = os.fdopen(read, "r")
     root = _Root()
@@ -135,9 +151,10 @@ def test_window_readline_splits_a_pipe_into_lines_and_turns_the_event_loop():
 
     def slowly():
         os.write(write, b"darker\nless ")
-        time.sleep(0.2)                        # the window keeps turning while the line is incomplete
+        time.sleep(0.2)  # the window keeps turning while the line is incomplete
         os.write(write, b"grain\nlast, no newline")
         os.close(write)
+
     threading.Thread(target=slowly).start()
     assert window.readline(stdin) == "darker\n"
     assert window.readline(stdin) == "less grain\n"
@@ -149,7 +166,8 @@ def test_window_readline_splits_a_pipe_into_lines_and_turns_the_event_loop():
 
 def test_window_closed_while_waiting_ends_run(session):
     import os
-    read, write = os.pipe()                    # nothing is ever typed
+
+    read, write = os.pipe()  # nothing is ever typed
     root = _Root(close_after=5)
     out = io.StringIO()
     with os.fdopen(read, "r") as stdin:

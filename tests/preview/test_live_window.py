@@ -5,6 +5,7 @@ about Tk's idea of them; window geometry, title and the window manager's close r
 through Xlib (ctypes) on a connection of the test's own.
 
 Skipped only when Xvfb or tkinter is missing (scripts/setup.sh installs both)."""
+
 from __future__ import annotations
 
 import ctypes
@@ -25,7 +26,7 @@ import pytest
 
 tkinter = pytest.importorskip("tkinter", reason="tkinter is not available in this Python (apt: python3-tk)")
 
-from cnlmc.backends.preview.live import LiveSession, Window, run
+from cnlmc.backends.preview.live import LiveSession, Window, run  # noqa: E402 -- after the skip
 
 SCREEN = (320, 240)
 MATERIAL = "white varnished oak\n"
@@ -33,11 +34,12 @@ MATERIAL = "white varnished oak\n"
 
 # ----------------------------------------------------------------------------- the X server
 
+
 def _die_with_parent():
     """In the Xvfb child: get SIGTERM when the test process dies, even if it dies too hard for
     the fixture's finaliser to run (Linux; elsewhere the finaliser alone)."""
     if sys.platform.startswith("linux"):
-        ctypes.CDLL(None).prctl(1, 15)         # PR_SET_PDEATHSIG, SIGTERM
+        ctypes.CDLL(None).prctl(1, 15)  # PR_SET_PDEATHSIG, SIGTERM
 
 
 class Xvfb:
@@ -46,9 +48,25 @@ class Xvfb:
             pytest.skip("Xvfb is not installed (apt: xvfb)")
         read, write = os.pipe()
         self.proc = subprocess.Popen(
-            ["Xvfb", "-displayfd", str(write), "-screen", "0", f"{SCREEN[0]}x{SCREEN[1]}x24",
-             "-fbdir", str(tmp), "-nolisten", "tcp", "-br", "-noreset"],
-            pass_fds=[write], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, preexec_fn=_die_with_parent)  # noqa: PLW1509 - no threads yet
+            [
+                "Xvfb",
+                "-displayfd",
+                str(write),
+                "-screen",
+                "0",
+                f"{SCREEN[0]}x{SCREEN[1]}x24",
+                "-fbdir",
+                str(tmp),
+                "-nolisten",
+                "tcp",
+                "-br",
+                "-noreset",
+            ],
+            pass_fds=[write],
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+            preexec_fn=_die_with_parent,
+        )
         os.close(write)
         number = b""
         deadline = time.monotonic() + 10
@@ -79,10 +97,10 @@ class Xvfb:
         head = struct.unpack(">25I", data[:100])
         header_size, version, width, height = head[0], head[1], head[4], head[5]
         bits, stride, ncolors = head[11], head[12], head[19]
-        assert version == 7 and bits == 32 and head[7] == 0, head      # XWD, 32-bit LSB-first pixels
+        assert version == 7 and bits == 32 and head[7] == 0, head  # XWD, 32-bit LSB-first pixels
         start = header_size + 12 * ncolors
         pixels = np.frombuffer(data, np.uint8, stride * height, start).reshape(height, stride // 4, 4)
-        return pixels[:, :width, 2::-1]                                 # B G R X -> R G B
+        return pixels[:, :width, 2::-1]  # B G R X -> R G B
 
 
 @pytest.fixture(scope="module")
@@ -101,9 +119,16 @@ def display(xvfb, monkeypatch):
 
 
 class _ClientMessage(ctypes.Structure):
-    _fields_ = [("type", ctypes.c_int), ("serial", ctypes.c_ulong), ("send_event", ctypes.c_int),
-                ("display", ctypes.c_void_p), ("window", ctypes.c_ulong), ("message_type", ctypes.c_ulong),
-                ("format", ctypes.c_int), ("data", ctypes.c_long * 5)]
+    _fields_ = [
+        ("type", ctypes.c_int),
+        ("serial", ctypes.c_ulong),
+        ("send_event", ctypes.c_int),
+        ("display", ctypes.c_void_p),
+        ("window", ctypes.c_ulong),
+        ("message_type", ctypes.c_ulong),
+        ("format", ctypes.c_int),
+        ("data", ctypes.c_long * 5),
+    ]
 
 
 class _Event(ctypes.Union):
@@ -120,7 +145,12 @@ class Xlib:
         x = self.x = ctypes.CDLL(name)
         x.XOpenDisplay.restype = ctypes.c_void_p
         x.XOpenDisplay.argtypes = [ctypes.c_char_p]
-        ulong, vp, ip, uip = ctypes.c_ulong, ctypes.c_void_p, ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_uint)
+        ulong, vp, ip, uip = (
+            ctypes.c_ulong,
+            ctypes.c_void_p,
+            ctypes.POINTER(ctypes.c_int),
+            ctypes.POINTER(ctypes.c_uint),
+        )
         x.XDefaultRootWindow.restype = ulong
         x.XDefaultRootWindow.argtypes = [vp]
         x.XInternAtom.restype = ulong
@@ -129,15 +159,29 @@ class Xlib:
         x.XSync.argtypes = [vp, ctypes.c_int]
         x.XCloseDisplay.argtypes = [vp]
         x.XGetGeometry.argtypes = [vp, ulong, ctypes.POINTER(ulong), ip, ip, uip, uip, uip, uip]
-        x.XTranslateCoordinates.argtypes = [vp, ulong, ulong, ctypes.c_int, ctypes.c_int, ip, ip,
-                                            ctypes.POINTER(ulong)]
+        x.XTranslateCoordinates.argtypes = [vp, ulong, ulong, ctypes.c_int, ctypes.c_int, ip, ip, ctypes.POINTER(ulong)]
         x.XFetchName.argtypes = [vp, ulong, ctypes.POINTER(ctypes.c_char_p)]
         x.XCreateSimpleWindow.restype = ulong
-        x.XCreateSimpleWindow.argtypes = [vp, ulong, ctypes.c_int, ctypes.c_int, ctypes.c_uint, ctypes.c_uint,
-                                          ctypes.c_uint, ulong, ulong]
+        x.XCreateSimpleWindow.argtypes = [
+            vp,
+            ulong,
+            ctypes.c_int,
+            ctypes.c_int,
+            ctypes.c_uint,
+            ctypes.c_uint,
+            ctypes.c_uint,
+            ulong,
+            ulong,
+        ]
         x.XMapRaised.argtypes = [vp, ulong]
-        x.XQueryTree.argtypes = [vp, ulong, ctypes.POINTER(ulong), ctypes.POINTER(ulong),
-                                 ctypes.POINTER(ctypes.POINTER(ulong)), uip]
+        x.XQueryTree.argtypes = [
+            vp,
+            ulong,
+            ctypes.POINTER(ulong),
+            ctypes.POINTER(ulong),
+            ctypes.POINTER(ctypes.POINTER(ulong)),
+            uip,
+        ]
         x.XFree.argtypes = [vp]
         x.XDestroyWindow.argtypes = [vp, ulong]
         self.d = x.XOpenDisplay(display.encode())
@@ -152,8 +196,9 @@ class Xlib:
         top-level windows are the root's children)."""
         root, parent = ctypes.c_ulong(), ctypes.c_ulong()
         children, count = ctypes.POINTER(ctypes.c_ulong)(), ctypes.c_uint()
-        if not self.x.XQueryTree(self.d, self.root, ctypes.byref(root), ctypes.byref(parent),
-                                 ctypes.byref(children), ctypes.byref(count)):
+        if not self.x.XQueryTree(
+            self.d, self.root, ctypes.byref(root), ctypes.byref(parent), ctypes.byref(children), ctypes.byref(count)
+        ):
             return None
         found = [children[i] for i in range(count.value) if self.title(children[i]).endswith(title_end)]
         if children:
@@ -164,17 +209,27 @@ class Xlib:
         """x, y on the screen and width, height of `window`."""
         root, px, py = ctypes.c_ulong(), ctypes.c_int(), ctypes.c_int()
         w, h, border, depth = ctypes.c_uint(), ctypes.c_uint(), ctypes.c_uint(), ctypes.c_uint()
-        assert self.x.XGetGeometry(self.d, window, ctypes.byref(root), ctypes.byref(px), ctypes.byref(py),
-                                   ctypes.byref(w), ctypes.byref(h), ctypes.byref(border), ctypes.byref(depth))
+        assert self.x.XGetGeometry(
+            self.d,
+            window,
+            ctypes.byref(root),
+            ctypes.byref(px),
+            ctypes.byref(py),
+            ctypes.byref(w),
+            ctypes.byref(h),
+            ctypes.byref(border),
+            ctypes.byref(depth),
+        )
         sx, sy, child = ctypes.c_int(), ctypes.c_int(), ctypes.c_ulong()
-        self.x.XTranslateCoordinates(self.d, window, self.root, 0, 0, ctypes.byref(sx), ctypes.byref(sy),
-                                     ctypes.byref(child))
+        self.x.XTranslateCoordinates(
+            self.d, window, self.root, 0, 0, ctypes.byref(sx), ctypes.byref(sy), ctypes.byref(child)
+        )
         return sx.value, sy.value, w.value, h.value
 
     def title(self, window: int) -> str:
         name = ctypes.c_char_p()
         self.x.XFetchName(self.d, window, ctypes.byref(name))
-        return (name.value or b"").decode("latin-1")       # (leaks a few bytes; XFree is not worth it)
+        return (name.value or b"").decode("latin-1")  # (leaks a few bytes; XFree is not worth it)
 
     def close_request(self, window: int) -> None:
         """What a window manager sends when the user clicks the close button."""
@@ -184,7 +239,7 @@ class Xlib:
         message.message_type = self.x.XInternAtom(self.d, b"WM_PROTOCOLS", 0)
         message.format = 32
         message.data[0] = self.x.XInternAtom(self.d, b"WM_DELETE_WINDOW", 0)
-        message.data[1] = 0                                                 # CurrentTime
+        message.data[1] = 0  # CurrentTime
         assert self.x.XSendEvent(self.d, window, 0, 0, ctypes.byref(event))
         self.x.XSync(self.d, 0)
 
@@ -201,6 +256,7 @@ class Xlib:
 
 # ----------------------------------------------------------------------------- helpers
 
+
 def png_rgb(path) -> np.ndarray:
     return cv2.imread(str(path), cv2.IMREAD_COLOR)[..., ::-1]
 
@@ -208,7 +264,7 @@ def png_rgb(path) -> np.ndarray:
 def luminance(rgb: np.ndarray) -> float:
     """Mean Rec. 709 luma of the image's middle (the object), 0..255."""
     h, w = rgb.shape[:2]
-    middle = rgb[h * 5 // 16:h * 11 // 16, w * 5 // 16:w * 11 // 16].astype(float)
+    middle = rgb[h * 5 // 16 : h * 11 // 16, w * 5 // 16 : w * 11 // 16].astype(float)
     return float((middle @ [0.2126, 0.7152, 0.0722]).mean())
 
 
@@ -224,7 +280,7 @@ def wait_until(predicate, timeout=10.0):
 
 def shown(server: Xvfb, box, expected: np.ndarray) -> bool:
     x, y, w, h = box
-    return np.array_equal(server.screen()[y:y + h, x:x + w], expected)
+    return np.array_equal(server.screen()[y : y + h, x : x + w], expected)
 
 
 class Driver(threading.Thread):
@@ -245,10 +301,10 @@ class Driver(threading.Thread):
     def run(self):
         try:
             self.script(self)
-        except BaseException as exc:           # noqa: BLE001 - reported by the test
+        except BaseException as exc:
             self.error = exc
         finally:
-            self._write.close()                # end of input at the latest
+            self._write.close()  # end of input at the latest
 
     def finish(self):
         self.join(20)
@@ -265,6 +321,7 @@ def open_window(tmp_path):
 
 
 # ----------------------------------------------------------------------------- the tests
+
 
 def test_window_shows_every_step_and_quit_closes_it(display, renderer, tmp_path):
     session, window = open_window(tmp_path)
@@ -283,7 +340,7 @@ def test_window_shows_every_step_and_quit_closes_it(display, renderer, tmp_path)
         darker = png_rgb(session.out_path)
         d.seen["darker shown"] = wait_until(lambda: shown(display, box, darker))
         d.seen["darker"] = darker
-        x11.cover(*box)                        # the window must redraw while the prompt waits
+        x11.cover(*box)  # the window must redraw while the prompt waits
         d.seen["redrawn"] = wait_until(lambda: shown(display, box, darker), timeout=3)
         d.send(":quit")
 
@@ -304,9 +361,11 @@ def test_window_shows_every_step_and_quit_closes_it(display, renderer, tmp_path)
     assert seen["redrawn"], "the window repaints itself while waiting at the prompt"
     assert window.closed
     with pytest.raises(tkinter.TclError):
-        window.root.winfo_exists()             # the Tk application is gone ...
+        window.root.winfo_exists()  # the Tk application is gone ...
     x, y, w, h = seen["box"]
-    assert wait_until(lambda: not display.screen()[y:y + h, x:x + w].any()), "... and so is the window (-br: black root)"
+    assert wait_until(lambda: not display.screen()[y : y + h, x : x + w].any()), (
+        "... and so is the window (-br: black root)"
+    )
     assert "base_color" in out.getvalue() and "showing live.png in a window" in out.getvalue()
     x11.close()
 
@@ -335,8 +394,8 @@ def test_the_window_managers_close_button_ends_the_session(display, renderer, tm
         first = png_rgb(session.out_path)
         box = x11.geometry(frame)
         assert wait_until(lambda: shown(display, box, first)), "the image never appeared"
-        x11.close_request(frame)               # the user closes the window; stdin stays open
-        if not released.wait(10):              # run() did not notice: unblock it, the test fails
+        x11.close_request(frame)  # the user closes the window; stdin stays open
+        if not released.wait(10):  # run() did not notice: unblock it, the test fails
             d.send(":quit")
 
     driver = Driver(user)
@@ -361,10 +420,28 @@ def test_cli_opens_the_window_and_leaves_cleanly(display, renderer, tmp_path):
     material.write_text(MATERIAL)
     out = tmp_path / "p.png"
     env = {**os.environ, "DISPLAY": display.display}
-    proc = subprocess.run([sys.executable, "-m", "cnlmc", "preview", str(material), "-o", str(out), "--size", "64",
-                           "--tier", "analytic", "--interactive"],
-                          input="darker\n", capture_output=True, text=True, timeout=120, env=env, check=False)
+    proc = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "cnlmc",
+            "preview",
+            str(material),
+            "-o",
+            str(out),
+            "--size",
+            "64",
+            "--tier",
+            "analytic",
+            "--interactive",
+        ],
+        input="darker\n",
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env=env,
+        check=False,
+    )
     assert proc.returncode == 0, proc.stderr
     assert "showing p.png in a window" in proc.stdout and "base_color" in proc.stdout
     assert "Traceback" not in proc.stderr and "TclError" not in proc.stderr
-

@@ -1,4 +1,5 @@
 """Mesh generators and OBJ/PLY round trips."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -24,12 +25,12 @@ def test_generated_meshes_are_sound(name):
     assert np.allclose(np.linalg.norm(mesh.normals, axis=1), 1, atol=1e-5)
     assert np.allclose(np.linalg.norm(mesh.tangents, axis=1), 1, atol=1e-5)
     assert np.abs(np.sum(mesh.normals * mesh.tangents, axis=1)).max() < 1e-4
-    assert M.signed_volume(mesh.positions, mesh.indices) > 0                # outward winding
+    assert M.signed_volume(mesh.positions, mesh.indices) > 0  # outward winding
     fn = M.face_normals(mesh.positions.astype(float), mesh.indices.astype(int))
     vn = mesh.normals[mesh.indices].mean(1)
-    assert (np.einsum("ij,ij->i", fn, vn) >= 0).mean() > 0.99              # normals agree with winding
+    assert (np.einsum("ij,ij->i", fn, vn) >= 0).mean() > 0.99  # normals agree with winding
     edges = len(mesh.indices) * 3 / 2
-    assert open_edges(mesh) < 0.02 * edges                                  # watertight-ish
+    assert open_edges(mesh) < 0.02 * edges  # watertight-ish
 
 
 def test_sphere_is_watertight_and_round():
@@ -44,8 +45,10 @@ def test_teapot_patch_table():
     assert patches.shape == (32, 4, 4, 3)
     fitted = M.fit(M.teapot())
     lo, hi = fitted.bounds
-    assert abs(lo[1]) < 1e-6 and np.isclose(np.linalg.norm(fitted.positions - (lo + hi) / 2, axis=1).max(), 1, atol=1e-4)
-    assert hi[0] - lo[0] > hi[1] - lo[1]             # spout to handle is wider than the pot is tall
+    assert abs(lo[1]) < 1e-6 and np.isclose(
+        np.linalg.norm(fitted.positions - (lo + hi) / 2, axis=1).max(), 1, atol=1e-4
+    )
+    assert hi[0] - lo[0] > hi[1] - lo[1]  # spout to handle is wider than the pot is tall
 
 
 @pytest.mark.parametrize("writer,loader,suffix", [(write_ply, load_ply, ".ply"), (write_obj, load_obj, ".obj")])
@@ -62,15 +65,17 @@ def test_round_trip(tmp_path, writer, loader, suffix):
 
 def test_ascii_ply_and_obj_polygons(tmp_path):
     ply = tmp_path / "quad.ply"
-    ply.write_text("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
-                   "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                   "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
+    ply.write_text(
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+        "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"
+    )
     mesh = load_ply(ply)
     assert mesh.indices.shape == (2, 3) and np.allclose(mesh.normals, [0, 0, 1])
     obj = tmp_path / "quad.obj"
     obj.write_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n")
     assert load_obj(obj).indices.shape == (2, 3)
-    obj.write_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nf -3 -2 -1\n")     # negative indices
+    obj.write_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nf -3 -2 -1\n")  # negative indices
     assert load_obj(obj).indices.shape == (1, 3)
 
 

@@ -1,4 +1,5 @@
 """The preview scene exported for Mitsuba loads, renders, and draws the same picture."""
+
 from __future__ import annotations
 
 import copy
@@ -19,6 +20,7 @@ def mitsuba():
 def test_exported_scene_renders_like_the_preview(tmp_path, mitsuba, renderer):
     from cnlmc.backends.preview.mitsuba_scene import export_scene, render_scene
     from cnlmc.backends.preview.render import default_scene
+
     size = 32
     material = material_of("blue plastic")
     scene = default_scene("sphere", "studio", (size, size))
@@ -29,17 +31,19 @@ def test_exported_scene_renders_like_the_preview(tmp_path, mitsuba, renderer):
     image, seconds = render_scene(path)
     assert image.shape == (size, size, 4) and np.isfinite(image).all()
     from cnlmc.backends.preview.render import Renderer
+
     frame = Renderer(size).render(material, tier="fis16", scene=scene, hdr=True)
     ours, theirs = frame.hdr[..., 3] > 0.5, image[..., 3] > 0.5
-    assert (ours == theirs).mean() > 0.97                       # same camera and mesh
+    assert (ours == theirs).mean() > 0.97  # same camera and mesh
     both = ours & theirs
     ratio = frame.hdr[..., :3][both].mean(0) / image[..., :3][both].mean(0)
-    assert np.all(np.abs(ratio - 1) < 0.25), ratio              # same lighting, roughly
+    assert np.all(np.abs(ratio - 1) < 0.25), ratio  # same lighting, roughly
 
 
 def test_exported_scene_with_maps_loads(tmp_path, mitsuba):
     from cnlmc.backends.preview.mitsuba_scene import export_scene, render_scene
     from cnlmc.backends.preview.render import default_scene
+
     scene = default_scene("teapot", "studio", (16, 16))
     path = export_scene(material_of("walnut"), scene, tmp_path, 16, 16, spp=2)
     image, _ = render_scene(path)
@@ -50,7 +54,7 @@ def _halves_pattern(size: int) -> np.ndarray:
     """Image top half red, bottom half blue (maps convention: top row at v = 1)."""
     img = np.zeros((size, size, 3), np.float32)
     img[: size // 2, :, 0] = 1.0
-    img[size // 2:, :, 2] = 1.0
+    img[size // 2 :, :, 2] = 1.0
     return img
 
 
@@ -61,6 +65,7 @@ def test_texture_orientation_matches_mitsuba(tmp_path, mitsuba, renderer, monkey
     import cnlmc.backends.maps as maps
     from cnlmc.backends.preview.mitsuba_scene import export_scene, render_scene
     from cnlmc.backends.preview.render import Renderer, default_scene
+
     real_bake = maps.bake
 
     def bake(refs, params, size, seed=0):
@@ -70,7 +75,7 @@ def test_texture_orientation_matches_mitsuba(tmp_path, mitsuba, renderer, monkey
 
     monkeypatch.setattr(maps, "bake", bake)
     material = copy.deepcopy(material_of("granite"))
-    material["maps"]["base_color"]["seed"] = 60606         # its own entry in the baked-map cache
+    material["maps"]["base_color"]["seed"] = 60606  # its own entry in the baked-map cache
     size = 32
     scene = default_scene("sphere", "studio", (size, size))
     scene.background = "transparent"
@@ -80,19 +85,30 @@ def test_texture_orientation_matches_mitsuba(tmp_path, mitsuba, renderer, monkey
         inside = img[..., 3] > 0.5
         red = img[..., 0] > img[..., 2]
         top, bottom = inside.copy(), inside.copy()
-        top[size // 2:], bottom[: size // 2] = False, False
+        top[size // 2 :], bottom[: size // 2] = False, False
         assert red[top].mean() > 0.8 and red[bottom].mean() < 0.5, name
 
 
-@pytest.mark.parametrize("spp, sampler", [(1, "independent"), (2, "independent"), (4, "ldsampler"),
-                                          (16, "ldsampler"), (32, "independent"), (64, "ldsampler"),
-                                          (128, "independent"), (256, "ldsampler")])
+@pytest.mark.parametrize(
+    "spp, sampler",
+    [
+        (1, "independent"),
+        (2, "independent"),
+        (4, "ldsampler"),
+        (16, "ldsampler"),
+        (32, "independent"),
+        (64, "ldsampler"),
+        (128, "independent"),
+        (256, "ldsampler"),
+    ],
+)
 def test_the_exported_sampler_renders_exactly_the_asked_samples(tmp_path, spp, sampler):
     """ldsampler takes only 4^k spp (it rounds 1 up to 4, 32 to 64): any other count gets the
     independent sampler, so a 1-spp render is one sample (the chart's Mitsuba curve)."""
     mi = pytest.importorskip("mitsuba")
     from cnlmc.backends.preview.mitsuba_scene import export_scene, sampler_for
     from cnlmc.backends.preview.render import default_scene
+
     assert sampler_for(spp) == sampler
     path = export_scene(material_of("gold"), default_scene("sphere", "studio", (8, 8)), tmp_path, 8, 8, spp=spp)
     assert f'<sampler type="{sampler}">' in path.read_text()

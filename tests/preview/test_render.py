@@ -1,10 +1,11 @@
 """The preview renders every stdlib noun without NaN, deterministically; tiers and budgets."""
+
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from cnlmc.backends.preview import compose, parse_options, PreviewOptionError, preview_command
+from cnlmc.backends.preview import PreviewOptionError, compose, parse_options, preview_command
 from cnlmc.backends.preview.tiers import QUALITY_ORDER, TIERS, TierError, parse_tier, select_tier
 
 from .conftest import material_of, stdlib_nouns
@@ -18,11 +19,13 @@ def test_every_stdlib_noun_renders_without_nan(renderer, scene):
         frame = renderer.render(material, tier="splitsum", scene=scene, hdr=True)
         assert np.isfinite(frame.hdr).all(), noun
         covered = frame.rgba[..., 3] > 0
-        assert 0.2 < covered.mean() < 0.8, noun                       # the sphere is in the frame
+        assert 0.2 < covered.mean() < 0.8, noun  # the sphere is in the frame
         assert frame.rgba[..., :3][covered].mean() > 3, f"{noun} renders black"
 
 
-@pytest.mark.parametrize("phrase", ["gold", "walnut", "clear-coated red car paint", "lightly brushed, blue anodized aluminum"])
+@pytest.mark.parametrize(
+    "phrase", ["gold", "walnut", "clear-coated red car paint", "lightly brushed, blue anodized aluminum"]
+)
 def test_two_renders_are_bit_identical(renderer, scene, phrase):
     material = material_of(phrase)
     for tier in ("splitsum", "mc16"):
@@ -53,10 +56,18 @@ def test_tiers_parse_and_order():
 
 
 def test_budget_picks_the_best_tier_that_fits():
-    cost = {"analytic": 1.0, "splitsum": 2.0, "mc16": 10.0, "fis16": 12.0, "mc64": 40.0, "fis64": 45.0,
-            "mc256": 160.0, "mc1024": 640.0}
-    pick = lambda budget: select_tier(budget, lambda t: cost[t.name])[0].name  # noqa: E731
-    assert pick(0.5) == "analytic"            # nothing fits: the cheapest
+    cost = {
+        "analytic": 1.0,
+        "splitsum": 2.0,
+        "mc16": 10.0,
+        "fis16": 12.0,
+        "mc64": 40.0,
+        "fis64": 45.0,
+        "mc256": 160.0,
+        "mc1024": 640.0,
+    }
+    pick = lambda budget: select_tier(budget, lambda t: cost[t.name])[0].name
+    assert pick(0.5) == "analytic"  # nothing fits: the cheapest
     assert pick(5) == "splitsum"
     assert pick(12) == "fis16"
     assert pick(50) == "fis64"
@@ -65,22 +76,24 @@ def test_budget_picks_the_best_tier_that_fits():
 
 def test_budget_option_measures_real_frame_times(renderer, scene):
     from cnlmc.backends.preview import PreviewOptions, choose_tier
+
     material = material_of("gold")
-    measure = lambda t: renderer.frame_time(scene, material, t, repeats=2)  # noqa: E731
+    measure = lambda t: renderer.frame_time(scene, material, t, repeats=2)
     cheap = ("analytic", "splitsum", "mc16")
     tier, timings = select_tier(1e6, measure, cheap)
     assert tier.name == "mc16" and set(timings) == set(cheap) and all(v > 0 for v in timings.values())
     tier, timings = choose_tier(renderer, scene, material, PreviewOptions(size=64, budget_ms=1e-6))
-    assert tier.name == QUALITY_ORDER[0] and len(timings) == 2        # stops after the first miss
+    assert tier.name == QUALITY_ORDER[0] and len(timings) == 2  # stops after the first miss
 
 
 def test_variant_sheet_and_command(tmp_path):
     from cnlmc.api import compile_source
+
     ir = compile_source("blue or red plastic\n").ir
     report = preview_command(ir, tmp_path / "sheet.png", {"size": "48", "tier": "splitsum"})
     assert report.path.exists()
     image = compose(report.frames)
-    assert image.shape[1] > 2 * 48 and image.shape[0] > 48      # two tiles side by side, labelled
+    assert image.shape[1] > 2 * 48 and image.shape[0] > 48  # two tiles side by side, labelled
 
 
 def test_options_are_validated():
@@ -101,11 +114,12 @@ def test_fresnel_options_change_the_metal(renderer, scene):
 
 def test_teapot_and_shader_ball_render(renderer):
     from cnlmc.backends.preview.render import default_scene
+
     material = material_of("copper")
     for mesh in ("teapot", "shader_ball"):
         scene = default_scene(mesh, "studio", (64, 64))
         frame = renderer.render(material, tier="splitsum", scene=scene, hdr=True)
-        assert np.isfinite(frame.hdr).all() and (frame.rgba[..., 3] == 255).all()     # opaque over the environment
+        assert np.isfinite(frame.hdr).all() and (frame.rgba[..., 3] == 255).all()  # opaque over the environment
         scene.background = "transparent"
         frame = renderer.render(material, tier="splitsum", scene=scene, hdr=True)
         assert 0.1 < (frame.rgba[..., 3] > 0).mean() < 0.9

@@ -1,6 +1,7 @@
 """The preview and its scene exported to Mitsuba draw the same picture: the environment is read
 at the same directions, and the converged Monte Carlo tier agrees with Mitsuba rendering the
 same BSDF (the `cnlm` plugin) within what pixel filtering and noise leave."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -18,7 +19,7 @@ def _gl_bilinear(image: np.ndarray, theta: np.ndarray, phi: np.ndarray) -> np.nd
     i0, j0 = np.floor(x).astype(int), np.floor(y).astype(int)
     fx, fy = (x - i0)[:, None], (y - j0)[:, None]
     j1 = np.minimum(j0 + 1, h - 1)
-    row = lambda j: image[j, i0 % w] * (1 - fx) + image[j, (i0 + 1) % w] * fx  # noqa: E731
+    row = lambda j: image[j, i0 % w] * (1 - fx) + image[j, (i0 + 1) % w] * fx
     return row(j0) * (1 - fy) + row(j1) * fy
 
 
@@ -28,6 +29,7 @@ def test_mitsuba_envmap_reads_the_preview_environment(tmp_path, height):
     (j + 0.5) / H: the exported map (mitsuba_rows) must give Mitsuba the preview's values."""
     mi = pytest.importorskip("mitsuba")
     from cnlmc.backends.preview.environment import mitsuba_rows, write_exr
+
     if mi.variant() is None:
         mi.set_variant("scalar_rgb")
     rng = np.random.default_rng(height)
@@ -51,7 +53,7 @@ def test_mitsuba_envmap_reads_the_preview_environment(tmp_path, height):
         return np.array(emitter.eval(si)).T
 
     assert np.abs(mitsuba_values(mitsuba_rows(image)) - expected).max() < 1e-4
-    assert np.abs(mitsuba_values(image) - expected).max() > 0.05      # the raw image is read elsewhere
+    assert np.abs(mitsuba_values(image) - expected).max() > 0.05  # the raw image is read elsewhere
 
 
 def _composite(linear: np.ndarray, background: float = 0.18) -> np.ndarray:
@@ -67,6 +69,7 @@ def plugin():
     pytest.importorskip("mitsuba")
     pytest.importorskip("flip_evaluator")
     from cnlmc.backends import mitsuba_cnlm
+
     try:
         mitsuba_cnlm.choose_variant()
     except mitsuba_cnlm.PluginError as exc:
@@ -84,6 +87,7 @@ def test_preview_mc_agrees_with_mitsuba(tmp_path, plugin, renderer):
 
     from cnlmc.backends.preview.mitsuba_scene import export_scene, render_scene
     from cnlmc.backends.preview.render import Renderer, default_scene
+
     size = 64
     material = material_of("mirror chrome")
     scene = default_scene("sphere", "studio", (size, size))

@@ -1,5 +1,6 @@
 """The specialized split-sum tier: its albedo tables are the material's own BSDF integrated,
 and its image stays close to the tier that integrates the environment by brute force."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -17,7 +18,7 @@ def with_colour(material: dict, colour) -> dict:
 
 def section(table: np.ndarray, index: int) -> np.ndarray:
     """Section `index` of a table (0: albedo + lean, 1 and 2: the environment kernels)."""
-    return table[:, index * MU_SIZE:(index + 1) * MU_SIZE]
+    return table[:, index * MU_SIZE : (index + 1) * MU_SIZE]
 
 
 @pytest.mark.parametrize("phrase", ["terracotta", "gold", "clear-coated red car paint", "glossy blue plastic"])
@@ -37,7 +38,7 @@ def test_an_uncoated_conductor_is_all_tint_and_a_diffuse_one_has_no_specular_par
     black, tint = (section(t, 0) for t in albedo_tables(material_of("gold")))
     assert np.all(black[..., :3] == 0) and tint[..., :3].max() > 0.9
     black, tint = (section(t, 0) for t in albedo_tables(material_of("suede")))
-    assert np.all(black[..., :3] == 0) and 0.5 < tint[0, -1, 0] < 1.0      # Oren-Nayar at normal view
+    assert np.all(black[..., :3] == 0) and 0.5 < tint[0, -1, 0] < 1.0  # Oren-Nayar at normal view
 
 
 def test_lobes_lean_where_their_first_moment_points():
@@ -89,6 +90,7 @@ def single_lookup(monkeypatch) -> None:
     from dataclasses import replace
 
     from cnlmc.backends.preview import render
+
     original, unfitted = render.material_shader, {}
 
     def material_shader(material, glsl_options=None):
@@ -96,6 +98,7 @@ def single_lookup(monkeypatch) -> None:
         if id(shader) not in unfitted:
             unfitted[id(shader)] = replace(shader, plan={**shader.plan, "split_fitted": False})
         return unfitted[id(shader)]
+
     monkeypatch.setattr(render, "material_shader", material_shader)
 
 
@@ -146,8 +149,9 @@ def test_smooth_lobes_keep_one_lookup_at_exactly_their_alpha():
         assert np.all(k1[:, 1:] == (1, 1, 0)) and np.all(k2[:, 2:] == 0)
 
 
-@pytest.mark.parametrize("phrase", ["gold", "glossy blue plastic", "clear-coated red car paint", "terracotta",
-                                    "rough iron", "rubber"])
+@pytest.mark.parametrize(
+    "phrase", ["gold", "glossy blue plastic", "clear-coated red car paint", "terracotta", "rough iron", "rubber"]
+)
 def test_split_sum_stays_close_to_brute_force_integration(renderer, scene, monkeypatch, phrase):
     """Mean absolute difference of the linear image (object pixels) to mc1024: a few percent
     (rough iron was 10 % with one lookup per lobe, rubber 7 %)."""
@@ -166,7 +170,7 @@ def test_a_rough_metal_stays_close_to_brute_force_integration_at_grazing_view(re
     split = renderer.render(m, tier="splitsum", scene=scene, hdr=True).hdr
     brute = renderer.render(m, tier="mc1024", scene=scene, hdr=True).hdr
     inside = brute[..., 3] > 0.99
-    yy, xx = np.mgrid[:inside.shape[0], :inside.shape[1]]
+    yy, xx = np.mgrid[: inside.shape[0], : inside.shape[1]]
     cy, cx = yy[inside].mean(), xx[inside].mean()
     ring = inside & (np.hypot(yy - cy, xx - cx) > 0.8 * np.sqrt(inside.sum() / np.pi))
     error = np.abs(split[ring, :3] - brute[ring, :3]).mean() / brute[ring, :3].mean()
@@ -176,19 +180,23 @@ def test_a_rough_metal_stays_close_to_brute_force_integration_at_grazing_view(re
 def test_the_shader_reads_the_tables_layout():
     """split.glsl.j2 addresses the sections with constants: they are the module's."""
     from cnlmc.backends.preview.gl import SHADERS
+
     source = (SHADERS / "split.glsl.j2").read_text()
     assert f"const float PV_TABLE_SECTIONS = {SECTIONS:.1f};" in source
     assert f"const float PV_TABLE_COLUMNS = {MU_SIZE:.1f};" in source
 
 
-@pytest.mark.parametrize("phrase, fitted", [("rough iron", True), ("gold", False), ("oak", True),
-                                            ("rubber", True), ("glossy blue plastic", False)])
+@pytest.mark.parametrize(
+    "phrase, fitted",
+    [("rough iron", True), ("gold", False), ("oak", True), ("rubber", True), ("glossy blue plastic", False)],
+)
 def test_only_fitted_lobes_get_two_lookups(renderer, scene, monkeypatch, phrase, fitted):
     """split_fitted says which materials' tables hold a fitted pair; told so, the shader reads
     it (another image), otherwise (or for a smooth lobe) it looks the lobe up once, at its lean,
     as before the fit (the same image: a smooth material costs nothing more)."""
     m = material_of(phrase)
     from cnlmc.backends.preview.render import material_shader
+
     plan = material_shader(m).plan
     assert plan["split_fitted"] is split_fitted(m, plan["roughness_map"]) is fitted
     after = renderer.render(m, tier="splitsum", scene=scene, hdr=True).hdr

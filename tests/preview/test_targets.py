@@ -1,5 +1,6 @@
 """Render targets without MSAA (the default): drawn straight into the half-float texture, the
 tone-map pass filters edges and composites the environment background."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -9,39 +10,42 @@ from .conftest import SMALL, material_of
 
 def test_default_has_no_msaa_and_filters_edges(scene):
     from cnlmc.backends.preview.render import DEFAULT_MSAA, Renderer
+
     assert DEFAULT_MSAA == 0
     material = material_of("blue plastic")
     soft = Renderer(SMALL).render(material, tier="analytic", scene=scene)
     hard = Renderer(SMALL, edge_aa=False).render(material, tier="analytic", scene=scene)
     partial = lambda f: ((f.rgba[..., 3] > 0) & (f.rgba[..., 3] < 255)).sum()
-    assert partial(hard) == 0 and partial(soft) > 20          # coverage is blended at the silhouette
+    assert partial(hard) == 0 and partial(soft) > 20  # coverage is blended at the silhouette
     inside = hard.rgba[..., 3] == 255
     changed = np.any(soft.rgba[..., :3] != hard.rgba[..., :3], axis=2) & inside
-    assert changed.sum() < 0.3 * inside.sum()                 # smooth shading is left alone
+    assert changed.sum() < 0.3 * inside.sum()  # smooth shading is left alone
 
 
 def test_background_is_composited_behind_the_object():
     from cnlmc.backends.preview.render import Renderer, default_scene
+
     material = material_of("blue plastic")
     env_scene = default_scene("sphere", "studio", (SMALL, SMALL))
     frame = Renderer(SMALL).render(material, tier="analytic", scene=env_scene, hdr=True)
     assert (frame.rgba[..., 3] == 255).all()
     corner = frame.rgba[0, 0, :3].astype(int)
-    assert corner.sum() > 30                                  # the environment, not black
+    assert corner.sum() > 30  # the environment, not black
     centre = frame.rgba[SMALL // 2, SMALL // 2, :3].astype(int)
-    assert centre[2] > centre[0] + 20                         # the blue object is in front
+    assert centre[2] > centre[0] + 20  # the blue object is in front
 
 
 def test_back_faces_are_culled_only_on_closed_meshes(scene, monkeypatch):
     from cnlmc.backends.preview import render
     from cnlmc.backends.preview.meshes import fit, mesh_by_name
-    assert render.is_closed(scene.mesh)                       # the sphere (UV seam welded by position)
+
+    assert render.is_closed(scene.mesh)  # the sphere (UV seam welded by position)
     assert not render.is_closed(fit(mesh_by_name("teapot")))  # Newell's teapot has no bottom
     material = material_of("gold")
     culled = render.Renderer(SMALL).render(material, tier="splitsum", scene=scene)
     monkeypatch.setattr(render, "is_closed", lambda mesh: False)
     both = render.Renderer(SMALL).render(material, tier="splitsum", scene=scene)
-    assert np.array_equal(culled.rgba, both.rgba)             # culling changes the cost, not the image
+    assert np.array_equal(culled.rgba, both.rgba)  # culling changes the cost, not the image
 
 
 def test_the_tone_map_pass_encodes_exactly_to_eight_bits(scene):
@@ -49,6 +53,7 @@ def test_the_tone_map_pass_encodes_exactly_to_eight_bits(scene):
     frame, rounded: within half a level plus the shader's sRGB curve's error (a fitted sum of
     square roots, 3e-5 = 0.008 of a level)."""
     from cnlmc.backends.preview.render import Renderer
+
     renderer = Renderer(SMALL, edge_aa=False)
     frame = renderer.render(material_of("white varnished oak"), tier="splitsum", scene=scene, hdr=True)
     x = np.maximum(frame.hdr[..., :3], 0) * scene.exposure
@@ -56,4 +61,4 @@ def test_the_tone_map_pass_encodes_exactly_to_eight_bits(scene):
     exact = np.where(x <= 0.0031308, 12.92 * x, 1.055 * np.power(x, 1 / 2.4) - 0.055) * 255
     covered = frame.hdr[..., 3] > 0.5
     diff = np.abs(frame.rgba[..., :3].astype(float) - exact)[covered]
-    assert covered.sum() > 500 and diff.max() < 0.52, diff.max()     # rounding: 0.5; the curve: 0.008
+    assert covered.sum() > 500 and diff.max() < 0.52, diff.max()  # rounding: 0.5; the curve: 0.008
