@@ -1,0 +1,359 @@
+"""The typed IR: frozen records the backends receive, validated once by `from_ir` (docs/ir.md).
+
+    doc = Document.from_ir(ir_dict)        # raises ValueError naming the path of a bad value
+    for m in doc.materials: m.params.ior   # absent parameters hold the table's default
+    "ior" in m.params.present              # whether the IR JSON has it
+    doc.to_ir() == ir_dict                 # exactly the JSON form it came from
+
+`Material.from_ir` also takes the short hand-written form the numpy reference's tests use
+(`model` and `params` only); the other material fields then default to empty values.
+Change a value with `dataclasses.replace`; `Material.key` is a content hash for caches.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+from collections.abc import Mapping
+from dataclasses import dataclass
+from functools import cached_property
+from types import MappingProxyType
+from typing import Any
+
+from .conventions import alpha_of
+from .params import BASES, COAT_PARAMS, DIFFUSE_LOBES, DISTRIBUTIONS, PARAMS, RGB, Coat, Params, ParamSpec
+
+__all__ = ["RGB", "Coat", "Document", "MapRef", "Material", "Model", "Params", "Variant"]
+
+JSON = Any
+MAP_ROLES = ("base_color", "normal", "roughness", "metallic", "mask")
+COLOUR_SPACE = "linear Rec.709"
+
+
+# -- validation helpers: each names the path of the value it rejects
+
+
+def _fail(path: str, expected: str, value: object) -> ValueError:
+    return ValueError(f"{path}: expected {expected}, got {value!r}")
+
+
+def _is_number(value: object) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def _fmt(x: float) -> str:
+    return f"{x:g}"
+
+
+def _number(value: object, path: str, bounds: tuple[float, float] | None = None) -> float:
+    if bounds is None:
+        if not _is_number(value):
+            raise _fail(path, "a number", value)
+        return value  # type: ignore[return-value]
+    low, high = bounds
+    if not (_is_number(value) and low <= value <= high):  # type: ignore[operator]
+        raise _fail(path, f"a number in [{_fmt(low)}, {_fmt(high)}]", value)
+    return value  # type: ignore[return-value]
+
+
+def _numbers(value: object, n: int, path: str, bounds: tuple[float, float] | None) -> tuple[float, ...]:
+    what = f"a list of {n} numbers" + (f" in [{_fmt(bounds[0])}, {_fmt(bounds[1])}]" if bounds else "")
+    if not isinstance(value, (list, tuple)) or len(value) != n:
+        raise _fail(path, what, value)
+    for v in value:
+        if not _is_number(v) or (bounds is not None and not bounds[0] <= v <= bounds[1]):
+            raise _fail(path, what, value)
+    return tuple(value)
+
+
+def _string(value: object, path: str) -> str:
+    if not isinstance(value, str):
+        raise _fail(path, "a string", value)
+    return value
+
+
+def _choice(value: object, choices: tuple[Any, ...], path: str) -> Any:
+    if value not in choices:
+        raise _fail(path, "one of " + ", ".join(json.dumps(c) for c in choices), value)
+    return value
+
+
+def _boolean(value: object, path: str) -> bool:
+    if not isinstance(value, bool):
+        raise _fail(path, "true or false", value)
+    return value
+
+
+def _object(value: object, path: str) -> Mapping[str, Any]:
+    if not isinstance(value, Mapping):
+        raise _fail(path, "an object", value)
+    return value
+
+
+def _freeze(value: JSON) -> JSON:
+    """JSON -> read-only: objects become mapping proxies, arrays tuples."""
+    if isinstance(value, Mapping):
+        return MappingProxyType({k: _freeze(v) for k, v in value.items()})
+    if isinstance(value, (list, tuple)):
+        return tuple(_freeze(v) for v in value)
+    return value
+
+
+def _thaw(value: JSON) -> JSON:
+    """The inverse of _freeze: fresh dicts and lists the caller may change."""
+    if isinstance(value, Mapping):
+        return {k: _thaw(v) for k, v in value.items()}
+    if isinstance(value, tuple):
+        return [_thaw(v) for v in value]
+    return value
+
+
+# -- the records
+
+
+@dataclass(frozen=True)
+class Model:
+    base: str
+    distribution: str | None
+    anisotropic: bool
+    coat: bool
+    diffuse: str | None
+
+    @classmethod
+    def from_ir(cls, d: object, path: str = "model") -> Model:
+        d = _object(d, path)
+        return cls(
+            base=_choice(d.get("base"), BASES, f"{path}.base"),
+            distribution=_choice(d.get("distribution"), DISTRIBUTIONS, f"{path}.distribution"),
+            anisotropic=_boolean(d.get("anisotropic", False), f"{path}.anisotropic"),
+            coat=_boolean(d.get("coat", False), f"{path}.coat"),
+            diffuse=_choice(d.get("diffuse"), DIFFUSE_LOBES, f"{path}.diffuse"),
+        )
+
+    def to_ir(self) -> dict[str, JSON]:
+        return dataclasses.asdict(self)
+
+
+def _value(spec: ParamSpec, value: object, path: str) -> Any:
+    """One table value from JSON, checked against its row."""
+    if value is None and spec.optional:
+        return None
+    if spec.kind == "number":
+        return _number(value, path, spec.range)
+    if spec.kind == "rgb":
+        return _numbers(value, 3, path, spec.range)
+    if spec.kind == "alpha":
+        return _numbers(value, 2, path, spec.range)
+    if spec.kind == "enum":
+        return _choice(value, spec.choices, path)
+    if spec.kind == "str":
+        return _string(value, path)
+    raise _fail(path, spec.kind, value)
+
+
+def _json_value(value: Any) -> JSON:
+    return list(value) if isinstance(value, tuple) else value
+
+
+def coat_from_ir(d: object, convention: str, path: str) -> Coat:
+    """A coat; its alpha, when absent, from its roughness in the base's convention."""
+    d = _object(d, path)
+    values = {s.name: _value(s, d[s.name], f"{path}.{s.name}") for s in COAT_PARAMS if s.name in d}
+    if "alpha" not in values:
+        values["alpha"] = tuple(alpha_of(values.get("roughness", Coat.roughness), 0.0, convention))
+    return Coat(**values)
+
+
+def coat_to_ir(coat: Coat) -> dict[str, JSON]:
+    return {s.name: _json_value(getattr(coat, s.name)) for s in COAT_PARAMS}
+
+
+def params_from_ir(d: object, model: Model, path: str = "params") -> Params:
+    """Params from the IR's params object; absent keys hold the table's default (alpha: derived)."""
+    d = _object(d, path)
+    values: dict[str, Any] = {}
+    convention = _value(
+        _spec("alpha_convention"), d.get("alpha_convention", Params.alpha_convention), f"{path}.alpha_convention"
+    )
+    for s in PARAMS:
+        if s.name not in d:
+            continue
+        where = f"{path}.{s.name}"
+        if s.kind == "coat":
+            values[s.name] = None if d[s.name] is None else coat_from_ir(d[s.name], convention, where)
+        else:
+            values[s.name] = _value(s, d[s.name], where)
+    if "alpha" not in values:
+        aniso = values.get("anisotropy", Params.anisotropy) if model.anisotropic else 0.0
+        values["alpha"] = tuple(alpha_of(values.get("roughness", Params.roughness), aniso, convention))
+    return Params(**values, present=frozenset(d))
+
+
+def params_to_ir(params: Params) -> dict[str, JSON]:
+    """The params object with the keys the IR had, in IR order."""
+    out: dict[str, JSON] = {}
+    for s in PARAMS:
+        if s.name in params.present:
+            value = getattr(params, s.name)
+            out[s.name] = coat_to_ir(value) if isinstance(value, Coat) else _json_value(value)
+    return out
+
+
+def _spec(name: str) -> ParamSpec:
+    return next(s for s in PARAMS if s.name == name)
+
+
+@dataclass(frozen=True)
+class MapRef:
+    graph: str
+    output: str
+    params: Mapping[str, float]
+    seed: int
+
+    @classmethod
+    def from_ir(cls, d: object, path: str) -> MapRef:
+        d = _object(d, path)
+        params = _object(d.get("params", {}), f"{path}.params")
+        for name, value in params.items():
+            _number(value, f"{path}.params.{name}")
+        seed = d.get("seed", 0)
+        if not isinstance(seed, int) or isinstance(seed, bool):
+            raise _fail(f"{path}.seed", "an integer", seed)
+        return cls(
+            graph=_string(d.get("graph"), f"{path}.graph"),
+            output=_string(d.get("output"), f"{path}.output"),
+            params=MappingProxyType(dict(params)),
+            seed=seed,
+        )
+
+    def to_ir(self) -> dict[str, JSON]:
+        return {"graph": self.graph, "output": self.output, "params": dict(self.params), "seed": self.seed}
+
+
+@dataclass(frozen=True)
+class Variant:
+    group: str
+    name: str
+    choices: tuple[str, ...]
+
+    @classmethod
+    def from_ir(cls, d: object, path: str) -> Variant:
+        d = _object(d, path)
+        choices = d.get("choices")
+        if not isinstance(choices, list) or not all(isinstance(c, str) for c in choices):
+            raise _fail(f"{path}.choices", "a list of strings", choices)
+        return cls(_string(d.get("group"), f"{path}.group"), _string(d.get("name"), f"{path}.name"), tuple(choices))
+
+    def to_ir(self) -> dict[str, JSON]:
+        return {"group": self.group, "name": self.name, "choices": list(self.choices)}
+
+
+def _maps_from_ir(d: object, path: str) -> Mapping[str, MapRef]:
+    d = _object(d, path)
+    for role in d:
+        _choice(role, MAP_ROLES, f"{path} role")
+    return MappingProxyType({role: MapRef.from_ir(ref, f"{path}.{role}") for role, ref in d.items()})
+
+
+def _provenance_from_ir(d: object, path: str) -> Mapping[str, tuple[Mapping[str, Any], ...]]:
+    d = _object(d, path)
+    for name, steps in d.items():
+        if not isinstance(steps, list) or not all(isinstance(s, Mapping) for s in steps):
+            raise _fail(f"{path}.{name}", "a list of steps", steps)
+    frozen: Mapping[str, tuple[Mapping[str, Any], ...]] = _freeze(d)
+    return frozen
+
+
+@dataclass(frozen=True)
+class Material:
+    name: str
+    phrase: str
+    variant: Variant | None
+    model: Model
+    params: Params
+    maps: Mapping[str, MapRef]
+    provenance: Mapping[str, tuple[Mapping[str, Any], ...]]
+
+    @classmethod
+    def from_ir(cls, d: object, path: str = "") -> Material:
+        """A material from its IR object, validated; `path` prefixes error messages."""
+        at = f"{path}." if path else ""
+        d = _object(d, path or "material")
+        model = Model.from_ir(d.get("model"), f"{at}model")
+        variant = d.get("variant")
+        return cls(
+            name=_string(d.get("name", ""), f"{at}name"),
+            phrase=_string(d.get("phrase", ""), f"{at}phrase"),
+            variant=None if variant is None else Variant.from_ir(variant, f"{at}variant"),
+            model=model,
+            params=params_from_ir(d.get("params"), model, f"{at}params"),
+            maps=_maps_from_ir(d.get("maps", {}), f"{at}maps"),
+            provenance=_provenance_from_ir(d.get("provenance", {}), f"{at}provenance"),
+        )
+
+    def to_ir(self) -> dict[str, JSON]:
+        return {
+            "name": self.name,
+            "phrase": self.phrase,
+            "variant": None if self.variant is None else self.variant.to_ir(),
+            "model": self.model.to_ir(),
+            "params": params_to_ir(self.params),
+            "maps": {role: ref.to_ir() for role, ref in self.maps.items()},
+            "provenance": _thaw(self.provenance),
+        }
+
+    @cached_property
+    def key(self) -> str:
+        """A content hash of model, params and maps (not the name): equal looks share it."""
+        content = [self.model.to_ir(), params_to_ir(self.params), {r: m.to_ir() for r, m in self.maps.items()}]
+        return hashlib.sha256(json.dumps(content, sort_keys=True).encode()).hexdigest()[:16]
+
+
+_DOCUMENT_KEYS = ("ir_version", "source", "lexicon", "colour_space", "materials", "diagnostics")
+
+
+@dataclass(frozen=True)
+class Document:
+    ir_version: int
+    source: str
+    lexicon: tuple[str, ...]
+    colour_space: str
+    materials: tuple[Material, ...]
+    diagnostics: tuple[Mapping[str, Any], ...]
+
+    @classmethod
+    def from_ir(cls, d: object) -> Document:
+        """The whole IR document, validated once."""
+        d = _object(d, "document")
+        for key in _DOCUMENT_KEYS:
+            if key not in d:
+                raise ValueError(f"{key}: missing (an IR document has {', '.join(_DOCUMENT_KEYS)})")
+        version = d["ir_version"]
+        if version != 1 or isinstance(version, bool):
+            raise _fail("ir_version", "1", version)
+        lexicon, materials, diagnostics = d["lexicon"], d["materials"], d["diagnostics"]
+        if not isinstance(lexicon, list) or not all(isinstance(s, str) for s in lexicon):
+            raise _fail("lexicon", "a list of strings", lexicon)
+        if not isinstance(materials, list):
+            raise _fail("materials", "a list", materials)
+        if not isinstance(diagnostics, list) or not all(isinstance(x, Mapping) for x in diagnostics):
+            raise _fail("diagnostics", "a list of objects", diagnostics)
+        return cls(
+            ir_version=version,
+            source=_string(d["source"], "source"),
+            lexicon=tuple(lexicon),
+            colour_space=_choice(d["colour_space"], (COLOUR_SPACE,), "colour_space"),
+            materials=tuple(Material.from_ir(m, f"materials[{i}]") for i, m in enumerate(materials)),
+            diagnostics=tuple(_freeze(x) for x in diagnostics),
+        )
+
+    def to_ir(self) -> dict[str, JSON]:
+        return {
+            "ir_version": self.ir_version,
+            "source": self.source,
+            "lexicon": list(self.lexicon),
+            "colour_space": self.colour_space,
+            "materials": [m.to_ir() for m in self.materials],
+            "diagnostics": [_thaw(x) for x in self.diagnostics],
+        }
