@@ -12,7 +12,13 @@ notes become warnings (code W2xx) so nothing is dropped silently.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from cnlmc.material import Material
+
 
 POLICIES = ("exact", "approximate", "bake", "drop", "error")
 # Options the compiler passes to every backend, beside the user's --option KEY=VALUE pairs.
@@ -20,8 +26,26 @@ COMPILER_OPTIONS = ("seed", "output")
 POLICY_CODES = {"approximate": "W201", "bake": "W202", "drop": "W203", "error": "E201"}
 
 
-def material_features(material: dict) -> list[str]:
-    """The features of an IR material, in the vocabulary of capability tables."""
+def material_features(material: Material | Mapping[str, Any]) -> list[str]:
+    """The features of a material (typed, or its IR dict), in the vocabulary of capability tables."""
+    if isinstance(material, Mapping):
+        return _ir_features(material)
+    model, coat = material.model, material.params.coat
+    features = [f"model.{model.base}"]
+    if model.distribution:
+        features.append(f"distribution.{model.distribution}")
+    if model.anisotropic:
+        features.append("anisotropic")
+    if model.diffuse == "oren_nayar":
+        features.append("diffuse.oren_nayar")
+    if model.coat:
+        features.append("coat")
+        if coat is not None and any(abs(c - 1.0) > 1e-6 for c in coat.color):
+            features.append("coat.color")
+    return features + [f"maps.{role}" for role in material.maps]
+
+
+def _ir_features(material: Mapping[str, Any]) -> list[str]:
     model, params = material["model"], material["params"]
     features = [f"model.{model['base']}"]
     if model["distribution"]:
@@ -79,22 +103,35 @@ class Note:
 
 @dataclass
 class EmitResult:
-    artifacts: list
-    notes: list = field(default_factory=list)
+    """What a target's emit returns: the files (base.Artifact) and the capability notes."""
+
+    artifacts: list[Any]
+    notes: list[Note] = field(default_factory=list)
 
 
-def unsupported(notes: list, target: str, capabilities: dict, material: dict, feature: str) -> str:
+Capabilities = Mapping[str, tuple[str, str]]
+
+
+def material_name(material: Material | Mapping[str, Any]) -> str:
+    return str(material["name"]) if isinstance(material, Mapping) else material.name
+
+
+def unsupported(
+    notes: list[Note], target: str, capabilities: Capabilities, material: Material | Mapping[str, Any], feature: str
+) -> str:
     """Apply the capability policy for one feature of one material; returns the policy."""
     policy, reason = capabilities.get(feature, ("error", f"'{feature}' is not supported"))
     if policy == "exact":
         return policy
-    note = Note(target, material["name"], feature, policy, reason)
+    note = Note(target, material_name(material), feature, policy, reason)
     if policy == "error":
         raise BackendRefused(note.text())
     notes.append(note)
     return policy
 
 
-def check_material(notes: list, target: str, capabilities: dict, material: dict) -> dict[str, str]:
+def check_material(
+    notes: list[Note], target: str, capabilities: Capabilities, material: Material | Mapping[str, Any]
+) -> dict[str, str]:
     """Run every feature of a material through its policy; feature -> policy applied."""
     return {f: unsupported(notes, target, capabilities, material, f) for f in material_features(material)}

@@ -1,0 +1,106 @@
+"""The one map-baking service: a material's procedural maps -> arrays, image files or Artifacts.
+
+Every target that needs images asks here (the maps target, `cnlmc bake`, the exchange
+formats, the preview); each failure is a `MapBakeError` naming the material.
+
+    bake_arrays(material, size, seed, roles=None, on_progress=None) -> {role: ndarray}
+    bake_files(material, out_dir, size, fmt, seed, stem=None, ...) -> [Path]       (written atomically)
+    bake_artifacts(material, size, fmt, seed, stem=None, folder="", ...) -> [Artifact] (bytes)
+
+`material` is a typed `cnlmc.material.Material` (or its IR dict); `roles` picks some of its
+maps (default all); `derive(arrays) -> arrays` may add roles computed from the baked ones.
+Formats: png8, png16, exr-half, exr-float (writer.FORMATS). Sizes: a power of two, 8 ... 8192.
+"""
+
+from __future__ import annotations
+
+import tempfile
+from collections.abc import Callable, Collection, Mapping
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from ..base import Artifact
+from .bake import OnProgress, bake
+from .errors import MapError
+from .writer import write_maps
+
+if TYPE_CHECKING:
+    from cnlmc.material import Material
+
+Arrays = dict[str, np.ndarray]
+Derive = Callable[[Arrays], Arrays]
+
+
+class MapBakeError(MapError):
+    """A material's maps cannot be baked: `material` names it, `reason` says why."""
+
+    def __init__(self, material: str, reason: str):
+        super().__init__(f"{material}: {reason}")
+        self.material, self.reason = material, reason
+
+
+def _parts(material: Material | Mapping[str, Any]) -> tuple[str, dict[str, Any], dict[str, Any]]:
+    """Name, IR map references and IR parameters: what the graph engine reads."""
+    ir = material if isinstance(material, Mapping) else material.to_ir()
+    return ir["name"], dict(ir.get("maps") or {}), dict(ir.get("params") or {})
+
+
+def has_maps(material: Material | Mapping[str, Any]) -> bool:
+    return bool(_parts(material)[1])
+
+
+def bake_arrays(
+    material: Material | Mapping[str, Any],
+    size: int,
+    seed: int,
+    roles: Collection[str] | None = None,
+    on_progress: OnProgress | None = None,
+) -> Arrays:
+    """role -> float32 array (see maps.bake for shapes and value ranges)."""
+    name, refs, params = _parts(material)
+    chosen = {role: ref for role, ref in refs.items() if roles is None or role in roles}
+    try:
+        return bake(chosen, params, size, seed, on_progress=on_progress)
+    except MapError as exc:
+        raise MapBakeError(name, str(exc)) from None
+
+
+def bake_files(
+    material: Material | Mapping[str, Any],
+    out_dir: str | Path,
+    size: int,
+    fmt: str,
+    seed: int,
+    stem: str | None = None,
+    roles: Collection[str] | None = None,
+    derive: Derive | None = None,
+    on_progress: OnProgress | None = None,
+) -> list[Path]:
+    """Bake and write out_dir/{stem}_{role}{.png|.exr} (stem: the material's name)."""
+    name = _parts(material)[0]
+    arrays = bake_arrays(material, size, seed, roles, on_progress)
+    if derive is not None:
+        arrays = derive(arrays)
+    try:
+        return write_maps(arrays, out_dir, fmt, stem=stem or name)
+    except MapError as exc:
+        raise MapBakeError(name, str(exc)) from None
+
+
+def bake_artifacts(
+    material: Material | Mapping[str, Any],
+    size: int,
+    fmt: str,
+    seed: int,
+    stem: str | None = None,
+    folder: str = "",
+    roles: Collection[str] | None = None,
+    derive: Derive | None = None,
+) -> list[Artifact]:
+    """Bake into image Artifacts named `{folder}/{stem}_{role}.ext` (no folder: just the file name)."""
+    prefix = f"{folder}/" if folder else ""
+    with tempfile.TemporaryDirectory(prefix="cnlmc-maps-") as tmp:
+        paths = bake_files(material, tmp, size, fmt, seed, stem, roles, derive)
+        return [Artifact(prefix + p.name, p.read_bytes(), "binary") for p in paths]
