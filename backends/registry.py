@@ -13,9 +13,9 @@ from dataclasses import dataclass
 BUILTIN_BACKENDS = {
     "ir": "cnlmc.backends.ir_json",
     "glsl": "cnlmc.backends.glsl",
-    "materialx": "cnlmc.backends.materialx",
-    "usd": "cnlmc.backends.usd",
-    "mitsuba": "cnlmc.backends.mitsuba",
+    "materialx": "cnlmc.backends.exchange.materialx",
+    "usd": "cnlmc.backends.exchange.usd",
+    "mitsuba": "cnlmc.backends.exchange.mitsuba",
     "maps": "cnlmc.backends.maps.target",
     "preview": "cnlmc.backends.preview",
 }

@@ -5,7 +5,7 @@ each tier's frame time (llvmpipe, median of 2 frames, at --size and at 512x512, 
 chart plots and the speed-up goal uses; Mitsuba timed at both sizes too) and its error (FLIP
 mean, RMSE of the tone-mapped sRGB image) against Mitsuba (`direct` integrator, REF_SPP samples
 per pixel, llvm_ad_rgb) rendering the same material with cnlmc's own BSDF (the `cnlm` plugin,
-backends/mitsuba_cnlm.py; glass: native roughdielectric, its exact match). Mitsuba itself at
+backends/exchange/mitsuba_cnlm.py; glass: native roughdielectric, its exact match). Mitsuba itself at
 increasing spp with its native plugins (what a Mitsuba user renders; warm, timed) against its
 own converged native render gives the time/error curve; the row `native_model` is the distance
 between Mitsuba's native approximation and cnlmc's model (the Mitsuba backend's fidelity).

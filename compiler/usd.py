@@ -46,8 +46,10 @@ def author_material(
     """
     from pxr import Sdf, UsdGeom
 
-    from cnlmc.backends import usd as backend
-    from cnlmc.backends.materialx_params import bake_textures, exchange_options, unique_identifiers
+    from cnlmc.backends.exchange import usd as backend
+    from cnlmc.backends.exchange.naming import unique_identifiers
+    from cnlmc.backends.exchange.options import exchange_options
+    from cnlmc.backends.exchange.textures import bake_textures
 
     materials = _compile(phrase, lexicon, seed)
     sdf_path = Sdf.Path(path)

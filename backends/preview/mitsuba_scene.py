@@ -94,9 +94,9 @@ def export_scene(
     sampler: str | None = None,
 ) -> Path:
     """Write scene.xml, materials.xml (+ baked textures), mesh.ply and environment.exr.
-    `bsdf="cnlm"` uses cnlmc's own BSDF through the `cnlm` plugin (backends/mitsuba_cnlm.py).
+    `bsdf="cnlm"` uses cnlmc's own BSDF through the `cnlm` plugin (backends/exchange/mitsuba_cnlm.py).
     `sampler`: default `sampler_for(spp)` (render at that spp: ldsampler rounds others up)."""
-    from cnlmc.backends import mitsuba
+    from cnlmc.backends.exchange import mitsuba
 
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -163,7 +163,7 @@ def render_scene(
         elif mi.variant() is None:
             mi.set_variant("scalar_rgb")
         return _timed_render(path, spp, seed, warm)
-    from cnlmc.backends import mitsuba_cnlm
+    from cnlmc.backends.exchange import mitsuba_cnlm
 
     mitsuba_cnlm.register()
     previous = mitsuba_cnlm.set_symbolic(not uses_plugin(path))

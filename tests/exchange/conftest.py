@@ -128,7 +128,7 @@ def all_sources() -> list[str]:
 
 @pytest.fixture(scope="session")
 def mx_library():
-    from cnlmc.backends.materialx import standard_library
+    from cnlmc.backends.exchange.materialx import standard_library
 
     return standard_library()
 

@@ -6,8 +6,8 @@ from __future__ import annotations
 import pytest
 
 from cnlmc.api import emit
-from cnlmc.backends import materialx, mitsuba, usd
 from cnlmc.backends.capabilities import ALL_FEATURES, POLICIES, material_features
+from cnlmc.backends.exchange import materialx, mitsuba, usd
 
 from .conftest import ir_of, synthetic_ir
 

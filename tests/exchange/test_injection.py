@@ -8,7 +8,7 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from cnlmc.api import emit
-from cnlmc.backends.materialx_params import identifier, unique_identifiers, xml_text
+from cnlmc.backends.exchange.naming import identifier, unique_identifiers, xml_text
 
 from .conftest import ir_of, write_artifacts
 

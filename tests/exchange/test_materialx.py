@@ -13,7 +13,7 @@ import MaterialX.PyMaterialXGenGlsl as mxg  # noqa: E402
 import MaterialX.PyMaterialXGenShader as mxs  # noqa: E402
 
 from cnlmc.api import emit  # noqa: E402
-from cnlmc.backends.materialx_params import f82_tint, gulbrandsen_edge, openpbr_roughness, standard_roughness  # noqa: E402
+from cnlmc.backends.exchange.conversions import f82_tint, gulbrandsen_edge, openpbr_roughness, standard_roughness  # noqa: E402
 
 from .conftest import FAST, all_sources, ir_of, synthetic_ir  # noqa: E402
 

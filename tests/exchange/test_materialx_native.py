@@ -10,7 +10,7 @@ import pytest
 mx = pytest.importorskip("MaterialX")
 
 from cnlmc.api import emit  # noqa: E402
-from cnlmc.backends import materialx_native as native  # noqa: E402
+from cnlmc.backends.exchange import materialx_native as native  # noqa: E402
 
 from .conftest import FAST, ir_of  # noqa: E402
 from .test_materialx import check_document, glsl  # noqa: E402,F401

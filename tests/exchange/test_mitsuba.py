@@ -10,7 +10,7 @@ import pytest
 mi = pytest.importorskip("mitsuba")
 
 from cnlmc.api import emit  # noqa: E402
-from cnlmc.backends import mitsuba as backend  # noqa: E402
+from cnlmc.backends.exchange import mitsuba as backend  # noqa: E402
 
 from .conftest import FAST, all_sources, ir_of, synthetic_ir, write_artifacts  # noqa: E402
 

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from cnlmc.api import compile_source
-from cnlmc.backends import mitsuba
+from cnlmc.backends.exchange import mitsuba
 from cnlmc.bsdf.evaluate import albedo, evaluate
 
 
@@ -69,7 +69,7 @@ def mi():
     mitsuba_module = pytest.importorskip("mitsuba")
     import drjit as dr
 
-    from cnlmc.backends import mitsuba_cnlm
+    from cnlmc.backends.exchange import mitsuba_cnlm
 
     previous = mitsuba_module.variant()
     flags = {f: dr.flag(f) for f in (dr.JitFlag.SymbolicCalls, dr.JitFlag.SymbolicLoops)}
@@ -160,7 +160,7 @@ def test_without_llvm_19_the_plugin_refuses_clearly_instead_of_aborting():
     """Mitsuba's llvm variants abort the process with LLVM 15/16: no LLVM 19, no attempt."""
     code = (
         "import os; os.environ.pop('DRJIT_LIBLLVM_PATH', None)\n"
-        "from cnlmc.backends import mitsuba_cnlm\n"
+        "from cnlmc.backends.exchange import mitsuba_cnlm\n"
         "mitsuba_cnlm.LLVM_LIBRARY = '/nonexistent/libLLVM.so.19.1'\n"
         "try:\n    mitsuba_cnlm.register()\nexcept mitsuba_cnlm.PluginError as exc:\n    print('refused:', exc)\n"
     )

@@ -68,7 +68,7 @@ def _composite(linear: np.ndarray, background: float = 0.18) -> np.ndarray:
 def plugin():
     pytest.importorskip("mitsuba")
     pytest.importorskip("flip_evaluator")
-    from cnlmc.backends import mitsuba_cnlm
+    from cnlmc.backends.exchange import mitsuba_cnlm
 
     try:
         mitsuba_cnlm.choose_variant()

@@ -13,20 +13,13 @@ import math
 
 import MaterialX as mx
 
+from ..capabilities import ALL_FEATURES, EmitResult, check_material
+from ..registry import Artifact
 from . import materialx_native as native
-from .capabilities import ALL_FEATURES, EmitResult, check_material
-from .materialx_params import (
-    SURFACE_NAMES,
-    SURFACES,
-    bake_textures,
-    capabilities_for,
-    exchange_options,
-    phrase_text,
-    surface_inputs,
-    tangent_rotation,
-    unique_identifiers,
-)
-from .registry import Artifact
+from .naming import phrase_text, unique_identifiers
+from .options import capabilities_for, exchange_options
+from .surface_inputs import SURFACE_NAMES, SURFACES, surface_inputs, tangent_rotation
+from .textures import bake_textures
 
 NAME = "materialx"
 DESCRIPTION = "MaterialX document (.mtlx): OpenPBR Surface (or standard_surface) with baked image maps"

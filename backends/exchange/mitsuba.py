@@ -15,20 +15,12 @@ import re
 
 import numpy as np
 
-from .capabilities import ALL_FEATURES, EmitResult, check_material
-from .materialx_params import (
-    alpha_pair,
-    alpha_to_roughness,
-    bake_textures,
-    capabilities_for,
-    clip01,
-    conductor_f0,
-    exchange_options,
-    rounded,
-    unique_identifiers,
-    xml_text,
-)
-from .registry import Artifact
+from ..capabilities import ALL_FEATURES, EmitResult, check_material
+from ..registry import Artifact
+from .conversions import alpha_pair, alpha_to_roughness, clip01, conductor_f0, rounded
+from .naming import unique_identifiers, xml_text
+from .options import capabilities_for, exchange_options
+from .textures import bake_textures
 
 NAME = "mitsuba"
 DESCRIPTION = "Mitsuba 3 scene XML (full preview scene or BSDF fragment) with baked bitmap textures"
@@ -82,7 +74,7 @@ assert set(CAPABILITIES) == set(ALL_FEATURES)
 CNLM_CAPABILITIES = dict.fromkeys(ALL_FEATURES, ("exact", ""))
 CNLM_CAPABILITIES["maps.metallic"] = ("drop", "no IR model reads a metallic map")
 USED_MAPS = ("base_color", "roughness", "normal")
-#: `bsdf=cnlm`: cnlmc's own BSDF through the `cnlm` plugin (backends/mitsuba_cnlm.py), which
+#: `bsdf=cnlm`: cnlmc's own BSDF through the `cnlm` plugin (backends/exchange/mitsuba_cnlm.py), which
 #: reads these maps itself (normals still go through `normalmap`).
 CNLM_MAPS = ("base_color", "roughness", "normal", "mask")
 
@@ -299,7 +291,7 @@ def environment():
     import jinja2
 
     env = jinja2.Environment(
-        loader=jinja2.PackageLoader("cnlmc.backends", "templates/mitsuba"),
+        loader=jinja2.PackageLoader("cnlmc.backends.exchange", "templates/mitsuba"),
         autoescape=True,
         undefined=jinja2.StrictUndefined,
         keep_trailing_newline=True,

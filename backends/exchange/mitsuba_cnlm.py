@@ -6,7 +6,7 @@ With this plugin Mitsuba renders exactly the BSDF the GLSL shader evaluates: eve
 to the numpy reference `cnlmc.bsdf.evaluate` (docs/bsdf.md), vectorized over Mitsuba's
 wavefront. Sampling is the cosine + GGX visible-normal mixture of `cnlmc.bsdf.sampling`.
 
-    from cnlmc.backends import mitsuba_cnlm
+    from cnlmc.backends.exchange import mitsuba_cnlm
     mitsuba_cnlm.register()            # selects an LLVM/CUDA variant first if none is set
     scene = mi.load_file("scene.xml")  # written with --target mitsuba --option bsdf=cnlm
 

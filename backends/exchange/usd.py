@@ -15,22 +15,13 @@ from pathlib import Path
 
 from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade
 
+from ..capabilities import ALL_FEATURES, EmitResult, check_material
+from ..registry import Artifact
 from . import materialx as mtlx_backend
-from .capabilities import ALL_FEATURES, EmitResult, check_material
-from .materialx_params import (
-    alpha_pair,
-    alpha_to_roughness,
-    bake_textures,
-    capabilities_for,
-    clip01,
-    conductor_f0,
-    exchange_options,
-    identifier,
-    phrase_text,
-    rounded,
-    unique_identifiers,
-)
-from .registry import Artifact
+from .conversions import alpha_pair, alpha_to_roughness, clip01, conductor_f0, rounded
+from .naming import identifier, phrase_text, unique_identifiers
+from .options import capabilities_for, exchange_options
+from .textures import bake_textures
 
 NAME = "usd"
 DESCRIPTION = "USD stage (.usda/.usdc/.usdz): UsdPreviewSurface + MaterialX OpenPBR networks, variants for 'or'"

@@ -1,0 +1,88 @@
+"""IR parameters -> what exchange shaders take: conductor colours and roughness fits.
+
+- conductor colours: OpenPBR's F82 tint and Standard Surface's edge colour from the IR's f0/f82/eta.
+- roughness: the IR's microfacet widths (alpha) -> perceptual roughness and anisotropy per shader.
+"""
+
+from __future__ import annotations
+
+import math
+
+MU_82 = 1.0 / 7.0  # cos 82 degrees, rounded as OpenPBR does: the F82 angle
+DIGITS = 6  # values are rounded so documents are stable (golden files)
+
+
+def clip01(values) -> list[float]:
+    return [min(max(float(v), 0.0), 1.0) for v in values]
+
+
+def rounded(values) -> list[float]:
+    return [round(float(v), DIGITS) for v in values]
+
+
+# --------------------------------------------------------------------------- conductors
+
+
+def schlick(f0: float, mu: float) -> float:
+    return f0 + (1.0 - f0) * (1.0 - mu) ** 5
+
+
+def conductor_f0(params: dict) -> list[float]:
+    """The measured normal-incidence reflectance times the IR tint, clipped to [0, 1]."""
+    return clip01(f * t for f, t in zip(params["f0"], params["base_color"]))
+
+
+def f82_tint(params: dict) -> list[float]:
+    """OpenPBR's specular_color for a metal: F(82 deg) / Schlick(F0, 82 deg), clipped to [0, 1].
+
+    OpenPBR (and MaterialX's generalized_schlick_bsdf color82) subtracts a term so that the
+    reflectance at mu = 1/7 equals specular_color * Schlick(F0, 1/7); the IR stores the
+    measured F82, so the tint is f82 / schlick(f0, 1/7) (both scaled by the IR tint).
+    """
+    f0 = conductor_f0(params)
+    f82 = [f * t for f, t in zip(params["f82"], params["base_color"])]
+    return clip01(b / schlick(a, MU_82) for a, b in zip(f0, f82))
+
+
+def gulbrandsen_edge(params: dict) -> list[float]:
+    """Standard Surface's specular_color for a metal: the edge tint g for which Gulbrandsen's
+    artistic IOR mapping (MaterialX `artistic_ior`) gives back the measured eta at F0 = r."""
+    edge = []
+    for r, n in zip(conductor_f0(params), params["eta"]):
+        r = min(r, 0.999)
+        n_min = (1.0 - r) / (1.0 + r)
+        n_max = (1.0 + math.sqrt(r)) / (1.0 - math.sqrt(r))
+        edge.append(1.0 if n_max - n_min < 1e-6 else (n_max - n) / (n_max - n_min))
+    return clip01(edge)
+
+
+# ------------------------------------------------------------------------- roughness
+
+
+def alpha_pair(params: dict) -> tuple[float, float]:
+    """(alpha_x, alpha_y) as microfacet widths (alpha is authoritative in the IR)."""
+    ax, ay = params["alpha"]  # widths in either convention: only r differs
+    return float(ax), float(ay)
+
+
+def alpha_to_roughness(alpha: float) -> float:
+    """Perceptual roughness of the squared convention (alpha = r^2), used by every target here."""
+    return math.sqrt(max(alpha, 0.0))
+
+
+def openpbr_roughness(ax: float, ay: float) -> tuple[float, float]:
+    """OpenPBR: alpha_t = r^2 sqrt(2 / (1 + (1-a)^2)), alpha_b = (1-a) alpha_t."""
+    hi, lo = max(ax, ay), min(ax, ay)
+    if hi <= 0.0:
+        return 0.0, 0.0
+    a = 1.0 - lo / hi
+    return math.sqrt(hi / math.sqrt(2.0 / (1.0 + (1.0 - a) ** 2))), a
+
+
+def standard_roughness(ax: float, ay: float) -> tuple[float, float]:
+    """Standard Surface: alpha_x = r^2 / sqrt(1-a), alpha_y = r^2 sqrt(1-a), a <= 0.98."""
+    hi, lo = max(ax, ay), min(ax, ay)
+    if hi <= 0.0:
+        return 0.0, 0.0
+    a = min(1.0 - lo / hi, 0.98)
+    return math.sqrt(math.sqrt(hi * lo) if lo > 0 else hi * math.sqrt(1 - a)), a

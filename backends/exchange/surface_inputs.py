@@ -1,0 +1,133 @@
+"""IR material -> the inputs of a MaterialX surface shader (`open_pbr_surface`, `standard_surface`).
+
+The MaterialX backend writes them as node inputs and the USD backend as UsdShade inputs; the
+per-shader differences (input names, roughness fit, metal edge colour) are tables here.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .conversions import (
+    DIGITS,
+    alpha_pair,
+    alpha_to_roughness,
+    clip01,
+    conductor_f0,
+    f82_tint,
+    gulbrandsen_edge,
+    openpbr_roughness,
+    rounded,
+    standard_roughness,
+)
+
+# IR concept -> input name, per MaterialX surface shader (per-target differences as a table).
+SURFACE_NAMES = {
+    "open_pbr_surface": {
+        "base_weight": "base_weight",
+        "base_color": "base_color",
+        "metalness": "base_metalness",
+        "diffuse_roughness": "base_diffuse_roughness",
+        "specular_weight": "specular_weight",
+        "specular_color": "specular_color",
+        "roughness": "specular_roughness",
+        "ior": "specular_ior",
+        "anisotropy": "specular_roughness_anisotropy",
+        "transmission": "transmission_weight",
+        "transmission_color": "transmission_color",
+        "coat": "coat_weight",
+        "coat_color": "coat_color",
+        "coat_roughness": "coat_roughness",
+        "coat_ior": "coat_ior",
+        "normal": "geometry_normal",
+        "tangent": "geometry_tangent",
+    },
+    "standard_surface": {
+        "base_weight": "base",
+        "base_color": "base_color",
+        "metalness": "metalness",
+        "diffuse_roughness": "diffuse_roughness",
+        "specular_weight": "specular",
+        "specular_color": "specular_color",
+        "roughness": "specular_roughness",
+        "ior": "specular_IOR",
+        "anisotropy": "specular_anisotropy",
+        "rotation": "specular_rotation",
+        "transmission": "transmission",
+        "transmission_color": "transmission_color",
+        "coat": "coat",
+        "coat_color": "coat_color",
+        "coat_roughness": "coat_roughness",
+        "coat_ior": "coat_IOR",
+        "normal": "normal",
+        "tangent": "tangent",
+    },
+}
+ROUGHNESS_FIT = {"open_pbr_surface": openpbr_roughness, "standard_surface": standard_roughness}
+METAL_EDGE = {"open_pbr_surface": f82_tint, "standard_surface": gulbrandsen_edge}
+SURFACES = tuple(SURFACE_NAMES)
+
+
+def abstract_inputs(material: dict, surface: str) -> dict[str, tuple[str, object]]:
+    """IR material -> concept -> (MaterialX type, value), before naming for a surface."""
+    model, params = material["model"], material["params"]
+    base = model["base"]
+    out: dict[str, tuple[str, object]] = {"base_weight": ("float", 1.0)}
+    if base == "conductor":
+        out["base_color"] = ("color3", conductor_f0(params))
+        out["metalness"] = ("float", 1.0)
+        out["specular_color"] = ("color3", METAL_EDGE[surface](params))
+    else:
+        out["base_color"] = ("color3", clip01(params["base_color"]))
+        out["metalness"] = ("float", 0.0)
+    if base == "diffuse":
+        out["specular_weight"] = ("float", 0.0)
+    else:
+        out.update(_specular_inputs(params, surface))
+    if base == "glass":
+        out["transmission"] = ("float", 1.0)
+        out["transmission_color"] = ("color3", clip01(params["base_color"]))
+    if model["diffuse"] == "oren_nayar":
+        out["diffuse_roughness"] = ("float", min(max(float(params.get("diffuse_roughness", 0.0)), 0.0), 1.0))
+    if model["coat"] and params.get("coat"):
+        out.update(_coat_inputs(params["coat"]))
+    return {k: (t, round(v, DIGITS) if isinstance(v, float) else rounded(v)) for k, (t, v) in out.items()}
+
+
+def _specular_inputs(params: dict, surface: str) -> dict:
+    ax, ay = alpha_pair(params)
+    roughness, anisotropy = ROUGHNESS_FIT[surface](ax, ay)
+    out = {"specular_weight": ("float", 1.0), "roughness": ("float", roughness)}
+    if "ior" in params:
+        out["ior"] = ("float", float(params["ior"]))
+    if anisotropy > 0.0:
+        out["anisotropy"] = ("float", anisotropy)
+        rotation = float(params.get("anisotropy_rotation") or 0.0)
+        if rotation and "rotation" in SURFACE_NAMES[surface]:
+            out["rotation"] = ("float", (rotation / (2 * math.pi)) % 1.0)
+    return out
+
+
+def _coat_inputs(coat: dict) -> dict:
+    """The IR's coat colour is a normal-incidence round-trip tint scaled by thickness."""
+    thickness = float(coat.get("thickness", 1.0))
+    color = [max(float(c), 0.0) ** thickness for c in coat["color"]]
+    return {
+        "coat": ("float", 1.0),
+        "coat_color": ("color3", clip01(color)),
+        "coat_roughness": ("float", alpha_to_roughness(float(coat["alpha"][0]))),
+        "coat_ior": ("float", float(coat["ior"])),
+    }
+
+
+def surface_inputs(material: dict, surface: str = "open_pbr_surface") -> dict[str, tuple[str, object]]:
+    """IR material -> input name -> (MaterialX type, value) for `surface`."""
+    names = SURFACE_NAMES[surface]
+    return {names[k]: v for k, v in abstract_inputs(material, surface).items() if k in names}
+
+
+def tangent_rotation(material: dict) -> float:
+    """The streak direction in radians when the target has to rotate the tangent itself."""
+    if not material["model"]["anisotropic"]:
+        return 0.0
+    return float(material["params"].get("anisotropy_rotation") or 0.0)
