@@ -227,14 +227,20 @@ def as_document(ir: Document | Mapping[str, Any]) -> Document:
 
 
 def emit_each(
-    target: Target, document: Document, emit_material: Callable[[Material], Iterable[Artifact]]
+    target: Target,
+    document: Document,
+    emit_material: Callable[[Material], Iterable[Artifact]],
+    capabilities_of: Callable[[Material], Mapping[str, tuple[str, str]]] | None = None,
 ) -> EmitResult:
-    """The per-material loop every target shares: capability notes, then the material's files."""
+    """The per-material loop every target shares: capability notes, then the material's files.
+    `capabilities_of(material)`: the table for one material where options or the material
+    choose it (e.g. maps=none, a per-material plugin); default `target.capabilities`."""
     notes: list[Note] = []
     artifacts: list[Artifact] = []
     seen: dict[str, str] = {}
     for material in document.materials:
-        check_material(notes, target.name, target.capabilities, material)
+        table = target.capabilities if capabilities_of is None else capabilities_of(material)
+        check_material(notes, target.name, table, material)
         for artifact in emit_material(material):
             if artifact.name in seen:
                 raise ValueError(
