@@ -135,16 +135,17 @@ class Model:
         return dataclasses.asdict(self)
 
 
-def _value(spec: ParamSpec, value: object, path: str) -> Any:
-    """One table value from JSON, checked against its row."""
+def _value(spec: ParamSpec, value: object, path: str, ranged: bool = True) -> Any:
+    """One table value from JSON, checked against its row (its range too, when `ranged`)."""
     if value is None and spec.optional:
         return None
+    bounds = spec.range if ranged else None
     if spec.kind == "number":
-        return _number(value, path, spec.range)
+        return _number(value, path, bounds)
     if spec.kind == "rgb":
-        return _numbers(value, 3, path, spec.range)
+        return _numbers(value, 3, path, bounds)
     if spec.kind == "alpha":
-        return _numbers(value, 2, path, spec.range)
+        return _numbers(value, 2, path, bounds)
     if spec.kind == "enum":
         return _choice(value, spec.choices, path)
     if spec.kind == "str":
@@ -156,10 +157,10 @@ def _json_value(value: Any) -> JSON:
     return list(value) if isinstance(value, tuple) else value
 
 
-def coat_from_ir(d: object, convention: str, path: str) -> Coat:
+def coat_from_ir(d: object, convention: str, path: str, ranged: bool = True) -> Coat:
     """A coat; its alpha, when absent, from its roughness in the base's convention."""
     d = _object(d, path)
-    values = {s.name: _value(s, d[s.name], f"{path}.{s.name}") for s in COAT_PARAMS if s.name in d}
+    values = {s.name: _value(s, d[s.name], f"{path}.{s.name}", ranged) for s in COAT_PARAMS if s.name in d}
     if "alpha" not in values:
         values["alpha"] = tuple(alpha_of(values.get("roughness", Coat.roughness), 0.0, convention))
     return Coat(**values)
@@ -169,8 +170,11 @@ def coat_to_ir(coat: Coat) -> dict[str, JSON]:
     return {s.name: _json_value(getattr(coat, s.name)) for s in COAT_PARAMS}
 
 
-def params_from_ir(d: object, model: Model, path: str = "params") -> Params:
-    """Params from the IR's params object; absent keys hold the table's default (alpha: derived)."""
+def params_from_ir(d: object, model: Model, path: str = "params", ranged: bool = True) -> Params:
+    """Params from the IR's params object; absent keys hold the table's default (alpha: derived).
+
+    `ranged=False` checks types only: the numpy reference takes physical values beyond the IR's
+    ranges (a glass seen from inside has ior < 1)."""
     d = _object(d, path)
     values: dict[str, Any] = {}
     convention = _value(
@@ -181,9 +185,9 @@ def params_from_ir(d: object, model: Model, path: str = "params") -> Params:
             continue
         where = f"{path}.{s.name}"
         if s.kind == "coat":
-            values[s.name] = None if d[s.name] is None else coat_from_ir(d[s.name], convention, where)
+            values[s.name] = None if d[s.name] is None else coat_from_ir(d[s.name], convention, where, ranged)
         else:
-            values[s.name] = _value(s, d[s.name], where)
+            values[s.name] = _value(s, d[s.name], where, ranged)
     if "alpha" not in values:
         aniso = values.get("anisotropy", Params.anisotropy) if model.anisotropic else 0.0
         values["alpha"] = tuple(alpha_of(values.get("roughness", Params.roughness), aniso, convention))
@@ -276,8 +280,10 @@ class Material:
     provenance: Mapping[str, tuple[Mapping[str, Any], ...]]
 
     @classmethod
-    def from_ir(cls, d: object, path: str = "") -> Material:
-        """A material from its IR object, validated; `path` prefixes error messages."""
+    def from_ir(cls, d: object, path: str = "", ranged: bool = True) -> Material:
+        """A material from its IR object, validated; `path` prefixes error messages.
+
+        `ranged=False`: parameter types are checked, not their ranges (see params_from_ir)."""
         at = f"{path}." if path else ""
         d = _object(d, path or "material")
         model = Model.from_ir(d.get("model"), f"{at}model")
@@ -287,7 +293,7 @@ class Material:
             phrase=_string(d.get("phrase", ""), f"{at}phrase"),
             variant=None if variant is None else Variant.from_ir(variant, f"{at}variant"),
             model=model,
-            params=params_from_ir(d.get("params"), model, f"{at}params"),
+            params=params_from_ir(d.get("params"), model, f"{at}params", ranged),
             maps=_maps_from_ir(d.get("maps", {}), f"{at}maps"),
             provenance=_provenance_from_ir(d.get("provenance", {}), f"{at}provenance"),
         )

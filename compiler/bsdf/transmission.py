@@ -29,12 +29,16 @@ COS_EPS of the plane give 0.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
+from ..material import Material
 from .alpha import ALPHA_MIRROR
+from .evaluate import evaluate, local_dirs, material_alpha, with_ior
 from .fresnel import f0_from_ior, fresnel_dielectric, fresnel_schlick
 from .geometry import COS_EPS, as_dirs, dot, normalize, safe_div
+from .inputs import MaterialLike, as_material
 from .microfacet import ggx_d, is_mirror, smith_lambda
 
 #: Masking-shadowing forms for transmission pairs (see ``transmission_g2``).
@@ -203,34 +207,33 @@ def mirror_transmittance(wo, ior, mode: str = "radiance"):
     return np.where(visible[..., None], wi, 0.0), np.where(visible, weight, 0.0)
 
 
-def _tint(material: dict) -> np.ndarray:
-    return np.broadcast_to(np.asarray(material["params"].get("base_color") or (1.0, 1.0, 1.0), float), (3,)).copy()
+def _tint(material: Material) -> np.ndarray:
+    return np.broadcast_to(np.asarray(material.params.base_color, float), (3,)).copy()
 
 
 def evaluate_transmission(
-    material: dict, wo, wi, g2: str = "correlated", mode: str = "radiance", fresnel: str = "exact"
+    material: MaterialLike, wo: Any, wi: Any, g2: str = "correlated", mode: str = "radiance", fresnel: str = "exact"
 ) -> np.ndarray:
     """The material's BTDF f_t(wo, wi) ⊙ base_color (the transmittance tint), RGB (..., 3).
 
     Non-zero only for ``model.base == "glass"`` and pairs on opposite sides of the surface.
     ``fresnel="schlick"``/``"f82"``: 1 − Schlick(F0(ior)) at the outside angle.
     """
-    from .evaluate import _local_dirs, material_alpha
-
-    wo, wi = _local_dirs(material, wo, wi)
+    material = as_material(material)
+    wo, wi = local_dirs(material, wo, wi)
     shape = np.broadcast_shapes(wo.shape, wi.shape)[:-1]
-    if material["model"]["base"] != "glass":
+    if material.model.base != "glass":
         return np.zeros(shape + (3,))
     ax, ay = material_alpha(material)
-    ior = float(material["params"].get("ior", 1.5))
+    ior = float(material.params.ior)
     ft = microfacet_transmission(wo, wi, ax, ay, ior, g2, mode, "exact" if fresnel == "exact" else "schlick")
     return np.broadcast_to(ft, shape)[..., None] * _tint(material)
 
 
 def evaluate_bsdf(
-    material: dict,
-    wo,
-    wi,
+    material: MaterialLike,
+    wo: Any,
+    wi: Any,
     fresnel: str = "exact",
     multiscatter: bool = False,
     ward_form: str = "gmd",
@@ -242,18 +245,17 @@ def evaluate_bsdf(
     reflection (the mirrored pair with η = 1/ior) for pairs below it. Opaque models are 0
     below the horizon, as in ``evaluate``.
     """
-    from .evaluate import evaluate
-
+    material = as_material(material)
     wo, wi = as_dirs(wo), as_dirs(wi)
     shape = np.broadcast_shapes(wo.shape, wi.shape)[:-1]
     wo, wi = np.broadcast_to(wo, shape + (3,)), np.broadcast_to(wi, shape + (3,))
     out = evaluate(material, wo, wi, fresnel=fresnel, multiscatter=multiscatter, ward_form=ward_form)
-    if material["model"]["base"] != "glass":
+    if material.model.base != "glass":
         return out
     out = out + evaluate_transmission(material, wo, wi, g2, mode, fresnel)
     below = (wo[..., 2] < 0.0) & (wi[..., 2] < 0.0)
     if below.any():
-        inner = {**material, "params": {**material["params"], "ior": 1.0 / float(material["params"].get("ior", 1.5))}}
+        inner = with_ior(material, 1.0 / float(material.params.ior))
         flip = np.array([1.0, 1.0, -1.0])
         out = out + np.where(
             below[..., None], evaluate(inner, wo * flip, wi * flip, fresnel=fresnel, ward_form=ward_form), 0.0
