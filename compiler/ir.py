@@ -4,16 +4,12 @@ from __future__ import annotations
 
 from .conventions import alpha_of
 from .formulas import round6_list, rounded
+from .params import Params, params_by_model
 from .state import MaterialState, step_json
 
 IR_VERSION = 1
 
-PARAMS_BY_MODEL = {
-    "diffuse": ("base_color",),
-    "dielectric": ("base_color", "roughness", "ior"),
-    "conductor": ("base_color", "roughness", "eta", "k", "f0", "f82"),
-    "glass": ("base_color", "roughness", "ior"),
-}
+PARAMS_BY_MODEL = params_by_model()  # base model -> the parameters it always has, from the table
 
 
 def material_ir(state: MaterialState, convention: str) -> dict:
@@ -32,41 +28,22 @@ def material_ir(state: MaterialState, convention: str) -> dict:
 def _params(state: MaterialState, model: dict, convention: str) -> dict:
     """The parameters the model uses, rounded."""
     p, base = state.params, model["base"]
-    noun = state.noun.data if state.noun is not None else {}
     out = {}
     for k in PARAMS_BY_MODEL[base]:
         if k in p:
             value = p[k]
-            if type(value) is not list:
-                out[k] = rounded(value)
-            elif value is noun.get(k):
-                out[k] = _rounded_lexicon_list(value)
-            else:
-                out[k] = round6_list(value)
+            out[k] = round6_list(value) if type(value) is list else rounded(value)
     if model["diffuse"] == "oren_nayar":
-        out["diffuse_roughness"] = rounded(p.get("diffuse_roughness", 0.0))
+        out["diffuse_roughness"] = rounded(p.get("diffuse_roughness", Params.diffuse_roughness))
     if base != "diffuse":
-        aniso = p.get("anisotropy", 0.0) if model["anisotropic"] else 0.0
+        aniso = p.get("anisotropy", Params.anisotropy) if model["anisotropic"] else 0.0
         out["alpha"] = round6_list(alpha_of(p["roughness"], aniso, convention))
         out["alpha_convention"] = convention
     if model["anisotropic"]:
         out["anisotropy"] = rounded(p["anisotropy"])
-        out["anisotropy_rotation"] = rounded(p.get("anisotropy_rotation", 0.0))
+        out["anisotropy_rotation"] = rounded(p.get("anisotropy_rotation", Params.anisotropy_rotation))
     out["coat"] = rounded(_coat(state.coat, convention)) if model["coat"] else None
     return out
-
-
-_ROUNDED_LISTS: dict = {}  # id(lexicon list) -> (the list, rounded); keeping the list keeps its id unique
-
-
-def _rounded_lexicon_list(values: list) -> list:
-    """round6_list of a list straight from the lexicon (a metal's optics), made once per list."""
-    found = _ROUNDED_LISTS.get(id(values))
-    if found is None or found[0] is not values:
-        if len(_ROUNDED_LISTS) >= 4096:
-            _ROUNDED_LISTS.clear()
-        found = _ROUNDED_LISTS[id(values)] = (values, round6_list(values))
-    return list(found[1])  # a copy: whoever reads the IR may change it
 
 
 def _coat(coat: dict, convention: str) -> dict:

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import math
 
+from .params import COAT_PARAMS, PARAMS, ParamSpec
+
 COMMON_FIELDS = {
     "aliases": {"type": "strlist"},
     "doc": {"type": "str", "required": True},
@@ -47,6 +49,26 @@ TYPE_CHECKS = {
 }
 
 
+_LEXICON_TYPES = {"number": "float", "rgb": "rgb", "str": "str", "enum": "str"}
+
+
+def _table_field(spec: ParamSpec) -> dict:
+    field: dict = {"type": _LEXICON_TYPES[spec.kind]}
+    if spec.range is not None:
+        field["range"] = list(spec.range)
+    if spec.choices:
+        field["choices"] = list(spec.choices)
+    return field
+
+
+#: "params.<name>" / "coat.<name>" -> the field's type and range, from the parameter table (cnlmc.params).
+#: A schema.toml field written `{ from = "params.ior" }` takes them from here: the range lives in one place.
+TABLE_FIELDS = {
+    **{f"params.{s.name}": _table_field(s) for s in PARAMS if s.kind in _LEXICON_TYPES},
+    **{f"coat.{s.name}": _table_field(s) for s in COAT_PARAMS if s.kind in _LEXICON_TYPES},
+}
+
+
 def check_entry(entry: dict, fields: dict, where: str, partial: bool = False) -> None:
     """Raise LexiconError for an unknown field, a wrong type, a bad choice or a value out of range."""
     allowed = {**COMMON_FIELDS, **fields}
@@ -62,6 +84,9 @@ def check_entry(entry: dict, fields: dict, where: str, partial: bool = False) ->
 
 
 def _check_value(value, spec: dict, where: str) -> None:
+    source = spec.get("from")
+    if source is not None:
+        spec = {**TABLE_FIELDS[source], **spec}
     kind = spec["type"]
     if not TYPE_CHECKS[kind](value):
         raise LexiconError(f"{where}: expected {kind}, got {value!r}")

@@ -103,7 +103,7 @@ class Coat:
         default=(0.0, 0.0),
         kind="alpha",
         range=(0.0, 1.0),
-        doc="isotropic [a, a] from roughness, in the base's convention",
+        doc="isotropic [a, a] from the coat's roughness, in the same convention as the base",
         required=True,
         convention=ALPHA_NOTE,
     )
@@ -112,11 +112,12 @@ class Coat:
         kind="rgb",
         range=(0.0, 1.0),
         unit="linear Rec.709",
-        doc="round-trip transmittance tint at normal incidence",
+        doc="the linear RGB round-trip transmittance tint at normal incidence; along refracted directions "
+        "color^(thickness * (1/cos to + 1/cos ti) / 2)",
         required=True,
     )
     thickness: float = param(
-        default=1.0, kind="number", range=(0.0, 10.0), unit="unitless", doc="absorption scale", required=True
+        default=1.0, kind="number", range=(0.0, 10.0), unit="unitless", doc="a unitless absorption scale", required=True
     )
 
 
@@ -129,7 +130,8 @@ class Params:
         kind="rgb",
         range=(0.0, 1.0),
         unit="linear Rec.709",
-        doc="diffuse albedo (diffuse, dielectric), transmittance tint (glass), Fresnel tint (conductor)",
+        doc="diffuse albedo for diffuse/dielectric; the transmittance tint per crossing for glass; a multiplicative "
+        "tint on the Fresnel term for conductors (1,1,1 = the measured metal)",
         required=True,
         noun=True,
     )
@@ -139,7 +141,39 @@ class Params:
         range=(0.0, 1.0),
         unit="perceptual r",
         models=SPECULAR,
-        doc="perceptual roughness; alpha is derived from it",
+        doc="perceptual roughness r; kept for targets that take it (alpha is authoritative)",
+        noun=True,
+    )
+    eta: RGB | None = param(
+        default=None,
+        kind="rgb",
+        models=("conductor",),
+        doc="conductor optical constant eta (the fitted RGB triplet of the dataset)",
+        optional=True,
+        noun=True,
+    )
+    k: RGB | None = param(
+        default=None,
+        kind="rgb",
+        models=("conductor",),
+        doc="conductor optical constant k (extinction), RGB",
+        optional=True,
+        noun=True,
+    )
+    f0: RGB | None = param(
+        default=None,
+        kind="rgb",
+        models=("conductor",),
+        doc="measured reflectance at 0 degrees (Schlick); may exceed 1 in one channel (gold's red)",
+        optional=True,
+        noun=True,
+    )
+    f82: RGB | None = param(
+        default=None,
+        kind="rgb",
+        models=("conductor",),
+        doc="measured reflectance at 82 degrees (the F82 approximation)",
+        optional=True,
         noun=True,
     )
     ior: float = param(
@@ -148,38 +182,6 @@ class Params:
         range=(1.0, 5.0),
         models=("dielectric", "glass"),
         doc="scalar index of refraction (the outside medium is air, 1.0)",
-        noun=True,
-    )
-    eta: RGB | None = param(
-        default=None,
-        kind="rgb",
-        models=("conductor",),
-        doc="conductor refractive index per RGB channel",
-        optional=True,
-        noun=True,
-    )
-    k: RGB | None = param(
-        default=None,
-        kind="rgb",
-        models=("conductor",),
-        doc="conductor extinction per RGB channel",
-        optional=True,
-        noun=True,
-    )
-    f0: RGB | None = param(
-        default=None,
-        kind="rgb",
-        models=("conductor",),
-        doc="measured reflectance at 0 degrees",
-        optional=True,
-        noun=True,
-    )
-    f82: RGB | None = param(
-        default=None,
-        kind="rgb",
-        models=("conductor",),
-        doc="measured reflectance at 82 degrees",
-        optional=True,
         noun=True,
     )
     diffuse_roughness: float = param(
@@ -197,7 +199,8 @@ class Params:
         range=(0.0, 1.0),
         models=SPECULAR,
         when="specular",
-        doc="[alpha_x, alpha_y], the microfacet widths; derived from roughness and anisotropy when absent",
+        doc="[alpha_x, alpha_y], the microfacet widths from roughness and anisotropy by alpha_convention "
+        "(cnlmc.conventions.alpha_of); below ALPHA_MIRROR = 1e-3 a perfect mirror",
         convention=ALPHA_NOTE,
     )
     alpha_convention: str = param(
@@ -206,7 +209,7 @@ class Params:
         choices=CONVENTIONS,
         models=SPECULAR,
         when="specular",
-        doc="how alpha follows from roughness: squared (the stdlib) or linear (the paper's m)",
+        doc="squared (alpha = r^2, the stdlib) or linear (alpha = r, the paper's m)",
         convention=ALPHA_NOTE,
     )
     anisotropy: float = param(
@@ -215,7 +218,7 @@ class Params:
         range=(0.0, 1.0),
         models=SPECULAR,
         when="anisotropic",
-        doc="a: stretches alpha along the tangent",
+        doc="a; alpha_x = alpha / s, alpha_y = alpha * s with s = sqrt(1 - 0.9 a)",
         convention=ALPHA_NOTE,
     )
     anisotropy_rotation: float = param(
@@ -227,7 +230,12 @@ class Params:
         doc="the tangent direction of the streaks",
     )
     coat: Coat | None = param(
-        default=None, kind="coat", when="always", doc="null, or the coat layer", optional=True, required=True
+        default=None,
+        kind="coat",
+        when="always",
+        doc="null, or the coat layer (the coat table below)",
+        optional=True,
+        required=True,
     )
     present: frozenset[str] = field(default=frozenset(), compare=True)
 

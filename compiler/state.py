@@ -7,8 +7,9 @@ from dataclasses import dataclass, field
 from . import ast
 from .formulas import round6, rounded
 from .lexicon import Entry, Lexicon
+from .params import noun_params
 
-NOUN_PARAMS = ("base_color", "roughness", "eta", "k", "f0", "f82", "ior", "diffuse_roughness")
+NOUN_PARAMS = noun_params()  # what a lexicon noun may set, from the parameter table
 
 
 class Step:
@@ -28,12 +29,18 @@ class Step:
         return step_json(self, {} if memo is None else memo)
 
 
+def words_key(words: tuple) -> int | tuple[int, ...]:
+    """The words by where they start in the source: one word, one token (cheaper than hashing the words)."""
+    return words[0].span.start if len(words) == 1 else tuple([w.span.start for w in words])
+
+
 def step_json(step: Step, shared: dict) -> dict:
-    """A step's JSON form; `shared` (id of a word tuple -> its texts and spans) is filled as it goes."""
+    """A step's JSON form; `shared` (words_key -> their texts and spans) is filled as it goes."""
     words = step.words
-    lists = shared.get(id(words))
+    key = words_key(words)
+    lists = shared.get(key)
     if lists is None:
-        lists = shared[id(words)] = ([w.text for w in words], [w.span.as_list() for w in words])
+        lists = shared[key] = ([w.text for w in words], [w.span.as_list() for w in words])
     if step.source:  # lexicon values are exact
         return {"rule": step.rule, "words": lists[0], "spans": lists[1], "value": step.value, "source": step.source}
     value = step.value

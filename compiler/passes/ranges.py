@@ -6,16 +6,21 @@ import math
 
 from ..diagnostics import warning
 from ..graphs import graph_params
+from ..params import COAT_PARAMS, PARAMS, ranges
 from ..state import Context, MaterialState
 
-RANGES = {
-    "roughness": (0.0, 1.0),
-    "anisotropy": (0.0, 1.0),
-    "diffuse_roughness": (0.0, 1.6),
-    "ior": (1.0, 5.0),
-    "base_color": (0.0, 1.0),
-}
-COAT_RANGES = {"roughness": (0.0, 1.0), "ior": (1.0, 3.0), "color": (0.0, 1.0), "thickness": (0.0, 10.0)}
+#: The order clamps are checked and reported in when one word pushes several values out of range
+#: (kept from IR version 1). Parameters not named here follow in the table's order.
+CHECK_FIRST = ("roughness", "anisotropy", "diffuse_roughness", "ior", "base_color", "color", "thickness")
+
+
+def _check_order(table: dict[str, tuple[float, float]]) -> dict[str, tuple[float, float]]:
+    rank = {name: i for i, name in enumerate(CHECK_FIRST)}
+    return dict(sorted(table.items(), key=lambda item: rank.get(item[0], len(rank))))
+
+
+RANGES = _check_order(ranges(PARAMS))  # param -> (low, high), from the parameter table
+COAT_RANGES = _check_order(ranges(COAT_PARAMS))
 
 
 def clamp(value, low: float, high: float):
