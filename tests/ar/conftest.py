@@ -29,13 +29,3 @@ def posed_photo(request):
     rvec, tvec = (np.array(v, float) for v in POSES[request.param])
     photo, K, truth = synthetic_photo(rvec, tvec, marker_length=MARKER_LENGTH, seed=1)
     return {"name": request.param, "photo": photo, "K": K, "truth": truth, "rvec": rvec, "tvec": tvec}
-
-
-@pytest.fixture(scope="session")
-def gl_available():
-    try:
-        from cnlmc.backends.preview.gl import context
-
-        context()
-    except Exception as exc:  # pragma: no cover
-        pytest.skip(f"no OpenGL on EGL here: {exc}")

@@ -1,17 +1,15 @@
 """`cnlmc ar` and `cnlmc preview` as a user runs them."""
 
-import subprocess
-import sys
-
-import cv2
 import numpy as np
 import pytest
 
+from tests.helpers import require
+from tests.helpers import run_cnlmc as cnlmc
+
 from .conftest import MARKER_LENGTH, POSES
 
-
-def cnlmc(*args):
-    return subprocess.run([sys.executable, "-m", "cnlmc", *args], capture_output=True, text=True, timeout=300)
+cv2 = require("cv2", "ar")
+pytestmark = pytest.mark.cv2
 
 
 @pytest.fixture(scope="module")

@@ -13,6 +13,7 @@ import math
 import pytest
 
 from cnlmc.api import compile_source, lexicon_for
+from tests.helpers import require
 
 PHRASES = [
     "white varnished oak",
@@ -128,6 +129,7 @@ def all_sources() -> list[str]:
 
 @pytest.fixture(scope="session")
 def mx_library():
+    require("MaterialX", "materialx")
     from cnlmc.backends.exchange.materialx import standard_library
 
     return standard_library()

@@ -5,11 +5,17 @@ from __future__ import annotations
 
 import pytest
 
-from cnlmc.api import emit
-from cnlmc.backends.capabilities import ALL_FEATURES, POLICIES, material_features
-from cnlmc.backends.exchange import materialx, mitsuba, usd
+from tests.helpers import PHRASE_BY_MODEL, require
 
-from .conftest import ir_of, synthetic_ir
+require("MaterialX", "materialx")
+require("pxr", "usd")
+pytestmark = [pytest.mark.materialx, pytest.mark.usd]
+
+from cnlmc.api import emit  # noqa: E402
+from cnlmc.backends.capabilities import ALL_FEATURES, POLICIES, material_features  # noqa: E402
+from cnlmc.backends.exchange import materialx, mitsuba, usd  # noqa: E402
+
+from .conftest import ir_of, synthetic_ir  # noqa: E402
 
 TABLES = {
     "materialx": materialx.CAPABILITIES,
@@ -17,18 +23,7 @@ TABLES = {
     "mitsuba": mitsuba.CAPABILITIES,
     **{f"materialx/{s}": t for s, t in materialx.CAPABILITIES_BY_SURFACE.items()},
 }
-MODEL_KINDS = [
-    "deep red velvet",
-    "glossy red plastic",
-    "polished gold",
-    "frosted glass",
-    "lightly brushed, blue anodized aluminum",
-    "clear-coated red car paint",
-    "varnished brass",
-    "rusty iron",
-    "rough stone",
-    "white varnished oak",
-]
+MODEL_KINDS = list(PHRASE_BY_MODEL.values())
 
 
 @pytest.mark.parametrize("table", TABLES)

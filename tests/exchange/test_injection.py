@@ -9,6 +9,7 @@ import pytest
 
 from cnlmc.api import emit
 from cnlmc.backends.exchange.naming import identifier, unique_identifiers, xml_text
+from tests.helpers import require
 
 from .conftest import ir_of, write_artifacts
 
@@ -47,9 +48,10 @@ def test_identifiers_stay_unique():
     assert len(set(names)) == 4
 
 
+@pytest.mark.materialx
 @pytest.mark.parametrize("phrase", HOSTILE)
 def test_materialx(phrase, mx_library):
-    import MaterialX as mx
+    mx = require("MaterialX", "materialx")
 
     ir = hostile_ir(phrase)
     xml = emit(ir, "materialx", {"maps": "none"}).artifacts[0].content
@@ -63,9 +65,10 @@ def test_materialx(phrase, mx_library):
     assert materials[0].getDocString().split() == xml_text(phrase).split()
 
 
+@pytest.mark.usd
 @pytest.mark.parametrize("phrase", HOSTILE)
 def test_usd(phrase, tmp_path):
-    from pxr import Usd
+    Usd = require("pxr.Usd", "usd")
 
     ir = hostile_ir(phrase, "red or green glass")
     write_artifacts(emit(ir, "usd", {"maps": "none", "mesh": "sphere"}).artifacts, tmp_path)
@@ -77,10 +80,11 @@ def test_usd(phrase, tmp_path):
     assert [p.GetName() for p in stage.GetPseudoRoot().GetChildren()] == ["Root"]
 
 
+@pytest.mark.mitsuba
 @pytest.mark.parametrize("phrase", HOSTILE)
 @pytest.mark.parametrize("form", ["scene", "fragment"])
 def test_mitsuba(phrase, form, tmp_path):
-    mi = pytest.importorskip("mitsuba")
+    mi = require("mitsuba", "mitsuba")
     mi.set_variant("scalar_rgb")
     ir = hostile_ir(phrase, "red or green glass")
     result = emit(ir, "mitsuba", {"maps": "none", "form": form})

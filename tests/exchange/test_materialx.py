@@ -8,12 +8,16 @@ from pathlib import Path
 
 import pytest
 
-mx = pytest.importorskip("MaterialX")
+from tests.helpers import require
+
+mx = require("MaterialX", "materialx")
+pytestmark = pytest.mark.materialx
 import MaterialX.PyMaterialXGenGlsl as mxg  # noqa: E402
 import MaterialX.PyMaterialXGenShader as mxs  # noqa: E402
 
 from cnlmc.api import emit  # noqa: E402
 from cnlmc.backends.exchange.conversions import f82_tint, gulbrandsen_edge, openpbr_roughness, standard_roughness  # noqa: E402
+from cnlmc.material import Material  # noqa: E402
 
 from .conftest import FAST, all_sources, ir_of, synthetic_ir  # noqa: E402
 
@@ -108,7 +112,7 @@ def test_conductor_colours_match_the_dataset():
     metals = {m["name"]: m["primary"] for m in json.loads(METALS.read_text())["metals"]}
     for name in ("silver", "gold", "copper", "aluminum", "iron"):
         ref = metals.get(name) or metals.get("aluminium")
-        params = ir_of(f"{name}")["materials"][0]["params"]
+        params = Material.from_ir(ir_of(f"{name}")["materials"][0]).params
         assert f82_tint(params) == pytest.approx([min(v, 1.0) for v in ref["F82_tint_openpbr"]], abs=0.02)
         assert gulbrandsen_edge(params) == pytest.approx(ref["gulbrandsen_edge_tint_from_fit"], abs=0.05)
 

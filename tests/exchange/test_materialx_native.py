@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-import subprocess
-import sys
-
 import pytest
 
-mx = pytest.importorskip("MaterialX")
+from tests.helpers import require, run_cnlmc
+
+mx = require("MaterialX", "materialx")
+pytestmark = pytest.mark.materialx
 
 from cnlmc.api import emit  # noqa: E402
 from cnlmc.backends.exchange import materialx_native as native  # noqa: E402
@@ -97,13 +97,9 @@ def test_bogus_map_mode_is_an_error():
 
 def test_native_from_the_command_line(tmp_path):
     out = tmp_path / "out.mtlx"
-    r = subprocess.run(
-        [sys.executable, "-m", "cnlmc", "compile", "-", "-t", "materialx", "--option", "maps=native", "-o", str(out)],
-        input="stone: polished white marble\nhull: heavily rusted iron\n",
-        capture_output=True,
-        text=True,
-        timeout=300,
-        cwd=tmp_path,
+    source = "stone: polished white marble\nhull: heavily rusted iron\n"
+    r = run_cnlmc(
+        "compile", "-", "-t", "materialx", "--option", "maps=native", "-o", str(out), stdin=source, cwd=tmp_path
     )
     assert r.returncode == 0, r.stderr
     written = list(tmp_path.rglob("*.mtlx"))

@@ -7,10 +7,14 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-mi = pytest.importorskip("mitsuba")
+from tests.helpers import require
+
+mi = require("mitsuba", "mitsuba")
+pytestmark = pytest.mark.mitsuba
 
 from cnlmc.api import emit  # noqa: E402
 from cnlmc.backends.exchange import mitsuba as backend  # noqa: E402
+from cnlmc.material import Material  # noqa: E402
 
 from .conftest import FAST, all_sources, ir_of, synthetic_ir, write_artifacts  # noqa: E402
 
@@ -101,4 +105,4 @@ def test_options_are_checked():
 
 def test_every_bsdf_maps_to_a_known_builder():
     for material in synthetic_ir()["materials"] + ir_of("red or green glass")["materials"]:
-        assert backend.plugin_for(material) in backend.BUILDERS
+        assert backend.plugin_for(Material.from_ir(material)) in backend.BUILDERS

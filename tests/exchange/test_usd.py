@@ -7,12 +7,16 @@ import zipfile
 
 import pytest
 
-pxr = pytest.importorskip("pxr")
+from tests.helpers import require
+
+pxr = require("pxr", "usd")
+pytestmark = pytest.mark.usd
 from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade, UsdValidation  # noqa: E402
 
 from cnlmc.api import emit  # noqa: E402
 from cnlmc.backends.exchange import usd as backend  # noqa: E402
 from cnlmc.backends.exchange.surface_inputs import surface_inputs  # noqa: E402
+from cnlmc.material import Material  # noqa: E402
 from cnlmc.usd import author_material  # noqa: E402
 
 from .conftest import FAST, all_sources, ir_of, synthetic_ir, write_artifacts  # noqa: E402
@@ -44,12 +48,12 @@ def check_values(stage, ir, surface="open_pbr_surface"):
         if material.get("variant"):
             prim.GetVariantSets().GetVariantSet(backend.VARIANT_SET).SetVariantSelection(material["variant"]["name"])
         preview = UsdShade.Shader(prim.GetChild("PreviewSurface"))
-        for name, (_, value) in backend.preview_inputs(material).items():
+        for name, (_, value) in backend.preview_inputs(Material.from_ir(material)).items():
             if not preview.GetInput(name).HasConnectedSource():
                 assert close(preview.GetInput(name).Get(), value), (material["name"], name)
         mat = UsdShade.Material(prim)
         source = mat.GetSurfaceOutput("mtlx").GetConnectedSources()[0][0].source
-        for name, (_, value) in surface_inputs(material, surface).items():
+        for name, (_, value) in surface_inputs(Material.from_ir(material), surface).items():
             usd_input = UsdShade.Shader(source.GetPrim()).GetInput(name)
             if not usd_input.HasConnectedSource():
                 assert close(usd_input.Get(), value), (material["name"], name)
@@ -174,6 +178,6 @@ def test_author_material_errors():
 
 
 def test_preview_is_gf():  # the diffuse preview has no specular lobe
-    inputs = backend.preview_inputs(ir_of("deep red velvet")["materials"][0])
+    inputs = backend.preview_inputs(Material.from_ir(ir_of("deep red velvet")["materials"][0]))
     assert inputs["useSpecularWorkflow"][1] == 1 and inputs["specularColor"][1] == [0.0, 0.0, 0.0]
     assert Gf.Vec3f(*inputs["diffuseColor"][1])

@@ -18,21 +18,6 @@ from cnlmc.backends import glsl
 
 GLSLANG = shutil.which("glslangValidator")
 
-#: Adjective combinations that reach every model feature (with the stdlib nouns).
-COMBINATIONS = {
-    "anisotropic": "lightly brushed, blue anodized aluminum",
-    "anisotropic_dielectric": "brushed plastic",
-    "coat": "clear-coated red car paint",
-    "coat_tinted": "red varnished oak",
-    "coat_metal": "lacquered brass",
-    "maps": "rusty iron",
-    "maps_normal": "hammered copper",
-    "diffuse": "matte paper",
-    "glass": "frosted glass",
-    "oren_nayar": "rough stone",
-    "mirror": "mirror chrome",
-}
-
 
 @cache
 def material_of(phrase: str) -> dict:
@@ -72,28 +57,3 @@ def glslang():
     if GLSLANG is None:
         pytest.skip("glslangValidator is not installed (apt-get install glslang-tools)")
     return GLSLANG
-
-
-_SESSION_CONTEXTS: list = []
-
-
-@pytest.fixture(scope="session")
-def gl():
-    try:
-        import moderngl
-
-        ctx = moderngl.create_context(standalone=True, backend="egl")
-    except Exception as exc:
-        pytest.skip(f"no OpenGL context on EGL ({exc}); install libegl1 libgl1 libegl-mesa0")
-    _SESSION_CONTEXTS.append(ctx)
-    yield ctx
-    _SESSION_CONTEXTS.remove(ctx)
-    ctx.release()
-
-
-@pytest.fixture(autouse=True)
-def _our_context_is_current():
-    """Other test folders (the preview) make their own GL context current: take ours back."""
-    for ctx in _SESSION_CONTEXTS:
-        ctx.__enter__()
-    yield

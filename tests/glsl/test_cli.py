@@ -4,30 +4,15 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
+
+from tests.helpers import run_cnlmc
 
 
 def test_cli_writes_library_standalone_and_sidecar(tmp_path, glslang):
     source = tmp_path / "phrase.txt"
     source.write_text("lightly brushed, blue anodized aluminum\n")
     out = tmp_path / "out"
-    done = subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "cnlmc",
-            "compile",
-            str(source),
-            "--target",
-            "glsl",
-            "-o",
-            str(out),
-            "--option",
-            "fresnel=f82",
-        ],
-        capture_output=True,
-        text=True,
-    )
+    done = run_cnlmc("compile", str(source), "--target", "glsl", "-o", str(out), "--option", "fresnel=f82")
     assert done.returncode == 0, done.stderr
     stem = "brushed_blue_anodized_aluminum"
     assert sorted(p.name for p in out.iterdir()) == sorted(
@@ -42,9 +27,5 @@ def test_cli_writes_library_standalone_and_sidecar(tmp_path, glslang):
 def test_cli_rejects_an_unknown_option_value(tmp_path):
     source = tmp_path / "phrase.txt"
     source.write_text("gold\n")
-    done = subprocess.run(
-        [sys.executable, "-m", "cnlmc", "compile", str(source), "--target", "glsl", "--option", "fresnel=fast"],
-        capture_output=True,
-        text=True,
-    )
+    done = run_cnlmc("compile", str(source), "--target", "glsl", "--option", "fresnel=fast")
     assert done.returncode != 0 and "exact, f82, schlick" in done.stderr

@@ -8,8 +8,9 @@ import re
 import pytest
 
 from cnlmc.api import lexicon_for
+from tests.helpers import PHRASE_BY_MODEL
 
-from .conftest import COMBINATIONS, emit_phrase, run_glslang
+from .conftest import emit_phrase, run_glslang
 
 PROFILES = ("330", "es300")
 PROFILE_VERSION = {"330": "#version 330 core\n", "es300": "#version 300 es\n"}
@@ -20,7 +21,7 @@ void main() { cnlm_probe_out = vec4(cnlm_bsdf(vec3(0, 0, 1), vec3(0.3, 0.4, 0.86
 
 
 def all_phrases() -> list[str]:
-    return sorted(lexicon_for().all_of("nouns")) + sorted(COMBINATIONS.values())
+    return sorted(lexicon_for().all_of("nouns")) + sorted(PHRASE_BY_MODEL.values())
 
 
 def sources_for(phrase: str, profile: str, **options) -> list[tuple[str, str]]:
@@ -38,7 +39,7 @@ def test_glslang_accepts_every_noun_and_combination(glslang, profile):
     sources = [s for phrase in all_phrases() for s in sources_for(phrase, profile)]
     sources += [
         s
-        for phrase in COMBINATIONS.values()
+        for phrase in PHRASE_BY_MODEL.values()
         for fresnel in ("f82", "schlick")
         for s in sources_for(phrase, profile, fresnel=fresnel, multiscatter="on")
     ]

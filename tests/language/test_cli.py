@@ -1,19 +1,11 @@
 """The CLI end to end, as a user runs it: exit codes, stdout/stderr, files."""
 
 import json
-import subprocess
-import sys
-from pathlib import Path
 
 import pytest
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-
-
-def cnlmc(*args, stdin=None, timeout=60):
-    return subprocess.run(
-        [sys.executable, "-m", "cnlmc", *args], input=stdin, capture_output=True, text=True, timeout=timeout
-    )
+from tests.helpers import EXAMPLES
+from tests.helpers import run_cnlmc as cnlmc
 
 
 def test_compile_to_ir_on_stdout():
@@ -55,9 +47,7 @@ def test_missing_file_is_a_usage_error():
 
 
 def test_binary_input_is_refused_cleanly():
-    r = subprocess.run(
-        [sys.executable, "-m", "cnlmc", "compile", "-"], input=b"\x00\xff\xfe", capture_output=True, timeout=60
-    )
+    r = cnlmc("compile", "-", stdin=b"\x00\xff\xfe")
     assert r.returncode == 2
     assert b"not a text file" in r.stderr and b"Traceback" not in r.stderr
 
@@ -90,6 +80,7 @@ def test_empty_input_compiles_to_nothing(text):
     assert json.loads(r.stdout)["materials"] == []
 
 
+@pytest.mark.slow  # ~30-70 s: a megabyte through the whole pipeline in a fresh process
 def test_one_megabyte_of_input_is_handled(tmp_path):
     text = ("lightly brushed, blue anodized aluminum\n" * 26000)[:1_000_000]
     out = tmp_path / "big.json"

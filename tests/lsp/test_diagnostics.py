@@ -9,7 +9,7 @@ from cnlmc.api import compile_source
 
 from .conftest import open_fixture, position_of, replace_all, wait_diagnostics
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = [pytest.mark.lsp, pytest.mark.asyncio(loop_scope="module")]
 
 
 async def test_open_publishes_every_error_and_warning(client):

@@ -10,7 +10,7 @@ from cnlmc.lsp.tokens import TOKEN_TYPES
 
 from .conftest import fresh_uri, open_document, open_fixture, position_of, wait_diagnostics
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = [pytest.mark.lsp, pytest.mark.asyncio(loop_scope="module")]
 
 
 def doc_id(uri):

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from cnlmc.api import compile_source, lexicon_for
 from cnlmc.lsp.incremental import Analyzer
 from cnlmc.lsp.positions import LineIndex, chars_for_units, code_units
+
+pytestmark = pytest.mark.lsp
 
 LINES = [
     "lightly brushed, blue anodized aluminum",

@@ -9,7 +9,7 @@ from pytest_lsp import LanguageClient
 
 from .conftest import CONFIG, fresh_uri, initialize_params, open_document, replace_all, wait_diagnostics
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = [pytest.mark.lsp, pytest.mark.asyncio(loop_scope="module")]
 
 
 @pytest_lsp.fixture(config=CONFIG, scope="module")

@@ -15,7 +15,10 @@ NVIM = shutil.which("nvim")
 SCRIPT = Path(__file__).parent / "nvim" / "client.lua"
 DOCUMENT = "hull: lightly brushed, blue anodized aluminum\nblu plastic\npolished brushed steel\n"
 
-pytestmark = pytest.mark.skipif(NVIM is None, reason="nvim is not installed (apt-get install -y neovim)")
+pytestmark = [
+    pytest.mark.lsp,
+    pytest.mark.skipif(NVIM is None, reason="nvim is not installed (apt-get install -y neovim)"),
+]
 
 
 @pytest.fixture(scope="module")

@@ -21,7 +21,7 @@ BLOCK = [
     "",
 ]
 
-pytestmark = pytest.mark.asyncio(loop_scope="module")
+pytestmark = [pytest.mark.lsp, pytest.mark.asyncio(loop_scope="module")]
 
 
 def doc_id(uri):

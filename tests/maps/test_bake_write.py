@@ -1,10 +1,14 @@
 """The baking API, size validation and OpenImageIO output."""
 
 import numpy as np
-import OpenImageIO as oiio
 import pytest
 
-from cnlmc.backends.maps import MapError, bake, validate_size, write_maps
+from tests.helpers import require
+
+oiio = require("OpenImageIO", "maps")
+pytestmark = pytest.mark.oiio
+
+from cnlmc.backends.maps import MapError, bake, validate_size, write_maps  # noqa: E402
 
 REFS = {
     "base_color": {"graph": "wood", "output": "color", "params": {"grain": 1.0}, "seed": 0},

@@ -1,16 +1,13 @@
 """The map commands as a user runs them: cnlmc bake, --target maps, cnlmc sheet."""
 
-import subprocess
-import sys
-
 import numpy as np
-import OpenImageIO as oiio
+import pytest
 
+from tests.helpers import require
+from tests.helpers import run_cnlmc as cnlmc
 
-def cnlmc(*args, stdin=None):
-    return subprocess.run(
-        [sys.executable, "-m", "cnlmc", *args], input=stdin, capture_output=True, text=True, timeout=300
-    )
+oiio = require("OpenImageIO", "maps")
+pytestmark = pytest.mark.oiio
 
 
 def read(path):

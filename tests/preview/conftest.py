@@ -1,5 +1,5 @@
-"""Fixtures for the preview tests: one EGL context and renderer per session (programs are
-cached per material, so every material compiles once)."""
+"""Fixtures for the preview tests: one renderer per session, whose resources (its GL context,
+programs cached per material, so every material compiles once) other renderers share."""
 
 from __future__ import annotations
 
@@ -24,16 +24,11 @@ def stdlib_nouns() -> list[str]:
 
 
 @pytest.fixture(scope="session")
-def renderer():
-    try:
-        from cnlmc.backends.preview.gl import context
-
-        context()
-    except Exception as exc:  # pragma: no cover - machine without EGL
-        pytest.skip(f"no OpenGL on EGL here: {exc}")
+def renderer(gl_available):
     from cnlmc.backends.preview.render import Renderer
 
-    return Renderer(SMALL, msaa=4)
+    with Renderer(SMALL, msaa=4) as made:
+        yield made
 
 
 @pytest.fixture(scope="session")

@@ -14,6 +14,7 @@ from cnlmc.backends.preview import meshes as M
 from cnlmc.backends.preview.gltf import load_gltf, write_glb
 from cnlmc.backends.preview.mesh_io import load_mesh
 from cnlmc.backends.preview.meshes import MeshError
+from tests.helpers import run_cnlmc
 
 
 def test_glb_round_trip(tmp_path):
@@ -104,28 +105,11 @@ def test_gltf_errors_name_the_file_and_reason(tmp_path):
 
 
 def test_cli_previews_a_glb(tmp_path, renderer):
-    import subprocess
-    import sys
-
     write_glb(M.fit(M.teapot()), tmp_path / "teapot.glb")
     (tmp_path / "m.cnl").write_text("hammered copper\n")
-    proc = subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "cnlmc",
-            "preview",
-            str(tmp_path / "m.cnl"),
-            "--mesh",
-            str(tmp_path / "teapot.glb"),
-            "--size",
-            "64",
-            "-o",
-            str(tmp_path / "p.png"),
-        ],
-        capture_output=True,
-        text=True,
-        timeout=300,
+    proc = run_cnlmc(
+        *("preview", str(tmp_path / "m.cnl"), "--mesh", str(tmp_path / "teapot.glb")),
+        *("--size", "64", "-o", str(tmp_path / "p.png")),
     )
     assert proc.returncode == 0, proc.stderr
     assert (tmp_path / "p.png").stat().st_size > 1000

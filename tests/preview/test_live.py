@@ -4,14 +4,16 @@ follows every refinement, errors are reported with a caret and leave the materia
 from __future__ import annotations
 
 import io
-import subprocess
-import sys
 
-import cv2
 import numpy as np
 import pytest
 
-from cnlmc.backends.preview.live import LiveSession, changes, run
+from tests.helpers import require, run_cnlmc
+
+cv2 = require("cv2", "ar")
+pytestmark = pytest.mark.cv2
+
+from cnlmc.backends.preview.live import LiveSession, changes, run  # noqa: E402 -- after the skip
 
 
 @pytest.fixture
@@ -77,13 +79,8 @@ def test_cli_interactive_with_piped_input(renderer, tmp_path):
     material = tmp_path / "m.cnl"
     material.write_text("white varnished oak\n")
     out = tmp_path / "p.png"
-    proc = subprocess.run(
-        [sys.executable, "-m", "cnlmc", "preview", str(material), "-o", str(out), "--size", "64", "--interactive"],
-        input="darker\nwarmer\n",
-        capture_output=True,
-        text=True,
-        timeout=300,
-        check=False,
+    proc = run_cnlmc(
+        "preview", str(material), "-o", str(out), "--size", "64", "--interactive", stdin="darker\nwarmer\n"
     )
     assert proc.returncode == 0, proc.stderr
     assert "base_color" in proc.stdout and "did you mean" in proc.stdout  # 'warmer' is no refinement word
@@ -92,14 +89,7 @@ def test_cli_interactive_with_piped_input(renderer, tmp_path):
 
 
 def test_cli_interactive_needs_a_file(tmp_path):
-    proc = subprocess.run(
-        [sys.executable, "-m", "cnlmc", "preview", "-", "--interactive", "-o", str(tmp_path / "x.png")],
-        input="gold\n",
-        capture_output=True,
-        text=True,
-        timeout=120,
-        check=False,
-    )
+    proc = run_cnlmc("preview", "-", "--interactive", "-o", str(tmp_path / "x.png"), stdin="gold\n", timeout=120)
     assert proc.returncode == 2 and "give the material as a file" in proc.stderr
     assert not (tmp_path / "x.png").exists()
 

@@ -20,11 +20,14 @@ import sys
 import threading
 import time
 
-import cv2
 import numpy as np
 import pytest
 
+from tests.helpers import require, run_cnlmc
+
+cv2 = require("cv2", "ar")
 tkinter = pytest.importorskip("tkinter", reason="tkinter is not available in this Python (apt: python3-tk)")
+pytestmark = [pytest.mark.cv2, pytest.mark.tk]
 
 from cnlmc.backends.preview.live import LiveSession, Window, run  # noqa: E402 -- after the skip
 
@@ -420,27 +423,11 @@ def test_cli_opens_the_window_and_leaves_cleanly(display, renderer, tmp_path):
     material.write_text(MATERIAL)
     out = tmp_path / "p.png"
     env = {**os.environ, "DISPLAY": display.display}
-    proc = subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "cnlmc",
-            "preview",
-            str(material),
-            "-o",
-            str(out),
-            "--size",
-            "64",
-            "--tier",
-            "analytic",
-            "--interactive",
-        ],
-        input="darker\n",
-        capture_output=True,
-        text=True,
+    proc = run_cnlmc(
+        *("preview", str(material), "-o", str(out), "--size", "64", "--tier", "analytic", "--interactive"),
+        stdin="darker\n",
         timeout=120,
         env=env,
-        check=False,
     )
     assert proc.returncode == 0, proc.stderr
     assert "showing p.png in a window" in proc.stdout and "base_color" in proc.stdout
