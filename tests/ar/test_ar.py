@@ -3,11 +3,15 @@ the marker; clear errors; marker PNGs; video frames."""
 
 from __future__ import annotations
 
-import cv2
 import numpy as np
 import pytest
 
-from cnlmc.backends.ar import (
+from tests.helpers import require
+
+cv2 = require("cv2", "ar")
+pytestmark = pytest.mark.cv2
+
+from cnlmc.backends.ar import (  # noqa: E402
     AROptionError,
     NoMarkerFound,
     PhotoUnreadable,
@@ -17,7 +21,7 @@ from cnlmc.backends.ar import (
     parse_options,
     write_marker,
 )
-from cnlmc.backends.ar.pose import (
+from cnlmc.backends.ar.pose import (  # noqa: E402
     MARKER_FROM_WORLD,
     Pose,
     detect,
@@ -27,7 +31,7 @@ from cnlmc.backends.ar.pose import (
     project_gl,
 )
 
-from .conftest import MARKER_LENGTH
+from .conftest import MARKER_LENGTH  # noqa: E402
 
 TOLERANCE_PX = 2.0
 
