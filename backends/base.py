@@ -49,12 +49,11 @@ import argparse
 import difflib
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, ClassVar
+from typing import Any, ClassVar
+
+from cnlmc.material import COLOUR_SPACE, Document, Material
 
 from .capabilities import EmitResult, Note, check_material
-
-if TYPE_CHECKING:
-    from cnlmc.material import Document, Material
 
 __all__ = [
     "Artifact",
@@ -70,6 +69,7 @@ __all__ = [
     "parse_options",
 ]
 
+DOCUMENT_FIELDS = ("ir_version", "source", "lexicon", "colour_space", "materials", "diagnostics")
 TRUE_WORDS, FALSE_WORDS = ("on", "true", "yes", "1"), ("off", "false", "no", "0")
 
 
@@ -220,10 +220,14 @@ class Target:
 
 
 def as_document(ir: Document | Mapping[str, Any]) -> Document:
-    """The typed document of an IR in either form."""
-    from cnlmc.material import Document  # until package A lands: then at module level
-
-    return ir if isinstance(ir, Document) else Document.from_ir(dict(ir))
+    """The typed document of an IR in either form. A dict with `materials` but not every
+    document field (tools and tests build such) gets the others empty."""
+    if isinstance(ir, Document):
+        return ir
+    if set(DOCUMENT_FIELDS) <= set(ir):
+        return Document.from_ir(dict(ir))
+    materials = tuple(Material.from_ir(m, f"materials[{i}]") for i, m in enumerate(ir["materials"]))
+    return Document(1, "", (), COLOUR_SPACE, materials, ())
 
 
 def emit_each(

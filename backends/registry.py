@@ -1,14 +1,37 @@
-"""Target name -> backend module, imported only when that target runs.
+"""Target name -> Target object, and CLI command name -> Command, each imported only when used.
 
-A backend module provides NAME, DESCRIPTION, CAPABILITIES and emit(ir, options) -> [Artifact].
-Third-party targets register through the entry point group 'cnlmc.backends'.
+A built-in target module exposes `TARGET`, an instance of `cnlmc.backends.base.Target`.
+Third-party targets register through the entry point group 'cnlmc.backends' (a module with
+TARGET, or the module form: NAME, DESCRIPTION, CAPABILITIES and emit(ir_dict, options_dict)).
+Commands are listed here by name and help, so the CLI builds its parser without importing
+any target; `get_command` imports the one that runs.
 """
 
 from __future__ import annotations
 
-import difflib
 import importlib
+from collections.abc import Mapping
 from dataclasses import dataclass
+from types import ModuleType
+from typing import Any
+
+from cnlmc.material import Document
+
+from .base import Artifact, Command, Options, Target, did_you_mean
+from .capabilities import EmitResult
+
+__all__ = [
+    "Artifact",
+    "BUILTIN_BACKENDS",
+    "BUILTIN_COMMANDS",
+    "CommandEntry",
+    "TargetUnavailable",
+    "UnknownTarget",
+    "available",
+    "get_backend",
+    "get_command",
+    "get_target",
+]
 
 BUILTIN_BACKENDS = {
     "ir": "cnlmc.backends.ir_json",
@@ -19,45 +42,121 @@ BUILTIN_BACKENDS = {
     "maps": "cnlmc.backends.maps.target",
     "preview": "cnlmc.backends.preview",
 }
+#: the extra that installs a target's optional dependencies (pip install 'cnlmc[extra]')
+EXTRAS = {"ar": "ar", "bake": "maps", "sheet": "maps"}
 
 
 @dataclass(frozen=True)
-class Artifact:
-    """One output file: a name relative to the output folder, and its content."""
+class CommandEntry:
+    """A CLI subcommand a backend brings: where its Command class is, and its one-line help."""
 
-    name: str
-    content: str | bytes
-    kind: str = "text"
+    target: str
+    module: str
+    cls: str
+    help: str
+
+
+BUILTIN_COMMANDS = {
+    "bake": CommandEntry(
+        "maps", "cnlmc.backends.maps.commands", "BakeCommand", "bake a material's procedural maps to image files"
+    ),
+    # Package C moves these two into backends/preview and backends/ar; until then the adapter module.
+    "preview": CommandEntry(
+        "preview",
+        "cnlmc.backends.render_commands",
+        "PreviewCommand",
+        "render a material file to a PNG (offscreen OpenGL)",
+    ),
+    "ar": CommandEntry(
+        "ar",
+        "cnlmc.backends.render_commands",
+        "ARCommand",
+        "place the material on a printed marker in a photo or video",
+    ),
+    "sheet": CommandEntry(
+        "maps", "cnlmc.backends.maps.commands", "SheetCommand", "a contact sheet PNG of every stdlib procedural graph"
+    ),
+}
 
 
 class UnknownTarget(LookupError):
     def __init__(self, name: str, known: list[str]):
-        close = difflib.get_close_matches(name, known, n=1)
-        hint = f"; did you mean '{close[0]}'?" if close else ""
-        super().__init__(f"unknown target '{name}' (known: {', '.join(known)}){hint}")
-
-
-def available(include_plugins: bool = True) -> dict[str, str]:
-    table = dict(BUILTIN_BACKENDS)
-    if include_plugins:
-        from importlib.metadata import entry_points  # slow to import: only when asked
-
-        for ep in entry_points(group="cnlmc.backends"):
-            table.setdefault(ep.name, ep.value)
-    return table
+        super().__init__(f"unknown target '{name}' (known: {', '.join(known)}){did_you_mean(name, known)}")
 
 
 class TargetUnavailable(LookupError):
     """The target exists but cannot load here (a missing optional dependency)."""
 
 
-def get_backend(name: str):
+def available(include_plugins: bool = True) -> dict[str, str]:
+    """Target name -> the module that provides it."""
+    table = dict(BUILTIN_BACKENDS)
+    if include_plugins:
+        from importlib.metadata import entry_points  # slow to import: only when plugins are asked for
+
+        for ep in entry_points(group="cnlmc.backends"):
+            table.setdefault(ep.name, ep.value)
+    return table
+
+
+def _import(module: str, what: str, extra: str) -> ModuleType:
+    try:
+        return importlib.import_module(module)
+    except ImportError as exc:
+        raise TargetUnavailable(f"{what} cannot load: {exc}; install it with: pip install 'cnlmc[{extra}]'") from None
+
+
+def get_target(name: str) -> Target:
+    """The Target called `name`; UnknownTarget (with did-you-mean) or TargetUnavailable."""
     table = available(include_plugins=name not in BUILTIN_BACKENDS)
     if name not in table:
         raise UnknownTarget(name, sorted(table))
-    try:
-        return importlib.import_module(table[name])
-    except ImportError as exc:
-        raise TargetUnavailable(
-            f"target '{name}' cannot load: {exc}; install it with: pip install 'cnlmc[{name}]'"
-        ) from None
+    module = _import(table[name], f"target '{name}'", name)
+    target = getattr(module, "TARGET", None)
+    return target if isinstance(target, Target) else ModuleTarget(module)
+
+
+@dataclass(frozen=True)
+class BackendModule:
+    """A target as earlier callers see it: emit(ir, raw options) (see Target.emit_ir)."""
+
+    target: Target
+
+    @property
+    def capabilities(self) -> Mapping[str, tuple[str, str]]:
+        return self.target.capabilities
+
+    def emit(self, ir: Document | Mapping[str, Any], options: Mapping[str, object] | None = None) -> EmitResult:
+        return self.target.emit_ir(ir, options)
+
+
+def get_backend(name: str) -> BackendModule:
+    """The interface earlier releases had (`get_backend(name).emit(ir, options)`); new code: get_target."""
+    return BackendModule(get_target(name))
+
+
+def get_command(name: str) -> Command:
+    """A fresh Command object for `cnlmc NAME`; TargetUnavailable when its backend cannot load."""
+    entry = BUILTIN_COMMANDS[name]
+    module = _import(entry.module, f"'cnlmc {name}'", EXTRAS.get(name, entry.target))
+    command: Command = getattr(module, entry.cls)()
+    return command
+
+
+class ModuleTarget(Target):
+    """A target in the module form (NAME, DESCRIPTION, CAPABILITIES, emit(ir_dict, options_dict)):
+    third-party plugins, and built-in modules not yet moved to the Target class."""
+
+    def __init__(self, module: ModuleType):
+        self.module = module
+        self.name = module.NAME
+        self.description = getattr(module, "DESCRIPTION", "")
+        self.capabilities = module.CAPABILITIES
+
+    def emit_ir(self, ir: Document | Mapping[str, Any], pairs: Mapping[str, object] | None = None) -> EmitResult:
+        ir_dict = ir.to_ir() if isinstance(ir, Document) else dict(ir)
+        result: EmitResult = self.module.emit(ir_dict, dict(pairs or {}))
+        return result
+
+    def emit(self, document: Document, options: Options) -> EmitResult:
+        return self.emit_ir(document, {k: v for k, v in options.items() if v is not None})

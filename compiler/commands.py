@@ -1,32 +1,82 @@
-"""The CLI's subcommands."""
+"""The CLI's own subcommands (compile, explain, targets, lsp) and what every subcommand shares:
+exit codes, reading a source file, the source arguments, compiling with diagnostics on stderr.
+
+Backends bring their own subcommands (`cnlmc.backends.base.Command`, listed in
+`cnlmc.backends.registry.BUILTIN_COMMANDS`); they build on the helpers here.
+"""
 
 from __future__ import annotations
 
+import argparse
 import json
 import sys
+from collections.abc import Sequence
 from dataclasses import asdict
 
-from .cli import EXIT_ERRORS, EXIT_OK, read_source
+from cnlmc.backends.base import Artifact, Command
+from cnlmc.backends.capabilities import BackendRefused, EmitResult
+from cnlmc.backends.registry import TargetUnavailable, UnknownTarget, available, get_target
+
+from .api import Result, compile_source, lexicon_for
 from .diagnostics import render
+from .document import iter_lines, parse_document
 from .errors import UsageError
+from .explain import explain
+from .lexicon import Lexicon
+from .lexicon_schema import LexiconError
+from .output import write_artifacts
+from .tagger import Tagger
+
+EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
+STAGES = ("tokens", "ast", "ir")
 
 
-def _lexicon(args):
-    from .api import lexicon_for
-    from .lexicon_schema import LexiconError
+# ---------------------------------------------------------------- shared by every subcommand
 
+
+def read_source(path: str) -> tuple[str, str]:
+    """The text of a file (or standard input for '-') and the name diagnostics use for it."""
     try:
-        return lexicon_for(tuple(args.lexicon))
-    except LexiconError as exc:
-        raise UsageError(f"lexicon: {exc}") from None
+        if path == "-":
+            data = sys.stdin.buffer.read()
+        else:
+            with open(path, "rb") as handle:
+                data = handle.read()
+    except OSError as exc:
+        raise UsageError(f"cannot read '{path}': {exc.strerror}") from None
+    name = "<stdin>" if path == "-" else path
+    if b"\x00" in data:
+        raise UsageError(f"{name}: this is not a text file (it contains NUL bytes)")
+    try:
+        return data.decode("utf-8-sig"), name
+    except UnicodeDecodeError as exc:
+        raise UsageError(f"{name}: not UTF-8 text (byte {exc.start})") from None
 
 
-def _report(result, source: str, name: str) -> None:
-    for diag in result.diagnostics:
-        print(render(diag, source, name), file=sys.stderr)
+def add_lexicon_arguments(parser: argparse.ArgumentParser) -> None:
+    """--lexicon and --seed, as every compiling subcommand takes them."""
+    parser.add_argument(
+        "--lexicon",
+        "-L",
+        action="append",
+        default=[],
+        help="an overlay name (e.g. 'paper') or a lexicon folder; may repeat; folders are searched first",
+    )
+    parser.add_argument("--seed", type=int, default=0, help="seed for procedural maps (default 0)")
 
 
-def _parse_options(pairs) -> dict:
+def add_source_arguments(parser: argparse.ArgumentParser) -> None:
+    """A material file (or - for standard input), --lexicon and --seed."""
+    parser.add_argument("file", help="a material file, or - to read standard input")
+    add_lexicon_arguments(parser)
+
+
+def add_option_argument(parser: argparse.ArgumentParser, help: str) -> None:
+    parser.add_argument("--option", action="append", default=[], metavar="KEY=VALUE", help=help)
+
+
+def option_pairs(pairs: Sequence[str]) -> dict[str, str]:
+    """`--option KEY=VALUE` strings -> {key: value} (typed later, by the target's declared options)."""
     options = {}
     for pair in pairs:
         if "=" not in pair:
@@ -36,51 +86,75 @@ def _parse_options(pairs) -> dict:
     return options
 
 
-def compile_cmd(args) -> int:
-    from cnlmc.backends.registry import TargetUnavailable, UnknownTarget, get_backend
-
-    from .api import compile_source
-
+def lexicon_of(args: argparse.Namespace) -> Lexicon:
     try:
-        backend = get_backend("ir" if args.emit == "ir" else args.target)
-    except (UnknownTarget, TargetUnavailable) as exc:
-        raise UsageError(str(exc)) from None
-    source, name = read_source(args.file)
-    lexicon = _lexicon(args)
-    if args.emit in ("tokens", "ast"):
-        return _emit_stage(args.emit, source, name, lexicon)
-    result = compile_source(source, name, lexicon, args.seed)
-    _report(result, source, name)
-    if not result.ok:
-        return EXIT_ERRORS
-    options = {**_parse_options(args.option), "seed": args.seed}
-    if args.output:
-        options.setdefault("output", args.output)
-    emitted = _run_backend(backend, result.ir, options)
-    if emitted is None:
-        return EXIT_ERRORS
-    return _deliver(emitted.artifacts, args.output)
+        lexicon: Lexicon = lexicon_for(tuple(args.lexicon))
+    except LexiconError as exc:
+        raise UsageError(f"lexicon: {exc}") from None
+    return lexicon
 
 
-def _run_backend(backend, ir, options):
-    """Emit; approximation notes become warnings, a refusal an error (exit 1)."""
-    from cnlmc.backends.capabilities import BackendRefused
+def report(result: Result, source: str, name: str) -> None:
+    for diag in result.diagnostics:
+        print(render(diag, source, name), file=sys.stderr)
 
-    try:
-        emitted = backend.emit(ir, options)
-    except BackendRefused as exc:
-        print(f"error[E201]: {exc}", file=sys.stderr)
-        return None
-    except ValueError as exc:
-        raise UsageError(str(exc)) from None
+
+def compile_reported(source: str, name: str, args: argparse.Namespace) -> Result:
+    """Compile with the arguments' lexicon and seed; diagnostics go to stderr."""
+    result = compile_source(source, name, lexicon_of(args), args.seed)
+    report(result, source, name)
+    return result
+
+
+# ---------------------------------------------------------------- compile
+
+
+class CompileCommand(Command):
+    name = "compile"
+    help = "compile a material file (or - for stdin)"
+
+    def add_arguments(self, parser: argparse.ArgumentParser) -> None:
+        add_source_arguments(parser)
+        parser.add_argument("--target", "-t", default="ir", help="backend: see `cnlmc targets` (default: ir)")
+        parser.add_argument("--emit", choices=STAGES, help="stop at a stage and print it")
+        parser.add_argument("-o", "--output", help="output file or folder (default: stdout)")
+        add_option_argument(parser, "a backend option, e.g. --option fresnel=schlick")
+
+    def run(self, args: argparse.Namespace) -> int:
+        try:
+            target = get_target("ir" if args.emit == "ir" else args.target)
+        except (UnknownTarget, TargetUnavailable) as exc:
+            raise UsageError(str(exc)) from None
+        source, name = read_source(args.file)
+        lexicon = lexicon_of(args)
+        if args.emit in ("tokens", "ast"):
+            return emit_stage(args.emit, source, name, lexicon)
+        result = compile_source(source, name, lexicon, args.seed)
+        report(result, source, name)
+        if not result.ok:
+            return EXIT_ERRORS
+        options: dict[str, object] = {**option_pairs(args.option), "seed": args.seed}
+        if args.output:
+            options.setdefault("output", args.output)
+        try:
+            emitted = target.emit_ir(result.ir, options)
+        except BackendRefused as exc:
+            print(f"error[E201]: {exc}", file=sys.stderr)
+            return EXIT_ERRORS
+        except ValueError as exc:
+            raise UsageError(str(exc)) from None
+        print_notes(emitted)
+        return deliver(emitted.artifacts, args.output)
+
+
+def print_notes(emitted: EmitResult) -> None:
+    """Approximation notes become warnings: nothing is dropped silently."""
     for note in emitted.notes:
         print(f"warning[{note.code}]: {note.text()}", file=sys.stderr)
-    return emitted
 
 
-def _deliver(artifacts, output) -> int:
-    from .output import write_artifacts
-
+def deliver(artifacts: list[Artifact], output: str | None) -> int:
+    """Write the files (atomically) where -o says, or print the text ones on stdout."""
     if output:
         for path in write_artifacts(artifacts, output):
             print(f"wrote {path}", file=sys.stderr)
@@ -94,10 +168,8 @@ def _deliver(artifacts, output) -> int:
     return EXIT_OK
 
 
-def _emit_stage(stage: str, source: str, name: str, lexicon) -> int:
-    from .document import iter_lines, parse_document
-    from .tagger import Tagger
-
+def emit_stage(stage: str, source: str, name: str, lexicon: Lexicon) -> int:
+    """--emit tokens | ast: the stage printed on stdout."""
     if stage == "tokens":
         tagger = Tagger(lexicon)
         for number, offset, text in iter_lines(source):
@@ -114,160 +186,51 @@ def _emit_stage(stage: str, source: str, name: str, lexicon) -> int:
     return EXIT_ERRORS if any(d.is_error for d in doc.diagnostics) else EXIT_OK
 
 
-def explain_cmd(args) -> int:
-    from .api import compile_source
-    from .explain import explain
-
-    source, name = read_source(args.file)
-    result = compile_source(source, name, _lexicon(args), args.seed)
-    _report(result, source, name)
-    sys.stdout.write(explain(result.ir))
-    return EXIT_OK if result.ok else EXIT_ERRORS
+# ---------------------------------------------------------------- explain, targets, lsp
 
 
-def targets_cmd(args) -> int:
-    from cnlmc.backends.registry import available
+class ExplainCommand(Command):
+    name = "explain"
+    help = "show every parameter and the words and rules that set it"
 
-    for name, module in sorted(available().items()):
-        print(f"{name:<10} {module}")
-    return EXIT_OK
+    def add_arguments(self, parser: argparse.ArgumentParser) -> None:
+        add_source_arguments(parser)
 
-
-def lsp_cmd(args) -> int:
-    try:
-        from .lsp_server import main as serve
-    except ImportError as exc:
-        raise UsageError(f"the language server cannot load: {exc}; install it with: pip install 'cnlmc[lsp]'") from None
-    serve()
-    return EXIT_OK
+    def run(self, args: argparse.Namespace) -> int:
+        source, name = read_source(args.file)
+        result = compile_reported(source, name, args)
+        sys.stdout.write(explain(result.ir))
+        return EXIT_OK if result.ok else EXIT_ERRORS
 
 
-def bake_cmd(args) -> int:
-    from .api import compile_source
-    from .bake import bake_materials
+class TargetsCommand(Command):
+    name = "targets"
+    help = "list the available targets"
 
-    source, name = read_source(args.file)
-    result = compile_source(source, name, _lexicon(args), args.seed)
-    _report(result, source, name)
-    if not result.ok:
-        return EXIT_ERRORS
-    for path in bake_materials(result.ir, args.output, args.size, args.format, args.seed):
-        print(f"wrote {path}", file=sys.stderr)
-    return EXIT_OK
-
-
-def sheet_cmd(args) -> int:
-    try:
-        from cnlmc.backends.maps import MapError, render_contact_sheet
-    except ImportError as exc:
-        raise UsageError(f"the contact sheet cannot load: {exc}; install it with: pip install 'cnlmc[maps]'") from None
-    try:
-        path = render_contact_sheet(args.output, size=args.size)
-    except MapError as exc:
-        raise UsageError(str(exc)) from None
-    print(f"wrote {path}", file=sys.stderr)
-    return EXIT_OK
-
-
-RENDER_FLAGS = ("mesh", "size", "tier", "budget_ms", "env")
-VIDEO_SUFFIXES = (".mp4", ".avi", ".mov", ".mkv", ".m4v", ".webm")
-
-
-def _render_options(args) -> dict:
-    options = _parse_options(args.option)
-    for flag in RENDER_FLAGS:
-        if getattr(args, flag, None) is not None:
-            options[flag] = getattr(args, flag)
-    options["seed"] = str(args.seed)
-    return options
-
-
-def _compiled_or_exit(source: str, name: str, args):
-    from .api import compile_source
-
-    result = compile_source(source, name, _lexicon(args), args.seed)
-    _report(result, source, name)
-    if not result.ok:
-        return None
-    if not result.materials:
-        raise UsageError(f"{name}: no material to render")
-    return result
-
-
-def preview_cmd(args) -> int:
-    try:
-        from cnlmc.backends import preview
-    except ImportError as exc:
-        raise UsageError(f"the preview cannot load: {exc}; install it with: pip install 'cnlmc[preview]'") from None
-    source, name = read_source(args.file)
-    result = _compiled_or_exit(source, name, args)
-    if result is None:
-        return EXIT_ERRORS
-    if getattr(args, "interactive", False):
-        return _live_preview(source, args)
-    try:
-        report = preview.preview_command(result.ir, args.output, _render_options(args))
-    except (ValueError, OSError, RuntimeError) as exc:
-        raise UsageError(str(exc)) from None
-    for note in report.notes:
-        print(f"note: {note}", file=sys.stderr)
-    print(f"wrote {report.path}", file=sys.stderr)
-    return EXIT_OK
-
-
-def _live_preview(source: str, args) -> int:
-    from pathlib import Path
-
-    from cnlmc.backends.preview import live
-
-    if args.file == "-":
-        raise UsageError("--interactive reads refinements from standard input: give the material as a file")
-    session = live.LiveSession(source, Path(args.output), _render_options(args), _lexicon(args))
-    try:
-        return live.run(session, window=live.Window.open())
-    except (ValueError, OSError, RuntimeError) as exc:
-        raise UsageError(str(exc)) from None
-    except KeyboardInterrupt:
+    def run(self, args: argparse.Namespace) -> int:
+        for name, module in sorted(available().items()):
+            try:
+                description = get_target(name).description
+            except TargetUnavailable as exc:
+                description = f"(not here: {exc})"
+            print(f"{name:<10} {description} [{module}]")
         return EXIT_OK
 
 
-def _phrase_source(text: str) -> tuple[str, str]:
-    """The AR phrase argument: a material file when such a file exists, else the phrase itself."""
-    from pathlib import Path
+class LspCommand(Command):
+    name = "lsp"
+    help = "run the language server on stdio (for editors)"
 
-    if Path(text).is_file():
-        return read_source(text)
-    return text, "<phrase>"
-
-
-def ar_cmd(args) -> int:
-    try:
-        from cnlmc.backends import ar
-    except ImportError as exc:
-        raise UsageError(f"AR cannot load: {exc}; install it with: pip install 'cnlmc[ar]'") from None
-    if args.marker:
-        print(f"wrote {ar.write_marker(args.marker)}", file=sys.stderr)
+    def run(self, args: argparse.Namespace) -> int:
+        try:
+            from .lsp_server import main as serve  # pygls, an optional dependency: only for `cnlmc lsp`
+        except ImportError as exc:
+            raise UsageError(
+                f"the language server cannot load: {exc}; install it with: pip install 'cnlmc[lsp]'"
+            ) from None
+        serve()
         return EXIT_OK
-    if not (args.photo and args.phrase and args.output):
-        raise UsageError('usage: cnlmc ar PHOTO "PHRASE" -o OUT.png   (or: cnlmc ar --marker marker.png)')
-    source, name = _phrase_source(args.phrase)
-    result = _compiled_or_exit(source, name, args)
-    if result is None:
-        return EXIT_ERRORS
-    return _run_ar(ar, args, result.ir)
 
 
-def _run_ar(ar, args, ir) -> int:
-    run = ar.ar_video if args.photo.lower().endswith(VIDEO_SUFFIXES) else ar.ar_command
-    try:
-        report = run(args.photo, ir, args.output, _render_options(args))
-    except ar.NoMarkerFound as exc:
-        print(f"cnlmc: error: {exc}", file=sys.stderr)
-        print("  = print one with: cnlmc ar --marker marker.png", file=sys.stderr)
-        return EXIT_ERRORS
-    except (ar.ARError, ValueError, OSError, RuntimeError) as exc:
-        raise UsageError(str(exc)) from None
-    if report.missed:
-        print(f"note: no marker in {report.missed} of {report.frames} frames (left unchanged)", file=sys.stderr)
-    print(f"wrote {report.path}", file=sys.stderr)
-    return EXIT_OK
+#: The CLI's own subcommands, in the order `cnlmc --help` lists them (backends' commands follow).
+LANGUAGE_COMMANDS: tuple[Command, ...] = (CompileCommand(), ExplainCommand(), TargetsCommand(), LspCommand())

@@ -9,15 +9,18 @@ values, samplers with roles and colour spaces, the model, the options).
 
 from __future__ import annotations
 
-from ..capabilities import EmitResult, check_material
-from .emit import emit_material
-from .options import OPTION_TABLE, parse_options
+from collections.abc import Mapping
+from typing import Any
 
-NAME = "glsl"
-DESCRIPTION = "GLSL 330 / ES 300 BRDF library + standalone preview shaders (docs/glsl.md)"
+from cnlmc.material import Document
+
+from ..base import Options, Target, emit_each
+from ..capabilities import EmitResult
+from .emit import emit_material
+from .options import OPTIONS, glsl_options
 
 _BAKED = "procedural map: bake it (cnlmc bake) and bind the image to the sampler the sidecar lists"
-CAPABILITIES = {
+CAPABILITIES: dict[str, tuple[str, str]] = {
     "model.diffuse": ("exact", "Lambert / Oren-Nayar"),
     "model.dielectric": ("exact", "GGX or Ward lobe over a diffuse base"),
     "model.conductor": ("exact", "complex Fresnel (eta + ik), F82 or Schlick by option"),
@@ -46,15 +49,24 @@ CAPABILITIES = {
 }
 
 
-def emit(ir: dict, options: dict) -> EmitResult:
-    """GLSL for every material of the IR; options as in OPTION_TABLE (docs/glsl.md)."""
-    opts = parse_options(options)
-    notes: list = []
-    artifacts = []
-    for material in ir["materials"]:
-        check_material(notes, NAME, CAPABILITIES, material)
-        artifacts += emit_material(material, opts)
-    return EmitResult(artifacts, notes)
+class GlslTarget(Target):
+    name = "glsl"
+    description = "GLSL 330 / ES 300 BRDF library + standalone preview shaders (docs/glsl.md)"
+    capabilities = CAPABILITIES
+    options = OPTIONS
+
+    def emit(self, document: Document, options: Options) -> EmitResult:
+        """GLSL for every material; options as in OPTIONS (docs/glsl.md)."""
+        opts = glsl_options(options)
+        return emit_each(self, document, lambda material: emit_material(material, opts))
 
 
-__all__ = ["NAME", "DESCRIPTION", "CAPABILITIES", "OPTION_TABLE", "emit"]
+TARGET = GlslTarget()
+
+
+def emit(ir: Document | Mapping[str, Any], options: Mapping[str, object] | None = None) -> EmitResult:
+    """The target on an IR (typed or JSON form) with raw `--option` pairs."""
+    return TARGET.emit_ir(ir, options)
+
+
+__all__ = ["CAPABILITIES", "OPTIONS", "TARGET", "GlslTarget", "emit"]

@@ -3,8 +3,11 @@
 from __future__ import annotations
 
 import json
+from typing import Any
 
-from ..registry import Artifact
+from cnlmc.material import Material
+
+from ..base import Artifact
 from .options import GlslOptions
 from .plan import Plan, make_plan, make_uber_plan
 from .render import PROFILES, multiscatter_tables, render, snippet
@@ -43,11 +46,11 @@ def model_summary(plan: Plan) -> str:
     return " + ".join(parts)
 
 
-def library_context(material: dict, plan: Plan, options: GlslOptions) -> dict:
+def library_context(material: Material, plan: Plan, options: GlslOptions) -> dict[str, Any]:
     profile = PROFILES[options.profile]
     return {
-        "name": material["name"],
-        "phrase": material.get("phrase", ""),
+        "name": material.name,
+        "phrase": material.phrase,
         "model_summary": model_summary(plan),
         "options": options.as_dict(),
         "plan": plan,
@@ -60,7 +63,7 @@ def library_context(material: dict, plan: Plan, options: GlslOptions) -> dict:
     }
 
 
-def library_source(material: dict, options: GlslOptions) -> tuple[str, Plan]:
+def library_source(material: Material, options: GlslOptions) -> tuple[str, Plan]:
     """The library form of one material (no #version line) and its plan."""
     build_plan, template = LIBRARY_KINDS[options.specialize]
     plan = build_plan(material, options)
@@ -68,11 +71,11 @@ def library_source(material: dict, options: GlslOptions) -> tuple[str, Plan]:
 
 
 def standalone_sources(
-    material: dict, library: str, options: GlslOptions, transmission: bool = False
+    material: Material, library: str, options: GlslOptions, transmission: bool = False
 ) -> tuple[str, str]:
     profile = PROFILES[options.profile]
     common = {
-        "name": material["name"],
+        "name": material.name,
         "version": profile["version"],
         "precision": profile["precision"],
         "initializers": profile["initializers"],
@@ -94,14 +97,14 @@ BTDF_RETURNS = (
 )
 
 
-def sidecar(material: dict, plan: Plan, options: GlslOptions, files: list[str]) -> dict:
-    maps = material.get("maps", {})
+def sidecar(material: Material, plan: Plan, options: GlslOptions, files: list[str]) -> dict[str, Any]:
+    maps = {role: ref.to_ir() for role, ref in material.maps.items()}
     extra = {"btdf_entry_points": BTDF_ENTRY_POINTS, "btdf_returns": BTDF_RETURNS} if plan.transmission else {}
     return {
         "cnlmc_glsl": 1,
-        "material": material["name"],
-        "phrase": material.get("phrase", ""),
-        "model": material["model"],
+        "material": material.name,
+        "phrase": material.phrase,
+        "model": material.model.to_ir(),
         "options": options.as_dict(),
         "files": files,
         "entry_points": [
@@ -123,8 +126,8 @@ def sidecar(material: dict, plan: Plan, options: GlslOptions, files: list[str]) 
     }
 
 
-def emit_material(material: dict, options: GlslOptions) -> list[Artifact]:
-    name = material["name"]
+def emit_material(material: Material, options: GlslOptions) -> list[Artifact]:
+    name = material.name
     library, plan = library_source(material, options)
     parts = FORM_PARTS[options.form]
     artifacts = []

@@ -1,38 +1,44 @@
-"""The GLSL backend's options (`--option key=value`): the table, defaults, validation."""
+"""The GLSL backend's options (`--option key=value`), declared once; defaults are documented in docs/glsl.md."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..capabilities import COMPILER_OPTIONS
+from ..base import Option, OptionError, Options, parse_options
 
-#: option -> (allowed values, default, what it means). Defaults are documented in docs/glsl.md.
-OPTION_TABLE = {
-    "fresnel": (
-        ("exact", "f82", "schlick"),
+__all__ = ["OPTIONS", "GlslOptions", "OptionError", "glsl_options", "parse_glsl_options"]
+
+OPTIONS = (
+    Option(
+        "fresnel",
+        str,
         "exact",
-        "conductor/dielectric Fresnel: exact (eta + ik / IOR), F82 (Hoffman 2019) or Schlick",
+        choices=("exact", "f82", "schlick"),
+        doc="conductor/dielectric Fresnel: exact (eta + ik / IOR), F82 (Hoffman 2019) or Schlick",
     ),
-    "multiscatter": (("off", "on"), "off", "Kulla-Conty energy compensation of conductor lobes"),
-    "profile": (("330", "es300"), "330", "#version 330 core, or #version 300 es with precision qualifiers"),
-    "form": (
-        ("both", "library", "standalone"),
+    Option("multiscatter", str, "off", choices=("off", "on"), doc="Kulla-Conty energy compensation of conductor lobes"),
+    Option(
+        "profile",
+        str,
+        "330",
+        choices=("330", "es300"),
+        doc="#version 330 core, or #version 300 es with precision qualifiers",
+    ),
+    Option(
+        "form",
+        str,
         "both",
-        "library: <name>.glsl; standalone: <name>.frag + <name>.vert; both",
+        choices=("both", "library", "standalone"),
+        doc="library: <name>.glsl; standalone: <name>.frag + <name>.vert; both",
     ),
-    "specialize": (
-        ("on", "off"),
+    Option(
+        "specialize",
+        str,
         "on",
-        "on: only the code the model needs; off: every branch compiled in (uber shader)",
+        choices=("on", "off"),
+        doc="on: only the code the model needs; off: every branch compiled in (uber shader)",
     ),
-}
-
-#: Options the compiler passes to every backend that are not ours to validate.
-FOREIGN_OPTIONS = COMPILER_OPTIONS
-
-
-class OptionError(ValueError):
-    """An option name or value the GLSL backend does not know."""
+)
 
 
 @dataclass(frozen=True)
@@ -43,7 +49,8 @@ class GlslOptions:
     form: str = "both"
     specialize: bool = True
 
-    def as_dict(self) -> dict:
+    def as_dict(self) -> dict[str, str]:
+        """The options as the sidecar records them."""
         return {
             "fresnel": self.fresnel,
             "multiscatter": "on" if self.multiscatter else "off",
@@ -53,24 +60,17 @@ class GlslOptions:
         }
 
 
-def _value(options: dict, key: str) -> str:
-    allowed, default, _ = OPTION_TABLE[key]
-    value = str(options.get(key, default)).strip().lower()
-    if value not in allowed:
-        raise OptionError(f"glsl: option {key}={value!r} is not one of {', '.join(allowed)}")
-    return value
-
-
-def parse_options(options: dict | None) -> GlslOptions:
-    """Validate `--option` strings into GlslOptions; unknown keys are an error."""
-    options = dict(options or {})
-    unknown = sorted(set(options) - set(OPTION_TABLE) - set(FOREIGN_OPTIONS))
-    if unknown:
-        raise OptionError(f"glsl: unknown option(s) {', '.join(unknown)}; known: {', '.join(OPTION_TABLE)}")
+def glsl_options(options: Options) -> GlslOptions:
+    """Parsed options -> what the plan and templates read."""
     return GlslOptions(
-        fresnel=_value(options, "fresnel"),
-        multiscatter=_value(options, "multiscatter") == "on",
-        profile=_value(options, "profile"),
-        form=_value(options, "form"),
-        specialize=_value(options, "specialize") == "on",
+        fresnel=options.fresnel,
+        multiscatter=options.multiscatter == "on",
+        profile=options.profile,
+        form=options.form,
+        specialize=options.specialize == "on",
     )
+
+
+def parse_glsl_options(pairs: dict[str, object] | None) -> GlslOptions:
+    """Raw `--option` pairs -> GlslOptions (OptionError for unknown keys and values)."""
+    return glsl_options(parse_options(OPTIONS, pairs, "glsl"))

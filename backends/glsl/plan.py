@@ -7,24 +7,28 @@ and the ground truth share one reading of the IR (α clamping, coat α, F_avg).
 
 from __future__ import annotations
 
+import dataclasses
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
 from cnlmc.bsdf import coat_alpha, conductor_fresnel, f0_conductor, fresnel_average, material_alpha
+from cnlmc.material import Coat, Material, Params
 
 from .options import GlslOptions
 
 MICROFACET_BASES = ("dielectric", "conductor", "glass")
 #: The Fresnel mode a base actually uses: dielectrics have no F82 data (Schlick of the IOR).
-EFFECTIVE_FRESNEL = {
+EFFECTIVE_FRESNEL: dict[str, dict[str, str | None]] = {
     "conductor": {"exact": "exact", "schlick": "schlick", "f82": "f82"},
     "dielectric": {"exact": "exact", "schlick": "schlick", "f82": "schlick"},
     "glass": {"exact": "exact", "schlick": "schlick", "f82": "schlick"},
     "diffuse": {"exact": None, "schlick": None, "f82": None},
 }
 #: Snippets of each Fresnel flavour (the binding `cnlm_base_fresnel` is in the template).
-FRESNEL_SNIPPETS = {
+FRESNEL_SNIPPETS: dict[tuple[str, str | None], tuple[str, ...]] = {
     ("conductor", "exact"): ("fresnel_conductor",),
     ("conductor", "schlick"): ("fresnel_schlick",),
     ("conductor", "f82"): ("fresnel_schlick", "fresnel_f82"),
@@ -33,7 +37,7 @@ FRESNEL_SNIPPETS = {
     ("glass", "exact"): ("fresnel_dielectric",),
     ("glass", "schlick"): ("fresnel_schlick",),
 }
-DISTRIBUTION_SNIPPETS = {
+DISTRIBUTION_SNIPPETS: dict[tuple[str | None, bool], tuple[str, ...]] = {
     ("ggx", False): ("ggx_isotropic",),
     ("ggx", True): ("ggx_aniso_terms", "ggx_anisotropic"),
     ("ward", True): ("ward",),
@@ -115,37 +119,37 @@ class Plan:
         return "vec2" if self.anisotropic else "float"
 
 
-def _rgb(value, default=(1.0, 1.0, 1.0)) -> list:
-    return [float(x) for x in np.broadcast_to(np.asarray(default if value is None else value, float), (3,))]
+def _rgb(value: Any) -> list[float]:
+    return [float(x) for x in np.broadcast_to(np.asarray(value, float), (3,))]
 
 
-def diffuse_kind(material: dict) -> str | None:
+def diffuse_kind(material: Material) -> str | None:
     """Lambert or Oren-Nayar, by the same rule as the reference (σ > 0 for Oren-Nayar)."""
-    kind = material["model"].get("diffuse")
-    if kind == "oren_nayar" and not (material["params"].get("diffuse_roughness") or 0.0) > 0:
+    kind = material.model.diffuse
+    if kind == "oren_nayar" and not material.params.diffuse_roughness > 0:
         return "lambert"
-    return kind if material["model"]["base"] in ("diffuse", "dielectric") else None
+    return kind if material.model.base in ("diffuse", "dielectric") else None
 
 
-def has_coat(material: dict) -> bool:
-    return bool(material["model"].get("coat") and material["params"].get("coat"))
+def material_coat(material: Material) -> Coat | None:
+    """The coat the shader draws: the model says it has one and the parameters hold it."""
+    return material.params.coat if material.model.coat else None
 
 
-def make_plan(material: dict, options: GlslOptions) -> Plan:
-    model, params = material["model"], material["params"]
-    base = model["base"]
-    coat = has_coat(material)
+def make_plan(material: Material, options: GlslOptions) -> Plan:
+    model, coat = material.model, material_coat(material)
+    base = model.base
     plan = Plan(
         base=base,
-        distribution=(model.get("distribution") or "ggx") if base in MICROFACET_BASES else None,
-        anisotropic=bool(model.get("anisotropic")) and base in MICROFACET_BASES,
+        distribution=(model.distribution or "ggx") if base in MICROFACET_BASES else None,
+        anisotropic=model.anisotropic and base in MICROFACET_BASES,
         diffuse=diffuse_kind(material),
         fresnel=EFFECTIVE_FRESNEL[base][options.fresnel],
-        coat=coat,
-        coat_color=coat and any(abs(c - 1.0) > 1e-6 for c in _rgb(params["coat"].get("color"))),
+        coat=coat is not None,
+        coat_color=coat is not None and any(abs(c - 1.0) > 1e-6 for c in coat.color),
         multiscatter=options.multiscatter and base == "conductor",
-        maps=tuple(role for role in SHADER_ROLES if role in material.get("maps", {})),
-        alpha_convention=params.get("alpha_convention", "squared"),
+        maps=tuple(role for role in SHADER_ROLES if role in material.maps),
+        alpha_convention=material.params.alpha_convention,
     )
     plan.snippets = snippet_names(plan)
     plan.uniforms = uniforms_for(plan, material)
@@ -179,30 +183,33 @@ def snippet_names(plan: Plan) -> list[str]:
     return list(dict.fromkeys(names))
 
 
-def _alpha_value(plan: Plan, material: dict):
+def _alpha_value(plan: Plan, material: Material) -> float | list[float]:
     ax, ay = (float(a) for a in material_alpha(material))
     return [ax, ay] if plan.anisotropic else ax
 
 
-def _f0(params: dict) -> list:
-    if params.get("f0") is not None:
-        return _rgb(params["f0"])
-    return _rgb(f0_conductor(_rgb(params["eta"]), _rgb(params["k"])))
+def _f0(params: Params) -> list[float]:
+    if params.f0 is not None:
+        return _rgb(params.f0)
+    return _rgb(f0_conductor(_rgb(params.eta), _rgb(params.k)))
 
 
-def _multiscatter_favg(material: dict, fresnel: str) -> list:
-    coat = material["params"].get("coat") if has_coat(material) else None
-    outside = float(coat.get("ior", 1.5)) if coat else 1.0
-    return _rgb(fresnel_average(conductor_fresnel(material["params"], fresnel, outside)))
+def _multiscatter_favg(material: Material, fresnel: str) -> list[float]:
+    coat = material_coat(material)
+    outside = coat.ior if coat is not None else 1.0
+    return _rgb(fresnel_average(conductor_fresnel(material.params, fresnel, outside)))
 
 
-def _coat_params(material: dict) -> dict:
-    return material["params"].get("coat") or {}
+def _coat(material: Material) -> Coat:
+    """The coat of a plan that has one."""
+    assert material.params.coat is not None, f"{material.name}: a coat plan without a coat"
+    return material.params.coat
 
 
+UniformValue = Callable[[Material, Plan], Any]
 #: uniform name -> (type, when it is needed, its value). Read by `uniforms_for`.
-UNIFORM_TABLE = {
-    "cnlm_base_color": ("vec3", lambda p: "base_color" not in p.maps, lambda m, p: _rgb(m["params"].get("base_color"))),
+UNIFORM_TABLE: dict[str, tuple[str | None, Callable[[Plan], bool], UniformValue]] = {
+    "cnlm_base_color": ("vec3", lambda p: "base_color" not in p.maps, lambda m, p: _rgb(m.params.base_color)),
     "cnlm_alpha": (
         None,
         lambda p: p.microfacet and "roughness" not in p.maps,  # float or vec2
@@ -211,48 +218,48 @@ UNIFORM_TABLE = {
     "cnlm_anisotropy": (
         "float",
         lambda p: p.anisotropic and "roughness" in p.maps,
-        lambda m, p: float(m["params"].get("anisotropy", 0.0)),
+        lambda m, p: float(m.params.anisotropy),
     ),
     "cnlm_anisotropy_rotation": (
         "float",
         lambda p: p.anisotropic,
-        lambda m, p: float(m["params"].get("anisotropy_rotation") or 0.0),
+        lambda m, p: float(m.params.anisotropy_rotation),
     ),
     "cnlm_eta": (
         "vec3",
         lambda p: p.base == "conductor" and p.fresnel == "exact",
-        lambda m, p: _rgb(m["params"]["eta"]),
+        lambda m, p: _rgb(m.params.eta),
     ),
-    "cnlm_k": ("vec3", lambda p: p.base == "conductor" and p.fresnel == "exact", lambda m, p: _rgb(m["params"]["k"])),
+    "cnlm_k": ("vec3", lambda p: p.base == "conductor" and p.fresnel == "exact", lambda m, p: _rgb(m.params.k)),
     "cnlm_f0": (
         "vec3",
         lambda p: p.base == "conductor" and p.fresnel in ("schlick", "f82"),
-        lambda m, p: _f0(m["params"]),
+        lambda m, p: _f0(m.params),
     ),
-    "cnlm_f82": ("vec3", lambda p: p.base == "conductor" and p.fresnel == "f82", lambda m, p: _rgb(m["params"]["f82"])),
-    "cnlm_ior": ("float", lambda p: p.base in ("dielectric", "glass"), lambda m, p: float(m["params"].get("ior", 1.5))),
+    "cnlm_f82": ("vec3", lambda p: p.base == "conductor" and p.fresnel == "f82", lambda m, p: _rgb(m.params.f82)),
+    "cnlm_ior": ("float", lambda p: p.base in ("dielectric", "glass"), lambda m, p: float(m.params.ior)),
     "cnlm_diffuse_roughness": (
         "float",
         lambda p: p.diffuse == "oren_nayar",
-        lambda m, p: float(m["params"].get("diffuse_roughness") or 0.0),
+        lambda m, p: float(m.params.diffuse_roughness),
     ),
-    "cnlm_coat_ior": ("float", lambda p: p.coat, lambda m, p: float(_coat_params(m).get("ior", 1.5))),
+    "cnlm_coat_ior": ("float", lambda p: p.coat, lambda m, p: float(_coat(m).ior)),
     "cnlm_coat_alpha": (
         "float",
         lambda p: p.coat,
-        lambda m, p: float(coat_alpha(_coat_params(m), m["params"].get("alpha_convention", "squared"))[0]),
+        lambda m, p: float(coat_alpha(_coat(m), m.params.alpha_convention)[0]),
     ),
-    "cnlm_coat_color": ("vec3", lambda p: p.coat_color, lambda m, p: _rgb(_coat_params(m).get("color"))),
+    "cnlm_coat_color": ("vec3", lambda p: p.coat_color, lambda m, p: _rgb(_coat(m).color)),
     "cnlm_coat_thickness": (
         "float",
         lambda p: p.coat_color,
-        lambda m, p: float(_coat_params(m).get("thickness") or 0.0),
+        lambda m, p: float(_coat(m).thickness),
     ),
-    "cnlm_ms_favg": ("vec3", lambda p: p.multiscatter, lambda m, p: _multiscatter_favg(m, p.fresnel)),
+    "cnlm_ms_favg": ("vec3", lambda p: p.multiscatter, lambda m, p: _multiscatter_favg(m, p.fresnel or "exact")),
 }
 
 
-def uniforms_for(plan: Plan, material: dict) -> list[Uniform]:
+def uniforms_for(plan: Plan, material: Material) -> list[Uniform]:
     """The uniforms the plan's code reads, with the material's values."""
     return [
         Uniform(name, gl_type or plan.alpha_type, value(material, plan))
@@ -264,20 +271,21 @@ def uniforms_for(plan: Plan, material: dict) -> list[Uniform]:
 # ---- the all-features ("uber") form: option specialize=off ----
 
 #: Parameters an uber shader needs even when the material does not use them (neutral values).
-UBER_PARAM_DEFAULTS = {
-    "eta": [1.5, 1.5, 1.5],
-    "k": [0.0, 0.0, 0.0],
-    "f0": [0.04, 0.04, 0.04],
-    "f82": [0.04, 0.04, 0.04],
+UBER_PARAM_DEFAULTS: dict[str, Any] = {
+    "eta": (1.5, 1.5, 1.5),
+    "k": (0.0, 0.0, 0.0),
+    "f0": (0.04, 0.04, 0.04),
+    "f82": (0.04, 0.04, 0.04),
     "ior": 1.5,
     "diffuse_roughness": 0.0,
     "anisotropy": 0.0,
     "anisotropy_rotation": 0.0,
-    "base_color": [0.8, 0.8, 0.8],
+    "base_color": (0.8, 0.8, 0.8),
 }
-UBER_COAT_DEFAULT = {"ior": 1.5, "roughness": 0.0, "color": [1.0, 1.0, 1.0], "thickness": 0.0}
+#: The coat an uber shader reads when the material has none: clear, smooth, no absorption.
+UBER_COAT_DEFAULT = Coat(name="", ior=1.5, roughness=0.0, alpha=(0.0, 0.0), color=(1.0, 1.0, 1.0), thickness=0.0)
 #: selector uniform -> plan attribute -> integer code read by templates/uber.glsl.j2.
-UBER_SELECTORS = {
+UBER_SELECTORS: dict[str, tuple[str, dict[Any, int]]] = {
     "cnlm_sel_base": ("base", {"diffuse": 0, "dielectric": 1, "conductor": 2, "glass": 3}),
     "cnlm_sel_distribution": ("distribution", {None: 0, "ggx": 0, "ward": 1}),
     "cnlm_sel_diffuse": ("diffuse", {None: 0, "lambert": 0, "oren_nayar": 1}),
@@ -308,14 +316,20 @@ UBER_SNIPPETS = (
 )
 
 
-def complete_material(material: dict) -> dict:
-    """The material with every parameter an uber shader reads (neutral defaults added)."""
-    params = {**UBER_PARAM_DEFAULTS, **{k: v for k, v in material["params"].items() if v is not None}}
-    params["coat"] = {**UBER_COAT_DEFAULT, **(material["params"].get("coat") or {})}
-    return {**material, "params": params}
+def complete_material(material: Material) -> Material:
+    """The material with every parameter an uber shader reads: the neutral value wherever the
+    IR has none (absent, or null)."""
+    params = material.params
+    neutral = {
+        name: value
+        for name, value in UBER_PARAM_DEFAULTS.items()
+        if name not in params.present or getattr(params, name) is None
+    }
+    coat = params.coat if params.coat is not None else UBER_COAT_DEFAULT
+    return dataclasses.replace(material, params=dataclasses.replace(params, **neutral, coat=coat))
 
 
-def make_uber_plan(material: dict, options: GlslOptions) -> Plan:
+def make_uber_plan(material: Material, options: GlslOptions) -> Plan:
     """Every branch compiled in: the material's choices become integer uniforms."""
     plan = make_plan(material, options)
     every = Plan(

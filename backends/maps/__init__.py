@@ -3,6 +3,8 @@
 bake(map_refs, material_params, size, seed, on_progress=None) -> {role: ndarray}
 write_maps(arrays, out_dir, fmt="png8", stem="material") -> [Path]
 validate_size(size) -> size, raising MapError
+render_contact_sheet(path, size=256) -> Path (matplotlib, imported when it runs)
+The baking service for targets (one error type, MapBakeError): bake_arrays, bake_files, bake_artifacts.
 """
 
 from .bake import bake, validate_size
@@ -10,6 +12,8 @@ from .errors import GraphSchemaError, MapError
 from .evaluate import evaluate
 from .library import graph_names, load_graph, load_graph_file
 from .registry import NODE_TYPES
+from .service import MapBakeError, bake_arrays, bake_artifacts, bake_files
+from .sheet import render_contact_sheet
 from .writer import write_maps
 
 __all__ = [
@@ -24,11 +28,8 @@ __all__ = [
     "GraphSchemaError",
     "NODE_TYPES",
     "render_contact_sheet",
+    "MapBakeError",
+    "bake_arrays",
+    "bake_artifacts",
+    "bake_files",
 ]
-
-
-def render_contact_sheet(path, size: int = 256):
-    """See sheet.render_contact_sheet (imported lazily: it needs matplotlib)."""
-    from .sheet import render_contact_sheet as render
-
-    return render(path, size)

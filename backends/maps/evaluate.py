@@ -11,7 +11,7 @@ from .errors import MapError, did_you_mean
 from .grid import Grid, derive_seed
 from .registry import NODE_TYPES
 from .spec import Graph, Ref
-from .targets import finish
+from .roles import finish
 
 Progress = Callable[[str], None]
 

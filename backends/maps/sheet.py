@@ -13,7 +13,7 @@ from cnlmc.output import usual_mode
 from .colour import linear_to_srgb
 from .evaluate import evaluate
 from .library import graph_names, load_graph
-from .targets import COLOR_ROLES
+from .roles import COLOR_ROLES
 
 
 def display_pixels(role: str, array: np.ndarray) -> np.ndarray:

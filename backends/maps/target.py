@@ -6,49 +6,35 @@ Uniform materials produce no files (nothing varies over their surface).
 
 from __future__ import annotations
 
-import tempfile
-from pathlib import Path
+from cnlmc.material import Document, Material
 
-from ..capabilities import ALL_FEATURES, COMPILER_OPTIONS, EmitResult
-from ..registry import Artifact
-from .bake import bake
-from .errors import MapError
-from .writer import write_maps
-
-NAME = "maps"
-DESCRIPTION = "baked procedural maps (PNG/EXR through OpenImageIO)"
-CAPABILITIES = dict.fromkeys(
-    ALL_FEATURES, ("exact", "maps are this target's whole output; BSDF features are not its concern")
-)
-OPTIONS = {"size": "1024", "format": "png8"}
+from ..base import Artifact, Option, Options, Target, emit_each
+from ..capabilities import ALL_FEATURES, EmitResult
+from .service import MapBakeError, bake_artifacts
+from .writer import FORMATS
 
 
-def _options(options: dict) -> tuple[int, str]:
-    unknown = sorted(set(options) - set(OPTIONS) - set(COMPILER_OPTIONS))
-    if unknown:
-        raise ValueError(f"maps: unknown option(s) {', '.join(unknown)}; known: {', '.join(OPTIONS)}")
-    try:
-        size = int(options.get("size", OPTIONS["size"]))
-    except ValueError:
-        raise ValueError(f"maps: size must be a whole number, got {options['size']!r}") from None
-    return size, options.get("format", OPTIONS["format"])
+class MapsTarget(Target):
+    name = "maps"
+    description = "baked procedural maps (PNG/EXR through OpenImageIO)"
+    capabilities = dict.fromkeys(
+        ALL_FEATURES, ("exact", "maps are this target's whole output; BSDF features are not its concern")
+    )
+    options = (
+        Option("size", int, 1024, doc="map size in pixels, a power of two from 8 to 8192"),
+        Option("format", str, "png8", choices=tuple(FORMATS), doc="image format"),
+    )
+
+    def emit(self, document: Document, options: Options) -> EmitResult:
+        return emit_each(self, document, lambda material: self.bake(material, options))
+
+    def bake(self, material: Material, options: Options) -> list[Artifact]:
+        if not material.maps:
+            return []
+        try:
+            return bake_artifacts(material, options.size, options.format, options.seed)
+        except MapBakeError as exc:
+            raise ValueError(f"maps: {exc}") from None
 
 
-def emit(ir: dict, options: dict) -> EmitResult:
-    size, fmt = _options(options)
-    seed = int(options.get("seed", 0))
-    artifacts = []
-    with tempfile.TemporaryDirectory(prefix="cnlmc-maps-") as tmp:
-        for material in ir["materials"]:
-            if material["maps"]:
-                artifacts += _bake_material(material, size, fmt, seed, Path(tmp))
-    return EmitResult(artifacts)
-
-
-def _bake_material(material: dict, size: int, fmt: str, seed: int, folder: Path) -> list[Artifact]:
-    try:
-        arrays = bake(material["maps"], material["params"], size, seed)
-        paths = write_maps(arrays, folder, fmt, stem=material["name"])
-    except MapError as exc:
-        raise ValueError(f"maps: {material['name']}: {exc}") from None
-    return [Artifact(p.name, p.read_bytes(), "binary") for p in paths]
+TARGET = MapsTarget()

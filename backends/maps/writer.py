@@ -18,7 +18,7 @@ from cnlmc.output import usual_mode
 
 from .colour import linear_to_srgb
 from .errors import MapError
-from .targets import COLOR_ROLES
+from .roles import COLOR_ROLES
 
 FORMATS = {  # fmt -> (extension, OIIO pixel type)
     "png8": (".png", "uint8"),

@@ -1,4 +1,4 @@
-"""Targets: what a graph output becomes for its role.
+"""Roles: what a graph output becomes for the role a material gives it.
 
 color             -> (H, W, 3) linear RGB in [0, 1] (scalar outputs become grey)
 normal            -> (H, W, 3) unit tangent-space normals, OpenGL convention (+Y up the image)

@@ -1,0 +1,84 @@
+"""The maps target's subcommands: `cnlmc bake` (every material's maps to image files, with a
+progress bar) and `cnlmc sheet` (a contact sheet of every stdlib graph)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import TextIO
+
+from cnlmc.commands import EXIT_ERRORS, EXIT_OK, add_source_arguments, compile_reported, read_source
+from cnlmc.errors import UsageError
+
+from ..base import Command, as_document
+from .errors import MapError
+from .service import MapBakeError, bake_files, has_maps
+from .sheet import render_contact_sheet
+from .writer import FORMATS
+
+
+class ProgressBar:
+    """A one-line bar on stderr, drawn only when stderr is a terminal and there is more than one map."""
+
+    def __init__(self, stream: TextIO = sys.stderr, width: int = 30):
+        self.stream, self.width = stream, width
+        self.enabled = stream.isatty()
+
+    def __call__(self, done: int, total: int, name: str) -> None:
+        if not self.enabled or total <= 1:
+            return
+        filled = int(self.width * done / total)
+        self.stream.write(f"\r[{'#' * filled}{'.' * (self.width - filled)}] {done}/{total} {name[:40]:<40}")
+        if done == total:
+            self.stream.write("\n")
+        self.stream.flush()
+
+
+class BakeCommand(Command):
+    name = "bake"
+    help = "bake a material's procedural maps to image files"
+
+    def add_arguments(self, parser: argparse.ArgumentParser) -> None:
+        add_source_arguments(parser)
+        parser.add_argument("-o", "--output", required=True, help="output folder")
+        parser.add_argument("--size", type=int, default=1024, help="map size in pixels (default 1024)")
+        parser.add_argument("--format", default="png8", choices=list(FORMATS), help="image format (default png8)")
+
+    def run(self, args: argparse.Namespace) -> int:
+        source, name = read_source(args.file)
+        result = compile_reported(source, name, args)
+        if not result.ok:
+            return EXIT_ERRORS
+        progress, paths = ProgressBar(), []
+        for material in as_document(result.ir).materials:
+            if not has_maps(material):
+                print(f"{material.name}: uniform, no maps to bake", file=sys.stderr)
+                continue
+            try:
+                paths += bake_files(material, args.output, args.size, args.format, args.seed, on_progress=progress)
+            except MapBakeError as exc:
+                raise UsageError(exc.reason) from None
+        for path in paths:
+            print(f"wrote {path}", file=sys.stderr)
+        return EXIT_OK
+
+
+class SheetCommand(Command):
+    name = "sheet"
+    help = "a contact sheet PNG of every stdlib procedural graph"
+
+    def add_arguments(self, parser: argparse.ArgumentParser) -> None:
+        parser.add_argument("-o", "--output", default="maps_sheet.png", help="output PNG (default maps_sheet.png)")
+        parser.add_argument("--size", type=int, default=256, help="tile size in pixels (default 256)")
+
+    def run(self, args: argparse.Namespace) -> int:
+        try:
+            path = render_contact_sheet(args.output, size=args.size)
+        except ImportError as exc:
+            raise UsageError(
+                f"the contact sheet cannot load: {exc}; install it with: pip install 'cnlmc[maps]'"
+            ) from None
+        except MapError as exc:
+            raise UsageError(str(exc)) from None
+        print(f"wrote {path}", file=sys.stderr)
+        return EXIT_OK
