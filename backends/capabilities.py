@@ -14,11 +14,9 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-if TYPE_CHECKING:
-    from cnlmc.material import Material
-
+from cnlmc.material import Material
 
 POLICIES = ("exact", "approximate", "bake", "drop", "error")
 # Options the compiler passes to every backend, beside the user's --option KEY=VALUE pairs.

@@ -10,8 +10,9 @@ from .blas import single_threaded_blas
 from .errors import MapError, did_you_mean
 from .grid import Grid, derive_seed
 from .registry import NODE_TYPES
-from .spec import Graph, Ref
 from .roles import finish
+from .schema import node_refs
+from .spec import Graph, Ref
 
 Progress = Callable[[str], None]
 
@@ -89,8 +90,6 @@ class Evaluation:
 
 def nodes_needed(graph: Graph, roles) -> list[str]:
     """Nodes the given outputs depend on (for progress totals)."""
-    from .schema import node_refs
-
     seen: list[str] = []
     stack = [graph.outputs[r] for r in roles if r in graph.outputs]
     while stack:

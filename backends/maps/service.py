@@ -17,17 +17,16 @@ from __future__ import annotations
 import tempfile
 from collections.abc import Callable, Collection, Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
+
+from cnlmc.material import Material
 
 from ..base import Artifact
 from .bake import OnProgress, bake
 from .errors import MapError
 from .writer import write_maps
-
-if TYPE_CHECKING:
-    from cnlmc.material import Material
 
 Arrays = dict[str, np.ndarray]
 Derive = Callable[[Arrays], Arrays]
