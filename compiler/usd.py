@@ -48,10 +48,10 @@ def author_material(
 
     from cnlmc.backends.exchange import usd as backend
     from cnlmc.backends.exchange.naming import unique_identifiers
-    from cnlmc.backends.exchange.options import exchange_options
     from cnlmc.backends.exchange.textures import bake_textures
+    from cnlmc.material import Material
 
-    materials = _compile(phrase, lexicon, seed)
+    materials = [Material.from_ir(m) for m in _compile(phrase, lexicon, seed)]
     sdf_path = Sdf.Path(path)
     if not sdf_path.IsAbsolutePath() or not sdf_path.IsPrimPath():
         raise ValueError(f"'{path}' is not an absolute prim path")
@@ -59,9 +59,9 @@ def author_material(
     missing = [str(p) for p, prim in zip(bind_to, targets) if not prim.IsValid()]
     if missing:
         raise ValueError(f"cannot bind: no prim at {', '.join(missing)}")
-    opts = exchange_options({"maps": "bake" if texture_dir else "none", "map_size": map_size, "seed": seed}, "usd", {})
+    opts = backend.TARGET.parse_options({"maps": "bake" if texture_dir else "none", "map_size": map_size, "seed": seed})
     textures = []
-    for material, ident in zip(materials, unique_identifiers(m["name"] for m in materials)):
+    for material, ident in zip(materials, unique_identifiers(m.name for m in materials)):
         tex, images = bake_textures(material, ident, opts)
         if images:
             tex = _write_textures(stage, Path(texture_dir), tex, images)

@@ -7,16 +7,19 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
+
+from cnlmc.material import RGB, Params
 
 MU_82 = 1.0 / 7.0  # cos 82 degrees, rounded as OpenPBR does: the F82 angle
 DIGITS = 6  # values are rounded so documents are stable (golden files)
 
 
-def clip01(values) -> list[float]:
+def clip01(values: Iterable[float]) -> list[float]:
     return [min(max(float(v), 0.0), 1.0) for v in values]
 
 
-def rounded(values) -> list[float]:
+def rounded(values: Iterable[float]) -> list[float]:
     return [round(float(v), DIGITS) for v in values]
 
 
@@ -27,12 +30,19 @@ def schlick(f0: float, mu: float) -> float:
     return f0 + (1.0 - f0) * (1.0 - mu) ** 5
 
 
-def conductor_f0(params: dict) -> list[float]:
+def measured(values: RGB | None, name: str) -> RGB:
+    """A conductor's measured optics (f0, f82, eta, k): the IR gives them for every conductor."""
+    if values is None:
+        raise ValueError(f"a conductor without {name} in the IR")
+    return values
+
+
+def conductor_f0(params: Params) -> list[float]:
     """The measured normal-incidence reflectance times the IR tint, clipped to [0, 1]."""
-    return clip01(f * t for f, t in zip(params["f0"], params["base_color"]))
+    return clip01(f * t for f, t in zip(measured(params.f0, "f0"), params.base_color))
 
 
-def f82_tint(params: dict) -> list[float]:
+def f82_tint(params: Params) -> list[float]:
     """OpenPBR's specular_color for a metal: F(82 deg) / Schlick(F0, 82 deg), clipped to [0, 1].
 
     OpenPBR (and MaterialX's generalized_schlick_bsdf color82) subtracts a term so that the
@@ -40,15 +50,15 @@ def f82_tint(params: dict) -> list[float]:
     measured F82, so the tint is f82 / schlick(f0, 1/7) (both scaled by the IR tint).
     """
     f0 = conductor_f0(params)
-    f82 = [f * t for f, t in zip(params["f82"], params["base_color"])]
+    f82 = [f * t for f, t in zip(measured(params.f82, "f82"), params.base_color)]
     return clip01(b / schlick(a, MU_82) for a, b in zip(f0, f82))
 
 
-def gulbrandsen_edge(params: dict) -> list[float]:
+def gulbrandsen_edge(params: Params) -> list[float]:
     """Standard Surface's specular_color for a metal: the edge tint g for which Gulbrandsen's
     artistic IOR mapping (MaterialX `artistic_ior`) gives back the measured eta at F0 = r."""
     edge = []
-    for r, n in zip(conductor_f0(params), params["eta"]):
+    for r, n in zip(conductor_f0(params), measured(params.eta, "eta")):
         r = min(r, 0.999)
         n_min = (1.0 - r) / (1.0 + r)
         n_max = (1.0 + math.sqrt(r)) / (1.0 - math.sqrt(r))
@@ -59,9 +69,9 @@ def gulbrandsen_edge(params: dict) -> list[float]:
 # ------------------------------------------------------------------------- roughness
 
 
-def alpha_pair(params: dict) -> tuple[float, float]:
+def alpha_pair(params: Params) -> tuple[float, float]:
     """(alpha_x, alpha_y) as microfacet widths (alpha is authoritative in the IR)."""
-    ax, ay = params["alpha"]  # widths in either convention: only r differs
+    ax, ay = params.alpha  # widths in either convention: only r differs
     return float(ax), float(ay)
 
 

@@ -10,22 +10,26 @@ from __future__ import annotations
 
 import functools
 import math
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 import MaterialX as mx
 
-from ..capabilities import ALL_FEATURES, EmitResult, check_material
-from ..registry import Artifact
-from . import materialx_native as native
-from .naming import phrase_text, unique_identifiers
-from .options import capabilities_for, exchange_options
-from .surface_inputs import SURFACE_NAMES, SURFACES, surface_inputs, tangent_rotation
-from .textures import bake_textures
+from cnlmc.material import Document, MapRef, Material
 
-NAME = "materialx"
-DESCRIPTION = "MaterialX document (.mtlx): OpenPBR Surface (or standard_surface) with baked image maps"
-OPTIONS = {"surface": ("open_pbr_surface", SURFACES)}
+from ..base import Artifact, Option, Options, Target, emit_each
+from ..capabilities import ALL_FEATURES, EmitResult
+from . import materialx_native as native
+from .naming import MaterialIdents, phrase_text, unique_identifiers
+from .options import Capabilities, capabilities_for, map_options
+from .surface_inputs import SURFACE_NAMES, SURFACES, Inputs, surface_inputs, tangent_rotation
+from .textures import Texture, Textures, bake_textures
+
 # maps: bake (default), none, or native (MaterialX nodes where materialx_native has a recipe)
 MAP_MODES = ("bake", "none", "native")
+SURFACE_OPTION = Option(
+    "surface", str, "open_pbr_surface", choices=SURFACES, doc="the MaterialX surface shader each material uses"
+)
 
 BAKED = ("bake", "procedural graph baked to an image read by an image node (no MaterialX nodes for cnlmc graphs)")
 _SHARED = {
@@ -49,7 +53,7 @@ _SHARED = {
     "maps.mask": ("drop", "a mask has no shading input of its own (the colour and roughness maps it drives are kept)"),
 }
 # Per-surface differences as a table.
-CAPABILITIES_BY_SURFACE = {
+CAPABILITIES_BY_SURFACE: dict[str, Capabilities] = {
     "open_pbr_surface": {
         **_SHARED,
         "model.conductor": (
@@ -101,7 +105,7 @@ def standard_library():
     return lib
 
 
-def _value(mx_type: str, value):
+def _value(mx_type: str, value: Any) -> Any:
     if mx_type == "color3":
         return mx.Color3(*value)
     if mx_type == "vector3":
@@ -109,11 +113,11 @@ def _value(mx_type: str, value):
     return value
 
 
-def _set(node, name: str, mx_type: str, value) -> None:
+def _set(node: Any, name: str, mx_type: str, value: Any) -> None:
     node.setInputValue(name, _value(mx_type, value), mx_type)
 
 
-def add_image(doc, ident: str, texture, mx_type: str):
+def add_image(doc: Any, ident: str, texture: Texture, mx_type: str) -> Any:
     image = doc.addNode("image", f"{ident}_{texture.role}_image", mx_type)
     file_input = image.setInputValue("file", texture.path, "filename")
     if texture.is_colour and mx_type == "color3":
@@ -121,40 +125,39 @@ def add_image(doc, ident: str, texture, mx_type: str):
     return image
 
 
-def texture_source(doc, material: dict, ident: str, texture, surface: str, inputs: dict):
+def texture_source(doc: Any, material: Material, ident: str, texture: Texture, surface: str, inputs: Inputs) -> Any:
     """The node whose output feeds the surface input for one baked role."""
     concept, mx_type = TEXTURE_INPUTS[texture.role]
     image = add_image(doc, ident, texture, mx_type)
     return map_source(doc, material, ident, texture.role, image, surface, inputs)
 
 
-def map_source(doc, material: dict, ident: str, role: str, image, surface: str, inputs: dict):
+def map_source(doc: Any, material: Material, ident: str, role: str, image: Any, surface: str, inputs: Inputs) -> Any:
     """A map's node (baked image or native recipe) -> the node that feeds the surface input."""
-    base = material["model"]["base"]
     if role == "normal":
         normal = doc.addNode("normalmap", f"{ident}_normalmap", "vector3")
         normal.setConnectedNode("in", image)
         return normal
-    if role == "base_color" and base == "conductor":  # the map is the tint on f0
+    if role == "base_color" and material.model.base == "conductor":  # the map is the tint on f0
         tint = doc.addNode("multiply", f"{ident}_base_color_f0", "color3")
         tint.setConnectedNode("in1", image)
         _set(tint, "in2", "color3", inputs[SURFACE_NAMES[surface]["base_color"]][1])
         return tint
-    if role == "roughness" and material["params"].get("alpha_convention") == "linear":
+    if role == "roughness" and material.params.alpha_convention == "linear":
         root = doc.addNode("sqrt", f"{ident}_roughness_sqrt", "float")  # alpha = r -> r' = sqrt(r)
         root.setConnectedNode("in", image)
         return root
     return image
 
 
-def texture_targets(material: dict, role: str, surface: str) -> list[str]:
+def texture_targets(material: Material, role: str, surface: str) -> list[str]:
     names = SURFACE_NAMES[surface]
-    if role == "base_color" and material["model"]["base"] == "glass":
+    if role == "base_color" and material.model.base == "glass":
         return [names["transmission_color"]]
     return [names[TEXTURE_INPUTS[role][0]]]
 
 
-def add_tangent_rotation(doc, ident: str, shader, angle: float, surface: str) -> None:
+def add_tangent_rotation(doc: Any, ident: str, shader: Any, angle: float, surface: str) -> None:
     """OpenPBR has no rotation input: tangent = cos(angle) T + sin(angle) B, normalised."""
     tangent = doc.addNode("tangent", f"{ident}_tangent", "vector3")
     bitangent = doc.addNode("bitangent", f"{ident}_bitangent", "vector3")
@@ -172,20 +175,25 @@ def add_tangent_rotation(doc, ident: str, shader, angle: float, surface: str) ->
     shader.setConnectedNode(SURFACE_NAMES[surface]["tangent"], unit)
 
 
-def native_maps(material: dict) -> dict:
+Natives = dict[str, MapRef]
+
+
+def native_maps(material: Material) -> Natives:
     """role -> map ref for the maps maps=native expresses with MaterialX nodes. A rust-like
     mask becomes metalness = 1 - mask, only on a conductor without a metallic map of its own."""
-    found = native.native_roles(material, tuple(TEXTURE_INPUTS) + ("mask",))
+    found = native.native_roles(material, (*TEXTURE_INPUTS, "mask"))
     if "mask" in found and (
-        material["model"]["base"] != "conductor"
-        or "metallic" in (material.get("maps") or {})
-        or native.recipe_for({**found["mask"], "output": "metallic"}) is None
+        material.model.base != "conductor"
+        or "metallic" in material.maps
+        or native.recipe_for(found["mask"].graph, "metallic") is None
     ):
         del found["mask"]
     return found
 
 
-def add_material(doc, material: dict, ident: str, surface: str, textures: dict, natives=None) -> None:
+def add_material(
+    doc: Any, material: Material, ident: str, surface: str, textures: Textures, natives: Natives | None = None
+) -> None:
     shader = doc.addNode(surface, f"SR_{ident}", "surfaceshader")
     inputs = surface_inputs(material, surface)
     for name, (mx_type, value) in inputs.items():
@@ -197,7 +205,7 @@ def add_material(doc, material: dict, ident: str, surface: str, textures: dict, 
         for target in texture_targets(material, role, surface):
             shader.setConnectedNode(target, source)
     for role, ref in (natives or {}).items():
-        node = native.build(doc, material, ident, role, ref)
+        node = native.build(doc, material, ident, ref)
         role = "metallic" if role == "mask" else role
         source = map_source(doc, material, ident, role, node, surface, inputs)
         for target in texture_targets(material, role, surface):
@@ -209,13 +217,24 @@ def add_material(doc, material: dict, ident: str, surface: str, textures: dict, 
     node.setDocString(phrase_text(material))
 
 
-def build_document(materials: list[dict], surface: str = "open_pbr_surface", textures=None, idents=None, natives=None):
-    """IR materials -> a MaterialX Document (not yet validated). `natives`: ident -> role -> map
-    ref for the maps expressed with MaterialX nodes (maps=native)."""
-    idents = idents or unique_identifiers(m["name"] for m in materials)
-    textures, natives = textures or {}, natives or {}
+def new_document() -> Any:
     doc = mx.createDocument()
     doc.setColorSpace("lin_rec709")
+    return doc
+
+
+def build_document(
+    materials: Sequence[Material],
+    surface: str = "open_pbr_surface",
+    textures: Mapping[str, Textures] | None = None,
+    idents: Sequence[str] | None = None,
+    natives: Mapping[str, Natives] | None = None,
+) -> Any:
+    """Typed materials -> a MaterialX Document (not yet validated). `natives`: ident -> role ->
+    map ref for the maps expressed with MaterialX nodes (maps=native)."""
+    idents = idents or unique_identifiers(m.name for m in materials)
+    textures, natives = textures or {}, natives or {}
+    doc = new_document()
     for material, ident in zip(materials, idents):
         add_material(doc, material, ident, surface, textures.get(ident, {}), natives.get(ident, {}))
     return doc
@@ -254,42 +273,48 @@ def to_xml(doc) -> str:
     return xml
 
 
-def map_mode(options: dict | None, target: str) -> tuple[dict, str]:
-    """Take maps=native out (the shared option check knows bake and none); check the value."""
-    options = dict(options or {})
-    mode = str(options.get("maps", "bake"))
-    if mode not in MAP_MODES:
-        raise ValueError(f"{target}: option maps={mode!r}: use one of {', '.join(MAP_MODES)}")
-    if mode == "native":
-        options["maps"] = "bake"
-    return options, mode
+class MaterialxBuild:
+    """One .mtlx being built: the shared emit loop adds the materials one at a time."""
+
+    def __init__(self, document: Document, options: Options):
+        self.options = options
+        self.idents = MaterialIdents(document.materials)
+        self.table = capabilities_for(CAPABILITIES_BY_SURFACE[options.surface], options.maps)
+        self.doc = new_document()
+
+    def natives(self, material: Material) -> Natives:
+        return native_maps(material) if self.options.maps == "native" else {}
+
+    def capabilities_of(self, material: Material) -> Capabilities:
+        """The surface's table; with maps=native, the maps with a recipe are approximations."""
+        return {**self.table, **{f"maps.{role}": native.NATIVE for role in self.natives(material)}}
+
+    def add(self, material: Material) -> list[Artifact]:
+        """The material's shader and material nodes; returns its baked images."""
+        ident, natives = self.idents[material], self.natives(material)
+        roles = tuple(r for r in TEXTURE_INPUTS if r not in natives)
+        textures, images = bake_textures(material, ident, self.options, roles=roles)
+        add_material(self.doc, material, ident, self.options.surface, textures, natives)
+        return images
 
 
-def prepare(ir: dict, options: dict, target: str = NAME, extra=None):
-    """Options, identifiers, capability notes and baked textures for a list of materials.
-    With maps=native, `natives` (ident -> role -> map ref) are the maps with a recipe; the
-    rest are baked through the same capability path."""
-    options, mode = map_mode(options, target)
-    opts = exchange_options(options, target, {**OPTIONS, **(extra or {})})
-    opts["maps"] = mode
-    caps = capabilities_for(CAPABILITIES_BY_SURFACE[opts["surface"]], opts)
-    materials = ir["materials"]
-    idents = unique_identifiers(m["name"] for m in materials)
-    notes, textures, natives, artifacts = [], {}, {}, []
-    for material, ident in zip(materials, idents):
-        natives[ident] = native_maps(material) if mode == "native" else {}
-        material_caps = {**caps, **{f"maps.{role}": native.NATIVE for role in natives[ident]}}
-        check_material(notes, target, material_caps, material)
-        roles = tuple(r for r in TEXTURE_INPUTS if r not in natives[ident])
-        textures[ident], baked = bake_textures(
-            material, ident, {**opts, "maps": "none" if mode == "none" else "bake"}, roles=roles
-        )
-        artifacts += baked
-    return opts, idents, notes, textures, natives, artifacts
+class MaterialxTarget(Target):
+    name = "materialx"
+    description = "MaterialX document (.mtlx): OpenPBR Surface (or standard_surface) with baked image maps"
+    capabilities = CAPABILITIES
+    options = (*map_options(MAP_MODES), SURFACE_OPTION)
+
+    def emit(self, document: Document, options: Options) -> EmitResult:
+        build = MaterialxBuild(document, options)
+        images = emit_each(self, document, build.add, build.capabilities_of)
+        validate(build.doc)
+        return EmitResult([Artifact("materials.mtlx", to_xml(build.doc)), *images.artifacts], images.notes)
 
 
-def emit(ir: dict, options: dict) -> EmitResult:
-    opts, idents, notes, textures, natives, images = prepare(ir, options)
-    doc = build_document(ir["materials"], opts["surface"], textures, idents, natives)
-    validate(doc)
-    return EmitResult([Artifact("materials.mtlx", to_xml(doc))] + images, notes)
+TARGET = MaterialxTarget()
+NAME, DESCRIPTION = TARGET.name, TARGET.description
+
+
+def emit(ir: Document | Mapping[str, Any], options: Mapping[str, object] | None = None) -> EmitResult:
+    """The target on an IR (typed or JSON form) with raw `--option` pairs."""
+    return TARGET.emit_ir(ir, options)

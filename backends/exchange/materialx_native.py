@@ -11,8 +11,12 @@ are similar to, not the same pixels as, the baked maps. Maps without a recipe ar
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Collection, Iterable, Mapping
+from typing import Any
 
 import MaterialX as mx
+
+from cnlmc.material import MapRef, Material, Params
 
 NATIVE = ("approximate", "expressed with MaterialX nodes: similar pattern, not the same pixels as cnlmc's baked map")
 
@@ -20,19 +24,17 @@ _TYPES = {"color3": mx.Color3, "vector2": mx.Vector2, "vector3": mx.Vector3}
 
 
 class Ctx:
-    """What a recipe needs: the document, a name prefix, the map params, the graph inputs."""
+    """What a recipe needs: the document, a name prefix, the map's graph params, the material's params."""
 
-    def __init__(self, doc, ident: str, graph: str, params: dict, material: dict):
-        self.doc, self.prefix, self.params = doc, f"{ident}_{graph}", params
-        self.material_params = material["params"]
+    def __init__(self, doc: Any, ident: str, ref: MapRef, material: Material):
+        self.doc, self.prefix, self.graph_params = doc, f"{ident}_{ref.graph}", ref.params
+        self.material: Params = material.params
 
     def param(self, name: str, default: float) -> float:
-        return float(self.params.get(name, default))
+        """A graph parameter; `default`: the recipe's value where the IR leaves it to the graph."""
+        return float(self.graph_params.get(name, default))
 
-    def input(self, name: str, default):
-        return self.material_params.get(name, default)
-
-    def node(self, category: str, name: str, mx_type: str, **inputs):
+    def node(self, category: str, name: str, mx_type: str, **inputs: Any) -> Any:
         """Add a node (or reuse one of that name: maps of one graph share their pattern)."""
         full = f"{self.prefix}_{name}"
         existing = self.doc.getNode(full)
@@ -51,7 +53,7 @@ class Ctx:
                 node.setInputValue(key, float(value), "float")
         return node
 
-    def uv(self, name: str, frequency: float, offset=(0.0, 0.0)):
+    def uv(self, name: str, frequency: float, offset: tuple[float, float] = (0.0, 0.0)) -> Any:
         """texcoord * frequency (+ offset, so patterns of one graph decorrelate)."""
         tex = self.node("texcoord", "texcoord", "vector2")
         scaled = self.node("multiply", f"{name}_uv", "vector2", in1=tex, in2=round(frequency, 6))
@@ -59,26 +61,26 @@ class Ctx:
             return scaled
         return self.node("add", f"{name}_uv_offset", "vector2", in1=scaled, in2=("vector2", offset))
 
-    def unit(self, name: str, noise):
+    def unit(self, name: str, noise: Any) -> Any:
         """A noise in about [-1, 1] -> [0, 1], clamped."""
         remap = self.node("remap", f"{name}_01", "float", **{"in": noise}, inlow=-1.0, inhigh=1.0)
         return self.node("clamp", f"{name}_clamp", "float", **{"in": remap})
 
 
-def _colour(values) -> tuple:
+def _colour(values: Iterable[float]) -> tuple[str, tuple[float, ...]]:
     return ("color3", tuple(round(float(v), 6) for v in values))
 
 
-def _scaled(colour, factor: float) -> tuple:
+def _scaled(colour: Iterable[float], factor: float) -> tuple[str, tuple[float, ...]]:
     return _colour(min(max(c * factor, 0.0), 1.0) for c in colour)
 
 
 # ---------------------------------------------------------------------------- sandblasted
 
 
-def sandblasted_roughness(ctx: Ctx):
+def sandblasted_roughness(ctx: Ctx) -> Any:
     """Low-frequency fractal2d blotches: roughness +-0.05*contrast around the material's."""
-    r, contrast = float(ctx.input("roughness", 0.6)), ctx.param("contrast", 1.0)
+    r, contrast = float(ctx.material.roughness), ctx.param("contrast", 1.0)
     blotches = ctx.node("fractal2d", "blotches", "float", octaves=3, texcoord=ctx.uv("blotches", 4.0))
     spread = 0.05 * contrast
     remap = ctx.node(
@@ -87,7 +89,7 @@ def sandblasted_roughness(ctx: Ctx):
     return ctx.node("clamp", "roughness_clamp", "float", **{"in": remap})
 
 
-def sandblasted_normal(ctx: Ctx):
+def sandblasted_normal(ctx: Ctx) -> Any:
     """Dense fine noise2d pits -> heighttonormal (an encoded tangent-space normal)."""
     scale, strength = ctx.param("scale", 1.0), ctx.param("strength", 1.0)
     pits = ctx.node("noise2d", "pits", "float", amplitude=0.5, pivot=0.5, texcoord=ctx.uv("pits", 96.0 * scale))
@@ -97,7 +99,7 @@ def sandblasted_normal(ctx: Ctx):
 # --------------------------------------------------------------------------------- marble
 
 
-def marble_veins(ctx: Ctx):
+def marble_veins(ctx: Ctx) -> Any:
     """Vein darkness in [0,1]: 1 - |sin(bands + turbulence)|^0.3 (thin dark lines)."""
     scale, grain = ctx.param("scale", 1.0), ctx.param("grain", 1.0)
     angle = math.radians(ctx.param("direction", 30.0))
@@ -119,22 +121,22 @@ def marble_veins(ctx: Ctx):
     return ctx.node("subtract", "veins", "float", in1=1.0, in2=lines)
 
 
-def marble_color(ctx: Ctx):
+def marble_color(ctx: Ctx) -> Any:
     """mix(base_color, darker vein colour, veins)."""
-    base = ctx.input("base_color", [0.85, 0.84, 0.8])
+    base = ctx.material.base_color
     dark = _scaled(base, 1.0 - min(0.45 * ctx.param("contrast", 1.0), 1.0))
     return ctx.node("mix", "color", "color3", fg=dark, bg=_colour(base), mix=marble_veins(ctx))
 
 
-def marble_roughness(ctx: Ctx):
-    r = float(ctx.input("roughness", 0.1))
+def marble_roughness(ctx: Ctx) -> Any:
+    r = float(ctx.material.roughness)
     return ctx.node("remap", "roughness", "float", **{"in": marble_veins(ctx)}, outlow=r, outhigh=r + 0.08)
 
 
 # -------------------------------------------------------------------------------- granite
 
 
-def granite_minerals(ctx: Ctx):
+def granite_minerals(ctx: Ctx) -> Any:
     """Crystals (cellnoise2d, one value per cell) blended with fine worleynoise2d speckles."""
     scale = ctx.param("scale", 1.0)
     crystals = ctx.node("cellnoise2d", "crystals", "float", texcoord=ctx.uv("crystals", 40.0 * scale))
@@ -144,16 +146,16 @@ def granite_minerals(ctx: Ctx):
     return ctx.node("mix", "minerals", "float", fg=speckle, bg=crystals, mix=0.35)
 
 
-def granite_color(ctx: Ctx):
+def granite_color(ctx: Ctx) -> Any:
     """mix(dark speckle colour, light crystal colour, minerals) around base_color."""
-    base, contrast = ctx.input("base_color", [0.45, 0.4, 0.38]), ctx.param("contrast", 1.0)
+    base, contrast = ctx.material.base_color, ctx.param("contrast", 1.0)
     dark = _scaled(base, max(1.0 - 0.85 * contrast, 0.0))
     light = _scaled(base, 1.0 + 0.35 * contrast)
     return ctx.node("mix", "color", "color3", fg=light, bg=dark, mix=granite_minerals(ctx))
 
 
-def granite_roughness(ctx: Ctx):
-    r = float(ctx.input("roughness", 0.35))
+def granite_roughness(ctx: Ctx) -> Any:
+    r = float(ctx.material.roughness)
     return ctx.node("remap", "roughness", "float", **{"in": granite_minerals(ctx)}, outlow=r + 0.05, outhigh=r - 0.05)
 
 
@@ -162,7 +164,7 @@ def granite_roughness(ctx: Ctx):
 RUST_DARK, RUST_LIGHT = (0.09, 0.03, 0.012), (0.5, 0.2, 0.05)
 
 
-def rust_mask(ctx: Ctx):
+def rust_mask(ctx: Ctx) -> Any:
     """Corrosion patches: fractal2d minus worley pits, thresholded by coverage (soft edge)."""
     scale, coverage = ctx.param("scale", 1.0), ctx.param("coverage", 0.4)
     patches = ctx.node(
@@ -182,7 +184,7 @@ def rust_mask(ctx: Ctx):
     )
 
 
-def rust_flakes(ctx: Ctx):
+def rust_flakes(ctx: Ctx) -> Any:
     scale = ctx.param("scale", 1.0)
     flakes = ctx.node("fractal2d", "flakes", "float", octaves=4, texcoord=ctx.uv("flakes", 16.0 * scale, (0.41, 0.23)))
     contrast = ctx.node(
@@ -191,25 +193,24 @@ def rust_flakes(ctx: Ctx):
     return ctx.unit("flakes", contrast)
 
 
-def rust_color(ctx: Ctx):
+def rust_color(ctx: Ctx) -> Any:
     """mix(base_color, rust colour (dark..orange flakes), mask)."""
     flaky = ctx.node("mix", "rust_color", "color3", fg=_colour(RUST_LIGHT), bg=_colour(RUST_DARK), mix=rust_flakes(ctx))
-    return ctx.node(
-        "mix", "color", "color3", fg=flaky, bg=_colour(ctx.input("base_color", [0.9, 0.9, 0.9])), mix=rust_mask(ctx)
-    )
+    return ctx.node("mix", "color", "color3", fg=flaky, bg=_colour(ctx.material.base_color), mix=rust_mask(ctx))
 
 
-def rust_roughness(ctx: Ctx):
+def rust_roughness(ctx: Ctx) -> Any:
     rough = ctx.node("remap", "rust_roughness", "float", **{"in": rust_flakes(ctx)}, outlow=0.75, outhigh=0.95)
-    return ctx.node("mix", "roughness", "float", fg=rough, bg=float(ctx.input("roughness", 0.3)), mix=rust_mask(ctx))
+    return ctx.node("mix", "roughness", "float", fg=rough, bg=float(ctx.material.roughness), mix=rust_mask(ctx))
 
 
-def rust_metallic(ctx: Ctx):
+def rust_metallic(ctx: Ctx) -> Any:
     """Metalness = 1 - mask (bare metal between the patches)."""
     return ctx.node("subtract", "metallic", "float", in1=1.0, in2=rust_mask(ctx))
 
 
-RECIPES = {
+Recipe = Callable[[Ctx], Any]
+RECIPES: Mapping[tuple[str, str], Recipe] = {
     ("sandblasted", "roughness"): sandblasted_roughness,
     ("sandblasted", "normal"): sandblasted_normal,
     ("marble", "color"): marble_color,
@@ -223,18 +224,22 @@ RECIPES = {
 }
 
 
-def recipe_for(ref: dict):
-    return RECIPES.get((ref["graph"], ref["output"]))
+def recipe_for(graph: str, output: str) -> Recipe | None:
+    return RECIPES.get((graph, output))
 
 
-def native_roles(material: dict, roles) -> dict:
+def native_roles(material: Material, roles: Collection[str]) -> dict[str, MapRef]:
     """role -> map ref for the maps of a material that have a recipe (roles: the ones used)."""
     return {
-        role: ref for role, ref in (material.get("maps") or {}).items() if role in roles and recipe_for(ref) is not None
+        role: ref
+        for role, ref in material.maps.items()
+        if role in roles and recipe_for(ref.graph, ref.output) is not None
     }
 
 
-def build(doc, material: dict, ident: str, role: str, ref: dict):
+def build(doc: Any, material: Material, ident: str, ref: MapRef) -> Any:
     """Add the recipe's nodes; returns the node standing for the map."""
-    ctx = Ctx(doc, ident, ref["graph"], ref.get("params") or {}, material)
-    return recipe_for(ref)(ctx)
+    recipe = recipe_for(ref.graph, ref.output)
+    if recipe is None:
+        raise KeyError(f"no MaterialX recipe for {ref.graph}.{ref.output}")
+    return recipe(Ctx(doc, ident, ref, material))

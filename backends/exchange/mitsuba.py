@@ -10,33 +10,42 @@ bitmap textures from baked maps. Every value is escaped by the template engine.
 from __future__ import annotations
 
 import functools
+import json
 import math
 import re
+from collections.abc import Callable, Iterable, Mapping
+from importlib.metadata import PackageNotFoundError
+from importlib.metadata import version as dist_version
+from typing import Any
 
+import jinja2
+import markupsafe
 import numpy as np
 
-from ..capabilities import ALL_FEATURES, EmitResult, check_material
-from ..registry import Artifact
-from .conversions import alpha_pair, alpha_to_roughness, clip01, conductor_f0, rounded
-from .naming import unique_identifiers, xml_text
-from .options import capabilities_for, exchange_options
-from .textures import bake_textures
+from cnlmc.conventions import ALPHA_MIRROR, alpha_isotropic, alpha_of
+from cnlmc.material import Document, Material
 
-NAME = "mitsuba"
-DESCRIPTION = "Mitsuba 3 scene XML (full preview scene or BSDF fragment) with baked bitmap textures"
-OPTIONS = {
-    "form": ("scene", ("scene", "fragment")),
-    "spp": ("64", None),
-    "resolution": ("256", None),
-    "max_depth": ("8", None),
-    "envmap": ("", None),
-    "bsdf": ("native", ("native", "cnlm")),
-}
-ALPHA_MIRROR = 1e-3
+from ..base import Artifact, Option, OptionError, Options, Target, emit_each
+from ..capabilities import ALL_FEATURES, EmitResult
+from .conversions import alpha_pair, alpha_to_roughness, clip01, conductor_f0, measured, rounded
+from .naming import MaterialIdents, xml_text
+from .options import Capabilities, capabilities_for, map_options
+from .textures import Texture, bake_textures
+
+OPTIONS = (
+    *map_options(),
+    Option("form", str, "scene", choices=("scene", "fragment"), doc="scene: a preview scene; fragment: BSDFs only"),
+    Option("spp", int, 64, doc="samples per pixel of the scene"),
+    Option("resolution", int, 256, doc="the scene's image width and height"),
+    Option("max_depth", int, 8, doc="the path tracer's maximum depth"),
+    Option("envmap", str, "", doc="an environment map lighting the scene (default: constant light)"),
+    Option("bsdf", str, "native", choices=("native", "cnlm"), doc="native plugins, or cnlmc's own BSDF (cnlm)"),
+)
+COUNTS = ("spp", "resolution", "max_depth")  # at least 1
 TEXTURED_ALPHA = ("roughconductor", "roughdielectric")  # roughplastic's alpha is a float
 
 BAKED = ("bake", "procedural graph baked to a bitmap texture")
-CAPABILITIES = {
+CAPABILITIES: Capabilities = {
     "model.diffuse": ("exact", ""),
     "model.dielectric": (
         "approximate",
@@ -71,18 +80,22 @@ CAPABILITIES = {
 }
 assert set(CAPABILITIES) == set(ALL_FEATURES)
 #: bsdf=cnlm: the plugin evaluates cnlmc's BSDF itself; like the GLSL backend it has no metallic map.
-CNLM_CAPABILITIES = dict.fromkeys(ALL_FEATURES, ("exact", ""))
+CNLM_CAPABILITIES: dict[str, tuple[str, str]] = dict.fromkeys(ALL_FEATURES, ("exact", ""))
 CNLM_CAPABILITIES["maps.metallic"] = ("drop", "no IR model reads a metallic map")
 USED_MAPS = ("base_color", "roughness", "normal")
-#: `bsdf=cnlm`: cnlmc's own BSDF through the `cnlm` plugin (backends/exchange/mitsuba_cnlm.py), which
+#: `bsdf=cnlm`: cnlmc's own BSDF through the `cnlm` plugin (mitsuba_cnlm.py), which
 #: reads these maps itself (normals still go through `normalmap`).
 CNLM_MAPS = ("base_color", "roughness", "normal", "mask")
 
 
 # ----------------------------------------------------------------------------- properties
 
+Prop = dict[str, Any]
+#: role -> Texture for the bitmaps a BSDF reads; roughplastic's 'mean_alpha' -> float beside them
+BsdfTextures = dict[str, Any]
 
-def prop(kind: str, name: str, value) -> dict:
+
+def prop(kind: str, name: str, value: Any) -> Prop:
     if kind == "float":
         value = f"{float(value):.6g}"
     elif kind == "rgb":
@@ -90,36 +103,40 @@ def prop(kind: str, name: str, value) -> dict:
     return {"kind": kind, "name": name, "value": value}
 
 
-def bitmap(name: str, texture) -> dict:
+def bitmap(name: str, texture: Texture) -> Prop:
     props = [prop("string", "filename", texture.path), prop("boolean", "raw", texture.encoding != "srgb")]
     return prop("texture", name, {"type": "bitmap", "props": props})
 
 
-def colour(name: str, value, texture=None) -> dict:
+def colour(name: str, value: Iterable[float], texture: Texture | None = None) -> Prop:
     return bitmap(name, texture) if texture else prop("rgb", name, rounded(clip01(value)))
 
 
-def node(plugin: str, props, children=()) -> dict:
+def node(plugin: str, props: Iterable[Prop], children: Iterable[Prop] = ()) -> Prop:
     return {"type": plugin, "id": None, "props": list(props), "children": list(children)}
 
 
 # -------------------------------------------------------------------------- plugin choice
 
 
-def plugin_for(material: dict) -> str:
+def plugin_for(material: Material) -> str:
     """The Mitsuba plugin for an IR material (the decision table, in order)."""
-    model, params = material["model"], material["params"]
-    base = model["base"]
+    model = material.model
+    base = model.base
     if base == "diffuse":
         return "diffuse"
-    if model["coat"] or (base == "dielectric" and model["anisotropic"]):
+    if model.coat or (base == "dielectric" and model.anisotropic):
         return "principled"
-    mirror = max(alpha_pair(params)) < ALPHA_MIRROR
+    mirror = max(alpha_pair(material.params)) < ALPHA_MIRROR
     return {
         "dielectric": ("roughplastic", "plastic"),
         "conductor": ("roughconductor", "conductor"),
         "glass": ("roughdielectric", "dielectric"),
     }[base][mirror]
+
+
+def anisotropy_of(material: Material) -> float:
+    return float(material.params.anisotropy) if material.model.anisotropic else 0.0
 
 
 class AlphaMaps:
@@ -128,35 +145,34 @@ class AlphaMaps:
     roughplastic takes only a uniform alpha: it gets the mean of the map (`mean_alpha`).
     """
 
-    def __init__(self, material: dict):
-        self.params = material["params"]
+    def __init__(self, material: Material):
+        self.convention = material.params.alpha_convention
         self.plugin = plugin_for(material)
-        self.anisotropy = float(self.params.get("anisotropy") or 0.0) if material["model"]["anisotropic"] else 0.0
-        self.mean_alpha = None
+        self.anisotropy = anisotropy_of(material)
+        self.mean_alpha: float | None = None
 
-    def __call__(self, arrays: dict) -> dict:
+    def __call__(self, arrays: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
         if "roughness" not in arrays:
             return arrays
         r = np.asarray(arrays.pop("roughness"), np.float32)
-        alpha = r if self.params.get("alpha_convention") == "linear" else r * r
+        alpha = alpha_isotropic(r, self.convention)
         if self.plugin == "principled":
             arrays["principled_roughness"] = np.sqrt(alpha)
         elif self.plugin not in TEXTURED_ALPHA:
             self.mean_alpha = float(alpha.mean())  # plastic: one float; mirrors: none
         elif self.anisotropy:
-            s = math.sqrt(1.0 - 0.9 * self.anisotropy)
-            arrays["alpha_u"], arrays["alpha_v"] = np.clip(alpha / s, 0, 1), alpha * s
+            arrays["alpha_u"], arrays["alpha_v"] = alpha_of(r, self.anisotropy, self.convention)
         else:
             arrays["alpha"] = alpha
         return arrays
 
 
-def roughness_props(material: dict, tex: dict) -> list[dict]:
-    ax, ay = alpha_pair(material["params"])
+def roughness_props(material: Material, tex: BsdfTextures) -> list[Prop]:
+    ax, ay = alpha_pair(material.params)
     if "mean_alpha" in tex:
         ax = ay = tex["mean_alpha"]
     props = [prop("string", "distribution", "ggx")]
-    if material["model"]["anisotropic"] and abs(ax - ay) > 1e-9:
+    if material.model.anisotropic and abs(ax - ay) > 1e-9:
         for name, value in (("alpha_u", ax), ("alpha_v", ay)):
             props.append(bitmap(name, tex[name]) if name in tex else prop("float", name, value))
     else:
@@ -164,47 +180,47 @@ def roughness_props(material: dict, tex: dict) -> list[dict]:
     return props
 
 
-def diffuse_bsdf(material, tex):
-    return node("diffuse", [colour("reflectance", material["params"]["base_color"], tex.get("base_color"))])
+def diffuse_bsdf(material: Material, tex: BsdfTextures) -> Prop:
+    return node("diffuse", [colour("reflectance", material.params.base_color, tex.get("base_color"))])
 
 
-def plastic_bsdf(material, tex, rough: bool):
-    params = material["params"]
+def plastic_bsdf(material: Material, tex: BsdfTextures, rough: bool) -> Prop:
+    params = material.params
     props = [
-        prop("float", "int_ior", params["ior"]),
+        prop("float", "int_ior", params.ior),
         prop("float", "ext_ior", 1.0),
-        colour("diffuse_reflectance", params["base_color"], tex.get("base_color")),
+        colour("diffuse_reflectance", params.base_color, tex.get("base_color")),
     ]
     return node("roughplastic" if rough else "plastic", (roughness_props(material, tex) if rough else []) + props)
 
 
-def conductor_bsdf(material, tex, rough: bool):
-    params = material["params"]
+def conductor_bsdf(material: Material, tex: BsdfTextures, rough: bool) -> Prop:
+    params = material.params
     props = [
-        prop("rgb", "eta", rounded(params["eta"])),
-        prop("rgb", "k", rounded(params["k"])),
-        colour("specular_reflectance", params["base_color"], tex.get("base_color")),
+        prop("rgb", "eta", rounded(measured(params.eta, "eta"))),
+        prop("rgb", "k", rounded(measured(params.k, "k"))),
+        colour("specular_reflectance", params.base_color, tex.get("base_color")),
     ]
     return node("roughconductor" if rough else "conductor", (roughness_props(material, tex) if rough else []) + props)
 
 
-def glass_bsdf(material, tex, rough: bool):
-    params = material["params"]
+def glass_bsdf(material: Material, tex: BsdfTextures, rough: bool) -> Prop:
+    params = material.params
     props = [
-        prop("float", "int_ior", params["ior"]),
+        prop("float", "int_ior", params.ior),
         prop("float", "ext_ior", 1.0),
-        colour("specular_transmittance", params["base_color"], tex.get("base_color")),
+        colour("specular_transmittance", params.base_color, tex.get("base_color")),
     ]
     return node("roughdielectric" if rough else "dielectric", (roughness_props(material, tex) if rough else []) + props)
 
 
-def principled_bsdf(material, tex):
+def principled_bsdf(material: Material, tex: BsdfTextures) -> Prop:
     """Coats and anisotropic plastics: Mitsuba's principled (Disney) BSDF."""
-    model, params = material["model"], material["params"]
-    base = model["base"]
+    model, params = material.model, material.params
+    base = model.base
     ax, ay = alpha_pair(params)
     alpha = math.sqrt(ax * ay)
-    base_color = conductor_f0(params) if base == "conductor" else params["base_color"]
+    base_color = conductor_f0(params) if base == "conductor" else params.base_color
     props = [
         colour("base_color", base_color, tex.get("base_color") if base != "conductor" else None),
         prop("float", "metallic", 1.0 if base == "conductor" else 0.0),
@@ -215,20 +231,20 @@ def principled_bsdf(material, tex):
         if "principled_roughness" in tex
         else prop("float", "roughness", roughness)
     )
-    if model["anisotropic"]:
-        props.append(prop("float", "anisotropic", min(max(float(params.get("anisotropy") or 0.0), 0.0), 1.0)))
-    if "ior" in params:
-        props.append(prop("float", "eta", params["ior"]))
+    if model.anisotropic:
+        props.append(prop("float", "anisotropic", min(max(float(params.anisotropy), 0.0), 1.0)))
+    if "ior" in params.present:
+        props.append(prop("float", "eta", params.ior))
     if base == "glass":
         props.append(prop("float", "spec_trans", 1.0))
-    if model["coat"] and params.get("coat"):
-        coat_alpha = float(params["coat"]["alpha"][0])
+    if model.coat and params.coat is not None:
+        coat_alpha = float(params.coat.alpha[0])
         gloss = min(max((0.1 - coat_alpha) / 0.099, 0.0), 1.0)  # Disney: alpha_c = lerp(0.1, 0.001, gloss)
         props += [prop("float", "clearcoat", 1.0), prop("float", "clearcoat_gloss", gloss)]
     return node("principled", props)
 
 
-BUILDERS = {
+BUILDERS: Mapping[str, Callable[[Material, BsdfTextures], Prop]] = {
     "diffuse": diffuse_bsdf,
     "principled": principled_bsdf,
     "roughplastic": functools.partial(plastic_bsdf, rough=True),
@@ -241,28 +257,27 @@ BUILDERS = {
 TRANSMISSIVE = {"roughdielectric", "dielectric"}
 
 
-def cnlm_bsdf(material: dict, tex: dict) -> dict:
+def cnlm_bsdf(material: Material, tex: BsdfTextures) -> Prop:
     """The `cnlm` plugin: the IR material (name, model, params) as JSON plus the raw maps it
     reads. '$' is written as a JSON escape: Mitsuba's loader substitutes $parameters in strings."""
-    import json
-
-    shading = {key: material[key] for key in ("name", "model", "params")}
+    ir = material.to_ir()
+    shading = {key: ir[key] for key in ("name", "model", "params")}
     text = json.dumps(shading, sort_keys=True, default=float).replace("$", "\\u0024")
     props = [prop("string", "material", text)]
     props += [bitmap(role, tex[role]) for role in ("base_color", "roughness", "mask") if role in tex]
     return node("cnlm", props)
 
 
-def uses_cnlm(material: dict, opts: dict) -> bool:
+def uses_cnlm(material: Material, options: Options) -> bool:
     """bsdf=cnlm applies to every reflective model; glass keeps roughdielectric (its exact match)."""
-    return opts.get("bsdf") == "cnlm" and material["model"]["base"] != "glass"
+    return bool(options.bsdf == "cnlm" and material.model.base != "glass")
 
 
-def bsdf_for(material: dict, ident: str, tex: dict, cnlm: bool = False) -> dict:
+def bsdf_for(material: Material, ident: str, tex: BsdfTextures, cnlm: bool = False) -> Prop:
     """The BSDF tree: plugin, then twosided (opaque ones), then normalmap; the root gets the id."""
     plugin = "cnlm" if cnlm else plugin_for(material)
     tree = cnlm_bsdf(material, tex) if cnlm else BUILDERS[plugin](material, tex)
-    if plugin not in TRANSMISSIVE and material["model"]["base"] != "glass":
+    if plugin not in TRANSMISSIVE and material.model.base != "glass":
         tree = node("twosided", [], [tree])
     if "normal" in tex:
         tree = node("normalmap", [bitmap("normalmap", tex["normal"])], [tree])
@@ -273,23 +288,19 @@ def bsdf_for(material: dict, ident: str, tex: dict, cnlm: bool = False) -> dict:
 # ------------------------------------------------------------------------------- templates
 
 
-def comment(value) -> str:
+def comment(value: object) -> str:
     """Safe inside <!-- -->: no '--', no trailing '-', one line."""
     text = xml_text(value).replace("\r", " ").replace("\n", " ")
     text = re.sub("-(?=-)", "- ", text)
     return text + " " if text.endswith("-") else text
 
 
-def _finalize(value):
-    import markupsafe
-
+def _finalize(value: Any) -> Any:
     return xml_text(value) if isinstance(value, str) and not isinstance(value, markupsafe.Markup) else value
 
 
 @functools.lru_cache(maxsize=1)
-def environment():
-    import jinja2
-
+def environment() -> jinja2.Environment:
     env = jinja2.Environment(
         loader=jinja2.PackageLoader("cnlmc.backends.exchange", "templates/mitsuba"),
         autoescape=True,
@@ -301,7 +312,7 @@ def environment():
     return env
 
 
-def layout(count: int) -> tuple[list[list[float]], dict]:
+def layout(count: int) -> tuple[list[list[float]], dict[str, Any]]:
     """Sphere centres on a grid and a camera that frames them."""
     cols = math.ceil(math.sqrt(count))
     rows = math.ceil(count / cols)
@@ -318,16 +329,14 @@ def layout(count: int) -> tuple[list[list[float]], dict]:
 @functools.lru_cache(maxsize=1)
 def version() -> str:
     try:
-        from importlib.metadata import version as dist_version
-
         return dist_version("cnlmc")
-    except Exception:  # pragma: no cover - not installed
+    except PackageNotFoundError:  # pragma: no cover - not installed
         return "dev"
 
 
-def render_xml(entries: list[dict], opts: dict) -> str:
+def render_xml(entries: list[dict[str, Any]], options: Options) -> str:
     env = environment()
-    if opts["form"] == "fragment":
+    if options.form == "fragment":
         return env.get_template("fragment.xml.j2").render(materials=entries, version=version())
     centres, camera = layout(len(entries))
     for entry, centre in zip(entries, centres):
@@ -335,41 +344,66 @@ def render_xml(entries: list[dict], opts: dict) -> str:
     return env.get_template("scene.xml.j2").render(
         materials=entries,
         camera=camera,
-        spp=opts["spp"],
-        resolution=opts["resolution"],
-        max_depth=opts["max_depth"],
-        envmap=opts["envmap"],
+        spp=options.spp,
+        resolution=options.resolution,
+        max_depth=options.max_depth,
+        envmap=options.envmap,
         version=version(),
     )
 
 
-def parse_options(options: dict) -> dict:
-    opts = exchange_options(options, NAME, OPTIONS)
-    for name in ("spp", "resolution", "max_depth"):
-        try:
-            opts[name] = int(opts[name])
-        except ValueError:
-            raise ValueError(f"mitsuba: option {name}={opts[name]!r} must be a whole number") from None
-        if opts[name] < 1:
-            raise ValueError(f"mitsuba: option {name} must be at least 1")
-    return opts
+# ------------------------------------------------------------------------------------ emit
 
 
-def emit(ir: dict, options: dict) -> EmitResult:
-    opts = parse_options(options)
-    caps = capabilities_for(CAPABILITIES, opts)
-    materials = ir["materials"]
-    notes, entries, images = [], [], []
-    for material, ident in zip(materials, unique_identifiers(m["name"] for m in materials)):
-        cnlm = uses_cnlm(material, opts)
-        check_material(notes, NAME, capabilities_for(CNLM_CAPABILITIES, opts) if cnlm else caps, material)
+class MitsubaScene:
+    """One scene (or fragment) being built: the shared emit loop adds the materials' BSDFs."""
+
+    def __init__(self, document: Document, options: Options):
+        self.options = options
+        self.idents = MaterialIdents(document.materials)
+        self.native = capabilities_for(CAPABILITIES, options.maps)
+        self.cnlm = capabilities_for(CNLM_CAPABILITIES, options.maps)
+        self.entries: list[dict[str, Any]] = []
+
+    def capabilities_of(self, material: Material) -> Capabilities:
+        return self.cnlm if uses_cnlm(material, self.options) else self.native
+
+    def add(self, material: Material) -> list[Artifact]:
+        """The material's BSDF entry; returns its baked bitmaps."""
+        ident, cnlm = self.idents[material], uses_cnlm(material, self.options)
         alpha_maps = None if cnlm else AlphaMaps(material)
-        tex, baked = bake_textures(material, ident, opts, roles=CNLM_MAPS if cnlm else USED_MAPS, derive=alpha_maps)
+        roles = CNLM_MAPS if cnlm else USED_MAPS
+        textures, images = bake_textures(material, ident, self.options, roles=roles, derive=alpha_maps)
+        tex: BsdfTextures = dict(textures)
         if alpha_maps and alpha_maps.mean_alpha is not None and plugin_for(material) == "roughplastic":
             tex["mean_alpha"] = alpha_maps.mean_alpha
-        images += baked
-        entries.append(
-            {"ident": ident, "phrase": material.get("phrase", ""), "bsdf": bsdf_for(material, ident, tex, cnlm)}
-        )
-    name = "materials.xml" if opts["form"] == "fragment" else "scene.xml"
-    return EmitResult([Artifact(name, render_xml(entries, opts))] + images, notes)
+        self.entries.append({"ident": ident, "phrase": material.phrase, "bsdf": bsdf_for(material, ident, tex, cnlm)})
+        return images
+
+
+def check_counts(options: Options) -> None:
+    for name in COUNTS:
+        if options[name] < 1:
+            raise OptionError(f"mitsuba: option {name} must be at least 1")
+
+
+class MitsubaTarget(Target):
+    name = "mitsuba"
+    description = "Mitsuba 3 scene XML (full preview scene or BSDF fragment) with baked bitmap textures"
+    capabilities = CAPABILITIES
+    options = OPTIONS
+
+    def emit(self, document: Document, options: Options) -> EmitResult:
+        check_counts(options)
+        scene = MitsubaScene(document, options)
+        baked = emit_each(self, document, scene.add, scene.capabilities_of)
+        name = "materials.xml" if options.form == "fragment" else "scene.xml"
+        return EmitResult([Artifact(name, render_xml(scene.entries, options)), *baked.artifacts], baked.notes)
+
+
+TARGET = MitsubaTarget()
+
+
+def emit(ir: Document | Mapping[str, Any], options: Mapping[str, object] | None = None) -> EmitResult:
+    """The target on an IR (typed or JSON form) with raw `--option` pairs."""
+    return TARGET.emit_ir(ir, options)

@@ -19,10 +19,18 @@ The plugin needs a vectorized variant (`llvm_ad_rgb`, `cuda_ad_rgb`) with symbol
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import os
+from typing import Any
 
 import numpy as np
+
+from cnlmc.bsdf.alpha import alpha_from_roughness
+from cnlmc.bsdf.diffuse import lambert
+from cnlmc.bsdf.evaluate import evaluate, lobe_alphas
+from cnlmc.bsdf.sampling import lobe_shares, mixture_pdf, sample_mixture, sampled_weight
+from cnlmc.material import RGB, Material
 
 PLUGIN = "cnlm"
 LLVM_LIBRARY = "/usr/lib/x86_64-linux-gnu/libLLVM.so.19.1"
@@ -39,8 +47,9 @@ def choose_variant() -> str:
     (apt libllvm19, found at LLVM_LIBRARY) or a library the user names in DRJIT_LIBLLVM_PATH."""
     import mitsuba as mi
 
-    if mi.variant() in VARIANTS:
-        return mi.variant()
+    current = mi.variant()
+    if current is not None and current in VARIANTS:
+        return current
     if "DRJIT_LIBLLVM_PATH" not in os.environ:
         if not os.path.exists(LLVM_LIBRARY):
             raise PluginError(
@@ -111,42 +120,32 @@ def _colour(mi, array: np.ndarray):
 class LaneModel:
     """The IR material evaluated per lane: maps (textures) read at each lane's uv."""
 
-    def __init__(self, material: dict, textures: dict):
-        from cnlmc.bsdf.evaluate import lobe_alphas
-        from cnlmc.bsdf.sampling import lobe_shares
-
+    def __init__(self, material: Material, textures: dict[str, Any]):
         self.material = material
         self.textures = textures
-        model, params = material["model"], material["params"]
-        self.shares = lobe_shares(model["base"], bool(model.get("coat") and params.get("coat")))
+        model = material.model
+        self.shares = lobe_shares(model.base, bool(model.coat and material.params.coat is not None))
         self.coat_alpha = lobe_alphas(material)[1] or (1.0, 1.0)
 
-    def params_at(self, si, active) -> dict:
+    def params_at(self, si: Any, active: Any) -> Material:
         """The material with α per lane when a roughness map is bound."""
-        from cnlmc.bsdf.alpha import alpha_from_roughness
-
         if "roughness" not in self.textures:
             return self.material
-        params = self.material["params"]
+        params = self.material.params
         r = _lanes(self.textures["roughness"].eval_1(si, active))
-        aniso = float(params.get("anisotropy") or 0.0) if self.material["model"].get("anisotropic") else 0.0
-        alpha = alpha_from_roughness(r, aniso, params.get("alpha_convention", "squared"))
-        return {**self.material, "params": {**params, "alpha": alpha}}
+        aniso = float(params.anisotropy) if self.material.model.anisotropic else 0.0
+        alpha = alpha_from_roughness(r, aniso, params.alpha_convention)
+        return dataclasses.replace(self.material, params=dataclasses.replace(params, alpha=alpha))
 
-    def base_alpha(self, material: dict):
+    def base_alpha(self, material: Material) -> Any:
         """The base lobe's (αx, αy) for sampling (per lane with a roughness map)."""
-        from cnlmc.bsdf.evaluate import lobe_alphas
-
         return lobe_alphas(material)[0] or (1.0, 1.0)
 
-    def f(self, si, material: dict, wo, wi, active) -> np.ndarray:
+    def f(self, si: Any, material: Material, wo: np.ndarray, wi: np.ndarray, active: Any) -> np.ndarray:
         """f(wo, wi), RGB (N, 3): affine in the base colour, so a colour map costs two calls."""
-        from cnlmc.bsdf.diffuse import lambert
-        from cnlmc.bsdf.evaluate import evaluate
-
         if "base_color" not in self.textures:
             value = evaluate(material, wo, wi)
-            albedo = np.asarray(material["params"].get("base_color", (1.0, 1.0, 1.0)), np.float64)
+            albedo = np.asarray(material.params.base_color, np.float64)
         else:
             albedo = _lanes(self.textures["base_color"].eval(si, active))
             black = evaluate(_with_colour(material, (0.0, 0.0, 0.0)), wo, wi)
@@ -158,8 +157,8 @@ class LaneModel:
         return np.where(np.isfinite(value), value, 0.0)
 
 
-def _with_colour(material: dict, colour) -> dict:
-    return {**material, "params": {**material["params"], "base_color": colour}}
+def _with_colour(material: Material, colour: RGB) -> Material:
+    return dataclasses.replace(material, params=dataclasses.replace(material.params, base_color=colour))
 
 
 def _plugin_class():
@@ -167,16 +166,14 @@ def _plugin_class():
     import drjit as dr
     import mitsuba as mi
 
-    from cnlmc.bsdf.sampling import mixture_pdf, sample_mixture, sampled_weight
-
     class CnlmBSDF(mi.BSDF):
         def __init__(self, props):
             mi.BSDF.__init__(self, props)
-            material = json.loads(props["material"])
+            material = Material.from_ir(json.loads(props["material"]))
             textures = {role: props[role] for role in ("base_color", "roughness", "mask") if role in props}
             self.lanes = LaneModel(material, textures)
             flags = mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide
-            if material["model"].get("anisotropic"):
+            if material.model.anisotropic:
                 flags = flags | mi.BSDFFlags.Anisotropic
             self.m_flags = flags
             self.m_components = [flags]
@@ -212,14 +209,15 @@ def _plugin_class():
             weight = sampled_weight(self.lanes.f(si, material, v, l, active), v, l, pdf)
             bs = mi.BSDFSample3f()
             bs.wo = _vector(mi, l)
-            bs.pdf = mi.Float(np.ascontiguousarray(pdf, np.float32))
-            bs.eta = 1.0
-            bs.sampled_type = mi.UInt32(+mi.BSDFFlags.GlossyReflection)
-            bs.sampled_component = mi.UInt32(0)
+            # Mitsuba's stubs type these fields with the scalar variant's classes
+            bs.pdf = mi.Float(np.ascontiguousarray(pdf, np.float32))  # type: ignore[assignment]
+            bs.eta = 1.0  # type: ignore[assignment]
+            bs.sampled_type = mi.UInt32(+mi.BSDFFlags.GlossyReflection)  # type: ignore[assignment]
+            bs.sampled_component = mi.UInt32(0)  # type: ignore[assignment]
             ok = active & (bs.pdf > 0)
             return bs, dr.select(ok, _colour(mi, weight), 0.0)
 
         def to_string(self):
-            return f"CnlmBSDF[{self.lanes.material.get('name', '')}]"
+            return f"CnlmBSDF[{self.lanes.material.name}]"
 
     return CnlmBSDF

@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import re
 import unicodedata
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
+
+from cnlmc.material import Material
 
 
 def identifier(text: str, fallback: str = "material") -> str:
@@ -28,6 +30,20 @@ def unique_identifiers(names: Iterable[str], fallback: str = "material") -> list
     return out
 
 
+class MaterialIdents:
+    """The unique identifier of each material of one document (two materials may be equal,
+    so a material is found by identity among the document's own objects)."""
+
+    def __init__(self, materials: Sequence[Material]):
+        self.pairs = list(zip(materials, unique_identifiers(m.name for m in materials)))
+
+    def __getitem__(self, material: Material) -> str:
+        for candidate, ident in self.pairs:
+            if candidate is material:
+                return ident
+        raise KeyError(material.name)
+
+
 INVALID_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
 
 
@@ -37,5 +53,5 @@ def xml_text(value: object) -> str:
     return INVALID_XML.sub("", str(value))
 
 
-def phrase_text(material: dict) -> str:
-    return xml_text(material.get("phrase", ""))
+def phrase_text(material: Material) -> str:
+    return xml_text(material.phrase)

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import math
 
+from cnlmc.material import Coat, Material, Params
+
 from .conversions import (
     DIGITS,
     alpha_pair,
@@ -68,17 +70,21 @@ METAL_EDGE = {"open_pbr_surface": f82_tint, "standard_surface": gulbrandsen_edge
 SURFACES = tuple(SURFACE_NAMES)
 
 
-def abstract_inputs(material: dict, surface: str) -> dict[str, tuple[str, object]]:
+Value = float | list[float]
+Inputs = dict[str, tuple[str, Value]]
+
+
+def abstract_inputs(material: Material, surface: str) -> Inputs:
     """IR material -> concept -> (MaterialX type, value), before naming for a surface."""
-    model, params = material["model"], material["params"]
-    base = model["base"]
-    out: dict[str, tuple[str, object]] = {"base_weight": ("float", 1.0)}
+    model, params = material.model, material.params
+    base = model.base
+    out: Inputs = {"base_weight": ("float", 1.0)}
     if base == "conductor":
         out["base_color"] = ("color3", conductor_f0(params))
         out["metalness"] = ("float", 1.0)
         out["specular_color"] = ("color3", METAL_EDGE[surface](params))
     else:
-        out["base_color"] = ("color3", clip01(params["base_color"]))
+        out["base_color"] = ("color3", clip01(params.base_color))
         out["metalness"] = ("float", 0.0)
     if base == "diffuse":
         out["specular_weight"] = ("float", 0.0)
@@ -86,48 +92,47 @@ def abstract_inputs(material: dict, surface: str) -> dict[str, tuple[str, object
         out.update(_specular_inputs(params, surface))
     if base == "glass":
         out["transmission"] = ("float", 1.0)
-        out["transmission_color"] = ("color3", clip01(params["base_color"]))
-    if model["diffuse"] == "oren_nayar":
-        out["diffuse_roughness"] = ("float", min(max(float(params.get("diffuse_roughness", 0.0)), 0.0), 1.0))
-    if model["coat"] and params.get("coat"):
-        out.update(_coat_inputs(params["coat"]))
+        out["transmission_color"] = ("color3", clip01(params.base_color))
+    if model.diffuse == "oren_nayar":
+        out["diffuse_roughness"] = ("float", min(max(float(params.diffuse_roughness), 0.0), 1.0))
+    if model.coat and params.coat is not None:
+        out.update(_coat_inputs(params.coat))
     return {k: (t, round(v, DIGITS) if isinstance(v, float) else rounded(v)) for k, (t, v) in out.items()}
 
 
-def _specular_inputs(params: dict, surface: str) -> dict:
+def _specular_inputs(params: Params, surface: str) -> Inputs:
     ax, ay = alpha_pair(params)
     roughness, anisotropy = ROUGHNESS_FIT[surface](ax, ay)
-    out = {"specular_weight": ("float", 1.0), "roughness": ("float", roughness)}
-    if "ior" in params:
-        out["ior"] = ("float", float(params["ior"]))
+    out: Inputs = {"specular_weight": ("float", 1.0), "roughness": ("float", roughness)}
+    if "ior" in params.present:
+        out["ior"] = ("float", float(params.ior))
     if anisotropy > 0.0:
         out["anisotropy"] = ("float", anisotropy)
-        rotation = float(params.get("anisotropy_rotation") or 0.0)
+        rotation = float(params.anisotropy_rotation)
         if rotation and "rotation" in SURFACE_NAMES[surface]:
             out["rotation"] = ("float", (rotation / (2 * math.pi)) % 1.0)
     return out
 
 
-def _coat_inputs(coat: dict) -> dict:
+def _coat_inputs(coat: Coat) -> Inputs:
     """The IR's coat colour is a normal-incidence round-trip tint scaled by thickness."""
-    thickness = float(coat.get("thickness", 1.0))
-    color = [max(float(c), 0.0) ** thickness for c in coat["color"]]
+    color = [max(float(c), 0.0) ** float(coat.thickness) for c in coat.color]
     return {
         "coat": ("float", 1.0),
         "coat_color": ("color3", clip01(color)),
-        "coat_roughness": ("float", alpha_to_roughness(float(coat["alpha"][0]))),
-        "coat_ior": ("float", float(coat["ior"])),
+        "coat_roughness": ("float", alpha_to_roughness(float(coat.alpha[0]))),
+        "coat_ior": ("float", float(coat.ior)),
     }
 
 
-def surface_inputs(material: dict, surface: str = "open_pbr_surface") -> dict[str, tuple[str, object]]:
+def surface_inputs(material: Material, surface: str = "open_pbr_surface") -> Inputs:
     """IR material -> input name -> (MaterialX type, value) for `surface`."""
     names = SURFACE_NAMES[surface]
     return {names[k]: v for k, v in abstract_inputs(material, surface).items() if k in names}
 
 
-def tangent_rotation(material: dict) -> float:
+def tangent_rotation(material: Material) -> float:
     """The streak direction in radians when the target has to rotate the tangent itself."""
-    if not material["model"]["anisotropic"]:
+    if not material.model.anisotropic:
         return 0.0
-    return float(material["params"].get("anisotropy_rotation") or 0.0)
+    return float(material.params.anisotropy_rotation)

@@ -1,13 +1,20 @@
-"""Baked maps as image files an exchange document references: role, relative path, encoding."""
+"""Baked maps as image files an exchange document references: role, relative path, encoding.
+
+The images come from the one map-baking service (cnlmc.backends.maps.service)."""
 
 from __future__ import annotations
 
-import tempfile
+from collections.abc import Collection
 from dataclasses import dataclass
+from pathlib import PurePosixPath
 
-from ..registry import Artifact
+from cnlmc.material import Material
+
+from ..base import Artifact, Options
+from ..maps.service import Derive, bake_artifacts
 
 COLOUR_ROLES = ("base_color",)
+FOLDER = "textures"
 
 
 @dataclass(frozen=True)
@@ -23,6 +30,9 @@ class Texture:
         return self.encoding in ("srgb", "linear")
 
 
+Textures = dict[str, Texture]
+
+
 def texture_encoding(role: str, fmt: str) -> str:
     if role in COLOUR_ROLES:
         return "srgb" if fmt.startswith("png") else "linear"
@@ -30,30 +40,24 @@ def texture_encoding(role: str, fmt: str) -> str:
 
 
 def bake_textures(
-    material: dict, ident: str, opts: dict, folder: str = "textures", roles=None, derive=None
-) -> tuple[dict[str, Texture], list[Artifact]]:
-    """Bake the material's maps (the roles given, default all) into image Artifacts.
+    material: Material,
+    ident: str,
+    options: Options,
+    roles: Collection[str] | None = None,
+    derive: Derive | None = None,
+) -> tuple[Textures, list[Artifact]]:
+    """Bake the material's maps (the roles given, default all) into image Artifacts under textures/.
 
     `derive(arrays) -> arrays` may add roles computed from the baked ones (e.g. Mitsuba's
     alpha = roughness^2). Returns role -> Texture and the artifacts (bytes) to write.
     """
-    refs = {r: ref for r, ref in (material.get("maps") or {}).items() if roles is None or r in roles}
-    if opts["maps"] == "none" or not refs:
+    if options.maps == "none" or not any(roles is None or role in roles for role in material.maps):
         return {}, []
-    from cnlmc.backends.maps import MapError, bake, write_maps
-
-    try:
-        arrays = bake(refs, material["params"], opts["map_size"], opts["seed"])
-        if derive:
-            arrays = derive(arrays)
-        with tempfile.TemporaryDirectory(prefix="cnlmc-tex-") as tmp:
-            paths = write_maps(arrays, tmp, fmt=opts["map_format"], stem=ident)
-            files = {p.stem[len(ident) + 1 :]: (p.name, p.read_bytes()) for p in paths}
-    except MapError as exc:
-        raise ValueError(f"{material['name']}: cannot bake maps: {exc}") from None
-    textures, artifacts = {}, []
-    for role, (name, data) in files.items():
-        rel = f"{folder}/{name}"
-        textures[role] = Texture(role, rel, texture_encoding(role, opts["map_format"]))
-        artifacts.append(Artifact(rel, data, "binary"))
+    artifacts = bake_artifacts(
+        material, options.map_size, options.map_format, options.seed, ident, FOLDER, roles, derive
+    )
+    textures = {}
+    for artifact in artifacts:
+        role = PurePosixPath(artifact.name).stem[len(ident) + 1 :]
+        textures[role] = Texture(role, artifact.name, texture_encoding(role, options.map_format))
     return textures, artifacts

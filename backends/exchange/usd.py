@@ -11,33 +11,35 @@ from __future__ import annotations
 
 import math
 import tempfile
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
+from typing import Any
 
-from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade
+from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade, UsdUtils
 
-from ..capabilities import ALL_FEATURES, EmitResult, check_material
-from ..registry import Artifact
+from cnlmc.material import Document, Material
+
+from ..base import Artifact, Option, Options, Target, emit_each
+from ..capabilities import ALL_FEATURES, EmitResult
 from . import materialx as mtlx_backend
 from .conversions import alpha_pair, alpha_to_roughness, clip01, conductor_f0, rounded
-from .naming import identifier, phrase_text, unique_identifiers
-from .options import capabilities_for, exchange_options
-from .textures import bake_textures
+from .naming import MaterialIdents, identifier, phrase_text, unique_identifiers
+from .options import Capabilities, capabilities_for, map_options
+from .textures import Texture, Textures, bake_textures
 
-NAME = "usd"
-DESCRIPTION = "USD stage (.usda/.usdc/.usdz): UsdPreviewSurface + MaterialX OpenPBR networks, variants for 'or'"
 FORMATS = ("usda", "usdc", "usdz")
-OPTIONS = {
-    "format": ("", ("",) + FORMATS),
-    "output": ("", None),
-    "mesh": ("none", ("none", "sphere")),
-    "surface": ("open_pbr_surface", mtlx_backend.SURFACES),
-    "root": ("Root", None),
-}
+OPTIONS = (
+    *map_options(),
+    Option("format", str, None, choices=FORMATS, doc="the file format (default: the suffix of -o, else usda)"),
+    Option("mesh", str, "none", choices=("none", "sphere"), doc="sphere: a preview sphere bound to each material"),
+    Option("surface", str, "open_pbr_surface", choices=mtlx_backend.SURFACES, doc="the MaterialX network's shader"),
+    Option("root", str, "Root", doc="the name of the stage's default prim"),
+)
 VARIANT_SET = "material"
 
 KEPT = "(the MaterialX network beside it keeps it)"
 BAKED = ("bake", "procedural graph baked to an image read by UsdUVTexture (st from UsdPrimvarReader_float2)")
-CAPABILITIES = {
+CAPABILITIES: Capabilities = {
     "model.diffuse": ("exact", ""),
     "model.dielectric": ("exact", ""),
     "model.conductor": (
@@ -67,7 +69,8 @@ CAPABILITIES = {
 assert set(CAPABILITIES) == set(ALL_FEATURES)
 
 # MaterialX type -> Sdf value type, and how a MaterialX value becomes a USD value
-MX_TYPES = {
+Converter = Callable[[Any], Any]
+MX_TYPES: dict[str, tuple[Any, Converter | None]] = {
     "float": (Sdf.ValueTypeNames.Float, float),
     "integer": (Sdf.ValueTypeNames.Int, int),
     "boolean": (Sdf.ValueTypeNames.Bool, bool),
@@ -91,38 +94,41 @@ SOURCE_COLOUR_SPACE = {"srgb": "sRGB", "linear": "raw", "raw": "raw"}
 # -------------------------------------------------------------------------- preview surface
 
 
-def preview_inputs(material: dict) -> dict[str, tuple]:
+def preview_inputs(material: Material) -> dict[str, tuple[Any, Any]]:
     """IR material -> UsdPreviewSurface input -> (Sdf type, value)."""
-    model, params = material["model"], material["params"]
-    base = model["base"]
+    model, params = material.model, material.params
+    base = model.base
     F, C, I = Sdf.ValueTypeNames.Float, Sdf.ValueTypeNames.Color3f, Sdf.ValueTypeNames.Int
-    colour = conductor_f0(params) if base == "conductor" else clip01(params["base_color"])
-    out = {"diffuseColor": (C, colour), "metallic": (F, 1.0 if base == "conductor" else 0.0)}
+    colour = conductor_f0(params) if base == "conductor" else clip01(params.base_color)
+    out: dict[str, tuple[Any, Any]] = {
+        "diffuseColor": (C, colour),
+        "metallic": (F, 1.0 if base == "conductor" else 0.0),
+    }
     if base == "diffuse":  # no specular lobe: the specular workflow with black specular
         out.update(useSpecularWorkflow=(I, 1), specularColor=(C, [0.0, 0.0, 0.0]), roughness=(F, 1.0))
     else:
         ax, ay = alpha_pair(params)
         out["roughness"] = (F, alpha_to_roughness(math.sqrt(ax * ay)))
-        if "ior" in params:
-            out["ior"] = (F, float(params["ior"]))
+        if "ior" in params.present:
+            out["ior"] = (F, float(params.ior))
     if base == "glass":
         out["opacity"] = (F, 0.0)
-    if model["coat"] and params.get("coat"):
+    if model.coat and params.coat is not None:
         out["clearcoat"] = (F, 1.0)
-        out["clearcoatRoughness"] = (F, alpha_to_roughness(float(params["coat"]["alpha"][0])))
+        out["clearcoatRoughness"] = (F, alpha_to_roughness(float(params.coat.alpha[0])))
     return {
         k: (t, rounded(v) if isinstance(v, list) else (round(v, 6) if isinstance(v, float) else v))
         for k, (t, v) in out.items()
     }
 
 
-def _usd_value(sdf_type, value):
+def _usd_value(sdf_type: Any, value: Any) -> Any:
     if sdf_type in (Sdf.ValueTypeNames.Color3f, Sdf.ValueTypeNames.Float3, Sdf.ValueTypeNames.Normal3f):
         return Gf.Vec3f(*value)
     return value
 
 
-def author_preview(stage, material_prim: UsdShade.Material, material: dict, textures: dict) -> None:
+def author_preview(stage: Any, material_prim: Any, material: Material, textures: Textures) -> None:
     path = material_prim.GetPath()
     surface = UsdShade.Shader.Define(stage, path.AppendChild("PreviewSurface"))
     surface.CreateIdAttr("UsdPreviewSurface")
@@ -141,7 +147,9 @@ def author_preview(stage, material_prim: UsdShade.Material, material: dict, text
         author_uv_texture(stage, path, surface, st, material, role, texture)
 
 
-def author_uv_texture(stage, path, surface, st, material: dict, role: str, texture) -> None:
+def author_uv_texture(
+    stage: Any, path: Any, surface: Any, st: Any, material: Material, role: str, texture: Texture
+) -> None:
     target, sdf_type, channel = PREVIEW_TEXTURES[role]
     shader = UsdShade.Shader.Define(stage, path.AppendChild(f"Texture_{role}"))
     shader.CreateIdAttr("UsdUVTexture")
@@ -153,8 +161,8 @@ def author_uv_texture(stage, path, surface, st, material: dict, role: str, textu
     if role == "normal":
         shader.CreateInput("scale", Sdf.ValueTypeNames.Float4).Set(Gf.Vec4f(2, 2, 2, 1))
         shader.CreateInput("bias", Sdf.ValueTypeNames.Float4).Set(Gf.Vec4f(-1, -1, -1, 0))
-    elif role == "base_color" and material["model"]["base"] == "conductor":  # the map tints f0
-        shader.CreateInput("scale", Sdf.ValueTypeNames.Float4).Set(Gf.Vec4f(*conductor_f0(material["params"]), 1.0))
+    elif role == "base_color" and material.model.base == "conductor":  # the map tints f0
+        shader.CreateInput("scale", Sdf.ValueTypeNames.Float4).Set(Gf.Vec4f(*conductor_f0(material.params), 1.0))
     out_type = Sdf.ValueTypeNames.Float3 if channel == "rgb" else Sdf.ValueTypeNames.Float
     output = shader.CreateOutput(channel, out_type)
     surface.CreateInput(target, sdf_type).ConnectToSource(output)
@@ -163,9 +171,9 @@ def author_uv_texture(stage, path, surface, st, material: dict, role: str, textu
 # ---------------------------------------------------------------------- MaterialX network
 
 
-def author_materialx(stage, material_prim: UsdShade.Material, material: dict, textures: dict, surface: str) -> None:
+def author_materialx(stage: Any, material_prim: Any, material: Material, textures: Textures, surface: str) -> None:
     """The 'materialx' backend's document for this material, as UsdShade prims with ND_* ids."""
-    ident = identifier(material["name"])
+    ident = identifier(material.name)
     doc = mtlx_backend.build_document([material], surface, {ident: textures}, [ident])
     mtlx_backend.validate(doc)
     scope = material_prim.GetPath()  # shaders sit directly in the Material (a connectable container)
@@ -182,7 +190,7 @@ def author_materialx(stage, material_prim: UsdShade.Material, material: dict, te
     material_prim.CreateSurfaceOutput("mtlx").ConnectToSource(out)
 
 
-def _author_mx_inputs(node, shader, shaders) -> None:
+def _author_mx_inputs(node: Any, shader: Any, shaders: dict[str, tuple[Any, Any]]) -> None:
     for mx_input in node.getInputs():
         sdf_type, convert = MX_TYPES[mx_input.getType()]
         usd_input = shader.CreateInput(mx_input.getName(), sdf_type)
@@ -192,6 +200,7 @@ def _author_mx_inputs(node, shader, shaders) -> None:
             usd_input.ConnectToSource(up_shader.CreateOutput("out", MX_TYPES[up_node.getType()][0]))
             continue
         value = mx_input.getValue()
+        assert convert is not None, f"a {mx_input.getType()} input holds no value"
         usd_input.Set(convert(list(value) if hasattr(value, "__len__") and not isinstance(value, str) else value))
         if mx_input.getColorSpace():
             usd_input.GetAttr().SetColorSpace(mx_input.getColorSpace())
@@ -200,35 +209,39 @@ def _author_mx_inputs(node, shader, shaders) -> None:
 # ------------------------------------------------------------------------------ materials
 
 
-def author_network(stage, material_prim, material: dict, textures: dict, surface: str) -> None:
+def author_network(stage: Any, material_prim: Any, material: Material, textures: Textures, surface: str) -> None:
     author_preview(stage, material_prim, material, textures)
     author_materialx(stage, material_prim, material, textures, surface)
 
 
-def record_phrase(material_prim: UsdShade.Material, material: dict) -> None:
+def record_phrase(material_prim: Any, material: Material) -> None:
     prim = material_prim.GetPrim()
     phrase = phrase_text(material)
     prim.SetCustomDataByKey("cnlmc:phrase", phrase)
     prim.SetDocumentation(phrase)
 
 
-def groups_of(materials: list[dict]) -> list[tuple[str, list[int]]]:
+def groups_of(materials: Sequence[Material]) -> list[tuple[str, list[int]]]:
     """(prim name source, indices): materials sharing variant.group become one prim."""
     groups: dict[str, list[int]] = {}
     order = []
     for i, material in enumerate(materials):
-        variant = material.get("variant")
-        key = f"group:{variant['group']}" if variant else f"material:{i}"
+        variant = material.variant
+        key = f"group:{variant.group}" if variant else f"material:{i}"
         if key not in groups:
             groups[key] = []
-            order.append((variant["group"] if variant else material["name"], key))
+            order.append((variant.group if variant else material.name, key))
         groups[key].append(i)
     return [(name, groups[key]) for name, key in order]
 
 
 def author_materials(
-    stage, looks: Sdf.Path, materials: list[dict], textures: list[dict], surface: str = "open_pbr_surface"
-) -> list[UsdShade.Material]:
+    stage: Any,
+    looks: Any,
+    materials: Sequence[Material],
+    textures: Sequence[Textures],
+    surface: str = "open_pbr_surface",
+) -> list[Any]:
     """Author every IR material (variant groups as one prim) under `looks`."""
     groups = groups_of(materials)
     prims = []
@@ -246,20 +259,22 @@ def author_materials(
     return prims
 
 
-def author_group(stage, path: Sdf.Path, materials: list[dict], textures: list[dict], surface: str):
+def author_group(
+    stage: Any, path: Any, materials: Sequence[Material], textures: Sequence[Textures], surface: str
+) -> Any:
     material_prim = UsdShade.Material.Define(stage, path)
     record_phrase(material_prim, materials[0])
-    if len(materials) == 1 and not materials[0].get("variant"):
+    if len(materials) == 1 and materials[0].variant is None:
         author_network(stage, material_prim, materials[0], textures[0], surface)
         return material_prim
     vset = material_prim.GetPrim().GetVariantSets().AddVariantSet(VARIANT_SET)
-    names = unique_identifiers((m["variant"] or {}).get("name", m["name"]) for m in materials)
+    names = unique_identifiers(m.variant.name if m.variant else m.name for m in materials)
     for name, material, tex in zip(names, materials, textures):
         vset.AddVariant(name)
         vset.SetVariantSelection(name)
         with vset.GetVariantEditContext():
             author_network(stage, material_prim, material, tex, surface)
-            material_prim.GetPrim().SetCustomDataByKey("cnlmc:material", identifier(material["name"]))
+            material_prim.GetPrim().SetCustomDataByKey("cnlmc:material", identifier(material.name))
     vset.SetVariantSelection(names[0])
     return material_prim
 
@@ -267,7 +282,9 @@ def author_group(stage, path: Sdf.Path, materials: list[dict], textures: list[di
 # ---------------------------------------------------------------------------- preview mesh
 
 
-def uv_sphere(stage, path: Sdf.Path, centre, radius: float = 1.0, rings: int = 16, segments: int = 32):
+def uv_sphere(
+    stage: Any, path: Any, centre: Sequence[float], radius: float = 1.0, rings: int = 16, segments: int = 32
+) -> Any:
     """A UV sphere mesh with faceVarying-free vertex st, so baked textures map onto it."""
     points, st, counts, indices = [], [], [], []
     for i in range(rings + 1):
@@ -305,12 +322,12 @@ def uv_sphere(stage, path: Sdf.Path, centre, radius: float = 1.0, rings: int = 1
     return mesh
 
 
-def bind(prim, material: UsdShade.Material) -> None:
+def bind(prim: Any, material: Any) -> None:
     UsdShade.MaterialBindingAPI.Apply(prim)
     UsdShade.MaterialBindingAPI(prim).Bind(material)
 
 
-def author_preview_meshes(stage, root: Sdf.Path, materials: list[UsdShade.Material]) -> None:
+def author_preview_meshes(stage: Any, root: Any, materials: Sequence[Any]) -> None:
     UsdGeom.Scope.Define(stage, root.AppendChild("Preview"))
     for i, material in enumerate(materials):
         mesh = uv_sphere(
@@ -324,14 +341,14 @@ def author_preview_meshes(stage, root: Sdf.Path, materials: list[UsdShade.Materi
 # ------------------------------------------------------------------------------------ emit
 
 
-def output_format(opts: dict) -> str:
-    if opts["format"]:
-        return opts["format"]
-    suffix = Path(opts["output"]).suffix.lower().lstrip(".") if opts["output"] else ""
+def output_format(options: Options) -> str:
+    if options.format:
+        return str(options.format)
+    suffix = Path(options.output).suffix.lower().lstrip(".") if options.output else ""
     return suffix if suffix in FORMATS else "usda"
 
 
-def new_stage(root_name: str):
+def new_stage(root_name: str) -> tuple[Any, Any]:
     stage = Usd.Stage.CreateInMemory()
     UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.y)
     UsdGeom.SetStageMetersPerUnit(stage, 1.0)
@@ -340,17 +357,17 @@ def new_stage(root_name: str):
     return stage, root.GetPath()
 
 
-def build_stage(ir: dict, opts: dict, textures: list[dict]):
-    stage, root = new_stage(opts["root"])
+def build_stage(materials: Sequence[Material], options: Options, textures: Sequence[Textures]) -> Any:
+    stage, root = new_stage(options.root)
     looks = root.AppendChild("Looks")
     UsdGeom.Scope.Define(stage, looks)
-    prims = author_materials(stage, looks, ir["materials"], textures, opts["surface"])
-    if opts["mesh"] == "sphere":
+    prims = author_materials(stage, looks, materials, textures, options.surface)
+    if options.mesh == "sphere":
         author_preview_meshes(stage, root, prims)
     return stage
 
 
-def export(stage, fmt: str, images: list[Artifact], stem: str = "materials") -> list[Artifact]:
+def export(stage: Any, fmt: str, images: list[Artifact], stem: str = "materials") -> list[Artifact]:
     if fmt == "usda":
         return [Artifact(f"{stem}.usda", stage.GetRootLayer().ExportToString())] + images
     with tempfile.TemporaryDirectory(prefix="cnlmc-usd-") as tmp:
@@ -361,29 +378,38 @@ def export(stage, fmt: str, images: list[Artifact], stem: str = "materials") -> 
         for image in images:  # usdz: the textures travel inside the package
             target = Path(tmp) / image.name
             target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_bytes(image.content)
-        from pxr import UsdUtils
-
+            target.write_bytes(image.content if isinstance(image.content, bytes) else image.content.encode())
         package = Path(tmp) / f"{stem}.usdz"
         if not UsdUtils.CreateNewUsdzPackage(Sdf.AssetPath(str(layer_path)), str(package)):
             raise RuntimeError("usd: could not write the usdz package")
         return [Artifact(package.name, package.read_bytes(), "binary")]
 
 
-def prepare(ir: dict, options: dict):
-    opts = exchange_options(options, NAME, OPTIONS)
-    caps = capabilities_for(CAPABILITIES, opts)
-    notes, textures, images = [], [], []
-    materials = ir["materials"]
-    for material, ident in zip(materials, unique_identifiers(m["name"] for m in materials)):
-        check_material(notes, NAME, caps, material)
-        tex, baked = bake_textures(material, ident, opts, roles=tuple(PREVIEW_TEXTURES))
-        textures.append(tex)
-        images += baked
-    return opts, notes, textures, images
+class UsdTarget(Target):
+    name = "usd"
+    description = "USD stage (.usda/.usdc/.usdz): UsdPreviewSurface + MaterialX OpenPBR networks, variants for 'or'"
+    capabilities = CAPABILITIES
+    options = OPTIONS
+
+    def emit(self, document: Document, options: Options) -> EmitResult:
+        idents = MaterialIdents(document.materials)
+        table = capabilities_for(CAPABILITIES, options.maps)
+        textures: dict[str, Textures] = {}
+
+        def bake(material: Material) -> list[Artifact]:
+            ident = idents[material]
+            textures[ident], images = bake_textures(material, ident, options, roles=tuple(PREVIEW_TEXTURES))
+            return images
+
+        baked = emit_each(self, document, bake, lambda material: table)
+        in_order = [textures[idents[m]] for m in document.materials]
+        stage = build_stage(document.materials, options, in_order)
+        return EmitResult(export(stage, output_format(options), baked.artifacts), baked.notes)
 
 
-def emit(ir: dict, options: dict) -> EmitResult:
-    opts, notes, textures, images = prepare(ir, options)
-    stage = build_stage(ir, opts, textures)
-    return EmitResult(export(stage, output_format(opts), images), notes)
+TARGET = UsdTarget()
+
+
+def emit(ir: Document | Mapping[str, Any], options: Mapping[str, object] | None = None) -> EmitResult:
+    """The target on an IR (typed or JSON form) with raw `--option` pairs."""
+    return TARGET.emit_ir(ir, options)
