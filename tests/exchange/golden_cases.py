@@ -1,8 +1,9 @@
-"""The golden cases shared by test_golden.py and regenerate_golden.py.
+"""The golden cases of test_golden.py.
 
 The IR input is frozen in golden/input.ir.json so the golden outputs change only when a
-backend changes (not when the lexicon does). Regenerate explicitly:
-    .venv/bin/python -m tests.exchange.regenerate_golden
+backend changes (not when the lexicon does). Rewrite the outputs, then review the diff:
+    .venv/bin/python -m pytest tests/exchange/test_golden.py --update-goldens
+and with --refreeze also recompile the frozen IR from SOURCE first.
 """
 
 from __future__ import annotations
@@ -34,6 +35,17 @@ CASES = [
     ("mitsuba", {"maps": "none"}, "mitsuba/scene.xml"),
     ("mitsuba", {"maps": "none", "form": "fragment"}, "mitsuba/materials.xml"),
 ]
+
+
+def fresh_ir_text() -> str:
+    """SOURCE compiled now, without maps (the golden files test the backends, not the maps
+    library), in the form golden/input.ir.json keeps."""
+    from cnlmc.api import compile_source
+
+    ir = compile_source(SOURCE, "golden.cnl").ir
+    for material in ir["materials"]:
+        material["maps"] = {}
+    return json.dumps(ir, indent=1, ensure_ascii=False) + "\n"
 
 
 def frozen_ir() -> dict:

@@ -1,15 +1,24 @@
-"""Backend output for a frozen IR equals the reviewed golden files (regenerate_golden.py)."""
+"""Backend output for a frozen IR equals the reviewed golden files
+(rewrite with pytest --update-goldens; add --refreeze to recompile the frozen IR first)."""
 
 from __future__ import annotations
 
 import pytest
 
-from .golden_cases import CASES, GOLDEN, frozen_ir, render
+from .golden_cases import CASES, GOLDEN, INPUT, fresh_ir_text, frozen_ir, render
+
+
+@pytest.fixture(scope="module")
+def ir(goldens) -> dict:
+    if goldens.refreeze or (goldens.updating and not INPUT.exists()):
+        goldens.write(INPUT, fresh_ir_text().encode("utf-8"))
+    return frozen_ir()
 
 
 @pytest.mark.parametrize("target, options, name", CASES, ids=[c[2] for c in CASES])
-def test_golden(target, options, name):
-    expected = (GOLDEN / name).read_text(encoding="utf-8")
-    assert render(target, options, frozen_ir()) == expected, (
-        f"{name} changed; if intended, run: .venv/bin/python -m tests.exchange.regenerate_golden"
+def test_golden(target, options, name, ir, goldens):
+    goldens.check_text(
+        GOLDEN / name,
+        render(target, options, ir),
+        f"{name} changed; if intended, run: .venv/bin/python -m pytest tests/exchange --update-goldens",
     )

@@ -1,4 +1,5 @@
-"""The golden cases: one phrase per material kind, with the options they are emitted with."""
+"""The golden cases: one phrase per material kind, with the options they are emitted with
+(rewrite the files with pytest --update-goldens tests/glsl, then review the diff)."""
 
 from __future__ import annotations
 
@@ -17,3 +18,9 @@ GOLDEN_CASES = {
     "glass": ("frosted glass", {"profile": "es300"}),
     "maps": ("rusty iron", {}),
 }
+
+
+def golden_files(stem: str, emitted: dict[str, str]) -> dict[str, str]:
+    """{golden file name: text} kept for one case: every emitted file, the vertex shader only
+    once (it is the same for every material but its name)."""
+    return {f"{stem}.{suffix}": text for suffix, text in emitted.items() if suffix != "vert" or stem == "dielectric"}

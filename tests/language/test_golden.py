@@ -1,4 +1,4 @@
-"""Golden files per stage: phrase -> tokens -> AST -> IR (regenerate with regen_golden.py)."""
+"""Golden files per stage: phrase -> tokens -> AST -> IR (rewrite with pytest --update-goldens)."""
 
 import pytest
 
@@ -6,8 +6,9 @@ from .golden_cases import CASES, dump, golden_path, stages
 
 
 @pytest.mark.parametrize("name", sorted(CASES))
-def test_stages_match_golden(name):
+def test_stages_match_golden(name, goldens):
     produced = stages(CASES[name])
     for stage in ("tokens", "ast", "ir"):
-        expected = golden_path(name, stage).read_text()
-        assert dump(produced[stage]) == expected, f"{name}.{stage} differs from its golden file"
+        goldens.check_text(
+            golden_path(name, stage), dump(produced[stage]), f"{name}.{stage} differs from its golden file"
+        )

@@ -26,7 +26,8 @@ def seam_ratio(image, axis):
 
 
 def golden_thumbnails():
-    """role arrays per graph at 32 px, seed 0: what tests/maps/golden/*.npy hold."""
+    """role arrays per graph at 32 px, seed 0: what tests/maps/golden/*.npy hold
+    (pytest --update-goldens tests/maps rewrites the ones outside the tolerance)."""
     from cnlmc.backends.maps import evaluate, load_graph
 
     return {name: evaluate(load_graph(name), 32, seed=0) for name in graph_names()}
