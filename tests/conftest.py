@@ -12,6 +12,9 @@ Plain helpers (the CLI runner, the phrase-per-model table) are in tests/helpers.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import Any
+
 import pytest
 
 from tests.helpers import Goldens
@@ -44,7 +47,7 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
             item.add_marker(pytest.mark.gl)
 
 
-def pytest_terminal_summary(terminalreporter, config: pytest.Config) -> None:
+def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter, config: pytest.Config) -> None:
     goldens = config.stash.get(GOLDENS, None)
     if goldens is None or not goldens.updating:
         return
@@ -64,7 +67,7 @@ def goldens(pytestconfig: pytest.Config) -> Goldens:
 
 
 @pytest.fixture(scope="session")
-def gl():
+def gl() -> Iterator[Any]:
     """A standalone OpenGL context on EGL (moderngl), released at the end of the session."""
     moderngl = pytest.importorskip("moderngl", reason="moderngl is not installed (pip install -e '.[glsl]')")
     try:

@@ -10,6 +10,8 @@ import subprocess
 import sys
 from collections.abc import Callable, Mapping
 from pathlib import Path
+from types import ModuleType
+from typing import Any
 
 import pytest
 
@@ -43,7 +45,7 @@ def run_cnlmc(
     timeout: float = 300,
     cwd: str | Path | None = None,
     env: Mapping[str, str] | None = None,
-) -> subprocess.CompletedProcess:
+) -> subprocess.CompletedProcess[Any]:
     """Run ``python -m cnlmc ARGS`` in a fresh process, as a user would, and capture its output.
 
     Text in, text out; give ``stdin`` as bytes to get bytes back (for input that is not text).
@@ -60,9 +62,12 @@ def run_cnlmc(
     )
 
 
-def require(module: str, extra: str):
+def require(module: str, extra: str) -> ModuleType:
     """Import an optional dependency, or skip the calling module with how to install it."""
-    return pytest.importorskip(module, reason=f"{module} is not installed (pip install -e '.[{extra}]')")
+    imported: ModuleType = pytest.importorskip(
+        module, reason=f"{module} is not installed (pip install -e '.[{extra}]')"
+    )
+    return imported
 
 
 class Goldens:
