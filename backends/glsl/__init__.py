@@ -18,6 +18,7 @@ from ..base import Options, Target, emit_each
 from ..capabilities import EmitResult
 from .emit import emit_material
 from .options import OPTIONS, glsl_options
+from .render import ShaderWriter
 
 _BAKED = "procedural map: bake it (cnlmc bake) and bind the image to the sampler the sidecar lists"
 CAPABILITIES: dict[str, tuple[str, str]] = {
@@ -55,10 +56,13 @@ class GlslTarget(Target):
     capabilities = CAPABILITIES
     options = OPTIONS
 
+    def __init__(self) -> None:
+        self.writer = ShaderWriter()
+
     def emit(self, document: Document, options: Options) -> EmitResult:
         """GLSL for every material; options as in OPTIONS (docs/glsl.md)."""
         opts = glsl_options(options)
-        return emit_each(self, document, lambda material: emit_material(material, opts))
+        return emit_each(self, document, lambda material: emit_material(material, opts, self.writer))
 
 
 TARGET = GlslTarget()

@@ -10,7 +10,7 @@ from cnlmc.material import Material
 from ..base import Artifact
 from .options import GlslOptions
 from .plan import Plan, make_plan, make_uber_plan
-from .render import PROFILES, multiscatter_tables, render, snippet
+from .render import PROFILES, ShaderWriter
 
 #: specialize option -> (plan builder, library template).
 LIBRARY_KINDS = {True: (make_plan, "library.glsl.j2"), False: (make_uber_plan, "uber.glsl.j2")}
@@ -46,7 +46,7 @@ def model_summary(plan: Plan) -> str:
     return " + ".join(parts)
 
 
-def library_context(material: Material, plan: Plan, options: GlslOptions) -> dict[str, Any]:
+def library_context(material: Material, plan: Plan, options: GlslOptions, writer: ShaderWriter) -> dict[str, Any]:
     profile = PROFILES[options.profile]
     return {
         "name": material.name,
@@ -58,20 +58,20 @@ def library_context(material: Material, plan: Plan, options: GlslOptions) -> dic
         "samplers": plan.samplers,
         "precision": profile["precision"],
         "initializers": profile["initializers"],
-        "snippets": [snippet(name) for name in plan.snippets],
-        "ms": multiscatter_tables() if plan.multiscatter else None,
+        "snippets": [writer.snippet(name) for name in plan.snippets],
+        "ms": writer.multiscatter_tables if plan.multiscatter else None,
     }
 
 
-def library_source(material: Material, options: GlslOptions) -> tuple[str, Plan]:
+def library_source(material: Material, options: GlslOptions, writer: ShaderWriter) -> tuple[str, Plan]:
     """The library form of one material (no #version line) and its plan."""
     build_plan, template = LIBRARY_KINDS[options.specialize]
     plan = build_plan(material, options)
-    return render(template, **library_context(material, plan, options)), plan
+    return writer.render(template, **library_context(material, plan, options, writer)), plan
 
 
 def standalone_sources(
-    material: Material, library: str, options: GlslOptions, transmission: bool = False
+    material: Material, library: str, options: GlslOptions, writer: ShaderWriter, transmission: bool = False
 ) -> tuple[str, str]:
     profile = PROFILES[options.profile]
     common = {
@@ -80,10 +80,14 @@ def standalone_sources(
         "precision": profile["precision"],
         "initializers": profile["initializers"],
     }
-    frag = render(
-        "standalone.frag.j2", library=library, main_snippets=[snippet("srgb")], transmission=transmission, **common
+    frag = writer.render(
+        "standalone.frag.j2",
+        library=library,
+        main_snippets=[writer.snippet("srgb")],
+        transmission=transmission,
+        **common,
     )
-    return frag, render("standalone.vert.j2", **common)
+    return frag, writer.render("standalone.vert.j2", **common)
 
 
 BTDF_ENTRY_POINTS = [
@@ -126,15 +130,15 @@ def sidecar(material: Material, plan: Plan, options: GlslOptions, files: list[st
     }
 
 
-def emit_material(material: Material, options: GlslOptions) -> list[Artifact]:
+def emit_material(material: Material, options: GlslOptions, writer: ShaderWriter) -> list[Artifact]:
     name = material.name
-    library, plan = library_source(material, options)
+    library, plan = library_source(material, options, writer)
     parts = FORM_PARTS[options.form]
     artifacts = []
     if "library" in parts:
         artifacts.append(Artifact(f"{name}.glsl", library))
     if "standalone" in parts:
-        frag, vert = standalone_sources(material, library, options, plan.transmission)
+        frag, vert = standalone_sources(material, library, options, writer, plan.transmission)
         artifacts += [Artifact(f"{name}.frag", frag), Artifact(f"{name}.vert", vert)]
     files = [a.name for a in artifacts]
     meta = sidecar(material, plan, options, files)
