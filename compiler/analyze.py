@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from . import ast
-from .diagnostics import warning
+from .diagnostics import Diagnostic, warning
 from .ir import document_ir, material_ir
 from .passes.base import apply_noun
 from .passes.coats import apply_coat_clause
@@ -20,7 +22,7 @@ FINAL_PASSES = (select_model, check_ranges)
 
 def attach_refinements(doc: ast.Document) -> list[tuple[ast.Material, list[ast.Refinement]]]:
     """Pair each material line with the refinement lines below it."""
-    pairs = []
+    pairs: list[tuple[ast.Material, list[ast.Refinement]]] = []
     for item in doc.items:
         if isinstance(item, ast.Material):
             pairs.append((item, []))
@@ -38,7 +40,7 @@ def attach_refinements(doc: ast.Document) -> list[tuple[ast.Material, list[ast.R
     return pairs
 
 
-def material_name(material: ast.Material, used: dict) -> str:
+def material_name(material: ast.Material, used: dict[str, int]) -> str:
     """An identifier from the name or the words; repeats get _2, _3, ... (used: name -> count)."""
     base = material.name.text if material.name else " ".join(_name_words(material))
     name = identifier(base)
@@ -62,7 +64,9 @@ def _name_words(material: ast.Material) -> list[str]:
     return words
 
 
-def build_states(material: ast.Material, refinements, ctx: Context, name: str, diags: list) -> list[MaterialState]:
+def build_states(
+    material: ast.Material, refinements: list[ast.Refinement], ctx: Context, name: str, diags: list[Diagnostic]
+) -> list[MaterialState]:
     states = []
     for selection, variant in expand(material, name, diags):
         if selection.nouns[0].unknown:
@@ -79,7 +83,7 @@ def build_states(material: ast.Material, refinements, ctx: Context, name: str, d
     return states
 
 
-def _variant_name(name: str, variant) -> str:
+def _variant_name(name: str, variant: dict[str, Any] | None) -> str:
     return f"{name}__{variant['name']}" if variant else name
 
 
@@ -88,12 +92,13 @@ def _phrase(material: ast.Material) -> str:
     return text.split(":", 1)[1].strip() if material.name else text.strip()
 
 
-def analyze(doc: ast.Document, ctx: Context) -> tuple[list[MaterialState], list]:
+def analyze(doc: ast.Document, ctx: Context) -> tuple[list[MaterialState], list[Diagnostic]]:
     """All material states of a document, and every diagnostic, sorted by position."""
     pairs = attach_refinements(doc)  # may add W104 to the document's diagnostics
     diags = list(doc.diagnostics)
     bad_lines = {d.span.line for d in diags if d.is_error and d.span}
-    states, used = [], {}
+    states: list[MaterialState] = []
+    used: dict[str, int] = {}
     for material, refinements in pairs:
         if material.span.line in bad_lines:
             continue  # reported already; half-understood materials are not emitted
@@ -108,11 +113,11 @@ def analyze(doc: ast.Document, ctx: Context) -> tuple[list[MaterialState], list]
     return states, sort_diagnostics(diags)
 
 
-def sort_diagnostics(diags: list) -> list:
+def sort_diagnostics(diags: list[Diagnostic]) -> list[Diagnostic]:
     return sorted(diags, key=lambda d: (d.span.line, d.span.col) if d.span else (0, 0))
 
 
-def to_ir(states: list[MaterialState], diags: list, ctx: Context) -> dict:
+def to_ir(states: list[MaterialState], diags: list[Diagnostic], ctx: Context) -> dict[str, Any]:
     convention = ctx.settings.get("alpha_convention", "squared")
     materials = [material_ir(s, convention) for s in states]
     return document_ir(materials, diags, ctx.filename, ctx.lexicon.sources)

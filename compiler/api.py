@@ -2,17 +2,24 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
+from typing import Any
 
+from . import ast
 from .analyze import analyze, to_ir
-from .diagnostics import has_errors
+from .diagnostics import Diagnostic, has_errors
 from .document import parse_document
-from .lexicon import cached_lexicon
-from .state import Context
+from .lexicon import Lexicon, cached_lexicon
+from .material import Document
+from .state import Context, MaterialState
+
+JSONDict = dict[str, Any]
 
 
-def lexicon_for(specs=()) -> Lexicon:  # noqa: F821
+def lexicon_for(specs: Iterable[str | Path] = ()) -> Lexicon:
     """`specs` are overlay names ('paper') or lexicon folders; folders are searched first."""
     paths = tuple(str(s) for s in specs if Path(s).is_dir())
     overlays = tuple(str(s) for s in specs if not Path(s).is_dir())
@@ -21,23 +28,32 @@ def lexicon_for(specs=()) -> Lexicon:  # noqa: F821
 
 @dataclass
 class Result:
-    """What compiling one source gives: the IR document, diagnostics, and the stages on the way."""
+    """What compiling one source gives: the IR, diagnostics, and the stages on the way.
 
-    ir: dict
-    diagnostics: list
-    document: object = None
-    states: list = field(default_factory=list)
+    `ir` is the JSON form; `document` the same as typed records (cnlmc.material.Document, made on
+    first use); `source_document` the parsed source (the syntax tree)."""
+
+    ir: JSONDict
+    diagnostics: list[Diagnostic]
+    source_document: ast.Document | None = None
+    states: list[MaterialState] = field(default_factory=list)
+
+    @cached_property
+    def document(self) -> Document:
+        """The IR as typed, validated records: what the backends receive."""
+        return Document.from_ir(self.ir)
 
     @property
     def ok(self) -> bool:
         return not has_errors(self.diagnostics)
 
     @property
-    def materials(self) -> list[dict]:
-        return self.ir["materials"]
+    def materials(self) -> list[JSONDict]:
+        materials: list[JSONDict] = self.ir["materials"]
+        return materials
 
 
-def compile_source(source: str, filename: str = "<input>", lexicon=None, seed: int = 0) -> Result:
+def compile_source(source: str, filename: str = "<input>", lexicon: Lexicon | None = None, seed: int = 0) -> Result:
     lexicon = lexicon or lexicon_for()
     doc = parse_document(source, lexicon, filename)
     ctx = Context(lexicon, seed=seed, filename=filename)
@@ -45,7 +61,7 @@ def compile_source(source: str, filename: str = "<input>", lexicon=None, seed: i
     return Result(to_ir(states, diags, ctx), diags, doc, states)
 
 
-def compile_phrase(phrase: str, lexicon=None, seed: int = 0) -> dict:
+def compile_phrase(phrase: str, lexicon: Lexicon | None = None, seed: int = 0) -> JSONDict:
     """One phrase -> its first material's IR (raises ValueError with the rendered errors)."""
     result = compile_source(phrase, "<phrase>", lexicon, seed)
     if not result.ok or not result.materials:
@@ -58,8 +74,8 @@ def compile_phrase(phrase: str, lexicon=None, seed: int = 0) -> dict:
     return result.materials[0]
 
 
-def emit(ir: dict, target: str, options: dict | None = None):
-    """Run a backend on an IR document; returns its artifacts."""
+def emit(ir: JSONDict | Document, target: str, options: dict[str, object] | None = None) -> Any:
+    """Run a backend on an IR document (its JSON form or typed); returns its artifacts."""
     from cnlmc.backends.registry import get_backend
 
     return get_backend(target).emit(ir, options or {})
@@ -68,7 +84,7 @@ def emit(ir: dict, target: str, options: dict | None = None):
 class Session:
     """Interactive refinement: session.refine("darker") changes the material, as in the paper."""
 
-    def __init__(self, phrase: str, lexicon=None, seed: int = 0):
+    def __init__(self, phrase: str, lexicon: Lexicon | None = None, seed: int = 0) -> None:
         self.lines = [phrase]
         self.lexicon = lexicon or lexicon_for()
         self.seed = seed
@@ -77,7 +93,7 @@ class Session:
     def _compile(self) -> Result:
         return compile_source("\n".join(self.lines), "<session>", self.lexicon, self.seed)
 
-    def refine(self, words: str) -> dict:
+    def refine(self, words: str) -> JSONDict:
         """Apply a refinement line; a line that fails leaves the material as it was."""
         self.lines.append(words)
         result = self._compile()
@@ -88,9 +104,9 @@ class Session:
         return self.material
 
     @property
-    def material(self) -> dict:
+    def material(self) -> JSONDict:
         return self.result.materials[0]
 
     @property
-    def warnings(self) -> list:
+    def warnings(self) -> list[Diagnostic]:
         return [d for d in self.result.diagnostics if not d.is_error]

@@ -2,18 +2,25 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+from typing import Any
+
 from .conventions import alpha_of
+from .diagnostics import Diagnostic
 from .formulas import round6_list, rounded
-from .params import Params, params_by_model
-from .state import MaterialState, step_json
+from .params import COAT_PARAMS, Params, params_by_model
+from .state import MaterialState, WordLists, step_json
+
+JSONDict = dict[str, Any]
 
 IR_VERSION = 1
 
 PARAMS_BY_MODEL = params_by_model()  # base model -> the parameters it always has, from the table
 
 
-def material_ir(state: MaterialState, convention: str) -> dict:
+def material_ir(state: MaterialState, convention: str) -> JSONDict:
     model = state.model
+    assert model is not None, "select_model runs before the IR is made"
     return {
         "name": state.name,
         "phrase": state.phrase,
@@ -25,10 +32,10 @@ def material_ir(state: MaterialState, convention: str) -> dict:
     }
 
 
-def _params(state: MaterialState, model: dict, convention: str) -> dict:
+def _params(state: MaterialState, model: JSONDict, convention: str) -> JSONDict:
     """The parameters the model uses, rounded."""
     p, base = state.params, model["base"]
-    out = {}
+    out: JSONDict = {}
     for k in PARAMS_BY_MODEL[base]:
         if k in p:
             value = p[k]
@@ -46,27 +53,25 @@ def _params(state: MaterialState, model: dict, convention: str) -> dict:
     return out
 
 
-def _coat(coat: dict, convention: str) -> dict:
-    return {
-        "name": coat["name"],
-        "ior": coat["ior"],
-        "roughness": coat["roughness"],
-        "alpha": alpha_of(coat["roughness"], 0.0, convention),
-        "color": coat["color"],
-        "thickness": coat["thickness"],
-    }
+def _coat(coat: JSONDict | None, convention: str) -> JSONDict:
+    """The coat's table entries; its alpha from its roughness in the material's convention."""
+    assert coat is not None, "a model with a coat has the coat's values"
+    alpha = alpha_of(coat["roughness"], 0.0, convention)
+    return {s.name: alpha if s.name == "alpha" else coat[s.name] for s in COAT_PARAMS}
 
 
-def _provenance(state: MaterialState) -> dict:
+def _provenance(state: MaterialState) -> dict[str, list[JSONDict]]:
     """param -> its steps in JSON form; steps naming the same words share their word lists."""
-    shared: dict = {}
+    shared: dict[int | tuple[int, ...], WordLists] = {}
     out = {}
     for param, steps in state.provenance.items():  # most parameters have a single step
         out[param] = [step_json(steps[0], shared)] if len(steps) == 1 else [step_json(s, shared) for s in steps]
     return out
 
 
-def document_ir(materials: list[dict], diagnostics: list, source_name: str, lexicon_sources) -> dict:
+def document_ir(
+    materials: list[JSONDict], diagnostics: list[Diagnostic], source_name: str, lexicon_sources: Iterable[str]
+) -> JSONDict:
     return {
         "ir_version": IR_VERSION,
         "source": source_name,

@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from typing import Any
 
 from .params import COAT_PARAMS, PARAMS, ParamSpec
 
-COMMON_FIELDS = {
+COMMON_FIELDS: dict[str, dict[str, Any]] = {
     "aliases": {"type": "strlist"},
     "doc": {"type": "str", "required": True},
     "example": {"type": "str", "required": True},
@@ -17,23 +19,26 @@ class LexiconError(Exception):
     """A lexicon file is malformed; the message names the file and the key."""
 
 
-def _is_number(value) -> bool:
+FieldSpec = dict[str, Any]  # one field of stdlib/schema.toml: type, required, choices, range, from
+
+
+def _is_number(value: Any) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
 
 
-def _is_rgb(value) -> bool:
+def _is_rgb(value: Any) -> bool:
     return isinstance(value, list) and len(value) == 3 and all(_is_number(v) for v in value)
 
 
-def _is_effects(value) -> bool:
+def _is_effects(value: Any) -> bool:
     return isinstance(value, list) and all(isinstance(e, dict) and "param" in e and "op" in e for e in value)
 
 
-def _is_ops(value) -> bool:
+def _is_ops(value: Any) -> bool:
     return isinstance(value, list) and all(isinstance(e, dict) and "op" in e for e in value)
 
 
-TYPE_CHECKS = {
+TYPE_CHECKS: dict[str, Callable[[Any], bool]] = {
     "str": lambda v: isinstance(v, str),
     "float": _is_number,
     "int": lambda v: isinstance(v, int) and not isinstance(v, bool),
@@ -52,8 +57,8 @@ TYPE_CHECKS = {
 _LEXICON_TYPES = {"number": "float", "rgb": "rgb", "str": "str", "enum": "str"}
 
 
-def _table_field(spec: ParamSpec) -> dict:
-    field: dict = {"type": _LEXICON_TYPES[spec.kind]}
+def _table_field(spec: ParamSpec) -> FieldSpec:
+    field: FieldSpec = {"type": _LEXICON_TYPES[spec.kind]}
     if spec.range is not None:
         field["range"] = list(spec.range)
     if spec.choices:
@@ -69,9 +74,9 @@ TABLE_FIELDS = {
 }
 
 
-def check_entry(entry: dict, fields: dict, where: str, partial: bool = False) -> None:
+def check_entry(entry: dict[str, Any], fields: dict[str, FieldSpec], where: str, partial: bool = False) -> None:
     """Raise LexiconError for an unknown field, a wrong type, a bad choice or a value out of range."""
-    allowed = {**COMMON_FIELDS, **fields}
+    allowed: dict[str, FieldSpec] = {**COMMON_FIELDS, **fields}
     for name, value in entry.items():
         spec = allowed.get(name)
         if spec is None:
@@ -83,7 +88,7 @@ def check_entry(entry: dict, fields: dict, where: str, partial: bool = False) ->
                 raise LexiconError(f"{where}: missing required field '{name}'")
 
 
-def _check_value(value, spec: dict, where: str) -> None:
+def _check_value(value: Any, spec: FieldSpec, where: str) -> None:
     source = spec.get("from")
     if source is not None:
         spec = {**TABLE_FIELDS[source], **spec}

@@ -3,13 +3,19 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 from . import ast
+from .diagnostics import Diagnostic
 from .formulas import round6, rounded
 from .lexicon import Entry, Lexicon
 from .params import noun_params
 
 NOUN_PARAMS = noun_params()  # what a lexicon noun may set, from the parameter table
+
+Words = tuple[ast.Word, ...]
+WordLists = tuple[list[str], list[list[int]]]  # a step's words as JSON: their texts and spans
+JSONDict = dict[str, Any]
 
 
 class Step:
@@ -17,24 +23,24 @@ class Step:
 
     __slots__ = ("rule", "words", "value", "source")
 
-    def __init__(self, rule: str, words: tuple, value, source: str | None = None):
+    def __init__(self, rule: str, words: Words, value: Any, source: str | None = None) -> None:
         self.rule, self.words, self.value, self.source = rule, words, value, source
 
     @property
     def texts(self) -> list[str]:
         return [w.text for w in self.words]
 
-    def to_json(self, memo: dict | None = None) -> dict:
+    def to_json(self, memo: dict[int | tuple[int, ...], WordLists] | None = None) -> JSONDict:
         """The JSON form; `memo` shares the word lists of steps that name the same words."""
         return step_json(self, {} if memo is None else memo)
 
 
-def words_key(words: tuple) -> int | tuple[int, ...]:
+def words_key(words: Words) -> int | tuple[int, ...]:
     """The words by where they start in the source: one word, one token (cheaper than hashing the words)."""
     return words[0].span.start if len(words) == 1 else tuple([w.span.start for w in words])
 
 
-def step_json(step: Step, shared: dict) -> dict:
+def step_json(step: Step, shared: dict[int | tuple[int, ...], WordLists]) -> JSONDict:
     """A step's JSON form; `shared` (words_key -> their texts and spans) is filled as it goes."""
     words = step.words
     key = words_key(words)
@@ -59,7 +65,7 @@ class Context:
     filename: str = "<input>"
 
     @property
-    def settings(self) -> dict:
+    def settings(self) -> dict[str, Any]:
         return self.lexicon.settings
 
 
@@ -70,24 +76,38 @@ class MaterialState:
     name: str
     phrase: str
     selection: ast.Material
-    variant: dict | None = None
+    variant: dict[str, Any] | None = None
     noun: Entry | None = None
     kind: str = "dielectric"
-    params: dict = field(default_factory=dict)
-    coat: dict | None = None
-    maps: dict = field(default_factory=dict)
-    provenance: dict = field(default_factory=dict)
-    diagnostics: list = field(default_factory=list)
-    applied: list = field(default_factory=list)  # (adjective key, Word) in order
-    brackets: dict = field(default_factory=dict)  # refinement search state per target
-    model: dict | None = None
+    params: dict[str, Any] = field(default_factory=dict)
+    coat: dict[str, Any] | None = None
+    maps: dict[str, JSONDict] = field(default_factory=dict)
+    provenance: dict[str, list[Step]] = field(default_factory=dict)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    applied: list[tuple[str, ast.Word]] = field(default_factory=list)  # (adjective key, Word) in order
+    brackets: dict[str, Any] = field(default_factory=dict)  # refinement search state per target
+    model: dict[str, Any] | None = None
 
-    def record(self, param: str, value, rule: str, words=(), source: str | None = None) -> None:
+    def record(
+        self,
+        param: str,
+        value: Any,
+        rule: str,
+        words: tuple[ast.Word, ...] | list[ast.Word] = (),
+        source: str | None = None,
+    ) -> None:
         """Set a parameter and remember which words and rule set it."""
         self.params[param] = value
         self.note(param, value, rule, words, source)
 
-    def note(self, param: str, value, rule: str, words=(), source: str | None = None) -> None:
+    def note(
+        self,
+        param: str,
+        value: Any,
+        rule: str,
+        words: tuple[ast.Word, ...] | list[ast.Word] = (),
+        source: str | None = None,
+    ) -> None:
         self.provenance.setdefault(param, []).append(Step(rule, tuple(words), value, source))
 
     def words_of(self, param: str) -> set[str]:

@@ -163,7 +163,7 @@ class Analyzer:
             tuple(_with_spans(result)),
             tuple(result.materials),
             tuple(s.selection.span.line for s in result.states),
-            tuple(result.document.items),
+            tuple(result.source_document.items),
         )
         _remember(self._blocks, text, block, MAX_CACHED_BLOCKS)
         return block
@@ -192,7 +192,7 @@ class Analyzer:
 
 def _with_spans(result):
     """Diagnostics without a span (W108) are placed on their material's phrase."""
-    phrase = next((item.span for item in result.document.items if isinstance(item, ast.Material)), None)
+    phrase = next((item.span for item in result.source_document.items if isinstance(item, ast.Material)), None)
     fallback = phrase or Span(0, 0, 1, 1)
     for diag in result.diagnostics:
         yield diag if diag.span is not None else dataclasses.replace(diag, span=fallback)

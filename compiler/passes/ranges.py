@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 from ..diagnostics import warning
 from ..graphs import graph_params
 from ..params import COAT_PARAMS, PARAMS, ranges
-from ..state import Context, MaterialState
+from ..spans import Span
+from ..state import Context, MaterialState, Step
 
 #: The order clamps are checked and reported in when one word pushes several values out of range
 #: (kept from IR version 1). Parameters not named here follow in the table's order.
@@ -23,7 +26,7 @@ RANGES = _check_order(ranges(PARAMS))  # param -> (low, high), from the paramete
 COAT_RANGES = _check_order(ranges(COAT_PARAMS))
 
 
-def clamp(value, low: float, high: float):
+def clamp(value: Any, low: float, high: float) -> Any:
     if isinstance(value, list):
         return [clamp(v, low, high) for v in value]
     if not isinstance(value, (int, float)) or math.isnan(value):
@@ -40,7 +43,9 @@ def check_ranges(state: MaterialState, ctx: Context) -> MaterialState:
     return state
 
 
-def _check_all(state, holder: dict, ranges: dict, prefix: str) -> None:
+def _check_all(
+    state: MaterialState, holder: dict[str, Any], ranges: Mapping[str, Sequence[float]], prefix: str
+) -> None:
     """`ranges`: param -> (low, high, ...)."""
     for param, bounds in ranges.items():
         value = holder.get(param)
@@ -50,7 +55,7 @@ def _check_all(state, holder: dict, ranges: dict, prefix: str) -> None:
             _clamp(state, holder, param, prefix + param, bounds[0], bounds[1])
 
 
-def _in_range(value, low: float, high: float) -> bool:
+def _in_range(value: Any, low: float, high: float) -> bool:
     if type(value) is not list:
         return (type(value) is float or type(value) is int) and low <= value <= high  # NaN fails both
     for v in value:
@@ -59,7 +64,7 @@ def _in_range(value, low: float, high: float) -> bool:
     return True
 
 
-def _clamp(state, holder: dict, param: str, name: str, low: float, high: float) -> None:
+def _clamp(state: MaterialState, holder: dict[str, Any], param: str, name: str, low: float, high: float) -> None:
     """Clamp an out-of-range value, with a W107 naming the words that set it."""
     value = holder[param]
     fixed = clamp(value, low, high)
@@ -78,14 +83,14 @@ def _clamp(state, holder: dict, param: str, name: str, low: float, high: float) 
     )
 
 
-def _last_span(steps):
+def _last_span(steps: list[Step]) -> Span | None:
     for step in reversed(steps):
         if step.words:
             return step.words[-1].span
     return None
 
 
-def _fmt(value) -> str:
+def _fmt(value: Any) -> str:
     if isinstance(value, list):
         return "(" + ", ".join(f"{v:.3g}" for v in value) + ")"
     return f"{value:.3g}"

@@ -105,3 +105,10 @@ def test_malformed_ir_is_rejected_naming_the_path(break_it, message):
     with pytest.raises(ValueError) as err:
         Document.from_ir(ir)
     assert str(err.value).startswith(message)
+
+
+def test_result_types_its_ir_once():
+    result = compile_source("brushed steel", "x.cnl")
+    assert result.document is result.document  # built on first use, kept
+    assert result.document.to_ir() == result.ir
+    assert result.source_document is not None and result.source_document.items
