@@ -299,8 +299,7 @@ def _finalize(value: Any) -> Any:
     return xml_text(value) if isinstance(value, str) and not isinstance(value, markupsafe.Markup) else value
 
 
-@functools.lru_cache(maxsize=1)
-def environment() -> jinja2.Environment:
+def template_environment() -> jinja2.Environment:
     env = jinja2.Environment(
         loader=jinja2.PackageLoader("cnlmc.backends.exchange", "templates/mitsuba"),
         autoescape=True,
@@ -326,18 +325,16 @@ def layout(count: int) -> tuple[list[list[float]], dict[str, Any]]:
     return centres, {"fov": fov, "origin": [0, 0, round(distance, 4)], "target": [0, 0, 0]}
 
 
-@functools.lru_cache(maxsize=1)
-def version() -> str:
+def installed_version() -> str:
     try:
         return dist_version("cnlmc")
     except PackageNotFoundError:  # pragma: no cover - not installed
         return "dev"
 
 
-def render_xml(entries: list[dict[str, Any]], options: Options) -> str:
-    env = environment()
+def render_xml(entries: list[dict[str, Any]], options: Options, env: jinja2.Environment, version: str) -> str:
     if options.form == "fragment":
-        return env.get_template("fragment.xml.j2").render(materials=entries, version=version())
+        return env.get_template("fragment.xml.j2").render(materials=entries, version=version)
     centres, camera = layout(len(entries))
     for entry, centre in zip(entries, centres):
         entry["center"] = centre
@@ -348,7 +345,7 @@ def render_xml(entries: list[dict[str, Any]], options: Options) -> str:
         resolution=options.resolution,
         max_depth=options.max_depth,
         envmap=options.envmap,
-        version=version(),
+        version=version,
     )
 
 
@@ -393,12 +390,23 @@ class MitsubaTarget(Target):
     capabilities = CAPABILITIES
     options = OPTIONS
 
+    @functools.cached_property
+    def templates(self) -> jinja2.Environment:
+        """The template environment (it keeps the compiled templates), made on first use."""
+        return template_environment()
+
+    @functools.cached_property
+    def version(self) -> str:
+        """The cnlmc version the files are stamped with."""
+        return installed_version()
+
     def emit(self, document: Document, options: Options) -> EmitResult:
         check_counts(options)
         scene = MitsubaScene(document, options)
         baked = emit_each(self, document, scene.add, scene.capabilities_of)
         name = "materials.xml" if options.form == "fragment" else "scene.xml"
-        return EmitResult([Artifact(name, render_xml(scene.entries, options)), *baked.artifacts], baked.notes)
+        xml = render_xml(scene.entries, options, self.templates, self.version)
+        return EmitResult([Artifact(name, xml), *baked.artifacts], baked.notes)
 
 
 TARGET = MitsubaTarget()

@@ -175,7 +175,7 @@ def author_materialx(stage: Any, material_prim: Any, material: Material, texture
     """The 'materialx' backend's document for this material, as UsdShade prims with ND_* ids."""
     ident = identifier(material.name)
     doc = mtlx_backend.build_document([material], surface, {ident: textures}, [ident])
-    mtlx_backend.validate(doc)
+    mtlx_backend.validate(doc, mtlx_backend.TARGET.library)
     scope = material_prim.GetPath()  # shaders sit directly in the Material (a connectable container)
     shaders = {}
     nodes = [n for n in doc.getNodes() if n.getCategory() != "surfacematerial"]

@@ -130,9 +130,9 @@ def all_sources() -> list[str]:
 @pytest.fixture(scope="session")
 def mx_library():
     require("MaterialX", "materialx")
-    from cnlmc.backends.exchange.materialx import standard_library
+    from cnlmc.backends.exchange.materialx import TARGET
 
-    return standard_library()
+    return TARGET.library
 
 
 def write_artifacts(artifacts, folder) -> None:
