@@ -1,14 +1,19 @@
-"""The syntax tree: what the phrase says, with a span on every node; no parameter values."""
+"""The syntax tree: what the phrase says, with a span on every node; no parameter values.
+
+The nodes are frozen dataclasses with a hand-written __init__ that fills the instance's
+__dict__ (see spans.Span: twice as fast as the generated one, and nodes are made for every
+phrase). Equality, hashing, repr, asdict and replace are the dataclass's own.
+"""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from .records import record
+from .diagnostics import Diagnostic
 from .spans import Span
 
 
-@record
+@dataclass(frozen=True, init=False)
 class Word:
     """A tagged word: its surface text, its lexicon key and category, and where it stands."""
 
@@ -18,8 +23,16 @@ class Word:
     span: Span
     unknown: bool = False
 
+    def __init__(self, text: str, key: str, category: str, span: Span, unknown: bool = False) -> None:
+        fields = self.__dict__
+        fields["text"] = text
+        fields["key"] = key
+        fields["category"] = category
+        fields["span"] = span
+        fields["unknown"] = unknown
 
-@record
+
+@dataclass(frozen=True, init=False)
 class Colour:
     """Shade words then a colour word ("dark slate blue"), or shades alone ("dark")."""
 
@@ -27,12 +40,18 @@ class Colour:
     base: Word | None
     span: Span
 
+    def __init__(self, shades: tuple[Word, ...], base: Word | None, span: Span) -> None:
+        fields = self.__dict__
+        fields["shades"] = shades
+        fields["base"] = base
+        fields["span"] = span
+
     @property
     def words(self) -> tuple[Word, ...]:
         return self.shades + ((self.base,) if self.base else ())
 
 
-@record
+@dataclass(frozen=True, init=False)
 class Group:
     """Adverbs, colour alternatives and adjective alternatives: "lightly brushed", "red or blue anodized"."""
 
@@ -42,16 +61,41 @@ class Group:
     adjectives: tuple[Word, ...]
     span: Span
 
+    def __init__(
+        self,
+        kind: str,
+        adverbs: tuple[Word, ...],
+        colours: tuple[Colour, ...],
+        adjectives: tuple[Word, ...],
+        span: Span,
+    ) -> None:
+        fields = self.__dict__
+        fields["kind"] = kind
+        fields["adverbs"] = adverbs
+        fields["colours"] = colours
+        fields["adjectives"] = adjectives
+        fields["span"] = span
 
-@record
+
+@dataclass(frozen=True, init=False)
 class Coat:
+    """'with a glossy white varnish': the coat's own groups and its coat word."""
+
     groups: tuple[Group, ...]
-    coat: Word
+    coat: Word | None
     span: Span
 
+    def __init__(self, groups: tuple[Group, ...], coat: Word | None, span: Span) -> None:
+        fields = self.__dict__
+        fields["groups"] = groups
+        fields["coat"] = coat
+        fields["span"] = span
 
-@record
+
+@dataclass(frozen=True, init=False)
 class Material:
+    """A material phrase: optional 'name:', describing groups, the noun alternatives, an optional coat."""
+
     name: Word | None
     groups: tuple[Group, ...]
     nouns: tuple[Word, ...]
@@ -59,25 +103,62 @@ class Material:
     span: Span
     text: str
 
+    def __init__(
+        self,
+        name: Word | None,
+        groups: tuple[Group, ...],
+        nouns: tuple[Word, ...],
+        coat: Coat | None,
+        span: Span,
+        text: str,
+    ) -> None:
+        fields = self.__dict__
+        fields["name"] = name
+        fields["groups"] = groups
+        fields["nouns"] = nouns
+        fields["coat"] = coat
+        fields["span"] = span
+        fields["text"] = text
 
-@record
+
+@dataclass(frozen=True, init=False)
 class RefineItem:
+    """One refinement ('darker', 'less diffuse') and what it is about ('blue'), if said."""
+
     word: Word
     target: Word | Colour | None
     span: Span
 
+    def __init__(self, word: Word, target: Word | Colour | None, span: Span) -> None:
+        fields = self.__dict__
+        fields["word"] = word
+        fields["target"] = target
+        fields["span"] = span
 
-@record
+
+@dataclass(frozen=True, init=False)
 class Refinement:
+    """A refinement line: 'darker blue, less diffuse'."""
+
     name: Word | None
     items: tuple[RefineItem, ...]
     span: Span
     text: str
+
+    def __init__(self, name: Word | None, items: tuple[RefineItem, ...], span: Span, text: str) -> None:
+        fields = self.__dict__
+        fields["name"] = name
+        fields["items"] = items
+        fields["span"] = span
+        fields["text"] = text
+
+
+Item = Material | Refinement
 
 
 @dataclass
 class Document:
     filename: str
     source: str
-    items: list = field(default_factory=list)
-    diagnostics: list = field(default_factory=list)
+    items: list[Item] = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list)

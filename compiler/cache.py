@@ -11,7 +11,9 @@ import hashlib
 import os
 import pickle
 import tempfile
+from collections.abc import Callable, Iterable
 from pathlib import Path
+from typing import TypeVar
 
 from . import __version__
 
@@ -21,7 +23,10 @@ def cache_dir() -> Path:
     return Path(base) / "cnlmc"
 
 
-def _key(kind: str, sources) -> str:
+T = TypeVar("T")
+
+
+def _key(kind: str, sources: Iterable[Path]) -> str:
     digest = hashlib.sha256(f"{kind}:{__version__}".encode())
     for path in sources:
         st = path.stat()
@@ -29,22 +34,23 @@ def _key(kind: str, sources) -> str:
     return digest.hexdigest()[:32]
 
 
-def cached(kind: str, sources, build):
+def cached(kind: str, sources: Iterable[Path], build: Callable[[], T]) -> T:
     """build() once per distinct set of source files; later calls read the pickle."""
     if os.environ.get("CNLMC_NO_CACHE"):
         return build()
     path = cache_dir() / f"{kind}-{_key(kind, sources)}.pickle"
     try:
         with open(path, "rb") as handle:
-            return pickle.load(handle)
+            value: T = pickle.load(handle)
+            return value
     except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError):
         pass
-    value = build()
-    _store(path, value)
-    return value
+    built = build()
+    _store(path, built)
+    return built
 
 
-def _store(path: Path, value) -> None:
+def _store(path: Path, value: object) -> None:
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
@@ -53,3 +59,19 @@ def _store(path: Path, value) -> None:
         os.replace(tmp, path)
     except OSError:
         pass  # a read-only home is fine: we just rebuild next time
+
+
+def freeze_long_lived() -> None:
+    """Move what is alive now (modules, a loaded lexicon, parser tables) out of the cyclic GC's way.
+
+    For long-running entry points (the CLI's main, the language server), called once what they
+    keep is loaded: a lexicon is thousands of long-lived containers that every full collection
+    would traverse again. Reference counting still frees everything; only cyclic garbage that
+    exists at this moment is kept. Set CNLMC_NO_GC_FREEZE=1 to leave the collector alone.
+    """
+    import atexit
+    import gc
+
+    if not os.environ.get("CNLMC_NO_GC_FREEZE"):
+        gc.freeze()
+        atexit.register(gc.unfreeze)  # let extension modules see their objects freed at exit

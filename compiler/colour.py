@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Sequence
+
 LUMA = (0.2126, 0.7152, 0.0722)  # Rec.709 luminance weights
 
 
@@ -21,23 +23,23 @@ def hex_to_linear(hex_code: str) -> list[float]:
     return [round(srgb_to_linear(int(h[i : i + 2], 16) / 255), 6) for i in (0, 2, 4)]
 
 
-def linear_to_hex(rgb) -> str:
+def linear_to_hex(rgb: Iterable[float]) -> str:
     return "#" + "".join(f"{round(linear_to_srgb(c) * 255):02x}" for c in rgb)
 
 
-def luminance(rgb) -> float:
+def luminance(rgb: Iterable[float]) -> float:
     return sum(w * c for w, c in zip(LUMA, rgb))
 
 
-def saturate(rgb, amount: float) -> list[float]:
+def saturate(rgb: Sequence[float], amount: float) -> list[float]:
     """Move away from (amount > 0) or towards (amount < 0) the grey of equal luminance."""
     y = luminance(rgb)
     return [y + (c - y) * (1 + amount) for c in rgb]
 
 
-def blend(a, b, t: float) -> list[float]:
+def blend(a: Iterable[float], b: Iterable[float], t: float) -> list[float]:
     return [x + t * (y - x) for x, y in zip(a, b)]
 
 
-def clamp01(rgb) -> list[float]:
+def clamp01(rgb: Iterable[float]) -> list[float]:
     return [min(max(c, 0.0), 1.0) for c in rgb]

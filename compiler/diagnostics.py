@@ -2,10 +2,22 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from enum import Enum
+from typing import Any
 
 from .spans import Span
+
+FailureKey = tuple[int, int, str]  # (parser stack depth, LALR state, token type) where a line failed to parse
+
+
+@dataclass(frozen=True)
+class Mistake:
+    """A friendly message and hint for a syntax error, learned from grammar/bad_examples.toml."""
+
+    message: str
+    hint: str
 
 
 class Severity(str, Enum):  # noqa: UP042 -- str() of a member stays "Severity.ERROR"
@@ -27,8 +39,8 @@ class Diagnostic:
     def is_error(self) -> bool:
         return self.severity is Severity.ERROR
 
-    def to_json(self) -> dict:
-        out = {"severity": self.severity.value, "code": self.code, "message": self.message}
+    def to_json(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"severity": self.severity.value, "code": self.code, "message": self.message}
         if self.span is not None:
             out["line"], out["col"], out["end_col"] = self.span.as_list()
         if self.hints:
@@ -38,15 +50,19 @@ class Diagnostic:
         return out
 
 
-def error(span, code, message, hints=(), suggestions=()) -> Diagnostic:
+def error(
+    span: Span | None, code: str, message: str, hints: Iterable[str] = (), suggestions: Iterable[str] = ()
+) -> Diagnostic:
     return Diagnostic(span, Severity.ERROR, code, message, tuple(hints), tuple(suggestions))
 
 
-def warning(span, code, message, hints=(), suggestions=()) -> Diagnostic:
+def warning(
+    span: Span | None, code: str, message: str, hints: Iterable[str] = (), suggestions: Iterable[str] = ()
+) -> Diagnostic:
     return Diagnostic(span, Severity.WARNING, code, message, tuple(hints), tuple(suggestions))
 
 
-def did_you_mean(suggestions) -> tuple[str, ...]:
+def did_you_mean(suggestions: Sequence[str]) -> tuple[str, ...]:
     """The hint line for a list of suggested words, or nothing."""
     if not suggestions:
         return ()
@@ -77,5 +93,5 @@ def _source_line(source: str, line: int) -> str:
     return ""
 
 
-def has_errors(diags) -> bool:
+def has_errors(diags: Iterable[Diagnostic]) -> bool:
     return any(d.is_error for d in diags)

@@ -2,19 +2,22 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 from . import ast
-from .diagnostics import error
+from .diagnostics import Diagnostic, error
 from .lexicon import Lexicon
 from .mistakes import known_mistake
 from .parser import ParseFailure, describe_expected, parse_line_shape
 from .spans import Span
+from .tagged import Tagged
 from .tagger import Tagger
 
 MAX_LINE_CHARS = 2000
 MAX_LINE_WORDS = 64
 
 
-def iter_lines(source: str):
+def iter_lines(source: str) -> Iterator[tuple[int, int, str]]:
     """(1-based line number, offset, text) for each line."""
     if "\n" not in source:
         yield 1, 0, source.rstrip("\r")
@@ -28,7 +31,7 @@ def iter_lines(source: str):
 def parse_document(source: str, lexicon: Lexicon, filename: str = "<input>") -> ast.Document:
     """Parse every line; problems become diagnostics and the next line is parsed anyway."""
     doc = ast.Document(filename, source)
-    tagger = tagger_for(lexicon)
+    tagger = Tagger(lexicon)
     for number, offset, text in iter_lines(source):
         node = parse_line(text, number, offset, tagger, doc.diagnostics)
         if node is not None:
@@ -36,15 +39,7 @@ def parse_document(source: str, lexicon: Lexicon, filename: str = "<input>") -> 
     return doc
 
 
-def tagger_for(lexicon: Lexicon) -> Tagger:
-    """The lexicon's tagger, made once (it keeps no state of its own between lines)."""
-    tagger = lexicon.__dict__.get("_tagger")
-    if tagger is None:
-        tagger = lexicon.__dict__["_tagger"] = Tagger(lexicon)
-    return tagger
-
-
-def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list):
+def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Item | None:
     if not text.strip() or text.lstrip().startswith("#"):
         return None
     if len(text) > MAX_LINE_CHARS:
@@ -72,14 +67,14 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list)
         )
         return None
     try:
-        shape, picks = parse_line_shape(words)
+        shape, picks = parse_line_shape(words, tagger.lexicon.caches.shapes)
     except ParseFailure as failure:
         diags.append(_syntax_error(failure, words, tagger.lexicon))
         return None
     return shape.build(words, picks, text)
 
 
-def _syntax_error(failure: ParseFailure, words, lexicon):
+def _syntax_error(failure: ParseFailure, words: list[Tagged], lexicon: Lexicon) -> Diagnostic:
     """E002 for a word in the wrong place; E003 for a phrase that never names its material."""
     has_noun = any(c.tag == "NOUN" for t in words for c in t.candidates)
     is_refinement = any(c.tag == "REFINE" for c in words[0].candidates)
@@ -103,7 +98,7 @@ def _syntax_error(failure: ParseFailure, words, lexicon):
     )
 
 
-def _early_end(last, expected: set[str], in_coat: bool):
+def _early_end(last: Tagged, expected: set[str], in_coat: bool) -> Diagnostic:
     """The line stopped before the grammar was done: say what is missing."""
     if "COAT" in expected and (in_coat or "NOUN" not in expected):
         return error(

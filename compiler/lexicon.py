@@ -7,13 +7,19 @@ earlier one does not set are kept, so an overlay can change one number of a noun
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
+from importlib.resources.abc import Traversable
 from pathlib import Path
+from typing import Any
 
 from .colour import hex_to_linear
+from .diagnostics import FailureKey, Mistake
 from .lexicon_schema import LexiconError, check_entry
+from .syntax import ShapeCache
+from .tagged import Candidate
 
 CATEGORY_TAGS = {
     "nouns": "NOUN",
@@ -26,21 +32,26 @@ CATEGORY_TAGS = {
     "coats": "COAT",
 }
 SPECIAL_FILES = ("settings", "inflections", "keywords")
+Folder = Path | Traversable  # a lexicon folder or file: the user's, or inside the installed package
+Overlays = str | tuple[str, ...] | None  # overlay names, e.g. "paper" or ("de", "paper")
 
 
 @dataclass(frozen=True)
 class Entry:
     category: str
     key: str
-    data: dict
+    data: dict[str, Any]
     origin: str
 
     @property
     def tag(self) -> str:
         return CATEGORY_TAGS[self.category]
 
-    def get(self, name, default=None):
+    def get(self, name: str, default: Any = None) -> Any:
         return self.data.get(name, default)
+
+
+Forms = dict[tuple[str, ...], list[Entry]]  # normalised surface form -> the entries spelled so
 
 
 def normalise(surface: str) -> tuple[str, ...]:
@@ -48,12 +59,44 @@ def normalise(surface: str) -> tuple[str, ...]:
     return tuple(surface.lower().split())
 
 
+class LexiconCaches:
+    """What is derived from one lexicon while it is used, kept with it and never pickled with it.
+
+    - tags: word tuple -> the candidate tags the tagger found for it
+    - suggestions: (word, categories, limit) -> the closest surface forms (Lexicon.suggest)
+    - suggestion_pools: categories -> the sorted surface forms suggestions are drawn from
+    - shapes: parse shapes by the candidate tags of a line's words (parser.parse_line_shape)
+    - mistakes: parser failure key -> the friendly message learned from grammar/bad_examples.toml
+      (None until a line first fails to parse; mistakes.known_mistake)
+    - effect_rules: (rule, where the effect list is, effect index, weight) -> the provenance text
+      of that lexicon effect (passes/words.py)
+    """
+
+    MAX_ENTRIES = 4096  # a memo this full starts over
+
+    def __init__(self) -> None:
+        self.tags: dict[tuple[str, ...], tuple[Candidate, ...]] = {}
+        self.suggestions: dict[tuple[str, tuple[str, ...], int], list[str]] = {}
+        self.suggestion_pools: dict[tuple[str, ...], list[str]] = {}
+        self.shapes = ShapeCache()
+        self.mistakes: dict[FailureKey, Mistake] | None = None
+        self.effect_rules: dict[tuple[str, str, int, float], str] = {}
+
+
 class Lexicon:
-    """Entries by category, an index of surface forms, inflection rules and settings."""
+    """Entries by category, an index of surface forms, inflection rules and settings.
+
+    Everything derived from it while it is used lives in `caches` (a LexiconCaches).
+    """
 
     def __init__(
-        self, entries: dict, settings: dict, inflections: list, sources: list[str], keywords: dict | None = None
-    ):
+        self,
+        entries: dict[str, dict[str, Entry]],
+        settings: dict[str, Any],
+        inflections: list[tuple[str, str]],
+        sources: list[str],
+        keywords: dict[str, str] | None = None,
+    ) -> None:
         self.keywords = {**keyword_table(), **(keywords or {})}
         self.entries = entries
         self.settings = settings
@@ -61,28 +104,24 @@ class Lexicon:
         self.sources = sources
         self.forms = _index_forms(entries)
         self.max_form_words = max(len(f) for f in self.forms)
-        self._suggest_pool = {}
-        self.tag_memo = {}  # word tuple -> candidate tags (filled by the tagger)
+        self.followers = _multi_word_followers(self.forms)
+        self.lengths_from = _multi_word_lengths(self.forms)
+        self.caches = LexiconCaches()
+
+    def __getstate__(self) -> dict[str, Any]:
+        return {name: value for name, value in self.__dict__.items() if name != "caches"}
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        self.__dict__.update(state)
+        self.caches = LexiconCaches()
 
     def multi_word_followers(self) -> dict[str, frozenset[str]]:
         """First word of a multi-word form -> the words that can come second ("stainless" -> {"steel"})."""
-        if getattr(self, "_followers", None) is None:
-            followers: dict[str, set[str]] = {}
-            for form in self.forms:
-                if len(form) > 1:
-                    followers.setdefault(form[0], set()).add(form[1])
-            self._followers = {first: frozenset(seconds) for first, seconds in followers.items()}
-        return self._followers
+        return self.followers
 
     def multi_word_lengths(self) -> dict[str, tuple[int, ...]]:
         """First word -> the word counts (> 1) of the forms it starts, longest first."""
-        if getattr(self, "_multi_lengths", None) is None:
-            lengths: dict[str, set[int]] = {}
-            for form in self.forms:
-                if len(form) > 1:
-                    lengths.setdefault(form[0], set()).add(len(form))
-            self._multi_lengths = {first: tuple(sorted(ns, reverse=True)) for first, ns in lengths.items()}
-        return self._multi_lengths
+        return self.lengths_from
 
     def entry(self, category: str, key: str) -> Entry | None:
         by_key = self.entries.get(category)
@@ -99,35 +138,52 @@ class Lexicon:
                 out.append(word[: len(word) - len(suffix)] + repl)
         return out
 
-    def suggest(self, word: str, categories=None, limit: int = 3) -> list[str]:
+    def suggest(self, word: str, categories: Iterable[str] | None = None, limit: int = 3) -> list[str]:
         """Closest surface forms to `word`, best first (rapidfuzz ratio >= 70)."""
         key = (word.lower(), tuple(categories or CATEGORY_TAGS), limit)
-        memo = self.__dict__.setdefault("_suggest_memo", {})
+        memo = self.caches.suggestions
         if key not in memo:
-            if len(memo) > 4096:
+            if len(memo) > LexiconCaches.MAX_ENTRIES:
                 memo.clear()
             memo[key] = self._closest(*key)
         return list(memo[key])
 
-    def _closest(self, word: str, categories: tuple, limit: int) -> list[str]:
+    def _closest(self, word: str, categories: tuple[str, ...], limit: int) -> list[str]:
         from rapidfuzz import fuzz, process  # only needed when a word is unknown
 
         found = process.extract(word, self._pool(categories), scorer=fuzz.ratio, limit=limit, score_cutoff=70)
         return [match for match, _score, _i in found]
 
-    def _pool(self, categories: tuple) -> list[str]:
-        if categories not in self._suggest_pool:
-            self._suggest_pool[categories] = sorted(
+    def _pool(self, categories: tuple[str, ...]) -> list[str]:
+        pools = self.caches.suggestion_pools
+        if categories not in pools:
+            pools[categories] = sorted(
                 " ".join(form) for form, hits in self.forms.items() if any(e.category in categories for e in hits)
             )
-        return self._suggest_pool[categories]
+        return pools[categories]
 
     def all_of(self, category: str) -> dict[str, Entry]:
         return self.entries.get(category, {})
 
 
-def _index_forms(entries: dict) -> dict:
-    forms: dict[tuple, list[Entry]] = {}
+def _multi_word_followers(forms: Forms) -> dict[str, frozenset[str]]:
+    followers: dict[str, set[str]] = {}
+    for form in forms:
+        if len(form) > 1:
+            followers.setdefault(form[0], set()).add(form[1])
+    return {first: frozenset(seconds) for first, seconds in followers.items()}
+
+
+def _multi_word_lengths(forms: Forms) -> dict[str, tuple[int, ...]]:
+    lengths: dict[str, set[int]] = {}
+    for form in forms:
+        if len(form) > 1:
+            lengths.setdefault(form[0], set()).add(len(form))
+    return {first: tuple(sorted(ns, reverse=True)) for first, ns in lengths.items()}
+
+
+def _index_forms(entries: dict[str, dict[str, Entry]]) -> Forms:
+    forms: Forms = {}
     for by_key in entries.values():
         for entry in by_key.values():
             for surface in [entry.key, *entry.get("aliases", [])]:
@@ -137,14 +193,14 @@ def _index_forms(entries: dict) -> dict:
     return forms
 
 
-def _schema() -> dict:
+def _schema() -> dict[str, Any]:
     import tomllib
 
     text = resources.files("cnlmc.stdlib").joinpath("schema.toml").read_text("utf-8")
     return tomllib.loads(text)
 
 
-def keyword_table(table: dict | None = None) -> dict[str, str]:
+def keyword_table(table: dict[str, Any] | None = None) -> dict[str, str]:
     """Closed-class words -> grammar terminal, from grammar/keywords.toml (or a given table)."""
     if table is None:
         import tomllib
@@ -161,7 +217,7 @@ def _category_of(stem: str) -> str | None:
     return None
 
 
-def _read_toml(path) -> dict:
+def _read_toml(path: Folder) -> dict[str, Any]:
     import tomllib
 
     try:
@@ -172,27 +228,27 @@ def _read_toml(path) -> dict:
         raise LexiconError(f"{path}: cannot read: {exc.strerror}") from None
 
 
-def _layer_files(folder) -> list:
+def _layer_files(folder: Folder) -> list[Folder]:
     return sorted((p for p in folder.iterdir() if p.name.endswith(".toml")), key=lambda p: p.name)
 
 
 class _Builder:
     """Accumulates layers, most specific first; a field already set is never replaced."""
 
-    def __init__(self):
+    def __init__(self) -> None:
         self.schema = _schema()
-        self.raw: dict[str, dict[str, tuple[dict, str]]] = {c: {} for c in CATEGORY_TAGS}
-        self.settings: dict = {}
-        self.inflections: list = []
-        self.keywords: dict = {}
+        self.raw: dict[str, dict[str, tuple[dict[str, Any], str]]] = {c: {} for c in CATEGORY_TAGS}
+        self.settings: dict[str, Any] = {}
+        self.inflections: list[tuple[str, str]] = []
+        self.keywords: dict[str, str] = {}
         self.sources: list[str] = []
 
-    def add_layer(self, folder, strict_entries: bool) -> None:
+    def add_layer(self, folder: Folder, strict_entries: bool) -> None:
         self.sources.append(str(folder))
         for path in _layer_files(folder):
             self._add_file(path, strict_entries)
 
-    def _add_file(self, path, strict_entries: bool) -> None:
+    def _add_file(self, path: Folder, strict_entries: bool) -> None:
         stem = path.name[:-5]
         category = _category_of(stem)
         if category is None:
@@ -213,7 +269,7 @@ class _Builder:
             return
         self._add_entries(path, category, data, strict_entries)
 
-    def _add_entries(self, path, category: str, data: dict, strict_entries: bool) -> None:
+    def _add_entries(self, path: Folder, category: str, data: dict[str, Any], strict_entries: bool) -> None:
         fields = self.schema[category]["fields"]
         for key, entry in data.items():
             where = f"{path} [{key}]"
@@ -223,7 +279,7 @@ class _Builder:
             check_entry(entry, fields, where, partial=known or not strict_entries)
             self._merge(category, key, entry, str(path))
 
-    def _merge(self, category: str, key: str, entry: dict, origin: str) -> None:
+    def _merge(self, category: str, key: str, entry: dict[str, Any], origin: str) -> None:
         current = self.raw[category].get(key)
         if current is None:
             self.raw[category][key] = (dict(entry), origin)
@@ -232,7 +288,7 @@ class _Builder:
         merged["aliases"] = sorted(set(current[0].get("aliases", [])) | set(entry.get("aliases", [])))
         self.raw[category][key] = (merged, current[1])
 
-    def _add_keywords(self, path, data: dict) -> None:
+    def _add_keywords(self, path: Folder, data: dict[str, Any]) -> None:
         terminals = set(keyword_table().values())
         table = data.get("terminals")
         if not isinstance(table, dict) or not set(table) <= terminals:
@@ -250,17 +306,17 @@ class _Builder:
         return Lexicon(entries, self.settings, self.inflections, self.sources, self.keywords)
 
 
-def _finish(category: str, key: str, data: dict, origin: str) -> Entry:
+def _finish(category: str, key: str, data: dict[str, Any], origin: str) -> Entry:
     if category == "colours" and "rgb" not in data:
         data = {**data, "rgb": hex_to_linear(data["hex"])}
     return Entry(category, key, data, origin)
 
 
-def stdlib_folder():
+def stdlib_folder() -> Traversable:
     return resources.files("cnlmc.stdlib").joinpath("lexicon")
 
 
-def overlay_folder(name: str):
+def overlay_folder(name: str) -> Traversable:
     folder = resources.files("cnlmc.stdlib").joinpath("overlays").joinpath(name)
     if not folder.is_dir():
         import difflib
@@ -276,12 +332,12 @@ def available_overlays() -> list[str]:
     return sorted(p.name for p in root.iterdir() if p.is_dir())
 
 
-def _overlay_names(overlay) -> tuple[str, ...]:
+def _overlay_names(overlay: Overlays) -> tuple[str, ...]:
     names = (overlay,) if isinstance(overlay, str) else tuple(overlay or ())
     return tuple(n for n in names if n and n != "stdlib")
 
 
-def load_lexicon(user_paths=(), overlay: str | tuple | None = None) -> Lexicon:
+def load_lexicon(user_paths: Iterable[str | Path] = (), overlay: Overlays = None) -> Lexicon:
     """Load the lexicon: user folders first, then the overlays in order, then the bundled stdlib."""
     builder = _Builder()
     for folder in user_paths:
@@ -297,7 +353,7 @@ def load_lexicon(user_paths=(), overlay: str | tuple | None = None) -> Lexicon:
 
 
 @lru_cache(maxsize=8)
-def cached_lexicon(user_paths: tuple = (), overlay: str | tuple | None = None) -> Lexicon:
+def cached_lexicon(user_paths: tuple[str | Path, ...] = (), overlay: Overlays = None) -> Lexicon:
     """The lexicon, from the on-disk cache when no source file changed since it was written."""
     from .cache import cached
 
@@ -310,23 +366,4 @@ def cached_lexicon(user_paths: tuple = (), overlay: str | tuple | None = None) -
         Path(__file__),
     ]  # the classes that are pickled: a change to them rebuilds the cache
     sources += [p for folder in folders if folder.is_dir() for p in sorted(folder.glob("*.toml"))]
-    lexicon = cached("lexicon", sources, lambda: load_lexicon(user_paths, overlay))
-    _freeze_long_lived()
-    return lexicon
-
-
-def _freeze_long_lived() -> None:
-    """Move what is alive now (modules, the lexicon, parser tables) out of the cyclic GC's way.
-
-    The lexicon is thousands of long-lived containers that every full collection would
-    traverse again; frozen, compiling a phrase in-process is about a third faster. Reference
-    counting still frees everything; only cyclic garbage that exists at this moment is kept.
-    Set CNLMC_NO_GC_FREEZE=1 to leave the collector alone.
-    """
-    import atexit
-    import gc
-    import os
-
-    if not os.environ.get("CNLMC_NO_GC_FREEZE"):
-        gc.freeze()
-        atexit.register(gc.unfreeze)  # let extension modules see their objects freed at exit
+    return cached("lexicon", sources, lambda: load_lexicon(user_paths, overlay))

@@ -6,29 +6,29 @@ the key for its message. A user's error with the same key gets that message.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from importlib import resources
+from typing import Any
 
+from .diagnostics import FailureKey, Mistake
+from .lexicon import Lexicon
 from .parser import ParseFailure, parse_tagged
 from .tagger import Tagger
 
-
-@dataclass(frozen=True)
-class Mistake:
-    message: str
-    hint: str
+__all__ = ["Mistake", "known_mistake", "learn"]
 
 
-def _read_table() -> list[dict]:
+def _read_table() -> list[dict[str, Any]]:
     import tomllib
 
     text = resources.files("cnlmc.grammar").joinpath("bad_examples.toml").read_text("utf-8")
-    return tomllib.loads(text)["mistake"]
+    table: list[dict[str, Any]] = tomllib.loads(text)["mistake"]
+    return table
 
 
-def learn(lexicon) -> dict:
+def learn(lexicon: Lexicon) -> dict[FailureKey, Mistake]:
     """(state, token type) -> Mistake, from every example phrase (first example wins)."""
-    tagger, table = Tagger(lexicon), {}
+    tagger = Tagger(lexicon)
+    table: dict[FailureKey, Mistake] = {}
     for row in _read_table():
         mistake = Mistake(row["message"], row["hint"])
         for phrase in row["phrases"]:
@@ -38,7 +38,7 @@ def learn(lexicon) -> dict:
     return table
 
 
-def _failure_key(tagger: Tagger, phrase: str):
+def _failure_key(tagger: Tagger, phrase: str) -> FailureKey | None:
     tagged, _diags = tagger.tag_line(phrase, 1, 0)
     try:
         parse_tagged([t for t in tagged if t.candidates])
@@ -47,8 +47,9 @@ def _failure_key(tagger: Tagger, phrase: str):
     return None
 
 
-def known_mistake(lexicon, failure: ParseFailure) -> Mistake | None:
-    table = getattr(lexicon, "_mistakes", None)
-    if table is None:
-        table = lexicon._mistakes = learn(lexicon)
-    return table.get(failure.key)
+def known_mistake(lexicon: Lexicon, failure: ParseFailure) -> Mistake | None:
+    """The learned message for this failure, if an example phrase failed the same way."""
+    caches = lexicon.caches
+    if caches.mistakes is None:
+        caches.mistakes = learn(lexicon)
+    return None if failure.key is None else caches.mistakes.get(failure.key)

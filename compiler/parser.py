@@ -6,26 +6,30 @@ preference and the first one that lets the whole line parse wins. Lines without
 ambiguous words take a single pass.
 
 The tree depends only on the sequence of terminal types, so parse_line_shape keeps the
-compiled shape of each sequence it has parsed (syntax.Shape, with the chosen candidate per
-word) in a bounded cache keyed by the candidate tags of each word: a line whose words
-carry the same tags as an earlier line skips the parser. Failures are never cached.
+shape of each sequence it has parsed (syntax.Shape, with the chosen candidate per word) in
+a ShapeCache keyed by the candidate tags of each word (the lexicon's, lexicon.caches.shapes):
+a line whose words carry the same tags as an earlier line skips the parser. Failures are
+never cached.
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterator, Sequence
 from functools import lru_cache
 from importlib import resources
+from typing import Any, Literal, TypedDict
 
 from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedInput, UnexpectedToken
-from lark.lexer import Lexer
+from lark.lexer import Lexer, LexerState
+from lark.parsers.lalr_interactive_parser import InteractiveParser
 
-from .syntax import Shape
-from .tagger import Tagged
+from .diagnostics import FailureKey
+from .syntax import Shape, ShapeCache, ShapeKey
+from .tagged import Candidate, Tagged
 
 MAX_BRANCHES = 256  # ambiguous words are few; this bounds the search on hostile input
-MAX_SHAPES = 4096  # distinct terminal sequences kept; the cache starts over when full
-_shapes: dict = {}  # candidate tags per word -> (Shape, chosen candidate index per word or None)
+Chosen = dict[int, Candidate]  # word start offset -> the candidate chosen for it
 
 TERMINAL_NAMES = {
     "NOUN": "a material noun (e.g. 'aluminum')",
@@ -50,14 +54,15 @@ TERMINAL_NAMES = {
 class _Lexer(Lexer):
     """lark calls lex() with whatever parse() was given: here, a ready list of Tokens."""
 
-    def __init__(self, lexer_conf):
+    def __init__(self, lexer_conf: Any) -> None:
         pass
 
-    def lex(self, tokens, _parser_state=None):
-        yield from tokens
+    def lex(self, lexer_state: LexerState | Sequence[Token], parser_state: Any = None) -> Iterator[Token]:
+        assert not isinstance(lexer_state, LexerState), "parse() is given tokens, never text"
+        yield from lexer_state
 
 
-def _grammar_cache_path(grammar: str):
+def _grammar_cache_path(grammar: str) -> str | Literal[False]:
     """Where lark keeps the built LALR tables for this grammar text (rebuilt when it changes)."""
     import hashlib
     import os
@@ -92,19 +97,19 @@ def _token(t: Tagged, tag: str) -> Token:
 
 
 class ParseFailure(Exception):
-    def __init__(self, tagged: Tagged | None, expected: set[str], key=None):
+    def __init__(self, tagged: Tagged | None, expected: set[str], key: FailureKey | None = None) -> None:
         super().__init__("parse failure")
         self.tagged = tagged
         self.expected = expected
         self.key = key  # (LALR state, token type): what the bad-examples table is keyed by
 
 
-def failure_key(exc: UnexpectedToken):
+def failure_key(exc: UnexpectedToken) -> FailureKey | None:
     state = exc.state
     return (len(state.state_stack), state.position, exc.token.type) if state is not None else None
 
 
-def parse_tagged(tagged: list[Tagged]) -> tuple[Tree, dict]:
+def parse_tagged(tagged: list[Tagged]) -> tuple[Tree[Token], Chosen]:
     """Parse a line of tagged words; returns the tree and the chosen tag per word start."""
     words = [t for t in tagged if t.candidates]
     if all(len(t.candidates) == 1 for t in words):
@@ -112,40 +117,33 @@ def parse_tagged(tagged: list[Tagged]) -> tuple[Tree, dict]:
     return _parse_search(words)
 
 
-def parse_line_shape(words: list[Tagged]) -> tuple[Shape, list]:
+def parse_line_shape(words: list[Tagged], shapes: ShapeCache) -> tuple[Shape, list[Candidate]]:
     """The shape of a line's parse and the chosen candidate of each word (raises ParseFailure)."""
-    key = tuple(
+    key: ShapeKey = tuple(
         [t.candidates[0].tag if len(t.candidates) == 1 else tuple([c.tag for c in t.candidates]) for t in words]
     )
-    found = _shapes.get(key)
+    found = shapes.get(key)
     if found is None:
-        found = _compile_shape(words)
-        if len(_shapes) >= MAX_SHAPES:
-            _shapes.clear()
-        _shapes[key] = found
+        found = _read_shape(words)
+        shapes.put(key, *found)
     shape, choice = found
     if choice is None:
         return shape, [t.candidates[0] for t in words]
     return shape, [t.candidates[k] for t, k in zip(words, choice)]
 
 
-def clear_shape_cache() -> None:
-    """Forget every cached shape (the next line of each terminal sequence runs the parser again)."""
-    _shapes.clear()
-
-
-def _compile_shape(words: list[Tagged]) -> tuple[Shape, tuple | None]:
+def _read_shape(words: list[Tagged]) -> tuple[Shape, tuple[int, ...] | None]:
     tree, chosen = parse_tagged(words)
     choice = tuple(_position(t.candidates, chosen[t.span.start]) for t in words)
     shape = Shape(tree, {t.span.start: i for i, t in enumerate(words)})
     return shape, (choice if any(choice) else None)
 
 
-def _position(candidates: tuple, chosen) -> int:
+def _position(candidates: tuple[Candidate, ...], chosen: Candidate) -> int:
     return next(k for k, c in enumerate(candidates) if c is chosen)
 
 
-def _parse_direct(words: list[Tagged]) -> Tree:
+def _parse_direct(words: list[Tagged]) -> Tree[Token]:
     try:
         return lark_parser().parse([_token(t, t.candidates[0].tag) for t in words])
     except UnexpectedToken as exc:
@@ -154,13 +152,18 @@ def _parse_direct(words: list[Tagged]) -> Tree:
         raise ParseFailure(None, set()) from exc
 
 
-def _failure(words, exc: UnexpectedToken) -> ParseFailure:
+def _failure(words: list[Tagged], exc: UnexpectedToken) -> ParseFailure:
     at = next((t for t in words if t.span.start == exc.token.start_pos and exc.token.type != "$END"), None)
     return ParseFailure(at, set(exc.expected), failure_key(exc))
 
 
-def _parse_search(words: list[Tagged]):
-    state = {"budget": MAX_BRANCHES, "deepest": (-1, None, set(), None)}
+class _Search(TypedDict):
+    budget: int  # branches left to try
+    deepest: tuple[int, Tagged | None, set[str], FailureKey | None]  # the failure furthest into the line
+
+
+def _parse_search(words: list[Tagged]) -> tuple[Tree[Token], Chosen]:
+    state: _Search = {"budget": MAX_BRANCHES, "deepest": (-1, None, set(), None)}
     ip = lark_parser().parse_interactive()
     result = _search(ip, words, 0, {}, state)
     if result is None:
@@ -169,7 +172,9 @@ def _parse_search(words: list[Tagged]):
     return result
 
 
-def _search(ip, words, i, chosen, state):
+def _search(
+    ip: InteractiveParser, words: list[Tagged], i: int, chosen: Chosen, state: _Search
+) -> tuple[Tree[Token], Chosen] | None:
     while i < len(words) and len(words[i].candidates) == 1:  # no choice: no copy of the parser
         cand = words[i].candidates[0]
         try:
@@ -197,7 +202,9 @@ def _search(ip, words, i, chosen, state):
     return None
 
 
-def _finish(ip, words, chosen, state):
+def _finish(
+    ip: InteractiveParser, words: list[Tagged], chosen: Chosen, state: _Search
+) -> tuple[Tree[Token], Chosen] | None:
     try:
         last = _token(words[-1], chosen[words[-1].span.start].tag) if words else None
         return ip.feed_eof(last), chosen
@@ -206,7 +213,7 @@ def _finish(ip, words, chosen, state):
         return None
 
 
-def _note_failure(state, index, at, exc):
+def _note_failure(state: _Search, index: int, at: Tagged | None, exc: UnexpectedToken) -> None:
     if index > state["deepest"][0]:
         state["deepest"] = (index, at, set(exc.expected), failure_key(exc))
 

@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from .records import record
+from dataclasses import dataclass
 
 
-@record
+@dataclass(frozen=True, init=False)
 class Span:
     """A half-open character range [start, end) in a source text, with 1-based line/col."""
 
@@ -13,6 +13,16 @@ class Span:
     end: int
     line: int
     col: int
+
+    def __init__(self, start: int, end: int, line: int, col: int) -> None:
+        # Spans and AST nodes are made for every word of every phrase. A frozen dataclass's own
+        # __init__ sets each field through object.__setattr__, twice as slow as filling the
+        # instance's __dict__ as the hand-written __init__ of each of them does.
+        fields = self.__dict__
+        fields["start"] = start
+        fields["end"] = end
+        fields["line"] = line
+        fields["col"] = col
 
     @property
     def end_col(self) -> int:

@@ -9,32 +9,17 @@ candidate tags ("gold": colour or noun); the parser picks the one the grammar ac
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
-from .diagnostics import did_you_mean, error
+from .diagnostics import Diagnostic, did_you_mean, error
 from .lexicon import Lexicon
 from .spans import Span, line_span
+from .tagged import Candidate, Tagged
+
+__all__ = ["OPEN_TAGS", "TAG_PREFERENCE", "TOKEN_RE", "Candidate", "Tagged", "Tagger", "raw_tokens"]
 
 TOKEN_RE = re.compile(r"[^\W\d_](?:[\w'’\-]*\w)?|\d+(?:\.\d+)?%?|[,;:&]|\S", re.UNICODE)
 OPEN_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "REFINE")
 TAG_PREFERENCE = {t: i for i, t in enumerate(("NAME", "COLON", "ARTICLE", "AND", "OR", "WITH", "COMMA", *OPEN_TAGS))}
-
-
-@dataclass(frozen=True, slots=True)
-class Candidate:
-    tag: str
-    key: str
-    category: str
-
-
-@dataclass(slots=True)
-class Tagged:
-    """A word (or multi-word entry) of a line with its candidate tags; made once, never changed."""
-
-    text: str
-    span: object
-    candidates: tuple[Candidate, ...]
-    unknown: bool = False
 
 
 def raw_tokens(line: str) -> list[tuple[str, int]]:
@@ -49,18 +34,24 @@ def raw_tokens(line: str) -> list[tuple[str, int]]:
     return out
 
 
+RawToken = tuple[str, int]  # a word's text and 0-based column
+
+
 class Tagger:
-    def __init__(self, lexicon: Lexicon):
+    """Tags lines against one lexicon; what it learns about words is kept in lexicon.caches.tags."""
+
+    def __init__(self, lexicon: Lexicon) -> None:
         self.lexicon = lexicon
         self.keywords = lexicon.keywords
-        self.followers = lexicon.multi_word_followers()
-        self.lengths_from = lexicon.multi_word_lengths()
-        self.memo = lexicon.tag_memo
+        self.followers = lexicon.followers
+        self.lengths_from = lexicon.lengths_from
+        self.memo = lexicon.caches.tags
 
-    def tag_line(self, line: str, line_no: int, offset: int):
+    def tag_line(self, line: str, line_no: int, offset: int) -> tuple[list[Tagged], list[Diagnostic]]:
         """Return (tagged words, diagnostics) for one line of source."""
         raw = raw_tokens(line)
-        tagged, diags = [], []
+        tagged: list[Tagged] = []
+        diags: list[Diagnostic] = []
         i = self._name_prefix(line, raw, line_no, offset, tagged)
         memo, followers, count = self.memo, self.followers, len(raw)
         while i < count:
@@ -79,7 +70,7 @@ class Tagger:
             i += self._tag_at(raw, i, line_no, offset, tagged, diags)
         return tagged, diags
 
-    def _name_prefix(self, line, raw, line_no, offset, tagged) -> int:
+    def _name_prefix(self, line: str, raw: list[RawToken], line_no: int, offset: int, tagged: list[Tagged]) -> int:
         """'hull: ...' -> NAME COLON; the name may be several words."""
         if ":" not in line:
             return 0
@@ -95,7 +86,9 @@ class Tagger:
         )
         return colon + 1
 
-    def _tag_at(self, raw, i, line_no, offset, tagged, diags) -> int:
+    def _tag_at(
+        self, raw: list[RawToken], i: int, line_no: int, offset: int, tagged: list[Tagged], diags: list[Diagnostic]
+    ) -> int:
         """Tag the entry starting at raw[i], longest multi-word form first; returns how many words it took."""
         text = raw[i][0]
         for n in self.lengths_from.get(text.lower(), ()):
@@ -137,12 +130,12 @@ class Tagger:
         return found
 
     @staticmethod
-    def _span(raw, i, n, line_no, offset):
+    def _span(raw: list[RawToken], i: int, n: int, line_no: int, offset: int) -> Span:
         first_col = raw[i][1]
         last_text, last_col = raw[i + n - 1]
         return line_span(line_no, first_col + 1, last_col + len(last_text) - first_col, offset)
 
-    def _unknown(self, token, line_no, offset, diags) -> Tagged:
+    def _unknown(self, token: RawToken, line_no: int, offset: int, diags: list[Diagnostic]) -> Tagged:
         text, col = token
         span = line_span(line_no, col + 1, len(text), offset)
         is_word = text[0].isalpha()
@@ -150,7 +143,7 @@ class Tagger:
         diags.append(error(span, "E001", _unknown_message(text), did_you_mean(suggestions), suggestions))
         return Tagged(text, span, self._guess(suggestions) if is_word else (), unknown=True)
 
-    def _guess(self, suggestions) -> tuple[Candidate, ...]:
+    def _guess(self, suggestions: list[str]) -> tuple[Candidate, ...]:
         """Tags for an unknown word: those of its best suggestion, else any open tag."""
         for s in suggestions[:1]:
             found = self._candidates(tuple(s.split()))

@@ -9,9 +9,10 @@ from __future__ import annotations
 import itertools
 import re
 import unicodedata
+from typing import Any
 
 from .. import ast
-from ..diagnostics import error
+from ..diagnostics import Diagnostic, error
 
 MAX_VARIANTS = 64
 NON_WORD = re.compile(r"\W+", re.ASCII)
@@ -31,8 +32,13 @@ def identifier(text: str) -> str:
     return "m_" + name if name[0].isdigit() else name
 
 
-def choice_points(material: ast.Material) -> list[tuple]:
-    points = []
+Choice = ast.Colour | ast.Word
+ChoicePoint = tuple[ast.Colour, ...] | tuple[ast.Word, ...]
+
+
+def choice_points(material: ast.Material) -> list[ChoicePoint]:
+    """The alternatives of a phrase in phrase order: each group's colours then adjectives, then nouns."""
+    points: list[ChoicePoint] = []
     for group in material.groups + (material.coat.groups if material.coat else ()):
         for options in (group.colours, group.adjectives):
             if len(options) > 1:
@@ -42,33 +48,56 @@ def choice_points(material: ast.Material) -> list[tuple]:
     return points
 
 
-def _pick_group(group: ast.Group, picks: dict) -> ast.Group:
-    colours = (picks[id(group.colours)],) if id(group.colours) in picks else group.colours
-    adjectives = (picks[id(group.adjectives)],) if id(group.adjectives) in picks else group.adjectives
-    return ast.Group(group.kind, group.adverbs, colours, adjectives, group.span)
+class _Picks:
+    """One combination's choices, handed out in the order choice_points found the alternatives."""
+
+    def __init__(self, combo: tuple[Choice, ...]) -> None:
+        self._next = iter(combo).__next__
+
+    def colours(self, options: tuple[ast.Colour, ...]) -> tuple[ast.Colour, ...]:
+        if len(options) < 2:
+            return options
+        choice = self._next()
+        assert isinstance(choice, ast.Colour)
+        return (choice,)
+
+    def words(self, options: tuple[ast.Word, ...]) -> tuple[ast.Word, ...]:
+        if len(options) < 2:
+            return options
+        choice = self._next()
+        assert isinstance(choice, ast.Word)
+        return (choice,)
+
+    def group(self, group: ast.Group) -> ast.Group:
+        colours = self.colours(group.colours)
+        adjectives = self.words(group.adjectives)
+        return ast.Group(group.kind, group.adverbs, colours, adjectives, group.span)
 
 
-def _select(material: ast.Material, picks: dict) -> ast.Material:
-    groups = tuple([_pick_group(g, picks) for g in material.groups])
+def _select(material: ast.Material, combo: tuple[Choice, ...]) -> ast.Material:
+    picks = _Picks(combo)
+    groups = tuple([picks.group(g) for g in material.groups])
     coat = material.coat
     if coat:
-        coat = ast.Coat(tuple([_pick_group(g, picks) for g in coat.groups]), coat.coat, coat.span)
-    nouns = (picks[id(material.nouns)],) if id(material.nouns) in picks else material.nouns
+        coat = ast.Coat(tuple([picks.group(g) for g in coat.groups]), coat.coat, coat.span)
+    nouns = picks.words(material.nouns)
     return ast.Material(material.name, groups, nouns, coat, material.span, material.text)
 
 
-def _choice_text(choice) -> str:
+def _choice_text(choice: Choice) -> str:
     if isinstance(choice, ast.Colour):
         return " ".join(w.text for w in choice.words)
     return choice.text
 
 
-def expand(material: ast.Material, base_name: str, diags: list) -> list[tuple[ast.Material, dict | None]]:
+def expand(
+    material: ast.Material, base_name: str, diags: list[Diagnostic]
+) -> list[tuple[ast.Material, dict[str, Any] | None]]:
     """(selection, variant info or None) for every combination of the alternatives."""
     points = choice_points(material)
     if not points:
         return [(material, None)]
-    combos = list(itertools.islice(itertools.product(*points), MAX_VARIANTS + 1))
+    combos: list[tuple[Choice, ...]] = list(itertools.islice(itertools.product(*points), MAX_VARIANTS + 1))
     if len(combos) > MAX_VARIANTS:
         diags.append(
             error(
@@ -79,10 +108,9 @@ def expand(material: ast.Material, base_name: str, diags: list) -> list[tuple[as
             )
         )
         combos = combos[:MAX_VARIANTS]
-    out = []
+    out: list[tuple[ast.Material, dict[str, Any] | None]] = []
     for combo in combos:
-        picks = {id(options): choice for options, choice in zip(points, combo)}
         words = [_choice_text(c) for c in combo]
         info = {"group": base_name, "name": identifier("_".join(words)), "choices": words}
-        out.append((_select(material, picks), info))
+        out.append((_select(material, combo), info))
     return out

@@ -6,12 +6,17 @@ a normal map), then anodized (roughness = 0.3) whose colour 'blue' goes to the b
 
 from __future__ import annotations
 
+from typing import Any
+
 from .. import ast
 from ..diagnostics import warning
 from ..formulas import apply_op, describe
+from ..lexicon import Entry, LexiconCaches
 from ..state import Context, MaterialState
 from .base import _map_ref
 from .colours import colour_text, resolve_colour
+
+Effect = dict[str, Any]  # one formula of a lexicon entry: {"param": ..., "op": ..., "value": ...}
 
 
 def group_weight(group: ast.Group, ctx: Context) -> float:
@@ -112,8 +117,9 @@ def apply_adjective(state, ctx, adjective, group: ast.Group, weight: float, targ
     words = (*group.adverbs, word)
     holder = state.coat if target == "coat" and state.coat is not None else state.params
     rule, data = f"adjectives.{adjective.key}", adjective.data
-    for effect in effects_for(adjective, state):
-        _apply_effect(state, holder, effect, weight, rule, words)
+    where, effects = effect_source(adjective, state)
+    for index, effect in enumerate(effects):
+        _apply_effect(state, ctx, holder, effect, weight, (rule, where, index), words)
     if data.get("material"):
         _apply_material(state, ctx, adjective, words)
     if data.get("maps"):
@@ -124,13 +130,20 @@ def apply_adjective(state, ctx, adjective, group: ast.Group, weight: float, targ
         _apply_qualifier(state, ctx, adjective, c, group.adverbs)
 
 
-def effects_for(adjective, state) -> list[dict]:
+def effects_for(adjective: Entry, state: MaterialState) -> list[Effect]:
     """The per-noun formula, else the per-class one, else the default (paper: brushed wood)."""
+    return effect_source(adjective, state)[1]
+
+
+def effect_source(adjective: Entry, state: MaterialState) -> tuple[str, list[Effect]]:
+    """effects_for, with where in the entry the list is ('on.<noun>', 'on.<class>' or 'effects')."""
     data, noun = adjective.data, state.noun
     on = data.get("on")
     if on:
-        return on.get(noun.key) or on.get(noun.data.get("class")) or data.get("effects", [])
-    return data.get("effects", [])
+        for name in (noun.key, noun.data.get("class")):
+            if on.get(name):
+                return f"on.{name}", on[name]
+    return "effects", data.get("effects", [])
 
 
 def _applies(state, adjective, word) -> bool:
@@ -159,8 +172,8 @@ def _check_opposition(state, ctx, adjective, word) -> None:
             )
 
 
-def _apply_effect(state, holder, effect: dict, weight: float, rule: str, words) -> None:
-    param = effect["param"]
+def _apply_effect(state, ctx, holder, effect: Effect, weight: float, place: EffectPlace, words) -> None:
+    rule, param = place[0], effect["param"]
     if param == "model":
         _switch_kind(state, effect["value"], rule, words)
         return
@@ -168,23 +181,25 @@ def _apply_effect(state, holder, effect: dict, weight: float, rule: str, words) 
     value = apply_op(effect["op"], current, effect.get("value"), weight, effect.get("amount"))
     holder[param] = value
     name = param if holder is state.params else f"coat.{param}"
-    state.note(name, value, _effect_rule(rule, effect, weight), words)
+    state.note(name, value, _effect_rule(ctx.lexicon.caches, place, effect, weight), words)
 
 
-_EFFECT_RULES: dict = {}  # (id(effect), weight, rule) -> (effect, rule text); the effect is kept to check identity
+EffectPlace = tuple[str, str, int]  # (rule, where the effect list is in the entry, index in it)
 
 
-def _effect_rule(rule: str, effect: dict, weight: float) -> str:
+def _effect_rule(caches: LexiconCaches, place: EffectPlace, effect: Effect, weight: float) -> str:
     """'adjectives.brushed: roughness *= 1.2 (weight 0.5)', made once per lexicon effect and weight."""
+    rule = place[0]
     if not weight > 0:  # -0.0 would share 0.0's entry but prints differently; NaN never matches
         return f"{rule}: {describe(effect, weight)}"
-    key = (id(effect), weight, rule)
-    found = _EFFECT_RULES.get(key)
-    if found is None or found[0] is not effect:
-        if len(_EFFECT_RULES) >= 4096:
-            _EFFECT_RULES.clear()
-        found = _EFFECT_RULES[key] = (effect, f"{rule}: {describe(effect, weight)}")
-    return found[1]
+    key = (*place, weight)
+    memo = caches.effect_rules
+    found = memo.get(key)
+    if found is None:
+        if len(memo) >= LexiconCaches.MAX_ENTRIES:
+            memo.clear()
+        found = memo[key] = f"{rule}: {describe(effect, weight)}"
+    return found
 
 
 def _switch_kind(state, kind: str, rule: str, words) -> None:

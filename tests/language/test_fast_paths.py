@@ -1,7 +1,8 @@
 """The shortcuts taken for speed give exactly what the plain path gives.
 
-Parse shapes are cached by terminal sequence and later compiled to a function; IR numbers
-are rounded by a fast path; a noun's optics are rounded once per lexicon list.
+Parse shapes are cached by terminal sequence (a shape read from one line builds the AST of
+any line whose words carry the same tags); IR numbers are rounded by a fast path; a noun's
+optics are rounded once per lexicon list.
 """
 
 import math
@@ -9,12 +10,11 @@ import random
 
 import pytest
 
-from cnlmc import parser
 from cnlmc.api import compile_source, lexicon_for
 from cnlmc.document import parse_document
 from cnlmc.formulas import round6, rounded
-from cnlmc.parser import ParseFailure, clear_shape_cache, parse_line_shape, parse_tagged
-from cnlmc.syntax import PROMOTE_AFTER
+from cnlmc.parser import ParseFailure, parse_line_shape, parse_tagged
+from cnlmc.syntax import ShapeCache
 from cnlmc.tagger import Tagger
 
 
@@ -28,38 +28,49 @@ def _words(lexicon, line):
     return [t for t in tagged if t.candidates]
 
 
+def _fresh_build(lexicon, line):
+    """The plain path: parse this very line (an empty cache) and build its AST."""
+    words = _words(lexicon, line)
+    shape, picks = parse_line_shape(words, ShapeCache())
+    return shape.build(words, picks, line)
+
+
 def test_one_shape_serves_lines_with_the_same_tags(lexicon):
-    clear_shape_cache()
+    lexicon.caches.shapes.clear()
     first = parse_document("blue anodized aluminum", lexicon).items[0]
     second = parse_document("red brushed steel", lexicon).items[0]
+    assert len(lexicon.caches.shapes) == 1
     assert [w.text for w in second.groups[0].colours[0].words] == ["red"]
     assert [w.text for w in second.groups[0].adjectives] == ["brushed"]
     assert second.nouns[0].text == "steel" and second.span.end == len("red brushed steel")
     assert first.nouns[0].text == "aluminum"
 
 
-def test_compiled_shape_builds_what_the_closures_build(lexicon):
-    lines = [
-        "hull: lightly brushed, blue anodized aluminum",
-        "oak with a glossy white varnish",
-        "red or blue anodized aluminum",
-        "darker blue, less diffuse",
-        "pale dark slate gray plastic",
-    ]
-    for line in lines:
-        clear_shape_cache()
-        words = _words(lexicon, line)
-        shape, picks = parse_line_shape(words)
-        before = shape.build(words, picks, line)
-        for _ in range(PROMOTE_AFTER + 1):
-            shape, picks = parse_line_shape(words)
-            after = shape.build(words, picks, line)
-        assert after == before, line
-        assert shape.build.__name__ == "build"  # compiled by now
+@pytest.mark.parametrize(
+    "seen, line",
+    [
+        ("hull: lightly brushed, blue anodized aluminum", "deck: heavily polished, red brushed steel"),
+        ("oak with a glossy white varnish", "pine with a matte black varnish"),
+        ("red or blue anodized aluminum", "green or white brushed steel"),
+        ("darker blue, less diffuse", "lighter red, more diffuse"),
+        ("pale dark slate gray plastic", "light dark slate gray rubber"),
+        ("dark pale slate gray rubber", "light dark navy blue rubber"),
+        ("gold plated steel", "gold plated steel"),
+    ],
+)
+def test_a_cached_shape_builds_what_a_fresh_parse_builds(lexicon, seen, line):
+    shapes = ShapeCache()
+    parse_line_shape(_words(lexicon, seen), shapes)
+    words = _words(lexicon, line)
+    shape, picks = parse_line_shape(words, shapes)
+    assert len(shapes) == 1, "the second line has the first line's tags"
+    built = shape.build(words, picks, line)
+    assert built == _fresh_build(lexicon, line)
+    assert shape.build(words, picks, line) == built  # a shape is used again unchanged
 
 
 def test_ambiguous_words_keep_their_choice_through_the_cache(lexicon):
-    clear_shape_cache()
+    lexicon.caches.shapes.clear()
     for _ in range(3):
         item = parse_document("gold plated steel", lexicon).items[0]
         assert item.groups[0].colours[0].base.key == "gold" and item.nouns[0].key == "steel"
@@ -68,21 +79,21 @@ def test_ambiguous_words_keep_their_choice_through_the_cache(lexicon):
 
 
 def test_failures_are_not_cached(lexicon):
-    clear_shape_cache()
+    shapes = ShapeCache()
     words = _words(lexicon, "aluminum brushed")
     for _ in range(2):
         with pytest.raises(ParseFailure):
-            parse_line_shape(words)
+            parse_line_shape(words, shapes)
     with pytest.raises(ParseFailure):
         parse_tagged(words)
-    assert not parser._shapes
+    assert len(shapes) == 0
 
 
 def test_cached_and_uncached_compiles_agree(lexicon):
     text = "lightly brushed, blue anodized aluminum\ndarker blue\nwhite varnished oak\nmore grain"
-    clear_shape_cache()
+    lexicon.caches.shapes.clear()
     cold = compile_source(text, "a.cnl", lexicon).ir
-    for _ in range(PROMOTE_AFTER + 2):
+    for _ in range(3):
         warm = compile_source(text, "a.cnl", lexicon).ir
     assert warm == cold
 

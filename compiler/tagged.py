@@ -1,0 +1,26 @@
+"""A word of a line and its readings: what the tagger gives the parser."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .spans import Span
+
+
+@dataclass(frozen=True, slots=True)
+class Candidate:
+    """One reading of a word: its grammar terminal, lexicon key and category ("gold": COLOR or NOUN)."""
+
+    tag: str
+    key: str
+    category: str
+
+
+@dataclass(slots=True)
+class Tagged:
+    """A word (or multi-word entry) of a line with its candidate tags; made once, never changed."""
+
+    text: str
+    span: Span
+    candidates: tuple[Candidate, ...]
+    unknown: bool = False
