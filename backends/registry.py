@@ -1,4 +1,5 @@
 """Target name -> Target object, and CLI command name -> Command, each imported only when used.
+The front ends (the CLI, cnlmc.api) reach the backends through this module only.
 
 A built-in target module exposes `TARGET`, an instance of `cnlmc.backends.base.Target`.
 Third-party targets register through the entry point group 'cnlmc.backends' (a module with
@@ -18,10 +19,14 @@ from typing import Any
 from cnlmc.material import Document
 
 from .base import Artifact, Command, Options, Target, did_you_mean
-from .capabilities import EmitResult
+from .capabilities import BackendRefused, EmitResult
 
 __all__ = [
     "Artifact",
+    "BackendRefused",
+    "Command",
+    "EmitResult",
+    "Target",
     "BUILTIN_BACKENDS",
     "BUILTIN_COMMANDS",
     "CommandEntry",

@@ -10,8 +10,7 @@ import argparse
 import sys
 from collections.abc import Sequence
 
-from cnlmc.backends.base import Command
-from cnlmc.backends.registry import BUILTIN_COMMANDS, TargetUnavailable, get_command
+from cnlmc.backends.registry import BUILTIN_COMMANDS, Command, TargetUnavailable, get_command
 
 from .cache import freeze_long_lived
 from .commands import EXIT_INTERNAL, EXIT_OK, EXIT_USAGE, LANGUAGE_COMMANDS

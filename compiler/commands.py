@@ -13,9 +13,16 @@ import sys
 from collections.abc import Sequence
 from dataclasses import asdict
 
-from cnlmc.backends.base import Artifact, Command
-from cnlmc.backends.capabilities import BackendRefused, EmitResult
-from cnlmc.backends.registry import TargetUnavailable, UnknownTarget, available, get_target
+from cnlmc.backends.registry import (
+    Artifact,
+    BackendRefused,
+    Command,
+    EmitResult,
+    TargetUnavailable,
+    UnknownTarget,
+    available,
+    get_target,
+)
 
 from .api import Result, compile_source, lexicon_for
 from .diagnostics import render

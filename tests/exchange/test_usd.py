@@ -16,8 +16,8 @@ from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade, UsdValidation  # noqa: E402
 from cnlmc.api import emit  # noqa: E402
 from cnlmc.backends.exchange import usd as backend  # noqa: E402
 from cnlmc.backends.exchange.surface_inputs import surface_inputs  # noqa: E402
+from cnlmc.backends.exchange.usd_stage import author_material  # noqa: E402
 from cnlmc.material import Material  # noqa: E402
-from cnlmc.usd import author_material  # noqa: E402
 
 from .conftest import FAST, all_sources, ir_of, synthetic_ir, write_artifacts  # noqa: E402
 
