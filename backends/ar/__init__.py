@@ -174,8 +174,8 @@ class ShadowOverlay:
 
         from cnlmc.backends.preview import gl
 
-        prog, vao = shadow_quad()
-        shadow_texture(self.mesh).use(0)
+        prog, vao = shadow_quad(renderer.resources)
+        shadow_texture(renderer.resources, self.mesh).use(0)
         gl.set_uniform(prog, "pv_shadow", 0)
         gl.set_uniform(prog, "pv_opacity", self.opacity)
         gl.set_uniform(prog, "pv_extent", SHADOW_EXTENT)
@@ -185,29 +185,24 @@ class ShadowOverlay:
         vao.render(moderngl.TRIANGLE_STRIP)
 
 
-_FOOTPRINTS: dict = {}  # id(mesh) -> (mesh, texture): the mesh is kept, so its id stays its own
-_QUAD: list = []  # [(program, vertex array)] once made
+def shadow_texture(resources, mesh):
+    """The mesh's footprint as a texture, made once per mesh content (a video draws it every frame)."""
+    return resources.once(
+        ("ar shadow", mesh.key),
+        lambda: resources.float_texture(footprint(mesh), mipmaps=False, repeat=(False, False)),
+    )
 
 
-def shadow_texture(mesh):
-    """The mesh's footprint as a texture, made once per mesh (the video form draws it every frame)."""
-    from cnlmc.backends.preview import gl
+def shadow_quad(resources):
+    """(program, vertex array) of the ground quad, made once per resources."""
 
-    if id(mesh) not in _FOOTPRINTS:
-        _FOOTPRINTS[id(mesh)] = (mesh, gl.float_texture(footprint(mesh), mipmaps=False, repeat=(False, False)))
-    return _FOOTPRINTS[id(mesh)][1]
-
-
-def shadow_quad():
-    """(program, vertex array) of the ground quad, made once."""
-    from cnlmc.backends.preview import gl
-
-    if not _QUAD:
+    def make():
         shaders = Path(__file__).parent / "shaders"
-        prog = gl.program((shaders / "ground.vert").read_text(), (shaders / "shadow.frag").read_text())
-        quad = gl.current().buffer(np.array(QUAD_CORNERS, "f4").tobytes())
-        _QUAD.append((prog, gl.current().vertex_array(prog, [(quad, "2f", "in_xz")])))
-    return _QUAD[0]
+        prog = resources.program((shaders / "ground.vert").read_text(), (shaders / "shadow.frag").read_text())
+        quad = resources.ctx.buffer(np.array(QUAD_CORNERS, "f4").tobytes())
+        return prog, resources.ctx.vertex_array(prog, [(quad, "2f", "in_xz")])
+
+    return resources.once(("ar shadow quad",), make)
 
 
 # ----------------------------------------------------------------- compositing
@@ -222,53 +217,78 @@ class ARFrame:
     view_projection: np.ndarray
 
 
-_MESH_CACHE: dict = {}
+class Compositor:
+    """The material's object on the marker, photo after photo, for one set of options. It keeps
+    what every frame reuses: the renderer's resources (programs, textures, the shadow's
+    footprint), the fitted mesh and the environment; `close()` releases them."""
 
+    def __init__(self, options: dict | AROptions | None = None, resources=None):
+        from cnlmc.backends.preview.environment import environment
+        from cnlmc.backends.preview.meshes import fit, mesh_by_name
+        from cnlmc.backends.preview.resources import Resources
 
-def fitted_mesh(name: str):
-    from cnlmc.backends.preview.meshes import fit, mesh_by_name
+        self.opts = options if isinstance(options, AROptions) else parse_options(options)
+        self._owns_resources = resources is None
+        self.resources = resources or Resources()
+        self.mesh = fit(mesh_by_name(self.opts.mesh), stand=True)
+        self.env = environment(self.opts.env)
 
-    if name not in _MESH_CACHE:
-        _MESH_CACHE[name] = fit(mesh_by_name(name), stand=True)
-    return _MESH_CACHE[name]
+    def close(self) -> None:
+        if self._owns_resources:
+            self.resources.release()
+
+    def __enter__(self) -> Compositor:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def composite(self, photo: np.ndarray, material: dict, source: str = "the image") -> ARFrame:
+        """Detect the marker, estimate the pose, render the object on it and composite (BGR in, BGR out)."""
+        opts = self.opts
+        height, width = photo.shape[:2]
+        K = camera_matrix(opts, width, height)
+        pose = estimate_pose(find_marker(photo, opts.marker_id, source), opts.marker_length, K, opts.dist)
+        rgba, model, view_projection = self.render_layer(pose, width, height, material)
+        return ARFrame(over_photo(rgba, photo), pose, rgba, model, view_projection)
+
+    def render_layer(self, pose: Pose, width: int, height: int, material: dict):
+        """The object (and its shadow) as an RGBA layer for a camera at `pose`:
+        (rgba top row first, model matrix, view-projection matrix)."""
+        from cnlmc.backends.preview.camera import Camera
+        from cnlmc.backends.preview.render import Renderer, Scene
+
+        opts = self.opts
+        distance = float(np.linalg.norm(pose.tvec))
+        s = opts.marker_length * opts.scale / 2
+        model = np.diag([s, s, s, 1.0])
+        camera = Camera(
+            (0, 0, 0),
+            (0, 0, -1),
+            view_override=gl_view(pose),
+            projection_override=gl_projection(pose.K, width, height, distance * 0.01, distance * 10 + 10 * s),
+        )
+        scene = Scene(self.mesh, camera, self.env, background="transparent", exposure=opts.exposure)
+        overlay = ShadowOverlay(self.mesh, model, opts.shadow) if opts.shadow > 0 else None
+        renderer = Renderer(width, height, msaa=opts.msaa, resources=self.resources)
+        frame = renderer.render(
+            material, tier=opts.tier, glsl_options=opts.glsl, scene=scene, model=model, overlay=overlay
+        )
+        return frame.rgba, model, camera.view_projection
 
 
 def composite(
     photo: np.ndarray, material: dict, options: dict | AROptions | None = None, source: str = "the image"
 ) -> ARFrame:
-    """Detect the marker, estimate the pose, render the object on it and composite (BGR in, BGR out)."""
-    opts = options if isinstance(options, AROptions) else parse_options(options)
-    height, width = photo.shape[:2]
-    K = camera_matrix(opts, width, height)
-    pose = estimate_pose(find_marker(photo, opts.marker_id, source), opts.marker_length, K, opts.dist)
-    rgba, model, view_projection = render_layer(pose, width, height, material, opts)
-    return ARFrame(over_photo(rgba, photo), pose, rgba, model, view_projection)
+    """One photo composited (Compositor.composite, its resources released afterwards)."""
+    with Compositor(options) as compositor:
+        return compositor.composite(photo, material, source)
 
 
 def render_layer(pose: Pose, width: int, height: int, material: dict, opts: AROptions):
-    """The object (and its shadow) as an RGBA layer for a camera at `pose`:
-    (rgba top row first, model matrix, view-projection matrix)."""
-    from cnlmc.backends.preview.camera import Camera
-    from cnlmc.backends.preview.environment import environment
-    from cnlmc.backends.preview.render import Renderer, Scene
-
-    K = pose.K
-    distance = float(np.linalg.norm(pose.tvec))
-    s = opts.marker_length * opts.scale / 2
-    model = np.diag([s, s, s, 1.0])
-    camera = Camera(
-        (0, 0, 0),
-        (0, 0, -1),
-        view_override=gl_view(pose),
-        projection_override=gl_projection(K, width, height, distance * 0.01, distance * 10 + 10 * s),
-    )
-    mesh = fitted_mesh(opts.mesh)
-    scene = Scene(mesh, camera, environment(opts.env), background="transparent", exposure=opts.exposure)
-    overlay = ShadowOverlay(mesh, model, opts.shadow) if opts.shadow > 0 else None
-    frame = Renderer(width, height, msaa=opts.msaa).render(
-        material, tier=opts.tier, glsl_options=opts.glsl, scene=scene, model=model, overlay=overlay
-    )
-    return frame.rgba, model, camera.view_projection
+    """One layer rendered (Compositor.render_layer, its resources released afterwards)."""
+    with Compositor(opts) as compositor:
+        return compositor.render_layer(pose, width, height, material)
 
 
 def over_photo(rgba: np.ndarray, photo_bgr: np.ndarray) -> np.ndarray:
@@ -337,12 +357,18 @@ def ar_video(video_path, ir: dict, out_path, options: dict | None = None, max_fr
 
     opts = parse_options({"msaa": VIDEO_MSAA, **(options or {})})
     material = pick_material(ir, opts.material)
-    capture = cv2.VideoCapture(str(video_path))
-    if not capture.isOpened():
-        raise PhotoUnreadable(f"cannot open video {video_path}")
+    with Compositor(opts) as compositor:
+        capture = cv2.VideoCapture(str(video_path))
+        if not capture.isOpened():
+            raise PhotoUnreadable(f"cannot open video {video_path}")
+        return _composite_frames(compositor, capture, video_path, material, Path(out_path), max_frames)
+
+
+def _composite_frames(compositor, capture, video_path, material, out_path: Path, max_frames) -> ARReport:
+    import cv2
+
     fps = capture.get(cv2.CAP_PROP_FPS) or 25.0
     writer, poses, missed, count = None, [], 0, 0
-    out_path = Path(out_path)
     partial = out_path.with_name(f".{out_path.name}.partial{out_path.suffix}")
     try:
         while max_frames is None or count < max_frames:
@@ -351,7 +377,7 @@ def ar_video(video_path, ir: dict, out_path, options: dict | None = None, max_fr
                 break
             count += 1
             try:
-                result = composite(frame, material, opts, source=f"{Path(video_path).name} frame {count}")
+                result = compositor.composite(frame, material, source=f"{Path(video_path).name} frame {count}")
                 frame, pose = result.image, result.pose
                 poses.append(pose)
             except NoMarkerFound:

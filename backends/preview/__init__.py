@@ -119,13 +119,18 @@ def choose_tier(renderer, scene, material: dict, opts: PreviewOptions):
     return select_tier(opts.budget_ms, lambda t: renderer.frame_time(scene, material, t, opts.glsl, repeats=3))
 
 
-def render_ir(ir: dict, options: dict | None = None) -> list[tuple[dict, object]]:
-    """Render every material of the IR: [(material, Frame)]."""
-    from .render import Renderer, default_scene
+def render_ir(ir: dict, options: dict | None = None, resources=None) -> list[tuple[dict, object]]:
+    """Render every material of the IR: [(material, Frame)]. With `resources` (a
+    resources.Resources) what is made is kept there; without, it is released at the end."""
+    from .render import Renderer
 
     opts = parse_options(options)
-    renderer = Renderer(opts.size, msaa=opts.msaa)
-    scene = default_scene(opts.mesh, opts.env, (opts.size, opts.size))
+    with Renderer(opts.size, msaa=opts.msaa, resources=resources) as renderer:
+        return _render_materials(renderer, ir, opts)
+
+
+def _render_materials(renderer, ir: dict, opts: PreviewOptions) -> list[tuple[dict, object]]:
+    scene = renderer.scene(opts.mesh, opts.env)
     scene.background, scene.exposure = opts.background, opts.exposure
     frames = []
     for material in ir["materials"]:
@@ -162,8 +167,9 @@ class PreviewReport:
     notes: list
 
 
-def preview_command(ir: dict, out_path, options: dict | None = None) -> PreviewReport:
-    """Render the IR and write one PNG to `out_path` (a sheet when there are several materials).
+def preview_command(ir: dict, out_path, options: dict | None = None, resources=None) -> PreviewReport:
+    """Render the IR and write one PNG to `out_path` (a sheet when there are several materials);
+    `resources` as for render_ir.
 
     Raises PreviewOptionError (usage error), MeshError / EnvironmentError (bad input file),
     PreviewUnavailable (no OpenGL here)."""
@@ -171,7 +177,7 @@ def preview_command(ir: dict, out_path, options: dict | None = None) -> PreviewR
 
     from .sheet import png_bytes
 
-    frames = render_ir(ir, options)
+    frames = render_ir(ir, options, resources)
     out_path = Path(out_path)
     write_atomic(out_path, png_bytes(compose(frames)))
     notes = [n for _, f in frames for n in f.notes]

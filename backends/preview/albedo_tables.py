@@ -146,7 +146,8 @@ def _kernel(points: np.ndarray, psi: float, alpha: float) -> np.ndarray:
 @lru_cache(maxsize=1)
 def _basis():
     """The fit's fixed parts: points, the radiance correlation C between them, the candidate
-    kernels K (one per (psi, α)), C K and the Gram matrix K C Kᵀ."""
+    kernels K (one per (psi, α)), C K and the Gram matrix K C Kᵀ. A pure function of this
+    module's constants: computed once per process (lru_cache), never written to."""
     points = _sphere(FIT_POINTS)
     angle = np.arccos(np.clip(points @ points.T, -1.0, 1.0))
     corr = np.exp(-0.5 * (angle / FIT_CORRELATION) ** 2)
@@ -272,10 +273,9 @@ def _fitted_lobes(material: dict) -> tuple[bool, bool]:
     return simple and model["base"] != "conductor", simple and model["base"] == "conductor"
 
 
-@lru_cache(maxsize=64)
 def _tables(material_json: str, fresnel: str, multiscatter: bool, mapped: bool) -> tuple:
-    """Memoized here and on disk (cnlmc.cache, keyed by the inputs and by the source files of
-    the BSDF code and of this module): a mapped material's 8 rows take a few seconds."""
+    """Stored on disk (cnlmc.cache, keyed by the inputs and by the source files of the BSDF code
+    and of this module): a mapped material's 8 rows take a few seconds."""
     from cnlmc.cache import cached
 
     inputs = json.dumps([material_json, fresnel, multiscatter, mapped, MU_SIZE, ROWS, SAMPLES, SECTIONS])
@@ -315,6 +315,10 @@ def _integrate(material_json: str, fresnel: str, multiscatter: bool, mapped: boo
     return np.array(black_rows, np.float32), np.array(tint_rows, np.float32)
 
 
+def _table_key(material: dict) -> str:
+    return json.dumps({"model": material["model"], "params": material["params"]}, sort_keys=True, default=float)
+
+
 def albedo_tables(
     material: dict, fresnel: str = "exact", multiscatter: bool = False, mapped_roughness: bool = False
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -325,6 +329,22 @@ def albedo_tables(
                   environment lookup (`_kernels`);
       [2 MU, 3 MU) kernel 2: likewise. Not fitted (fitted = 0, a smooth lobe): kernel 1 is the
                   lean with weight 1, and the lobe is looked up once, at exactly α.
-    Cached (memory and disk)."""
-    key = json.dumps({"model": material["model"], "params": material["params"]}, sort_keys=True, default=float)
-    return _tables(key, fresnel, bool(multiscatter), bool(mapped_roughness))
+    Stored on disk; `TableCache` keeps them in memory too."""
+    return _tables(_table_key(material), fresnel, bool(multiscatter), bool(mapped_roughness))
+
+
+class TableCache:
+    """The albedo tables a renderer has used, kept in memory for its lifetime (keyed by the
+    material's model and parameters and the options, not by its name)."""
+
+    def __init__(self) -> None:
+        self._tables: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
+
+    def tables(
+        self, material: dict, fresnel: str = "exact", multiscatter: bool = False, mapped_roughness: bool = False
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """albedo_tables(material, fresnel, multiscatter, mapped_roughness), made once."""
+        key = (_table_key(material), fresnel, bool(multiscatter), bool(mapped_roughness))
+        if key not in self._tables:
+            self._tables[key] = _tables(*key)
+        return self._tables[key]

@@ -11,7 +11,9 @@ bilinear function, resampled onto its rows.
 
 from __future__ import annotations
 
+import hashlib
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -35,6 +37,14 @@ class Environment:
     name: str
     image: np.ndarray  # (H, W, 3) float32 linear radiance, row 0 = top (+y)
     key: KeyLight = field(default_factory=KeyLight)
+
+    @cached_property
+    def content_key(self) -> str:
+        """A digest of the image and the key light: what GPU textures made from the environment
+        are cached by (an environment is not changed once made)."""
+        digest = hashlib.blake2b(repr((self.name, self.image.shape, self.key)).encode(), digest_size=16)
+        digest.update(np.ascontiguousarray(self.image, np.float32).tobytes())
+        return digest.hexdigest()
 
     @property
     def mean_radiance(self) -> np.ndarray:
@@ -125,7 +135,6 @@ def sun(height: int = ENV_HEIGHT, width: int = ENV_WIDTH) -> np.ndarray:
 
 #: name -> generator (H, W) -> image. Any other name is read as a file (.hdr/.exr/...).
 ENVIRONMENTS = {"studio": studio, "sky": sky, "sun": sun}
-_CACHE: dict = {}
 
 
 def read_image(path) -> np.ndarray:
@@ -181,19 +190,17 @@ def write_exr(path, image: np.ndarray) -> None:
 
 
 def environment(name_or_path: str = "studio", key: KeyLight | None = None) -> Environment:
-    """A named generated environment or an .hdr/.exr file (cached by name/path)."""
-    cache_key = (name_or_path, key)
-    if cache_key not in _CACHE:
-        if name_or_path in ENVIRONMENTS:
-            image = ENVIRONMENTS[name_or_path]()
-        else:
-            path = Path(name_or_path)
-            if not path.exists():
-                raise EnvironmentError(
-                    f"environment {name_or_path!r} is neither a file nor one of {', '.join(ENVIRONMENTS)}"
-                )
-            image = read_image(path)
-        if not np.isfinite(image).all():
-            image = np.nan_to_num(image, nan=0.0, posinf=0.0, neginf=0.0)
-        _CACHE[cache_key] = Environment(str(name_or_path), np.maximum(image, 0).astype(np.float32), key or KeyLight())
-    return _CACHE[cache_key]
+    """A named generated environment or an .hdr/.exr file, made anew (a renderer keeps the ones
+    it uses: Renderer.scene)."""
+    if name_or_path in ENVIRONMENTS:
+        image = ENVIRONMENTS[name_or_path]()
+    else:
+        path = Path(name_or_path)
+        if not path.exists():
+            raise EnvironmentError(
+                f"environment {name_or_path!r} is neither a file nor one of {', '.join(ENVIRONMENTS)}"
+            )
+        image = read_image(path)
+    if not np.isfinite(image).all():
+        image = np.nan_to_num(image, nan=0.0, posinf=0.0, neginf=0.0)
+    return Environment(str(name_or_path), np.maximum(image, 0).astype(np.float32), key or KeyLight())

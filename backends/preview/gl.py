@@ -1,11 +1,12 @@
-"""The headless OpenGL context (moderngl on EGL) and caches of what is costly to build:
-programs (compiling on llvmpipe takes seconds), textures and vertex arrays."""
+"""OpenGL helpers of the preview: a headless context (moderngl on EGL), the shader sources
+shipped with the package, uniforms and float textures. What is made in a context is cached by
+`resources.Resources`, which owns the context."""
 
 from __future__ import annotations
 
-import hashlib
 from functools import lru_cache
 from pathlib import Path
+from typing import Any
 
 import jinja2
 import numpy as np
@@ -18,9 +19,8 @@ class PreviewUnavailable(RuntimeError):
     """No OpenGL 3.3 context can be created here (no EGL / Mesa)."""
 
 
-@lru_cache(maxsize=1)
-def context():
-    """One process-wide standalone EGL context (GL 3.3+ core)."""
+def create_context() -> Any:
+    """A new standalone EGL context (GL 3.3+ core), made current."""
     try:
         import moderngl
 
@@ -32,16 +32,9 @@ def context():
         ) from None
 
 
-def current():
-    """The preview's context, made current on this thread first: another GL context (an
-    engine's, a test's) may have been made current since ours was created."""
-    ctx = context()
-    ctx.__enter__()  # makes it current; no matching exit: it stays current for our calls
-    return ctx
-
-
 @lru_cache(maxsize=1)
 def templates() -> jinja2.Environment:
+    """The loader of the package's shader templates (immutable package data: one per process)."""
     return jinja2.Environment(
         loader=jinja2.FileSystemLoader(str(SHADERS)),
         undefined=jinja2.StrictUndefined,
@@ -56,7 +49,7 @@ def shader_file(name: str) -> str:
     return (SHADERS / name).read_text("utf-8")
 
 
-def preview_fragment(name: str, library: str, plan: dict, ibl: str) -> str:
+def preview_fragment(name: str, library: str, plan: Any, ibl: str) -> str:
     return (
         templates()
         .get_template("preview.frag.j2")
@@ -64,18 +57,7 @@ def preview_fragment(name: str, library: str, plan: dict, ibl: str) -> str:
     )
 
 
-_PROGRAMS: dict = {}
-
-
-def program(vertex: str, fragment: str):
-    """A linked program, cached by the hash of its sources (compile errors carry the log)."""
-    key = hashlib.sha256((vertex + "\0" + fragment).encode()).hexdigest()
-    if key not in _PROGRAMS:
-        _PROGRAMS[key] = current().program(vertex_shader=vertex, fragment_shader=fragment)
-    return _PROGRAMS[key]
-
-
-def set_uniform(prog, name: str, value) -> None:
+def set_uniform(prog: Any, name: str, value: Any) -> None:
     """Write a uniform if the program uses it (matrices are given row-major, numpy style)."""
     if name not in prog:
         return
@@ -93,13 +75,13 @@ def set_uniform(prog, name: str, value) -> None:
         member.value = tuple(float(x) for x in arr)
 
 
-def float_texture(array: np.ndarray, mipmaps: bool = True, repeat: tuple = (True, True)):
-    """A float32 texture from (H, W[, C]) with row 0 at v = 0, trilinear and mip-mapped."""
+def float_texture(ctx: Any, array: np.ndarray, mipmaps: bool = True, repeat: tuple = (True, True)) -> Any:
+    """A float32 texture in `ctx` from (H, W[, C]) with row 0 at v = 0, trilinear and mip-mapped."""
     import moderngl
 
     array = np.ascontiguousarray(array, np.float32)
     components = 1 if array.ndim == 2 else array.shape[2]
-    tex = current().texture((array.shape[1], array.shape[0]), components, array.tobytes(), dtype="f4")
+    tex = ctx.texture((array.shape[1], array.shape[0]), components, array.tobytes(), dtype="f4")
     tex.repeat_x, tex.repeat_y = repeat
     if mipmaps:
         tex.build_mipmaps()

@@ -53,6 +53,13 @@ class LiveSession:
         self.result = self._compile(self.lines)
         if not self.result.ok:
             raise ValueError("the material does not compile")
+        self._resources = None  # the renderer's resources, made on the first draw, kept till close()
+
+    def close(self) -> None:
+        """Release what rendering made (the GL context and its caches)."""
+        if self._resources is not None:
+            self._resources.release()
+            self._resources = None
 
     # -- compiling
     def text(self, lines=None) -> str:
@@ -131,8 +138,11 @@ class LiveSession:
     def draw(self) -> str:
         """Render the current material to the output PNG; returns a one-line report."""
         from . import preview_command
+        from .resources import Resources
 
-        report = preview_command(self.result.ir, self.out_path, self.options)
+        if self._resources is None:
+            self._resources = Resources()
+        report = preview_command(self.result.ir, self.out_path, self.options, self._resources)
         frame = report.frames[-1][1]
         return f"  wrote {self.out_path} ({frame.tier}, {frame.ms:.0f} ms)"
 
@@ -276,13 +286,14 @@ def _decode(data: bytes, stdin) -> str:
 
 def run(session: LiveSession, stdin=None, stdout=None, window=None) -> int:
     """Read lines until end of input, :quit or the window being closed. Returns 0 (every error
-    was reported and undone). Closes the window on the way out."""
+    was reported and undone). Closes the window and the session on the way out."""
     stdin, stdout = stdin or sys.stdin, stdout or sys.stdout
     try:
         return _loop(session, stdin, stdout, window)
     finally:
         if window:
             window.close()
+        session.close()
 
 
 def _loop(session: LiveSession, stdin, stdout, window) -> int:

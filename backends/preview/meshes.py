@@ -7,8 +7,10 @@ name to its generator. `fit()` scales a mesh to a unit bounding sphere standing 
 
 from __future__ import annotations
 
+import hashlib
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -31,6 +33,29 @@ class Mesh:
     @property
     def bounds(self) -> tuple[np.ndarray, np.ndarray]:
         return self.positions.min(0), self.positions.max(0)
+
+    @cached_property
+    def key(self) -> str:
+        """A digest of the vertex data and the triangles: what GPU buffers made from the mesh are
+        cached by (a mesh is not changed once made; an edit makes a new Mesh)."""
+        digest = hashlib.blake2b(digest_size=16)
+        for array in (self.positions, self.normals, self.tangents, self.uvs, self.indices):
+            digest.update(str((array.dtype.str, array.shape)).encode())
+            digest.update(np.ascontiguousarray(array).tobytes())
+        return digest.hexdigest()
+
+    @cached_property
+    def closed(self) -> bool:
+        """Every edge (vertices welded by position) is used once in each direction: a closed,
+        consistently wound surface, whose back faces cannot be seen from outside."""
+        _, weld = np.unique(np.round(np.asarray(self.positions, np.float64), 6), axis=0, return_inverse=True)
+        tri = weld.reshape(-1)[np.asarray(self.indices, np.int64)]  # UV seams welded by position
+        tri = tri[(tri[:, 0] != tri[:, 1]) & (tri[:, 1] != tri[:, 2]) & (tri[:, 2] != tri[:, 0])]
+        edges = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
+        n = int(edges.max()) + 1
+        forward = np.unique(edges[:, 0] * n + edges[:, 1])
+        backward = np.unique(edges[:, 1] * n + edges[:, 0])
+        return len(forward) == len(edges) and bool(np.array_equal(forward, backward))
 
 
 class MeshError(ValueError):
@@ -185,16 +210,10 @@ def sphere_segments(radius_px: float, error_px: float = SILHOUETTE_ERROR_PX) -> 
     return 2 * round(segments / 3), segments
 
 
-_SPHERES: dict = {}
-
-
 def sphere_for_pixels(radius_px: float) -> Mesh:
-    """The fitted sphere with no more triangles than its size on screen needs (cached per level):
-    4k triangles for a 256² preview, 7k at 512², 15k at 1024²."""
-    level = sphere_segments(radius_px)
-    if level not in _SPHERES:
-        _SPHERES[level] = fit(sphere(*level))
-    return _SPHERES[level]
+    """The fitted sphere with no more triangles than its size on screen needs: 4k triangles for
+    a 256² preview, 7k at 512², 15k at 1024² (a renderer keeps the one it uses: Renderer.scene)."""
+    return fit(sphere(*sphere_segments(radius_px)))
 
 
 def shader_ball(segments: int = 96) -> Mesh:

@@ -7,19 +7,22 @@ environment, rendered offscreen with MSAA, tone mapped to sRGB.
 
 from __future__ import annotations
 
+import hashlib
 import json
 import time
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
 from cnlmc.bsdf.sampling import lobe_shares
 
 from . import gl
-from .albedo_tables import albedo_tables, split_fitted
+from .albedo_tables import split_fitted
 from .camera import Camera, framing_camera
 from .environment import Environment, environment
 from .meshes import Mesh, fit, mesh_by_name, sphere_for_pixels
+from .resources import Resources, source_key
 from .tiers import DEFAULT_TIER, Tier, parse_tier
 
 MICROFACET = ("dielectric", "conductor", "glass")
@@ -43,13 +46,18 @@ class Frame:
     notes: list = field(default_factory=list)
 
 
-@dataclass
+@dataclass(frozen=True)
 class MaterialShader:
     name: str
     library: str
     plan: dict
     samplers: list  # [{"name", "role", ...}] from the sidecar
     notes: list
+
+    @cached_property
+    def key(self) -> str:
+        """A digest of what the object program is made from: programs are cached by it."""
+        return source_key(self.name, self.library, json.dumps(self.plan, sort_keys=True, default=str))
 
 
 def material_plan(sidecar: dict) -> dict:
@@ -73,27 +81,30 @@ def material_plan(sidecar: dict) -> dict:
     return plan
 
 
-_SHADERS: dict = {}
+def shader_options(glsl_options: dict | None) -> dict:
+    """The GLSL backend's options that change a material's shader."""
+    return {k: str(v) for k, v in (glsl_options or {}).items() if k in GLSL_OPTION_KEYS}
+
+
+def shader_key(material: dict, glsl_options: dict | None) -> str:
+    """What a material's shader is cached by: the material's content and the GLSL options."""
+    text = json.dumps([material, shader_options(glsl_options)], sort_keys=True, default=str)
+    return hashlib.sha256(text.encode()).hexdigest()
 
 
 def material_shader(material: dict, glsl_options: dict | None = None) -> MaterialShader:
-    """The library form of one material (cached by material and options)."""
+    """The library form of one material, made anew (Renderer.shader keeps the ones it uses)."""
     from cnlmc.backends import glsl
 
-    opts = {k: str(v) for k, v in (glsl_options or {}).items() if k in GLSL_OPTION_KEYS}
-    key = json.dumps([material, opts], sort_keys=True, default=str)
-    if key not in _SHADERS:
-        ir = {"ir_version": 1, "materials": [material], "diagnostics": []}
-        result = glsl.emit(ir, {**opts, "form": "library"})
-        files = {a.name: a.content for a in result.artifacts}
-        name = material["name"]
-        sidecar = json.loads(files[f"{name}.glsl.json"])
-        plan = material_plan(sidecar)
-        plan["split_fitted"] = split_fitted(material, plan["roughness_map"])  # split.glsl.j2: two lookups
-        _SHADERS[key] = MaterialShader(
-            name, files[f"{name}.glsl"], plan, sidecar["samplers"], [n.text() for n in result.notes]
-        )
-    return _SHADERS[key]
+    opts = shader_options(glsl_options)
+    ir = {"ir_version": 1, "materials": [material], "diagnostics": []}
+    result = glsl.emit(ir, {**opts, "form": "library"})
+    files = {a.name: a.content for a in result.artifacts}
+    name = material["name"]
+    sidecar = json.loads(files[f"{name}.glsl.json"])
+    plan = material_plan(sidecar)
+    plan["split_fitted"] = split_fitted(material, plan["roughness_map"])  # split.glsl.j2: two lookups
+    return MaterialShader(name, files[f"{name}.glsl"], plan, sidecar["samplers"], [n.text() for n in result.notes])
 
 
 # ------------------------------------------------------------------ GPU resources
@@ -101,11 +112,12 @@ def material_shader(material: dict, glsl_options: dict | None = None) -> Materia
 
 class EnvResources:
     """Environment textures: radiance (mip-mapped), GGX-prefiltered levels, and on demand the
-    environment prefiltered at one alpha and the irradiance map."""
+    environment prefiltered at one alpha and the irradiance map (made in `resources`' context)."""
 
-    def __init__(self, env: Environment):
+    def __init__(self, env: Environment, resources: Resources):
         self.env = env
-        self.radiance = gl.float_texture(env.image, repeat=(True, False))
+        self.resources = resources
+        self.radiance = resources.float_texture(env.image, repeat=(True, False))
         self.size = (env.image.shape[1], env.image.shape[0])
         self.mean = env.mean_radiance
         self.prefiltered = self._prefilter()
@@ -125,15 +137,15 @@ class EnvResources:
         """E(n) / pi as a small equirect texture (cosine-weighted prefilter), made on first use."""
         if self._irradiance is None:
             data = self._prefilter_pass(1.0, IRRADIANCE_SIZE, IRRADIANCE_SAMPLES, cosine=True)
-            self._irradiance = gl.float_texture(data, mipmaps=False, repeat=(True, False))
+            self._irradiance = self.resources.float_texture(data, mipmaps=False, repeat=(True, False))
         return self._irradiance
 
     def _prefilter_pass(self, alpha: float, size: tuple, samples: int, cosine: bool = False) -> np.ndarray:
         """One pass of prefilter.frag at `alpha` into a (h, w, 3) float32 array."""
         import moderngl
 
-        ctx = gl.current()
-        prog = gl.program(gl.shader_file("fullscreen.vert"), gl.shader_file("prefilter.frag"))
+        ctx = self.resources.make_current()
+        prog = self.resources.program(gl.shader_file("fullscreen.vert"), gl.shader_file("prefilter.frag"))
         vao = ctx.vertex_array(prog, [])
         self.radiance.use(0)
         gl.set_uniform(prog, "pv_env", 0)
@@ -152,14 +164,12 @@ class EnvResources:
         return np.ascontiguousarray(data)
 
     def _prefilter_level(self, alpha: float):
-        texture = gl.float_texture(
-            self._prefilter_pass(alpha, self.size, PREFILTER_SAMPLES), mipmaps=False, repeat=(True, False)
-        )
-        return texture
+        data = self._prefilter_pass(alpha, self.size, PREFILTER_SAMPLES)
+        return self.resources.float_texture(data, mipmaps=False, repeat=(True, False))
 
     def _prefilter(self, samples: int = PREFILTER_SAMPLES):
         """The mip chain: level k holds the environment prefiltered at sqrt(alpha) = k / LEVELS."""
-        tex = gl.float_texture(self.env.image, repeat=(True, False))
+        tex = self.resources.float_texture(self.env.image, repeat=(True, False))
         for level in range(1, PREFILTER_LEVELS + 1):
             size = (max(self.size[0] >> level, 4), max(self.size[1] >> level, 2))
             data = self._prefilter_pass((level / PREFILTER_LEVELS) ** 2, size, samples)
@@ -175,8 +185,7 @@ class Targets:
 
     HDR_DTYPE = "f2"
 
-    def __init__(self, width: int, height: int, msaa: int):
-        ctx = gl.current()
+    def __init__(self, ctx, width: int, height: int, msaa: int):
         self.size = (width, height)
         self.rect = None  # what the last draw() cleared, tone mapped and will read (None: all)
         self.samples = msaa if msaa > 1 else 0
@@ -204,55 +213,21 @@ class Targets:
             ctx.copy_framebuffer(self.resolved, self.msaa)
 
 
-_ENVS: dict = {}
-_TARGETS: dict = {}
-_MESHES: dict = {}
-_MAPS: dict = {}
-_OBJECT_PROGRAMS: dict = {}
-_FULLSCREEN: dict = {}
-_VAOS: dict = {}
-_WARM: set = set()
+def env_resources(resources: Resources, env: Environment) -> EnvResources:
+    return resources.once(("environment", env.content_key), lambda: EnvResources(env, resources))
 
 
-def env_resources(env: Environment) -> EnvResources:
-    key = (env.name, id(env.image))
-    if key not in _ENVS:
-        _ENVS[key] = EnvResources(env)
-    return _ENVS[key]
+def targets(resources: Resources, width: int, height: int, msaa: int) -> Targets:
+    return resources.once(("targets", width, height, msaa), lambda: Targets(resources.ctx, width, height, msaa))
 
 
-def targets(width: int, height: int, msaa: int) -> Targets:
-    key = (width, height, msaa)
-    if key not in _TARGETS:
-        _TARGETS[key] = Targets(width, height, msaa)
-    return _TARGETS[key]
-
-
-def mesh_buffers(mesh: Mesh):
-    key = id(mesh)
-    if key not in _MESHES:
-        ctx = gl.current()
-        _MESHES[key] = (mesh, ctx.buffer(mesh.interleaved().tobytes()), ctx.buffer(mesh.indices.astype("u4").tobytes()))
-    return _MESHES[key][1:]
-
-
-_CLOSED: dict = {}
-
-
-def is_closed(mesh: Mesh) -> bool:
-    """Every edge (vertices welded by position) is used once in each direction: a closed,
-    consistently wound surface, whose back faces cannot be seen from outside."""
-    key = id(mesh)
-    if key not in _CLOSED:
-        _, weld = np.unique(np.round(np.asarray(mesh.positions, np.float64), 6), axis=0, return_inverse=True)
-        tri = weld.reshape(-1)[np.asarray(mesh.indices, np.int64)]  # UV seams welded by position
-        tri = tri[(tri[:, 0] != tri[:, 1]) & (tri[:, 1] != tri[:, 2]) & (tri[:, 2] != tri[:, 0])]
-        edges = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
-        n = int(edges.max()) + 1
-        forward = np.unique(edges[:, 0] * n + edges[:, 1])
-        backward = np.unique(edges[:, 1] * n + edges[:, 0])
-        _CLOSED[key] = len(forward) == len(edges) and np.array_equal(forward, backward)
-    return _CLOSED[key]
+def mesh_buffers(resources: Resources, mesh: Mesh):
+    """(vertex buffer, index buffer) of the mesh, uploaded once per mesh content."""
+    ctx = resources.ctx
+    return resources.once(
+        ("mesh", mesh.key),
+        lambda: (ctx.buffer(mesh.interleaved().tobytes()), ctx.buffer(mesh.indices.astype("u4").tobytes())),
+    )
 
 
 def encode_map(role: str, array: np.ndarray) -> np.ndarray:
@@ -276,46 +251,48 @@ def neutral_map(role: str, params: dict, size: int = 4) -> np.ndarray:
 
 
 def bake_maps(material: dict, size: int, seed: int, notes: list | None = None) -> dict:
-    """Bake every map role; a role whose graph fails gets a neutral map and a note."""
-    from cnlmc.backends.maps import MapError, bake
+    """Bake every map role (the map-baking service); a role whose graph fails gets a neutral
+    map and a note."""
+    from cnlmc.backends.maps.service import MapBakeError, bake_arrays
 
-    refs, params = material.get("maps", {}), material["params"]
     try:
-        return bake(refs, params, size, seed)
-    except MapError:
+        return bake_arrays(material, size, seed)
+    except MapBakeError:
         pass
     arrays = {}
-    for role, ref in refs.items():
+    for role in material.get("maps", {}):
         try:
-            arrays.update(bake({role: ref}, params, size, seed))
-        except MapError as exc:
-            arrays[role] = neutral_map(role, params)
+            arrays.update(bake_arrays(material, size, seed, roles=[role]))
+        except MapBakeError as exc:
+            arrays[role] = neutral_map(role, material["params"])
             if notes is not None:
-                notes.append(f"preview: {material['name']}: map {role} not baked ({exc}); uniform value used")
+                notes.append(f"preview: {material['name']}: map {role} not baked ({exc.reason}); uniform value used")
     return arrays
 
 
-def map_textures(material: dict, samplers: list, size: int = MAP_SIZE, seed: int = 0) -> dict:
-    """sampler name -> texture, baked with cnlmc.backends.maps (cached per material maps)."""
+def map_textures(resources: Resources, material: dict, samplers: list, size: int = MAP_SIZE, seed: int = 0) -> dict:
+    """sampler name -> texture, baked with cnlmc.backends.maps (made once per maps and parameters)."""
     if not samplers:
         return {}
     key = (
+        "maps",
         json.dumps(material.get("maps", {}), sort_keys=True),
         json.dumps(material["params"], sort_keys=True, default=str),
         size,
         seed,
     )
-    if key not in _MAPS:
+
+    def upload() -> dict:
         arrays = bake_maps(material, size, seed)
-        _MAPS[key] = {role: gl.float_texture(encode_map(role, arr)) for role, arr in arrays.items()}
-    baked = _MAPS[key]
+        return {role: resources.float_texture(encode_map(role, arr)) for role, arr in arrays.items()}
+
+    baked = resources.once(key, upload)
     return {s["name"]: baked[s["role"]] for s in samplers if s["role"] in baked}
 
 
-_SPLIT_TABLES: dict = {}
-
-
-def split_textures(material: dict, plan: dict, res: EnvResources, glsl_options: dict | None) -> dict:
+def split_textures(
+    resources: Resources, material: dict, plan: dict, res: EnvResources, glsl_options: dict | None
+) -> dict:
     """sampler name -> texture for the split-sum tier: the material's albedo tables, and the
     environment prefiltered at exactly the base's and the coat's alpha when they are uniform."""
     from cnlmc.bsdf.evaluate import coat_alpha, material_alpha
@@ -323,16 +300,19 @@ def split_textures(material: dict, plan: dict, res: EnvResources, glsl_options: 
     opts = glsl_options or {}
     fresnel, multiscatter = str(opts.get("fresnel", "exact")), str(opts.get("multiscatter", "off")) == "on"
     key = (
+        "split tables",
         json.dumps([material["model"], material["params"]], sort_keys=True, default=str),
         fresnel,
         multiscatter,
         plan["roughness_map"],
     )
-    if key not in _SPLIT_TABLES:
-        black, tint = albedo_tables(material, fresnel, multiscatter, plan["roughness_map"])
-        flat = lambda table: gl.float_texture(table, mipmaps=False, repeat=(False, False))
-        _SPLIT_TABLES[key] = {"pv_black_albedo": flat(black), "pv_tint_albedo": flat(tint)}
-    textures = dict(_SPLIT_TABLES[key])
+
+    def upload() -> dict:
+        black, tint = resources.tables.tables(material, fresnel, multiscatter, plan["roughness_map"])
+        flat = lambda table: resources.float_texture(table, mipmaps=False, repeat=(False, False))
+        return {"pv_black_albedo": flat(black), "pv_tint_albedo": flat(tint)}
+
+    textures = dict(resources.once(key, upload))
     textures["pv_env_irradiance"] = res.irradiance
     params = material["params"]
     coat = params.get("coat") if plan["coat"] else None
@@ -360,12 +340,18 @@ class Scene:
     env_intensity: float = 1.0
 
 
+def scene_mesh(name: str, size: tuple[int, int]) -> Mesh:
+    """The named mesh (or file) fitted for a frame of `size`; the built-in sphere is tessellated
+    for its size on screen (the framing fits it inside min(size) pixels: radius below half)."""
+    if name == "sphere":
+        return sphere_for_pixels(0.5 * min(size))
+    return fit(mesh_by_name(name))
+
+
 def default_scene(mesh: str | Mesh = "sphere", env: str | Environment = "studio", size=(512, 512)) -> Scene:
-    """The framed preview scene; the built-in sphere is tessellated for its size on screen
-    (the framing fits it inside min(size) pixels: radius below half of that)."""
-    if mesh == "sphere":
-        mesh = sphere_for_pixels(0.5 * min(size))
-    mesh = fit(mesh_by_name(mesh)) if isinstance(mesh, str) else mesh
+    """The framed preview scene, its mesh and environment made anew when named
+    (Renderer.scene keeps them)."""
+    mesh = scene_mesh(mesh, size) if isinstance(mesh, str) else mesh
     env = environment(env) if isinstance(env, str) else env
     lo, hi = mesh.bounds
     return Scene(mesh, framing_camera(lo, hi, aspect=size[0] / size[1]), env)
@@ -421,44 +407,85 @@ def read_image(fbo, rect: tuple[int, int, int, int] | None, size: tuple[int, int
 
 
 class Renderer:
-    """Offscreen renderer of one size; programs, textures and meshes are cached process-wide."""
+    """Offscreen renderer of one size. What it makes (programs, textures, meshes, tables) is
+    kept by its `resources`, which renderers may share (`Renderer(w, resources=other.resources)`)
+    and which go with `close()` (or the end of a `with` block) when this renderer made them."""
 
-    def __init__(self, width: int = 512, height: int | None = None, msaa: int = DEFAULT_MSAA, edge_aa: bool = True):
+    def __init__(
+        self,
+        width: int = 512,
+        height: int | None = None,
+        msaa: int = DEFAULT_MSAA,
+        edge_aa: bool = True,
+        resources: Resources | None = None,
+    ):
         self.width, self.height = width, height or width
         self.msaa = msaa
         self.edge_aa = edge_aa  # the tone-map pass's edge filter, used when msaa <= 1
-        self.ctx = gl.current()
+        self._owns_resources = resources is None
+        self.resources = resources or Resources()
+        self.ctx = self.resources.ctx
+
+    def close(self) -> None:
+        """Release the GL context and all it holds, if this renderer made them."""
+        if self._owns_resources:
+            self.resources.release()
+
+    def __enter__(self) -> Renderer:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    # -- what a frame is made from
+    def shader(self, material: dict, glsl_options: dict | None = None) -> MaterialShader:
+        """The material's shader (GLSL library and plan), made once per content and options."""
+        key = ("shader", shader_key(material, glsl_options))
+        return self.resources.once(key, lambda: material_shader(material, glsl_options))
+
+    def scene(self, mesh: str | Mesh = "sphere", env: str | Environment = "studio") -> Scene:
+        """The framed preview scene at this renderer's size (default_scene); a named mesh or
+        environment is made once and kept (by name and size), a new Scene around them each call."""
+        size = (self.width, self.height)
+        if isinstance(mesh, str):
+            mesh = self.resources.once(("scene mesh", mesh, size), lambda: scene_mesh(mesh, size))
+        if isinstance(env, str):
+            env = self.resources.once(("scene environment", env), lambda: environment(env))
+        return default_scene(mesh, env, size)
 
     # -- programs
-    def object_program(self, shader: MaterialShader, tier: Tier):
-        key = (id(shader), tier.ibl)
-        cached = _OBJECT_PROGRAMS.get(key)
-        if cached is None or cached[0] is not shader:  # an id can be reused once its object is gone
-            frag = gl.preview_fragment(shader.name, shader.library, shader.plan, tier.ibl)
-            cached = _OBJECT_PROGRAMS[key] = (shader, gl.program(gl.shader_file("preview.vert"), frag))
-        return cached[1]
+    def object_program(self, shader: MaterialShader, tier: Tier) -> tuple[str, object]:
+        """(source key, program) of the object pass for this shader and tier kind."""
+
+        def link() -> tuple[str, object]:
+            vertex = gl.shader_file("preview.vert")
+            fragment = gl.preview_fragment(shader.name, shader.library, shader.plan, tier.ibl)
+            return source_key(vertex, fragment), self.resources.program(vertex, fragment)
+
+        return self.resources.once(("object program", shader.key, tier.ibl), link)
 
     def fullscreen(self, fragment_file: str, define: str = ""):
         """(program, vertex array) of a full-screen pass, cached; `define` names a preprocessor
         symbol defined for this variant (llvmpipe runs both sides of every branch, even on a
         uniform: a variant that leaves work out must be its own program)."""
-        key = (fragment_file, define)
-        if key not in _FULLSCREEN:
+
+        def make():
             source = gl.shader_file(fragment_file)
             if define:
                 version, rest = source.split("\n", 1)
                 source = f"{version}\n#define {define}\n{rest}"
-            prog = gl.program(gl.shader_file("fullscreen.vert"), source)
-            _FULLSCREEN[key] = (prog, self.ctx.vertex_array(prog, []))
-        return _FULLSCREEN[key]
+            prog = self.resources.program(gl.shader_file("fullscreen.vert"), source)
+            return prog, self.ctx.vertex_array(prog, [])
 
-    def object_vao(self, prog, mesh: Mesh):
-        key = (id(prog), id(mesh))
-        if key not in _VAOS:
-            vbo, ibo = mesh_buffers(mesh)
+        return self.resources.once(("fullscreen", fragment_file, define), make)
+
+    def object_vao(self, program_key: str, prog, mesh: Mesh):
+        def make():
+            vbo, ibo = mesh_buffers(self.resources, mesh)
             layout, names = self.vertex_layout(prog)
-            _VAOS[key] = self.ctx.vertex_array(prog, [(vbo, layout, *names)], index_buffer=ibo, index_element_size=4)
-        return _VAOS[key]
+            return self.ctx.vertex_array(prog, [(vbo, layout, *names)], index_buffer=ibo, index_element_size=4)
+
+        return self.resources.once(("vertex array", program_key, mesh.key), make)
 
     def _bind_environment(self, prog, res: EnvResources, scene: Scene, tier: Tier, first_unit: int) -> int:
         units = {"pv_env": res.radiance, "pv_env_prefiltered": res.prefiltered}
@@ -501,10 +528,10 @@ class Renderer:
     ) -> None:
         import moderngl
 
-        prog = self.object_program(shader, tier)
-        textures = dict(map_textures(material, shader.samplers))
+        program_key, prog = self.object_program(shader, tier)
+        textures = dict(map_textures(self.resources, material, shader.samplers))
         if tier.ibl == "splitsum":
-            textures.update(split_textures(material, shader.plan, res, glsl_options))
+            textures.update(split_textures(self.resources, material, shader.plan, res, glsl_options))
         for unit, (name, tex) in enumerate(textures.items()):
             tex.use(unit)
             gl.set_uniform(prog, name, unit)
@@ -517,9 +544,9 @@ class Renderer:
         gl.set_uniform(prog, "pv_key_direction", scene.env.key.unit)
         gl.set_uniform(prog, "pv_key_irradiance", [scene.env.key.irradiance * scene.env_intensity] * 3)
         self.ctx.enable(moderngl.DEPTH_TEST)
-        if is_closed(scene.mesh):  # back faces of a closed mesh are never seen: not shaded
+        if scene.mesh.closed:  # back faces of a closed mesh are never seen: not shaded
             self.ctx.enable(moderngl.CULL_FACE)
-        self.object_vao(prog, scene.mesh).render(moderngl.TRIANGLES)
+        self.object_vao(program_key, prog, scene.mesh).render(moderngl.TRIANGLES)
         self.ctx.disable(moderngl.CULL_FACE)
 
     VERTEX_ATTRIBUTES = (("in_position", 3), ("in_normal", 3), ("in_tangent", 3), ("in_uv", 2))
@@ -587,11 +614,11 @@ class Renderer:
         overlay=None,
     ) -> Targets:
         """Draw into the targets (no read-back); `overlay(renderer, scene)` draws extra geometry."""
-        self.ctx.__enter__()  # ours must be the current context (another may have been made current)
+        self.resources.make_current()  # ours must be the current context (another may have been made current)
         tier = parse_tier(tier) if isinstance(tier, str) else tier
-        shader = material_shader(material, glsl_options)
-        res = env_resources(scene.env)
-        t = targets(self.width, self.height, self.msaa)
+        shader = self.shader(material, glsl_options)
+        res = env_resources(self.resources, scene.env)
+        t = targets(self.resources, self.width, self.height, self.msaa)
         model = np.eye(4) if model is None else model
         # Only the rectangle around what is drawn is cleared and tone mapped with the object
         # layer (one pixel more is cleared: the edge filter reads its neighbours); without a
@@ -640,14 +667,13 @@ class Renderer:
         **draw_options,
     ) -> Frame:
         """Render one material; returns the sRGB image (top row first) and the frame time."""
-        scene = scene or default_scene(mesh, env, (self.width, self.height))
+        scene = scene or self.scene(mesh, env)
         tier = parse_tier(tier) if isinstance(tier, str) else tier
-        shader = material_shader(material, glsl_options)
-        warm_key = (id(shader), tier.name, id(scene.mesh), id(scene.env), self.width, self.height)
-        if warm_key not in _WARM:  # the first frame compiles and uploads: drawn once untimed
+        shader = self.shader(material, glsl_options)
+        warm_key = (shader.key, tier.name, scene.mesh.key, scene.env.content_key, self.width, self.height)
+        if self.resources.first_use(warm_key):  # the first frame compiles and uploads: drawn once untimed
             self.draw(scene, material, tier, glsl_options, **draw_options)
             self.ctx.finish()
-            _WARM.add(warm_key)
         start = time.perf_counter()
         t = self.draw(scene, material, tier, glsl_options, **draw_options)
         self.ctx.finish()

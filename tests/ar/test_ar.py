@@ -183,9 +183,9 @@ def test_shadow_footprint_is_made_once_per_mesh(posed_photo, gl_available, gold,
     made = []
     original = ar.footprint
     monkeypatch.setattr(ar, "footprint", lambda mesh, *a, **k: made.append(1) or original(mesh, *a, **k))
-    monkeypatch.setattr(ar, "_FOOTPRINTS", {})
-    for _ in range(3):
-        composite(posed_photo["photo"], gold["materials"][0], {"mesh": "teapot", "tier": "analytic"})
+    with ar.Compositor({"mesh": "teapot", "tier": "analytic"}) as compositor:  # what a video uses
+        for _ in range(3):
+            compositor.composite(posed_photo["photo"], gold["materials"][0])
     assert len(made) == 1
 
 
@@ -201,9 +201,11 @@ def test_video_frames_default_to_no_multisampling(tmp_path, monkeypatch, gold):
     writer.release()
     seen = []
     monkeypatch.setattr(
-        ar,
+        ar.Compositor,
         "composite",
-        lambda frame, material, opts, source: seen.append(opts.msaa) or (_ for _ in ()).throw(NoMarkerFound("skip")),
+        lambda self, frame, material, source: (
+            seen.append(self.opts.msaa) or (_ for _ in ()).throw(NoMarkerFound("skip"))
+        ),
     )
     with pytest.raises(NoMarkerFound):
         ar_video(video, gold, tmp_path / "a.mp4", {"tier": "analytic"})

@@ -31,7 +31,13 @@ def test_sphere_levels_share_the_bounds_hence_the_framing():
     for mesh in levels:
         np.testing.assert_allclose(mesh.bounds[0], levels[0].bounds[0], atol=1e-6)
         np.testing.assert_allclose(mesh.bounds[1], levels[0].bounds[1], atol=1e-6)
-    assert sphere_for_pixels(128) is sphere_for_pixels(128)  # cached: uploaded once
+    assert sphere_for_pixels(128).key == sphere_for_pixels(128).key  # one content: uploaded once
+
+
+def test_a_renderer_keeps_the_scene_mesh_and_environment_it_made(renderer):
+    first, second = renderer.scene("sphere", "studio"), renderer.scene("sphere", "studio")
+    assert first is not second  # a scene of its own to change (background, exposure)
+    assert first.mesh is second.mesh and first.env is second.env  # made once, by name and size
 
 
 def test_default_scene_sphere_grows_finer_with_the_frame():

@@ -32,7 +32,7 @@ def test_exported_scene_renders_like_the_preview(tmp_path, mitsuba, renderer):
     assert image.shape == (size, size, 4) and np.isfinite(image).all()
     from cnlmc.backends.preview.render import Renderer
 
-    frame = Renderer(size).render(material, tier="fis16", scene=scene, hdr=True)
+    frame = Renderer(size, resources=renderer.resources).render(material, tier="fis16", scene=scene, hdr=True)
     ours, theirs = frame.hdr[..., 3] > 0.5, image[..., 3] > 0.5
     assert (ours == theirs).mean() > 0.97  # same camera and mesh
     both = ours & theirs
@@ -62,25 +62,25 @@ def test_texture_orientation_matches_mitsuba(tmp_path, mitsuba, renderer, monkey
     """Regression (issue #6): the Mitsuba reference sampled base_color maps upside down (its
     PLY loader keeps v, its bitmaps put the top row at v = 0): the top of the sphere must be red
     in both renderers."""
-    import cnlmc.backends.maps as maps
+    from cnlmc.backends.maps import service
     from cnlmc.backends.preview.mitsuba_scene import export_scene, render_scene
     from cnlmc.backends.preview.render import Renderer, default_scene
 
-    real_bake = maps.bake
+    real_bake = service.bake
 
-    def bake(refs, params, size, seed=0):
-        out = real_bake(refs, params, size, seed)
+    def bake(refs, params, size, seed=0, **options):  # the one baking service both renderers use
+        out = real_bake(refs, params, size, seed, **options)
         out["base_color"] = _halves_pattern(out["base_color"].shape[0])
         return out
 
-    monkeypatch.setattr(maps, "bake", bake)
+    monkeypatch.setattr(service, "bake", bake)
     material = copy.deepcopy(material_of("granite"))
     material["maps"]["base_color"]["seed"] = 60606  # its own entry in the baked-map cache
     size = 32
     scene = default_scene("sphere", "studio", (size, size))
     scene.background = "transparent"
     image, _ = render_scene(export_scene(material, scene, tmp_path, size, size, spp=4))
-    frame = Renderer(size).render(material, tier="splitsum", scene=scene, hdr=True)
+    frame = Renderer(size, resources=renderer.resources).render(material, tier="splitsum", scene=scene, hdr=True)
     for name, img in (("mitsuba", image), ("preview", frame.hdr)):
         inside = img[..., 3] > 0.5
         red = img[..., 0] > img[..., 2]

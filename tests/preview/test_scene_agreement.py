@@ -94,7 +94,7 @@ def test_preview_mc_agrees_with_mitsuba(tmp_path, plugin, renderer):
     scene.background = "transparent"
     path = export_scene(material, scene, tmp_path, size, size, spp=64, bsdf="cnlm")
     theirs = [render_scene(path, seed=seed, variant="vectorized")[0] for seed in (0, 1)]
-    ours = Renderer(size).render(material, tier="mc64", scene=scene, hdr=True).hdr
+    ours = Renderer(size, resources=renderer.resources).render(material, tier="mc64", scene=scene, hdr=True).hdr
 
     def flip(a, b):
         return float(flip_evaluator.evaluate(_composite(a), _composite(b), "LDR", applyMagma=False)[1])

@@ -83,23 +83,21 @@ def kernels(table: np.ndarray, row: int = 0) -> tuple[np.ndarray, np.ndarray]:
     return section(table, 1)[row], section(table, 2)[row]
 
 
-#: shaders with plan["split_fitted"]: kept alive, since the renderer caches programs by id(shader)
 def single_lookup(monkeypatch) -> None:
     """Shaders as if no table held a fitted pair (plan["split_fitted"] = False): every lobe
-    looked up once, at its lean and exactly its alpha — the split sum before the fit."""
+    looked up once, at its lean and exactly its alpha — the split sum before the fit. (Another
+    plan is another shader key, hence another program.)"""
     from dataclasses import replace
 
-    from cnlmc.backends.preview import render
+    from cnlmc.backends.preview.render import Renderer
 
-    original, unfitted = render.material_shader, {}
+    original = Renderer.shader
 
-    def material_shader(material, glsl_options=None):
-        shader = original(material, glsl_options)
-        if id(shader) not in unfitted:
-            unfitted[id(shader)] = replace(shader, plan={**shader.plan, "split_fitted": False})
-        return unfitted[id(shader)]
+    def shader(self, material, glsl_options=None):
+        made = original(self, material, glsl_options)
+        return replace(made, plan={**made.plan, "split_fitted": False})
 
-    monkeypatch.setattr(render, "material_shader", material_shader)
+    monkeypatch.setattr(Renderer, "shader", shader)
 
 
 @pytest.mark.parametrize("phrase, lobe", [("rough iron", 1), ("rubber", 0), ("terracotta", 0), ("oak", 0)])
@@ -195,9 +193,7 @@ def test_only_fitted_lobes_get_two_lookups(renderer, scene, monkeypatch, phrase,
     it (another image), otherwise (or for a smooth lobe) it looks the lobe up once, at its lean,
     as before the fit (the same image: a smooth material costs nothing more)."""
     m = material_of(phrase)
-    from cnlmc.backends.preview.render import material_shader
-
-    plan = material_shader(m).plan
+    plan = renderer.shader(m).plan
     assert plan["split_fitted"] is split_fitted(m, plan["roughness_map"]) is fitted
     after = renderer.render(m, tier="splitsum", scene=scene, hdr=True).hdr
     single_lookup(monkeypatch)
