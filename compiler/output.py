@@ -4,7 +4,19 @@ from __future__ import annotations
 
 import os
 import tempfile
+from collections.abc import Sequence
 from pathlib import Path
+from typing import Protocol
+
+
+class Artifact(Protocol):
+    """What is written: a file name relative to the output, and its content (a backend's Artifact)."""
+
+    @property
+    def name(self) -> str: ...
+
+    @property
+    def content(self) -> str | bytes: ...
 
 
 def write_atomic(path: Path, content: str | bytes) -> None:
@@ -33,7 +45,7 @@ def looks_like_file(out: str) -> bool:
     return not out.endswith(("/", os.sep)) and not target.is_dir() and bool(target.suffix)
 
 
-def write_artifacts(artifacts, out: str) -> list[Path]:
+def write_artifacts(artifacts: Sequence[Artifact], out: str) -> list[Path]:
     """`out` a file path: the first (main) artifact goes there, the others beside it.
     `out` a folder (existing, ending in '/', or without a suffix): every artifact goes into it."""
     target = Path(out)

@@ -53,7 +53,7 @@ def group_refs(map_refs: dict) -> dict[tuple, dict[str, str]]:
     return groups
 
 
-def start_evaluation(key: tuple, material: dict, size: int, seed: int, on_node) -> Evaluation:
+def start_evaluation(key: tuple, material: dict | None, size: int, seed: int, on_node) -> Evaluation:
     name, params, ref_seed = key
     graph = load_graph(name)
     grid = Grid(size, derive_seed(seed, ref_seed, name))

@@ -43,7 +43,7 @@ def checked_param(graph: Graph, name: str, value) -> float:
     return float(value)
 
 
-def resolve_inputs(graph: Graph, material: dict) -> dict[str, np.ndarray]:
+def resolve_inputs(graph: Graph, material: dict | None) -> dict[str, np.ndarray]:
     """Material values (e.g. base_color) for the inputs the graph declares, else defaults."""
     material = material or {}
     return {name: np.asarray(material.get(name, spec.default), np.float32) for name, spec in graph.inputs.items()}

@@ -68,9 +68,9 @@ def row_blocks(cell_rows: np.ndarray, size: int) -> list[tuple[int, int]]:
     """Consecutive pixel-row ranges of at most ~MIN_BLOCK_ELEMENTS pixels, split at lattice
     rows too when cells are tall enough (a block inside one lattice row is separable)."""
     chunk = max(1, MIN_BLOCK_ELEMENTS // size)
-    bounds = set(range(0, size, chunk))
+    starts = set(range(0, size, chunk))
     cell_starts = np.flatnonzero(np.diff(cell_rows)) + 1
     if size >= (len(cell_starts) + 1) * max(1, chunk // 4):
-        bounds.update(cell_starts.tolist())
-    bounds = sorted(bounds) + [size]
+        starts.update(cell_starts.tolist())
+    bounds = sorted(starts) + [size]
     return list(zip(bounds[:-1], bounds[1:]))

@@ -54,8 +54,8 @@ def fbm(grid: Grid, basis="perlin", scale=4, octaves=5, gain=0.5, stretch=1):
 def folded_lattice_sum(grid: Grid, basis: str, scales, weights, stretch: int) -> np.ndarray:
     """sum of weight * min(|octave|, 1) for lattice bases, row block by row block so each
     octave's product, fold and sum stay in cache (weight >= 0 folds into the factors)."""
-    pairs = [FACTORS[basis](grid, s, stretch, (basis, k)) for k, s in enumerate(scales)]
-    pairs = [(left * np.float32(w), right, np.float32(w)) for (left, right), w in zip(pairs, weights)]
+    factors = [FACTORS[basis](grid, s, stretch, (basis, k)) for k, s in enumerate(scales)]
+    pairs = [(left * np.float32(w), right, np.float32(w)) for (left, right), w in zip(factors, weights)]
     total = np.zeros((grid.size, grid.size), np.float32)
     chunk = max(1, MIN_BLOCK_ELEMENTS // grid.size)
     with single_threaded_blas():  # many small products: waking BLAS threads costs more

@@ -30,10 +30,8 @@ def slopes(height: np.ndarray, factor: float = 1.0) -> tuple[np.ndarray, np.ndar
     wrapping).  The half-size step is a power of two, so folding it into `factor`
     rounds exactly like scaling twice."""
     half = np.float32(height.shape[0] / 2.0)
-    factor = np.float32(factor)
-    return central_difference(height, 1, half * factor), central_difference(
-        height, 0, -half * factor
-    )  # row 0 is the top
+    step = np.float32(factor)
+    return central_difference(height, 1, half * step), central_difference(height, 0, -half * step)  # row 0: the top
 
 
 def height_to_normal(grid: Grid, input=0.5, strength=1.0):

@@ -44,7 +44,8 @@ class Checker:
     def rgb(self, value, key: str) -> tuple[float, float, float]:
         if not isinstance(value, list) or len(value) != 3:
             self.fail(key, f"expected an RGB triple [r, g, b], got {value!r}")
-        return tuple(self.number(c, f"{key}[{i}]") for i, c in enumerate(value))
+        r, g, b = (self.number(c, f"{key}[{i}]") for i, c in enumerate(value))
+        return r, g, b
 
 
 def check_param(c: Checker, name: str, raw) -> GraphParam:

@@ -35,7 +35,7 @@ class Nearest:
     def update(self, dist: np.ndarray, values) -> None:
         if self.value is not None:
             np.copyto(self.value, values(), where=dist < self.f1)
-        if self.f2 is not None:  # min(f2, max(f1, d)) == min(f2, d if d >= f1 else f1)
+        if self.f2 is not None and self.scratch is not None:  # min(f2, max(f1, d)) == min(f2, d if d >= f1 else f1)
             np.maximum(self.f1, dist, out=self.scratch)
             np.minimum(self.f2, self.scratch, out=self.f2)
         np.minimum(self.f1, dist, out=self.f1)
@@ -78,12 +78,12 @@ def nearest_two(grid: Grid, py: int, px: int, jitter: float, salt, need_f2: bool
                 dist = squared_distances(offsets, rows, cols, ty, tx)
                 best.update(dist, lambda: cell_values[rows][:, cols])
         f1[r0:r1] = best.f1
-        if need_f2:
+        if f2 is not None:
             f2[r0:r1] = best.f2
-        if need_cell:
+        if value is not None:
             value[r0:r1] = best.value
     np.sqrt(f1, out=f1)
-    if need_f2:
+    if f2 is not None:
         np.sqrt(f2, out=f2)
     return f1, f2, value
 
