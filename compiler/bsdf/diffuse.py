@@ -8,21 +8,21 @@ from __future__ import annotations
 
 import numpy as np
 
-from .geometry import as_dirs, both_upper, cos_theta, dot, safe_div
+from .geometry import Real, as_dirs, both_upper, cos_theta, dot, safe_div
 
 
-def _rgb(albedo):
+def _rgb(albedo: Real) -> Real:
     return np.asarray(albedo, dtype=np.float64)
 
 
-def lambert(wo, wi, albedo=(1.0, 1.0, 1.0)):
+def lambert(wo: Real, wi: Real, albedo: Real = (1.0, 1.0, 1.0)) -> Real:
     """Lambert: f = ρ / π (Lambert 1760). Directional albedo is exactly ρ."""
     wo, wi = as_dirs(wo), as_dirs(wi)
     mask = both_upper(wo, wi).astype(float)
     return (mask / np.pi)[..., None] * _rgb(albedo)
 
 
-def oren_nayar_ab(sigma):
+def oren_nayar_ab(sigma: Real) -> Real:
     """Oren & Nayar 1994 qualitative-model coefficients for slope deviation σ (rad).
 
     A = 1 − 0.5 σ² / (σ² + 0.33),   B = 0.45 σ² / (σ² + 0.09)
@@ -31,7 +31,7 @@ def oren_nayar_ab(sigma):
     return 1.0 - 0.5 * s2 / (s2 + 0.33), 0.45 * s2 / (s2 + 0.09)
 
 
-def oren_nayar_angular(wo, wi):
+def oren_nayar_angular(wo: Real, wi: Real) -> Real:
     """max(0, cos(φi − φo)) sin α tan β with α = max(θi, θo), β = min(θi, θo).
 
     Computed without trigonometry: sin θi sin θo cos(φi − φo) = wi·wo − zi zo, and
@@ -43,7 +43,7 @@ def oren_nayar_angular(wo, wi):
     return safe_div(s, np.maximum(zo, zi))
 
 
-def oren_nayar(wo, wi, albedo=(1.0, 1.0, 1.0), sigma=0.0):
+def oren_nayar(wo: Real, wi: Real, albedo: Real = (1.0, 1.0, 1.0), sigma: Real = 0.0) -> Real:
     """Oren–Nayar qualitative model (Oren & Nayar 1994, eq. 30):
 
         f = ρ/π · (A + B · max(0, cos(φi − φo)) · sin α · tan β)

@@ -49,7 +49,7 @@ from .fresnel import (
     fresnel_f82,
     fresnel_schlick,
 )
-from .geometry import as_dirs, cos_theta, dir_from_mu, half_vector, rotate_tangent
+from .geometry import Real, as_dirs, cos_theta, dir_from_mu, half_vector, rotate_tangent
 from .inputs import MaterialLike, as_coat, as_material, as_params
 from .integrate import albedo_mis
 from .layered import coated
@@ -77,7 +77,7 @@ def coat_alpha(coat: Coat | Mapping[str, Any], convention: str = "squared") -> t
     return clamp_alpha(ax), clamp_alpha(ay)
 
 
-def diffuse_lobe(material: MaterialLike, wo: Any, wi: Any) -> np.ndarray:
+def diffuse_lobe(material: MaterialLike, wo: Any, wi: Any) -> Real:
     """Lambert or Oren–Nayar with albedo base_color, RGB (..., 3)."""
     m = as_material(material)
     albedo = _rgb(m.params.base_color)
@@ -113,7 +113,7 @@ def conductor_fresnel(
 
 def specular_lobe(
     material: MaterialLike, wo: Any, wi: Any, fresnel: Callable[[Any], Any], ward_form: str = "gmd"
-) -> np.ndarray:
+) -> Real:
     """D·V·F of the material's distribution (GGX or Ward), F a callable of wo·h."""
     m = as_material(material)
     ax, ay = material_alpha(m)
@@ -182,7 +182,7 @@ def evaluate(
     fresnel: str = "exact",
     multiscatter: bool = False,
     ward_form: str = "gmd",
-) -> np.ndarray:
+) -> Real:
     """The material's reflection BRDF f(wo, wi), RGB (..., 3). See the module docstring."""
     if fresnel not in FRESNEL_MODES:
         raise ValueError(f"unknown fresnel mode {fresnel!r}; use one of {FRESNEL_MODES}")
@@ -231,7 +231,7 @@ def albedo(
     phi: float = 0.0,
     weight: Callable[[Any], Any] | None = None,
     **kwargs: Any,
-) -> np.ndarray:
+) -> Real:
     """Directional albedo A(μ) = ∫ f(wo, wi) cos θi dωi, RGB (3,), for the furnace test.
 
     wo has cos θo = mu and azimuth φ; deterministic QMC with balance-heuristic MIS of

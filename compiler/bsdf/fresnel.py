@@ -8,37 +8,39 @@ through array parameters with a trailing RGB axis, e.g. ``eta`` of shape (3,) wi
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
-from .geometry import safe_div
+from .geometry import Real, safe_div
 
 #: cos of the F82 angle (θ = acos(1/7) ≈ 81.79°), Hoffman 2019.
 MU_BAR = 1.0 / 7.0
 
 
-def _cos(cos_theta):
+def _cos(cos_theta: Real) -> Real:
     return np.clip(np.abs(np.asarray(cos_theta, dtype=np.float64)), 0.0, 1.0)
 
 
-def f0_from_ior(ior):
+def f0_from_ior(ior: Real) -> Real:
     """Normal-incidence reflectance of a dielectric: F0 = ((η − 1)/(η + 1))²."""
     ior = np.asarray(ior, dtype=np.float64)
     return ((ior - 1.0) / (ior + 1.0)) ** 2
 
 
-def ior_from_f0(f0):
+def ior_from_f0(f0: Real) -> Real:
     """Inverse of ``f0_from_ior`` for η ≥ 1: η = (1 + √F0)/(1 − √F0)."""
     s = np.sqrt(np.clip(np.asarray(f0, dtype=np.float64), 0.0, 0.999999))
     return (1.0 + s) / (1.0 - s)
 
 
-def f0_conductor(eta, k):
+def f0_conductor(eta: Real, k: Real) -> Real:
     """Normal-incidence reflectance of a conductor: ((η−1)² + k²)/((η+1)² + k²)."""
     eta, k = np.asarray(eta, float), np.asarray(k, float)
     return ((eta - 1.0) ** 2 + k * k) / ((eta + 1.0) ** 2 + k * k)
 
 
-def fresnel_dielectric(cos_theta, eta):
+def fresnel_dielectric(cos_theta: Real, eta: Real) -> Real:
     """Exact unpolarised Fresnel reflectance of a dielectric interface.
 
     η = η_t / η_i (relative; η < 1 means leaving the denser medium). With c = cos θi:
@@ -57,7 +59,7 @@ def fresnel_dielectric(cos_theta, eta):
     return np.where(eta == 1.0, 0.0, f)  # exact even where c² underflows
 
 
-def _conductor_ab(c, eta, k):
+def _conductor_ab(c: Real, eta: Real, k: Real) -> Real:
     """a² + b² and a of the conductor Fresnel formula (a + ib = sqrt(η̂² − sin²θ))."""
     s2 = 1.0 - c * c
     t0 = (eta * eta - 1.0) - k * k + c * c  # η² − k² − sin²θ, exact at η = 1, k = 0
@@ -66,7 +68,7 @@ def _conductor_ab(c, eta, k):
     return a2b2, a, s2
 
 
-def fresnel_conductor(cos_theta, eta, k):
+def fresnel_conductor(cos_theta: Real, eta: Real, k: Real) -> Real:
     """Exact unpolarised Fresnel reflectance for a complex index η̂ = η + i k.
 
     With c = cos θ, s² = 1 − c², t0 = η² − k² − s², a² + b² = sqrt(t0² + 4η²k²),
@@ -88,19 +90,19 @@ def fresnel_conductor(cos_theta, eta, k):
     return np.clip(0.5 * (rs + rp), 0.0, 1.0)
 
 
-def fresnel_schlick(cos_theta, f0, f90=1.0):
+def fresnel_schlick(cos_theta: Real, f0: Real, f90: Real = 1.0) -> Real:
     """Schlick 1994: F = F0 + (F90 − F0)(1 − cos θ)⁵."""
     c = _cos(cos_theta)
     f0 = np.asarray(f0, dtype=np.float64)
     return f0 + (np.asarray(f90, float) - f0) * (1.0 - c) ** 5
 
 
-def _f82_shape(c):
+def _f82_shape(c: Real) -> Real:
     """The F82 correction shape μ(1 − μ)⁶ / (μ̄(1 − μ̄)⁶), 1 at μ = μ̄ = 1/7."""
     return c * (1.0 - c) ** 6 / (MU_BAR * (1.0 - MU_BAR) ** 6)
 
 
-def fresnel_f82(cos_theta, f0, f82):
+def fresnel_f82(cos_theta: Real, f0: Real, f82: Real) -> Real:
     """Hoffman 2019 "F82" model with the measured reflectance F82 at θ = acos(1/7).
 
         F(μ) = Schlick(F0, μ) − [Schlick(F0, μ̄) − F82] · μ(1 − μ)⁶ / (μ̄(1 − μ̄)⁶)
@@ -114,12 +116,12 @@ def fresnel_f82(cos_theta, f0, f82):
     return np.maximum(fresnel_schlick(c, f0) - dip * _f82_shape(c), 0.0)
 
 
-def f82_from_tint(f0, tint):
+def f82_from_tint(f0: Real, tint: Real) -> Real:
     """F82 = tint · Schlick(F0, μ̄) (OpenPBR ``specular_color`` as the F82 tint)."""
     return np.asarray(tint, float) * fresnel_schlick(MU_BAR, f0)
 
 
-def fresnel_f82_tint(cos_theta, f0, tint):
+def fresnel_f82_tint(cos_theta: Real, f0: Real, tint: Real) -> Real:
     """The OpenPBR F82-tint form: ``fresnel_f82`` with F82 = tint · Schlick(F0, 1/7).
 
     Expanded: F(μ) = Schlick(F0, μ) − Schlick(F0, μ̄)(1 − tint) μ(1 − μ)⁶/(μ̄(1 − μ̄)⁶).
@@ -128,7 +130,7 @@ def fresnel_f82_tint(cos_theta, f0, tint):
     return fresnel_f82(cos_theta, f0, f82_from_tint(f0, tint))
 
 
-def fresnel_average(fresnel, n: int = 64):
+def fresnel_average(fresnel: Callable[[Real], Real], n: int = 64) -> Real:
     """Hemispherical (cosine-weighted) average F_avg = 2∫₀¹ F(μ) μ dμ.
 
     ``fresnel`` is a callable of μ of shape (n, ...) → (n, ...); Gauss–Legendre
@@ -141,7 +143,7 @@ def fresnel_average(fresnel, n: int = 64):
     return np.sum(values * weights, axis=0)
 
 
-def fresnel_schlick_average(f0):
+def fresnel_schlick_average(f0: Real) -> Real:
     """Closed form of ``fresnel_average`` for Schlick: F0 + (1 − F0)/21."""
     f0 = np.asarray(f0, float)
     return f0 + (1.0 - f0) / 21.0

@@ -11,7 +11,13 @@ finite, also in a float32 port.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
+
+#: A float or a numpy array of floats: the kernels of cnlmc.bsdf broadcast, so their inputs and
+#: results are either (numpy's own annotations cannot say "same shape as the inputs").
+Real = Any
 
 #: Smallest cos θ treated as above the horizon (θ ≈ 89.99999°).
 COS_EPS = 1e-7
@@ -19,17 +25,17 @@ COS_EPS = 1e-7
 TINY = 1e-300
 
 
-def as_dirs(w) -> np.ndarray:
+def as_dirs(w: Real) -> np.ndarray:
     """Return ``w`` as a float64 array of shape (..., 3)."""
     return np.asarray(w, dtype=np.float64)
 
 
-def dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+def dot(a: np.ndarray, b: np.ndarray) -> Real:
     """Dot product over the last axis: a·b, shape (...)."""
     return np.sum(a * b, axis=-1)
 
 
-def normalize(v: np.ndarray) -> np.ndarray:
+def normalize(v: np.ndarray) -> Real:
     """v / |v|; a zero vector stays zero (no NaN)."""
     length = np.sqrt(dot(v, v))
     return v / np.maximum(length, TINY)[..., None]
@@ -45,22 +51,22 @@ def upper(w: np.ndarray) -> np.ndarray:
     return cos_theta(w) >= COS_EPS
 
 
-def both_upper(wo: np.ndarray, wi: np.ndarray) -> np.ndarray:
+def both_upper(wo: np.ndarray, wi: np.ndarray) -> Real:
     """Mask of pairs where both directions are above the horizon (reflection)."""
     return upper(wo) & upper(wi)
 
 
-def half_vector(wo: np.ndarray, wi: np.ndarray) -> np.ndarray:
+def half_vector(wo: np.ndarray, wi: np.ndarray) -> Real:
     """h = (wo + wi)/|wo + wi|; the zero vector when wo = −wi (degenerate)."""
     return normalize(wo + wi)
 
 
-def reflect(w: np.ndarray) -> np.ndarray:
+def reflect(w: np.ndarray) -> Real:
     """Mirror direction about the normal: (−x, −y, z)."""
     return w * np.array([-1.0, -1.0, 1.0])
 
 
-def rotate_tangent(w: np.ndarray, angle) -> np.ndarray:
+def rotate_tangent(w: np.ndarray, angle: Real) -> np.ndarray:
     """Express w in a frame whose tangent is rotated by ``angle`` (radians) about n.
 
     t' = (cos φ, sin φ, 0), b' = (−sin φ, cos φ, 0):
@@ -71,7 +77,7 @@ def rotate_tangent(w: np.ndarray, angle) -> np.ndarray:
     return np.stack([c * x + s * y, -s * x + c * y, w[..., 2]], axis=-1)
 
 
-def safe_div(num, den, default=0.0):
+def safe_div(num: Real, den: Real, default: Real = 0.0) -> Real:
     """num / den where den ≠ 0, else ``default`` (no warnings, no NaN)."""
     num, den = np.broadcast_arrays(np.asarray(num, float), np.asarray(den, float))
     out = np.full(num.shape, default, dtype=np.float64)
@@ -79,14 +85,14 @@ def safe_div(num, den, default=0.0):
     return out
 
 
-def spherical_dir(theta, phi=0.0) -> np.ndarray:
+def spherical_dir(theta: Real, phi: Real = 0.0) -> np.ndarray:
     """Unit vector from polar angle θ and azimuth φ (radians)."""
     theta, phi = np.broadcast_arrays(np.asarray(theta, float), np.asarray(phi, float))
     st = np.sin(theta)
     return np.stack([st * np.cos(phi), st * np.sin(phi), np.cos(theta)], axis=-1)
 
 
-def dir_from_mu(mu, phi=0.0) -> np.ndarray:
+def dir_from_mu(mu: Real, phi: Real = 0.0) -> np.ndarray:
     """Unit vector with cos θ = mu (clipped to [0, 1]) and azimuth φ."""
     mu = np.clip(np.asarray(mu, float), 0.0, 1.0)
     return spherical_dir(np.arccos(mu), phi)

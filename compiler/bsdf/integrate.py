@@ -10,33 +10,35 @@ balance heuristic (Veach 1997) when a lobe width is given:
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
+
 import numpy as np
 
-from .geometry import as_dirs, cos_theta, dir_from_mu
+from .geometry import Real, as_dirs, cos_theta, dir_from_mu
 from .microfacet import reflect_about, sample_ggx_vndf, vndf_pdf
 
 GOLDEN = 0.5 * (np.sqrt(5.0) - 1.0)
 
 
-def lattice_2d(n: int):
+def lattice_2d(n: int) -> Real:
     """(u1, u2), each shape (n,): ((i + ½)/n, frac(i · (√5 − 1)/2))."""
     i = np.arange(n, dtype=np.float64)
     return (i + 0.5) / n, np.mod(i * GOLDEN + 0.5 / n, 1.0)
 
 
-def sample_cosine(u1, u2):
+def sample_cosine(u1: Real, u2: Real) -> Real:
     """Cosine-weighted hemisphere direction (Malley): r = √u1, φ = 2π u2."""
     r, phi = np.sqrt(u1), 2.0 * np.pi * u2
     z = np.sqrt(np.maximum(1.0 - u1, 0.0))
     return np.stack([r * np.cos(phi), r * np.sin(phi), z], axis=-1)
 
 
-def cosine_pdf(wi):
+def cosine_pdf(wi: Real) -> Real:
     """pdf of ``sample_cosine``: max(cos θ, 0)/π."""
     return np.maximum(cos_theta(wi), 0.0) / np.pi
 
 
-def _weighted(values, weights):
+def _weighted(values: Real, weights: Real) -> Real:
     """Σ over the sample axis (the last one of `weights`) of values × weights."""
     values = np.asarray(values, dtype=np.float64)
     if values.ndim == weights.ndim:
@@ -44,14 +46,14 @@ def _weighted(values, weights):
     return np.sum(values * weights[..., None], axis=-2)
 
 
-def albedo_cosine(bsdf, wo, n: int = 4096):
+def albedo_cosine(bsdf: Callable[[Real, Real], Real], wo: Real, n: int = 4096) -> Real:
     """∫ f(wo, wi) cos θi dωi by cosine-weighted QMC: (π/N) Σ f.  wo shape (3,)."""
     wi = sample_cosine(*lattice_2d(n))
     wo_b = np.broadcast_to(as_dirs(wo), wi.shape)
     return _weighted(bsdf(wo_b, wi), np.full(n, np.pi / n))
 
 
-def albedo_mis(bsdf, wo, lobes, n: int = 4096):
+def albedo_mis(bsdf: Callable[[Real, Real], Real], wo: Real, lobes: Sequence[tuple[Real, Real]], n: int = 4096) -> Real:
     """∫ f cos θi dωi by balance-heuristic MIS of cosine sampling and GGX-VNDF sampling
     for every (αx, αy) in ``lobes`` (n samples per strategy):
 
@@ -73,7 +75,14 @@ def albedo_mis(bsdf, wo, lobes, n: int = 4096):
     return _weighted(bsdf(wo_all, wi), weight)
 
 
-def albedo_at_mu(bsdf, mu, ax=None, ay=None, n: int = 4096, phi: float = 0.0):
+def albedo_at_mu(
+    bsdf: Callable[[Real, Real], Real],
+    mu: Real,
+    ax: Real | None = None,
+    ay: Real | None = None,
+    n: int = 4096,
+    phi: float = 0.0,
+) -> Real:
     """Directional albedo at cos θo = mu (azimuth φ): MIS if α is given, else cosine."""
     wo = dir_from_mu(mu, phi)
     if ax is None:

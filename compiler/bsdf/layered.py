@@ -30,14 +30,16 @@ symmetric in wo, wi, hence reciprocal if the base is.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from .fresnel import fresnel_dielectric
-from .geometry import as_dirs, both_upper, cos_theta
+from .geometry import Real, as_dirs, both_upper, cos_theta
 from .microfacet import microfacet_reflection
 
 
-def refract_into_coat(w, eta):
+def refract_into_coat(w: Real, eta: Real) -> Real:
     """Direction inside a coat of relative IOR η ≥ 1, refracted at the macro normal.
 
     (x, y, z) → (x/η, y/η, sqrt(1 − (x² + y²)/η²)): same azimuth, sin θ' = sin θ/η.
@@ -50,24 +52,32 @@ def refract_into_coat(w, eta):
     return np.concatenate([xy, z[..., None]], axis=-1)
 
 
-def coat_absorption(wo_in, wi_in, color, thickness):
+def coat_absorption(wo_in: Real, wi_in: Real, color: Real, thickness: Real) -> Real:
     """a = color^(thickness (1/cos θo' + 1/cos θi')/2), RGB (..., 3); 1 for thickness 0."""
     inv = 1.0 / np.maximum(cos_theta(wo_in), 1e-12) + 1.0 / np.maximum(cos_theta(wi_in), 1e-12)
     color = np.clip(np.asarray(color, dtype=np.float64), 0.0, 1.0)
     return np.power(color, (0.5 * thickness * inv)[..., None])
 
 
-def coat_transmission(wo, wi, ior):
+def coat_transmission(wo: Real, wi: Real, ior: Real) -> Real:
     """(1 − F(cos θo)) (1 − F(cos θi)) with the exact dielectric Fresnel of the coat."""
     return (1.0 - fresnel_dielectric(cos_theta(wo), ior)) * (1.0 - fresnel_dielectric(cos_theta(wi), ior))
 
 
-def coat_specular(wo, wi, ior, ax, ay):
+def coat_specular(wo: Real, wi: Real, ior: Real, ax: Real, ay: Real) -> Real:
     """The coat's own GGX reflection lobe (scalar, colourless)."""
     return microfacet_reflection(wo, wi, ax, ay, lambda c: fresnel_dielectric(c, ior))
 
 
-def coated(wo, wi, base, ior=1.5, alpha=(0.001, 0.001), color=(1.0, 1.0, 1.0), thickness=0.0):
+def coated(
+    wo: Real,
+    wi: Real,
+    base: Callable[[Real, Real], tuple[Real, Real]],
+    ior: Real = 1.5,
+    alpha: Real = (0.001, 0.001),
+    color: Real = (1.0, 1.0, 1.0),
+    thickness: Real = 0.0,
+) -> Real:
     """Weidlich–Wilkie coat over ``base``: a callable (wo', wi') → (f_spec, f_diff),
     both RGB (..., 3) (see the module docstring for how each part is transmitted).
 

@@ -14,16 +14,16 @@ from __future__ import annotations
 import numpy as np
 
 from .alpha import ALPHA_MIRROR
-from .geometry import as_dirs, both_upper, cos_theta, dot, half_vector, reflect, safe_div, upper
+from .geometry import Real, as_dirs, both_upper, cos_theta, dot, half_vector, reflect, safe_div, upper
 
 
-def stretched_length(w, ax, ay):
+def stretched_length(w: Real, ax: Real, ay: Real) -> Real:
     """|w|_α = sqrt(αx² wx² + αy² wy² + wz²)."""
     x, y, z = w[..., 0], w[..., 1], w[..., 2]
     return np.sqrt((ax * x) ** 2 + (ay * y) ** 2 + z * z)
 
 
-def ggx_d(h, ax, ay):
+def ggx_d(h: Real, ax: Real, ay: Real) -> Real:
     """Anisotropic GGX normal distribution (Walter 2007 eq. 33; Heitz 2014 eq. 85).
 
         D(h) = 1 / (π αx αy (hx²/αx² + hy²/αy² + hz²)²)     for hz ≥ 0, else 0.
@@ -38,7 +38,7 @@ def ggx_d(h, ax, ay):
     return np.where(z >= 0.0, d, 0.0)
 
 
-def ggx_d_isotropic(cos_h, alpha):
+def ggx_d_isotropic(cos_h: Real, alpha: Real) -> Real:
     """Isotropic GGX D from cos θh: α² / (π (cos²θh (α² − 1) + 1)²) evaluated stably.
 
     Written as 1/(π α² (sin²θh/α² + cos²θh)²), i.e. ``ggx_d`` with αx = αy = α.
@@ -50,7 +50,7 @@ def ggx_d_isotropic(cos_h, alpha):
     return np.where(raw >= 0.0, safe_div(1.0, np.pi * alpha * alpha * q * q), 0.0)
 
 
-def ggx_d_common_form(cos_h, alpha):
+def ggx_d_common_form(cos_h: Real, alpha: Real) -> Real:
     """The widespread shader form D = α² / (π (cos²θh (α² − 1) + 1)²), dtype-preserving.
 
     Kept to document its float32 breakdown (brdf_accuracy_checks.json
@@ -65,7 +65,7 @@ def ggx_d_common_form(cos_h, alpha):
         return a2 / (np.asarray(np.pi, dtype=c.dtype) * d * d)
 
 
-def smith_lambda(w, ax, ay):
+def smith_lambda(w: Real, ax: Real, ay: Real) -> Real:
     """Smith Λ for GGX (Heitz 2014 eq. 86), in a cancellation-free form.
 
         Λ(w) = (sqrt(1 + a²) − 1)/2 = a² / (2 (1 + sqrt(1 + a²))),
@@ -79,7 +79,7 @@ def smith_lambda(w, ax, ay):
     return a2 / (2.0 * (1.0 + np.sqrt(1.0 + a2)))
 
 
-def smith_g1(w, ax, ay):
+def smith_g1(w: Real, ax: Real, ay: Real) -> Real:
     """G1(w) = 1/(1 + Λ(w)) = 2 wz / (wz + |w|_α); 0 for directions below the horizon."""
     w = as_dirs(w)
     z = cos_theta(w)
@@ -87,7 +87,7 @@ def smith_g1(w, ax, ay):
     return np.where(upper(w), g, 0.0)
 
 
-def smith_g2(wo, wi, ax, ay):
+def smith_g2(wo: Real, wi: Real, ax: Real, ay: Real) -> Real:
     """Height-correlated masking-shadowing (Heitz 2014 eq. 99).
 
         G2 = 1/(1 + Λ(wo) + Λ(wi)) = 2 zo zi / (zi |wo|_α + zo |wi|_α)
@@ -100,12 +100,12 @@ def smith_g2(wo, wi, ax, ay):
     return np.where(mask, safe_div(2.0 * zo * zi, np.where(mask, den, 1.0)), 0.0)
 
 
-def smith_g2_separable(wo, wi, ax, ay):
+def smith_g2_separable(wo: Real, wi: Real, ax: Real, ay: Real) -> Real:
     """Separable (uncorrelated) masking-shadowing G2 = G1(wo) G1(wi) (Walter 2007)."""
     return smith_g1(wo, ax, ay) * smith_g1(wi, ax, ay)
 
 
-def ggx_visibility(wo, wi, ax, ay):
+def ggx_visibility(wo: Real, wi: Real, ax: Real, ay: Real) -> Real:
     """V = G2 / (4 zo zi) = 1 / (2 (zi |wo|_α + zo |wi|_α)), height-correlated.
 
     Finite at grazing (no 1/cos); 0 below the horizon. (Heitz 2014; Hammon 2017.)
@@ -117,30 +117,30 @@ def ggx_visibility(wo, wi, ax, ay):
     return np.where(mask, safe_div(1.0, np.where(mask, den, 1.0)), 0.0)
 
 
-def half_angle_cos(wo, wi, h):
+def half_angle_cos(wo: Real, wi: Real, h: Real) -> Real:
     """cos θd = wo·h = wi·h, computed as (wo·h + wi·h)/2 so it is bitwise symmetric
     in wo, wi (exact reciprocity in floating point), clipped to [0, 1]."""
     return np.clip(0.5 * (dot(wo, h) + dot(wi, h)), 0.0, 1.0)
 
 
-def is_mirror(ax, ay):
+def is_mirror(ax: Real, ay: Real) -> Real:
     """True where the lobe is a perfect mirror: max(αx, αy) < ALPHA_MIRROR."""
     return np.maximum(ax, ay) < ALPHA_MIRROR
 
 
-def _fresnel_values(fresnel, cos_d):
+def _fresnel_values(fresnel: Real, cos_d: Real) -> Real:
     """F at the half-vector angle: ``fresnel`` is an array or a callable of cos θd."""
     return np.asarray(fresnel(cos_d) if callable(fresnel) else fresnel, dtype=np.float64)
 
 
-def _times_fresnel(base, f):
+def _times_fresnel(base: Real, f: Real) -> Real:
     """base (...) · F, where F is (...) / scalar, or RGB (..., 3)."""
     if f.ndim == base.ndim + 1 or (f.ndim >= 1 and f.shape[-1] == 3 and f.ndim > base.ndim):
         return base[..., None] * f
     return base * f
 
 
-def microfacet_reflection(wo, wi, ax, ay, fresnel=1.0):
+def microfacet_reflection(wo: Real, wi: Real, ax: Real, ay: Real, fresnel: Real = 1.0) -> Real:
     """Single-scattering GGX reflection BRDF (Walter 2007 eq. 20, Heitz 2014 eq. 99).
 
         f(wo, wi) = F(wo·h) · D(h) · G2(wo, wi) / (4 cos θo cos θi)
@@ -164,7 +164,7 @@ def microfacet_reflection(wo, wi, ax, ay, fresnel=1.0):
     return _times_fresnel(dv, _fresnel_values(fresnel, half_angle_cos(wo, wi, h)))
 
 
-def mirror_reflectance(wo, fresnel=1.0):
+def mirror_reflectance(wo: Real, fresnel: Real = 1.0) -> Real:
     """The delta (perfect mirror) lobe for α < ALPHA_MIRROR.
 
     Returns (wi, weight): wi = reflect(wo) = (−x, −y, z) and weight = F(cos θo) (the
@@ -177,7 +177,7 @@ def mirror_reflectance(wo, fresnel=1.0):
     return reflect(wo), _times_fresnel(visible, f)
 
 
-def sample_ggx_vndf(wo, ax, ay, u1, u2):
+def sample_ggx_vndf(wo: Real, ax: Real, ay: Real, u1: Real, u2: Real) -> Real:
     """Sample a microfacet normal from the visible-normal distribution (Heitz 2018).
 
     Stretch wo to the unit-α configuration, sample the projected hemisphere
@@ -203,12 +203,12 @@ def sample_ggx_vndf(wo, ax, ay, u1, u2):
     return ne / np.maximum(np.sqrt(dot(ne, ne)), 1e-300)[..., None]
 
 
-def reflect_about(wo, h):
+def reflect_about(wo: Real, h: Real) -> Real:
     """wi = 2 (wo·h) h − wo."""
     return 2.0 * dot(wo, h)[..., None] * h - wo
 
 
-def vndf_pdf(wo, wi, ax, ay):
+def vndf_pdf(wo: Real, wi: Real, ax: Real, ay: Real) -> Real:
     """Solid-angle pdf of wi under VNDF sampling: G1(wo) D(h) / (4 cos θo)."""
     wo, wi = as_dirs(wo), as_dirs(wi)
     h = half_vector(wo, wi)

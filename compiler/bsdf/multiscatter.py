@@ -18,11 +18,12 @@ visible-normal sampling and interpolated bilinearly; anisotropic lobes use
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from functools import lru_cache
 
 import numpy as np
 
-from .geometry import as_dirs, both_upper, cos_theta, dir_from_mu
+from .geometry import Real, as_dirs, both_upper, cos_theta, dir_from_mu
 from .integrate import lattice_2d
 from .microfacet import reflect_about, sample_ggx_vndf, smith_g1, smith_g2
 
@@ -34,7 +35,7 @@ TABLE_SAMPLES = 2048
 _MU_MIN, _ALPHA_MIN = 1e-3, 1e-3
 
 
-def ggx_albedo(mu, alpha, n: int = 4096, correlated: bool = True):
+def ggx_albedo(mu: Real, alpha: Real, n: int = 4096, correlated: bool = True) -> Real:
     """White-furnace directional albedo E(μ) of single-scattering GGX (F = 1).
 
     Estimated by QMC visible-normal sampling: E(μ) = E_h[G2(wo, wi)/G1(wo)] for the
@@ -53,7 +54,7 @@ def ggx_albedo(mu, alpha, n: int = 4096, correlated: bool = True):
     return np.mean(ratio, axis=-1)
 
 
-def average_over_mu(values_of_mu, n: int = 32):
+def average_over_mu(values_of_mu: Callable[[Real], Real], n: int = 32) -> Real:
     """2 ∫₀¹ g(μ) μ dμ by n-point Gauss–Legendre; ``values_of_mu`` maps μ (n,) → (n, ...)."""
     x, w = np.polynomial.legendre.leggauss(n)
     mu = 0.5 * (x + 1.0)
@@ -61,14 +62,14 @@ def average_over_mu(values_of_mu, n: int = 32):
     return np.tensordot(w * mu, vals, axes=(0, 0))
 
 
-def table_axes():
+def table_axes() -> Real:
     """The μ and α sample positions of the E table (uniform, ends nudged off 0)."""
     grid = np.linspace(0.0, 1.0, TABLE_SIZE)
     return np.maximum(grid, _MU_MIN), np.maximum(grid, _ALPHA_MIN)
 
 
 @lru_cache(maxsize=1)
-def albedo_table():
+def albedo_table() -> Real:
     """E[α_index, μ_index] (TABLE_SIZE², float64), computed once by ``ggx_albedo``."""
     mus, alphas = table_axes()
     rows = [ggx_albedo(mus, a, TABLE_SAMPLES) for a in alphas]
@@ -77,14 +78,14 @@ def albedo_table():
     return table
 
 
-def _lerp_index(x):
+def _lerp_index(x: Real) -> Real:
     """Fractional grid index of x ∈ [0, 1] on the uniform table axis."""
     t = np.clip(np.asarray(x, float), 0.0, 1.0) * (TABLE_SIZE - 1)
     i0 = np.minimum(np.floor(t).astype(int), TABLE_SIZE - 2)
     return i0, t - i0
 
 
-def albedo_lookup(mu, alpha):
+def albedo_lookup(mu: Real, alpha: Real) -> Real:
     """Bilinear interpolation of the E(μ, α) table."""
     table = albedo_table()
     ia, fa = _lerp_index(alpha)
@@ -95,26 +96,26 @@ def albedo_lookup(mu, alpha):
 
 
 @lru_cache(maxsize=1)
-def average_albedo_table():
+def average_albedo_table() -> Real:
     """E_avg(α) per table row: 2 ∫ E(μ) μ dμ by the trapezoid rule on the table grid."""
     mus = np.linspace(0.0, 1.0, TABLE_SIZE)
     return np.trapezoid(2.0 * albedo_table() * mus, mus, axis=1)
 
 
-def average_albedo(alpha):
+def average_albedo(alpha: Real) -> Real:
     """E_avg(α), linearly interpolated from ``average_albedo_table``."""
     ia, fa = _lerp_index(alpha)
     tab = average_albedo_table()
     return tab[ia] * (1 - fa) + tab[ia + 1] * fa
 
 
-def fresnel_multiscatter(f_avg, e_avg):
+def fresnel_multiscatter(f_avg: Real, e_avg: Real) -> Real:
     """F_ms = F_avg² E_avg / (1 − F_avg (1 − E_avg)) (Kulla & Conty 2017)."""
     f_avg, e_avg = np.asarray(f_avg, float), np.asarray(e_avg, float)
     return f_avg * f_avg * e_avg / (1.0 - f_avg * (1.0 - e_avg))
 
 
-def multiscatter_lobe(wo, wi, alpha, f_avg=1.0):
+def multiscatter_lobe(wo: Real, wi: Real, alpha: Real, f_avg: Real = 1.0) -> Real:
     """Kulla–Conty compensation BRDF f_ms · F_ms (see module docstring).
 
     ``f_avg`` scalar or RGB (3,); returns (...) or (..., 3). 0 below the horizon.

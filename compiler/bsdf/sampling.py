@@ -9,9 +9,11 @@ tiers and the Mitsuba `cnlm` plugin both use them. Everything is vectorized over
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 
-from .geometry import cos_theta
+from .geometry import Real, cos_theta
 from .integrate import cosine_pdf, sample_cosine
 from .microfacet import reflect_about, sample_ggx_vndf, vndf_pdf
 
@@ -29,7 +31,9 @@ def lobe_shares(base: str, coated: bool) -> tuple[float, float, float]:
     return LOBE_SHARES[base][bool(coated)]
 
 
-def mixture_pdf(wo, wi, shares, base_alpha, coat_alpha) -> np.ndarray:
+def mixture_pdf(
+    wo: Real, wi: Real, shares: Sequence[float], base_alpha: tuple[Real, Real], coat_alpha: tuple[Real, Real]
+) -> Real:
     """Solid-angle pdf of wi under the mixture; `base_alpha`/`coat_alpha` are (αx, αy)."""
     pdf = shares[0] * cosine_pdf(wi)
     if shares[1] > 0:
@@ -39,7 +43,15 @@ def mixture_pdf(wo, wi, shares, base_alpha, coat_alpha) -> np.ndarray:
     return pdf
 
 
-def sample_mixture(wo, u0, u1, u2, shares, base_alpha, coat_alpha) -> np.ndarray:
+def sample_mixture(
+    wo: Real,
+    u0: Real,
+    u1: Real,
+    u2: Real,
+    shares: Sequence[float],
+    base_alpha: tuple[Real, Real],
+    coat_alpha: tuple[Real, Real],
+) -> Real:
     """One direction wi per lane: the strategy is chosen by u0 against the shares, then
     (u1, u2) drive it. Directions below the surface are returned as they are (pdf 0)."""
     wi = sample_cosine(u1, u2)
@@ -47,12 +59,13 @@ def sample_mixture(wo, u0, u1, u2, shares, base_alpha, coat_alpha) -> np.ndarray
         low = sum(shares[:share_index])
         chosen = (u0 >= low) & (u0 < low + shares[share_index])
         if shares[share_index] > 0 and np.any(chosen):
-            lobe = reflect_about(wo, sample_ggx_vndf(wo, *alpha, u1, u2))
+            ax, ay = alpha
+            lobe = reflect_about(wo, sample_ggx_vndf(wo, ax, ay, u1, u2))
             wi = np.where(chosen[..., None], lobe, wi)
     return wi
 
 
-def sampled_weight(f, wo, wi, pdf) -> np.ndarray:
+def sampled_weight(f: Real, wo: Real, wi: Real, pdf: Real) -> np.ndarray:
     """f cos θi / pdf per lane (0 where the pdf or cos θi vanishes), RGB (..., 3)."""
     ok = (pdf > 0) & (cos_theta(wi) > 0) & (cos_theta(wo) > 0)
     scale = np.where(ok, cos_theta(wi) / np.where(ok, pdf, 1.0), 0.0)

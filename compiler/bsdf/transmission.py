@@ -37,7 +37,7 @@ from ..material import Material
 from .alpha import ALPHA_MIRROR
 from .evaluate import evaluate, local_dirs, material_alpha, with_ior
 from .fresnel import f0_from_ior, fresnel_dielectric, fresnel_schlick
-from .geometry import COS_EPS, as_dirs, dot, normalize, safe_div
+from .geometry import COS_EPS, Real, as_dirs, dot, normalize, safe_div
 from .inputs import MaterialLike, as_material
 from .microfacet import ggx_d, is_mirror, smith_lambda
 
@@ -47,18 +47,18 @@ G2_FORMS = ("correlated", "separable", "beta")
 MODES = ("radiance", "importance")
 
 
-def side_index(w, ior):
+def side_index(w: Real, ior: Real) -> Real:
     """Index of refraction of the medium w points into: 1 above (z > 0), ``ior`` below."""
     return np.where(as_dirs(w)[..., 2] > 0.0, 1.0, np.asarray(ior, float))
 
 
-def opposite_sides(wo, wi):
+def opposite_sides(wo: Real, wi: Real) -> Real:
     """Mask of transmission pairs: |cos θ| ≥ COS_EPS for both and opposite signs."""
     zo, zi = wo[..., 2], wi[..., 2]
     return (np.abs(zo) >= COS_EPS) & (np.abs(zi) >= COS_EPS) & (zo * zi < 0.0)
 
 
-def generalized_half_vector(wo, wi, eta_o, eta_i):
+def generalized_half_vector(wo: Real, wi: Real, eta_o: Real, eta_i: Real) -> Real:
     """h = −(η_i wi + η_o wo)/|η_i wi + η_o wo|, flipped so that h_z ≥ 0 (Walter 2007 eq. 16).
 
     The zero vector when η_i wi + η_o wo = 0 (η_i = η_o and wi = −wo: the delta direction).
@@ -67,24 +67,24 @@ def generalized_half_vector(wo, wi, eta_o, eta_i):
     return np.where((h[..., 2] < 0.0)[..., None], -h, h)
 
 
-def refraction_possible(wo, wi, h):
+def refraction_possible(wo: Real, wi: Real, h: Real) -> Real:
     """χ⁺ terms of Walter 2007 eq. 21 / Heitz 2014: each direction is on the same side of the
     microfacet as of the macro surface, (w·h)(w·n) > 0, and h is not degenerate."""
     return (dot(wo, h) * wo[..., 2] > 0.0) & (dot(wi, h) * wi[..., 2] > 0.0) & (h[..., 2] > 0.0)
 
 
-def _upper(w):
+def _upper(w: Real) -> Real:
     """w mirrored into the upper hemisphere (z → |z|): Λ depends on |tan θ| only."""
     return w * np.where(w[..., 2] < 0.0, -1.0, 1.0)[..., None]
 
 
-def _log_beta_1p(a, b):
+def _log_beta_1p(a: Real, b: Real) -> Real:
     """log B(1 + a, 1 + b) = lgamma(1+a) + lgamma(1+b) − lgamma(2+a+b)."""
     lg = np.vectorize(math.lgamma, otypes=[float])
     return lg(1.0 + a) + lg(1.0 + b) - lg(2.0 + a + b)
 
 
-def transmission_g2(wo, wi, ax, ay, form: str = "correlated"):
+def transmission_g2(wo: Real, wi: Real, ax: Real, ay: Real, form: str = "correlated") -> Real:
     """Masking-shadowing of a transmission pair (Λ of the directions mirrored to z > 0).
 
         "correlated":  G2 = 1 / (1 + Λ(wo) + Λ(wi))   (the reflection lobe's form; PBRT-v4)
@@ -103,14 +103,14 @@ def transmission_g2(wo, wi, ax, ay, form: str = "correlated"):
     raise ValueError(f"unknown G2 form {form!r}; use one of {G2_FORMS}")
 
 
-def interface_fresnel(cos_outside, ior, fresnel: str = "exact"):
+def interface_fresnel(cos_outside: Real, ior: Real, fresnel: str = "exact") -> Real:
     """F at the microfacet from the outside angle: exact dielectric(ior), or Schlick(F0(ior))."""
     if fresnel == "exact":
         return fresnel_dielectric(cos_outside, ior)
     return fresnel_schlick(cos_outside, f0_from_ior(ior))
 
 
-def mode_scale(eta_o, eta_i, mode: str = "radiance"):
+def mode_scale(eta_o: Real, eta_i: Real, mode: str = "radiance") -> Real:
     """1 for radiance transport, (η_i/η_o)² for importance transport."""
     if mode == "radiance":
         return np.ones_like(eta_o)
@@ -120,8 +120,15 @@ def mode_scale(eta_o, eta_i, mode: str = "radiance"):
 
 
 def microfacet_transmission(
-    wo, wi, ax, ay, ior, g2: str = "correlated", mode: str = "radiance", fresnel: str = "exact"
-):
+    wo: Real,
+    wi: Real,
+    ax: Real,
+    ay: Real,
+    ior: Real,
+    g2: str = "correlated",
+    mode: str = "radiance",
+    fresnel: str = "exact",
+) -> Real:
     """The rough dielectric BTDF f_t(wo, wi) of the module docstring (scalar, shape (...)).
 
     Exactly 0 for same-side pairs, directions within COS_EPS of the plane, ior = 1, pairs no
@@ -144,7 +151,9 @@ def microfacet_transmission(
     return np.where(ok & np.isfinite(value), value, 0.0)
 
 
-def dielectric_reflection(wo, wi, ax, ay, ior, g2: str = "correlated", fresnel: str = "exact"):
+def dielectric_reflection(
+    wo: Real, wi: Real, ax: Real, ay: Real, ior: Real, g2: str = "correlated", fresnel: str = "exact"
+) -> Real:
     """Reflection lobe of the interface seen from either side: F D G2 / (4 |cos θo| |cos θi|).
 
     Both directions above: η = ior; both below (inside the glass): the mirrored configuration
@@ -168,7 +177,7 @@ def dielectric_reflection(wo, wi, ax, ay, ior, g2: str = "correlated", fresnel: 
     return np.where(ok & np.isfinite(value), value, 0.0)
 
 
-def refract(w, ior):
+def refract(w: Real, ior: Real) -> Real:
     """Refract w (pointing away from the surface) through the smooth interface (normal +z).
 
     Returns (t, ok): t = −(w/η_rel) + (c/η_rel − c_t) n with η_rel = η_t/η_w and the sign
@@ -188,7 +197,7 @@ def refract(w, ior):
     return np.where(ok[..., None], t, 0.0), ok
 
 
-def mirror_transmittance(wo, ior, mode: str = "radiance"):
+def mirror_transmittance(wo: Real, ior: Real, mode: str = "radiance") -> Real:
     """The delta (smooth interface) transmission for α < ALPHA_MIRROR.
 
     Returns (wi, weight): wi the refracted direction of wo and weight = (1 − F) · s, F the
@@ -213,7 +222,7 @@ def _tint(material: Material) -> np.ndarray:
 
 def evaluate_transmission(
     material: MaterialLike, wo: Any, wi: Any, g2: str = "correlated", mode: str = "radiance", fresnel: str = "exact"
-) -> np.ndarray:
+) -> Real:
     """The material's BTDF f_t(wo, wi) ⊙ base_color (the transmittance tint), RGB (..., 3).
 
     Non-zero only for ``model.base == "glass"`` and pairs on opposite sides of the surface.
@@ -239,7 +248,7 @@ def evaluate_bsdf(
     ward_form: str = "gmd",
     g2: str = "correlated",
     mode: str = "radiance",
-) -> np.ndarray:
+) -> Real:
     """The full BSDF, RGB (..., 3): ``evaluate`` (reflection) for pairs above the surface,
     ``evaluate_transmission`` for pairs on opposite sides and, for glass, the internal
     reflection (the mirrored pair with η = 1/ior) for pairs below it. Opaque models are 0
