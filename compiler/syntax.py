@@ -31,13 +31,14 @@ COLOUR_CATEGORIES = ("colours", "unknown")
 MAX_SHAPES = 4096  # distinct terminal sequences kept; a full cache starts over
 NONE = slice(0, 0)  # no words
 
-Words = tuple[ast.Word, ...]  # the AST word of each tagged word of a line, in order
+Words = tuple[ast.Word, ...]  # the AST words of a line, in order (separators such as 'or' and ',' have none)
 ShapeKey = tuple[str | tuple[str, ...], ...]  # the candidate tags of each word
 
 # Plans are read once per terminal sequence and built for every line, so their build methods
-# are written for speed: no helper calls for what one expression says. The words of a node are
-# evenly spaced in the line (adverbs side by side, alternatives every other word: "red or blue"),
-# so a plan holds them as a slice of the line's words.
+# are written for speed: no helper calls for what one expression says. The words of a node
+# stand side by side once separators are left out (adverbs; "red or blue"), so a plan holds
+# them as a slice of the line's words; its first and last are positions in the tagged line.
+SEPARATORS = frozenset({"ARTICLE", "COMMA", "AND", "OR", "WITH", "COLON"})  # terminals that make no AST word
 
 
 def span_of(tagged: Sequence[Tagged], first: int, last: int) -> Span:
@@ -153,18 +154,22 @@ class RefinementPlan:
 class Shape:
     """The plan of one terminal sequence's tree: build(tagged, picks, text) -> the line's AST node."""
 
-    __slots__ = ("root",)
+    __slots__ = ("root", "used")
 
     def __init__(self, tree: Tree[Token], index: dict[int, int]) -> None:
-        self.root = _Reader(index).start(tree)
+        tokens = tree.scan_values(lambda v: isinstance(v, Token) and v.type not in SEPARATORS)
+        self.used = tuple(sorted(index[tok.start_pos or 0] for tok in tokens))  # tagged positions of the words
+        self.root = _Reader(index, {position: i for i, position in enumerate(self.used)}).start(tree)
 
     def build(self, tagged: Sequence[Tagged], picks: Sequence[Candidate], text: str) -> ast.Item:
-        """The AST of a line whose words carry this shape's tags; picks[i] is word i's reading.
-
-        Every word gets its AST Word (articles and commas too: fewer than bookkeeping would cost).
-        """
+        """The AST of a line whose words carry this shape's tags; picks[i] is word i's reading."""
         make = ast.Word
-        words = tuple([make(t.text, c.key, c.category, t.span, t.unknown) for t, c in zip(tagged, picks)])
+        words = tuple(
+            [
+                make(tagged[i].text, picks[i].key, picks[i].category, tagged[i].span, tagged[i].unknown)
+                for i in self.used
+            ]
+        )
         return self.root.build(words, tagged, text)
 
 
@@ -204,20 +209,20 @@ def _token(node: Tree[Token] | Token) -> Token:
 
 
 class _Reader:
-    """One method per grammar rule: lark tree -> plan (words as their positions in the line)."""
+    """One method per grammar rule: lark tree -> plan."""
 
-    def __init__(self, index: dict[int, int]) -> None:
-        self.index = index  # token start offset -> word position
+    def __init__(self, index: dict[int, int], word_of: dict[int, int]) -> None:
+        self.index = index  # token start offset -> position in the tagged line
+        self.word_of = word_of  # position in the tagged line -> index in the line's AST words
 
     def word(self, tok: Token) -> int:
-        return self.index[tok.start_pos or 0]
+        return self.word_of[self.index[tok.start_pos or 0]]
 
     def words(self, tokens: Iterable[Tree[Token] | Token]) -> slice:
-        """The positions of these tokens as a slice of the line's words (they are evenly spaced)."""
-        positions = [self.word(_token(t)) for t in tokens]
-        step = positions[1] - positions[0] if len(positions) > 1 else 1
-        assert positions == list(range(positions[0], positions[-1] + 1, step)), positions
-        return slice(positions[0], positions[-1] + 1, step)
+        """These tokens as a slice of the line's words (they stand side by side)."""
+        indices = [self.word(_token(t)) for t in tokens]
+        assert indices == list(range(indices[0], indices[-1] + 1)), indices
+        return slice(indices[0], indices[-1] + 1)
 
     def edges(self, node: Tree[Token]) -> tuple[int, int]:
         return self._edge(node, 0), self._edge(node, -1)

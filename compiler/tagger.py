@@ -40,6 +40,8 @@ RawToken = tuple[str, int]  # a word's text and 0-based column
 class Tagger:
     """Tags lines against one lexicon; what it learns about words is kept in lexicon.caches.tags."""
 
+    __slots__ = ("lexicon", "keywords", "followers", "lengths_from", "memo")  # made for every document
+
     def __init__(self, lexicon: Lexicon) -> None:
         self.lexicon = lexicon
         self.keywords = lexicon.keywords

@@ -28,6 +28,9 @@ def ascii_fold(text: str) -> str:
 
 def identifier(text: str) -> str:
     """A safe identifier from any text: letters, digits and '_', not starting with a digit."""
+    simple = text.strip().lower().replace(" ", "_")
+    if simple.isascii() and simple.isidentifier() and "__" not in simple and simple.strip("_") == simple:
+        return simple  # "Anodized aluminum": what the general rule below gives, in a fifth of the time
     name = NON_WORD.sub("_", ascii_fold(text).strip().lower()).strip("_") or "material"
     return "m_" + name if name[0].isdigit() else name
 

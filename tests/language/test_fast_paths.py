@@ -14,6 +14,7 @@ from cnlmc.api import compile_source, lexicon_for
 from cnlmc.document import parse_document
 from cnlmc.formulas import round6, rounded
 from cnlmc.parser import ParseFailure, parse_line_shape, parse_tagged
+from cnlmc.passes.variants import NON_WORD, ascii_fold, identifier
 from cnlmc.syntax import ShapeCache
 from cnlmc.tagger import Tagger
 
@@ -123,3 +124,15 @@ def test_lexicon_optics_are_copied_into_each_ir(lexicon):
     first["eta"][0] = -1.0
     second = compile_source("aluminum", "a", lexicon).materials[0]["params"]
     assert second["eta"][0] != -1.0
+
+
+def test_identifier_shortcut_is_the_general_rule():
+    def general(text):
+        name = NON_WORD.sub("_", ascii_fold(text).strip().lower()).strip("_") or "material"
+        return "m_" + name if name[0].isdigit() else name
+
+    rng = random.Random(5)
+    texts = ["anodized aluminum", "Brushed  Steel", " x ", "_a", "a_", "1abc", "", "red_blue", "gebürstetes Weiß"]
+    texts += ["".join(rng.choice("aZ _-9ßé\t.'") for _ in range(rng.randint(0, 8))) for _ in range(20000)]
+    for text in texts:
+        assert identifier(text) == general(text), repr(text)
