@@ -144,7 +144,7 @@ class CompileCommand(Command):
         if args.output:
             options.setdefault("output", args.output)
         try:
-            emitted = target.emit_ir(result.ir, options)
+            emitted = target.emit_ir(result.document, options)
         except BackendRefused as exc:
             print(f"error[E201]: {exc}", file=sys.stderr)
             return EXIT_ERRORS

@@ -10,7 +10,7 @@ from typing import TextIO
 from cnlmc.commands import EXIT_ERRORS, EXIT_OK, add_source_arguments, compile_reported, read_source
 from cnlmc.errors import UsageError
 
-from ..base import Command, as_document
+from ..base import Command
 from .errors import MapError
 from .service import MapBakeError, bake_files, has_maps
 from .sheet import render_contact_sheet
@@ -50,7 +50,7 @@ class BakeCommand(Command):
         if not result.ok:
             return EXIT_ERRORS
         progress, paths = ProgressBar(), []
-        for material in as_document(result.ir).materials:
+        for material in result.document.materials:
             if not has_maps(material):
                 print(f"{material.name}: uniform, no maps to bake", file=sys.stderr)
                 continue
