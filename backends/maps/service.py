@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from cnlmc.material import Material
+from cnlmc.material import Material, params_to_ir
 
 from ..base import Artifact
 from .bake import OnProgress, bake
@@ -42,8 +42,10 @@ class MapBakeError(MapError):
 
 def _parts(material: Material | Mapping[str, Any]) -> tuple[str, dict[str, Any], dict[str, Any]]:
     """Name, IR map references and IR parameters: what the graph engine reads."""
-    ir = material if isinstance(material, Mapping) else material.to_ir()
-    return ir["name"], dict(ir.get("maps") or {}), dict(ir.get("params") or {})
+    if isinstance(material, Mapping):
+        return material["name"], dict(material.get("maps") or {}), dict(material.get("params") or {})
+    maps = {role: ref.to_ir() for role, ref in material.maps.items()}
+    return material.name, maps, params_to_ir(material.params)
 
 
 def has_maps(material: Material | Mapping[str, Any]) -> bool:
