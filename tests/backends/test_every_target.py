@@ -9,18 +9,29 @@ import pytest
 from cnlmc.api import compile_source, emit
 from cnlmc.backends.capabilities import ALL_FEATURES, POLICIES, material_features
 from cnlmc.backends.registry import BUILTIN_BACKENDS, TargetUnavailable, get_target
-from tests.helpers import PHRASE_BY_MODEL, run_cnlmc
+from tests.helpers import PHRASE_BY_MODEL, require, run_cnlmc
 
 # One phrase per model kind and feature, so every row of the capability tables is exercised.
 KINDS = PHRASE_BY_MODEL
 FAST_OPTIONS = {"preview": {"size": "32", "msaa": "0"}, "maps": {"size": "16"}}
 
 
+#: What a target needs when it emits (baking maps, rendering), beyond what loading it needs.
+EMIT_NEEDS = {
+    "maps": (("OpenImageIO", "maps"),),
+    "mitsuba": (("OpenImageIO", "maps"),),
+    "preview": (("moderngl", "preview"), ("OpenImageIO", "preview")),
+}
+
+
 def backend(name):
     try:
-        return get_target(name)
+        target = get_target(name)
     except TargetUnavailable as exc:  # an optional dependency is missing on this machine
         pytest.skip(f"target {name} cannot load here: {exc}")
+    for module, extra in EMIT_NEEDS.get(name, ()):
+        require(module, extra)
+    return target
 
 
 @pytest.mark.parametrize("target", sorted(BUILTIN_BACKENDS))

@@ -5,7 +5,12 @@ from __future__ import annotations
 
 import pytest
 
+from tests.helpers import require
+
 from .golden_cases import CASES, GOLDEN, INPUT, fresh_ir_text, frozen_ir, render
+
+#: The optional packages a target's emit imports: (module, extra).
+NEEDS = {"materialx": (("MaterialX", "materialx"),), "usd": (("pxr", "usd"), ("MaterialX", "usd"))}
 
 
 @pytest.fixture(scope="module")
@@ -17,6 +22,8 @@ def ir(goldens) -> dict:
 
 @pytest.mark.parametrize("target, options, name", CASES, ids=[c[2] for c in CASES])
 def test_golden(target, options, name, ir, goldens):
+    for module, extra in NEEDS.get(target, ()):
+        require(module, extra)
     goldens.check_text(
         GOLDEN / name,
         render(target, options, ir),

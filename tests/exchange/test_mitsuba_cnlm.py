@@ -15,6 +15,7 @@ import pytest
 from cnlmc.api import compile_source
 from cnlmc.backends.exchange import mitsuba
 from cnlmc.bsdf.evaluate import albedo, evaluate
+from tests.helpers import require
 
 
 def material(phrase: str) -> dict:
@@ -43,7 +44,9 @@ def test_glass_keeps_its_exact_native_plugin():
     assert "cnlm" not in plugins(fragment("rough glass")) and "roughdielectric" in plugins(fragment("rough glass"))
 
 
+@pytest.mark.oiio
 def test_maps_become_textures_of_the_plugin_and_normals_a_normalmap():
+    require("OpenImageIO", "maps")  # the maps are baked
     root = fragment("oak")
     names = {t.get("name") for t in root.iter("texture")}
     assert {"base_color", "roughness"} <= names
@@ -103,6 +106,7 @@ def interaction(mi, wo: np.ndarray):
 PHRASES = ("terracotta", "gold", "clear-coated red car paint", "lightly brushed steel", "suede", "glossy blue plastic")
 
 
+@pytest.mark.mitsuba
 @pytest.mark.parametrize("phrase", PHRASES)
 def test_plugin_eval_is_the_numpy_reference_times_cosine(mi, phrase):
     m = material(phrase)
@@ -113,6 +117,7 @@ def test_plugin_eval_is_the_numpy_reference_times_cosine(mi, phrase):
     np.testing.assert_allclose(got, want, rtol=2e-4, atol=1e-6)
 
 
+@pytest.mark.mitsuba
 @pytest.mark.parametrize("phrase", PHRASES)
 def test_plugin_sampling_integrates_to_the_directional_albedo(mi, phrase):
     """Mean of sample weights (f cos / pdf) = ∫ f cos dωi, against the deterministic QMC albedo."""
@@ -130,6 +135,7 @@ def test_plugin_sampling_integrates_to_the_directional_albedo(mi, phrase):
     np.testing.assert_allclose(pdf, np.array(bs.pdf), rtol=1e-3, atol=1e-4)
 
 
+@pytest.mark.mitsuba
 def test_a_lambert_material_renders_as_mitsubas_own_diffuse(mi, tmp_path):
     """Same scene, `cnlm` plugin vs native `diffuse`: Lambert is exact in both."""
     from cnlmc.backends.preview.mitsuba_scene import export_scene, render_scene
@@ -156,7 +162,9 @@ def test_native_plugins_warn_where_they_approximate_and_cnlm_does_not():
     assert cnlm == []
 
 
+@pytest.mark.mitsuba
 def test_without_llvm_19_the_plugin_refuses_clearly_instead_of_aborting():
+    require("mitsuba", "mitsuba")
     """Mitsuba's llvm variants abort the process with LLVM 15/16: no LLVM 19, no attempt."""
     code = (
         "import os; os.environ.pop('DRJIT_LIBLLVM_PATH', None)\n"

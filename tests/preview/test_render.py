@@ -86,7 +86,7 @@ def test_budget_option_measures_real_frame_times(renderer, scene):
     assert tier.name == QUALITY_ORDER[0] and len(timings) == 2  # stops after the first miss
 
 
-def test_variant_sheet_and_command(tmp_path):
+def test_variant_sheet_and_command(tmp_path, gl_available):
     from cnlmc.api import compile_source
 
     ir = compile_source("blue or red plastic\n").ir
