@@ -82,10 +82,10 @@ class Coat:
     """'with a glossy white varnish': the coat's own groups and its coat word."""
 
     groups: tuple[Group, ...]
-    coat: Word | None
+    coat: Word
     span: Span
 
-    def __init__(self, groups: tuple[Group, ...], coat: Word | None, span: Span) -> None:
+    def __init__(self, groups: tuple[Group, ...], coat: Word, span: Span) -> None:
         fields = self.__dict__
         fields["groups"] = groups
         fields["coat"] = coat

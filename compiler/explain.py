@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+from typing import Any
 
-def _fmt(value) -> str:
+
+def _fmt(value: Any) -> str:
     if isinstance(value, list):
         return "(" + ", ".join(f"{v:.4g}" if isinstance(v, float) else str(v) for v in value) + ")"
     if isinstance(value, float):
@@ -11,7 +13,7 @@ def _fmt(value) -> str:
     return str(value)
 
 
-def explain_material(material: dict) -> list[str]:
+def explain_material(material: dict[str, Any]) -> list[str]:
     model = material["model"]
     parts = [model["base"]] + [k for k in ("anisotropic", "coat") if model[k]]
     lines = [
@@ -28,7 +30,7 @@ def explain_material(material: dict) -> list[str]:
     return lines
 
 
-def _table(rows) -> list[str]:
+def _table(rows: list[tuple[str, str, str, str]]) -> list[str]:
     widths = [min(max(len(r[i]) for r in rows), 40) for i in range(3)]
     out = []
     for n, row in enumerate(rows):
@@ -39,6 +41,6 @@ def _table(rows) -> list[str]:
     return out
 
 
-def explain(ir: dict) -> str:
+def explain(ir: dict[str, Any]) -> str:
     blocks = ["\n".join(explain_material(m)) for m in ir["materials"]]
     return "\n\n".join(blocks) + "\n"

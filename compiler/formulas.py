@@ -10,30 +10,41 @@ Values may be scalars or RGB lists; lists are handled per channel.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
 
-def _per_channel(fn, x, v):
+Value = Any  # a number, an RGB list, or (for 'set') a string such as a model name
+Channel = Callable[[float, float], float]
+
+
+def _per_channel(fn: Channel, x: Value, v: Value) -> Value:
     if isinstance(x, list):
         vs = v if isinstance(v, list) else [v] * len(x)
         return [fn(a, b) for a, b in zip(x, vs)]
     return fn(x, v)
 
 
-def _move_towards(a, b, w):  # set, and blend with w = min(1, w t)
+def _move_towards(a: float, b: float, w: float) -> float:  # set, and blend with w = min(1, w t)
     return a + w * (b - a)
 
 
-def _scale(a, b, w):  # mul
+def _scale(a: float, b: float, w: float) -> float:  # mul
     return a * (1 + w * (b - 1))
 
 
-def _offset(a, b, w):  # add
+def _offset(a: float, b: float, w: float) -> float:  # add
     return a + w * b
 
 
-CHANNEL_OPS = {"set": _move_towards, "mul": _scale, "add": _offset, "blend": _move_towards}
+CHANNEL_OPS: dict[str, Callable[[float, float, float], float]] = {
+    "set": _move_towards,
+    "mul": _scale,
+    "add": _offset,
+    "blend": _move_towards,
+}
 
 
-def apply_op(op: str, x, value, weight: float = 1.0, amount: float | None = None):
+def apply_op(op: str, x: Value, value: Value, weight: float = 1.0, amount: float | None = None) -> Value:
     if op == "set" and (isinstance(value, str) or x is None):
         return value
     fn = CHANNEL_OPS.get(op)
@@ -47,7 +58,7 @@ def apply_op(op: str, x, value, weight: float = 1.0, amount: float | None = None
     return fn(x, value, weight)
 
 
-def invert_op(op: str, x, value, weight: float = 1.0, amount: float | None = None):
+def invert_op(op: str, x: Value, value: Value, weight: float = 1.0, amount: float | None = None) -> Value:
     """The opposite move of apply_op: used for 'weaker brushing'."""
     if op == "mul":
         return _per_channel(lambda a, b: a / (1 + weight * (b - 1)) if 1 + weight * (b - 1) else a, x, value)
@@ -62,7 +73,7 @@ def invert_op(op: str, x, value, weight: float = 1.0, amount: float | None = Non
 OP_SIGNS = {"set": "=", "mul": "*=", "add": "+="}
 
 
-def describe(effect: dict, weight: float) -> str:
+def describe(effect: dict[str, Any], weight: float) -> str:
     """'roughness *= 1.2' style text for provenance and explain."""
     op, value = effect["op"], effect.get("value")
     if op in OP_SIGNS:
@@ -75,7 +86,7 @@ def describe(effect: dict, weight: float) -> str:
     return f"{effect['param']} {text}{suffix}"
 
 
-def midpoint(a, b):
+def midpoint(a: Value, b: Value) -> Value:
     return _per_channel(lambda x, y: (x + y) / 2, a, b)
 
 
@@ -96,7 +107,7 @@ def round6(x: float) -> float:
     return round(x, 6) or 0.0
 
 
-def rounded(value, digits: int = 6):
+def rounded(value: Any, digits: int = 6) -> Any:
     """Floats rounded to `digits` decimals (and -0.0 made 0.0) so output is stable and small."""
     if digits != 6:
         return _rounded_to(value, digits)
@@ -106,7 +117,7 @@ def rounded(value, digits: int = 6):
     if kind is list:
         return round6_list(value)
     if kind is dict:
-        out = {}
+        out: dict[str, Any] = {}
         for k, v in value.items():
             kind = type(v)
             out[k] = round6(v) if kind is float else rounded(v) if kind is list or kind is dict else v
@@ -114,9 +125,9 @@ def rounded(value, digits: int = 6):
     return value
 
 
-def round6_list(values: list) -> list:
+def round6_list(values: list[Any]) -> list[Any]:
     """rounded() of a list, with round6 written out for its floats (colours and optics are lists)."""
-    out = []
+    out: list[Any] = []
     for v in values:
         if type(v) is not float:
             out.append(rounded(v))
@@ -131,7 +142,7 @@ def round6_list(values: list) -> list:
     return out
 
 
-def _rounded_to(value, digits: int):
+def _rounded_to(value: Any, digits: int) -> Any:
     kind = type(value)
     if kind is float:
         return round(value, digits) or 0.0  # 'or' turns -0.0 into 0.0

@@ -70,6 +70,7 @@ class LexiconCaches:
       (None until a line first fails to parse; mistakes.known_mistake)
     - effect_rules: (rule, where the effect list is, effect index, weight) -> the provenance text
       of that lexicon effect (passes/words.py)
+    - rounded_optics: (noun key, parameter) -> the noun's list value rounded for the IR (ir.py)
     """
 
     MAX_ENTRIES = 4096  # a memo this full starts over
@@ -81,6 +82,7 @@ class LexiconCaches:
         self.shapes = ShapeCache()
         self.mistakes: dict[FailureKey, Mistake] | None = None
         self.effect_rules: dict[tuple[str, str, int, float], str] = {}
+        self.rounded_optics: dict[tuple[str, str], list[float]] = {}
 
 
 class Lexicon:
@@ -126,6 +128,10 @@ class Lexicon:
     def entry(self, category: str, key: str) -> Entry | None:
         by_key = self.entries.get(category)
         return None if by_key is None else by_key.get(key)
+
+    def require(self, category: str, key: str) -> Entry:
+        """The entry of a word the tagger found in this lexicon (KeyError if there is none)."""
+        return self.entries[category][key]
 
     def lookup(self, words: tuple[str, ...]) -> list[Entry]:
         return self.forms.get(words, [])

@@ -2,16 +2,26 @@
 
 from __future__ import annotations
 
+from typing import Any
+
+from .. import ast
+from ..lexicon import Entry
 from ..state import NOUN_PARAMS, Context, MaterialState, Step
 
 
-def noun_word(state: MaterialState):
+def noun_word(state: MaterialState) -> ast.Word:
     return state.selection.nouns[0]
+
+
+def noun_of(state: MaterialState) -> Entry:
+    """The material's noun entry (apply_noun, the first pass, sets it)."""
+    assert state.noun is not None, "apply_noun runs first"
+    return state.noun
 
 
 def apply_noun(state: MaterialState, ctx: Context) -> MaterialState:
     word = noun_word(state)
-    entry = ctx.lexicon.entry("nouns", word.key)
+    entry = ctx.lexicon.require("nouns", word.key)
     state.noun = entry
     state.kind = entry.get("model")
     rule, words, data = f"nouns.{entry.key}", (word,), entry.data
@@ -27,13 +37,13 @@ def apply_noun(state: MaterialState, ctx: Context) -> MaterialState:
         state.maps[role] = _map_ref(ref, ctx)
         state.note(f"maps.{role}", ref["graph"], f"nouns.{entry.key}.maps", (word,))
     if entry.get("coat"):
-        state.coat = dict(ctx.lexicon.entry("coats", entry.get("coat")).data)
+        state.coat = dict(ctx.lexicon.require("coats", entry.get("coat")).data)
         state.coat["name"] = entry.get("coat")
         state.note("coat", entry.get("coat"), f"nouns.{entry.key}.coat", (word,))
     return state
 
 
-def _map_ref(ref: dict, ctx: Context, weight: float = 1.0) -> dict:
+def _map_ref(ref: dict[str, Any], ctx: Context, weight: float = 1.0) -> dict[str, Any]:
     params = dict(ref.get("params", {}))
     for name in ref.get("weighted", []):
         params[name] = params.get(name, 1.0) * weight

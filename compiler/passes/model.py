@@ -2,8 +2,13 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from ..diagnostics import warning
 from ..state import Context, MaterialState
+from .base import noun_of
+
+Settings = dict[str, Any]
 
 
 def select_model(state: MaterialState, ctx: Context) -> MaterialState:
@@ -22,7 +27,7 @@ def select_model(state: MaterialState, ctx: Context) -> MaterialState:
     return state
 
 
-def _base_model(state, settings) -> str:
+def _base_model(state: MaterialState, settings: Settings) -> str:
     if state.kind in ("conductor", "glass"):
         return state.kind
     rough = state.params.get("roughness", 1.0)
@@ -31,22 +36,22 @@ def _base_model(state, settings) -> str:
     return "dielectric"
 
 
-def _distribution(base: str, anisotropic: bool, settings) -> str | None:
+def _distribution(base: str, anisotropic: bool, settings: Settings) -> str | None:
     if base == "diffuse":
         return None
     if anisotropic:
-        return settings.get("anisotropic_distribution", "ward")
+        return str(settings.get("anisotropic_distribution", "ward"))
     return "ggx"
 
 
-def _diffuse_lobe(state, base: str, settings) -> str | None:
+def _diffuse_lobe(state: MaterialState, base: str, settings: Settings) -> str | None:
     if base not in ("diffuse", "dielectric"):
         return None
     sigma = state.params.get("diffuse_roughness", 0.0)
     return "oren_nayar" if sigma > settings.get("oren_nayar_threshold", 0.05) else "lambert"
 
 
-def _warn_no_highlight(state) -> None:
+def _warn_no_highlight(state: MaterialState) -> None:
     steps = state.provenance.get("anisotropy", [])
     with_words = [s for s in steps if s.words]
     last = with_words[-1].words[-1] if with_words else None
@@ -56,7 +61,7 @@ def _warn_no_highlight(state) -> None:
         warning(
             span,
             "W108",
-            f"'{word}' stretches the highlight, but this {state.noun.key} "
+            f"'{word}' stretches the highlight, but this {noun_of(state).key} "
             "is matte and has none: anisotropy is not modelled",
             ("make it glossier for a visible highlight",),
         )

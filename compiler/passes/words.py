@@ -13,16 +13,18 @@ from ..diagnostics import warning
 from ..formulas import apply_op, describe
 from ..lexicon import Entry, LexiconCaches
 from ..state import Context, MaterialState
-from .base import _map_ref
+from .base import _map_ref, noun_of
 from .colours import colour_text, resolve_colour
 
 Effect = dict[str, Any]  # one formula of a lexicon entry: {"param": ..., "op": ..., "value": ...}
+Holder = dict[str, Any]  # where a value goes: the material's parameters or its coat's
+Words = tuple[ast.Word, ...]
 
 
 def group_weight(group: ast.Group, ctx: Context) -> float:
     weight = 1.0
     for adverb in group.adverbs:
-        weight *= ctx.lexicon.entry("adverbs", adverb.key).get("weight")
+        weight *= ctx.lexicon.require("adverbs", adverb.key).get("weight")
     return weight
 
 
@@ -42,7 +44,7 @@ def apply_group(state: MaterialState, ctx: Context, group: ast.Group, target: st
     if group.kind == "colour":
         apply_colour(state, ctx, group.colours[0], group.adverbs, target, weight)
         return
-    adjective = ctx.lexicon.entry("adjectives", group.adjectives[0].key)
+    adjective = ctx.lexicon.require("adjectives", group.adjectives[0].key)
     apply_adjective(state, ctx, adjective, group, weight, target)
 
 
@@ -74,7 +76,7 @@ def _warn_dangling(state: MaterialState, group: ast.Group) -> None:
     )
 
 
-def apply_colour(state, ctx, c: ast.Colour, adverbs, target: str, weight: float) -> None:
+def apply_colour(state: MaterialState, ctx: Context, c: ast.Colour, adverbs: Words, target: str, weight: float) -> None:
     param, holder = _colour_slot(state, target)
     current = holder.get(param)
     rgb = resolve_colour(c, ctx, start=current)
@@ -85,13 +87,13 @@ def apply_colour(state, ctx, c: ast.Colour, adverbs, target: str, weight: float)
     state.note(param if target == "base" else "coat.color", rgb, f"colours: {colour_text(c)}", (*adverbs, *c.words))
 
 
-def _colour_slot(state, target: str):
+def _colour_slot(state: MaterialState, target: str) -> tuple[str, Holder]:
     if target == "coat" and state.coat is not None:
         return "color", state.coat
     return "base_color", state.params
 
 
-def _warn_second_colour(state, param: str, c: ast.Colour) -> None:
+def _warn_second_colour(state: MaterialState, param: str, c: ast.Colour) -> None:
     if c.base is None:
         return
     earlier = [s for s in state.provenance.get(param, ()) if s.rule.startswith("colours: ")]
@@ -107,7 +109,9 @@ def _warn_second_colour(state, param: str, c: ast.Colour) -> None:
         )
 
 
-def apply_adjective(state, ctx, adjective, group: ast.Group, weight: float, target: str) -> None:
+def apply_adjective(
+    state: MaterialState, ctx: Context, adjective: Entry, group: ast.Group, weight: float, target: str
+) -> None:
     word = group.adjectives[0]
     if not _applies(state, adjective, word):
         return
@@ -137,7 +141,7 @@ def effects_for(adjective: Entry, state: MaterialState) -> list[Effect]:
 
 def effect_source(adjective: Entry, state: MaterialState) -> tuple[str, list[Effect]]:
     """effects_for, with where in the entry the list is ('on.<noun>', 'on.<class>' or 'effects')."""
-    data, noun = adjective.data, state.noun
+    data, noun = adjective.data, noun_of(state)
     on = data.get("on")
     if on:
         for name in (noun.key, noun.data.get("class")):
@@ -146,9 +150,9 @@ def effect_source(adjective: Entry, state: MaterialState) -> tuple[str, list[Eff
     return "effects", data.get("effects", [])
 
 
-def _applies(state, adjective, word) -> bool:
+def _applies(state: MaterialState, adjective: Entry, word: ast.Word) -> bool:
     classes = adjective.data.get("applies_to")
-    noun = state.noun
+    noun = noun_of(state)
     if not classes or noun.data.get("class") in classes or noun.key in classes:
         return True
     note = adjective.get("applies_note", f"it applies to {', '.join(classes)}")
@@ -158,9 +162,9 @@ def _applies(state, adjective, word) -> bool:
     return False
 
 
-def _check_opposition(state, ctx, adjective, word) -> None:
+def _check_opposition(state: MaterialState, ctx: Context, adjective: Entry, word: ast.Word) -> None:
     for earlier_key, earlier in state.applied:
-        earlier_opposes = ctx.lexicon.entry("adjectives", earlier_key).get("opposes", [])
+        earlier_opposes = ctx.lexicon.require("adjectives", earlier_key).get("opposes", [])
         if earlier_key in adjective.get("opposes", []) or adjective.key in earlier_opposes:
             state.diagnostics.append(
                 warning(
@@ -172,7 +176,9 @@ def _check_opposition(state, ctx, adjective, word) -> None:
             )
 
 
-def _apply_effect(state, ctx, holder, effect: Effect, weight: float, place: EffectPlace, words) -> None:
+def _apply_effect(
+    state: MaterialState, ctx: Context, holder: Holder, effect: Effect, weight: float, place: EffectPlace, words: Words
+) -> None:
     rule, param = place[0], effect["param"]
     if param == "model":
         _switch_kind(state, effect["value"], rule, words)
@@ -202,24 +208,24 @@ def _effect_rule(caches: LexiconCaches, place: EffectPlace, effect: Effect, weig
     return found
 
 
-def _switch_kind(state, kind: str, rule: str, words) -> None:
+def _switch_kind(state: MaterialState, kind: str, rule: str, words: Words) -> None:
     if state.kind == kind:
         return
     state.kind = kind
     if kind != "conductor":
         for param in ("eta", "k", "f0", "f82"):
             state.params.pop(param, None)
-        if state.noun.get("model") == "conductor":
+        if noun_of(state).get("model") == "conductor":
             state.params["base_color"] = [0.8, 0.8, 0.8]
     state.note("model", kind, f"{rule}: model = {kind}", words)
 
 
-def _apply_material(state, ctx, adjective, words) -> None:
+def _apply_material(state: MaterialState, ctx: Context, adjective: Entry, words: Words) -> None:
     if adjective.get("material"):
         copy_optics(state, ctx, adjective.get("material"), f"adjectives.{adjective.key}.material", words)
 
 
-def copy_optics(state, ctx, noun_key: str, rule: str, words) -> bool:
+def copy_optics(state: MaterialState, ctx: Context, noun_key: str, rule: str, words: Words) -> bool:
     metal = ctx.lexicon.entry("nouns", noun_key)
     if metal is None or metal.get("model") != "conductor":
         return False
@@ -229,25 +235,25 @@ def copy_optics(state, ctx, noun_key: str, rule: str, words) -> bool:
     return True
 
 
-def _apply_maps(state, ctx, adjective, weight, words) -> None:
+def _apply_maps(state: MaterialState, ctx: Context, adjective: Entry, weight: float, words: Words) -> None:
     for role, ref in adjective.get("maps", {}).items():
         state.maps[role] = _map_ref(ref, ctx, weight)
         state.note(f"maps.{role}", ref["graph"], f"adjectives.{adjective.key}.maps (weight {weight:g})", words)
 
 
-def _apply_adjective_coat(state, ctx, adjective, words) -> None:
+def _apply_adjective_coat(state: MaterialState, ctx: Context, adjective: Entry, words: Words) -> None:
     if adjective.get("coat"):
         apply_coat_entry(state, ctx, adjective.get("coat"), f"adjectives.{adjective.key}.coat", words)
 
 
-def apply_coat_entry(state, ctx, coat_key: str, rule: str, words) -> None:
-    entry = ctx.lexicon.entry("coats", coat_key)
+def apply_coat_entry(state: MaterialState, ctx: Context, coat_key: str, rule: str, words: Words) -> None:
+    entry = ctx.lexicon.require("coats", coat_key)
     state.coat = {k: v for k, v in entry.data.items() if k not in ("aliases", "doc", "example")}
     state.coat["name"] = coat_key
     state.note("coat", coat_key, rule, words)
 
 
-def _apply_qualifier(state, ctx, adjective, c: ast.Colour, adverbs) -> None:
+def _apply_qualifier(state: MaterialState, ctx: Context, adjective: Entry, c: ast.Colour, adverbs: Words) -> None:
     """Where 'blue' in 'blue anodized' goes: base colour, coat colour, or a plating metal."""
     target = adjective.get("colour_target", "base")
     if target == "material" and c.base is not None and not c.shades:
@@ -260,10 +266,12 @@ def _apply_qualifier(state, ctx, adjective, c: ast.Colour, adverbs) -> None:
     apply_colour(state, ctx, c, adverbs, "base", 1.0)
 
 
-def pigment_base(state, ctx) -> None:
+def pigment_base(state: MaterialState, ctx: Context) -> None:
     """A coloured coat also tints what shows through it by the coat's pigment amount."""
-    pigment = state.coat.get("pigment", 0.0)
+    coat = state.coat
+    assert coat is not None, "called once a coat is applied"
+    pigment = coat.get("pigment", 0.0)
     if pigment > 0 and "base_color" in state.params:
-        value = apply_op("blend", state.params["base_color"], state.coat["color"], 1.0, pigment)
+        value = apply_op("blend", state.params["base_color"], coat["color"], 1.0, pigment)
         words = [w for s in state.provenance.get("coat.color", [])[-1:] for w in s.words]
-        state.record("base_color", value, f"coats.{state.coat['name']}: pigment {pigment} of the coat colour", words)
+        state.record("base_color", value, f"coats.{coat['name']}: pigment {pigment} of the coat colour", words)
