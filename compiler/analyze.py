@@ -7,6 +7,7 @@ from typing import Any
 from . import ast
 from .diagnostics import Diagnostic, warning
 from .ir import document_ir, material_ir
+from .params import Params
 from .passes.base import apply_noun
 from .passes.coats import apply_coat_clause
 from .passes.model import select_model
@@ -118,6 +119,7 @@ def sort_diagnostics(diags: list[Diagnostic]) -> list[Diagnostic]:
 
 
 def to_ir(states: list[MaterialState], diags: list[Diagnostic], ctx: Context) -> dict[str, Any]:
-    convention = ctx.settings.get("alpha_convention", "squared")
-    materials = [material_ir(s, convention) for s in states]
+    convention = ctx.settings.get("alpha_convention", Params.alpha_convention)
+    rounded_optics = ctx.lexicon.caches.rounded_optics
+    materials = [material_ir(s, convention, rounded_optics) for s in states]
     return document_ir(materials, diags, ctx.filename, ctx.lexicon.sources)

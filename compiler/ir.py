@@ -8,6 +8,7 @@ from typing import Any
 from .conventions import alpha_of
 from .diagnostics import Diagnostic
 from .formulas import round6_list, rounded
+from .lexicon import Entry
 from .params import COAT_PARAMS, Params, params_by_model
 from .state import MaterialState, WordLists, step_json
 
@@ -18,7 +19,8 @@ IR_VERSION = 1
 PARAMS_BY_MODEL = params_by_model()  # base model -> the parameters it always has, from the table
 
 
-def material_ir(state: MaterialState, convention: str) -> JSONDict:
+def material_ir(state: MaterialState, convention: str, rounded_optics: dict[tuple[str, str], list[float]]) -> JSONDict:
+    """One material's IR; `rounded_optics` (the lexicon's, see LexiconCaches) keeps its nouns' lists rounded."""
     model = state.model
     assert model is not None, "select_model runs before the IR is made"
     return {
@@ -26,20 +28,27 @@ def material_ir(state: MaterialState, convention: str) -> JSONDict:
         "phrase": state.phrase,
         "variant": state.variant,
         "model": model,
-        "params": _params(state, model, convention),
+        "params": _params(state, model, convention, rounded_optics),
         "maps": rounded(state.maps),
         "provenance": _provenance(state),
     }
 
 
-def _params(state: MaterialState, model: JSONDict, convention: str) -> JSONDict:
+def _params(
+    state: MaterialState, model: JSONDict, convention: str, rounded_optics: dict[tuple[str, str], list[float]]
+) -> JSONDict:
     """The parameters the model uses, rounded."""
-    p, base = state.params, model["base"]
+    p, base, noun = state.params, model["base"], state.noun
     out: JSONDict = {}
     for k in PARAMS_BY_MODEL[base]:
         if k in p:
             value = p[k]
-            out[k] = round6_list(value) if type(value) is list else rounded(value)
+            if type(value) is not list:
+                out[k] = rounded(value)
+            elif noun is not None and noun.data.get(k) is value:  # straight from the lexicon: rounded once
+                out[k] = _noun_list(rounded_optics, noun, k)
+            else:
+                out[k] = round6_list(value)
     if model["diffuse"] == "oren_nayar":
         out["diffuse_roughness"] = rounded(p.get("diffuse_roughness", Params.diffuse_roughness))
     if base != "diffuse":
@@ -51,6 +60,14 @@ def _params(state: MaterialState, model: JSONDict, convention: str) -> JSONDict:
         out["anisotropy_rotation"] = rounded(p.get("anisotropy_rotation", Params.anisotropy_rotation))
     out["coat"] = rounded(_coat(state.coat, convention)) if model["coat"] else None
     return out
+
+
+def _noun_list(rounded_optics: dict[tuple[str, str], list[float]], noun: Entry, param: str) -> list[float]:
+    """round6_list of a noun's list value (a metal's optics), made once per lexicon."""
+    found = rounded_optics.get((noun.key, param))
+    if found is None:
+        found = rounded_optics[noun.key, param] = round6_list(noun.data[param])
+    return list(found)  # a copy: whoever reads the IR may change it
 
 
 def _coat(coat: JSONDict | None, convention: str) -> JSONDict:

@@ -22,7 +22,7 @@ from types import MappingProxyType
 from typing import Any
 
 from .conventions import alpha_of
-from .params import BASES, COAT_PARAMS, DIFFUSE_LOBES, DISTRIBUTIONS, PARAMS, RGB, Coat, Params, ParamSpec
+from .params import BASES, COAT_PARAMS, DIFFUSE_LOBES, DISTRIBUTIONS, PARAM_NAMES, PARAMS, RGB, Coat, Params, ParamSpec
 
 __all__ = ["RGB", "Coat", "Document", "MapRef", "Material", "Model", "Params", "Variant"]
 
@@ -157,9 +157,20 @@ def _json_value(value: Any) -> JSON:
     return list(value) if isinstance(value, tuple) else value
 
 
+COAT_NAMES = frozenset(s.name for s in COAT_PARAMS)
+
+
+def _no_unknown_keys(d: Mapping[str, Any], known: frozenset[str], path: str) -> None:
+    for key in d:
+        if key not in known:
+            raise ValueError(f"{path}.{key}: not a parameter of the table (cnlmc.params): {', '.join(sorted(known))}")
+
+
 def coat_from_ir(d: object, convention: str, path: str, ranged: bool = True) -> Coat:
     """A coat; its alpha, when absent, from its roughness in the base's convention."""
     d = _object(d, path)
+    if ranged:
+        _no_unknown_keys(d, COAT_NAMES, path)
     values = {s.name: _value(s, d[s.name], f"{path}.{s.name}", ranged) for s in COAT_PARAMS if s.name in d}
     if "alpha" not in values:
         values["alpha"] = tuple(alpha_of(values.get("roughness", Coat.roughness), 0.0, convention))
@@ -173,9 +184,11 @@ def coat_to_ir(coat: Coat) -> dict[str, JSON]:
 def params_from_ir(d: object, model: Model, path: str = "params", ranged: bool = True) -> Params:
     """Params from the IR's params object; absent keys hold the table's default (alpha: derived).
 
-    `ranged=False` checks types only: the numpy reference takes physical values beyond the IR's
-    ranges (a glass seen from inside has ior < 1)."""
+    `ranged=False` checks types only, and skips keys the table lacks: the numpy reference takes
+    physical values beyond the IR's ranges (a glass seen from inside has ior < 1)."""
     d = _object(d, path)
+    if ranged:
+        _no_unknown_keys(d, PARAM_NAMES, path)
     values: dict[str, Any] = {}
     convention = _value(
         _spec("alpha_convention"), d.get("alpha_convention", Params.alpha_convention), f"{path}.alpha_convention"

@@ -43,7 +43,7 @@ def words_key(words: Words) -> int | tuple[int, ...]:
 def step_json(step: Step, shared: dict[int | tuple[int, ...], WordLists]) -> JSONDict:
     """A step's JSON form; `shared` (words_key -> their texts and spans) is filled as it goes."""
     words = step.words
-    key = words_key(words)
+    key = words[0].span.start if len(words) == 1 else words_key(words)  # words_key, its common case inline
     lists = shared.get(key)
     if lists is None:
         lists = shared[key] = ([w.text for w in words], [w.span.as_list() for w in words])

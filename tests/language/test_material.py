@@ -97,6 +97,10 @@ def _broken(path_fn):
         ),
         (lambda ir: ir["materials"][0].__setitem__("maps", {"bump": {}}), "materials[0].maps role: expected one of"),
         (lambda ir: ir.__setitem__("ir_version", 2), "ir_version: expected 1, got 2"),
+        (
+            lambda ir: ir["materials"][0]["params"].__setitem__("sheen", 0.5),
+            "materials[0].params.sheen: not a parameter of the table",
+        ),
         (lambda ir: ir.pop("materials"), "materials: missing"),
     ],
 )
