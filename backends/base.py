@@ -1,7 +1,8 @@
 """The backend contract: what a target provides, and the one path every target's options,
 materials and files take.
 
-A target is a subclass of `Target` (class attributes, no state of its own):
+A target is a subclass of `Target` (its declarations are class attributes; an instance may own
+what it loads once, such as templates, for its lifetime):
 
     class GlslTarget(Target):
         name = "glsl"
@@ -11,7 +12,6 @@ A target is a subclass of `Target` (class attributes, no state of its own):
             Option("fresnel", str, "exact", choices=("exact", "f82", "schlick"), doc="conductor Fresnel"),
             Option("size", int, 512, doc="image size in pixels"),
         )
-        commands = ()                                   # optional CLI subcommands: Command classes
 
         def emit(self, document: Document, options: Options) -> EmitResult:
             return emit_each(self, document, lambda material: [...Artifacts of one material...])
@@ -31,16 +31,22 @@ A target is a subclass of `Target` (class attributes, no state of its own):
   files out (`Artifact`s, written by the caller through `cnlmc.output.write_artifacts`),
   capability notes beside them. `Target.emit_ir(ir, pairs)` is what callers use: it parses
   the options once and hands a typed Document to `emit`.
-- `emit_each(target, document, emit_material) -> EmitResult`: the one per-material loop:
-  each material goes through the target's capability table (`capabilities.check_material`:
-  notes for approximations, `BackendRefused` for a refusal), then `emit_material(material)`;
-  two artifacts with one name raise a ValueError naming both materials.
+- `emit_each(target, document, emit_material, capabilities_of=None) -> EmitResult`: the one
+  per-material loop: each material goes through the target's capability table
+  (`capabilities.check_material`: notes for approximations, `BackendRefused` for a refusal;
+  `capabilities_of(material)` where options or the material choose the table), then
+  `emit_material(material)`; two artifacts with one name raise a ValueError naming both materials.
+- `as_document(ir)`: the typed Document of an IR in either form.
 - `Command`: a CLI subcommand a target brings (name, help, add_arguments(parser),
-  run(args) -> exit code). The registry lists each by name and help (BUILTIN_COMMANDS) so the
-  CLI builds its parser without importing any target; the module is imported only when the
-  command runs.
+  run(args) -> exit code), e.g. `cnlmc bake` of the maps target (backends/maps/commands.py).
+  The registry lists each by name, class and help (`registry.BUILTIN_COMMANDS`, one line per
+  command) so the CLI builds its parser without importing any target; the command's module
+  is imported only when that command runs.
 - Maps that have to become images go through the one baking service,
-  `cnlmc.backends.maps.service` (`bake_material`, `MapBakeError`).
+  `cnlmc.backends.maps.service` (`bake_arrays`, `bake_files`, `bake_artifacts`; errors are
+  `MapBakeError`, naming the material).
+- Module-form targets (NAME, DESCRIPTION, CAPABILITIES, emit(ir_dict, options_dict)), as older
+  plugins are written, still load: the registry wraps them (`registry.ModuleTarget`).
 """
 
 from __future__ import annotations
@@ -205,7 +211,6 @@ class Target:
     description: str
     capabilities: Mapping[str, tuple[str, str]]
     options: tuple[Option, ...] = ()
-    commands: tuple[type[Command], ...] = ()
 
     def emit(self, document: Document, options: Options) -> EmitResult:
         raise NotImplementedError
