@@ -26,9 +26,6 @@ BACKENDS = "cnlmc.backends"
 
 #: (importer, imported) -> why the edge is still there. Shrink to empty.
 ALLOWED: dict[tuple[str, str], str] = {
-    # The cycle meshes -> mesh_io -> gltf -> meshes, hidden by function-level imports:
-    # mesh_by_name() loads a mesh file through mesh_io, which builds meshes with meshes.py.
-    ("cnlmc.backends.preview.meshes", "cnlmc.backends.preview.mesh_io"): "mesh_by_name() reaches the file loaders",
     # The language layer still reaches into the targets:
     ("cnlmc.api", "cnlmc.backends.registry"): "api.emit() looks a target up by name",
     # The CLI is a front end over both layers; it reaches the targets through the registry only.

@@ -6,6 +6,10 @@ from pathlib import Path
 
 import numpy as np
 
+from cnlmc.output import write_atomic
+
+from .errors import AROptionError
+
 DICTIONARY_NAME = "DICT_4X4_50"
 DEFAULT_ID = 0
 BITS = 4 + 2  # 4x4 data bits plus the one-bit black border on each side
@@ -36,13 +40,9 @@ def write_marker(path, marker_id: int = DEFAULT_ID, pixels: int = 480, name: str
     import cv2
 
     if not 0 <= int(marker_id) < 50:
-        from .errors import AROptionError
-
         raise AROptionError(f"marker id {marker_id} is outside {name} (0 ... 49)")
     image, _ = marker_image(marker_id, pixels, name=name)
     path = Path(path)
-    from cnlmc.output import write_atomic
-
     ok, data = cv2.imencode(path.suffix or ".png", image)
     if not ok:
         raise OSError(f"cannot encode a marker as '{path.suffix}': use .png")

@@ -31,6 +31,10 @@ from pathlib import Path
 import numpy as np
 
 import cnlmc.bsdf
+from cnlmc.bsdf.alpha import anisotropy_stretch
+from cnlmc.bsdf.evaluate import albedo, evaluate, material_alpha
+from cnlmc.bsdf.geometry import dir_from_mu
+from cnlmc.cache import cached
 
 BSDF_SOURCES = Path(cnlmc.bsdf.__file__).parent
 MU_SIZE = 32
@@ -64,9 +68,6 @@ def _variant(material: dict, colour, alpha=None) -> dict:
 
 def _row_alphas(material: dict, mapped: bool) -> list:
     """(αx, αy) per row: the material's own, or sqrt(α) at texel centres with its anisotropy."""
-    from cnlmc.bsdf.alpha import anisotropy_stretch
-    from cnlmc.bsdf.evaluate import material_alpha
-
     if not mapped:
         return [tuple(float(a) for a in material_alpha(material))]
     params = material["params"]
@@ -84,8 +85,6 @@ def _directional(material: dict, options: dict, moment: bool = False) -> np.ndar
     """(MU_SIZE, 3) directional albedo at the texel centres of cos θo (azimuth-averaged when
     anisotropic); with `moment`, (MU_SIZE, 2) mean-over-RGB first moments of the lobe instead:
     its component towards the viewer (in the tangent plane) and along the normal."""
-    from cnlmc.bsdf.evaluate import albedo
-
     mus = _mus()
     phis = (0.0, np.pi / 4, np.pi / 2) if material["model"].get("anisotropic") else (0.0,)
 
@@ -160,9 +159,6 @@ def _basis():
 def _lobe_masses(material: dict, options: dict) -> np.ndarray:
     """(MU_SIZE, FIT_POINTS) the lobe f cos θi (mean over RGB) on the fit's points, per cos θv
     (the viewer at azimuth 0: the mirror side is −x), each row summing to 1 (0 for no lobe)."""
-    from cnlmc.bsdf.evaluate import evaluate
-    from cnlmc.bsdf.geometry import dir_from_mu
-
     points = _basis()[0]
     up = points[:, 2] > 0
     wi = points[up]
@@ -256,8 +252,6 @@ def _blur(values: np.ndarray) -> np.ndarray:
 def split_fitted(material: dict, mapped_roughness: bool = False) -> bool:
     """Whether the material's tables hold a fitted kernel pair (for the shader: two environment
     lookups for its specular lobe, or one). Mapped roughness: its rougher rows are fitted."""
-    from cnlmc.bsdf.evaluate import material_alpha
-
     if not any(_fitted_lobes(material)):
         return False
     return bool(mapped_roughness) or float(np.sqrt(np.prod(material_alpha(material)))) >= FIT_ALPHA
@@ -276,8 +270,6 @@ def _fitted_lobes(material: dict) -> tuple[bool, bool]:
 def _tables(material_json: str, fresnel: str, multiscatter: bool, mapped: bool) -> tuple:
     """Stored on disk (cnlmc.cache, keyed by the inputs and by the source files of the BSDF code
     and of this module): a mapped material's 8 rows take a few seconds."""
-    from cnlmc.cache import cached
-
     inputs = json.dumps([material_json, fresnel, multiscatter, mapped, MU_SIZE, ROWS, SAMPLES, SECTIONS])
     kind = "albedo-tables-" + hashlib.sha256(inputs.encode()).hexdigest()[:20]
     sources = [Path(__file__)] + sorted(BSDF_SOURCES.glob("*.py"))

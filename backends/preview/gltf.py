@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .meshes import Mesh, MeshError, make_mesh
+from .mesh import Mesh, MeshError, make_mesh
 
 GLB_MAGIC, JSON_CHUNK, BIN_CHUNK = 0x46546C67, 0x4E4F534A, 0x004E4942
 COMPONENTS = {5120: "i1", 5121: "u1", 5122: "<i2", 5123: "<u2", 5125: "<u4", 5126: "<f4"}

@@ -8,7 +8,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .meshes import Mesh, MeshError, make_mesh
+from .gltf import load_gltf
+from .mesh import Mesh, MeshError, make_mesh
 
 PLY_TYPES = {
     "char": "i1",
@@ -183,13 +184,7 @@ def write_ply(mesh: Mesh, path, flip_v: bool = False) -> None:
         f.write(faces.tobytes())
 
 
-def _load_gltf(path) -> Mesh:
-    from .gltf import load_gltf
-
-    return load_gltf(path)
-
-
-LOADERS = {".obj": load_obj, ".ply": load_ply, ".gltf": _load_gltf, ".glb": _load_gltf}
+LOADERS = {".obj": load_obj, ".ply": load_ply, ".gltf": load_gltf, ".glb": load_gltf}
 
 
 def load_mesh(path) -> Mesh:

@@ -12,9 +12,10 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
+from ..exchange import mitsuba, mitsuba_cnlm
 from .environment import mitsuba_rows, write_exr
 from .mesh_io import write_ply
-from .render import Scene
+from .scene import Scene
 
 SCENE_TEMPLATE = """<?xml version="1.0" encoding="utf-8"?>
 <!-- cnlmc preview scene for Mitsuba 3 (backends/preview/mitsuba_scene.py) -->
@@ -96,8 +97,6 @@ def export_scene(
     """Write scene.xml, materials.xml (+ baked textures), mesh.ply and environment.exr.
     `bsdf="cnlm"` uses cnlmc's own BSDF through the `cnlm` plugin (backends/exchange/mitsuba_cnlm.py).
     `sampler`: default `sampler_for(spp)` (render at that spp: ldsampler rounds others up)."""
-    from cnlmc.backends.exchange import mitsuba
-
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     result = mitsuba.emit(
@@ -163,8 +162,6 @@ def render_scene(
         elif mi.variant() is None:
             mi.set_variant("scalar_rgb")
         return _timed_render(path, spp, seed, warm)
-    from cnlmc.backends.exchange import mitsuba_cnlm
-
     mitsuba_cnlm.register()
     previous = mitsuba_cnlm.set_symbolic(not uses_plugin(path))
     try:

@@ -53,6 +53,21 @@ class Resources:
         key = ("program", source_key(vertex, fragment))
         return self.once(key, lambda: self.make_current().program(vertex_shader=vertex, fragment_shader=fragment))
 
+    def fullscreen(self, fragment_file: str, define: str = "") -> tuple[Any, Any]:
+        """(program, vertex array) of a full-screen pass over the package's `fragment_file`;
+        `define` names a preprocessor symbol defined for this variant (llvmpipe runs both sides of
+        every branch, even on a uniform: a variant that leaves work out must be its own program)."""
+
+        def make() -> tuple[Any, Any]:
+            source = gl.shader_file(fragment_file)
+            if define:
+                version, rest = source.split("\n", 1)
+                source = f"{version}\n#define {define}\n{rest}"
+            prog = self.program(gl.shader_file("fullscreen.vert"), source)
+            return prog, self.make_current().vertex_array(prog, [])
+
+        return self.once(("fullscreen", fragment_file, define), make)
+
     def float_texture(self, array: Any, mipmaps: bool = True, repeat: tuple = (True, True)) -> Any:
         """A new (uncached) float texture in this context: see gl.float_texture."""
         return gl.float_texture(self.make_current(), array, mipmaps, repeat)

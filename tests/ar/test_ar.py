@@ -179,10 +179,11 @@ def test_over_photo_blends_only_where_the_layer_is():
 
 def test_shadow_footprint_is_made_once_per_mesh(posed_photo, gl_available, gold, monkeypatch):
     import cnlmc.backends.ar as ar
+    from cnlmc.backends.ar import shadow
 
     made = []
-    original = ar.footprint
-    monkeypatch.setattr(ar, "footprint", lambda mesh, *a, **k: made.append(1) or original(mesh, *a, **k))
+    original = shadow.footprint
+    monkeypatch.setattr(shadow, "footprint", lambda mesh, *a, **k: made.append(1) or original(mesh, *a, **k))
     with ar.Compositor({"mesh": "teapot", "tier": "analytic"}) as compositor:  # what a video uses
         for _ in range(3):
             compositor.composite(posed_photo["photo"], gold["materials"][0])

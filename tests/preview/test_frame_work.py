@@ -11,6 +11,7 @@ import pytest
 
 from cnlmc.backends.preview import render as render_module
 from cnlmc.backends.preview.meshes import SILHOUETTE_ERROR_PX, sphere_for_pixels, sphere_segments
+from cnlmc.backends.preview.targets import strips_around
 
 from .conftest import material_of
 
@@ -119,7 +120,7 @@ def test_the_background_outside_the_drawn_rectangle_changes_no_pixel(renderer, m
     scene, model = off_centre_scene(renderer.width)
     scene.background = "env"
     rect = renderer.drawn_rect(scene, model)
-    assert len(render_module.strips_around(rect, renderer.width, renderer.height)) == 4
+    assert len(strips_around(rect, renderer.width, renderer.height)) == 4
     split = renderer.render(material_of("gold"), tier="splitsum", scene=scene, model=model).rgba
     full_frame(monkeypatch)
     whole = renderer.render(material_of("gold"), tier="splitsum", scene=scene, model=model).rgba
@@ -130,7 +131,7 @@ def test_the_background_outside_the_drawn_rectangle_changes_no_pixel(renderer, m
 def test_strips_around_tile_the_frame_outside_the_rectangle():
     rect = (3, 5, 7, 4)
     covered = np.zeros((20, 16), int)
-    for x, y, w, h in render_module.strips_around(rect, 16, 20) + [rect]:
+    for x, y, w, h in strips_around(rect, 16, 20) + [rect]:
         covered[y : y + h, x : x + w] += 1
     assert np.all(covered == 1)
-    assert render_module.strips_around((0, 0, 16, 20), 16, 20) == []
+    assert strips_around((0, 0, 16, 20), 16, 20) == []
