@@ -2,9 +2,6 @@
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -13,8 +10,7 @@ from hypothesis import strategies as st
 from cnlmc.bsdf import ALPHA_MIRROR, albedo, evaluate, material_alpha, rotate_tangent
 from cnlmc.bsdf.geometry import spherical_dir
 
-sys.path.insert(0, str(Path(__file__).parent))
-from directions import all_pairs
+from .directions import all_pairs
 
 AL = {
     "eta": [1.5022, 0.9853, 0.606],

@@ -2,9 +2,6 @@
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -27,8 +24,7 @@ from cnlmc.bsdf.microfacet import (
 )
 from cnlmc.bsdf.multiscatter import average_over_mu, ggx_albedo
 
-sys.path.insert(0, str(Path(__file__).parent))
-from directions import all_pairs
+from .directions import all_pairs
 
 ALPHAS = [
     (ALPHA_MIRROR, ALPHA_MIRROR),

@@ -8,8 +8,6 @@ limit R + T = 1; agreement with Mitsuba 3's roughdielectric."""
 from __future__ import annotations
 
 import copy
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -30,8 +28,7 @@ from cnlmc.bsdf import (
 from cnlmc.bsdf.integrate import lattice_2d
 from cnlmc.bsdf.transmission import G2_FORMS, refract
 
-sys.path.insert(0, str(Path(__file__).parent))
-from directions import sphere_dirs
+from .directions import sphere_dirs
 
 GLASS = {
     "name": "glass",

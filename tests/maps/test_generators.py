@@ -2,10 +2,11 @@
 
 import numpy as np
 import pytest
-from conftest import seam_ratio
 
 from cnlmc.backends.maps import NODE_TYPES
 from cnlmc.backends.maps.grid import Grid
+
+from .conftest import seam_ratio
 
 GENERATORS = [name for name, t in NODE_TYPES.items() if t.category == "generator"]
 

@@ -6,9 +6,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from conftest import SMALL, golden_thumbnails, seam_ratio
 
 from cnlmc.backends.maps import evaluate, load_graph
+
+from .conftest import SMALL, golden_thumbnails, seam_ratio
 
 GOLDEN = Path(__file__).parent / "golden"
 

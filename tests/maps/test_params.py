@@ -1,9 +1,10 @@
 """Graph parameters move the maps in the direction their names promise."""
 
 import numpy as np
-from conftest import luminance
 
 from cnlmc.backends.maps import evaluate, load_graph
+
+from .conftest import luminance
 
 SIZE = 128
 
