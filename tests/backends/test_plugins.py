@@ -34,6 +34,7 @@ def test_an_installed_plugin_is_a_target(tmp_path):
     make_plugin(tmp_path)
     listed = cnlmc(tmp_path, "targets")
     assert "toy" in listed.stdout and "toy_target" in listed.stdout
+    assert "names and base colours as text" in listed.stdout  # each target with its description
     r = cnlmc(tmp_path, "compile", "-", "--target", "toy", stdin="blue plastic\n")
     assert r.returncode == 0, r.stderr
     assert r.stdout == "blue_plastic [0.0, 0.0, 1.0]\n"
