@@ -44,3 +44,35 @@ def test_a_misspelled_plugin_target_gets_did_you_mean(tmp_path):
     make_plugin(tmp_path)
     r = cnlmc(tmp_path, "compile", "-", "--target", "tooy", stdin="steel\n")
     assert r.returncode == 2 and "did you mean 'toy'?" in r.stderr
+
+
+def make_contract_plugin(root):
+    """A plugin written against the contract: a Target object with declared options."""
+    (root / "names_target.py").write_text(
+        textwrap.dedent("""
+        from cnlmc.backends.base import Artifact, Option, Target, emit_each
+        from cnlmc.backends.capabilities import ALL_FEATURES
+        class NamesTarget(Target):
+            name = "names"
+            description = "material names, one file each"
+            capabilities = {f: ("exact", "") for f in ALL_FEATURES}
+            options = (Option("separator", str, "=", doc="between name and IOR"),)
+            def emit(self, document, options):
+                text = lambda m: f"{m.name}{options.separator}{m.params.ior}\\n"
+                return emit_each(self, document, lambda m: [Artifact(m.name + ".txt", text(m))])
+        TARGET = NamesTarget()
+    """)
+    )
+    info = root / "names_target-1.0.dist-info"
+    info.mkdir()
+    (info / "METADATA").write_text("Metadata-Version: 2.1\nName: names-target\nVersion: 1.0\n")
+    (info / "entry_points.txt").write_text("[cnlmc.backends]\nnames = names_target\n")
+
+
+def test_a_plugin_target_object_gets_its_options_parsed(tmp_path):
+    make_contract_plugin(tmp_path)
+    r = cnlmc(tmp_path, "compile", "-", "--target", "names", "--option", "separator=:", stdin="red plastic\n")
+    assert r.returncode == 0, r.stderr
+    assert r.stdout == "red_plastic:1.4905\n"
+    r = cnlmc(tmp_path, "compile", "-", "--target", "names", "--option", "seperator=:", stdin="red plastic\n")
+    assert r.returncode == 2 and "did you mean 'separator'?" in r.stderr
