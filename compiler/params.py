@@ -15,13 +15,14 @@ import dataclasses
 from dataclasses import dataclass, field
 from typing import Any, TypeVar
 
+from .conventions import ALPHA_MIRROR, CONVENTIONS
+
 RGB = tuple[float, float, float]
 T = TypeVar("T")
 
 BASES = ("diffuse", "dielectric", "conductor", "glass")
 DISTRIBUTIONS = (None, "ggx", "ward")
 DIFFUSE_LOBES = (None, "lambert", "oren_nayar")
-CONVENTIONS = ("squared", "linear")
 SPECULAR = ("dielectric", "conductor", "glass")
 
 #: when a parameter is in a material's IR: "base" (its base model is in `models`), or a condition on the model
@@ -200,7 +201,7 @@ class Params:
         models=SPECULAR,
         when="specular",
         doc="[alpha_x, alpha_y], the microfacet widths from roughness and anisotropy by alpha_convention "
-        "(cnlmc.conventions.alpha_of); below ALPHA_MIRROR = 1e-3 a perfect mirror",
+        f"(cnlmc.conventions.alpha_of); below ALPHA_MIRROR = {ALPHA_MIRROR:g} a perfect mirror",
         convention=ALPHA_NOTE,
     )
     alpha_convention: str = param(
