@@ -13,6 +13,7 @@ import logging
 import os
 import time
 from concurrent.futures import ThreadPoolExecutor
+from typing import Any
 
 from lsprotocol import types
 from pygls.lsp.server import LanguageServer
@@ -20,7 +21,7 @@ from pygls.lsp.server import LanguageServer
 from .api import lexicon_for
 from .lsp import actions, colours, completion, hover, inlay, tokens
 from .lsp.diagnostics import LspDiagnostics
-from .lsp.incremental import Analyzer, Cancelled
+from .lsp.incremental import Analyzer, Cancelled, Snapshot
 
 DEFAULT_DEBOUNCE_MS = 120
 log = logging.getLogger("cnlmc.lsp")
@@ -30,23 +31,24 @@ TRACE = os.environ.get("CNLMC_LSP_TRACE")  # a file to append per-publish timing
 class CnlServer(LanguageServer):
     """Holds the analyzer, the settings, and per-document debounce state."""
 
-    def __init__(self):
+    def __init__(self) -> None:
         super().__init__("cnlmc", "0.1.0")
         self.analyzer = Analyzer(lexicon_for())
         self.worker = ThreadPoolExecutor(max_workers=1, thread_name_prefix="cnlmc-analysis")
         self.debounce_ms = DEFAULT_DEBOUNCE_MS
         self.inlay_hints = True
         self.generation: dict[str, int] = {}
-        self.pending: dict[str, asyncio.Task] = {}
-        self.snapshots: dict = {}
+        self.pending: dict[str, asyncio.Task[None]] = {}
+        self.snapshots: dict[str, Snapshot] = {}
         self.lsp_diagnostics = LspDiagnostics()
+        self.lexicon_error: str | None = None
 
     @property
     def encoding(self) -> str:
         kind = self.workspace.position_encoding
         return str(getattr(kind, "value", kind) or "utf-16")
 
-    def apply_settings(self, settings) -> None:
+    def apply_settings(self, settings: Any) -> None:
         if not isinstance(settings, dict):
             return
         settings = settings.get("cnlmc", settings)
@@ -57,7 +59,7 @@ class CnlServer(LanguageServer):
         if isinstance(settings.get("lexicon"), list):
             self.use_lexicon(tuple(str(s) for s in settings["lexicon"]))
 
-    def use_lexicon(self, specs: tuple) -> None:
+    def use_lexicon(self, specs: tuple[str, ...]) -> None:
         """Overlay names ('de', 'paper') or lexicon folders, as `--lexicon` takes them."""
         from .lexicon_schema import LexiconError
 
@@ -77,7 +79,7 @@ class CnlServer(LanguageServer):
             return None
         return self.workspace.get_text_document(uri).source
 
-    async def snapshot(self, uri: str):
+    async def snapshot(self, uri: str) -> Snapshot | None:
         """The analysis of the document's current text (cached; computed on the worker thread)."""
         text = self.text_of(uri)
         if text is None:
@@ -98,10 +100,10 @@ class CnlServer(LanguageServer):
             waiting.cancel()
         self.pending[uri] = asyncio.ensure_future(self.publish_later(uri, self.generation[uri]))
 
-    def publish(self, uri: str, version: int | None, diagnostics: list[dict]) -> None:
+    def publish(self, uri: str, version: int | None, diagnostics: list[dict[str, Any]]) -> None:
         """Send publishDiagnostics with diagnostics already in JSON form (lsp/diagnostics.py caches
         them per block): lsprotocol's converter would otherwise spend ~10 ms per 300 diagnostics."""
-        params = {"uri": uri, "diagnostics": diagnostics}
+        params: dict[str, Any] = {"uri": uri, "diagnostics": diagnostics}
         if version is not None:
             params["version"] = version
         send = getattr(self.protocol, "_send_data", None)
@@ -119,7 +121,10 @@ class CnlServer(LanguageServer):
             return
         version = self.workspace.get_text_document(uri).version
         t0 = time.perf_counter()
-        current = lambda: self.generation.get(uri) == generation
+
+        def current() -> bool:
+            return self.generation.get(uri) == generation
+
         loop = asyncio.get_running_loop()
         try:
             snap = await loop.run_in_executor(self.worker, self.analyzer.analyse, text, self.encoding, current)
@@ -157,29 +162,29 @@ server = CnlServer()
 
 
 @server.feature(types.INITIALIZE)
-def on_initialize(ls: CnlServer, params: types.InitializeParams):
+def on_initialize(ls: CnlServer, params: types.InitializeParams) -> None:
     ls.apply_settings(params.initialization_options or {})
 
 
 @server.feature(types.WORKSPACE_DID_CHANGE_CONFIGURATION)
-def on_configuration(ls: CnlServer, params: types.DidChangeConfigurationParams):
+def on_configuration(ls: CnlServer, params: types.DidChangeConfigurationParams) -> None:
     ls.apply_settings(params.settings or {})
     for uri in list(ls.generation):
         ls.schedule(uri)  # the words may have changed: re-check every open document
 
 
 @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
-def did_open(ls: CnlServer, params: types.DidOpenTextDocumentParams):
+def did_open(ls: CnlServer, params: types.DidOpenTextDocumentParams) -> None:
     ls.schedule(params.text_document.uri)
 
 
 @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
-def did_change(ls: CnlServer, params: types.DidChangeTextDocumentParams):
+def did_change(ls: CnlServer, params: types.DidChangeTextDocumentParams) -> None:
     ls.schedule(params.text_document.uri)
 
 
 @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
-def did_close(ls: CnlServer, params: types.DidCloseTextDocumentParams):
+def did_close(ls: CnlServer, params: types.DidCloseTextDocumentParams) -> None:
     uri = params.text_document.uri
     waiting = ls.pending.pop(uri, None)
     if waiting is not None:
@@ -190,7 +195,7 @@ def did_close(ls: CnlServer, params: types.DidCloseTextDocumentParams):
 
 
 @server.feature(types.TEXT_DOCUMENT_HOVER)
-async def on_hover(ls: CnlServer, params: types.HoverParams):
+async def on_hover(ls: CnlServer, params: types.HoverParams) -> types.Hover | None:
     snap = await ls.snapshot(params.text_document.uri)
     return hover.hover(snap, params.position, ls.analyzer.lexicon) if snap else None
 
@@ -198,7 +203,7 @@ async def on_hover(ls: CnlServer, params: types.HoverParams):
 @server.feature(
     types.TEXT_DOCUMENT_COMPLETION, types.CompletionOptions(trigger_characters=[" ", ","], resolve_provider=False)
 )
-async def on_completion(ls: CnlServer, params: types.CompletionParams):
+async def on_completion(ls: CnlServer, params: types.CompletionParams) -> types.CompletionList | None:
     snap = await ls.snapshot(params.text_document.uri)
     if snap is None:
         return None
@@ -208,7 +213,7 @@ async def on_completion(ls: CnlServer, params: types.CompletionParams):
 @server.feature(
     types.TEXT_DOCUMENT_CODE_ACTION, types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix])
 )
-async def on_code_action(ls: CnlServer, params: types.CodeActionParams):
+async def on_code_action(ls: CnlServer, params: types.CodeActionParams) -> list[types.CodeAction] | None:
     snap = await ls.snapshot(params.text_document.uri)
     if snap is None:
         return None
@@ -216,7 +221,7 @@ async def on_code_action(ls: CnlServer, params: types.CodeActionParams):
 
 
 @server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL, tokens.LEGEND)
-async def on_semantic_tokens(ls: CnlServer, params: types.SemanticTokensParams):
+async def on_semantic_tokens(ls: CnlServer, params: types.SemanticTokensParams) -> types.SemanticTokens:
     snap = await ls.snapshot(params.text_document.uri)
     if snap is None:
         return types.SemanticTokens(data=[])
@@ -224,20 +229,20 @@ async def on_semantic_tokens(ls: CnlServer, params: types.SemanticTokensParams):
 
 
 @server.feature(types.TEXT_DOCUMENT_DOCUMENT_COLOR)
-async def on_document_colour(ls: CnlServer, params: types.DocumentColorParams):
+async def on_document_colour(ls: CnlServer, params: types.DocumentColorParams) -> list[types.ColorInformation]:
     snap = await ls.snapshot(params.text_document.uri)
     return colours.document_colours(snap, ls.analyzer.lexicon) if snap else []
 
 
 @server.feature(types.TEXT_DOCUMENT_COLOR_PRESENTATION)
-async def on_colour_presentation(ls: CnlServer, params: types.ColorPresentationParams):
+async def on_colour_presentation(ls: CnlServer, params: types.ColorPresentationParams) -> list[types.ColorPresentation]:
     snap = await ls.snapshot(params.text_document.uri)
     replaces = colours.is_colour_range(snap, params.range) if snap else True
     return colours.presentations(params.color, params.range, ls.analyzer.lexicon, replaces)
 
 
 @server.feature(types.TEXT_DOCUMENT_INLAY_HINT)
-async def on_inlay_hints(ls: CnlServer, params: types.InlayHintParams):
+async def on_inlay_hints(ls: CnlServer, params: types.InlayHintParams) -> list[types.InlayHint]:
     if not ls.inlay_hints:
         return []
     snap = await ls.snapshot(params.text_document.uri)

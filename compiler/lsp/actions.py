@@ -8,8 +8,11 @@ import re
 from lsprotocol import types
 from rapidfuzz import fuzz, process
 
+from ..diagnostics import Diagnostic
+from ..lexicon import Lexicon
 from .completion import accepted_terminals
-from .diagnostics import to_lsp
+from .diagnostics import span_of, to_lsp
+from .incremental import Snapshot
 from .lines import line_words, tag_text
 
 REMOVABLE = {"W101", "W102", "W103"}
@@ -17,10 +20,10 @@ COLOUR_SUFFIXES = re.compile(r"(?:-?ish|y)$")
 COLOUR_CUTOFF = 70
 
 
-def quick_fixes(snapshot, uri: str, where: types.Range, lexicon) -> list[types.CodeAction]:
+def quick_fixes(snapshot: Snapshot, uri: str, where: types.Range, lexicon: Lexicon) -> list[types.CodeAction]:
     fixes = []
     for diag in snapshot.diagnostics:
-        line = diag.span.line - 1
+        line = span_of(diag).line - 1
         if not where.start.line <= line <= where.end.line:
             continue
         lsp_diag = to_lsp(diag, snapshot.index, uri)
@@ -31,17 +34,19 @@ def quick_fixes(snapshot, uri: str, where: types.Range, lexicon) -> list[types.C
     return fixes
 
 
-def _columns(snapshot, diag) -> tuple[int, int, int]:
-    line = diag.span.line - 1
-    start = diag.span.start - snapshot.index.starts[line]
-    return line, start, start + (diag.span.end - diag.span.start)
+def _columns(snapshot: Snapshot, diag: Diagnostic) -> tuple[int, int, int]:
+    line = span_of(diag).line - 1
+    start = span_of(diag).start - snapshot.index.starts[line]
+    return line, start, start + (span_of(diag).end - span_of(diag).start)
 
 
-def _edit(snapshot, uri, line, start, end, text) -> types.WorkspaceEdit:
+def _edit(snapshot: Snapshot, uri: str, line: int, start: int, end: int, text: str) -> types.WorkspaceEdit:
     return types.WorkspaceEdit(changes={uri: [types.TextEdit(snapshot.index.range_of(line, start, end), text)]})
 
 
-def spelling_fixes(snapshot, uri, diag, lsp_diag, lexicon) -> list[types.CodeAction]:
+def spelling_fixes(
+    snapshot: Snapshot, uri: str, diag: Diagnostic, lsp_diag: types.Diagnostic, lexicon: Lexicon
+) -> list[types.CodeAction]:
     line, start, end = _columns(snapshot, diag)
     word = snapshot.index.lines[line][start:end]
     fixes = [
@@ -68,7 +73,7 @@ def spelling_fixes(snapshot, uri, diag, lsp_diag, lexicon) -> list[types.CodeAct
     return fixes
 
 
-def nearest_colour_name(word: str, lexicon) -> str | None:
+def nearest_colour_name(word: str, lexicon: Lexicon) -> str | None:
     """The named colour an unknown colour-like word ('bluish', 'grren', 'navyblue') is nearest to."""
     if not word[:1].isalpha():
         return None
@@ -80,18 +85,20 @@ def nearest_colour_name(word: str, lexicon) -> str | None:
     return names[found[0]] if found else None
 
 
-def colour_fits(snapshot, line: int, start: int, lexicon) -> bool:
+def colour_fits(snapshot: Snapshot, line: int, start: int, lexicon: Lexicon) -> bool:
     """Whether the grammar accepts a colour where the unknown word stands."""
     before = [t for t in tag_text(snapshot.index.lines[line][:start], lexicon) if t.candidates]
     return "COLOR" in accepted_terminals(before)
 
 
-def removal_fix(snapshot, uri, diag, lsp_diag, lexicon) -> types.CodeAction:
+def removal_fix(
+    snapshot: Snapshot, uri: str, diag: Diagnostic, lsp_diag: types.Diagnostic, lexicon: Lexicon
+) -> types.CodeAction:
     line, start, end = _columns(snapshot, diag)
     text = snapshot.index.lines[line]
     start = _with_adverbs(snapshot, line, start, lexicon)
     start, end = _with_separator(text, start, end)
-    word = text[diag.span.start - snapshot.index.starts[line] : _columns(snapshot, diag)[2]]
+    word = text[span_of(diag).start - snapshot.index.starts[line] : _columns(snapshot, diag)[2]]
     return types.CodeAction(
         title=f"Remove '{word}'",
         kind=types.CodeActionKind.QuickFix,
@@ -101,7 +108,7 @@ def removal_fix(snapshot, uri, diag, lsp_diag, lexicon) -> types.CodeAction:
     )
 
 
-def _with_adverbs(snapshot, line: int, start: int, lexicon) -> int:
+def _with_adverbs(snapshot: Snapshot, line: int, start: int, lexicon: Lexicon) -> int:
     """Extend a removal to the adverbs right before the word ('lightly anodized')."""
     words = [w for w in line_words(snapshot, line, lexicon) if w.end <= start]
     for word in reversed(words):

@@ -3,23 +3,27 @@ picker's answer is the nearest phrase ("dark slate blue") from the lexicon's col
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from functools import lru_cache
 
 from lsprotocol import types
 
 from ..colour import linear_to_srgb, srgb_to_linear
+from ..lexicon import Lexicon
 from ..passes.colours import resolve_colour, shade
 from ..state import Context
+from .incremental import Snapshot
 
 MAX_PRESENTATIONS = 3
+Lab = tuple[float, float, float]
 
 
-def swatch(rgb) -> types.Color:
+def swatch(rgb: Sequence[float]) -> types.Color:
     red, green, blue = (linear_to_srgb(c) for c in rgb)
     return types.Color(red=red, green=green, blue=blue, alpha=1.0)
 
 
-def document_colours(snapshot, lexicon) -> list[types.ColorInformation]:
+def document_colours(snapshot: Snapshot, lexicon: Lexicon) -> list[types.ColorInformation]:
     ctx = Context(lexicon)
     out = []
     for line in range(len(snapshot.index.lines)):
@@ -34,7 +38,7 @@ def document_colours(snapshot, lexicon) -> list[types.ColorInformation]:
     return out
 
 
-def material_swatches(snapshot, line: int) -> list[types.ColorInformation]:
+def material_swatches(snapshot: Snapshot, line: int) -> list[types.ColorInformation]:
     """The resolved base colour of the material on `line`, shown on its noun."""
     materials = snapshot.materials_on(line)
     nouns = [(w, col) for w, col in snapshot.words_on(line) if w.category == "nouns"]
@@ -47,7 +51,7 @@ def material_swatches(snapshot, line: int) -> list[types.ColorInformation]:
     return out
 
 
-def _lab(rgb) -> tuple[float, float, float]:
+def _lab(rgb: Sequence[float]) -> Lab:
     """CIE L*a*b* (D65) of a linear Rec.709 colour: distances there match what people see."""
     r, g, b = rgb
     x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047
@@ -58,7 +62,7 @@ def _lab(rgb) -> tuple[float, float, float]:
 
 
 @lru_cache(maxsize=4)
-def phrase_table(lexicon) -> tuple:
+def phrase_table(lexicon: Lexicon) -> tuple[tuple[str, Lab], ...]:
     """(phrase, Lab) for every named colour and every shade of it."""
     table = []
     shades = lexicon.all_of("shades")
@@ -70,7 +74,7 @@ def phrase_table(lexicon) -> tuple:
     return tuple(table)
 
 
-def nearest_phrases(color: types.Color, lexicon, limit: int = MAX_PRESENTATIONS) -> list[str]:
+def nearest_phrases(color: types.Color, lexicon: Lexicon, limit: int = MAX_PRESENTATIONS) -> list[str]:
     target = _lab([srgb_to_linear(c) for c in (color.red, color.green, color.blue)])
     ranked = sorted(phrase_table(lexicon), key=lambda row: sum((a - b) ** 2 for a, b in zip(row[1], target)))
     phrases: list[str] = []
@@ -82,7 +86,9 @@ def nearest_phrases(color: types.Color, lexicon, limit: int = MAX_PRESENTATIONS)
     return phrases
 
 
-def presentations(color: types.Color, where: types.Range, lexicon, replaces_colour: bool = True):
+def presentations(
+    color: types.Color, where: types.Range, lexicon: Lexicon, replaces_colour: bool = True
+) -> list[types.ColorPresentation]:
     """Colour picker answers: the nearest phrases, replacing the colour words (or, on a noun's
     swatch, inserted before the noun)."""
     out = []
@@ -95,12 +101,14 @@ def presentations(color: types.Color, where: types.Range, lexicon, replaces_colo
     return out
 
 
-def is_colour_range(snapshot, where: types.Range) -> bool:
+def is_colour_range(snapshot: Snapshot, where: types.Range) -> bool:
     """Whether a swatch range covers colour words (not a material's noun)."""
     line = where.start.line
     if line >= len(snapshot.index.lines):
         return True
     found = snapshot.index.line_col(where.start)
+    if found is None:
+        return True
     return any(start == found[1] for _phrase, start, _end in snapshot.colours_on(line)) or not any(
         col == found[1] and w.category == "nouns" for w, col in snapshot.words_on(line)
     )

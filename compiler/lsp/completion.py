@@ -9,15 +9,19 @@ where they apply to the line's noun, and nouns only where the line's adjectives 
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 from lark import Token
 from lark.exceptions import UnexpectedInput
+from lark.parsers.lalr_interactive_parser import InteractiveParser
 from lsprotocol import types
 
-from ..lexicon import CATEGORY_TAGS
+from ..lexicon import CATEGORY_TAGS, Entry, Lexicon
 from ..parser import lark_parser
+from ..tagged import Tagged
 from .entries import CATEGORY_NAMES, effect_lines, entry_markdown
+from .incremental import Snapshot
 from .lines import comment_start, tag_text
 
 PARTIAL_RE = re.compile(r"[^\W\d_][\w'’\-]*$")
@@ -48,11 +52,11 @@ KINDS = {
 class LineContext:
     """What the rest of the line says about fitting words: its noun and its adjectives."""
 
-    noun: object | None
-    adjectives: tuple
+    noun: Entry | None
+    adjectives: tuple[Entry, ...]
 
 
-def complete(snapshot, position: types.Position, lexicon) -> types.CompletionList | None:
+def complete(snapshot: Snapshot, position: types.Position, lexicon: Lexicon) -> types.CompletionList | None:
     found = snapshot.index.line_col(position)
     if found is None:
         return None
@@ -79,7 +83,7 @@ def complete(snapshot, position: types.Position, lexicon) -> types.CompletionLis
     return types.CompletionList(is_incomplete=False, items=items)
 
 
-def previous_tag(words) -> str | None:
+def previous_tag(words: list[Tagged]) -> str | None:
     """The tag of the word before the cursor ('with a' counts as WITH)."""
     tags = [w.candidates[0].tag for w in words]
     if len(tags) >= 2 and tags[-1] == "ARTICLE" and tags[-2] == "WITH":
@@ -88,17 +92,17 @@ def previous_tag(words) -> str | None:
 
 
 def category_order(previous: str | None) -> dict[str, int]:
-    first = ORDER_AFTER.get(previous, ())
+    first = ORDER_AFTER.get(previous, ()) if previous is not None else ()
     ordered = [*first, *(c for c in DEFAULT_ORDER if c not in first)]
     return {category: i for i, category in enumerate(ordered)}
 
 
-def accepted_terminals(words) -> set[str]:
+def accepted_terminals(words: list[Tagged]) -> set[str]:
     """Terminals the parser accepts after `words`, over every reading of ambiguous words."""
     accepted: set[str] = set()
     budget = [MAX_BRANCHES]
 
-    def walk(ip, i):
+    def walk(ip: InteractiveParser, i: int) -> None:
         if i == len(words):
             accepted.update(ip.accepts())
             return
@@ -117,7 +121,7 @@ def accepted_terminals(words) -> set[str]:
     return accepted
 
 
-def line_context(text: str, start: int, end: int, lexicon) -> LineContext:
+def line_context(text: str, start: int, end: int, lexicon: Lexicon) -> LineContext:
     """The noun and adjectives of the line, ignoring the word being typed."""
     words = [t for t in tag_text(text, lexicon) if t.candidates and not (t.span.start < end and t.span.end > start)]
     with_at = next((t.span.start for t in words if any(c.tag == "WITH" for c in t.candidates)), len(text) + 1)
@@ -133,12 +137,12 @@ def line_context(text: str, start: int, end: int, lexicon) -> LineContext:
     return LineContext(noun, tuple(a for a in adjectives if a is not None))
 
 
-def applies(adjective, noun) -> bool:
+def applies(adjective: Entry, noun: Entry | None) -> bool:
     classes = adjective.get("applies_to")
     return not classes or noun is None or noun.get("class") in classes or noun.key in classes
 
 
-def fits(entry, context: LineContext) -> bool:
+def fits(entry: Entry, context: LineContext) -> bool:
     if entry.category == "adjectives":
         return applies(entry, context.noun)
     if entry.category == "nouns":
@@ -146,16 +150,19 @@ def fits(entry, context: LineContext) -> bool:
     return True
 
 
-def surface_for(entry, partial: str) -> str | None:
+def surface_for(entry: Entry, partial: str) -> str | None:
     """The key, or the first alias, that starts with what was typed."""
     typed = partial.lower()
-    for surface in (entry.key, *entry.get("aliases", [])):
+    surfaces: list[str] = [entry.key, *entry.get("aliases", [])]
+    for surface in surfaces:
         if surface.lower().startswith(typed):
             return surface
     return None
 
 
-def lexicon_items(accepted, partial, context, where, lexicon, order):
+def lexicon_items(
+    accepted: set[str], partial: str, context: LineContext, where: types.Range, lexicon: Lexicon, order: dict[str, int]
+) -> Iterator[types.CompletionItem]:
     for tag in sorted(accepted):
         category = CATEGORY_OF_TAG.get(tag)
         if category is None:
@@ -167,7 +174,7 @@ def lexicon_items(accepted, partial, context, where, lexicon, order):
             yield completion_item(entry, surface, where, order[category])
 
 
-def completion_item(entry, surface: str, where, rank: int) -> types.CompletionItem:
+def completion_item(entry: Entry, surface: str, where: types.Range, rank: int) -> types.CompletionItem:
     effects = effect_lines(entry)
     detail = CATEGORY_NAMES[entry.category] + (f": {effects[0]}" if effects else "")
     return types.CompletionItem(
@@ -181,7 +188,7 @@ def completion_item(entry, surface: str, where, rank: int) -> types.CompletionIt
     )
 
 
-def keyword_items(accepted, partial, where):
+def keyword_items(accepted: set[str], partial: str, where: types.Range) -> Iterator[types.CompletionItem]:
     for tag, word in KEYWORDS.items():
         if tag in accepted and word.startswith(partial.lower()):
             yield types.CompletionItem(

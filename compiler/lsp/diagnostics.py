@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 from collections import OrderedDict
+from typing import Any
 
 from lsprotocol import types
 from pygls.protocol import default_converter
 
-from ..diagnostics import Severity
+from ..diagnostics import Diagnostic, Severity
+from ..spans import Span
+from .incremental import BlockResult, Snapshot
 from .positions import LineIndex
 
 SEVERITIES = {
@@ -17,11 +20,18 @@ SEVERITIES = {
 }
 
 
-def to_lsp(diag, index: LineIndex, uri: str, first_line: int = 0) -> types.Diagnostic:
+def span_of(diag: Diagnostic) -> Span:
+    """Where a diagnostic the editor shows stands: each has a span (incremental._with_spans)."""
+    assert diag.span is not None, diag
+    return diag.span
+
+
+def to_lsp(diag: Diagnostic, index: LineIndex, uri: str, first_line: int = 0) -> types.Diagnostic:
     """`diag`'s span is on line first_line + span.line (0-based); only its line and columns are used."""
-    line = first_line + diag.span.line - 1
-    start = diag.span.col - 1
-    where = index.range_of(line, start, start + (diag.span.end - diag.span.start))
+    span = span_of(diag)
+    line = first_line + span.line - 1
+    start = span.col - 1
+    where = index.range_of(line, start, start + (span.end - span.start))
     related = [types.DiagnosticRelatedInformation(types.Location(uri, where), hint) for hint in diag.hints]
     return types.Diagnostic(
         range=where,
@@ -40,11 +50,11 @@ class LspDiagnostics:
 
     def __init__(self, limit: int = 20000):
         self.limit = limit
-        self._by_block: OrderedDict = OrderedDict()
+        self._by_block: OrderedDict[tuple[BlockResult, int, str, str], list[dict[str, Any]]] = OrderedDict()
         self._converter = default_converter()
 
-    def of(self, snapshot, uri: str) -> list[dict]:
-        out: list[dict] = []
+    def of(self, snapshot: Snapshot, uri: str) -> list[dict[str, Any]]:
+        out: list[dict[str, Any]] = []
         for block in snapshot.blocks:
             relative = block.result.diagnostics
             if not relative:
@@ -64,5 +74,5 @@ class LspDiagnostics:
         return out
 
 
-def all_to_lsp(snapshot, uri: str) -> list[types.Diagnostic]:
+def all_to_lsp(snapshot: Snapshot, uri: str) -> list[types.Diagnostic]:
     return [to_lsp(d, snapshot.index, uri) for d in snapshot.diagnostics]

@@ -2,8 +2,12 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Any
+
 from ..colour import linear_to_hex
 from ..formulas import describe
+from ..lexicon import Entry
 
 CATEGORY_NAMES = {
     "nouns": "material noun",
@@ -17,7 +21,7 @@ CATEGORY_NAMES = {
 }
 
 
-def effect_lines(entry) -> list[str]:
+def effect_lines(entry: Entry) -> list[str]:
     """What the word does to the material parameters, one line each."""
     describe_by_category = {
         "adjectives": _adjective_effects,
@@ -32,7 +36,7 @@ def effect_lines(entry) -> list[str]:
     return describe_by_category[entry.category](entry)
 
 
-def _adjective_effects(entry) -> list[str]:
+def _adjective_effects(entry: Entry) -> list[str]:
     lines = [describe(e, 1.0) for e in entry.get("effects", [])]
     for target, effects in entry.get("on", {}).items():
         lines.append(f"on {target}: " + "; ".join(describe(e, 1.0) for e in effects))
@@ -49,7 +53,7 @@ def _adjective_effects(entry) -> list[str]:
     return lines
 
 
-def _noun_effects(entry) -> list[str]:
+def _noun_effects(entry: Entry) -> list[str]:
     lines = [f"class {entry.get('class')}, model {entry.get('model')}"]
     for param in ("roughness", "ior"):
         if entry.get(param) is not None:
@@ -63,19 +67,19 @@ def _noun_effects(entry) -> list[str]:
     return lines
 
 
-def _adverb_effects(entry) -> list[str]:
+def _adverb_effects(entry: Entry) -> list[str]:
     return [f"weight {entry.get('weight')} on the following adjective"]
 
 
-def _colour_effects(entry) -> list[str]:
+def _colour_effects(entry: Entry) -> list[str]:
     return [f"colour {entry.get('hex') or linear_to_hex(entry.get('rgb'))} (linear {_rgb(entry.get('rgb'))})"]
 
 
-def _shade_effects(entry) -> list[str]:
+def _shade_effects(entry: Entry) -> list[str]:
     return [" then ".join(_shade_op(op) for op in entry.get("ops", []))]
 
 
-def _shade_op(op: dict) -> str:
+def _shade_op(op: dict[str, Any]) -> str:
     if op["op"] == "mul":
         return f"colour *= {op['value']}"
     if op["op"] == "blend":
@@ -83,27 +87,27 @@ def _shade_op(op: dict) -> str:
     return f"saturate by {op['amount']}"
 
 
-def _refinement_effects(entry) -> list[str]:
+def _refinement_effects(entry: Entry) -> list[str]:
     direction = "raises" if entry.get("direction", 1) > 0 else "lowers"
     return [f"{direction} {entry.get('target')} (bracket rule: steps, then bisects)"]
 
 
-def _property_effects(entry) -> list[str]:
+def _property_effects(entry: Entry) -> list[str]:
     target = entry.get("param") or entry.get("map_param")
     return [f"names {target}" + (" (inverted)" if entry.get("invert") else "")]
 
 
-def _coat_effects(entry) -> list[str]:
+def _coat_effects(entry: Entry) -> list[str]:
     return [
         f"coat ior {entry.get('ior')}, roughness {entry.get('roughness')}, colour {_rgb(entry.get('color', [1, 1, 1]))}"
     ]
 
 
-def _rgb(values) -> str:
+def _rgb(values: Sequence[float]) -> str:
     return "(" + ", ".join(f"{v:.3g}" for v in values) + ")"
 
 
-def entry_markdown(entry, surface: str | None = None) -> str:
+def entry_markdown(entry: Entry, surface: str | None = None) -> str:
     title = f"**{surface or entry.key}** — {CATEGORY_NAMES[entry.category]}"
     if surface and surface.lower() != entry.key:
         title += f" (`{entry.key}`)"

@@ -2,15 +2,20 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from lsprotocol import types
 
+from .. import ast
 from ..colour import linear_to_hex
 from ..explain import explain_material
+from ..lexicon import Lexicon
 from .entries import entry_markdown
-from .lines import line_words, word_at
+from .incremental import Snapshot
+from .lines import LineWord, line_words, word_at
 
 
-def hover(snapshot, position: types.Position, lexicon) -> types.Hover | None:
+def hover(snapshot: Snapshot, position: types.Position, lexicon: Lexicon) -> types.Hover | None:
     found = snapshot.index.line_col(position)
     if found is None:
         return None
@@ -27,18 +32,18 @@ def hover(snapshot, position: types.Position, lexicon) -> types.Hover | None:
     return types.Hover(types.MarkupContent(types.MarkupKind.Markdown, "\n\n---\n\n".join(sections)), where)
 
 
-def line_materials(snapshot, line: int) -> list[dict]:
+def line_materials(snapshot: Snapshot, line: int) -> list[dict[str, Any]]:
     """The materials a line describes; a refinement line shows the material it refines."""
     on_line = snapshot.materials_on(line)
     if on_line:
         return on_line
     item, block = snapshot.item_on(line)
-    if item is None or type(item).__name__ != "Refinement":
+    if block is None or not isinstance(item, ast.Refinement):
         return []
     return list(block.result.materials)
 
 
-def word_section(word, lexicon) -> str:
+def word_section(word: LineWord, lexicon: Lexicon) -> str:
     if word.category == "unknown":
         suggestions = lexicon.suggest(word.text) if word.text[:1].isalpha() else []
         hint = f" — did you mean {', '.join(repr(s) for s in suggestions)}?" if suggestions else ""
@@ -51,7 +56,7 @@ def word_section(word, lexicon) -> str:
     return ""
 
 
-def material_section(material: dict) -> str:
+def material_section(material: dict[str, Any]) -> str:
     params = material["params"]
     summary = [f"**{material['name']}**"]
     if "base_color" in params:

@@ -13,13 +13,20 @@ from __future__ import annotations
 import dataclasses
 from bisect import bisect_right
 from collections import OrderedDict
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
+from typing import Any, TypeVar
 
 from .. import ast
-from ..api import compile_source
+from ..api import Result, compile_source
+from ..diagnostics import Diagnostic
 from ..document import parse_document
+from ..lexicon import Lexicon
 from ..spans import Span
 from .positions import LineIndex
+
+Node = TypeVar("Node")
+KeepGoing = Callable[[], bool]  # False once a newer edit made the analysis stale
 
 MAX_CACHED_BLOCKS = 20000
 MAX_CACHED_LINES = 50000
@@ -33,10 +40,10 @@ class Cancelled(Exception):
 class BlockResult:
     """What compiling one block gives, in block-relative positions."""
 
-    diagnostics: tuple
-    materials: tuple  # IR material dicts
-    material_lines: tuple  # 1-based block line of each material
-    items: tuple  # AST items (Material / Refinement)
+    diagnostics: tuple[Diagnostic, ...]
+    materials: tuple[dict[str, Any], ...]  # IR material dicts
+    material_lines: tuple[int, ...]  # 1-based block line of each material
+    items: tuple[ast.Item, ...]  # AST items (Material / Refinement)
 
 
 @dataclass(frozen=True, eq=False)
@@ -56,18 +63,19 @@ class Snapshot:
 
     text: str
     index: LineIndex
-    blocks: list
-    _firsts: list | None = None
-    _diagnostics: list | None = None
+    blocks: list[Block]
+    _firsts: list[int] | None = None
+    _diagnostics: list[Diagnostic] | None = None
 
     @property
-    def diagnostics(self) -> list:
+    def diagnostics(self) -> list[Diagnostic]:
         """Every diagnostic with its span in document positions (computed on first use)."""
         if self._diagnostics is None:
             self._diagnostics = [
                 dataclasses.replace(d, span=shift_span(d.span, b.first_line, b.offset))
                 for b in self.blocks
                 for d in b.result.diagnostics
+                if d.span is not None  # every block diagnostic has one (_with_spans)
             ]
         return self._diagnostics
 
@@ -79,7 +87,7 @@ class Snapshot:
             return self.blocks[i]
         return None
 
-    def materials_on(self, line: int) -> list[dict]:
+    def materials_on(self, line: int) -> list[dict[str, Any]]:
         """IR materials whose phrase stands on the 0-based document `line` (several for 'or')."""
         block = self.block_at(line)
         if block is None:
@@ -87,7 +95,7 @@ class Snapshot:
         relative = line - block.first_line + 1
         return [m for m, at in zip(block.result.materials, block.result.material_lines) if at == relative]
 
-    def item_on(self, line: int):
+    def item_on(self, line: int) -> tuple[ast.Item | None, Block | None]:
         """The AST item (Material or Refinement) parsed on `line`, with spans relative to its block."""
         block = self.block_at(line)
         if block is None:
@@ -101,7 +109,7 @@ class Snapshot:
     def words_on(self, line: int) -> list[tuple[ast.Word, int]]:
         """(word, 0-based column) of each word the parser chose a category for on `line`."""
         item, block = self.item_on(line)
-        if item is None:
+        if item is None or block is None:
             return []
         base = self.index.starts[line] - self.index.starts[block.first_line]
         return [(w, w.span.start - base) for w in iter_nodes(item, ast.Word)]
@@ -109,13 +117,13 @@ class Snapshot:
     def colours_on(self, line: int) -> list[tuple[ast.Colour, int, int]]:
         """(colour phrase, start column, end column) of each colour on `line`."""
         item, block = self.item_on(line)
-        if item is None:
+        if item is None or block is None:
             return []
         base = self.index.starts[line] - self.index.starts[block.first_line]
         return [(c, c.span.start - base, c.span.end - base) for c in iter_nodes(item, ast.Colour)]
 
 
-def iter_nodes(node, kind):
+def iter_nodes(node: object, kind: type[Node]) -> Iterator[Node]:
     """Every AST node of `kind` under `node`, in source order."""
     if isinstance(node, kind):
         yield node
@@ -134,18 +142,17 @@ def shift_span(span: Span, lines: int, chars: int) -> Span:
 class Analyzer:
     """Compiles documents block by block and remembers blocks and line kinds by their text."""
 
-    def __init__(self, lexicon, filename: str = "<lsp>"):
+    def __init__(self, lexicon: Lexicon, filename: str = "<lsp>") -> None:
         self.lexicon = lexicon
         self.filename = filename
-        self._kinds: OrderedDict = OrderedDict()
-        self._blocks: OrderedDict = OrderedDict()
+        self._kinds: OrderedDict[str, str | None] = OrderedDict()
+        self._blocks: OrderedDict[str, BlockResult] = OrderedDict()
 
     def line_kind(self, text: str) -> str | None:
         """'material', 'refinement' or None (blank, comment, or a line that does not parse)."""
-        kind = self._kinds.get(text, False)
-        if kind is not False:
+        if text in self._kinds:
             self._kinds.move_to_end(text)
-            return kind
+            return self._kinds[text]
         items = parse_document(text, self.lexicon, self.filename).items
         kind = None
         if items:
@@ -163,12 +170,12 @@ class Analyzer:
             tuple(_with_spans(result)),
             tuple(result.materials),
             tuple(s.selection.span.line for s in result.states),
-            tuple(result.source_document.items),
+            tuple(_items(result)),
         )
         _remember(self._blocks, text, block, MAX_CACHED_BLOCKS)
         return block
 
-    def analyse(self, text: str, encoding: str = "utf-16", keep_going=lambda: True) -> Snapshot:
+    def analyse(self, text: str, encoding: str = "utf-16", keep_going: KeepGoing = lambda: True) -> Snapshot:
         index = LineIndex(text, encoding)
         blocks = []
         for first, count in self.block_bounds(index.lines, keep_going):
@@ -178,7 +185,7 @@ class Analyzer:
             blocks.append(Block(first, count, index.starts[first], result))
         return Snapshot(text, index, blocks)
 
-    def block_bounds(self, lines: list[str], keep_going):
+    def block_bounds(self, lines: list[str], keep_going: KeepGoing) -> list[tuple[int, int]]:
         """(first line, line count) of each block: a new block starts at every material line."""
         starts = [0]
         for number, line in enumerate(lines):
@@ -190,15 +197,20 @@ class Analyzer:
         return [(a, b - a) for a, b in zip(starts, ends)]
 
 
-def _with_spans(result):
+def _with_spans(result: Result) -> Iterator[Diagnostic]:
     """Diagnostics without a span (W108) are placed on their material's phrase."""
-    phrase = next((item.span for item in result.source_document.items if isinstance(item, ast.Material)), None)
+    phrase = next((item.span for item in _items(result) if isinstance(item, ast.Material)), None)
     fallback = phrase or Span(0, 0, 1, 1)
     for diag in result.diagnostics:
         yield diag if diag.span is not None else dataclasses.replace(diag, span=fallback)
 
 
-def _remember(cache: OrderedDict, key, value, limit: int) -> None:
+def _items(result: Result) -> list[ast.Item]:
+    assert result.source_document is not None, "compile_source keeps the parsed source"
+    return result.source_document.items
+
+
+def _remember(cache: OrderedDict[str, Any], key: str, value: Any, limit: int) -> None:
     cache[key] = value
     if len(cache) > limit:
         cache.popitem(last=False)

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from lsprotocol import types
 
 from ..colour import linear_to_hex
+from .incremental import Snapshot
 
 
-def material_label(material: dict) -> str:
+def material_label(material: dict[str, Any]) -> str:
     params = material["params"]
     parts = []
     if "roughness" in params:
@@ -19,7 +22,7 @@ def material_label(material: dict) -> str:
     return f"{variant['name']}: {label}" if variant else label
 
 
-def inlay_hints(snapshot, where: types.Range) -> list[types.InlayHint]:
+def inlay_hints(snapshot: Snapshot, where: types.Range) -> list[types.InlayHint]:
     out = []
     last = min(where.end.line, len(snapshot.index.lines) - 1)
     for line in range(max(0, where.start.line), last + 1):
@@ -27,7 +30,9 @@ def inlay_hints(snapshot, where: types.Range) -> list[types.InlayHint]:
         if not materials:
             continue
         item, block = snapshot.item_on(line)
-        at = snapshot.index.position(block.offset + item.span.end) if item else snapshot.index.line_end(line)
+        at = snapshot.index.line_end(line)
+        if item is not None and block is not None:
+            at = snapshot.index.position(block.offset + item.span.end)
         label = "→ " + " | ".join(material_label(m) for m in materials)
         out.append(types.InlayHint(position=at, label=label, padding_left=True))
     return out

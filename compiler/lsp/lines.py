@@ -5,7 +5,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..lexicon import Lexicon
+from ..tagged import Tagged
 from ..tagger import TOKEN_RE, Tagger
+from .incremental import Snapshot
 
 
 @dataclass(frozen=True)
@@ -15,16 +18,16 @@ class LineWord:
     text: str
     category: str  # lexicon category, 'name', 'keyword', 'punct' or 'unknown'
     key: str
-    tags: tuple  # every candidate tag the tagger found
+    tags: tuple[str, ...]  # every candidate tag the tagger found
 
 
-def tag_text(text: str, lexicon):
+def tag_text(text: str, lexicon: Lexicon) -> list[Tagged]:
     """Tagged words of a line, with spans whose offsets are the columns on that line."""
     tagged, _diags = Tagger(lexicon).tag_line(text, 1, 0)
     return tagged
 
 
-def line_words(snapshot, line: int, lexicon) -> list[LineWord]:
+def line_words(snapshot: Snapshot, line: int, lexicon: Lexicon) -> list[LineWord]:
     text = snapshot.index.lines[line]
     chosen = {col: word for word, col in snapshot.words_on(line)}
     out = []

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from lsprotocol import types
 
+from ..lexicon import Lexicon
+from .incremental import Snapshot
 from .lines import comment_start, line_words
 from .positions import code_units
 
@@ -36,7 +38,7 @@ TYPE_OF_CATEGORY = {
 INDEX = {name: i for i, name in enumerate(TOKEN_TYPES)}
 
 
-def line_tokens(snapshot, line: int, lexicon) -> list[tuple[int, int, str]]:
+def line_tokens(snapshot: Snapshot, line: int, lexicon: Lexicon) -> list[tuple[int, int, str]]:
     """(start column, end column, token type) on one line, in order."""
     text = snapshot.index.lines[line]
     found = [
@@ -50,7 +52,7 @@ def line_tokens(snapshot, line: int, lexicon) -> list[tuple[int, int, str]]:
     return sorted(found)
 
 
-def semantic_tokens(snapshot, lexicon) -> types.SemanticTokens:
+def semantic_tokens(snapshot: Snapshot, lexicon: Lexicon) -> types.SemanticTokens:
     data: list[int] = []
     encoding = snapshot.index.encoding
     previous_line, previous_start = 0, 0
