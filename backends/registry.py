@@ -12,9 +12,8 @@ from __future__ import annotations
 
 import importlib
 from collections.abc import Mapping
-from dataclasses import dataclass
 from types import ModuleType
-from typing import Any
+from typing import Any, NamedTuple
 
 from cnlmc.material import Document
 
@@ -51,9 +50,9 @@ BUILTIN_BACKENDS = {
 EXTRAS = {"ar": "ar", "bake": "maps", "sheet": "maps"}
 
 
-@dataclass(frozen=True)
-class CommandEntry:
-    """A CLI subcommand a backend brings: where its Command class is, and its one-line help."""
+class CommandEntry(NamedTuple):
+    """A CLI subcommand a backend brings: where its Command class is, and its one-line help.
+    (A NamedTuple, not a dataclass: the CLI imports this module on every start.)"""
 
     target: str
     module: str
@@ -65,16 +64,15 @@ BUILTIN_COMMANDS = {
     "bake": CommandEntry(
         "maps", "cnlmc.backends.maps.commands", "BakeCommand", "bake a material's procedural maps to image files"
     ),
-    # Package C moves these two into backends/preview and backends/ar; until then the adapter module.
     "preview": CommandEntry(
         "preview",
-        "cnlmc.backends.render_commands",
+        "cnlmc.backends.preview.commands",
         "PreviewCommand",
         "render a material file to a PNG (offscreen OpenGL)",
     ),
     "ar": CommandEntry(
         "ar",
-        "cnlmc.backends.render_commands",
+        "cnlmc.backends.ar.command",
         "ARCommand",
         "place the material on a printed marker in a photo or video",
     ),
@@ -121,11 +119,11 @@ def get_target(name: str) -> Target:
     return target if isinstance(target, Target) else ModuleTarget(module)
 
 
-@dataclass(frozen=True)
 class BackendModule:
     """A target as earlier callers see it: emit(ir, raw options) (see Target.emit_ir)."""
 
-    target: Target
+    def __init__(self, target: Target):
+        self.target = target
 
     @property
     def capabilities(self) -> Mapping[str, tuple[str, str]]:
