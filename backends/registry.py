@@ -34,6 +34,7 @@ __all__ = [
     "available",
     "get_backend",
     "get_command",
+    "plugin_command",
     "get_target",
 ]
 
@@ -91,14 +92,19 @@ class TargetUnavailable(LookupError):
     """The target exists but cannot load here (a missing optional dependency)."""
 
 
+def _entry_points(group: str) -> dict[str, str]:
+    """Installed plugins of an entry point group: name -> 'module' or 'module:attribute'."""
+    from importlib.metadata import entry_points  # slow to import: only when plugins are asked for
+
+    return {ep.name: ep.value for ep in entry_points(group=group)}
+
+
 def available(include_plugins: bool = True) -> dict[str, str]:
     """Target name -> the module that provides it."""
     table = dict(BUILTIN_BACKENDS)
     if include_plugins:
-        from importlib.metadata import entry_points  # slow to import: only when plugins are asked for
-
-        for ep in entry_points(group="cnlmc.backends"):
-            table.setdefault(ep.name, ep.value)
+        for name, module in _entry_points("cnlmc.backends").items():
+            table.setdefault(name, module)
     return table
 
 
@@ -143,6 +149,19 @@ def get_command(name: str) -> Command:
     entry = BUILTIN_COMMANDS[name]
     module = _import(entry.module, f"'cnlmc {name}'", EXTRAS.get(name, entry.target))
     command: Command = getattr(module, entry.cls)()
+    return command
+
+
+def plugin_command(name: str) -> Command | None:
+    """The Command a plugin registers as `name` (entry point group 'cnlmc.commands',
+    value 'module:Class'), or None. `cnlmc --help` lists built-in commands only: looking
+    plugins up costs a scan of the installed packages, done when such a command runs."""
+    value = _entry_points("cnlmc.commands").get(name)
+    if value is None:
+        return None
+    module_name, _, attribute = value.partition(":")
+    module = _import(module_name, f"'cnlmc {name}'", name)
+    command: Command = getattr(module, attribute)()
     return command
 
 

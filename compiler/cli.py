@@ -2,15 +2,17 @@
 
 The language's own subcommands are in cnlmc.commands; a backend's subcommands (bake, sheet,
 preview, ar) are listed by the registry by name and help, and only the one that runs is imported.
+A plugin's subcommand (entry point group 'cnlmc.commands') is looked up when no other matches.
 """
 
 from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
 
-from cnlmc.backends.registry import BUILTIN_COMMANDS, Command, TargetUnavailable, get_command
+from cnlmc.backends.registry import BUILTIN_COMMANDS, Command, TargetUnavailable, get_command, plugin_command
 
 from .cache import freeze_long_lived
 from .commands import EXIT_INTERNAL, EXIT_OK, EXIT_USAGE, LANGUAGE_COMMANDS
@@ -37,9 +39,15 @@ def build_parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
         _add(sub.add_parser(command.name, help=command.help), command)
     chosen = chosen_command(argv)
     for name, entry in BUILTIN_COMMANDS.items():
-        subparser = sub.add_parser(name, help=entry.help)
+        backend_parser = sub.add_parser(name, help=entry.help)
         if name == chosen:
-            _add(subparser, _backend_command(name))
+            with _loading():
+                _add(backend_parser, get_command(name))
+    if chosen is not None and chosen not in {c.name for c in LANGUAGE_COMMANDS} | set(BUILTIN_COMMANDS):
+        with _loading():
+            plugin = plugin_command(chosen)
+        if plugin is not None:
+            _add(sub.add_parser(plugin.name, help=plugin.help), plugin)
     return parser
 
 
@@ -48,9 +56,11 @@ def _add(parser: argparse.ArgumentParser, command: Command) -> None:
     parser.set_defaults(handler=command.run)
 
 
-def _backend_command(name: str) -> Command:
+@contextmanager
+def _loading() -> Iterator[None]:
+    """A backend command that cannot load here is a usage error (which extra to install)."""
     try:
-        return get_command(name)
+        yield
     except TargetUnavailable as exc:
         raise UsageError(str(exc)) from None
 

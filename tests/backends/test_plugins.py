@@ -76,3 +76,27 @@ def test_a_plugin_target_object_gets_its_options_parsed(tmp_path):
     assert r.stdout == "red_plastic:1.4905\n"
     r = cnlmc(tmp_path, "compile", "-", "--target", "names", "--option", "seperator=:", stdin="red plastic\n")
     assert r.returncode == 2 and "did you mean 'separator'?" in r.stderr
+
+
+def test_a_plugin_brings_a_subcommand(tmp_path):
+    (tmp_path / "hello_command.py").write_text(
+        textwrap.dedent("""
+        from cnlmc.backends.base import Command
+        class Hello(Command):
+            name = "hello"
+            help = "greet someone"
+            def add_arguments(self, parser):
+                parser.add_argument("who")
+            def run(self, args):
+                print(f"hello {args.who}")
+                return 0
+    """)
+    )
+    info = tmp_path / "hello_command-1.0.dist-info"
+    info.mkdir()
+    (info / "METADATA").write_text("Metadata-Version: 2.1\nName: hello-command\nVersion: 1.0\n")
+    (info / "entry_points.txt").write_text("[cnlmc.commands]\nhello = hello_command:Hello\n")
+    r = cnlmc(tmp_path, "hello", "world")
+    assert r.returncode == 0 and r.stdout == "hello world\n", r.stderr
+    r = cnlmc(tmp_path, "helo", "world")
+    assert r.returncode == 2 and "invalid choice: 'helo'" in r.stderr
