@@ -34,8 +34,8 @@ __all__ = [
     "available",
     "get_backend",
     "get_command",
-    "plugin_command",
     "get_target",
+    "plugin_command",
 ]
 
 BUILTIN_BACKENDS = {
@@ -47,12 +47,11 @@ BUILTIN_BACKENDS = {
     "maps": "cnlmc.backends.maps.target",
     "preview": "cnlmc.backends.preview",
 }
-#: the extra that installs a target's optional dependencies (pip install 'cnlmc[extra]')
-EXTRAS = {"ar": "ar", "bake": "maps", "sheet": "maps"}
 
 
 class CommandEntry(NamedTuple):
-    """A CLI subcommand a backend brings: where its Command class is, and its one-line help.
+    """A CLI subcommand a backend brings: the backend (also the pip extra that installs what it
+    needs), where its Command class is, and its one-line help.
     (A NamedTuple, not a dataclass: the CLI imports this module on every start.)"""
 
     target: str
@@ -147,7 +146,7 @@ def get_backend(name: str) -> BackendModule:
 def get_command(name: str) -> Command:
     """A fresh Command object for `cnlmc NAME`; TargetUnavailable when its backend cannot load."""
     entry = BUILTIN_COMMANDS[name]
-    module = _import(entry.module, f"'cnlmc {name}'", EXTRAS.get(name, entry.target))
+    module = _import(entry.module, f"'cnlmc {name}'", entry.target)
     command: Command = getattr(module, entry.cls)()
     return command
 
