@@ -18,6 +18,7 @@ from cnlmc.backends.registry import (
     BackendRefused,
     Command,
     EmitResult,
+    Target,
     TargetUnavailable,
     UnknownTarget,
     available,
@@ -140,18 +141,26 @@ class CompileCommand(Command):
         report(result, source, name)
         if not result.ok:
             return EXIT_ERRORS
-        options: dict[str, object] = {**option_pairs(args.option), "seed": args.seed}
-        if args.output:
-            options.setdefault("output", args.output)
-        try:
-            emitted = target.emit_ir(result.document, options)
-        except BackendRefused as exc:
-            print(f"error[E201]: {exc}", file=sys.stderr)
+        emitted = run_target(target, result, args)
+        if emitted is None:
             return EXIT_ERRORS
-        except ValueError as exc:
-            raise UsageError(str(exc)) from None
         print_notes(emitted)
         return deliver(emitted.artifacts, args.output)
+
+
+def run_target(target: Target, result: Result, args: argparse.Namespace) -> EmitResult | None:
+    """The target on the compiled document with the --option pairs (plus seed and output);
+    None when it refuses a material (said on stderr); a bad option is a usage error."""
+    options: dict[str, object] = {**option_pairs(args.option), "seed": args.seed}
+    if args.output:
+        options.setdefault("output", args.output)
+    try:
+        return target.emit_ir(result.document, options)
+    except BackendRefused as exc:
+        print(f"error[E201]: {exc}", file=sys.stderr)
+        return None
+    except ValueError as exc:
+        raise UsageError(str(exc)) from None
 
 
 def print_notes(emitted: EmitResult) -> None:
