@@ -84,23 +84,41 @@ def emit(ir: JSONDict | Document, target: str, options: dict[str, object] | None
 class Session:
     """Interactive refinement: session.refine("darker") changes the material, as in the paper."""
 
-    def __init__(self, phrase: str, lexicon: Lexicon | None = None, seed: int = 0) -> None:
+    def __init__(
+        self, phrase: str, lexicon: Lexicon | None = None, seed: int = 0, filename: str = "<session>"
+    ) -> None:
         self.lines = [phrase]
         self.lexicon = lexicon or lexicon_for()
         self.seed = seed
+        self.filename = filename
         self.result = self._compile()
 
     def _compile(self) -> Result:
-        return compile_source("\n".join(self.lines), "<session>", self.lexicon, self.seed)
+        return compile_source(self.text(), self.filename, self.lexicon, self.seed)
+
+    def text(self, extra: Iterable[str] = ()) -> str:
+        """The source compiled: the phrase and every refinement line (plus `extra` lines)."""
+        return "\n".join([*self.lines, *extra])
+
+    def trial(self, words: str) -> Result:
+        """What adding the refinement line would compile to; the session is left as it is."""
+        return compile_source(self.text([words]), self.filename, self.lexicon, self.seed)
 
     def refine(self, words: str) -> JSONDict:
         """Apply a refinement line; a line that fails leaves the material as it was."""
-        self.lines.append(words)
-        result = self._compile()
+        result = self.trial(words)
         if not result.ok:
-            self.lines.pop()
             raise ValueError("; ".join(d.message for d in result.diagnostics if d.is_error))
+        self.lines.append(words)
         self.result = result
+        return self.material
+
+    def undo(self) -> JSONDict:
+        """Drop the last refinement line (ValueError when there is none); returns the material."""
+        if len(self.lines) < 2:
+            raise ValueError("nothing to undo")
+        self.lines.pop()
+        self.result = self._compile()
         return self.material
 
     @property
