@@ -33,9 +33,11 @@ def orbit(frames: int) -> list[tuple[np.ndarray, np.ndarray]]:
     return poses
 
 
-def stage_times(photo: np.ndarray, material: dict, opts) -> dict[str, float]:
-    from cnlmc.backends.ar import camera_matrix, over_photo, render_layer
+def stage_times(photo: np.ndarray, material: dict, compositor) -> dict[str, float]:
+    from cnlmc.backends.ar import camera_matrix, over_photo
     from cnlmc.backends.ar.pose import detect, estimate_pose, find_marker
+
+    opts = compositor.opts
 
     height, width = photo.shape[:2]
     t0 = time.perf_counter()
@@ -44,7 +46,7 @@ def stage_times(photo: np.ndarray, material: dict, opts) -> dict[str, float]:
     K = camera_matrix(opts, width, height)
     pose = estimate_pose(find_marker(photo), opts.marker_length, K, opts.dist)
     t2 = time.perf_counter()
-    rgba, _, _ = render_layer(pose, width, height, material, opts)
+    rgba, _, _ = compositor.render_layer(pose, width, height, material)
     t3 = time.perf_counter()
     over_photo(rgba, photo)
     t4 = time.perf_counter()
@@ -58,11 +60,9 @@ def stage_times(photo: np.ndarray, material: dict, opts) -> dict[str, float]:
     }
 
 
-def whole_frame_ms(photo: np.ndarray, material: dict, opts) -> float:
-    from cnlmc.backends.ar import composite
-
+def whole_frame_ms(photo: np.ndarray, material: dict, compositor) -> float:
     start = time.perf_counter()
-    composite(photo, material, opts)
+    compositor.composite(photo, material)
     return (time.perf_counter() - start) * 1e3
 
 
@@ -76,7 +76,7 @@ def main(argv=None) -> int:
     parser.add_argument("--msaa", default="", help="samples per pixel (default: the AR default)")
     args = parser.parse_args(argv)
     from cnlmc.api import compile_source
-    from cnlmc.backends.ar import parse_options
+    from cnlmc.backends.ar import Compositor, parse_options
     from cnlmc.backends.ar.synthetic import synthetic_photo
 
     material = compile_source(args.phrase + "\n").ir["materials"][0]
@@ -89,9 +89,10 @@ def main(argv=None) -> int:
     for size in args.sizes.split(","):
         width, height = (int(x) for x in size.split("x"))
         photos = [synthetic_photo(r, t, width, height, seed=i)[0] for i, (r, t) in enumerate(orbit(args.frames))]
-        whole_frame_ms(photos[0], material, opts)  # warm-up: compile, tables
-        stages = [stage_times(p, material, opts) for p in photos]
-        frames = [whole_frame_ms(p, material, opts) for p in photos]
+        with Compositor(opts) as compositor:  # what a video keeps from frame to frame
+            whole_frame_ms(photos[0], material, compositor)  # warm-up: compile, tables
+            stages = [stage_times(p, material, compositor) for p in photos]
+            frames = [whole_frame_ms(p, material, compositor) for p in photos]
         med = {k: float(np.median([s[k] for s in stages])) for k in stages[0]}
         frame = float(np.median(frames))
         print(

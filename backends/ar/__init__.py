@@ -20,13 +20,13 @@ from __future__ import annotations
 from .compositor import ARFrame, Compositor, composite, over_photo, render_layer
 from .errors import ARError, AROptionError, NoMarkerFound, PhotoUnreadable
 from .marker import write_marker
-from .options import DEFAULTS, NAME, AROptions, camera_matrix, parse_options, pick_material
+from .options import NAME, OPTIONS, AROptions, camera_matrix, parse_options, pick_material
 from .photo import ARReport, ar_command, read_photo, write_image_atomic
 from .shadow import ShadowOverlay, footprint
 from .video import ar_video
 
 __all__ = [
-    "DEFAULTS",
+    "OPTIONS",
     "NAME",
     "ARError",
     "ARFrame",

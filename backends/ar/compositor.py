@@ -11,6 +11,7 @@ from ..preview.environment import environment
 from ..preview.meshes import fit, mesh_by_name
 from ..preview.render import Renderer, Scene
 from ..preview.resources import Resources
+from ..preview.shader import MaterialLike
 from .options import AROptions, camera_matrix, parse_options
 from .pose import Pose, estimate_pose, find_marker, gl_projection, gl_view
 from .shadow import ShadowOverlay
@@ -48,7 +49,7 @@ class Compositor:
     def __exit__(self, *exc) -> None:
         self.close()
 
-    def composite(self, photo: np.ndarray, material: dict, source: str = "the image") -> ARFrame:
+    def composite(self, photo: np.ndarray, material: MaterialLike, source: str = "the image") -> ARFrame:
         """Detect the marker, estimate the pose, render the object on it and composite (BGR in, BGR out)."""
         opts = self.opts
         height, width = photo.shape[:2]
@@ -57,7 +58,7 @@ class Compositor:
         rgba, model, view_projection = self.render_layer(pose, width, height, material)
         return ARFrame(over_photo(rgba, photo), pose, rgba, model, view_projection)
 
-    def render_layer(self, pose: Pose, width: int, height: int, material: dict):
+    def render_layer(self, pose: Pose, width: int, height: int, material: MaterialLike):
         """The object (and its shadow) as an RGBA layer for a camera at `pose`:
         (rgba top row first, model matrix, view-projection matrix)."""
 
@@ -81,14 +82,14 @@ class Compositor:
 
 
 def composite(
-    photo: np.ndarray, material: dict, options: dict | AROptions | None = None, source: str = "the image"
+    photo: np.ndarray, material: MaterialLike, options: dict | AROptions | None = None, source: str = "the image"
 ) -> ARFrame:
     """One photo composited (Compositor.composite, its resources released afterwards)."""
     with Compositor(options) as compositor:
         return compositor.composite(photo, material, source)
 
 
-def render_layer(pose: Pose, width: int, height: int, material: dict, opts: AROptions):
+def render_layer(pose: Pose, width: int, height: int, material: MaterialLike, opts: AROptions):
     """One layer rendered (Compositor.render_layer, its resources released afterwards)."""
     with Compositor(opts) as compositor:
         return compositor.render_layer(pose, width, height, material)

@@ -1,34 +1,40 @@
-"""The AR command's options (`--option key=value` strings), parsed once, and what they choose:
-the camera matrix and the IR material to place."""
+"""The AR command's options, declared once on top of the preview's (cnlmc.backends.base.Option)
+and parsed once, and what they choose: the camera matrix and the IR material to place."""
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
-from ..capabilities import COMPILER_OPTIONS
+from cnlmc.material import Document, Material
+
+from ..base import Option, OptionError, as_document
+from ..base import parse_options as parse_declared
+from ..preview.options import GLSL_PASSED, checked_tier, glsl_pairs, preview_option
 from .errors import AROptionError
 from .pose import default_intrinsics
 
 NAME = "ar"
-DEFAULTS = {
-    "marker_length": "0.1",
-    "marker_id": "",
-    "scale": "1.0",
-    "intrinsics": "",
-    "fov": "60",
-    "dist": "",
-    "mesh": "teapot",
-    "tier": "splitsum",
-    "env": "studio",
-    "shadow": "0.65",
-    "material": "",
-    "exposure": "1.0",
-    "msaa": "4",
-    "fresnel": "exact",
-    "multiscatter": "off",
-}
+#: AR's own options, then the preview's it renders with (AR's defaults: the teapot, msaa 4)
+OPTIONS: tuple[Option, ...] = (
+    Option("marker_length", float, 0.1, doc="the printed marker's side (any unit: the scene is relative to it)"),
+    Option("marker_id", int, None, doc="the marker to use (default: the largest found)"),
+    Option("scale", float, 1.0, doc="the object's bounding-sphere diameter in marker lengths"),
+    Option("intrinsics", str, None, doc="fx,fy,cx,cy in pixels (default: from the image size and fov)"),
+    Option("fov", float, 60.0, doc="horizontal field of view in degrees, without intrinsics"),
+    Option("dist", str, None, doc="lens distortion k1,k2,p1,p2[,k3[,k4,k5,k6]]"),
+    Option("shadow", float, 0.65, doc="contact shadow opacity (0: none)"),
+    Option("material", str, None, doc="the IR material to place: its name or index (default the first)"),
+    preview_option("mesh", default="teapot"),
+    preview_option("tier", default="splitsum"),
+    preview_option("env"),
+    preview_option("exposure"),
+    preview_option("msaa", default=4, doc="samples per pixel (4 for a photo; a video's default 0: the edge filter)"),
+    *(preview_option(name) for name in GLSL_PASSED),
+)
 
 
 @dataclass
@@ -49,7 +55,7 @@ class AROptions:
     glsl: dict = field(default_factory=dict)
 
 
-def _floats(text: str, count: tuple, what: str) -> tuple | None:
+def _floats(text: str | None, count: tuple[int, ...], what: str) -> tuple[float, ...] | None:
     if not text:
         return None
     try:
@@ -61,35 +67,29 @@ def _floats(text: str, count: tuple, what: str) -> tuple | None:
     return values
 
 
-def parse_options(options: dict | None) -> AROptions:
-    options = {k: str(v) for k, v in (options or {}).items() if k not in COMPILER_OPTIONS}
-    unknown = sorted(set(options) - set(DEFAULTS))
-    if unknown:
-        raise AROptionError(f"ar: unknown option(s) {', '.join(unknown)}; known: {', '.join(DEFAULTS)}")
-    o = {**DEFAULTS, **options}
+def parse_options(pairs: Mapping[str, object] | None) -> AROptions:
+    """Raw `--option` pairs -> AROptions (AROptionError, with did-you-mean, when wrong)."""
     try:
-        length, scale, fov = float(o["marker_length"]), float(o["scale"]), float(o["fov"])
-        shadow, exposure, msaa = float(o["shadow"]), float(o["exposure"]), int(o["msaa"])
-        marker_id = int(o["marker_id"]) if o["marker_id"] else None
-    except ValueError as exc:
-        raise AROptionError(f"ar: {exc}") from None
-    if length <= 0 or scale <= 0 or not 1 < fov < 179:
+        o = parse_declared(OPTIONS, pairs, NAME)
+    except OptionError as exc:
+        raise AROptionError(str(exc)) from None
+    if o.marker_length <= 0 or o.scale <= 0 or not 1 < o.fov < 179:
         raise AROptionError("ar: marker_length and scale must be positive and fov within (1, 179) degrees")
     return AROptions(
-        length,
-        marker_id,
-        scale,
-        _floats(o["intrinsics"], (4,), "intrinsics"),
-        fov,
-        _floats(o["dist"], (4, 5, 8), "dist"),
-        o["mesh"],
-        o["tier"],
-        o["env"],
-        shadow,
-        o["material"],
-        exposure,
-        msaa,
-        {"fresnel": o["fresnel"], "multiscatter": o["multiscatter"]},
+        o.marker_length,
+        o.marker_id,
+        o.scale,
+        _floats(o.intrinsics, (4,), "intrinsics"),
+        o.fov,
+        _floats(o.dist, (4, 5, 8), "dist"),
+        o.mesh,
+        checked_tier(o.tier, AROptionError),
+        o.env,
+        o.shadow,
+        o.material or "",
+        o.exposure,
+        o.msaa,
+        glsl_pairs(o),
     )
 
 
@@ -100,8 +100,12 @@ def camera_matrix(opts: AROptions, width: int, height: int) -> np.ndarray:
     return default_intrinsics(width, height, opts.fov)
 
 
-def pick_material(ir: dict, which: str) -> dict:
-    materials = ir["materials"]
+IR = Document | Mapping[str, Any]  # the typed document, or its JSON form
+
+
+def pick_material(ir: IR, which: str) -> Material:
+    """The IR material the `material` option names (its name or index; default the first)."""
+    materials = as_document(ir).materials
     if not materials:
         raise AROptionError("ar: the IR has no material")
     if not which:
@@ -109,6 +113,6 @@ def pick_material(ir: dict, which: str) -> dict:
     if which.isdigit() and int(which) < len(materials):
         return materials[int(which)]
     for m in materials:
-        if m["name"] == which:
+        if m.name == which:
             return m
-    raise AROptionError(f"ar: no material {which!r} (have: {', '.join(m['name'] for m in materials)})")
+    raise AROptionError(f"ar: no material {which!r} (have: {', '.join(m.name for m in materials)})")

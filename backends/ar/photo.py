@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -11,7 +12,7 @@ from cnlmc.output import write_atomic
 
 from .compositor import composite
 from .errors import AROptionError, PhotoUnreadable
-from .options import parse_options, pick_material
+from .options import IR, parse_options, pick_material
 
 
 def read_photo(path) -> np.ndarray:
@@ -35,7 +36,9 @@ class ARReport:
     notes: list = field(default_factory=list)
 
 
-def ar_command(photo_path, ir: dict, out_path, options: dict | None = None) -> ARReport:
+def ar_command(
+    photo_path: str | Path, ir: IR, out_path: str | Path, options: Mapping[str, object] | None = None
+) -> ARReport:
     """Photo with a printed marker -> the same photo with the material's object standing on it.
     Raises NoMarkerFound ("no marker found in photo.jpg ..."), PhotoUnreadable, AROptionError."""
     opts = parse_options(options)

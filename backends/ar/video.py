@@ -3,18 +3,25 @@
 from __future__ import annotations
 
 import os
+from collections.abc import Mapping
 from pathlib import Path
 
 from .compositor import Compositor
 from .errors import NoMarkerFound, PhotoUnreadable
-from .options import parse_options, pick_material
+from .options import IR, parse_options, pick_material
 from .photo import ARReport
 
 #: video frames: no multisampling (bench/ar_frames.py: msaa 4 costs about 3x per frame on llvmpipe).
 VIDEO_MSAA = "0"
 
 
-def ar_video(video_path, ir: dict, out_path, options: dict | None = None, max_frames: int | None = None) -> ARReport:
+def ar_video(
+    video_path: str | Path,
+    ir: IR,
+    out_path: str | Path,
+    options: Mapping[str, object] | None = None,
+    max_frames: int | None = None,
+) -> ARReport:
     """Frames in, frames out (OpenCV VideoCapture / VideoWriter, mp4v). Frames without a marker
     pass through unchanged and are counted in `missed`; none found at all raises NoMarkerFound."""
     import cv2
@@ -49,7 +56,7 @@ def _composite_frames(compositor, capture, video_path, material, out_path: Path,
             if writer is None:
                 out_path.parent.mkdir(parents=True, exist_ok=True)
                 writer = cv2.VideoWriter(
-                    str(partial), cv2.VideoWriter_fourcc(*"mp4v"), fps, (frame.shape[1], frame.shape[0])
+                    str(partial), cv2.VideoWriter.fourcc(*"mp4v"), fps, (frame.shape[1], frame.shape[0])
                 )
             writer.write(frame)
     finally:

@@ -23,6 +23,7 @@ One row when α is uniform; ROWS rows over sqrt(α) when a roughness map varies 
 
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import json
 from functools import lru_cache
@@ -35,6 +36,7 @@ from cnlmc.bsdf.alpha import anisotropy_stretch
 from cnlmc.bsdf.evaluate import albedo, evaluate, material_alpha
 from cnlmc.bsdf.geometry import dir_from_mu
 from cnlmc.cache import cached
+from cnlmc.material import RGB, Material
 
 BSDF_SOURCES = Path(cnlmc.bsdf.__file__).parent
 MU_SIZE = 32
@@ -59,19 +61,17 @@ FIT_SMOOTH = 0.05  # ... this fraction of the fit's error (keeps the tables smoo
 FIT_BLUR = 1.5  # then a Gaussian of this many texels over cos θv (no steps)
 
 
-def _variant(material: dict, colour, alpha=None) -> dict:
-    params = {**material["params"], "base_color": list(colour)}
-    if alpha is not None:
-        params["alpha"] = list(alpha)
-    return {**material, "params": params}
+def _variant(material: Material, colour: RGB, alpha: tuple[float, float]) -> Material:
+    """The material with another base colour and α (a table row of it)."""
+    return dataclasses.replace(material, params=dataclasses.replace(material.params, base_color=colour, alpha=alpha))
 
 
-def _row_alphas(material: dict, mapped: bool) -> list:
+def _row_alphas(material: Material, mapped: bool) -> list[tuple[float, float]]:
     """(αx, αy) per row: the material's own, or sqrt(α) at texel centres with its anisotropy."""
     if not mapped:
-        return [tuple(float(a) for a in material_alpha(material))]
-    params = material["params"]
-    aniso = float(params.get("anisotropy") or 0.0) if material["model"].get("anisotropic") else 0.0
+        ax, ay = material_alpha(material)
+        return [(float(ax), float(ay))]
+    aniso = float(material.params.anisotropy) if material.model.anisotropic else 0.0
     s = float(anisotropy_stretch(aniso))
     rows = ((np.arange(ROWS) + 0.5) / ROWS) ** 2
     return [(min(max(a / s, 1e-3), 1.0), min(max(a * s, 1e-3), 1.0)) for a in rows]
@@ -81,12 +81,12 @@ def _mus() -> np.ndarray:
     return (np.arange(MU_SIZE) + 0.5) / MU_SIZE
 
 
-def _directional(material: dict, options: dict, moment: bool = False) -> np.ndarray:
+def _directional(material: Material, options: dict, moment: bool = False) -> np.ndarray:
     """(MU_SIZE, 3) directional albedo at the texel centres of cos θo (azimuth-averaged when
     anisotropic); with `moment`, (MU_SIZE, 2) mean-over-RGB first moments of the lobe instead:
     its component towards the viewer (in the tangent plane) and along the normal."""
     mus = _mus()
-    phis = (0.0, np.pi / 4, np.pi / 2) if material["model"].get("anisotropic") else (0.0,)
+    phis = (0.0, np.pi / 4, np.pi / 2) if material.model.anisotropic else (0.0,)
 
     def one(phi):  # every mu at once (a batch of directions)
         if not moment:
@@ -108,7 +108,7 @@ def _lean(toward: np.ndarray, along: np.ndarray) -> np.ndarray:
     return -np.arctan2(toward, np.maximum(along, 1e-12)) / theta_v
 
 
-def _leans(black_material: dict, white_material: dict, options: dict) -> tuple[np.ndarray, np.ndarray]:
+def _leans(black_material: Material, white_material: Material, options: dict) -> tuple[np.ndarray, np.ndarray]:
     """(MU_SIZE,) lean of the black lobe and of the tint lobe (tint = white − black)."""
     white = _directional(white_material, options, moment=True)
     black = _directional(black_material, options, moment=True)
@@ -156,7 +156,7 @@ def _basis():
     return points, corr, params, kernels, ck, ck @ kernels.T
 
 
-def _lobe_masses(material: dict, options: dict) -> np.ndarray:
+def _lobe_masses(material: Material, options: dict) -> np.ndarray:
     """(MU_SIZE, FIT_POINTS) the lobe f cos θi (mean over RGB) on the fit's points, per cos θv
     (the viewer at azimuth 0: the mirror side is −x), each row summing to 1 (0 for no lobe)."""
     points = _basis()[0]
@@ -209,13 +209,16 @@ def _fit(masses: np.ndarray, alpha: float) -> np.ndarray:
             k = int(np.argmin(total))
             if best is None or total[k] < best[0]:
                 best = (total[k], i, k, w[k])
+        assert best is not None  # firsts is never empty
         _, i, k, w = best
         prev = (i, k)
         out[j] = ((params[i][0], params[i][1], 1.0 - w), (params[k][0], params[k][1], w))
     return out
 
 
-def _kernels(material: dict, alpha, options: dict, lean: np.ndarray, fitted: bool) -> np.ndarray:
+def _kernels(
+    material: Material, alpha: tuple[float, float], options: dict, lean: np.ndarray, fitted: bool
+) -> np.ndarray:
     """(2 MU_SIZE, 4): two sections (kernel 1, kernel 2) of (lean, α / the lobe's α, weight,
     fitted) per cos θv; lean = the kernel's direction as a fraction of θv (as `_lean`), its α
     relative to the lobe's so that rows of a roughness map interpolate. Not fitted (fitted = 0):
@@ -249,7 +252,7 @@ def _blur(values: np.ndarray) -> np.ndarray:
     return sum(t * padded[i : i + len(values)] for i, t in enumerate(taps))
 
 
-def split_fitted(material: dict, mapped_roughness: bool = False) -> bool:
+def split_fitted(material: Material, mapped_roughness: bool = False) -> bool:
     """Whether the material's tables hold a fitted kernel pair (for the shader: two environment
     lookups for its specular lobe, or one). Mapped roughness: its rougher rows are fitted."""
     if not any(_fitted_lobes(material)):
@@ -257,33 +260,34 @@ def split_fitted(material: dict, mapped_roughness: bool = False) -> bool:
     return bool(mapped_roughness) or float(np.sqrt(np.prod(material_alpha(material)))) >= FIT_ALPHA
 
 
-def _fitted_lobes(material: dict) -> tuple[bool, bool]:
+def _fitted_lobes(material: Material) -> tuple[bool, bool]:
     """(black, tint): which lobe is one isotropic microfacet reflection (fitted): the
     dielectric's specular lobe (black) or the conductor's (tint); none under a coat."""
-    model = material["model"]
-    simple = (
-        model["base"] in ("dielectric", "conductor", "glass") and not model.get("coat") and not model.get("anisotropic")
-    )
-    return simple and model["base"] != "conductor", simple and model["base"] == "conductor"
+    model = material.model
+    simple = model.base in ("dielectric", "conductor", "glass") and not model.coat and not model.anisotropic
+    return simple and model.base != "conductor", simple and model.base == "conductor"
 
 
-def _tables(material_json: str, fresnel: str, multiscatter: bool, mapped: bool) -> tuple:
+Tables = tuple[np.ndarray, np.ndarray]
+
+
+def _tables(material: Material, fresnel: str, multiscatter: bool, mapped: bool) -> Tables:
     """Stored on disk (cnlmc.cache, keyed by the inputs and by the source files of the BSDF code
     and of this module): a mapped material's 8 rows take a few seconds."""
-    inputs = json.dumps([material_json, fresnel, multiscatter, mapped, MU_SIZE, ROWS, SAMPLES, SECTIONS])
+    inputs = json.dumps([_table_key(material), fresnel, multiscatter, mapped, MU_SIZE, ROWS, SAMPLES, SECTIONS])
     kind = "albedo-tables-" + hashlib.sha256(inputs.encode()).hexdigest()[:20]
     sources = [Path(__file__)] + sorted(BSDF_SOURCES.glob("*.py"))
-    return cached(kind, sources, lambda: _integrate(material_json, fresnel, multiscatter, mapped))
+    tables: Tables = cached(kind, sources, lambda: _integrate(material, fresnel, multiscatter, mapped))
+    return tables
 
 
-def _integrate(material_json: str, fresnel: str, multiscatter: bool, mapped: bool) -> tuple:
-    material = json.loads(material_json)
+def _integrate(material: Material, fresnel: str, multiscatter: bool, mapped: bool) -> Tables:
     options = {"fresnel": fresnel, "multiscatter": multiscatter}
     fit_black, fit_tint = _fitted_lobes(material)
     black_rows, tint_rows = [], []
     for alpha in _row_alphas(material, mapped):
-        black_material = _variant(material, (0, 0, 0), alpha)
-        white_material = _variant(material, (1, 1, 1), alpha)
+        black_material = _variant(material, (0.0, 0.0, 0.0), alpha)
+        white_material = _variant(material, (1.0, 1.0, 1.0), alpha)
         black = _directional(black_material, options)
         white = _directional(white_material, options)
         black_lean, tint_lean = _leans(black_material, white_material, options)
@@ -307,12 +311,14 @@ def _integrate(material_json: str, fresnel: str, multiscatter: bool, mapped: boo
     return np.array(black_rows, np.float32), np.array(tint_rows, np.float32)
 
 
-def _table_key(material: dict) -> str:
-    return json.dumps({"model": material["model"], "params": material["params"]}, sort_keys=True, default=float)
+def _table_key(material: Material) -> str:
+    """What the tables depend on: the material's model and parameters (not its name or maps)."""
+    ir = material.to_ir()
+    return json.dumps({"model": ir["model"], "params": ir["params"]}, sort_keys=True)
 
 
 def albedo_tables(
-    material: dict, fresnel: str = "exact", multiscatter: bool = False, mapped_roughness: bool = False
+    material: Material, fresnel: str = "exact", multiscatter: bool = False, mapped_roughness: bool = False
 ) -> tuple[np.ndarray, np.ndarray]:
     """(black, tint) tables, each (rows, SECTIONS * MU_SIZE, 4) float32: row = sqrt(α) texel of
     the base lobe; three sections of MU_SIZE columns over cos θo:
@@ -322,7 +328,7 @@ def albedo_tables(
       [2 MU, 3 MU) kernel 2: likewise. Not fitted (fitted = 0, a smooth lobe): kernel 1 is the
                   lean with weight 1, and the lobe is looked up once, at exactly α.
     Stored on disk; `TableCache` keeps them in memory too."""
-    return _tables(_table_key(material), fresnel, bool(multiscatter), bool(mapped_roughness))
+    return _tables(material, fresnel, bool(multiscatter), bool(mapped_roughness))
 
 
 class TableCache:
@@ -330,13 +336,13 @@ class TableCache:
     material's model and parameters and the options, not by its name)."""
 
     def __init__(self) -> None:
-        self._tables: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
+        self._tables: dict[tuple[str, str, bool, bool], Tables] = {}
 
     def tables(
-        self, material: dict, fresnel: str = "exact", multiscatter: bool = False, mapped_roughness: bool = False
-    ) -> tuple[np.ndarray, np.ndarray]:
+        self, material: Material, fresnel: str = "exact", multiscatter: bool = False, mapped_roughness: bool = False
+    ) -> Tables:
         """albedo_tables(material, fresnel, multiscatter, mapped_roughness), made once."""
         key = (_table_key(material), fresnel, bool(multiscatter), bool(mapped_roughness))
         if key not in self._tables:
-            self._tables[key] = _tables(*key)
+            self._tables[key] = _tables(material, fresnel, bool(multiscatter), bool(mapped_roughness))
         return self._tables[key]

@@ -184,6 +184,8 @@ def write_exr(path, image: np.ndarray) -> None:
 
     h, w, c = image.shape
     out = oiio.ImageOutput.create(str(path))
+    if out is None:
+        raise EnvironmentError(f"cannot write {path}: {oiio.geterror()}")
     out.open(str(path), oiio.ImageSpec(w, h, c, oiio.FLOAT))
     out.write_image(np.ascontiguousarray(image, np.float32))
     out.close()

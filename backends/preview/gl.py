@@ -24,7 +24,8 @@ def create_context() -> Any:
     try:
         import moderngl
 
-        return moderngl.create_context(standalone=True, backend="egl", require=330)
+        settings: dict[str, Any] = {"standalone": True, "backend": "egl", "require": 330}
+        return moderngl.create_context(**settings)
     except Exception as exc:  # pragma: no cover - depends on the machine
         raise PreviewUnavailable(
             f"preview: cannot create an OpenGL context on EGL ({exc}); "

@@ -14,11 +14,20 @@ Tested under Xvfb: tests/preview/test_live_window.py.
 
 from __future__ import annotations
 
-import base64
-import os
+import difflib
 import sys
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
+from typing import Any, TextIO
+
+from cnlmc.api import Session
+from cnlmc.diagnostics import did_you_mean, render
+from cnlmc.material import Material
+
+from .frames import preview_command
+from .options import parse_options
+from .resources import Resources
+from .window import Window
 
 PROMPT = "refine> "
 COMMANDS = {
@@ -39,41 +48,36 @@ class Step:
     quit: bool = False
 
 
-@dataclass
 class LiveSession:
-    """The material file plus the refinement lines typed so far, and how it is rendered."""
+    """A refinement session (cnlmc.api.Session over the material file) and how it is rendered:
+    the output PNG, the render options, and the renderer's resources, kept from one step to
+    the next until close()."""
 
-    source: str
-    out_path: Path
-    options: dict
-    lexicon: object = None
-    lines: list = field(default_factory=list)
-
-    def __post_init__(self):
-        self.result = self._compile(self.lines)
-        if not self.result.ok:
+    def __init__(self, source: str, out_path: Path, options: dict[str, Any], lexicon: Any = None):
+        body = source if source.endswith("\n") else source + "\n"
+        # the file's text is the session's first line; refinement lines follow it
+        self.session = Session(body[:-1], lexicon, filename=SOURCE_NAME)
+        if not self.session.result.ok:
             raise ValueError("the material does not compile")
-        self._resources = None  # the renderer's resources, made on the first draw, kept till close()
+        self.out_path = Path(out_path)
+        self.options = dict(options)
+        self._resources: Resources | None = None
+
+    @property
+    def lines(self) -> list[str]:
+        """The refinement lines typed so far."""
+        return self.session.lines[1:]
+
+    @property
+    def material(self) -> Material:
+        """The refined material: the file's last."""
+        return self.session.result.document.materials[-1]
 
     def close(self) -> None:
         """Release what rendering made (the GL context and its caches)."""
         if self._resources is not None:
             self._resources.release()
             self._resources = None
-
-    # -- compiling
-    def text(self, lines=None) -> str:
-        body = self.source if self.source.endswith("\n") else self.source + "\n"
-        return body + "".join(line + "\n" for line in (self.lines if lines is None else lines))
-
-    def _compile(self, lines):
-        from cnlmc.api import compile_source
-
-        return compile_source(self.text(lines), SOURCE_NAME, self.lexicon)
-
-    @property
-    def material(self) -> dict:
-        return self.result.ir["materials"][-1]
 
     # -- one line typed at the prompt
     def step(self, line: str) -> Step:
@@ -85,17 +89,15 @@ class LiveSession:
         return self.refine(line)
 
     def refine(self, line: str) -> Step:
-        from cnlmc.diagnostics import render
-
-        trial = self._compile(self.lines + [line])
-        if not trial.ok:
-            source = self.text(self.lines + [line])
-            return Step(False, "\n".join(render(d, source, SOURCE_NAME) for d in trial.diagnostics if d.is_error))
         before = self.material
-        self.lines.append(line)
-        self.result = trial
+        try:
+            self.session.refine(line)
+        except ValueError:
+            trial = self.session.trial(line)
+            source = self.session.text([line])
+            return Step(False, "\n".join(render(d, source, SOURCE_NAME) for d in trial.diagnostics if d.is_error))
         return Step(
-            True, "\n".join(changes(before, self.material) or ["  (no parameter changed)"]) + "\n" + self.draw()
+            True, "\n".join(changes_of(before, self.material) or ["  (no parameter changed)"]) + "\n" + self.draw()
         )
 
     def command(self, line: str) -> Step:
@@ -106,26 +108,24 @@ class LiveSession:
         if name == ":help":
             return Step(True, "\n".join(f"  {k:12s} {v}" for k, v in COMMANDS.items()))
         if name == ":show":
-            return Step(True, "\n".join(f"  {k:18s} {_fmt(v)}" for k, v in self.material["params"].items()))
+            params = self.material.to_ir()["params"]
+            return Step(True, "\n".join(f"  {k:18s} {_fmt(v)}" for k, v in params.items()))
         if name == ":undo":
-            if not self.lines:
-                return Step(False, "nothing to undo")
-            before = self.material
-            self.lines.pop()
-            self.result = self._compile(self.lines)
-            return Step(True, "\n".join(changes(before, self.material)) + "\n" + self.draw())
+            return self.undo()
         if name in (":tier", ":mesh") and arg:
             return self.switch(name[1:], arg)
-        import difflib
-
-        from cnlmc.diagnostics import did_you_mean
-
         hint = did_you_mean(difflib.get_close_matches(name, [c.split()[0] for c in COMMANDS], n=2))
         return Step(False, f"unknown command {line!r}" + "".join(f"; {h}" for h in hint) + " (:help lists them)")
 
-    def switch(self, key: str, value: str) -> Step:
-        from . import parse_options
+    def undo(self) -> Step:
+        before = self.material
+        try:
+            self.session.undo()
+        except ValueError as exc:
+            return Step(False, str(exc))
+        return Step(True, "\n".join(changes_of(before, self.material)) + "\n" + self.draw())
 
+    def switch(self, key: str, value: str) -> Step:
         trial = {**self.options, key: value}
         try:
             parse_options(trial)
@@ -137,14 +137,16 @@ class LiveSession:
     # -- rendering
     def draw(self) -> str:
         """Render the current material to the output PNG; returns a one-line report."""
-        from . import preview_command
-        from .resources import Resources
-
         if self._resources is None:
             self._resources = Resources()
-        report = preview_command(self.result.ir, self.out_path, self.options, self._resources)
+        report = preview_command(self.session.result.document, self.out_path, self.options, self._resources)
         frame = report.frames[-1][1]
         return f"  wrote {self.out_path} ({frame.tier}, {frame.ms:.0f} ms)"
+
+
+def changes_of(before: Material, after: Material) -> list[str]:
+    """changes() between two typed materials, read in their IR form (what :show prints)."""
+    return changes(before.to_ir(), after.to_ir())
 
 
 def changes(before: dict, after: dict) -> list[str]:
@@ -177,114 +179,9 @@ def _fmt(value) -> str:
 # ------------------------------------------------------------------------- the loop
 
 
-class Window:
-    """A Tk window showing the output PNG after every step; `Window.open()` is None without a
-    display. The window is exactly the image's size; closing it (the window manager's close
-    button, WM_DELETE_WINDOW) ends the session like :quit."""
-
-    TICK = 0.03  # seconds between event-loop turns while the prompt waits for a line
-
-    def __init__(self, root):
-        import tkinter
-
-        self.root = root
-        self.closed = False
-        self.image = None
-        self._pending = b""  # what stdin gave after the last full line
-        root.title("cnlmc preview")
-        self.label = tkinter.Label(root, borderwidth=0, highlightthickness=0, padx=0, pady=0)
-        self.label.pack()
-        root.protocol("WM_DELETE_WINDOW", self.close)
-
-    @classmethod
-    def open(cls):
-        if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
-            return None
-        try:
-            import tkinter
-        except ImportError:  # Python built without Tk
-            return None
-        try:
-            return cls(tkinter.Tk(className="cnlmc"))
-        except tkinter.TclError:  # the display refuses the connection
-            return None
-
-    def show(self, png_path: Path) -> None:
-        """Display the PNG at `png_path` (replacing the previous image) and draw it now."""
-        if self.closed:
-            return
-        import tkinter
-
-        png_path = Path(png_path)
-        try:
-            image = tkinter.PhotoImage(master=self.root, format="png", data=base64.b64encode(png_path.read_bytes()))
-            self.label.configure(image=image)
-            self.image = image  # the label does not keep the image alive
-            self.root.title(f"{png_path.name} - cnlmc preview")
-        except tkinter.TclError:  # the window went away under us
-            self.close()
-            return
-        self.update()
-
-    def update(self) -> None:
-        """Handle pending window events (redraws, the close button)."""
-        if self.closed:
-            return
-        import tkinter
-
-        try:
-            self.root.update()
-        except tkinter.TclError:
-            self.closed = True
-
-    def close(self) -> None:
-        if self.closed:
-            return
-        self.closed = True
-        import tkinter
-
-        try:
-            self.root.destroy()
-        except tkinter.TclError:
-            pass
-
-    def readline(self, stdin) -> str | None:
-        """stdin's next line, keeping the window alive (redrawn, closable) while waiting;
-        None when the window was closed first."""
-        try:
-            fd = stdin.fileno()
-        except (AttributeError, OSError, ValueError):
-            fd = None
-        if fd is None or os.name == "nt":  # no descriptor to wait on: read, then catch up
-            line = stdin.readline()
-            self.update()
-            return None if self.closed else line
-        import select
-
-        pending = self._pending
-        while True:
-            end = pending.find(b"\n")
-            if end >= 0:
-                self._pending = pending[end + 1 :]
-                return _decode(pending[: end + 1], stdin)
-            self.update()
-            if self.closed:
-                self._pending = pending
-                return None
-            ready, _, _ = select.select([fd], [], [], self.TICK)
-            if ready:
-                chunk = os.read(fd, 65536)
-                if not chunk:  # end of input: the last line may lack its newline
-                    self._pending = b""
-                    return _decode(pending, stdin)
-                pending += chunk
-
-
-def _decode(data: bytes, stdin) -> str:
-    return data.decode(getattr(stdin, "encoding", None) or "utf-8", errors="replace")
-
-
-def run(session: LiveSession, stdin=None, stdout=None, window=None) -> int:
+def run(
+    session: LiveSession, stdin: TextIO | None = None, stdout: TextIO | None = None, window: Window | None = None
+) -> int:
     """Read lines until end of input, :quit or the window being closed. Returns 0 (every error
     was reported and undone). Closes the window and the session on the way out."""
     stdin, stdout = stdin or sys.stdin, stdout or sys.stdout
@@ -296,7 +193,7 @@ def run(session: LiveSession, stdin=None, stdout=None, window=None) -> int:
         session.close()
 
 
-def _loop(session: LiveSession, stdin, stdout, window) -> int:
+def _loop(session: LiveSession, stdin: TextIO, stdout: TextIO, window: Window | None) -> int:
     interactive = stdin.isatty()
     print(session.draw(), file=stdout)
     if window:

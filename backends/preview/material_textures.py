@@ -4,15 +4,20 @@ exactly its alphas."""
 
 from __future__ import annotations
 
-import json
+from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 
 from cnlmc.bsdf.evaluate import coat_alpha, material_alpha
+from cnlmc.material import Material, Params
 
+from ..glsl.options import GlslOptions
+from ..glsl.plan import Sampler
 from ..maps.service import MapBakeError, bake_arrays
 from .environment_pass import EnvResources
 from .resources import Resources
+from .shader import PreviewPlan
 
 MAP_SIZE = 512
 
@@ -25,19 +30,18 @@ def encode_map(role: str, array: np.ndarray) -> np.ndarray:
     return np.flipud(a)
 
 
-def neutral_map(role: str, params: dict, size: int = 4) -> np.ndarray:
+def neutral_map(role: str, params: Params, size: int = 4) -> np.ndarray:
     """A uniform stand-in for a map that cannot be baked (the material's own value)."""
-    value = {
-        "base_color": params.get("base_color", [0.8, 0.8, 0.8]),
-        "normal": [0.0, 0.0, 1.0],
-        "roughness": params.get("roughness", 0.5),
-        "mask": 0.0,
-        "metallic": 0.0,
-    }.get(role, 0.0)
+    values: dict[str, float | tuple[float, ...]] = {
+        "base_color": params.base_color,
+        "normal": (0.0, 0.0, 1.0),
+        "roughness": params.roughness,
+    }
+    value = values.get(role, 0.0)
     return np.broadcast_to(np.asarray(value, np.float32), (size, size) + np.shape(value)).copy()
 
 
-def bake_maps(material: dict, size: int, seed: int, notes: list | None = None) -> dict:
+def bake_maps(material: Material, size: int, seed: int, notes: list[str] | None = None) -> dict[str, np.ndarray]:
     """Bake every map role (the map-baking service); a role whose graph fails gets a neutral
     map and a note."""
     try:
@@ -45,65 +49,51 @@ def bake_maps(material: dict, size: int, seed: int, notes: list | None = None) -
     except MapBakeError:
         pass
     arrays = {}
-    for role in material.get("maps", {}):
+    for role in material.maps:
         try:
             arrays.update(bake_arrays(material, size, seed, roles=[role]))
         except MapBakeError as exc:
-            arrays[role] = neutral_map(role, material["params"])
+            arrays[role] = neutral_map(role, material.params)
             if notes is not None:
-                notes.append(f"preview: {material['name']}: map {role} not baked ({exc.reason}); uniform value used")
+                notes.append(f"preview: {material.name}: map {role} not baked ({exc.reason}); uniform value used")
     return arrays
 
 
-def map_textures(resources: Resources, material: dict, samplers: list, size: int = MAP_SIZE, seed: int = 0) -> dict:
-    """sampler name -> texture, baked with cnlmc.backends.maps (made once per maps and parameters)."""
+def map_textures(
+    resources: Resources, material: Material, samplers: Sequence[Sampler], size: int = MAP_SIZE, seed: int = 0
+) -> dict[str, Any]:
+    """sampler name -> texture, baked with the map-baking service (made once per material content)."""
     if not samplers:
         return {}
-    key = (
-        "maps",
-        json.dumps(material.get("maps", {}), sort_keys=True),
-        json.dumps(material["params"], sort_keys=True, default=str),
-        size,
-        seed,
-    )
 
-    def upload() -> dict:
+    def upload() -> dict[str, Any]:
         arrays = bake_maps(material, size, seed)
         return {role: resources.float_texture(encode_map(role, arr)) for role, arr in arrays.items()}
 
-    baked = resources.once(key, upload)
-    return {s["name"]: baked[s["role"]] for s in samplers if s["role"] in baked}
+    baked = resources.once(("maps", material.key, size, seed), upload)
+    return {s.name: baked[s.role] for s in samplers if s.role in baked}
 
 
 def split_textures(
-    resources: Resources, material: dict, plan: dict, res: EnvResources, glsl_options: dict | None
-) -> dict:
+    resources: Resources, material: Material, plan: PreviewPlan, res: EnvResources, options: GlslOptions
+) -> dict[str, Any]:
     """sampler name -> texture for the split-sum tier: the material's albedo tables, and the
     environment prefiltered at exactly the base's and the coat's alpha when they are uniform."""
-    opts = glsl_options or {}
-    fresnel, multiscatter = str(opts.get("fresnel", "exact")), str(opts.get("multiscatter", "off")) == "on"
-    key = (
-        "split tables",
-        json.dumps([material["model"], material["params"]], sort_keys=True, default=str),
-        fresnel,
-        multiscatter,
-        plan["roughness_map"],
-    )
+    fresnel, multiscatter, mapped = options.fresnel, options.multiscatter, plan.roughness_map
 
-    def upload() -> dict:
-        black, tint = resources.tables.tables(material, fresnel, multiscatter, plan["roughness_map"])
+    def upload() -> dict[str, Any]:
+        black, tint = resources.tables.tables(material, fresnel, multiscatter, mapped)
         flat = lambda table: resources.float_texture(table, mipmaps=False, repeat=(False, False))
         return {"pv_black_albedo": flat(black), "pv_tint_albedo": flat(tint)}
 
-    textures = dict(resources.once(key, upload))
+    textures = dict(resources.once(("split tables", material.key, fresnel, multiscatter, mapped), upload))
     textures["pv_env_irradiance"] = res.irradiance
-    params = material["params"]
-    coat = params.get("coat") if plan["coat"] else None
-    if plan["microfacet"] and not plan["roughness_map"]:
+    coat = material.params.coat if plan.coat else None
+    if plan.microfacet and not mapped:
         ax, ay = (float(a) for a in material_alpha(material))
-        widen = float(coat.get("ior", 1.5)) if coat and plan["base"] == "conductor" else 1.0
+        widen = float(coat.ior) if coat and plan.base == "conductor" else 1.0
         textures["pv_env_material"] = res.prefiltered_at(min(max(np.sqrt(ax * ay), 1e-3) * widen, 1.0))
     if coat:
-        cx, cy = (float(a) for a in coat_alpha(coat, params.get("alpha_convention", "squared")))
+        cx, cy = (float(a) for a in coat_alpha(coat, material.params.alpha_convention))
         textures["pv_env_coat"] = res.prefiltered_at(max(np.sqrt(cx * cy), 1e-3))
     return textures

@@ -5,6 +5,7 @@ PLY (binary, what Mitsuba reads) and OBJ out. Missing normals/UVs/tangents are d
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -93,7 +94,8 @@ def write_obj(mesh: Mesh, path) -> None:
 def _ply_header(f, path):
     if f.readline().strip() != b"ply":
         raise MeshError(f"{path}: not a PLY file")
-    fmt, elements = None, []
+    fmt: str | None = None
+    elements: list[dict[str, Any]] = []
     while True:
         line = f.readline()
         if not line:

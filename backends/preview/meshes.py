@@ -6,6 +6,7 @@ mesh to a unit bounding sphere standing on y = 0. The mesh type itself is in mes
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -189,7 +190,7 @@ def fit(mesh: Mesh, stand: bool = True) -> Mesh:
 
 
 #: name -> generator (no arguments). `load_mesh` also accepts a path to an OBJ/PLY file.
-MESHES = {"sphere": sphere, "shader_ball": shader_ball, "teapot": teapot}
+MESHES: dict[str, Callable[[], Mesh]] = {"sphere": sphere, "shader_ball": shader_ball, "teapot": teapot}
 
 
 def mesh_by_name(name_or_path: str) -> Mesh:

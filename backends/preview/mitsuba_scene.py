@@ -12,10 +12,12 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
+from ..base import as_document
 from ..exchange import mitsuba, mitsuba_cnlm
 from .environment import mitsuba_rows, write_exr
 from .mesh_io import write_ply
 from .scene import Scene
+from .shader import MaterialLike, as_material
 
 SCENE_TEMPLATE = """<?xml version="1.0" encoding="utf-8"?>
 <!-- cnlmc preview scene for Mitsuba 3 (backends/preview/mitsuba_scene.py) -->
@@ -83,7 +85,7 @@ def _vec(v) -> str:
 
 
 def export_scene(
-    material: dict,
+    material: MaterialLike,
     scene: Scene,
     out_dir,
     width: int,
@@ -99,9 +101,8 @@ def export_scene(
     `sampler`: default `sampler_for(spp)` (render at that spp: ldsampler rounds others up)."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    result = mitsuba.emit(
-        {"ir_version": 1, "materials": [material], "diagnostics": []}, {"form": "fragment", "bsdf": bsdf}
-    )
+    document = as_document({"materials": [as_material(material).to_ir()]})
+    result = mitsuba.emit(document, {"form": "fragment", "bsdf": bsdf})
     for artifact in result.artifacts:
         path = out / artifact.name
         path.parent.mkdir(parents=True, exist_ok=True)
@@ -138,8 +139,9 @@ def _bsdf_id(materials_xml: Path) -> str:
 
     root = ET.parse(materials_xml).getroot()
     for child in root:
-        if child.tag == "bsdf" and child.get("id"):
-            return child.get("id")
+        ident = child.get("id")
+        if child.tag == "bsdf" and ident:
+            return ident
     raise ValueError(f"{materials_xml}: no BSDF with an id")
 
 

@@ -7,6 +7,9 @@ from typing import Any
 
 import numpy as np
 
+from cnlmc.material import Material
+
+from ..glsl.options import GlslOptions
 from . import gl
 from .environment_pass import EnvResources, bind_environment
 from .material_textures import map_textures, split_textures
@@ -65,12 +68,12 @@ def object_vertex_array(resources: Resources, program_key: str, prog: Any, mesh:
 def draw_object(
     resources: Resources,
     scene: Scene,
-    material: dict,
+    material: Material,
     shader: MaterialShader,
     tier: Tier,
     res: EnvResources,
     model: np.ndarray,
-    glsl_options: dict | None = None,
+    options: GlslOptions,
 ) -> None:
     """The object, shaded by the tier, into the current framebuffer (depth tested; back faces
     culled on a closed mesh, where they are never seen)."""
@@ -80,7 +83,7 @@ def draw_object(
     program_key, prog = object_program(resources, shader, tier)
     textures = dict(map_textures(resources, material, shader.samplers))
     if tier.ibl == "splitsum":
-        textures.update(split_textures(resources, material, shader.plan, res, glsl_options))
+        textures.update(split_textures(resources, material, shader.plan, res, options))
     for unit, (name, tex) in enumerate(textures.items()):
         tex.use(unit)
         gl.set_uniform(prog, name, unit)

@@ -1,28 +1,42 @@
-"""The preview's options (`--option key=value` strings), parsed once, and the tier they choose."""
+"""The preview's options, declared once (cnlmc.backends.base.Option) and parsed once, and the
+tier they choose. AR declares its options on top of these (`preview_option`)."""
 
 from __future__ import annotations
 
+import dataclasses
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
-from ..capabilities import COMPILER_OPTIONS
-from .tiers import DEFAULT_TIER, parse_tier, select_tier
+from ..base import Option, OptionError, Options
+from ..base import parse_options as parse_declared
+from ..glsl.options import OPTIONS as GLSL_OPTIONS
+from .tiers import DEFAULT_TIER, TIERS, Tier, TierError, parse_tier, select_tier
 
-OPTIONS = {
-    "size": "512",
-    "mesh": "sphere",
-    "tier": "",
-    "budget_ms": "",
-    "env": "studio",
-    "background": "env",
-    "exposure": "1.0",
-    "msaa": "0",
-    "fresnel": "exact",
-    "multiscatter": "off",
-    "seed": "0",
-}
+#: the GLSL backend's options the preview passes on (they change the BSDF it renders)
+GLSL_PASSED = ("fresnel", "multiscatter")
+SIZE_RANGE = (8, 8192)
+
+OPTIONS: tuple[Option, ...] = (
+    Option("size", int, 512, doc=f"image size in pixels ({SIZE_RANGE[0]} ... {SIZE_RANGE[1]})"),
+    Option("mesh", str, "sphere", doc="sphere, shader_ball, teapot, or a path to an .obj/.ply/.gltf/.glb file"),
+    Option("tier", str, None, doc=f"quality tier: {', '.join(TIERS)}, mcN or fisN (default {DEFAULT_TIER})"),
+    Option("budget_ms", float, None, doc="without a tier: the best tier whose measured frame time fits"),
+    Option("env", str, "studio", doc="studio, sky, sun, or a path to an .hdr/.exr environment"),
+    Option("background", str, "env", choices=("env", "transparent"), doc="the blurred environment, or none"),
+    Option("exposure", float, 1.0, doc="linear exposure before the tone curve"),
+    Option("msaa", int, 0, doc="samples per pixel; 0: off, an edge filter in the tone map (2 or 4 cost 3-4x)"),
+    *(option for option in GLSL_OPTIONS if option.name in GLSL_PASSED),
+)
 
 
-class PreviewOptionError(ValueError):
+def preview_option(name: str, **changes: Any) -> Option:
+    """One of the preview's options, with some fields changed (another target's default)."""
+    option = next(o for o in OPTIONS if o.name == name)
+    return dataclasses.replace(option, **changes)
+
+
+class PreviewOptionError(OptionError):
     """An unknown option or a value that cannot be used."""
 
 
@@ -39,40 +53,49 @@ class PreviewOptions:
     glsl: dict = field(default_factory=dict)
 
 
-def parse_options(options: dict | None) -> PreviewOptions:
-    options = {k: str(v) for k, v in (options or {}).items() if k in OPTIONS or k not in COMPILER_OPTIONS}
-    unknown = sorted(set(options) - set(OPTIONS))
-    if unknown:
-        raise PreviewOptionError(f"preview: unknown option(s) {', '.join(unknown)}; known: {', '.join(OPTIONS)}")
-    o = {**OPTIONS, **options}
+def parse_options(pairs: Mapping[str, object] | None) -> PreviewOptions:
+    """Raw `--option` pairs -> PreviewOptions (PreviewOptionError, with did-you-mean, when wrong)."""
     try:
-        size, msaa, exposure = int(o["size"]), int(o["msaa"]), float(o["exposure"])
-        budget = float(o["budget_ms"]) if o["budget_ms"] else None
-    except ValueError as exc:
-        raise PreviewOptionError(f"preview: {exc}") from None
-    if not 8 <= size <= 8192:
-        raise PreviewOptionError(f"preview: size {size} is out of range (8 ... 8192)")
-    if o["background"] not in ("env", "transparent"):
-        raise PreviewOptionError("preview: background must be env or transparent")
-    if o["tier"]:
-        try:
-            parse_tier(o["tier"])
-        except ValueError as exc:
-            raise PreviewOptionError(str(exc)) from None
+        return preview_options(parse_declared(OPTIONS, pairs, "preview"))
+    except OptionError as exc:
+        raise PreviewOptionError(str(exc)) from None
+
+
+def glsl_pairs(options: Options) -> dict[str, str]:
+    """The GLSL backend's options among parsed ones, as it reads them."""
+    return {name: options[name] for name in GLSL_PASSED}
+
+
+def checked_tier(name: str | None, error: Callable[[str], Exception] = PreviewOptionError) -> str:
+    """The tier option as given ('' when not set), known to parse."""
+    if not name:
+        return ""
+    try:
+        parse_tier(name)
+    except TierError as exc:
+        raise error(str(exc)) from None
+    return name
+
+
+def preview_options(options: Options) -> PreviewOptions:
+    """Parsed options -> what the renderer reads, with the checks a declaration cannot say."""
+    low, high = SIZE_RANGE
+    if not low <= options.size <= high:
+        raise PreviewOptionError(f"preview: size {options.size} is out of range ({low} ... {high})")
     return PreviewOptions(
-        size,
-        o["mesh"],
-        o["tier"],
-        budget,
-        o["env"],
-        o["background"],
-        exposure,
-        msaa,
-        {"fresnel": o["fresnel"], "multiscatter": o["multiscatter"]},
+        options.size,
+        options.mesh,
+        checked_tier(options.tier),
+        options.budget_ms,
+        options.env,
+        options.background,
+        options.exposure,
+        options.msaa,
+        glsl_pairs(options),
     )
 
 
-def choose_tier(renderer, scene, material: dict, opts: PreviewOptions):
+def choose_tier(renderer: Any, scene: Any, material: Any, opts: PreviewOptions) -> tuple[Tier, dict[str, float]]:
     """The tier option, else the best tier within budget_ms, else the default."""
     if opts.tier:
         return parse_tier(opts.tier), {}

@@ -12,6 +12,7 @@ renderer's Resources (resources.py).
 from __future__ import annotations
 
 import time
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -23,7 +24,7 @@ from .mesh import Mesh
 from .object_pass import draw_object
 from .resources import Resources
 from .scene import Scene, default_scene, scene_mesh
-from .shader import MaterialShader, material_shader, shader_key
+from .shader import MaterialLike, MaterialShader, as_material, material_shader, shader_key, shader_options
 from .targets import Rect, Targets, grown, read_image, screen_rect, targets
 from .tiers import DEFAULT_TIER, Tier, parse_tier
 from .tonemap import tonemap
@@ -78,10 +79,11 @@ class Renderer:
         self.close()
 
     # -- what a frame is made from
-    def shader(self, material: dict, glsl_options: dict | None = None) -> MaterialShader:
+    def shader(self, material: MaterialLike, glsl_options: Mapping[str, Any] | None = None) -> MaterialShader:
         """The material's shader (GLSL library and plan), made once per content and options."""
-        key = ("shader", shader_key(material, glsl_options))
-        return self.resources.once(key, lambda: material_shader(material, glsl_options))
+        typed, options = as_material(material), shader_options(glsl_options)
+        key = ("shader", *shader_key(typed, options))
+        return self.resources.once(key, lambda: material_shader(typed, options, self.resources.shader_writer))
 
     def scene(self, mesh: str | Mesh = "sphere", env: str | Environment = "studio") -> Scene:
         """The framed preview scene at this renderer's size (default_scene); a named mesh or
@@ -99,15 +101,16 @@ class Renderer:
     def draw(
         self,
         scene: Scene,
-        material: dict,
+        material: MaterialLike,
         tier: Tier | str = DEFAULT_TIER,
-        glsl_options: dict | None = None,
+        glsl_options: Mapping[str, Any] | None = None,
         model: np.ndarray | None = None,
         overlay: Any = None,
     ) -> Targets:
         """Draw into the targets (no read-back); `overlay(renderer, scene)` draws extra geometry."""
         self.resources.make_current()  # ours must be the current context (another may have been made current)
         tier = parse_tier(tier) if isinstance(tier, str) else tier
+        material = as_material(material)
         shader = self.shader(material, glsl_options)
         res = env_resources(self.resources, scene.env)
         t = targets(self.resources, self.width, self.height, self.msaa)
@@ -123,7 +126,7 @@ class Renderer:
         if overlay is not None:
             overlay(self, scene)
             t.draw_target.use()
-        draw_object(self.resources, scene, material, shader, tier, res, model, glsl_options)
+        draw_object(self.resources, scene, material, shader, tier, res, model, shader_options(glsl_options))
         t.resolve(self.ctx)
         if scene.background == "env":
             draw_background(self.resources, t, scene, res)
@@ -146,10 +149,10 @@ class Renderer:
 
     def render(
         self,
-        material: dict,
+        material: MaterialLike,
         mesh: str | Mesh = "sphere",
         tier: Tier | str = DEFAULT_TIER,
-        glsl_options: dict | None = None,
+        glsl_options: Mapping[str, Any] | None = None,
         env: str | Environment = "studio",
         scene: Scene | None = None,
         hdr: bool = False,
@@ -158,6 +161,7 @@ class Renderer:
         """Render one material; returns the sRGB image (top row first) and the frame time."""
         scene = scene or self.scene(mesh, env)
         tier = parse_tier(tier) if isinstance(tier, str) else tier
+        material = as_material(material)
         shader = self.shader(material, glsl_options)
         warm_key = (shader.key, tier.name, scene.mesh.key, scene.env.content_key, self.width, self.height)
         if self.resources.first_use(warm_key):  # the first frame compiles and uploads: drawn once untimed
@@ -172,9 +176,15 @@ class Renderer:
         return Frame(rgba, linear, ms, tier.name, shader.notes)
 
     def frame_time(
-        self, scene: Scene, material: dict, tier: Tier | str, glsl_options: dict | None = None, repeats: int = 5
+        self,
+        scene: Scene,
+        material: MaterialLike,
+        tier: Tier | str,
+        glsl_options: Mapping[str, Any] | None = None,
+        repeats: int = 5,
     ) -> float:
         """Median frame time (ms) over `repeats` frames, after one warm-up frame."""
+        material = as_material(material)
         self.draw(scene, material, tier, glsl_options)
         self.ctx.finish()
         times = []

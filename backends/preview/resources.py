@@ -14,6 +14,7 @@ import hashlib
 from collections.abc import Callable
 from typing import Any, TypeVar
 
+from ..glsl.render import ShaderWriter
 from . import gl
 from .albedo_tables import TableCache
 
@@ -31,6 +32,7 @@ class Resources:
     def __init__(self) -> None:
         self.ctx = gl.create_context()
         self.tables = TableCache()
+        self.shader_writer = ShaderWriter()  # the GLSL backend's templates and snippets, loaded once
         self._made: dict[tuple, Any] = {}
         self._warm: set[tuple] = set()
 

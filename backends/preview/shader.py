@@ -1,76 +1,108 @@
-"""A material's shader for the preview: the GLSL backend's library form of the material and
-what the preview's templates need to know about it (the plan)."""
+"""A material's shader for the preview: the GLSL backend's library form of the material, its
+samplers, and what the preview's templates need to know about it (PreviewPlan), all read
+from the GLSL backend's own plan (glsl.plan.make_plan, glsl.emit.library_source)."""
 
 from __future__ import annotations
 
-import hashlib
+import dataclasses
 import json
+from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property
+from typing import Any
 
 from cnlmc.bsdf.sampling import lobe_shares
+from cnlmc.material import Material
 
 from .. import glsl
+from ..capabilities import check_material
+from ..glsl.emit import library_source
+from ..glsl.options import GlslOptions, parse_glsl_options
+from ..glsl.plan import MICROFACET_BASES, Plan, Sampler, make_plan
+from ..glsl.render import ShaderWriter
 from .albedo_tables import split_fitted
 from .resources import source_key
 
-MICROFACET = ("dielectric", "conductor", "glass")
+#: the GLSL backend's options that change a material's shader
 GLSL_OPTION_KEYS = ("fresnel", "multiscatter", "specialize")
+
+#: a material as the preview takes it: typed, or its IR object (typed once, on the way in)
+MaterialLike = Material | Mapping[str, Any]
+
+
+def as_material(material: MaterialLike) -> Material:
+    return material if isinstance(material, Material) else Material.from_ir(dict(material))
+
+
+@dataclass(frozen=True)
+class PreviewPlan:
+    """What the preview's templates (adapter.glsl.j2, split.glsl.j2) need to know."""
+
+    base: str
+    microfacet: bool
+    anisotropic: bool
+    coat: bool
+    coat_color: bool
+    normal_map: bool
+    roughness_map: bool
+    strategy: tuple[str, ...]  # the sampled tiers' lobe shares, as GLSL literals
+    summary: str
+    split_fitted: bool  # the split-sum tables hold a fitted kernel pair: two lookups (split.glsl.j2)
 
 
 @dataclass(frozen=True)
 class MaterialShader:
     name: str
     library: str
-    plan: dict
-    samplers: list  # [{"name", "role", ...}] from the sidecar
-    notes: list
+    plan: PreviewPlan
+    samplers: tuple[Sampler, ...]
+    notes: list[str]
 
     @cached_property
     def key(self) -> str:
         """A digest of what the object program is made from: programs are cached by it."""
-        return source_key(self.name, self.library, json.dumps(self.plan, sort_keys=True, default=str))
+        return source_key(self.name, self.library, json.dumps(dataclasses.asdict(self.plan), sort_keys=True))
 
 
-def material_plan(sidecar: dict) -> dict:
-    """What the tiers need to know, read from the GLSL sidecar."""
-    model = sidecar["model"]
-    base = model["base"]
-    uniforms = {u["name"] for u in sidecar["uniforms"]}
-    coat = "cnlm_coat_ior" in uniforms
-    plan = {
-        "base": base,
-        "microfacet": base in MICROFACET,
-        "anisotropic": bool(model.get("anisotropic")) and base in MICROFACET,
-        "coat": coat,
-        "coat_color": "cnlm_coat_color" in uniforms,
-        "normal_map": any(s["role"] == "normal" for s in sidecar["samplers"]),
-        "roughness_map": any(s["role"] == "roughness" for s in sidecar["samplers"]),
-    }
-    plan["strategy"] = [repr(float(x)) for x in lobe_shares(base, coat)]
-    plan["summary"] = f"{base}" + "".join(f", {k}" for k in ("anisotropic", "coat", "normal_map") if plan[k])
-    return plan
+def preview_plan(material: Material, library: Plan, specialized: Plan) -> PreviewPlan:
+    """The preview's plan from the GLSL backend's: `library` is the plan the library was written
+    from (the all-features one with specialize=off: every coat uniform and sampler present),
+    `specialized` the material's own choices."""
+    base = material.model.base
+    coat = library.coat
+    flags = {"anisotropic": specialized.anisotropic, "coat": coat, "normal_map": "normal" in library.maps}
+    roughness_map = "roughness" in library.maps
+    return PreviewPlan(
+        base=base,
+        microfacet=base in MICROFACET_BASES,
+        anisotropic=specialized.anisotropic,
+        coat=coat,
+        coat_color=library.coat_color,
+        normal_map=flags["normal_map"],
+        roughness_map=roughness_map,
+        strategy=tuple(repr(float(x)) for x in lobe_shares(base, coat)),
+        summary=base + "".join(f", {k}" for k, on in flags.items() if on),
+        split_fitted=split_fitted(material, roughness_map),
+    )
 
 
-def shader_options(glsl_options: dict | None) -> dict:
-    """The GLSL backend's options that change a material's shader."""
-    return {k: str(v) for k, v in (glsl_options or {}).items() if k in GLSL_OPTION_KEYS}
+def shader_options(glsl_options: Mapping[str, Any] | None) -> GlslOptions:
+    """The GLSL backend's options that change a material's shader (the library form)."""
+    pairs = {k: str(v) for k, v in (glsl_options or {}).items() if k in GLSL_OPTION_KEYS}
+    return parse_glsl_options({**pairs, "form": "library"})
 
 
-def shader_key(material: dict, glsl_options: dict | None) -> str:
-    """What a material's shader is cached by: the material's content and the GLSL options."""
-    text = json.dumps([material, shader_options(glsl_options)], sort_keys=True, default=str)
-    return hashlib.sha256(text.encode()).hexdigest()
+def shader_key(material: Material, options: GlslOptions) -> tuple[str, str, str]:
+    """What a material's shader is cached by: its content, its name (the library names it) and
+    the GLSL options."""
+    return material.key, material.name, json.dumps(dataclasses.asdict(options), sort_keys=True)
 
 
-def material_shader(material: dict, glsl_options: dict | None = None) -> MaterialShader:
-    """The library form of one material, made anew (Renderer.shader keeps the ones it uses)."""
-    opts = shader_options(glsl_options)
-    ir = {"ir_version": 1, "materials": [material], "diagnostics": []}
-    result = glsl.emit(ir, {**opts, "form": "library"})
-    files = {a.name: a.content for a in result.artifacts}
-    name = material["name"]
-    sidecar = json.loads(files[f"{name}.glsl.json"])
-    plan = material_plan(sidecar)
-    plan["split_fitted"] = split_fitted(material, plan["roughness_map"])  # split.glsl.j2: two lookups
-    return MaterialShader(name, files[f"{name}.glsl"], plan, sidecar["samplers"], [n.text() for n in result.notes])
+def material_shader(material: Material, options: GlslOptions, writer: ShaderWriter) -> MaterialShader:
+    """The library form of one material and its plans, made anew (Renderer.shader keeps them)."""
+    library, plan = library_source(material, options, writer)
+    specialized = plan if options.specialize else make_plan(material, options)
+    notes: list = []
+    check_material(notes, glsl.TARGET.name, glsl.TARGET.capabilities, material)
+    plans = preview_plan(material, plan, specialized)
+    return MaterialShader(material.name, library, plans, tuple(plan.samplers), [n.text() for n in notes])

@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
+
+from cnlmc.material import Material
 
 
 def png_bytes(rgba: np.ndarray) -> bytes:
@@ -39,11 +43,11 @@ def label(tile: np.ndarray, text: str) -> np.ndarray:
     return out
 
 
-def groups_of(materials: list[dict]) -> list[list[dict]]:
+def groups_of(materials: Sequence[Material]) -> list[list[Material]]:
     """Materials grouped by variant.group (in order of first appearance); others alone."""
-    groups: dict = {}
+    groups: dict[str, list[Material]] = {}
     for index, m in enumerate(materials):
-        key = (m.get("variant") or {}).get("group") or f"\0{index}"
+        key = (m.variant.group if m.variant else "") or f"\0{index}"
         groups.setdefault(key, []).append(m)
     return list(groups.values())
 

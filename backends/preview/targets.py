@@ -25,7 +25,7 @@ class Targets:
 
     def __init__(self, ctx, width: int, height: int, msaa: int):
         self.size = (width, height)
-        self.rect = None  # what the last draw() cleared, tone mapped and will read (None: all)
+        self.rect: Rect | None = None  # what the last draw() cleared, tone mapped and will read (None: all)
         self.samples = msaa if msaa > 1 else 0
         self.resolved_tex = ctx.texture(self.size, 4, dtype=self.HDR_DTYPE)
         if self.samples:

@@ -8,15 +8,17 @@ from functools import cache
 import pytest
 
 from cnlmc.api import compile_source, lexicon_for
+from cnlmc.material import Material
 
 SMALL = 64
 
 
 @cache
-def material_of(phrase: str) -> dict:
+def material_of(phrase: str) -> Material:
+    """The phrase's material, typed (what the preview reads)."""
     result = compile_source(phrase + "\n")
     assert result.ir["materials"], f"{phrase!r}: {result.ir['diagnostics']}"
-    return result.ir["materials"][0]
+    return result.document.materials[0]
 
 
 def stdlib_nouns() -> list[str]:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-import copy
+import dataclasses
 
 import numpy as np
 import pytest
@@ -74,8 +74,9 @@ def test_texture_orientation_matches_mitsuba(tmp_path, mitsuba, renderer, monkey
         return out
 
     monkeypatch.setattr(service, "bake", bake)
-    material = copy.deepcopy(material_of("granite"))
-    material["maps"]["base_color"]["seed"] = 60606  # its own entry in the baked-map cache
+    granite = material_of("granite")
+    seeded = dataclasses.replace(granite.maps["base_color"], seed=60606)  # its own entry in the baked-map cache
+    material = dataclasses.replace(granite, maps={**granite.maps, "base_color": seeded})
     size = 32
     scene = default_scene("sphere", "studio", (size, size))
     scene.background = "transparent"

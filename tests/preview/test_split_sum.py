@@ -3,17 +3,20 @@ and its image stays close to the tier that integrates the environment by brute f
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
 from cnlmc.backends.preview.albedo_tables import FIT_ALPHA, MU_SIZE, ROWS, SECTIONS, albedo_tables, split_fitted
 from cnlmc.bsdf.evaluate import albedo
+from cnlmc.material import Material
 
 from .conftest import material_of
 
 
-def with_colour(material: dict, colour) -> dict:
-    return {**material, "params": {**material["params"], "base_color": list(colour)}}
+def with_colour(material: Material, colour) -> Material:
+    return replace(material, params=replace(material.params, base_color=tuple(float(c) for c in colour)))
 
 
 def section(table: np.ndarray, index: int) -> np.ndarray:
@@ -63,7 +66,7 @@ def test_the_dielectric_diffuse_part_sees_the_interface_twice():
 
 def test_a_roughness_map_gets_one_row_per_alpha_and_rougher_rows_reflect_less_at_grazing():
     oak = material_of("oak")
-    assert "roughness" in oak["maps"]
+    assert "roughness" in oak.maps
     black, _ = albedo_tables(oak, mapped_roughness=True)
     assert black.shape == (ROWS, SECTIONS * MU_SIZE, 4)
     assert np.all(np.isfinite(black))
@@ -84,18 +87,16 @@ def kernels(table: np.ndarray, row: int = 0) -> tuple[np.ndarray, np.ndarray]:
 
 
 def single_lookup(monkeypatch) -> None:
-    """Shaders as if no table held a fitted pair (plan["split_fitted"] = False): every lobe
+    """Shaders as if no table held a fitted pair (plan.split_fitted = False): every lobe
     looked up once, at its lean and exactly its alpha — the split sum before the fit. (Another
     plan is another shader key, hence another program.)"""
-    from dataclasses import replace
-
     from cnlmc.backends.preview.render import Renderer
 
     original = Renderer.shader
 
     def shader(self, material, glsl_options=None):
         made = original(self, material, glsl_options)
-        return replace(made, plan={**made.plan, "split_fitted": False})
+        return replace(made, plan=replace(made.plan, split_fitted=False))
 
     monkeypatch.setattr(Renderer, "shader", shader)
 
@@ -106,12 +107,12 @@ def test_rough_lobes_are_fitted_with_two_kernels_that_form_a_mixture(phrase, lob
     half the lobe's and within the prefilter's range, leans finite; a mapped roughness fits
     every row from FIT_ALPHA up."""
     m = material_of(phrase)
-    mapped = "roughness" in m.get("maps", {})
+    mapped = "roughness" in m.maps
     table = albedo_tables(m, mapped_roughness=mapped)[lobe]
     assert np.all(np.isfinite(table))
     for row in range(table.shape[0]):
         k1, k2 = kernels(table, row)
-        alpha = ((row + 0.5) / ROWS) ** 2 if mapped else float(m["params"]["alpha"][0])
+        alpha = ((row + 0.5) / ROWS) ** 2 if mapped else float(m.params.alpha[0])
         np.testing.assert_allclose(k1[:, 2] + k2[:, 2], 1.0, atol=1e-6)
         assert np.all((k1[:, 2] >= 0.3) & (k2[:, 2] >= 0))
         for k in (k1, k2):
@@ -194,7 +195,7 @@ def test_only_fitted_lobes_get_two_lookups(renderer, scene, monkeypatch, phrase,
     as before the fit (the same image: a smooth material costs nothing more)."""
     m = material_of(phrase)
     plan = renderer.shader(m).plan
-    assert plan["split_fitted"] is split_fitted(m, plan["roughness_map"]) is fitted
+    assert plan.split_fitted is split_fitted(m, plan.roughness_map) is fitted
     after = renderer.render(m, tier="splitsum", scene=scene, hdr=True).hdr
     single_lookup(monkeypatch)
     before = renderer.render(m, tier="splitsum", scene=scene, hdr=True).hdr
