@@ -18,7 +18,9 @@ from cnlmc.backends.preview.live import LiveSession, changes, run  # noqa: E402 
 
 @pytest.fixture
 def session(renderer, tmp_path):
-    return LiveSession("blue anodized aluminum\n", tmp_path / "live.png", {"size": "64"})
+    live = LiveSession("blue anodized aluminum\n", tmp_path / "live.png", {"size": "64"})
+    yield live
+    live.close()  # its renderer's GL context
 
 
 def mean_colour(path) -> np.ndarray:
