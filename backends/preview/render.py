@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from ..glsl.options import GlslOptions
 from .environment import Environment, environment
 from .environment_pass import draw_background, env_resources
 from .mesh import Mesh
@@ -81,9 +82,14 @@ class Renderer:
     # -- what a frame is made from
     def shader(self, material: MaterialLike, glsl_options: Mapping[str, Any] | None = None) -> MaterialShader:
         """The material's shader (GLSL library and plan), made once per content and options."""
-        typed, options = as_material(material), shader_options(glsl_options)
+        typed, options = as_material(material), self.glsl_options(glsl_options)
         key = ("shader", *shader_key(typed, options))
         return self.resources.once(key, lambda: material_shader(typed, options, self.resources.shader_writer))
+
+    def glsl_options(self, pairs: Mapping[str, Any] | None) -> GlslOptions:
+        """The GLSL backend's options of a render, parsed once per distinct set of pairs."""
+        key = ("glsl options", tuple(sorted((k, str(v)) for k, v in (pairs or {}).items())))
+        return self.resources.once(key, lambda: shader_options(pairs))
 
     def scene(self, mesh: str | Mesh = "sphere", env: str | Environment = "studio") -> Scene:
         """The framed preview scene at this renderer's size (default_scene); a named mesh or
@@ -126,7 +132,7 @@ class Renderer:
         if overlay is not None:
             overlay(self, scene)
             t.draw_target.use()
-        draw_object(self.resources, scene, material, shader, tier, res, model, shader_options(glsl_options))
+        draw_object(self.resources, scene, material, shader, tier, res, model, self.glsl_options(glsl_options))
         t.resolve(self.ctx)
         if scene.background == "env":
             draw_background(self.resources, t, scene, res)

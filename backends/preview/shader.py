@@ -92,10 +92,10 @@ def shader_options(glsl_options: Mapping[str, Any] | None) -> GlslOptions:
     return parse_glsl_options({**pairs, "form": "library"})
 
 
-def shader_key(material: Material, options: GlslOptions) -> tuple[str, str, str]:
+def shader_key(material: Material, options: GlslOptions) -> tuple[str, str, GlslOptions]:
     """What a material's shader is cached by: its content, its name (the library names it) and
-    the GLSL options."""
-    return material.key, material.name, json.dumps(dataclasses.asdict(options), sort_keys=True)
+    the GLSL options (a frozen record)."""
+    return material.key, material.name, options
 
 
 def material_shader(material: Material, options: GlslOptions, writer: ShaderWriter) -> MaterialShader:
