@@ -34,6 +34,7 @@ def sources_for(phrase: str, profile: str, **options) -> list[tuple[str, str]]:
     ]
 
 
+@pytest.mark.slow  # 20-40 s per profile: every noun and combination through glslangValidator
 @pytest.mark.parametrize("profile", PROFILES)
 def test_glslang_accepts_every_noun_and_combination(glslang, profile):
     sources = [s for phrase in all_phrases() for s in sources_for(phrase, profile)]

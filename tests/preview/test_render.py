@@ -11,6 +11,7 @@ from cnlmc.backends.preview.tiers import QUALITY_ORDER, TIERS, TierError, parse_
 from .conftest import material_of, stdlib_nouns
 
 
+@pytest.mark.slow  # ~60 s: every stdlib noun rendered
 def test_every_stdlib_noun_renders_without_nan(renderer, scene):
     nouns = stdlib_nouns()
     assert len(nouns) >= 40
