@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -31,15 +32,15 @@ class Compositor:
     what every frame reuses: the renderer's resources (programs, textures, the shadow's
     footprint), the fitted mesh and the environment; `close()` releases them."""
 
-    def __init__(self, options: dict | AROptions | None = None, resources=None):
-
+    def __init__(self, options: Mapping[str, object] | AROptions | None = None, resources: Resources | None = None):
         self.opts = options if isinstance(options, AROptions) else parse_options(options)
+        self.mesh = fit(mesh_by_name(self.opts.mesh), stand=True)  # a bad mesh or environment fails
+        self.env = environment(self.opts.env)  # before a GL context is made
         self._owns_resources = resources is None
         self.resources = resources or Resources()
-        self.mesh = fit(mesh_by_name(self.opts.mesh), stand=True)
-        self.env = environment(self.opts.env)
 
     def close(self) -> None:
+        """Release the GL context and all it holds, if this compositor made them."""
         if self._owns_resources:
             self.resources.release()
 
