@@ -23,6 +23,7 @@ from cnlmc.errors import UsageError
 from ..base import Command
 from . import live
 from .frames import preview_command
+from .window import Window
 
 #: options that have a flag of their own (--mesh, --size, ...) besides --option KEY=VALUE
 RENDER_FLAGS = ("mesh", "size", "tier", "budget_ms", "env")
@@ -93,7 +94,7 @@ class PreviewCommand(Command):
             raise UsageError("--interactive reads refinements from standard input: give the material as a file")
         try:
             session = live.LiveSession(source, Path(args.output), render_options(args), lexicon_of(args))
-            code: int = live.run(session, window=live.Window.open())
+            code: int = live.run(session, window=Window.open())
             return code
         except (ValueError, OSError, RuntimeError) as exc:
             raise UsageError(str(exc)) from None
