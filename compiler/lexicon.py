@@ -13,13 +13,16 @@ from functools import lru_cache
 from importlib import resources
 from importlib.resources.abc import Traversable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .colour import hex_to_linear
 from .diagnostics import FailureKey, Mistake
 from .lexicon_schema import LexiconError, check_entry
 from .syntax import ShapeCache
 from .tagged import Candidate
+
+if TYPE_CHECKING:  # the tagger reads the lexicon; a lexicon keeps the tagger made for it
+    from .tagger import Tagger
 
 CATEGORY_TAGS = {
     "nouns": "NOUN",
@@ -62,6 +65,7 @@ def normalise(surface: str) -> tuple[str, ...]:
 class LexiconCaches:
     """What is derived from one lexicon while it is used, kept with it and never pickled with it.
 
+    - tagger: the Tagger of this lexicon (document.parse_document makes it on first use)
     - tags: word tuple -> the candidate tags the tagger found for it
     - suggestions: (word, categories, limit) -> the closest surface forms (Lexicon.suggest)
     - suggestion_pools: categories -> the sorted surface forms suggestions are drawn from
@@ -76,6 +80,7 @@ class LexiconCaches:
     MAX_ENTRIES = 4096  # a memo this full starts over
 
     def __init__(self) -> None:
+        self.tagger: Tagger | None = None
         self.tags: dict[tuple[str, ...], tuple[Candidate, ...]] = {}
         self.suggestions: dict[tuple[str, tuple[str, ...], int], list[str]] = {}
         self.suggestion_pools: dict[tuple[str, ...], list[str]] = {}

@@ -35,16 +35,17 @@ Words = tuple[ast.Word, ...]  # the AST words of a line, in order (separators su
 ShapeKey = tuple[str | tuple[str, ...], ...]  # the candidate tags of each word
 
 # Plans are read once per terminal sequence and built for every line, so their build methods
-# are written for speed: no helper calls for what one expression says. The words of a node
+# are written for speed: no helper calls for what one expression says (span_of is written out),
+# and loops rather than comprehensions (in Python 3.11 each comprehension is a function call). The words of a node
 # stand side by side once separators are left out (adverbs; "red or blue"), so a plan holds
 # them as a slice of the line's words; its first and last are positions in the tagged line.
 SEPARATORS = frozenset({"ARTICLE", "COMMA", "AND", "OR", "WITH", "COLON"})  # terminals that make no AST word
 
 
 def span_of(tagged: Sequence[Tagged], first: int, last: int) -> Span:
-    """The span from tagged word `first` to tagged word `last` (as Span.to); first < last."""
+    """The span from tagged word `first` to tagged word `last` (as Span.to: words stand in order)."""
     a = tagged[first].span
-    return Span(a.start, max(a.end, tagged[last].span.end), a.line, a.col)
+    return a if first == last else Span(a.start, tagged[last].span.end, a.line, a.col)
 
 
 @dataclass(frozen=True, slots=True)
@@ -58,8 +59,8 @@ class ColourPlan:
 
     def build(self, words: Words, tagged: Sequence[Tagged]) -> ast.Colour:
         found = words[self.words]
-        first, last = self.first, self.last
-        span = tagged[first].span if first == last else span_of(tagged, first, last)
+        a, last = tagged[self.first].span, self.last
+        span = a if last == self.first else Span(a.start, tagged[last].span.end, a.line, a.col)
         base = found[-1]
         if self.may_have_base and base.category in COLOUR_CATEGORIES:
             return ast.Colour(found[:-1], base, span)
@@ -76,13 +77,16 @@ class GroupPlan:
     last: int
 
     def build(self, words: Words, tagged: Sequence[Tagged]) -> ast.Group:
-        first, last = self.first, self.last
+        a, last = tagged[self.first].span, self.last  # the span: a word's own, or first to last word
+        colours = []
+        for c in self.colours:
+            colours.append(c.build(words, tagged))
         return ast.Group(
             self.kind,
             words[self.adverbs],
-            tuple([c.build(words, tagged) for c in self.colours]) if self.colours else (),
+            tuple(colours),
             words[self.adjectives],
-            tagged[first].span if first == last else span_of(tagged, first, last),
+            a if last == self.first else Span(a.start, tagged[last].span.end, a.line, a.col),
         )
 
 
@@ -94,8 +98,10 @@ class CoatPlan:
     last: int
 
     def build(self, words: Words, tagged: Sequence[Tagged]) -> ast.Coat:
-        groups = tuple([g.build(words, tagged) for g in self.groups]) if self.groups else ()
-        return ast.Coat(groups, words[self.coat], span_of(tagged, self.first, self.last))
+        groups = []
+        for g in self.groups:
+            groups.append(g.build(words, tagged))
+        return ast.Coat(tuple(groups), words[self.coat], span_of(tagged, self.first, self.last))
 
 
 @dataclass(frozen=True, slots=True)
@@ -108,13 +114,16 @@ class MaterialPlan:
     last: int
 
     def build(self, words: Words, tagged: Sequence[Tagged], text: str) -> ast.Material:
-        first, last = self.first, self.last
+        a, last = tagged[self.first].span, self.last  # the span: a word's own, or first to last word
+        groups = []
+        for g in self.groups:
+            groups.append(g.build(words, tagged))
         return ast.Material(
             None if self.name is None else words[self.name],
-            tuple([g.build(words, tagged) for g in self.groups]) if self.groups else (),
+            tuple(groups),
             words[self.nouns],
             None if self.coat is None else self.coat.build(words, tagged),
-            tagged[first].span if first == last else span_of(tagged, first, last),
+            a if last == self.first else Span(a.start, tagged[last].span.end, a.line, a.col),
             text,
         )
 
@@ -129,8 +138,8 @@ class RefineItemPlan:
     def build(self, words: Words, tagged: Sequence[Tagged]) -> ast.RefineItem:
         target = self.target
         built = words[target] if isinstance(target, int) else None if target is None else target.build(words, tagged)
-        first, last = self.first, self.last
-        span = tagged[first].span if first == last else span_of(tagged, first, last)
+        a, last = tagged[self.first].span, self.last
+        span = a if last == self.first else Span(a.start, tagged[last].span.end, a.line, a.col)
         return ast.RefineItem(words[self.word], built, span)
 
 
@@ -142,11 +151,14 @@ class RefinementPlan:
     last: int
 
     def build(self, words: Words, tagged: Sequence[Tagged], text: str) -> ast.Refinement:
-        first, last = self.first, self.last
+        a, last = tagged[self.first].span, self.last  # the span: a word's own, or first to last word
+        items = []
+        for item in self.items:
+            items.append(item.build(words, tagged))
         return ast.Refinement(
             None if self.name is None else words[self.name],
-            tuple([item.build(words, tagged) for item in self.items]),
-            tagged[first].span if first == last else span_of(tagged, first, last),
+            tuple(items),
+            a if last == self.first else Span(a.start, tagged[last].span.end, a.line, a.col),
             text,
         )
 
@@ -164,38 +176,25 @@ class Shape:
     def build(self, tagged: Sequence[Tagged], picks: Sequence[Candidate], text: str) -> ast.Item:
         """The AST of a line whose words carry this shape's tags; picks[i] is word i's reading."""
         make = ast.Word
-        words = tuple(
-            [
-                make(tagged[i].text, picks[i].key, picks[i].category, tagged[i].span, tagged[i].unknown)
-                for i in self.used
-            ]
-        )
+        made = []
+        for i in self.used:
+            t, c = tagged[i], picks[i]
+            made.append(make(t.text, c.key, c.category, t.span, t.unknown))
+        words = tuple(made)
         return self.root.build(words, tagged, text)
 
 
-class ShapeCache:
+class ShapeCache(dict[ShapeKey, tuple[Shape, tuple[int, ...] | None]]):
     """Shapes by the candidate tags of a line's words, with the reading chosen for each word.
 
-    The choice is None when every word's first candidate was chosen. Bounded: when MAX_SHAPES
-    sequences are kept, the next one starts the cache over.
+    The choice is None when every word's first candidate was chosen. A dict (its get is the
+    parser's fast path) that put() keeps bounded: at MAX_SHAPES sequences it starts over.
     """
 
-    def __init__(self) -> None:
-        self._shapes: dict[ShapeKey, tuple[Shape, tuple[int, ...] | None]] = {}
-
-    def __len__(self) -> int:
-        return len(self._shapes)
-
-    def get(self, key: ShapeKey) -> tuple[Shape, tuple[int, ...] | None] | None:
-        return self._shapes.get(key)
-
     def put(self, key: ShapeKey, shape: Shape, choice: tuple[int, ...] | None) -> None:
-        if len(self._shapes) >= MAX_SHAPES:
-            self._shapes.clear()
-        self._shapes[key] = (shape, choice)
-
-    def clear(self) -> None:
-        self._shapes.clear()
+        if len(self) >= MAX_SHAPES:
+            self.clear()
+        self[key] = (shape, choice)
 
 
 def _tree(node: Tree[Token] | Token) -> Tree[Token]:

@@ -54,7 +54,7 @@ class Tagger:
         raw = raw_tokens(line)
         tagged: list[Tagged] = []
         diags: list[Diagnostic] = []
-        i = self._name_prefix(line, raw, line_no, offset, tagged)
+        i = self._name_prefix(line, raw, line_no, offset, tagged) if ":" in line else 0
         memo, followers, count = self.memo, self.followers, len(raw)
         while i < count:
             text, col = raw[i]
