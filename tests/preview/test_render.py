@@ -124,3 +124,46 @@ def test_teapot_and_shader_ball_render(renderer):
         scene.background = "transparent"
         frame = renderer.render(material, tier="splitsum", scene=scene, hdr=True)
         assert 0.1 < (frame.rgba[..., 3] > 0).mean() < 0.9
+
+
+def test_options_say_did_you_mean_and_ar_builds_on_them():
+    from cnlmc.backends.ar import OPTIONS as AR_OPTIONS
+    from cnlmc.backends.preview import OPTIONS
+
+    with pytest.raises(PreviewOptionError, match="did you mean 'size'"):
+        parse_options({"sise": "64"})
+    with pytest.raises(PreviewOptionError, match="did you mean 'schlick'"):
+        parse_options({"fresnel": "schlik"})
+    preview = {o.name: o for o in OPTIONS}
+    shared = [o for o in AR_OPTIONS if o.name in preview]
+    assert {o.name for o in shared} == {"mesh", "tier", "env", "exposure", "msaa", "fresnel", "multiscatter"}
+    assert all(o.type is preview[o.name].type and o.choices == preview[o.name].choices for o in shared)
+
+
+def test_the_registry_finds_the_preview_target_and_both_commands():
+    from cnlmc.backends.ar.command import ARCommand
+    from cnlmc.backends.preview import TARGET
+    from cnlmc.backends.preview.commands import PreviewCommand
+    from cnlmc.backends.registry import get_command, get_target
+
+    assert get_target("preview") is TARGET and PreviewCommand in TARGET.commands
+    assert isinstance(get_command("preview"), PreviewCommand) and isinstance(get_command("ar"), ARCommand)
+
+
+def test_programs_are_cached_by_content_not_identity(renderer):
+    """Equal materials share a shader and its program; another material never gets theirs
+    (an id()-keyed cache once returned another material's program)."""
+    from dataclasses import replace
+
+    from cnlmc.backends.preview.object_pass import object_program
+    from cnlmc.backends.preview.tiers import parse_tier
+
+    gold, copper = material_of("gold"), material_of("copper")
+    tier = parse_tier("splitsum")
+    programs = {}
+    for _ in range(3):  # shaders made again each time (new objects), programs found by content
+        for material in (gold, copper, replace(gold)):
+            shader = replace(renderer.shader(material))
+            programs.setdefault(material.key, set()).add(object_program(renderer.resources, shader, tier)[0])
+    assert len(programs) == 2 and all(len(keys) == 1 for keys in programs.values())
+    assert programs[gold.key] != programs[copper.key]
