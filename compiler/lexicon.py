@@ -72,6 +72,7 @@ class LexiconCaches:
     - shapes: parse shapes by the candidate tags of a line's words (parser.parse_line_shape)
     - mistakes: parser failure key -> the friendly message learned from grammar/bad_examples.toml
       (None until a line first fails to parse; mistakes.known_mistake)
+    - colour_phrases: (phrase, CIELAB) of every colour and shade+colour (the LSP's colour picker)
     - effect_rules: (rule, where the effect list is, effect index, weight) -> the provenance text
       of that lexicon effect (passes/words.py)
     - rounded_optics: (noun key, parameter) -> the noun's list value rounded for the IR (ir.py)
@@ -87,6 +88,7 @@ class LexiconCaches:
         self.shapes = ShapeCache()
         self.mistakes: dict[FailureKey, Mistake] | None = None
         self.effect_rules: dict[tuple[str, str, int, float], str] = {}
+        self.colour_phrases: tuple[tuple[str, tuple[float, float, float]], ...] | None = None
         self.rounded_optics: dict[tuple[str, str], list[float]] = {}
 
 

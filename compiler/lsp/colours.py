@@ -4,7 +4,6 @@ picker's answer is the nearest phrase ("dark slate blue") from the lexicon's col
 from __future__ import annotations
 
 from collections.abc import Sequence
-from functools import lru_cache
 
 from lsprotocol import types
 
@@ -61,9 +60,15 @@ def _lab(rgb: Sequence[float]) -> Lab:
     return 116 * fy - 16, 500 * (fx - fy), 200 * (fy - fz)
 
 
-@lru_cache(maxsize=4)
 def phrase_table(lexicon: Lexicon) -> tuple[tuple[str, Lab], ...]:
-    """(phrase, Lab) for every named colour and every shade of it."""
+    """(phrase, Lab) for every named colour and every shade of it (made once per lexicon)."""
+    caches = lexicon.caches
+    if caches.colour_phrases is None:
+        caches.colour_phrases = _phrase_table(lexicon)
+    return caches.colour_phrases
+
+
+def _phrase_table(lexicon: Lexicon) -> tuple[tuple[str, Lab], ...]:
     table = []
     shades = lexicon.all_of("shades")
     for key, entry in lexicon.all_of("colours").items():
