@@ -84,9 +84,7 @@ def emit(ir: JSONDict | Document, target: str, options: dict[str, object] | None
 class Session:
     """Interactive refinement: session.refine("darker") changes the material, as in the paper."""
 
-    def __init__(
-        self, phrase: str, lexicon: Lexicon | None = None, seed: int = 0, filename: str = "<session>"
-    ) -> None:
+    def __init__(self, phrase: str, lexicon: Lexicon | None = None, seed: int = 0, filename: str = "<session>") -> None:
         self.lines = [phrase]
         self.lexicon = lexicon or lexicon_for()
         self.seed = seed
