@@ -10,7 +10,7 @@ from typing import Any
 
 from . import ast
 from .analyze import analyze, to_ir
-from .diagnostics import Diagnostic, has_errors
+from .diagnostics import Diagnostic, has_errors, render
 from .document import parse_document
 from .lexicon import Lexicon, cached_lexicon
 from .material import Document
@@ -65,8 +65,6 @@ def compile_phrase(phrase: str, lexicon: Lexicon | None = None, seed: int = 0) -
     """One phrase -> its first material's IR (raises ValueError with the rendered errors)."""
     result = compile_source(phrase, "<phrase>", lexicon, seed)
     if not result.ok or not result.materials:
-        from .diagnostics import render
-
         raise ValueError(
             "\n".join(render(d, phrase, "<phrase>") for d in result.diagnostics if d.is_error)
             or "the phrase names no material"

@@ -15,6 +15,7 @@ from importlib.resources.abc import Traversable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from .cache import cached
 from .colour import hex_to_linear
 from .diagnostics import FailureKey, Mistake
 from .lexicon_schema import LexiconError, check_entry
@@ -368,8 +369,6 @@ def load_lexicon(user_paths: Iterable[str | Path] = (), overlay: Overlays = None
 @lru_cache(maxsize=8)
 def cached_lexicon(user_paths: tuple[str | Path, ...] = (), overlay: Overlays = None) -> Lexicon:
     """The lexicon, from the on-disk cache when no source file changed since it was written."""
-    from .cache import cached
-
     folders = [Path(p) for p in user_paths]
     folders += [Path(str(overlay_folder(name))) for name in _overlay_names(overlay)]
     folders.append(Path(str(stdlib_folder())))

@@ -19,6 +19,7 @@ from lsprotocol import types
 from pygls.lsp.server import LanguageServer
 
 from .api import lexicon_for
+from .lexicon_schema import LexiconError
 from .lsp import actions, colours, completion, hover, inlay, tokens
 from .lsp.diagnostics import LspDiagnostics
 from .lsp.incremental import Analyzer, Cancelled, Snapshot
@@ -61,8 +62,6 @@ class CnlServer(LanguageServer):
 
     def use_lexicon(self, specs: tuple[str, ...]) -> None:
         """Overlay names ('de', 'paper') or lexicon folders, as `--lexicon` takes them."""
-        from .lexicon_schema import LexiconError
-
         try:
             lexicon = lexicon_for(specs)
         except LexiconError as exc:

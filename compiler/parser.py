@@ -14,6 +14,8 @@ never cached.
 
 from __future__ import annotations
 
+import hashlib
+import os
 from collections.abc import Iterator, Sequence
 from functools import lru_cache
 from importlib import resources
@@ -24,6 +26,7 @@ from lark.exceptions import UnexpectedInput, UnexpectedToken
 from lark.lexer import Lexer, LexerState
 from lark.parsers.lalr_interactive_parser import InteractiveParser
 
+from .cache import cache_dir
 from .diagnostics import FailureKey
 from .syntax import Shape, ShapeCache, ShapeKey
 from .tagged import Candidate, Tagged
@@ -64,11 +67,6 @@ class _Lexer(Lexer):
 
 def _grammar_cache_path(grammar: str) -> str | Literal[False]:
     """Where lark keeps the built LALR tables for this grammar text (rebuilt when it changes)."""
-    import hashlib
-    import os
-
-    from .cache import cache_dir
-
     folder = cache_dir()
     try:
         folder.mkdir(parents=True, exist_ok=True)
