@@ -27,7 +27,7 @@ POLICY_CODES = {"approximate": "W201", "bake": "W202", "drop": "W203", "error": 
 def material_features(material: Material | Mapping[str, Any]) -> list[str]:
     """The features of a material (typed, or its IR dict), in the vocabulary of capability tables."""
     if isinstance(material, Mapping):
-        return _ir_features(material)
+        material = Material.from_ir(dict(material))
     model, coat = material.model, material.params.coat
     features = [f"model.{model.base}"]
     if model.distribution:
@@ -41,23 +41,6 @@ def material_features(material: Material | Mapping[str, Any]) -> list[str]:
         if coat is not None and any(abs(c - 1.0) > 1e-6 for c in coat.color):
             features.append("coat.color")
     return features + [f"maps.{role}" for role in material.maps]
-
-
-def _ir_features(material: Mapping[str, Any]) -> list[str]:
-    model, params = material["model"], material["params"]
-    features = [f"model.{model['base']}"]
-    if model["distribution"]:
-        features.append(f"distribution.{model['distribution']}")
-    if model["anisotropic"]:
-        features.append("anisotropic")
-    if model["diffuse"] == "oren_nayar":
-        features.append("diffuse.oren_nayar")
-    if model["coat"]:
-        features.append("coat")
-        if any(abs(c - 1.0) > 1e-6 for c in params["coat"]["color"]):
-            features.append("coat.color")
-    features += [f"maps.{role}" for role in material["maps"]]
-    return features
 
 
 ALL_FEATURES = (
