@@ -270,19 +270,16 @@ def uniforms_for(plan: Plan, material: Material) -> list[Uniform]:
 
 # ---- the all-features ("uber") form: option specialize=off ----
 
-#: Parameters an uber shader needs even when the material does not use them (neutral values).
-UBER_PARAM_DEFAULTS: dict[str, Any] = {
+#: Placeholders for the uniforms of an uber shader that the material's model leaves without a
+#: value: the metal optics (the table has no default for them; these make a dielectric-like
+#: conductor the selectors never read) and a clear, smooth coat. Every other parameter holds
+#: the table's default when the IR lacks it (cnlmc.params).
+UBER_OPTICS: dict[str, Any] = {
     "eta": (1.5, 1.5, 1.5),
     "k": (0.0, 0.0, 0.0),
     "f0": (0.04, 0.04, 0.04),
     "f82": (0.04, 0.04, 0.04),
-    "ior": 1.5,
-    "diffuse_roughness": 0.0,
-    "anisotropy": 0.0,
-    "anisotropy_rotation": 0.0,
-    "base_color": (0.8, 0.8, 0.8),
 }
-#: The coat an uber shader reads when the material has none: clear, smooth, no absorption.
 UBER_COAT_DEFAULT = Coat(name="", ior=1.5, roughness=0.0, alpha=(0.0, 0.0), color=(1.0, 1.0, 1.0), thickness=0.0)
 #: selector uniform -> plan attribute -> integer code read by templates/uber.glsl.j2.
 UBER_SELECTORS: dict[str, tuple[str, dict[Any, int]]] = {
@@ -317,14 +314,10 @@ UBER_SNIPPETS = (
 
 
 def complete_material(material: Material) -> Material:
-    """The material with every parameter an uber shader reads: the neutral value wherever the
-    IR has none (absent, or null)."""
+    """The material with every parameter an uber shader reads: a placeholder for the metal
+    optics and the coat where the IR has none (the table's defaults cover the rest)."""
     params = material.params
-    neutral = {
-        name: value
-        for name, value in UBER_PARAM_DEFAULTS.items()
-        if name not in params.present or getattr(params, name) is None
-    }
+    neutral = {name: value for name, value in UBER_OPTICS.items() if getattr(params, name) is None}
     coat = params.coat if params.coat is not None else UBER_COAT_DEFAULT
     return dataclasses.replace(material, params=dataclasses.replace(params, **neutral, coat=coat))
 
