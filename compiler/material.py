@@ -15,7 +15,7 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from functools import cached_property
 from types import MappingProxyType
@@ -24,7 +24,7 @@ from typing import Any
 from .conventions import alpha_of
 from .params import BASES, COAT_PARAMS, DIFFUSE_LOBES, DISTRIBUTIONS, PARAM_NAMES, PARAMS, RGB, Coat, Params, ParamSpec
 
-__all__ = ["RGB", "Coat", "Document", "MapRef", "Material", "Model", "Params", "Variant"]
+__all__ = ["RGB", "Coat", "Document", "MapRef", "Material", "Model", "Params", "Provenance", "Variant"]
 
 JSON = Any
 MAP_ROLES = ("base_color", "normal", "roughness", "metallic", "mask")
@@ -91,20 +91,29 @@ def _object(value: object, path: str) -> Mapping[str, Any]:
     return value
 
 
+_LEAVES = (str, float, int, bool, type(None))
+
+
 def _freeze(value: JSON) -> JSON:
-    """JSON -> read-only: objects become mapping proxies, arrays tuples."""
-    if isinstance(value, Mapping):
+    """JSON -> read-only: objects become mapping proxies, arrays tuples (exact type tests first)."""
+    kind = type(value)
+    if kind in _LEAVES:
+        return value
+    if kind is dict or isinstance(value, Mapping):
         return MappingProxyType({k: _freeze(v) for k, v in value.items()})
-    if isinstance(value, (list, tuple)):
-        return tuple(_freeze(v) for v in value)
+    if kind is list or kind is tuple:
+        return tuple([_freeze(v) for v in value])
     return value
 
 
 def _thaw(value: JSON) -> JSON:
-    """The inverse of _freeze: fresh dicts and lists the caller may change."""
-    if isinstance(value, Mapping):
+    """The inverse of _freeze (or a copy of plain JSON): fresh dicts and lists the caller may change."""
+    kind = type(value)
+    if kind in _LEAVES:
+        return value
+    if kind is MappingProxyType or isinstance(value, Mapping):
         return {k: _thaw(v) for k, v in value.items()}
-    if isinstance(value, tuple):
+    if kind is tuple or kind is list:
         return [_thaw(v) for v in value]
     return value
 
@@ -273,13 +282,50 @@ def _maps_from_ir(d: object, path: str) -> Mapping[str, MapRef]:
     return MappingProxyType({role: MapRef.from_ir(ref, f"{path}.{role}") for role, ref in d.items()})
 
 
-def _provenance_from_ir(d: object, path: str) -> Mapping[str, tuple[Mapping[str, Any], ...]]:
+Step = Mapping[str, Any]
+
+
+class Provenance(Mapping[str, tuple[Step, ...]]):
+    """param -> the steps that set it ({"rule", "words", "spans", "value"[, "source"]}), read-only.
+
+    Backends seldom read it, so the validated JSON is kept as it came and frozen on first read
+    (a deep freeze of every step costs more than the rest of typing a material)."""
+
+    __slots__ = ("_json", "_frozen")
+
+    def __init__(self, steps: Mapping[str, list[Step]]) -> None:
+        self._json = steps
+        self._frozen: Mapping[str, tuple[Step, ...]] | None = None
+
+    def _view(self) -> Mapping[str, tuple[Step, ...]]:
+        if self._frozen is None:
+            self._frozen = _freeze(self._json)
+        return self._frozen
+
+    def __getitem__(self, param: str) -> tuple[Step, ...]:
+        return self._view()[param]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._json)
+
+    def __len__(self) -> int:
+        return len(self._json)
+
+    def __repr__(self) -> str:
+        return f"Provenance({dict(self._view())!r})"
+
+    def to_ir(self) -> dict[str, JSON]:
+        """Fresh JSON the caller may change."""
+        thawed: dict[str, JSON] = _thaw(self._json if self._frozen is None else self._frozen)
+        return thawed
+
+
+def _provenance_from_ir(d: object, path: str) -> Provenance:
     d = _object(d, path)
     for name, steps in d.items():
         if not isinstance(steps, list) or not all(isinstance(s, Mapping) for s in steps):
             raise _fail(f"{path}.{name}", "a list of steps", steps)
-    frozen: Mapping[str, tuple[Mapping[str, Any], ...]] = _freeze(d)
-    return frozen
+    return Provenance(dict(d))
 
 
 @dataclass(frozen=True)
@@ -290,7 +336,7 @@ class Material:
     model: Model
     params: Params
     maps: Mapping[str, MapRef]
-    provenance: Mapping[str, tuple[Mapping[str, Any], ...]]
+    provenance: Provenance
 
     @classmethod
     def from_ir(cls, d: object, path: str = "", ranged: bool = True) -> Material:
@@ -319,7 +365,7 @@ class Material:
             "model": self.model.to_ir(),
             "params": params_to_ir(self.params),
             "maps": {role: ref.to_ir() for role, ref in self.maps.items()},
-            "provenance": _thaw(self.provenance),
+            "provenance": self.provenance.to_ir(),
         }
 
     @cached_property
