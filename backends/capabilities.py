@@ -19,8 +19,6 @@ from typing import Any
 from cnlmc.material import Material
 
 POLICIES = ("exact", "approximate", "bake", "drop", "error")
-# Options the compiler passes to every backend, beside the user's --option KEY=VALUE pairs.
-COMPILER_OPTIONS = ("seed", "output")
 POLICY_CODES = {"approximate": "W201", "bake": "W202", "drop": "W203", "error": "E201"}
 
 
