@@ -17,6 +17,7 @@ from ..base import as_document
 from .options import PreviewOptions, choose_tier, parse_options
 from .render import Frame, Renderer
 from .resources import Resources
+from .scene import Scene
 from .sheet import groups_of, label, png_bytes, sheet
 
 Rendered = list[tuple[Material, Frame]]
@@ -33,19 +34,27 @@ def render_ir(ir: IR, options: Mapping[str, object] | None = None, resources: Re
 
 def render_materials(renderer: Renderer, document: Document, opts: PreviewOptions) -> Rendered:
     """Every material of the document, in the scene the options describe."""
+    scene = preview_scene(renderer, opts)
+    return [(material, render_material(renderer, scene, material, opts)) for material in document.materials]
+
+
+def preview_scene(renderer: Renderer, opts: PreviewOptions) -> Scene:
+    """The scene the options describe (mesh, environment, background, exposure)."""
     scene = renderer.scene(opts.mesh, opts.env)
     scene.background, scene.exposure = opts.background, opts.exposure
-    frames = []
-    for material in document.materials:
-        tier, timings = choose_tier(renderer, scene, material, opts)
-        frame = renderer.render(material, tier=tier, glsl_options=opts.glsl, scene=scene)
-        if timings:
-            frame.notes.append(
-                f"preview: budget {opts.budget_ms:.1f} ms: measured "
-                f"{', '.join(f'{k} {v:.1f}' for k, v in timings.items())} -> {tier.name}"
-            )
-        frames.append((material, frame))
-    return frames
+    return scene
+
+
+def render_material(renderer: Renderer, scene: Scene, material: Material, opts: PreviewOptions) -> Frame:
+    """One material in the scene, at the options' tier (or the best one within the time budget)."""
+    tier, timings = choose_tier(renderer, scene, material, opts)
+    frame = renderer.render(material, tier=tier, glsl_options=opts.glsl, scene=scene)
+    if timings:
+        frame.notes.append(
+            f"preview: budget {opts.budget_ms:.1f} ms: measured "
+            f"{', '.join(f'{k} {v:.1f}' for k, v in timings.items())} -> {tier.name}"
+        )
+    return frame
 
 
 def compose(frames: Rendered) -> np.ndarray:

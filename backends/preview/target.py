@@ -5,12 +5,12 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-from cnlmc.material import Document
+from cnlmc.material import Document, Material
 
-from ..base import Artifact, OptionError, Options, Target
-from ..capabilities import EmitResult, check_material
+from ..base import Artifact, OptionError, Options, Target, emit_each
+from ..capabilities import EmitResult
 from .commands import PreviewCommand
-from .frames import IR, compose, render_materials
+from .frames import IR, Rendered, compose, preview_scene, render_material
 from .options import OPTIONS, PreviewOptionError, preview_options
 from .render import Renderer
 from .sheet import png_bytes
@@ -48,15 +48,19 @@ class PreviewTarget(Target):
 
     def emit(self, document: Document, options: Options) -> EmitResult:
         opts = preview_options(options)
-        notes: list = []
-        for material in document.materials:
-            check_material(notes, NAME, CAPABILITIES, material)
+        frames: Rendered = []
         with Renderer(opts.size, msaa=opts.msaa) as renderer:
-            frames = render_materials(renderer, document, opts)
-        artifacts = [Artifact(f"{m.name}.png", png_bytes(f.rgba), "binary") for m, f in frames]
+            scene = preview_scene(renderer, opts)
+
+            def one_png(material: Material) -> list[Artifact]:
+                frame = render_material(renderer, scene, material, opts)
+                frames.append((material, frame))
+                return [Artifact(f"{material.name}.png", png_bytes(frame.rgba), "binary")]
+
+            result = emit_each(self, document, one_png)
         if any(m.variant for m, _ in frames):
-            artifacts.append(Artifact("sheet.png", png_bytes(compose(frames)), "binary"))
-        return EmitResult(artifacts, notes)
+            result.artifacts.append(Artifact("sheet.png", png_bytes(compose(frames)), "binary"))
+        return result
 
 
 TARGET = PreviewTarget()
