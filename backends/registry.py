@@ -32,7 +32,6 @@ __all__ = [
     "TargetUnavailable",
     "UnknownTarget",
     "available",
-    "get_backend",
     "get_command",
     "get_target",
     "plugin_command",
@@ -122,25 +121,6 @@ def get_target(name: str) -> Target:
     module = _import(table[name], f"target '{name}'", name)
     target = getattr(module, "TARGET", None)
     return target if isinstance(target, Target) else ModuleTarget(module)
-
-
-class BackendModule:
-    """A target as earlier callers see it: emit(ir, raw options) (see Target.emit_ir)."""
-
-    def __init__(self, target: Target):
-        self.target = target
-
-    @property
-    def capabilities(self) -> Mapping[str, tuple[str, str]]:
-        return self.target.capabilities
-
-    def emit(self, ir: Document | Mapping[str, Any], options: Mapping[str, object] | None = None) -> EmitResult:
-        return self.target.emit_ir(ir, options)
-
-
-def get_backend(name: str) -> BackendModule:
-    """The interface earlier releases had (`get_backend(name).emit(ir, options)`); new code: get_target."""
-    return BackendModule(get_target(name))
 
 
 def get_command(name: str) -> Command:

@@ -74,9 +74,9 @@ def compile_phrase(phrase: str, lexicon: Lexicon | None = None, seed: int = 0) -
 
 def emit(ir: JSONDict | Document, target: str, options: dict[str, object] | None = None) -> Any:
     """Run a backend on an IR document (its JSON form or typed); returns its artifacts."""
-    from cnlmc.backends.registry import get_backend
+    from cnlmc.backends.registry import get_target
 
-    return get_backend(target).emit(ir, options or {})
+    return get_target(target).emit_ir(ir, options or {})
 
 
 class Session:

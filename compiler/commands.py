@@ -229,6 +229,8 @@ class TargetsCommand(Command):
                 description = get_target(name).description
             except TargetUnavailable as exc:
                 description = f"(not here: {exc})"
+            except Exception as exc:  # a broken plugin must not hide the others
+                description = f"(cannot load: {type(exc).__name__}: {exc})"
             print(f"{name:<10} {description} [{module}]")
         return EXIT_OK
 

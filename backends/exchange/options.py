@@ -6,8 +6,9 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from ..base import Option
+from ..maps.writer import FORMATS
 
-MAP_FORMATS = ("png8", "png16", "exr-half", "exr-float")
+MAP_FORMATS = tuple(FORMATS)
 MAP_MODES = ("bake", "none")
 
 Capabilities = Mapping[str, tuple[str, str]]

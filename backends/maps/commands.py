@@ -14,7 +14,7 @@ from ..base import Command
 from .errors import MapError
 from .service import MapBakeError, bake_files, has_maps
 from .sheet import render_contact_sheet
-from .writer import FORMATS
+from .target import TARGET
 
 
 class ProgressBar:
@@ -41,8 +41,12 @@ class BakeCommand(Command):
     def add_arguments(self, parser: argparse.ArgumentParser) -> None:
         add_source_arguments(parser)
         parser.add_argument("-o", "--output", required=True, help="output folder")
-        parser.add_argument("--size", type=int, default=1024, help="map size in pixels (default 1024)")
-        parser.add_argument("--format", default="png8", choices=list(FORMATS), help="image format (default png8)")
+        declared = {option.name: option for option in TARGET.options}  # the maps target's own defaults
+        size, fmt = declared["size"], declared["format"]
+        parser.add_argument("--size", type=int, default=size.default, help=f"{size.doc} (default {size.default})")
+        parser.add_argument(
+            "--format", default=fmt.default, choices=fmt.choices, help=f"{fmt.doc} (default {fmt.default})"
+        )
 
     def run(self, args: argparse.Namespace) -> int:
         source, name = read_source(args.file)

@@ -100,3 +100,15 @@ def test_a_plugin_brings_a_subcommand(tmp_path):
     assert r.returncode == 0 and r.stdout == "hello world\n", r.stderr
     r = cnlmc(tmp_path, "helo", "world")
     assert r.returncode == 2 and "invalid choice: 'helo'" in r.stderr
+
+
+def test_a_broken_plugin_does_not_hide_the_other_targets(tmp_path):
+    (tmp_path / "broken_target.py").write_text("raise RuntimeError('half-installed')\n")
+    info = tmp_path / "broken_target-1.0.dist-info"
+    info.mkdir()
+    (info / "METADATA").write_text("Metadata-Version: 2.1\nName: broken-target\nVersion: 1.0\n")
+    (info / "entry_points.txt").write_text("[cnlmc.backends]\nbroken = broken_target\n")
+    listed = cnlmc(tmp_path, "targets")
+    assert listed.returncode == 0, listed.stderr
+    assert "broken" in listed.stdout and "cannot load: RuntimeError: half-installed" in listed.stdout
+    assert "glsl" in listed.stdout and "materialx" in listed.stdout
