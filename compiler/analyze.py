@@ -11,14 +11,14 @@ from .params import Params
 from .passes.base import apply_noun
 from .passes.coats import apply_coat_clause
 from .passes.model import select_model
-from .passes.ranges import check_ranges
+from .passes.ranges import check_finite, check_ranges
 from .passes.refine import apply_refinement
 from .passes.variants import expand, identifier
 from .passes.words import apply_groups
 from .state import Context, MaterialState
 
 BUILD_PASSES = (apply_noun, apply_groups, apply_coat_clause)
-FINAL_PASSES = (select_model, check_ranges)
+FINAL_PASSES = (select_model, check_ranges, check_finite)
 
 
 def attach_refinements(doc: ast.Document) -> list[tuple[ast.Material, list[ast.Refinement]]]:

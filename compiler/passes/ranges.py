@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import sys
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -83,6 +84,110 @@ def _clamp(state: MaterialState, holder: dict[str, Any], param: str, name: str, 
     )
 
 
+BIGGEST = sys.float_info.max  # the largest finite float: where an unranged infinity is clamped to
+DEFAULTS: dict[str, Any] = {s.name: s.default for s in PARAMS}
+COAT_DEFAULTS: dict[str, Any] = {s.name: s.default for s in COAT_PARAMS}
+
+
+def check_finite(state: MaterialState, ctx: Context) -> MaterialState:
+    """Every number that reaches the IR is finite (docs/ir.md, "Finite numbers"): after the range
+    pass, a NaN or infinity left anywhere (an unranged parameter, a map parameter without a range,
+    a provenance step's value) is replaced, with a W109 naming the words of the step that made it.
+    Within a range: +inf -> high, -inf and NaN -> low. Without one: +-inf -> +-the largest finite
+    float (the limit the words were heading to), NaN -> the parameter's default (it has no direction)."""
+    params, coat, big = state.params, state.coat, BIGGEST
+    for param, value in params.items():
+        if not ((type(value) is float and -big <= value <= big) or _finite(value)):
+            params[param] = fixed = _fixed(value, RANGES.get(param), DEFAULTS.get(param))
+            _report(state, param, value, fixed)
+    if coat is not None:
+        for param, value in coat.items():
+            if not _finite(value):
+                coat[param] = fixed = _fixed(value, COAT_RANGES.get(param), COAT_DEFAULTS.get(param))
+                _report(state, "coat." + param, value, fixed)
+    for role, ref in state.maps.items():
+        table, held = graph_params(ref["graph"]), ref["params"]
+        for param, value in held.items():
+            if not _finite(value):
+                bounds = table.get(param)
+                held[param] = fixed = _fixed(value, bounds[:2] if bounds else None, bounds[2] if bounds else None)
+                _report(state, f"maps.{role}.{param}", value, fixed)
+    for name, steps in state.provenance.items():
+        for step in steps:
+            value = step.value
+            if not ((type(value) is float and -big <= value <= big) or _finite(value)):
+                step.value = _fixed(value, *_bounds_of(state, name))
+                _report(state, name, value, step.value, step)
+    return state
+
+
+def _finite(value: Any) -> bool:
+    """No NaN or infinity in a number, a list or a dict of them (anything else is not a number)."""
+    kind = type(value)
+    if kind is float:
+        finite: bool = -BIGGEST <= value <= BIGGEST  # NaN fails both
+        return finite
+    if kind is list:
+        try:
+            total = sum(value)  # one C loop: a NaN or an infinity anywhere makes the sum one too
+        except TypeError:  # not all numbers
+            return all(_finite(v) for v in value)
+        return -BIGGEST <= total <= BIGGEST or all(_finite(v) for v in value)  # (or the sum overflowed)
+    if kind is dict:
+        return all(_finite(v) for v in value.values())
+    return True
+
+
+def _fixed(value: Any, bounds: Sequence[float] | None, default: Any) -> Any:
+    """`value` with its NaNs and infinities replaced (check_finite's rule)."""
+    kind = type(value)
+    if kind is list:
+        if isinstance(default, (list, tuple)):
+            if len(default) == len(value):
+                return [_fixed(v, bounds, d) for v, d in zip(value, default, strict=True)]
+            default = None
+        return [_fixed(v, bounds, default) for v in value]
+    if kind is dict:
+        return {k: _fixed(v, bounds, None) for k, v in value.items()}
+    if kind is not float or _finite(value):
+        return value
+    if bounds is not None:
+        return float(bounds[1]) if value > 0 else float(bounds[0])  # NaN > 0 is false: the low end
+    if math.isnan(value):
+        return float(default) if type(default) in (int, float) and math.isfinite(default) else 0.0
+    return BIGGEST if value > 0 else -BIGGEST
+
+
+def _bounds_of(state: MaterialState, name: str) -> tuple[Sequence[float] | None, Any]:
+    """The range and default of a provenance name: a parameter, 'coat.X' or 'maps.ROLE.X'."""
+    if name.startswith("coat."):
+        key = name[5:]
+        return COAT_RANGES.get(key), COAT_DEFAULTS.get(key)
+    if name.startswith("maps."):
+        role, _, key = name[5:].partition(".")
+        ref = state.maps.get(role)
+        bounds = graph_params(ref["graph"]).get(key) if ref is not None else None
+        return (bounds[:2], bounds[2]) if bounds else (None, None)
+    return RANGES.get(name), DEFAULTS.get(name)
+
+
+def _report(state: MaterialState, name: str, value: Any, fixed: Any, step: Step | None = None) -> None:
+    """A W109 for `name`, naming the words of `step` (or of the last step that set it); once per name."""
+    for d in state.diagnostics:
+        if d.code == "W109" and d.message.startswith(f"{name.replace('_', ' ')} "):
+            return
+    steps = [step] if step is not None else state.provenance.get(name, [])[-1:]
+    words = [w.text for s in steps for w in s.words]
+    state.diagnostics.append(
+        warning(
+            _last_span(steps),
+            "W109",
+            f"{name.replace('_', ' ')} {_fmt(value)} is not a finite number and was replaced by {_fmt(fixed)}",
+            (f"set by: {' '.join(words)}" if words else "",),
+        )
+    )
+
+
 def _last_span(steps: list[Step]) -> Span | None:
     for step in reversed(steps):
         if step.words:
@@ -92,5 +197,7 @@ def _last_span(steps: list[Step]) -> Span | None:
 
 def _fmt(value: Any) -> str:
     if isinstance(value, list):
-        return "(" + ", ".join(f"{v:.3g}" for v in value) + ")"
-    return f"{value:.3g}"
+        return "(" + ", ".join(_fmt(v) for v in value) + ")"
+    if isinstance(value, dict):
+        return "{" + ", ".join(f"{k}: {_fmt(v)}" for k, v in value.items()) + "}"
+    return f"{value:.3g}" if isinstance(value, (int, float)) else str(value)

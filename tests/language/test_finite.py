@@ -1,0 +1,101 @@
+"""Finite numbers at the IR boundary (issue 13): no NaN or infinity reaches the IR, and the IR
+is always strict JSON; a value that would not be finite is replaced with a W109 naming the words."""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+from pathlib import Path
+from typing import Any
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from cnlmc.api import compile_source
+from cnlmc.lexicon import load_lexicon
+
+REFINEMENTS = [
+    "more grain",
+    "less grain",
+    "darker",
+    "lighter",
+    "rougher",
+    "smoother",
+    "glossier",
+    "more diffuse",
+    "less diffuse",
+]
+MATERIALS = ["white varnished oak", "polished white marble", "lightly brushed, blue anodized aluminum", "red glass"]
+
+
+def strict(ir: dict[str, Any]) -> str:
+    return json.dumps(ir, allow_nan=False)  # raises ValueError on NaN or infinity
+
+
+def nonfinite_paths(value: Any, path: str = "") -> list[str]:
+    if isinstance(value, float):
+        return [] if math.isfinite(value) else [path]
+    if isinstance(value, list):
+        return [p for i, v in enumerate(value) for p in nonfinite_paths(v, f"{path}[{i}]")]
+    if isinstance(value, dict):
+        return [p for k, v in value.items() for p in nonfinite_paths(v, f"{path}.{k}")]
+    return []
+
+
+def test_a_refinement_repeated_past_overflow_gives_strict_json_and_a_warning() -> None:
+    source = "white varnished oak\n" + "more grain\n" * 1751
+    result = compile_source(source, "oak.cnl")
+    strict(result.ir)
+    assert nonfinite_paths(result.ir) == []
+    (material,) = result.materials
+    assert material["maps"]["base_color"]["params"]["grain"] == 2.0  # the range's top, as W107 clamps it
+    steps = material["provenance"]["maps.base_color.grain"]
+    assert steps[-1]["value"] == 2.0  # the overflowing step, clamped into the graph's range
+    w109 = [d for d in result.diagnostics if d.code == "W109"]
+    assert w109, result.diagnostics
+    first = w109[0]
+    assert "grain" in first.message and "inf" in first.message
+    assert first.hints == ("set by: more grain",)
+    assert first.span is not None and first.span.line == 1752  # the line whose step overflowed
+    assert result.ok  # a warning, not an error
+
+
+def test_nan_and_infinity_from_lexicon_formulas_are_replaced(tmp_path: Path) -> None:
+    (tmp_path / "nouns_studio.toml").write_text(
+        '[unobtainium]\nclass = "metal"\nmodel = "conductor"\n'
+        "roughness = 0.2\nbase_color = [1.0, 0.5, 0.2]\neta = [1e308, 1.0, 1.0]\nk = [3.0, -1e308, 3.0]\n"
+        'source = "studio"\ndoc = "A studio metal."\nexample = "cursed unobtainium"\n',
+        "utf-8",
+    )
+    (tmp_path / "adjectives_studio.toml").write_text(
+        '[cursed]\naliases = []\ndoc = "Overflows."\nexample = "cursed unobtainium"\n'
+        'effects = [{ param = "roughness", op = "mul", value = nan }, { param = "eta", op = "mul", value = 10.0 },'
+        ' { param = "k", op = "add", value = [0.0, -1e308, inf] }]\n',
+        "utf-8",
+    )
+    result = compile_source("cursed unobtainium", "x.cnl", load_lexicon([tmp_path]))
+    strict(result.ir)
+    assert nonfinite_paths(result.ir) == []
+    params = result.materials[0]["params"]
+    biggest = sys.float_info.max
+    assert params["eta"] == [biggest, 10.0, 10.0]  # +inf without a range -> the largest finite float
+    assert params["k"] == [3.0, -biggest, biggest]
+    assert params["roughness"] == 0.0  # NaN with a range -> its low end (W107)
+    found = {d.message.split(" ")[0]: d.hints for d in result.diagnostics if d.code == "W109"}
+    assert found["eta"] == ("set by: cursed",) and found["k"] == ("set by: cursed",)
+    assert any(d.code == "W107" and d.message.startswith("roughness nan") for d in result.diagnostics)
+
+
+@settings(max_examples=50, deadline=None)
+@given(
+    material=st.sampled_from(MATERIALS),
+    lines=st.lists(
+        st.tuples(st.sampled_from(REFINEMENTS), st.integers(min_value=1, max_value=1200)), min_size=1, max_size=4
+    ),
+)
+def test_any_refinement_sequence_gives_strict_json(material: str, lines: list[tuple[str, int]]) -> None:
+    source = material + "\n" + "".join(f"{word}\n" * count for word, count in lines)
+    result = compile_source(source, "x.cnl")
+    strict(result.ir)
+    assert nonfinite_paths(result.ir) == []
