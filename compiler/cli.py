@@ -16,6 +16,7 @@ from cnlmc.backends.registry import BUILTIN_COMMANDS, Command, TargetUnavailable
 
 from .cache import freeze_long_lived
 from .commands import EXIT_INTERNAL, EXIT_OK, EXIT_USAGE, LANGUAGE_COMMANDS
+from .diagnostics import visible
 from .errors import UsageError
 
 __all__ = ["build_parser", "main"]
@@ -73,7 +74,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         code: int = args.handler(args)
         return code
     except UsageError as exc:
-        print(f"cnlmc: error: {exc}", file=sys.stderr)
+        print(f"cnlmc: error: {visible(str(exc))}", file=sys.stderr)  # it may echo a file name
         return EXIT_USAGE
     except KeyboardInterrupt:
         return 130
@@ -81,7 +82,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_OK
     except Exception as exc:  # the last line of defence: never a traceback
         print(
-            f"cnlmc: internal error: {type(exc).__name__}: {exc}\nplease report this with the input that caused it",
+            f"cnlmc: internal error: {type(exc).__name__}: {visible(str(exc))}\nplease report this with the input that caused it",
             file=sys.stderr,
         )
         return EXIT_INTERNAL

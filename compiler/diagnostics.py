@@ -70,19 +70,45 @@ def did_you_mean(suggestions: Sequence[str]) -> tuple[str, ...]:
     return (f"did you mean {quoted}?",)
 
 
+def _escape_table(keep: str) -> dict[int, str]:
+    """Control characters -> visible escapes: C0 and DEL and C1 (as \\x1b), line and paragraph
+    separators and the bidirectional overrides (as \\u202e); the characters in `keep` stay."""
+    codes = [*range(0x20), 0x7F, *range(0x80, 0xA0), 0x2028, 0x2029, *range(0x202A, 0x202F), *range(0x2066, 0x206A)]
+    return {c: (f"\\x{c:02x}" if c < 0x100 else f"\\u{c:04x}") for c in codes if chr(c) not in keep}
+
+
+_VISIBLE = _escape_table("\t\n")  # text: tabs and newlines are layout
+_VISIBLE_LINE = _escape_table("")  # one line (a file name, a source line): everything escaped
+
+
+def visible(text: str, *, one_line: bool = False) -> str:
+    """`text` safe to print on a terminal: control characters (ESC, BEL, CR, C1, bidi overrides)
+    become visible escapes such as `\\x1b`, so input cannot retitle, clear or rewrite the
+    terminal. Tabs and newlines stay unless `one_line`."""
+    return text.translate(_VISIBLE_LINE if one_line else _VISIBLE)
+
+
 def render(diag: Diagnostic, source: str, filename: str) -> str:
-    """file:line:col: severity: message, then the source line, a caret line and hints."""
+    """file:line:col: severity: message, then the source line, a caret line and hints; control
+    characters from the source, the file name or the message are escaped (`visible`), and the
+    caret sits under the escaped text of the span."""
+    name, message = visible(filename, one_line=True), visible(diag.message)
+    hints = [f"{'  ' if diag.span is None else '     '}= {visible(h)}" for h in diag.hints]
     if diag.span is None:
-        head = f"{filename}: {diag.severity.value}[{diag.code}]: {diag.message}"
-        return "\n".join([head, *(f"  = {h}" for h in diag.hints)])
+        return "\n".join([f"{name}: {diag.severity.value}[{diag.code}]: {message}", *hints])
     span = diag.span
-    head = f"{filename}:{span.line}:{span.col}: {diag.severity.value}[{diag.code}]: {diag.message}"
-    text = _source_line(source, span.line)
-    width = max(1, min(span.end - span.start, max(1, len(text) - span.col + 1)))
-    caret = " " * (span.col - 1) + "^" + "~" * (width - 1)
+    head = f"{name}:{span.line}:{span.col}: {diag.severity.value}[{diag.code}]: {message}"
+    raw = _source_line(source, span.line)
+    width = max(1, min(span.end - span.start, max(1, len(raw) - span.col + 1)))
+    before, marked = raw[: span.col - 1], raw[span.col - 1 : span.col - 1 + width]
+    text = visible(raw, one_line=True)
+    if len(text) != len(raw):  # escapes widen the line: measure the span in the escaped text
+        width = max(1, len(visible(marked, one_line=True)))
+        caret = " " * len(visible(before, one_line=True)) + "^" + "~" * (width - 1)
+    else:
+        caret = " " * (span.col - 1) + "^" + "~" * (width - 1)
     gutter = f"{span.line:>4} | "
-    lines = [head, gutter + text, " " * (len(gutter) - 2) + "| " + caret]
-    lines += [f"     = {h}" for h in diag.hints]
+    lines = [head, gutter + text, " " * (len(gutter) - 2) + "| " + caret, *hints]
     return "\n".join(lines)
 
 

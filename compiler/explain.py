@@ -1,8 +1,12 @@
-"""`cnlmc explain`: every parameter of every material with the words and rules that set it."""
+"""`cnlmc explain`: every parameter of every material with the words and rules that set it.
+Text from the source or a lexicon (names, phrases, words, rules) is printed with its control
+characters escaped (cnlmc.diagnostics.visible)."""
 
 from __future__ import annotations
 
 from typing import Any
+
+from .diagnostics import visible
 
 
 def _fmt(value: Any) -> str:
@@ -17,7 +21,7 @@ def explain_material(material: dict[str, Any]) -> list[str]:
     model = material["model"]
     parts = [model["base"]] + [k for k in ("anisotropic", "coat") if model[k]]
     lines = [
-        f"{material['name']}: {material['phrase']}",
+        visible(f"{material['name']}: {material['phrase']}", one_line=True),
         f"  model: {' + '.join(parts)}"
         + (f", {model['distribution']}" if model["distribution"] else "")
         + (f", {model['diffuse']} diffuse" if model["diffuse"] else ""),
@@ -25,7 +29,8 @@ def explain_material(material: dict[str, Any]) -> list[str]:
     rows = [("parameter", "value", "set by", "rule")]
     for param, steps in material["provenance"].items():
         for i, step in enumerate(steps):
-            rows.append((param if i == 0 else "", _fmt(step["value"]), " ".join(step["words"]), step["rule"]))
+            words, rule = visible(" ".join(step["words"]), one_line=True), visible(step["rule"], one_line=True)
+            rows.append((param if i == 0 else "", visible(_fmt(step["value"]), one_line=True), words, rule))
     lines += _table(rows)
     return lines
 
