@@ -15,6 +15,7 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+import sys
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from functools import cached_property
@@ -38,8 +39,12 @@ def _fail(path: str, expected: str, value: object) -> ValueError:
     return ValueError(f"{path}: expected {expected}, got {value!r}")
 
 
+_BIGGEST = sys.float_info.max
+
+
 def _is_number(value: object) -> bool:
-    return isinstance(value, (int, float)) and not isinstance(value, bool)
+    """A finite int or float (the IR has no NaN or infinity: docs/ir.md, "Finite numbers")."""
+    return isinstance(value, (int, float)) and not isinstance(value, bool) and -_BIGGEST <= value <= _BIGGEST
 
 
 def _fmt(x: float) -> str:

@@ -9,11 +9,13 @@ import sys
 from pathlib import Path
 from typing import Any
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from cnlmc.api import compile_source
 from cnlmc.lexicon import load_lexicon
+from cnlmc.material import Document
 
 REFINEMENTS = [
     "more grain",
@@ -99,3 +101,17 @@ def test_any_refinement_sequence_gives_strict_json(material: str, lines: list[tu
     result = compile_source(source, "x.cnl")
     strict(result.ir)
     assert nonfinite_paths(result.ir) == []
+
+
+def test_an_ir_with_nan_or_infinity_is_refused_where_backends_read_it() -> None:
+    ir = compile_source("polished gold", "x.cnl").ir
+    for path, bad in ((("eta", 0), math.nan), (("roughness",), math.inf), (("f0", 2), -math.inf)):
+        broken = json.loads(json.dumps(ir))
+        holder = broken["materials"][0]["params"]
+        if len(path) == 2:
+            holder[path[0]][path[1]] = bad
+        else:
+            holder[path[0]] = bad
+        with pytest.raises(ValueError, match=f"materials\\[0\\].params.{path[0]}: expected"):
+            Document.from_ir(broken)
+    Document.from_ir(ir)  # the compiler's own IR passes
