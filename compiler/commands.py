@@ -145,7 +145,7 @@ class CompileCommand(Command):
         if emitted is None:
             return EXIT_ERRORS
         print_notes(emitted)
-        return deliver(emitted.artifacts, args.output)
+        return deliver(emitted.artifacts, args.output, protect=[args.file])
 
 
 def run_target(target: Target, result: Result, args: argparse.Namespace) -> EmitResult | None:
@@ -169,10 +169,11 @@ def print_notes(emitted: EmitResult) -> None:
         print(f"warning[{note.code}]: {note.text()}", file=sys.stderr)
 
 
-def deliver(artifacts: list[Artifact], output: str | None) -> int:
-    """Write the files (atomically) where -o says, or print the text ones on stdout."""
+def deliver(artifacts: list[Artifact], output: str | None, protect: Sequence[str] = ()) -> int:
+    """Write the files (all-or-nothing, never over an input in `protect`: cnlmc.output) where -o
+    says, or print the text ones on stdout."""
     if output:
-        for path in write_artifacts(artifacts, output):
+        for path in write_artifacts(artifacts, output, protect):
             print(f"wrote {path}", file=sys.stderr)
         return EXIT_OK
     for artifact in artifacts:

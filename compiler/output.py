@@ -1,12 +1,43 @@
-"""Atomic output: a file appears whole or not at all; an existing file survives a failure."""
+"""The one output writer: every file cnlmc writes goes through here.
+
+What it guarantees:
+
+- **Atomic files.** A file is written to a hidden temp beside its destination
+  (`.NAME.XXXXXXXX.tmp`) and renamed over it: a destination appears whole or not at all, and an
+  existing file survives a failure unchanged.
+- **All-or-nothing results.** `write_artifacts` first writes every file of a result to its temp,
+  then renames them all; when anything fails (a full disk, a read-only folder, a file where a
+  folder is expected, a name too long, ...) every temp it made is removed, the files already
+  renamed are put back as they were (kept as hard links until the end), and no destination is
+  changed.
+- **Only regular files are written.** A destination that exists and is not a regular file (a
+  device node such as /dev/null, a FIFO, a socket, a folder where a file is expected) is refused
+  before anything is written.
+- **Symlinks are written through.** An output path that is a symlink updates the file the link
+  points to (resolved to the end of the chain); the link itself stays a link. A link to a
+  non-regular file is refused like the file itself.
+- **Inputs are never overwritten.** The commands pass the files they read (`protect=`); a
+  destination that is one of them (the same file, through any path, link or hard link) is refused.
+
+Every refusal and every OS error is a `UsageError` naming the path and the reason: the CLI prints
+`cnlmc: error: ...` and exits 2.
+"""
 
 from __future__ import annotations
 
+import contextlib
+import errno
 import os
+import stat
 import tempfile
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from pathlib import Path
 from typing import Protocol
+
+from .errors import UsageError
+
+#: the longest part of a destination's name a temp's name repeats (the temp stays under NAME_MAX)
+TEMP_NAME_PART = 100
 
 
 class Artifact(Protocol):
@@ -19,20 +50,6 @@ class Artifact(Protocol):
     def content(self) -> str | bytes: ...
 
 
-def write_atomic(path: Path, content: str | bytes) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    data = content.encode("utf-8") if isinstance(content, str) else content
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as handle:
-            handle.write(data)
-        os.chmod(tmp, usual_mode())  # mkstemp makes 0600; give the file the usual mode
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-
-
 def usual_mode() -> int:
     """The mode a plain open() would give a new file under the current umask."""
     mask = os.umask(0)
@@ -40,19 +57,167 @@ def usual_mode() -> int:
     return 0o666 & ~mask
 
 
+def os_error(path: Path | str, exc: OSError) -> UsageError:
+    """An OS error as the usage error the CLI prints: the path and the reason."""
+    reason = exc.strerror or (errno.errorcode.get(exc.errno, "") if exc.errno else "") or str(exc)
+    return UsageError(f"cannot write '{path}': {reason}")
+
+
+def _kind(mode: int) -> str:
+    if stat.S_ISDIR(mode):
+        return "a folder"
+    if stat.S_ISCHR(mode):
+        return "a character device"
+    if stat.S_ISBLK(mode):
+        return "a block device"
+    if stat.S_ISFIFO(mode):
+        return "a FIFO (named pipe)"
+    if stat.S_ISSOCK(mode):
+        return "a socket"
+    return "not a regular file"
+
+
+def _input_stats(protect: Iterable[str | Path]) -> list[tuple[str, os.stat_result]]:
+    stats = []
+    for path in protect:
+        if str(path) in ("", "-"):
+            continue
+        with contextlib.suppress(OSError):
+            stats.append((str(path), os.stat(path)))
+    return stats
+
+
+def destination(path: Path | str, protect: Iterable[str | Path] = ()) -> Path:
+    """The file a write to `path` changes (a symlink resolved to its target), after the checks:
+    it is a regular file or does not exist yet, and it is none of the `protect`ed inputs.
+    Raises UsageError naming `path` otherwise. Writes nothing."""
+    shown = Path(path)
+    try:
+        real = Path(os.path.realpath(shown))
+        info: os.stat_result | None = os.stat(real)
+    except FileNotFoundError:
+        info = None
+    except OSError as exc:
+        raise os_error(shown, exc) from None
+    if info is None:
+        return real
+    if not stat.S_ISREG(info.st_mode):
+        raise UsageError(f"cannot write '{shown}': it is {_kind(info.st_mode)}, not a regular file")
+    for name, other in _input_stats(protect):
+        if (info.st_dev, info.st_ino) == (other.st_dev, other.st_ino):
+            raise UsageError(f"refusing to write '{shown}': it is the input file '{name}'")
+    return real
+
+
+def _make_parents(folder: Path, made: list[Path]) -> None:
+    """Create `folder` and its missing parents, recording each folder made (to remove on failure)."""
+    missing = []
+    probe = folder
+    while not os.path.lexists(probe):
+        missing.append(probe)
+        if probe.parent == probe:
+            break
+        probe = probe.parent
+    for part in reversed(missing):
+        part.mkdir()
+        made.append(part)
+
+
+def _stage(real: Path, data: bytes) -> Path:
+    """Write `data` to a new temp beside `real`; returns the temp (removed again on failure)."""
+    fd, tmp = tempfile.mkstemp(prefix=f".{real.name[:TEMP_NAME_PART]}.", suffix=".tmp", dir=real.parent)
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            handle.write(data)
+        os.chmod(tmp, usual_mode())  # mkstemp makes 0600; give the file the usual mode
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return Path(tmp)
+
+
+def _commit(staged: Sequence[tuple[Path, Path, Path]]) -> None:
+    """Rename every temp over its destination; on a failure, put back the ones already renamed."""
+    done: list[tuple[Path, Path | None]] = []
+    backups: list[Path] = []
+    try:
+        for tmp, real, shown in staged:
+            backup = None
+            if len(staged) > 1 and os.path.lexists(real):
+                backup = real.parent / f".{real.name[:TEMP_NAME_PART]}.{os.getpid()}.bak"
+                backup.unlink(missing_ok=True)
+                try:
+                    os.link(real, backup)  # the old file, kept until every rename succeeded
+                    backups.append(backup)
+                except OSError:
+                    backup = None  # no hard links here: this file cannot be put back
+            try:
+                os.replace(tmp, real)
+            except OSError as exc:
+                raise os_error(shown, exc) from None
+            done.append((real, backup))
+    except BaseException:
+        for real, backup in reversed(done):
+            with contextlib.suppress(OSError):
+                if backup is not None:
+                    os.replace(backup, real)
+                else:
+                    real.unlink()
+        raise
+    finally:
+        for backup in backups:
+            backup.unlink(missing_ok=True)
+
+
+def write_files(files: Sequence[tuple[Path, str | bytes]], protect: Iterable[str | Path] = ()) -> list[Path]:
+    """Write every (path, content) all-or-nothing (see the module docstring); returns the paths.
+    Raises UsageError naming the path and the reason; then nothing is changed."""
+    protect = list(protect)
+    reals: list[Path] = []
+    for path, _ in files:
+        real = destination(path, protect)
+        if real in reals:
+            raise UsageError(f"cannot write '{path}': two files of this result have that name")
+        reals.append(real)
+    made: list[Path] = []
+    staged: list[tuple[Path, Path, Path]] = []
+    try:
+        for (path, content), real in zip(files, reals):
+            data = content.encode("utf-8") if isinstance(content, str) else content
+            try:
+                _make_parents(real.parent, made)
+                staged.append((_stage(real, data), real, path))
+            except OSError as exc:
+                raise os_error(path, exc) from None
+        _commit(staged)
+    except BaseException:
+        for tmp, _, _ in staged:
+            with contextlib.suppress(OSError):
+                tmp.unlink(missing_ok=True)
+        for folder in reversed(made):
+            with contextlib.suppress(OSError):
+                folder.rmdir()
+        raise
+    return [path for path, _ in files]
+
+
+def write_atomic(path: Path, content: str | bytes, protect: Iterable[str | Path] = ()) -> None:
+    """One file, atomically, through the checks of `destination` (UsageError on a refusal or an OS error)."""
+    write_files([(Path(path), content)], protect)
+
+
 def looks_like_file(out: str) -> bool:
     target = Path(out)
-    return not out.endswith(("/", os.sep)) and not target.is_dir() and bool(target.suffix)
+    return not out.endswith(("/", os.sep)) and not os.path.isdir(target) and bool(target.suffix)
 
 
-def write_artifacts(artifacts: Sequence[Artifact], out: str) -> list[Path]:
+def write_artifacts(artifacts: Sequence[Artifact], out: str, protect: Iterable[str | Path] = ()) -> list[Path]:
     """`out` a file path: the first (main) artifact goes there, the others beside it.
-    `out` a folder (existing, ending in '/', or without a suffix): every artifact goes into it."""
+    `out` a folder (existing, ending in '/', or without a suffix): every artifact goes into it.
+    All-or-nothing, never over an input in `protect` (see the module docstring)."""
     target = Path(out)
-    if looks_like_file(out) or (len(artifacts) == 1 and not target.is_dir() and not out.endswith(("/", os.sep))):
+    if looks_like_file(out) or (len(artifacts) == 1 and not os.path.isdir(target) and not out.endswith(("/", os.sep))):
         paths = [target] + [target.parent / a.name for a in artifacts[1:]]
     else:
         paths = [target / a.name for a in artifacts]
-    for path, artifact in zip(paths, artifacts):
-        write_atomic(path, artifact.content)
-    return paths
+    return write_files([(path, a.content) for path, a in zip(paths, artifacts)], protect)

@@ -4,6 +4,7 @@ progress bar) and `cnlmc sheet` (a contact sheet of every stdlib graph)."""
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from typing import TextIO
 
@@ -50,6 +51,8 @@ class BakeCommand(Command):
 
     def run(self, args: argparse.Namespace) -> int:
         source, name = read_source(args.file)
+        if os.path.lexists(args.output) and not os.path.isdir(args.output):
+            raise UsageError(f"cannot write into '{args.output}': it is not a folder")
         result = compile_reported(source, name, args)
         if not result.ok:
             return EXIT_ERRORS

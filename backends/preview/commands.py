@@ -19,6 +19,7 @@ from cnlmc.commands import (
     read_source,
 )
 from cnlmc.errors import UsageError
+from cnlmc.output import destination
 
 from ..base import Command
 from . import live
@@ -81,7 +82,7 @@ class PreviewCommand(Command):
         if args.interactive:
             return self.live(source, args)
         try:
-            report = preview_command(result.document, args.output, render_options(args))
+            report = preview_command(result.document, args.output, render_options(args), protect=[args.file])
         except (ValueError, OSError, RuntimeError) as exc:
             raise UsageError(str(exc)) from None
         for note in report.notes:
@@ -92,6 +93,7 @@ class PreviewCommand(Command):
     def live(self, source: str, args: argparse.Namespace) -> int:
         if args.file == "-":
             raise UsageError("--interactive reads refinements from standard input: give the material as a file")
+        destination(args.output, protect=[args.file])  # never over the material file it re-reads
         try:
             session = live.LiveSession(source, Path(args.output), render_options(args), lexicon_of(args))
             code: int = live.run(session, window=Window.open())

@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 
 from cnlmc.material import Document, Material
-from cnlmc.output import write_atomic
+from cnlmc.output import destination, write_atomic
 
 from ..base import as_document
 from .options import PreviewOptions, choose_tier, parse_options
@@ -78,15 +78,20 @@ class PreviewReport:
 
 
 def preview_command(
-    ir: IR, out_path: str | Path, options: Mapping[str, object] | None = None, resources: Resources | None = None
+    ir: IR,
+    out_path: str | Path,
+    options: Mapping[str, object] | None = None,
+    resources: Resources | None = None,
+    protect: Sequence[str | Path] = (),
 ) -> PreviewReport:
     """Render the IR and write one PNG to `out_path` (a sheet when there are several materials);
-    `resources` as for render_ir.
+    `resources` as for render_ir; `protect`: the input files, never overwritten (cnlmc.output).
 
     Raises PreviewOptionError (usage error), MeshError / EnvironmentError (bad input file),
     PreviewUnavailable (no OpenGL here)."""
-    frames = render_ir(ir, options, resources)
     out_path = Path(out_path)
-    write_atomic(out_path, png_bytes(compose(frames)))
+    destination(out_path, protect)  # refused before the render, not after it
+    frames = render_ir(ir, options, resources)
+    write_atomic(out_path, png_bytes(compose(frames)), protect)
     notes = [n for _, f in frames for n in f.notes]
     return PreviewReport(out_path, frames, notes)
