@@ -71,7 +71,7 @@ def _clamp(state: MaterialState, holder: dict[str, Any], param: str, name: str, 
     fixed = clamp(value, low, high)
     holder[param] = fixed
     steps = state.provenance.get(name, [])
-    words = [w.text for s in steps for w in s.words]
+    words = _set_by(steps)
     span = _last_span(steps)
     state.note(name, fixed, f"range check: clamped to [{low}, {high}]")
     state.diagnostics.append(
@@ -177,7 +177,7 @@ def _report(state: MaterialState, name: str, value: Any, fixed: Any, step: Step 
         if d.code == "W109" and d.message.startswith(f"{name.replace('_', ' ')} "):
             return
     steps = [step] if step is not None else state.provenance.get(name, [])[-1:]
-    words = [w.text for s in steps for w in s.words]
+    words = _set_by(steps)
     state.diagnostics.append(
         warning(
             _last_span(steps),
@@ -186,6 +186,21 @@ def _report(state: MaterialState, name: str, value: Any, fixed: Any, step: Step 
             (f"set by: {' '.join(words)}" if words else "",),
         )
     )
+
+
+def _set_by(steps: list[Step]) -> list[str]:
+    """The words of the steps in order; a step repeated on consecutive lines ('more grain' on
+    1,751 lines) is named once, with its count, so the hint stays short."""
+    groups: list[list[Any]] = []  # [text, count]
+    for step in steps:
+        text = " ".join([w.text for w in step.words])
+        if not text:
+            continue
+        if groups and groups[-1][0] == text:
+            groups[-1][1] += 1
+        else:
+            groups.append([text, 1])
+    return [text if n == 1 else f"{text} ({n} times)" for text, n in groups]
 
 
 def _last_span(steps: list[Step]) -> Span | None:

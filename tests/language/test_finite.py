@@ -61,6 +61,8 @@ def test_a_refinement_repeated_past_overflow_gives_strict_json_and_a_warning() -
     assert first.hints == ("set by: more grain",)
     assert first.span is not None and first.span.line == 1752  # the line whose step overflowed
     assert result.ok  # a warning, not an error
+    w107 = [d for d in result.diagnostics if d.code == "W107"]
+    assert w107 and w107[0].hints == ("set by: more grain (1751 times)",)  # repeats named once
 
 
 def test_nan_and_infinity_from_lexicon_formulas_are_replaced(tmp_path: Path) -> None:
