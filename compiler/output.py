@@ -30,7 +30,7 @@ import errno
 import os
 import stat
 import tempfile
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 from typing import Protocol
 
@@ -199,6 +199,61 @@ def write_files(files: Sequence[tuple[Path, str | bytes]], protect: Iterable[str
                 folder.rmdir()
         raise
     return [path for path, _ in files]
+
+
+class Staging:
+    """A multi-file result built step by step (the maps of every material of a bake): `add` writes
+    one file to a temp beside its destination through `write(temp)`, after the checks of
+    `destination`; `commit` renames them all at once (the ones already renamed are put back on a
+    failure). Leaving the `with` block without a commit removes every temp and every folder made."""
+
+    def __init__(self, protect: Iterable[str | Path] = ()) -> None:
+        self.protect = list(protect)
+        self.staged: list[tuple[Path, Path, Path]] = []
+        self.made: list[Path] = []
+        self.committed = False
+
+    def add(self, path: Path, write: Callable[[Path], None]) -> None:
+        real = destination(path, self.protect)
+        if any(real == other for _, other, _ in self.staged):
+            raise UsageError(f"cannot write '{path}': two files of this result have that name")
+        try:
+            _make_parents(real.parent, self.made)
+            fd, tmp = tempfile.mkstemp(
+                prefix=f".{real.name[:TEMP_NAME_PART]}.", suffix=real.suffix or ".tmp", dir=real.parent
+            )
+            os.close(fd)
+        except OSError as exc:
+            raise os_error(path, exc) from None
+        temp = Path(tmp)
+        self.staged.append((temp, real, Path(path)))  # before the write: a failed one is removed too
+        try:
+            write(temp)
+            os.chmod(temp, usual_mode())  # mkstemp makes 0600
+        except OSError as exc:
+            raise os_error(path, exc) from None
+
+    def commit(self) -> list[Path]:
+        """Rename every staged file over its destination; returns the paths as given to `add`."""
+        _commit(self.staged)
+        self.committed = True
+        return [shown for _, _, shown in self.staged]
+
+    def discard(self) -> None:
+        for temp, _, _ in self.staged:
+            with contextlib.suppress(OSError):
+                temp.unlink(missing_ok=True)
+        for folder in reversed(self.made):
+            with contextlib.suppress(OSError):
+                folder.rmdir()
+        self.staged, self.made = [], []
+
+    def __enter__(self) -> Staging:
+        return self
+
+    def __exit__(self, *exc_info: object) -> None:
+        if not self.committed:
+            self.discard()
 
 
 def write_atomic(path: Path, content: str | bytes, protect: Iterable[str | Path] = ()) -> None:

@@ -10,6 +10,7 @@ from typing import TextIO
 
 from cnlmc.commands import EXIT_ERRORS, EXIT_OK, add_source_arguments, compile_reported, read_source
 from cnlmc.errors import UsageError
+from cnlmc.output import Staging
 
 from ..base import Command
 from .errors import MapError
@@ -57,14 +58,18 @@ class BakeCommand(Command):
         if not result.ok:
             return EXIT_ERRORS
         progress, paths = ProgressBar(), []
-        for material in result.document.materials:
-            if not has_maps(material):
-                print(f"{material.name}: uniform, no maps to bake", file=sys.stderr)
-                continue
-            try:
-                paths += bake_files(material, args.output, args.size, args.format, args.seed, on_progress=progress)
-            except MapBakeError as exc:
-                raise UsageError(exc.reason) from None
+        with Staging(protect=[args.file]) as staging:  # every material's maps, or none of them
+            for material in result.document.materials:
+                if not has_maps(material):
+                    print(f"{material.name}: uniform, no maps to bake", file=sys.stderr)
+                    continue
+                try:
+                    paths += bake_files(
+                        material, args.output, args.size, args.format, args.seed, on_progress=progress, staging=staging
+                    )
+                except MapBakeError as exc:
+                    raise UsageError(exc.reason) from None
+            staging.commit()
         for path in paths:
             print(f"wrote {path}", file=sys.stderr)
         return EXIT_OK

@@ -22,6 +22,7 @@ from typing import Any
 import numpy as np
 
 from cnlmc.material import Material, params_to_ir
+from cnlmc.output import Staging
 
 from ..base import Artifact
 from .bake import OnProgress, bake
@@ -78,14 +79,16 @@ def bake_files(
     roles: Collection[str] | None = None,
     derive: Derive | None = None,
     on_progress: OnProgress | None = None,
+    staging: Staging | None = None,
 ) -> list[Path]:
-    """Bake and write out_dir/{stem}_{role}{.png|.exr} (stem: the material's name)."""
+    """Bake and write out_dir/{stem}_{role}{.png|.exr} (stem: the material's name); all-or-nothing,
+    or, with `staging`, written when the caller commits it (cnlmc.output.Staging)."""
     name = _parts(material)[0]
     arrays = bake_arrays(material, size, seed, roles, on_progress)
     if derive is not None:
         arrays = derive(arrays)
     try:
-        return write_maps(arrays, out_dir, fmt, stem=stem or name)
+        return write_maps(arrays, out_dir, fmt, stem=stem or name, staging=staging)
     except MapError as exc:
         raise MapBakeError(name, str(exc)) from None
 

@@ -8,13 +8,13 @@ apply the sRGB curve, whereas an untagged PNG reads back as sRGB).
 
 from __future__ import annotations
 
-import os
-import tempfile
+import contextlib
+import functools
 from pathlib import Path
 
 import numpy as np
 
-from cnlmc.output import usual_mode
+from cnlmc.output import Staging
 
 from .colour import linear_to_srgb
 from .errors import MapError
@@ -55,29 +55,28 @@ def write_image(path: Path, pixels: np.ndarray, pixel_type: str, colour_space: s
         raise MapError(f"cannot write {path}: {output.geterror()}")
 
 
-def write_atomically(path: Path, pixels: np.ndarray, pixel_type: str, colour_space: str) -> None:
-    handle, temp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=path.suffix, dir=path.parent)
-    os.close(handle)
-    try:
-        write_image(Path(temp), pixels, pixel_type, colour_space)
-        os.chmod(temp, usual_mode())  # mkstemp makes 0600
-        os.replace(temp, path)
-    except BaseException:
-        Path(temp).unlink(missing_ok=True)
-        raise
-
-
-def write_maps(arrays: dict, out_dir, fmt: str = "png8", stem: str = "material") -> list[Path]:
-    """Write each role to out_dir/{stem}_{role}{.png|.exr}; returns the paths written."""
+def write_maps(
+    arrays: dict, out_dir, fmt: str = "png8", stem: str = "material", staging: Staging | None = None
+) -> list[Path]:
+    """Write each role to out_dir/{stem}_{role}{.png|.exr}; returns the paths written.
+    All-or-nothing through cnlmc.output; with `staging`, the files join it and are written when
+    the caller commits it (the maps of several materials as one result)."""
     if fmt not in FORMATS:
         raise MapError(f"unknown map format '{fmt}': use one of {', '.join(FORMATS)}")
     extension, pixel_type = FORMATS[fmt]
     out_dir = Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
     paths = []
-    for role, array in arrays.items():
-        pixels, colour_space = encode(role, np.asarray(array, np.float32), extension)
-        path = out_dir / f"{stem}_{role}{extension}"
-        write_atomically(path, np.clip(pixels, 0.0, 1.0) if extension == ".png" else pixels, pixel_type, colour_space)
-        paths.append(path)
+    with contextlib.nullcontext(staging) if staging is not None else Staging() as files:
+        for role, array in arrays.items():
+            pixels, colour_space = encode(role, np.asarray(array, np.float32), extension)
+            pixels = np.clip(pixels, 0.0, 1.0) if extension == ".png" else pixels
+            path = out_dir / f"{stem}_{role}{extension}"
+            files.add(path, functools.partial(_write_to, pixels=pixels, pixel_type=pixel_type, space=colour_space))
+            paths.append(path)
+        if staging is None:
+            files.commit()
     return paths
+
+
+def _write_to(temp: Path, pixels: np.ndarray, pixel_type: str, space: str) -> None:
+    write_image(temp, pixels, pixel_type, space)

@@ -235,3 +235,20 @@ def test_a_long_name_that_fits_gets_a_temp_that_fits(tmp_path: Path, source: Pat
     fits = tmp_path / ("a" * 250 + ".json")  # 255 bytes: the temp's name must not be longer
     assert run_cnlmc("compile", str(source), "-o", str(fits)).returncode == 0
     assert fits.read_text().lstrip().startswith("{")
+
+
+@pytest.mark.oiio
+def test_bake_is_all_or_nothing_across_materials(tmp_path: Path) -> None:
+    pytest.importorskip("OpenImageIO")
+    src = tmp_path / "two.cnl"
+    src.write_text("heavily rusted iron\nhammered copper\n")
+    out = tmp_path / "maps"
+    out.mkdir()
+    (out / "hammered_copper_normal.png").mkdir()  # the last material's map cannot be written
+    before = listing(tmp_path)
+    proc = run_cnlmc("bake", str(src), "-o", str(out), "--size", "16")
+    refused(proc, "hammered_copper_normal.png", "a folder")
+    assert listing(tmp_path) == before  # the first material's maps were not written either
+    (out / "hammered_copper_normal.png").rmdir()
+    assert run_cnlmc("bake", str(src), "-o", str(out), "--size", "16").returncode == 0
+    assert len(list(out.iterdir())) == 4 and not [p for p in out.iterdir() if p.name.startswith(".")]
