@@ -26,7 +26,7 @@ from cnlmc.backends.registry import (
 )
 
 from .api import Result, compile_source, lexicon_for
-from .diagnostics import render
+from .diagnostics import render, visible
 from .document import iter_lines, parse_document
 from .errors import UsageError
 from .explain import explain
@@ -169,12 +169,17 @@ def print_notes(emitted: EmitResult) -> None:
         print(f"warning[{note.code}]: {note.text()}", file=sys.stderr)
 
 
+def say_wrote(path: object) -> None:
+    """'wrote PATH' on stderr, the path's control characters shown escaped."""
+    print(f"wrote {visible(str(path), one_line=True)}", file=sys.stderr)
+
+
 def deliver(artifacts: list[Artifact], output: str | None, protect: Sequence[str] = ()) -> int:
     """Write the files (all-or-nothing, never over an input in `protect`: cnlmc.output) where -o
     says, or print the text ones on stdout."""
     if output:
         for path in write_artifacts(artifacts, output, protect):
-            print(f"wrote {path}", file=sys.stderr)
+            say_wrote(path)
         return EXIT_OK
     for artifact in artifacts:
         if isinstance(artifact.content, bytes):

@@ -7,7 +7,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from cnlmc.commands import EXIT_ERRORS, EXIT_OK, add_lexicon_arguments, read_source
+from cnlmc.commands import EXIT_ERRORS, EXIT_OK, add_lexicon_arguments, read_source, say_wrote
 from cnlmc.errors import UsageError
 from cnlmc.material import Document
 
@@ -50,7 +50,7 @@ class ARCommand(Command):
     def run(self, args: argparse.Namespace) -> int:
         require_opencv()
         if args.marker:
-            print(f"wrote {write_marker(args.marker)}", file=sys.stderr)
+            say_wrote(write_marker(args.marker))
             return EXIT_OK
         if not (args.photo and args.phrase and args.output):
             raise UsageError('usage: cnlmc ar PHOTO "PHRASE" -o OUT.png   (or: cnlmc ar --marker marker.png)')
@@ -73,5 +73,5 @@ def run_ar(args: argparse.Namespace, document: Document) -> int:
         raise UsageError(str(exc)) from None
     if report.missed:
         print(f"note: no marker in {report.missed} of {report.frames} frames (left unchanged)", file=sys.stderr)
-    print(f"wrote {report.path}", file=sys.stderr)
+    say_wrote(report.path)
     return EXIT_OK

@@ -8,7 +8,7 @@ import os
 import sys
 from typing import TextIO
 
-from cnlmc.commands import EXIT_ERRORS, EXIT_OK, add_source_arguments, compile_reported, read_source
+from cnlmc.commands import EXIT_ERRORS, EXIT_OK, add_source_arguments, compile_reported, read_source, say_wrote
 from cnlmc.errors import UsageError
 from cnlmc.output import Staging
 
@@ -71,7 +71,7 @@ class BakeCommand(Command):
                     raise UsageError(exc.reason) from None
             staging.commit()
         for path in paths:
-            print(f"wrote {path}", file=sys.stderr)
+            say_wrote(path)
         return EXIT_OK
 
 
@@ -92,5 +92,5 @@ class SheetCommand(Command):
             ) from None
         except MapError as exc:
             raise UsageError(str(exc)) from None
-        print(f"wrote {path}", file=sys.stderr)
+        say_wrote(path)
         return EXIT_OK

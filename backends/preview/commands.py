@@ -17,6 +17,7 @@ from cnlmc.commands import (
     lexicon_of,
     option_pairs,
     read_source,
+    say_wrote,
 )
 from cnlmc.errors import UsageError
 from cnlmc.output import destination
@@ -87,7 +88,7 @@ class PreviewCommand(Command):
             raise UsageError(str(exc)) from None
         for note in report.notes:
             print(f"note: {note}", file=sys.stderr)
-        print(f"wrote {report.path}", file=sys.stderr)
+        say_wrote(report.path)
         return EXIT_OK
 
     def live(self, source: str, args: argparse.Namespace) -> int:
