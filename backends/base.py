@@ -18,8 +18,9 @@ what it loads once, such as templates, for its lifetime):
 
     TARGET = GlslTarget()                               # what the registry imports
 
-- `Option(name, type, default, choices=None, doc="")`: type is str, int, float or bool
-  (bool reads on/off, true/false, yes/no, 1/0). A default of None means "not set".
+- `Option(name, type, default, choices=None, doc="", range=None)`: type is str, int, float or
+  bool (bool reads on/off, true/false, yes/no, 1/0). A default of None means "not set". A float
+  is always finite (nan and inf are refused); `range=(low, high)` bounds a number, inclusive.
 - `parse_options(declared, pairs, target) -> Options`: the raw `--option KEY=VALUE` pairs (strings,
   or values of the option's type already) parsed once into typed values; every declared
   option is present, with its default when not given. The compiler's own options (`seed`
@@ -53,6 +54,7 @@ from __future__ import annotations
 
 import argparse
 import difflib
+import math
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 from typing import Any, ClassVar
@@ -107,6 +109,7 @@ class Option:
     default: Any
     choices: tuple[Any, ...] | None = None
     doc: str = ""
+    range: tuple[float, float] | None = None  # inclusive bounds of a number
 
     def parse(self, raw: object, target: str) -> Any:
         """A raw value (text, or already of the option's type) -> the typed value."""
@@ -117,6 +120,9 @@ class Option:
             shown = ", ".join(str(c) for c in self.choices)
             hint = did_you_mean(str(value), [str(c) for c in self.choices])
             raise OptionError(f"{target}: option {self.name}={value!r} is not one of {shown}{hint}")
+        if self.range is not None and not self.range[0] <= value <= self.range[1]:
+            low, high = (_shown(bound) for bound in self.range)
+            raise OptionError(f"{target}: option {self.name}={value!r} is outside [{low}, {high}]")
         return value
 
     def _typed(self, raw: object, target: str) -> Any:
@@ -131,10 +137,13 @@ class Option:
                 return text in TRUE_WORDS
             raise OptionError(f"{target}: option {self.name}={raw!r} must be on or off")
         try:
-            return self.type(text)
+            value = self.type(text)
         except ValueError:
             what = "a whole number" if self.type is int else "a number"
             raise OptionError(f"{target}: option {self.name}={raw!r} must be {what}") from None
+        if self.type is float and not math.isfinite(value):
+            raise OptionError(f"{target}: option {self.name}={raw!r} must be a finite number")
+        return value
 
     def _choice_spelling(self, text: str) -> str:
         """A choice matches whatever its case: FRESNEL=Schlick is 'schlick'."""
@@ -142,6 +151,11 @@ class Option:
             return text
         folded = {str(c).lower(): c for c in self.choices}
         return str(folded.get(text.lower(), text))
+
+
+def _shown(number: float) -> str:
+    """A bound as a person writes it: 1048576, 0.5, 1e+06 only past whole numbers' reach."""
+    return str(int(number)) if float(number).is_integer() and abs(number) < 1e15 else f"{number:g}"
 
 
 #: Options the compiler passes to every target, beside the user's --option KEY=VALUE pairs.

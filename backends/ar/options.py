@@ -26,7 +26,7 @@ OPTIONS: tuple[Option, ...] = (
     Option("intrinsics", str, None, doc="fx,fy,cx,cy in pixels (default: from the image size and fov)"),
     Option("fov", float, 60.0, doc="horizontal field of view in degrees, without intrinsics"),
     Option("dist", str, None, doc="lens distortion k1,k2,p1,p2[,k3[,k4,k5,k6]]"),
-    Option("shadow", float, 0.65, doc="contact shadow opacity (0: none)"),
+    Option("shadow", float, 0.65, doc="contact shadow opacity (0: none)", range=(0.0, 1.0)),
     Option("material", str, None, doc="the IR material to place: its name or index (default the first)"),
     preview_option("mesh", default="teapot"),
     preview_option("tier", default="splitsum"),

@@ -25,7 +25,7 @@ import numpy as np
 from cnlmc.conventions import ALPHA_MIRROR, alpha_isotropic, alpha_of
 from cnlmc.material import Document, Material
 
-from ..base import Artifact, Option, OptionError, Options, Target, emit_each
+from ..base import Artifact, Option, Options, Target, emit_each
 from ..capabilities import ALL_FEATURES, EmitResult
 from .conversions import alpha_pair, alpha_to_roughness, clip01, conductor_f0, measured, rounded
 from .naming import MaterialIdents, xml_text
@@ -35,13 +35,12 @@ from .textures import Texture, bake_textures
 OPTIONS = (
     *map_options(),
     Option("form", str, "scene", choices=("scene", "fragment"), doc="scene: a preview scene; fragment: BSDFs only"),
-    Option("spp", int, 64, doc="samples per pixel of the scene"),
-    Option("resolution", int, 256, doc="the scene's image width and height"),
-    Option("max_depth", int, 8, doc="the path tracer's maximum depth"),
+    Option("spp", int, 64, doc="samples per pixel of the scene", range=(1, 1 << 20)),
+    Option("resolution", int, 256, doc="the scene's image width and height", range=(1, 16384)),
+    Option("max_depth", int, 8, doc="the path tracer's maximum depth", range=(1, 1024)),
     Option("envmap", str, "", doc="an environment map lighting the scene (default: constant light)"),
     Option("bsdf", str, "native", choices=("native", "cnlm"), doc="native plugins, or cnlmc's own BSDF (cnlm)"),
 )
-COUNTS = ("spp", "resolution", "max_depth")  # at least 1
 TEXTURED_ALPHA = ("roughconductor", "roughdielectric")  # roughplastic's alpha is a float
 
 BAKED = ("bake", "procedural graph baked to a bitmap texture")
@@ -378,12 +377,6 @@ class MitsubaScene:
         return images
 
 
-def check_counts(options: Options) -> None:
-    for name in COUNTS:
-        if options[name] < 1:
-            raise OptionError(f"mitsuba: option {name} must be at least 1")
-
-
 class MitsubaTarget(Target):
     name = "mitsuba"
     description = "Mitsuba 3 scene XML (full preview scene or BSDF fragment) with baked bitmap textures"
@@ -401,7 +394,6 @@ class MitsubaTarget(Target):
         return installed_version()
 
     def emit(self, document: Document, options: Options) -> EmitResult:
-        check_counts(options)
         scene = MitsubaScene(document, options)
         baked = emit_each(self, document, scene.add, scene.capabilities_of)
         name = "materials.xml" if options.form == "fragment" else "scene.xml"

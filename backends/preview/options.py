@@ -21,11 +21,23 @@ OPTIONS: tuple[Option, ...] = (
     Option("size", int, 512, doc=f"image size in pixels ({SIZE_RANGE[0]} ... {SIZE_RANGE[1]})"),
     Option("mesh", str, "sphere", doc="sphere, shader_ball, teapot, or a path to an .obj/.ply/.gltf/.glb file"),
     Option("tier", str, None, doc=f"quality tier: {', '.join(TIERS)}, mcN or fisN (default {DEFAULT_TIER})"),
-    Option("budget_ms", float, None, doc="without a tier: the best tier whose measured frame time fits"),
+    Option(
+        "budget_ms",
+        float,
+        None,
+        doc="without a tier: the best tier whose measured frame time fits",
+        range=(0.001, 1e6),
+    ),
     Option("env", str, "studio", doc="studio, sky, sun, or a path to an .hdr/.exr environment"),
     Option("background", str, "env", choices=("env", "transparent"), doc="the blurred environment, or none"),
-    Option("exposure", float, 1.0, doc="linear exposure before the tone curve"),
-    Option("msaa", int, 0, doc="samples per pixel; 0: off, an edge filter in the tone map (2 or 4 cost 3-4x)"),
+    Option("exposure", float, 1.0, doc="linear exposure before the tone curve", range=(0.0, 1e4)),
+    Option(
+        "msaa",
+        int,
+        0,
+        choices=(0, 1, 2, 4, 8),
+        doc="samples per pixel; 0: off, an edge filter in the tone map (2 or 4 cost 3-4x)",
+    ),
     *(option for option in GLSL_OPTIONS if option.name in GLSL_PASSED),
 )
 

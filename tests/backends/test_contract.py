@@ -17,6 +17,7 @@ from cnlmc.backends.registry import (
     get_command,
     get_target,
 )
+from tests.helpers import run_cnlmc
 
 DECLARED = (
     Option("fresnel", str, "exact", choices=("exact", "f82", "schlick")),
@@ -52,6 +53,40 @@ def test_unknown_keys_and_values_say_did_you_mean():
         parse_options(DECLARED, {"size": "big"}, "toy")
     with pytest.raises(OptionError, match="must be on or off"):
         parse_options(DECLARED, {"flip": "maybe"}, "toy")
+
+
+@pytest.mark.parametrize("raw", ["nan", "inf", "-inf", "1e400"])
+def test_a_float_option_is_finite(raw):
+    declared = (Option("exposure", float, 1.0, range=(0.0, 1e4)),)
+    with pytest.raises(OptionError, match=f"toy: option exposure='{raw}' must be a finite number"):
+        parse_options(declared, {"exposure": raw}, "toy")
+
+
+def test_a_declared_range_bounds_the_value():
+    declared = (Option("exposure", float, 1.0, range=(0.0, 1e4)), Option("spp", int, 64, range=(1, 1 << 20)))
+    assert parse_options(declared, {"exposure": "1e4", "spp": "1"}, "toy").spp == 1  # bounds are inclusive
+    with pytest.raises(OptionError, match=r"toy: option exposure=1e\+308 is outside \[0, 10000\]"):
+        parse_options(declared, {"exposure": "1e308"}, "toy")
+    with pytest.raises(OptionError, match=r"toy: option spp=100000000000000000000000 is outside \[1, 1048576\]"):
+        parse_options(declared, {"spp": str(10**23)}, "toy")
+
+
+@pytest.mark.parametrize(
+    ("target", "option", "value", "message"),
+    [
+        ("preview", "exposure", "nan", "must be a finite number"),
+        ("preview", "exposure", "1e308", "is outside [0, 10000]"),
+        ("preview", "msaa", "3", "is not one of 0, 1, 2, 4, 8"),
+        ("mitsuba", "spp", "100000000000000000000000", "is outside [1, 1048576]"),
+    ],
+)
+def test_the_issue_s_bad_options_are_usage_errors(tmp_path, target, option, value, message):
+    """#13: exposure=nan wrote a black image, msaa=3 was an internal error, spp=1e23 a scene Mitsuba cannot load."""
+    r = run_cnlmc(
+        "compile", "-", "--target", target, "--option", f"{option}={value}", "-o", str(tmp_path / "out"), stdin="gold\n"
+    )
+    assert r.returncode == 2 and message in r.stderr, r.stderr
+    assert not (tmp_path / "out").exists()
 
 
 class EchoTarget(Target):

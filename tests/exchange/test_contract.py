@@ -41,7 +41,7 @@ def test_a_misspelt_option_gets_a_suggestion():
 
 
 def test_counts_must_be_positive():
-    with pytest.raises(OptionError, match="spp must be at least 1"):
+    with pytest.raises(OptionError, match=r"spp=0 is outside \[1, 1048576\]"):
         emit(ir_of("polished gold"), "mitsuba", {"spp": "0"})
 
 
