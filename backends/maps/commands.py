@@ -75,15 +75,24 @@ class BakeCommand(Command):
         return EXIT_OK
 
 
+#: The contact sheet's tile size: every stdlib graph's outputs at this size are held at once
+#: (at 3000 px that was 9.5 GB).
+SHEET_TILE = (16, 1024)
+
+
 class SheetCommand(Command):
     name = "sheet"
     help = "a contact sheet PNG of every stdlib procedural graph"
 
     def add_arguments(self, parser: argparse.ArgumentParser) -> None:
         parser.add_argument("-o", "--output", default="maps_sheet.png", help="output PNG (default maps_sheet.png)")
-        parser.add_argument("--size", type=int, default=256, help="tile size in pixels (default 256)")
+        low, high = SHEET_TILE
+        parser.add_argument("--size", type=int, default=256, help=f"tile size in pixels, {low} to {high} (default 256)")
 
     def run(self, args: argparse.Namespace) -> int:
+        low, high = SHEET_TILE
+        if not low <= args.size <= high:
+            raise UsageError(f"sheet: tile size {args.size} is out of range: use {low} to {high} pixels")
         try:
             path = render_contact_sheet(args.output, size=args.size)
         except ImportError as exc:

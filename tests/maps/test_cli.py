@@ -82,3 +82,12 @@ def test_sheet_writes_a_png(tmp_path):
     assert r.returncode == 0, r.stderr
     pixels, spec = read(out)
     assert spec.width > 16 * 4 and spec.height > 16 * 10
+
+
+@pytest.mark.parametrize("size", ["0", "-1", "1", "3000"])
+def test_sheet_refuses_a_tile_size_out_of_range(tmp_path, size):
+    """#13: 0, -1 and 1 were internal errors; 3000 used 9.5 GB."""
+    out = tmp_path / "sheet.png"
+    r = cnlmc("sheet", "-o", str(out), "--size", size)
+    assert r.returncode == 2 and f"tile size {size} is out of range: use 16 to 1024 pixels" in r.stderr, r.stderr
+    assert not out.exists()
