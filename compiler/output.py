@@ -123,19 +123,6 @@ def _make_parents(folder: Path, made: list[Path]) -> None:
         made.append(part)
 
 
-def _stage(real: Path, data: bytes) -> Path:
-    """Write `data` to a new temp beside `real`; returns the temp (removed again on failure)."""
-    fd, tmp = tempfile.mkstemp(prefix=f".{real.name[:TEMP_NAME_PART]}.", suffix=".tmp", dir=real.parent)
-    try:
-        with os.fdopen(fd, "wb") as handle:
-            handle.write(data)
-        os.chmod(tmp, usual_mode())  # mkstemp makes 0600; give the file the usual mode
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    return Path(tmp)
-
-
 def _commit(staged: Sequence[tuple[Path, Path, Path]]) -> None:
     """Rename every temp over its destination; on a failure, put back the ones already renamed."""
     done: list[tuple[Path, Path | None]] = []
@@ -167,38 +154,6 @@ def _commit(staged: Sequence[tuple[Path, Path, Path]]) -> None:
     finally:
         for backup in backups:
             backup.unlink(missing_ok=True)
-
-
-def write_files(files: Sequence[tuple[Path, str | bytes]], protect: Iterable[str | Path] = ()) -> list[Path]:
-    """Write every (path, content) all-or-nothing (see the module docstring); returns the paths.
-    Raises UsageError naming the path and the reason; then nothing is changed."""
-    protect = list(protect)
-    reals: list[Path] = []
-    for path, _ in files:
-        real = destination(path, protect)
-        if real in reals:
-            raise UsageError(f"cannot write '{path}': two files of this result have that name")
-        reals.append(real)
-    made: list[Path] = []
-    staged: list[tuple[Path, Path, Path]] = []
-    try:
-        for (path, content), real in zip(files, reals):
-            data = content.encode("utf-8") if isinstance(content, str) else content
-            try:
-                _make_parents(real.parent, made)
-                staged.append((_stage(real, data), real, path))
-            except OSError as exc:
-                raise os_error(path, exc) from None
-        _commit(staged)
-    except BaseException:
-        for tmp, _, _ in staged:
-            with contextlib.suppress(OSError):
-                tmp.unlink(missing_ok=True)
-        for folder in reversed(made):
-            with contextlib.suppress(OSError):
-                folder.rmdir()
-        raise
-    return [path for path, _ in files]
 
 
 class Staging:
@@ -254,6 +209,31 @@ class Staging:
     def __exit__(self, *exc_info: object) -> None:
         if not self.committed:
             self.discard()
+
+
+def _writer(data: bytes) -> Callable[[Path], None]:
+    def write(temp: Path) -> None:
+        temp.write_bytes(data)
+
+    return write
+
+
+def write_files(files: Sequence[tuple[Path, str | bytes]], protect: Iterable[str | Path] = ()) -> list[Path]:
+    """Write every (path, content) all-or-nothing (see the module docstring); returns the paths.
+    Every destination is checked before anything is written. Raises UsageError naming the path
+    and the reason; then nothing is changed."""
+    protect = list(protect)
+    reals: list[Path] = []
+    for path, _ in files:
+        real = destination(path, protect)
+        if real in reals:
+            raise UsageError(f"cannot write '{path}': two files of this result have that name")
+        reals.append(real)
+    with Staging(protect) as staging:
+        for path, content in files:
+            staging.add(path, _writer(content.encode("utf-8") if isinstance(content, str) else content))
+        staging.commit()
+    return [path for path, _ in files]
 
 
 def write_atomic(path: Path, content: str | bytes, protect: Iterable[str | Path] = ()) -> None:

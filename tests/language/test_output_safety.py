@@ -12,6 +12,7 @@ import os
 import stat
 import subprocess
 import tempfile
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -76,7 +77,7 @@ def test_a_character_device_is_refused_before_anything_is_written(monkeypatch: p
     def no_write(*args: object, **kwargs: object) -> None:
         raise AssertionError("the writer reached the disk before refusing a device")
 
-    for name in ("_stage", "_commit", "_make_parents"):
+    for name in ("_writer", "_commit", "_make_parents"):
         monkeypatch.setattr(output, name, no_write)
     monkeypatch.setattr(tempfile, "mkstemp", no_write)
     monkeypatch.setattr(os, "replace", no_write)
@@ -189,15 +190,18 @@ def test_a_rename_failing_midway_puts_every_file_back(tmp_path: Path, monkeypatc
 
 
 def test_a_failing_write_removes_its_temps_and_new_folders(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    real_stage, staged = output._stage, list[Path]()
+    real_writer, staged = output._writer, list[Path]()
 
-    def failing_stage(real: Path, data: bytes) -> Path:
-        if staged:
-            raise OSError(28, "No space left on device")
-        staged.append(real_stage(real, data))
-        return staged[-1]
+    def failing_writer(data: bytes) -> Callable[[Path], None]:
+        def write(temp: Path) -> None:  # the second file's write fails, its temp already made
+            if staged:
+                raise OSError(28, "No space left on device")
+            staged.append(temp)
+            real_writer(data)(temp)
 
-    monkeypatch.setattr(output, "_stage", failing_stage)
+        return write
+
+    monkeypatch.setattr(output, "_writer", failing_writer)
     files = [(tmp_path / "new" / "a.json", "a"), (tmp_path / "new" / "deeper" / "b.json", "b")]
     with pytest.raises(UsageError, match=r"b\.json': No space left on device"):
         output.write_files(files)
