@@ -10,7 +10,7 @@ from typing import Any
 
 from . import ast
 from .analyze import analyze, to_ir
-from .diagnostics import Diagnostic, has_errors, render
+from .diagnostics import Diagnostic, has_errors, render_all
 from .document import parse_document
 from .lexicon import Lexicon, cached_lexicon
 from .material import Document
@@ -66,7 +66,7 @@ def compile_phrase(phrase: str, lexicon: Lexicon | None = None, seed: int = 0) -
     result = compile_source(phrase, "<phrase>", lexicon, seed)
     if not result.ok or not result.materials:
         raise ValueError(
-            "\n".join(render(d, phrase, "<phrase>") for d in result.diagnostics if d.is_error)
+            "\n".join(render_all([d for d in result.diagnostics if d.is_error], phrase, "<phrase>"))
             or "the phrase names no material"
         )
     return result.materials[0]

@@ -26,12 +26,14 @@ from cnlmc.backends.registry import (
 )
 
 from .api import Result, compile_source, lexicon_for
-from .diagnostics import render, visible
-from .document import iter_lines, parse_document
+from .diagnostics import Diagnostic, render_all, visible
+from .document import parse_document
 from .errors import UsageError
 from .explain import explain
+from .inputs import DEFAULT_MAX_BYTES, input_name, read_text
 from .lexicon import Lexicon
 from .lexicon_schema import LexiconError
+from .lines import iter_lines
 from .output import write_artifacts
 from .tagger import Tagger
 
@@ -42,27 +44,23 @@ STAGES = ("tokens", "ast", "ir")
 # ---------------------------------------------------------------- shared by every subcommand
 
 
-def read_source(path: str) -> tuple[str, str]:
-    """The text of a file (or standard input for '-') and the name diagnostics use for it."""
-    try:
-        if path == "-":
-            data = sys.stdin.buffer.read()
-        else:
-            with open(path, "rb") as handle:
-                data = handle.read()
-    except OSError as exc:
-        raise UsageError(f"cannot read '{path}': {exc.strerror}") from None
-    name = "<stdin>" if path == "-" else path
-    if b"\x00" in data:
-        raise UsageError(f"{name}: this is not a text file (it contains NUL bytes)")
-    try:
-        return data.decode("utf-8-sig"), name
-    except UnicodeDecodeError as exc:
-        raise UsageError(f"{name}: not UTF-8 text (byte {exc.start})") from None
+def read_source(path: str, max_bytes: int = DEFAULT_MAX_BYTES) -> tuple[str, str]:
+    """The text of a material file (or standard input for '-'), at most `max_bytes` bytes
+    (cnlmc.inputs: never a device or a FIFO), and the name diagnostics use for it."""
+    return read_text(path, limit=max_bytes, what="material file"), input_name(path)
+
+
+def byte_count(text: str) -> int:
+    """A --max-bytes value: a positive whole number of bytes, optionally with K, M or G (binary)."""
+    scale = {"k": 1 << 10, "m": 1 << 20, "g": 1 << 30}.get(text[-1:].lower(), 1)
+    digits = text[:-1] if scale > 1 else text
+    if not digits.isdigit() or int(digits) < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive number of bytes such as 65536 or 64M, got '{text}'")
+    return int(digits) * scale
 
 
 def add_lexicon_arguments(parser: argparse.ArgumentParser) -> None:
-    """--lexicon and --seed, as every compiling subcommand takes them."""
+    """--lexicon, --seed and --max-bytes, as every compiling subcommand takes them."""
     parser.add_argument(
         "--lexicon",
         "-L",
@@ -71,10 +69,17 @@ def add_lexicon_arguments(parser: argparse.ArgumentParser) -> None:
         help="an overlay name (e.g. 'paper') or a lexicon folder; may repeat; folders are searched first",
     )
     parser.add_argument("--seed", type=int, default=0, help="seed for procedural maps (default 0)")
+    parser.add_argument(
+        "--max-bytes",
+        type=byte_count,
+        default=DEFAULT_MAX_BYTES,
+        metavar="N",
+        help=f"read at most N bytes of the material file, e.g. 64M (default {DEFAULT_MAX_BYTES >> 20}M)",
+    )
 
 
 def add_source_arguments(parser: argparse.ArgumentParser) -> None:
-    """A material file (or - for standard input), --lexicon and --seed."""
+    """A material file (or - for standard input), --lexicon, --seed and --max-bytes."""
     parser.add_argument("file", help="a material file, or - to read standard input")
     add_lexicon_arguments(parser)
 
@@ -103,8 +108,13 @@ def lexicon_of(args: argparse.Namespace) -> Lexicon:
 
 
 def report(result: Result, source: str, name: str) -> None:
-    for diag in result.diagnostics:
-        print(render(diag, source, name), file=sys.stderr)
+    print_diagnostics(result.diagnostics, source, name)
+
+
+def print_diagnostics(diags: Sequence[Diagnostic], source: str, name: str) -> None:
+    """Every diagnostic on stderr, rendered against one line table of the source (linear in their number)."""
+    for text in render_all(diags, source, name):
+        print(text, file=sys.stderr)
 
 
 def compile_reported(source: str, name: str, args: argparse.Namespace) -> Result:
@@ -133,7 +143,7 @@ class CompileCommand(Command):
             target = get_target("ir" if args.emit == "ir" else args.target)
         except (UnknownTarget, TargetUnavailable) as exc:
             raise UsageError(str(exc)) from None
-        source, name = read_source(args.file)
+        source, name = read_source(args.file, args.max_bytes)
         lexicon = lexicon_of(args)
         if args.emit in ("tokens", "ast"):
             return emit_stage(args.emit, source, name, lexicon)
@@ -201,8 +211,7 @@ def emit_stage(stage: str, source: str, name: str, lexicon: Lexicon) -> int:
                 print(f"{t.span.line}:{t.span.col}\t{tags}\t{t.text}" + ("\t(unknown)" if t.unknown else ""))
         return EXIT_OK
     doc = parse_document(source, lexicon, name)
-    for diag in doc.diagnostics:
-        print(render(diag, source, name), file=sys.stderr)
+    print_diagnostics(doc.diagnostics, source, name)
     nodes = [{"node": type(item).__name__, **asdict(item)} for item in doc.items]
     print(json.dumps(nodes, indent=2, ensure_ascii=False))
     return EXIT_ERRORS if any(d.is_error for d in doc.diagnostics) else EXIT_OK
@@ -219,7 +228,7 @@ class ExplainCommand(Command):
         add_source_arguments(parser)
 
     def run(self, args: argparse.Namespace) -> int:
-        source, name = read_source(args.file)
+        source, name = read_source(args.file, args.max_bytes)
         result = compile_reported(source, name, args)
         sys.stdout.write(explain(result.ir))
         return EXIT_OK if result.ok else EXIT_ERRORS

@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from enum import Enum
 from typing import Any
 
+from .lines import LineTable
 from .spans import Span
 
 FailureKey = tuple[int, int, str]  # (parser stack depth, LALR state, token type) where a line failed to parse
@@ -88,17 +89,19 @@ def visible(text: str, *, one_line: bool = False) -> str:
     return text.translate(_VISIBLE_LINE if one_line else _VISIBLE)
 
 
-def render(diag: Diagnostic, source: str, filename: str) -> str:
+def render(diag: Diagnostic, source: str | LineTable, filename: str) -> str:
     """file:line:col: severity: message, then the source line, a caret line and hints; control
     characters from the source, the file name or the message are escaped (`visible`), and the
-    caret sits under the escaped text of the span."""
+    caret sits under the escaped text of the span. Give a `LineTable` (or use `render_all`) to
+    render many diagnostics of one source: a plain string is split into lines on every call."""
     name, message = visible(filename, one_line=True), visible(diag.message)
     hints = [f"{'  ' if diag.span is None else '     '}= {visible(h)}" for h in diag.hints]
     if diag.span is None:
         return "\n".join([f"{name}: {diag.severity.value}[{diag.code}]: {message}", *hints])
     span = diag.span
     head = f"{name}:{span.line}:{span.col}: {diag.severity.value}[{diag.code}]: {message}"
-    raw = _source_line(source, span.line)
+    table = source if isinstance(source, LineTable) else LineTable(source)
+    raw = table.line(span.line).replace("\t", " ")
     width = max(1, min(span.end - span.start, max(1, len(raw) - span.col + 1)))
     before, marked = raw[: span.col - 1], raw[span.col - 1 : span.col - 1 + width]
     text = visible(raw, one_line=True)
@@ -112,11 +115,11 @@ def render(diag: Diagnostic, source: str, filename: str) -> str:
     return "\n".join(lines)
 
 
-def _source_line(source: str, line: int) -> str:
-    lines = source.splitlines()
-    if 1 <= line <= len(lines):
-        return lines[line - 1].replace("\t", " ")
-    return ""
+def render_all(diags: Iterable[Diagnostic], source: str, filename: str) -> Iterator[str]:
+    """Each diagnostic rendered (`render`), the source split into lines once for all of them."""
+    table = LineTable(source)
+    for diag in diags:
+        yield render(diag, table, filename)
 
 
 def has_errors(diags: Iterable[Diagnostic]) -> bool:

@@ -1,31 +1,23 @@
-"""A material file: one material or refinement per line, '#' comments, optional 'name:'."""
+"""A material file: one material or refinement per line, '#' comments, optional 'name:'.
+
+Lines end as cnlmc.lines says (CRLF, LF or a lone CR); `iter_lines` is re-exported from there."""
 
 from __future__ import annotations
-
-from collections.abc import Iterator
 
 from . import ast
 from .diagnostics import Diagnostic, error
 from .lexicon import Lexicon
+from .lines import iter_lines
 from .mistakes import known_mistake
 from .parser import ParseFailure, describe_expected, parse_line_shape
 from .spans import Span
 from .tagged import Tagged
 from .tagger import Tagger
 
+__all__ = ["iter_lines", "parse_document", "parse_line"]
+
 MAX_LINE_CHARS = 2000
 MAX_LINE_WORDS = 64
-
-
-def iter_lines(source: str) -> Iterator[tuple[int, int, str]]:
-    """(1-based line number, offset, text) for each line."""
-    if "\n" not in source:
-        yield 1, 0, source.rstrip("\r")
-        return
-    offset = 0
-    for number, line in enumerate(source.split("\n"), start=1):
-        yield number, offset, line.rstrip("\r")
-        offset += len(line) + 1
 
 
 def parse_document(source: str, lexicon: Lexicon, filename: str = "<input>") -> ast.Document:

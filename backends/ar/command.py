@@ -21,10 +21,10 @@ from .video import ar_video
 VIDEO_SUFFIXES = (".mp4", ".avi", ".mov", ".mkv", ".m4v", ".webm")
 
 
-def phrase_source(text: str) -> tuple[str, str]:
+def phrase_source(text: str, max_bytes: int) -> tuple[str, str]:
     """The AR phrase argument: a material file when such a file exists, else the phrase itself."""
     if Path(text).is_file():
-        return read_source(text)
+        return read_source(text, max_bytes)
     return text, "<phrase>"
 
 
@@ -54,7 +54,7 @@ class ARCommand(Command):
             return EXIT_OK
         if not (args.photo and args.phrase and args.output):
             raise UsageError('usage: cnlmc ar PHOTO "PHRASE" -o OUT.png   (or: cnlmc ar --marker marker.png)')
-        source, name = phrase_source(args.phrase)
+        source, name = phrase_source(args.phrase, args.max_bytes)
         result = compiled_or_none(source, name, args)
         if result is None:
             return EXIT_ERRORS

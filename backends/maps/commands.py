@@ -51,7 +51,7 @@ class BakeCommand(Command):
         )
 
     def run(self, args: argparse.Namespace) -> int:
-        source, name = read_source(args.file)
+        source, name = read_source(args.file, args.max_bytes)
         if os.path.lexists(args.output) and not os.path.isdir(args.output):
             raise UsageError(f"cannot write into '{args.output}': it is not a folder")
         result = compile_reported(source, name, args)

@@ -76,7 +76,7 @@ class PreviewCommand(Command):
         add_render_arguments(parser)
 
     def run(self, args: argparse.Namespace) -> int:
-        source, name = read_source(args.file)
+        source, name = read_source(args.file, args.max_bytes)
         result = compiled_or_none(source, name, args)
         if result is None:
             return EXIT_ERRORS
