@@ -18,6 +18,15 @@ What it guarantees:
   non-regular file is refused like the file itself.
 - **Inputs are never overwritten.** The commands pass the files they read (`protect=`); a
   destination that is one of them (the same file, through any path, link or hard link) is refused.
+- **Nothing outside the output folder.** An artifact name that is absolute or climbs out of the
+  output folder ('..') is refused, as is a staged path outside a Staging's `root`.
+- **One writer per folder, no temps left behind.** Each folder written to is locked while its files
+  are staged and committed (cnlmc.folder_lock); temps carry the writer's process id, and a writer
+  removes the temps of dead writers in the folders it locks. SIGTERM, SIGHUP and SIGINT during a
+  write discard it and exit 128 + the signal's number (cnlmc.interrupts).
+- **An output owns its textures.** The files of a result inside its own folder
+  (`textures/<main file name>/`) are listed in a manifest there; the next write of that output
+  removes the ones it no longer has, and never a file it did not write (cnlmc.manifest).
 
 Every refusal and every OS error is a `UsageError` naming the path and the reason: the CLI prints
 `cnlmc: error: ...` and exits 2.
@@ -31,13 +40,16 @@ import os
 import stat
 import tempfile
 from collections.abc import Callable, Iterable, Sequence
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 from typing import Protocol
 
 from .errors import UsageError
+from .folder_lock import FolderLock, backup_name, temp_prefix
+from .interrupts import SignalGuard
+from .manifest import MANIFEST_NAME, manifest_text, owned_folder, prune, read_manifest, remove_stale
 
-#: the longest part of a destination's name a temp's name repeats (the temp stays under NAME_MAX)
-TEMP_NAME_PART = 100
+#: a temp keeps its destination's suffix (image writers choose the format by it) up to this length
+MAX_TEMP_SUFFIX = 16
 
 
 class Artifact(Protocol):
@@ -131,7 +143,7 @@ def _commit(staged: Sequence[tuple[Path, Path, Path]]) -> None:
         for tmp, real, shown in staged:
             backup = None
             if len(staged) > 1 and os.path.lexists(real):
-                backup = real.parent / f".{real.name[:TEMP_NAME_PART]}.{os.getpid()}.bak"
+                backup = real.parent / backup_name(real.name)
                 backup.unlink(missing_ok=True)
                 try:
                     os.link(real, backup)  # the old file, kept until every rename succeeded
@@ -156,27 +168,67 @@ def _commit(staged: Sequence[tuple[Path, Path, Path]]) -> None:
             backup.unlink(missing_ok=True)
 
 
+def inside(root: Path, path: Path) -> bool:
+    """Whether `path` names something in `root` or below, as written ('..' resolved lexically)."""
+    rest = os.path.relpath(os.path.abspath(path), os.path.abspath(root))
+    return rest != ".." and not rest.startswith(".." + os.sep)
+
+
+def safe_name(name: str, root: Path) -> Path:
+    """`root / name` for an artifact name that stays in `root`; UsageError for an absolute name
+    or one that climbs out ('..')."""
+    parts = PurePosixPath(name).parts
+    if not name or PurePosixPath(name).is_absolute() or os.path.isabs(name) or ".." in parts:
+        raise UsageError(f"refusing to write '{name}': the name leads outside the output folder '{root}'")
+    return root / name
+
+
 class Staging:
     """A multi-file result built step by step (the maps of every material of a bake): `add` writes
     one file to a temp beside its destination through `write(temp)`, after the checks of
     `destination`; `commit` renames them all at once (the ones already renamed are put back on a
-    failure). Leaving the `with` block without a commit removes every temp and every folder made."""
+    failure). Leaving the `with` block without a commit removes every temp and every folder made.
 
-    def __init__(self, protect: Iterable[str | Path] = ()) -> None:
+    Each folder a file is staged in is locked until the commit or the clean-up (`claim` locks one
+    up front); with `root`, a path outside it is refused; `own(folder, names)` declares the folder
+    the result owns (its manifest is written and its stale files removed at the commit). Inside the
+    `with` block, SIGTERM/SIGHUP/SIGINT discard the staging and exit 128 + the signal's number."""
+
+    def __init__(self, protect: Iterable[str | Path] = (), root: str | Path | None = None) -> None:
         self.protect = list(protect)
+        self.root = None if root is None else Path(root)
         self.staged: list[tuple[Path, Path, Path]] = []
         self.made: list[Path] = []
+        self.locks: dict[Path, FolderLock] = {}
+        self.owned: list[tuple[Path, set[str], set[str]]] = []
+        self.guard = SignalGuard()
         self.committed = False
 
+    def claim(self, folder: Path) -> None:
+        """Create `folder` (when missing) and lock it now, before anything is staged there."""
+        try:
+            _make_parents(Path(folder), self.made)
+        except OSError as exc:
+            raise os_error(folder, exc) from None
+        self._lock(Path(os.path.realpath(folder)))
+
+    def _lock(self, folder: Path) -> None:
+        if folder not in self.locks:
+            lock = FolderLock(folder)
+            lock.acquire()
+            self.locks[folder] = lock
+
     def add(self, path: Path, write: Callable[[Path], None]) -> None:
+        if self.root is not None and not inside(self.root, Path(path)):
+            raise UsageError(f"refusing to write '{path}': it is outside the output folder '{self.root}'")
         real = destination(path, self.protect)
         if any(real == other for _, other, _ in self.staged):
             raise UsageError(f"cannot write '{path}': two files of this result have that name")
         try:
             _make_parents(real.parent, self.made)
-            fd, tmp = tempfile.mkstemp(
-                prefix=f".{real.name[:TEMP_NAME_PART]}.", suffix=real.suffix or ".tmp", dir=real.parent
-            )
+            self._lock(real.parent)
+            suffix = real.suffix if 0 < len(real.suffix) <= MAX_TEMP_SUFFIX else ".tmp"
+            fd, tmp = tempfile.mkstemp(prefix=temp_prefix(real.name), suffix=suffix, dir=real.parent)
             os.close(fd)
         except OSError as exc:
             raise os_error(path, exc) from None
@@ -188,27 +240,59 @@ class Staging:
         except OSError as exc:
             raise os_error(path, exc) from None
 
+    def own(self, folder: Path, names: Iterable[str]) -> None:
+        """The result owns `folder`: `names` are its files there now (already added). The commit
+        writes the manifest and removes the files the old manifest lists and `names` lacks."""
+        new = set(names)
+        if not new and not os.path.isdir(folder):
+            return
+        if os.path.isdir(folder):
+            self._lock(Path(os.path.realpath(folder)))
+        old = read_manifest(Path(folder))
+        if new:
+            self.add(Path(folder) / MANIFEST_NAME, _writer(manifest_text(new).encode("utf-8")))
+        if old or new:
+            self.owned.append((Path(folder), old, new))
+
     def commit(self) -> list[Path]:
-        """Rename every staged file over its destination; returns the paths as given to `add`."""
+        """Rename every staged file over its destination; returns the paths as given to `add`
+        (the manifests `own` added left out)."""
         _commit(self.staged)
         self.committed = True
-        return [shown for _, _, shown in self.staged]
+        for folder, old, new in self.owned:
+            remove_stale(folder, old, new)
+        self._release()
+        for folder, _, new in self.owned:
+            if not new:
+                prune(folder)
+        return [shown for _, _, shown in self.staged if shown.name != MANIFEST_NAME]
+
+    def _release(self) -> None:
+        for lock in self.locks.values():
+            lock.release()
+        self.locks = {}
 
     def discard(self) -> None:
         for temp, _, _ in self.staged:
             with contextlib.suppress(OSError):
                 temp.unlink(missing_ok=True)
+        self._release()
         for folder in reversed(self.made):
             with contextlib.suppress(OSError):
                 folder.rmdir()
         self.staged, self.made = [], []
 
     def __enter__(self) -> Staging:
+        self.guard.__enter__()
         return self
 
-    def __exit__(self, *exc_info: object) -> None:
-        if not self.committed:
-            self.discard()
+    def __exit__(self, kind: type[BaseException] | None, exc: BaseException | None, tb: object) -> None:
+        try:
+            if not self.committed:
+                self.discard()
+            self._release()
+        finally:
+            self.guard.__exit__(kind, exc, None)
 
 
 def _writer(data: bytes) -> Callable[[Path], None]:
@@ -218,10 +302,17 @@ def _writer(data: bytes) -> Callable[[Path], None]:
     return write
 
 
-def write_files(files: Sequence[tuple[Path, str | bytes]], protect: Iterable[str | Path] = ()) -> list[Path]:
+def write_files(
+    files: Sequence[tuple[Path, str | bytes]],
+    protect: Iterable[str | Path] = (),
+    owned: Path | None = None,
+    root: Path | None = None,
+) -> list[Path]:
     """Write every (path, content) all-or-nothing (see the module docstring); returns the paths.
     Every destination is checked before anything is written. Raises UsageError naming the path
-    and the reason; then nothing is changed."""
+    and the reason; then nothing is changed. `owned`: the folder the result owns (its files there
+    get a manifest, and the ones an earlier write left there and this one lacks are removed);
+    `root`: no file may go outside it."""
     protect = list(protect)
     reals: list[Path] = []
     for path, _ in files:
@@ -229,9 +320,11 @@ def write_files(files: Sequence[tuple[Path, str | bytes]], protect: Iterable[str
         if real in reals:
             raise UsageError(f"cannot write '{path}': two files of this result have that name")
         reals.append(real)
-    with Staging(protect) as staging:
+    with Staging(protect, root) as staging:
         for path, content in files:
             staging.add(path, _writer(content.encode("utf-8") if isinstance(content, str) else content))
+        if owned is not None:
+            staging.own(owned, [path.name for path, _ in files if path.parent == owned])
         staging.commit()
     return [path for path, _ in files]
 
@@ -246,13 +339,29 @@ def looks_like_file(out: str) -> bool:
     return not out.endswith(("/", os.sep)) and not os.path.isdir(target) and bool(target.suffix)
 
 
+def main_file_name(out: str | None, default: str) -> str:
+    """The name the main file of a multi-file result gets for `-o out` (the target's `default`
+    when `out` is a folder or not given): what a target names its own folder after (owned_folder)."""
+    return Path(out).name if out and looks_like_file(out) else default
+
+
+def texture_folder(out: str | None, default: str) -> str:
+    """Where a result's textures go, relative to its main file: `textures/<main file name>`."""
+    return owned_folder(main_file_name(out, default))
+
+
 def write_artifacts(artifacts: Sequence[Artifact], out: str, protect: Iterable[str | Path] = ()) -> list[Path]:
     """`out` a file path: the first (main) artifact goes there, the others beside it.
     `out` a folder (existing, ending in '/', or without a suffix): every artifact goes into it.
-    All-or-nothing, never over an input in `protect` (see the module docstring)."""
+    All-or-nothing, never over an input in `protect`, never outside the output folder; the files
+    in the main file's own folder (`texture_folder`) are its, with a manifest (see the module
+    docstring)."""
     target = Path(out)
     if looks_like_file(out) or (len(artifacts) == 1 and not os.path.isdir(target) and not out.endswith(("/", os.sep))):
-        paths = [target] + [target.parent / a.name for a in artifacts[1:]]
+        root, first = target.parent, target
     else:
-        paths = [target / a.name for a in artifacts]
-    return write_files([(path, a.content) for path, a in zip(paths, artifacts)], protect)
+        root, first = target, None
+    paths = [first or safe_name(artifacts[0].name, root)] + [safe_name(a.name, root) for a in artifacts[1:]]
+    owned = paths[0].parent / owned_folder(paths[0].name)
+    files = [(path, a.content) for path, a in zip(paths, artifacts)]
+    return write_files(files, protect, owned=owned, root=root)

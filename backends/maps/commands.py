@@ -58,7 +58,9 @@ class BakeCommand(Command):
         if not result.ok:
             return EXIT_ERRORS
         progress, paths = ProgressBar(), []
-        with Staging(protect=[args.file]) as staging:  # every material's maps, or none of them
+        # every material's maps, or none of them; the folder locked against a concurrent writer
+        with Staging(protect=[args.file], root=args.output) as staging:
+            staging.claim(args.output)
             for material in result.document.materials:
                 if not has_maps(material):
                     print(f"{material.name}: uniform, no maps to bake", file=sys.stderr)

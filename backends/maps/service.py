@@ -6,6 +6,7 @@ formats, the preview); each failure is a `MapBakeError` naming the material.
     bake_arrays(material, size, seed, roles=None, on_progress=None) -> {role: ndarray}
     bake_files(material, out_dir, size, fmt, seed, stem=None, ...) -> [Path]       (written atomically)
     bake_artifacts(material, size, fmt, seed, stem=None, folder="", ...) -> [Artifact] (bytes)
+    bake_images(material, size, fmt, seed, stem=None, folder="", ...) -> {role: Artifact}
 
 `material` is a typed `cnlmc.material.Material` (or its IR dict); `roles` picks some of its
 maps (default all); `derive(arrays) -> arrays` may add roles computed from the baked ones.
@@ -21,6 +22,7 @@ from typing import Any
 
 import numpy as np
 
+from cnlmc.interrupts import SignalGuard
 from cnlmc.material import Material, params_to_ir
 from cnlmc.output import Staging
 
@@ -93,6 +95,32 @@ def bake_files(
         raise MapBakeError(name, str(exc)) from None
 
 
+def bake_images(
+    material: Material | Mapping[str, Any],
+    size: int,
+    fmt: str,
+    seed: int,
+    stem: str | None = None,
+    folder: str = "",
+    roles: Collection[str] | None = None,
+    derive: Derive | None = None,
+) -> dict[str, Artifact]:
+    """role -> image Artifact named `{folder}/{stem}_{role}.ext` (no folder: just the file name;
+    a name too long for a file is shortened, writer.map_file_name). The images pass through a
+    scratch folder that a signal (SIGTERM, SIGHUP, SIGINT) removes too."""
+    prefix = f"{folder}/" if folder else ""
+    name = _parts(material)[0]
+    arrays = bake_arrays(material, size, seed, roles)
+    if derive is not None:
+        arrays = derive(arrays)
+    with SignalGuard(), tempfile.TemporaryDirectory(prefix="cnlmc-maps-") as tmp:
+        try:
+            paths = write_maps(arrays, tmp, fmt, stem=stem or name)
+        except MapError as exc:
+            raise MapBakeError(name, str(exc)) from None
+        return {role: Artifact(prefix + p.name, p.read_bytes(), "binary") for role, p in zip(arrays, paths)}
+
+
 def bake_artifacts(
     material: Material | Mapping[str, Any],
     size: int,
@@ -104,7 +132,4 @@ def bake_artifacts(
     derive: Derive | None = None,
 ) -> list[Artifact]:
     """Bake into image Artifacts named `{folder}/{stem}_{role}.ext` (no folder: just the file name)."""
-    prefix = f"{folder}/" if folder else ""
-    with tempfile.TemporaryDirectory(prefix="cnlmc-maps-") as tmp:
-        paths = bake_files(material, tmp, size, fmt, seed, stem, roles, derive)
-        return [Artifact(prefix + p.name, p.read_bytes(), "binary") for p in paths]
+    return list(bake_images(material, size, fmt, seed, stem, folder, roles, derive).values())

@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
+from cnlmc.filenames import fit_name
 from cnlmc.output import Staging
 
 from .colour import linear_to_srgb
@@ -55,22 +56,28 @@ def write_image(path: Path, pixels: np.ndarray, pixel_type: str, colour_space: s
         raise MapError(f"cannot write {path}: {output.geterror()}")
 
 
+def map_file_name(stem: str, role: str, extension: str) -> str:
+    """`{stem}_{role}{extension}`, shortened with a hash when longer than a file name may be."""
+    return fit_name(f"{stem}_{role}", suffix=extension)
+
+
 def write_maps(
     arrays: dict, out_dir, fmt: str = "png8", stem: str = "material", staging: Staging | None = None
 ) -> list[Path]:
-    """Write each role to out_dir/{stem}_{role}{.png|.exr}; returns the paths written.
-    All-or-nothing through cnlmc.output; with `staging`, the files join it and are written when
-    the caller commits it (the maps of several materials as one result)."""
+    """Write each role to out_dir/{stem}_{role}{.png|.exr} (see map_file_name); returns the paths
+    written. All-or-nothing through cnlmc.output, never outside out_dir (a role such as 'a/../..'
+    is refused); with `staging`, the files join it and are written when the caller commits it (the
+    maps of several materials as one result)."""
     if fmt not in FORMATS:
         raise MapError(f"unknown map format '{fmt}': use one of {', '.join(FORMATS)}")
     extension, pixel_type = FORMATS[fmt]
     out_dir = Path(out_dir)
     paths = []
-    with contextlib.nullcontext(staging) if staging is not None else Staging() as files:
+    with contextlib.nullcontext(staging) if staging is not None else Staging(root=out_dir) as files:
         for role, array in arrays.items():
             pixels, colour_space = encode(role, np.asarray(array, np.float32), extension)
             pixels = np.clip(pixels, 0.0, 1.0) if extension == ".png" else pixels
-            path = out_dir / f"{stem}_{role}{extension}"
+            path = out_dir / map_file_name(stem, role, extension)
             files.add(path, functools.partial(_write_to, pixels=pixels, pixel_type=pixel_type, space=colour_space))
             paths.append(path)
         if staging is None:

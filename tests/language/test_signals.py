@@ -1,0 +1,157 @@
+"""Signals and concurrent writers, with real processes: a bake killed mid-write leaves nothing
+behind (SIGTERM/SIGHUP/SIGINT: cleaned at once, exit 128 + n; SIGKILL: cleaned by the next writer),
+and two bakes into one folder never mix (the folder lock: the second waits, or fails clearly).
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+from cnlmc import output
+from cnlmc.errors import UsageError
+from cnlmc.folder_lock import LOCK_NAME, TEMP_MARK, FolderLock, remove_stale_temps
+from tests.helpers import run_cnlmc
+
+pytestmark = pytest.mark.oiio
+pytest.importorskip("OpenImageIO")
+
+#: many materials with maps: a bake that runs long enough to be interrupted between two of them
+SLOW = "heavily rusted iron\n" + "hammered copper\n" * 40
+KEEP = b"a file that was there before"
+
+
+def start_bake(source: Path, out: Path, *extra: str, env: dict[str, str] | None = None) -> subprocess.Popen[str]:
+    return subprocess.Popen(
+        [sys.executable, "-m", "cnlmc", "bake", str(source), "-o", str(out), *extra],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=env,
+    )
+
+
+def wait_for(found: Callable[[], bool], proc: subprocess.Popen[str], what: str, limit: float = 240) -> None:
+    deadline = time.monotonic() + limit
+    while not found():
+        if proc.poll() is not None:
+            pytest.fail(f"the bake ended before {what}: {proc.communicate()}")
+        if time.monotonic() > deadline:
+            proc.kill()
+            pytest.fail(f"no {what} after {limit} s")
+        time.sleep(0.02)
+
+
+def temps(folder: Path) -> list[Path]:
+    return [p for p in folder.iterdir() if TEMP_MARK in p.name] if folder.is_dir() else []
+
+
+def entries(folder: Path) -> dict[str, bytes]:
+    return {p.name: p.read_bytes() for p in sorted(folder.iterdir())}
+
+
+@pytest.fixture
+def slow_source(tmp_path: Path) -> Path:
+    path = tmp_path / "many.cnl"
+    path.write_text(SLOW)
+    return path
+
+
+@pytest.fixture
+def out(tmp_path: Path) -> Path:
+    folder = tmp_path / "maps"
+    folder.mkdir()
+    (folder / "keep.txt").write_bytes(KEEP)
+    return folder
+
+
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGHUP, signal.SIGINT])
+def test_a_signal_mid_bake_removes_the_temps_and_exits_128_plus_n(slow_source: Path, out: Path, signum: int) -> None:
+    proc = start_bake(slow_source, out, "--size", "256")
+    wait_for(lambda: bool(temps(out)), proc, "staged map")
+    proc.send_signal(signum)
+    _, stderr = proc.communicate(timeout=120)
+    assert proc.returncode == 128 + signum, stderr
+    name = signal.Signals(signum).name
+    assert stderr.strip().splitlines()[-1].startswith(f"cnlmc: interrupted by {name}: nothing was written"), stderr
+    assert "Traceback" not in stderr and "internal error" not in stderr
+    assert entries(out) == {"keep.txt": KEEP}  # no temp, no lock file, no map
+
+
+def test_temps_of_a_killed_bake_are_removed_by_the_next_writer(slow_source: Path, out: Path, tmp_path: Path) -> None:
+    proc = start_bake(slow_source, out, "--size", "256")
+    wait_for(lambda: bool(temps(out)), proc, "staged map")
+    proc.kill()  # SIGKILL: nothing runs in the process any more
+    proc.communicate(timeout=60)
+    left = temps(out)
+    assert left and all(f".{TEMP_MARK}.{proc.pid}." in p.name for p in left)  # the temps carry the pid
+    small = tmp_path / "one.cnl"
+    small.write_text("hammered copper\n")
+    done = run_cnlmc("bake", str(small), "-o", str(out), "--size", "16")
+    assert done.returncode == 0, done.stderr
+    assert entries(out).keys() == {"keep.txt", "hammered_copper_normal.png"}  # stale temps and lock gone
+
+
+def test_a_second_bake_into_a_locked_folder_fails_clearly(slow_source: Path, out: Path, tmp_path: Path) -> None:
+    first = start_bake(slow_source, out, "--size", "256")
+    try:
+        wait_for(lambda: (out / LOCK_NAME).exists(), first, "lock")
+        small = tmp_path / "one.cnl"
+        small.write_text("hammered copper\n")
+        env = {**os.environ, "CNLMC_LOCK_WAIT": "0.5"}
+        second = run_cnlmc("bake", str(small), "-o", str(out), "--size", "16", env=env)
+        assert second.returncode == 2, second.stderr
+        assert f"cannot write into '{out}': another cnlmc (process {first.pid}) is writing there" in second.stderr
+        assert "CNLMC_LOCK_WAIT" in second.stderr and "internal error" not in second.stderr
+    finally:
+        first.send_signal(signal.SIGTERM)
+        first.communicate(timeout=120)
+    assert entries(out) == {"keep.txt": KEEP}
+
+
+def test_two_bakes_into_one_folder_do_not_mix(tmp_path: Path, out: Path) -> None:
+    source = tmp_path / "two.cnl"
+    source.write_text("heavily rusted iron\nhammered copper\n")
+    reference = tmp_path / "reference"
+    assert run_cnlmc("bake", str(source), "-o", str(reference), "--size", "64", "--seed", "2").returncode == 0
+    first = start_bake(source, out, "--size", "64", "--seed", "1")
+    wait_for(lambda: (out / LOCK_NAME).exists(), first, "lock")
+    second = start_bake(source, out, "--size", "64", "--seed", "2")  # waits for the first, then writes
+    assert first.wait(timeout=240) == 0 and second.wait(timeout=240) == 0, second.communicate()
+    maps = {name: data for name, data in entries(out).items() if name != "keep.txt"}
+    assert maps == entries(reference)  # every map from the second run, none from the first
+
+
+# ---------------------------------------------------------------- the writer's API
+
+
+def test_a_lock_held_in_this_process_makes_a_writer_wait_then_fail(tmp_path: Path) -> None:
+    lock = FolderLock(tmp_path, wait=0)
+    lock.acquire()
+    try:
+        with pytest.raises(UsageError, match=rf"another cnlmc \(process {os.getpid()}\) is writing there"):
+            FolderLock(tmp_path, wait=0.1).acquire()
+    finally:
+        lock.release()
+    assert list(tmp_path.iterdir()) == []  # the lock file goes with the lock
+    output.write_atomic(tmp_path / "a.json", "{}")
+    assert [p.name for p in tmp_path.iterdir()] == ["a.json"]
+
+
+def test_only_the_temps_of_dead_writers_are_removed(tmp_path: Path) -> None:
+    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True)
+    dead_pid = int(dead.stdout)
+    stale = tmp_path / f".a.png.{TEMP_MARK}.{dead_pid}.abcdefgh.png"
+    live = tmp_path / f".b.png.{TEMP_MARK}.{os.getpid()}.abcdefgh.png"
+    other = tmp_path / ".not-ours.tmp"
+    for path in (stale, live, other):
+        path.write_bytes(b"x")
+    assert remove_stale_temps(tmp_path) == [stale]
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted([live.name, other.name])
