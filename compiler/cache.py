@@ -1,21 +1,51 @@
 """A small on-disk cache for derived data (the parsed lexicon), keyed by its source files.
 
-The key is the names, sizes and modification times of the source files plus the cnlmc
-version; any change rebuilds. Unreadable or stale cache files are ignored, never trusted.
-Set CNLMC_NO_CACHE=1 to bypass it. The folder is $XDG_CACHE_HOME/cnlmc (or ~/.cache/cnlmc).
+What is stored is plain data (JSON: dicts, lists, strings, numbers, booleans), never code or
+pickled objects: loading a cache file cannot run anything, and the caller rebuilds its objects
+from the data through explicit constructors. Each file is
+
+    cnlmc-cache 2 sha256=<64 hex digits>\\n<JSON payload>
+
+where the digest covers the format line's version, the entry's name and the payload. A file
+that fails any check (not a regular file, too large, a wrong header, a digest mismatch, JSON
+that does not parse, data the caller's decoder refuses) is ignored and rebuilt, never trusted.
+
+The key is the names, sizes and modification times of the source files plus the cnlmc version;
+any change makes a new entry. The folder is $XDG_CACHE_HOME/cnlmc (or ~/.cache/cnlmc), made
+private to the user (mode 0700, files 0600). After each write the folder is trimmed to
+CNLMC_CACHE_MAX_BYTES (default 32 MiB), least recently used first; leftover temporary files
+older than an hour and cache files of older formats (*.pickle) are deleted. Set
+CNLMC_NO_CACHE=1 to bypass the cache.
 """
 
 from __future__ import annotations
 
 import hashlib
+import hmac
+import json
 import os
-import pickle
-import tempfile
+import time
 from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import TypeVar
+from typing import Any, TypeVar
 
 from . import __version__
+from .errors import UsageError
+from .inputs import read_bytes  # bounded, refuses FIFOs and devices
+
+T = TypeVar("T")
+
+FORMAT = "cnlmc-cache 2"
+SUFFIX = ".cache.json"
+TEMP_PREFIX = ".tmp-"
+LEGACY_SUFFIXES = (".pickle",)  # formats that executed code on load: removed, never read
+DEFAULT_MAX_BYTES = 32 * 1024 * 1024
+MAX_BYTES_VARIABLE = "CNLMC_CACHE_MAX_BYTES"
+STALE_TEMP_SECONDS = 3600
+
+
+class Corrupt(Exception):
+    """A cache file that fails verification (ignored, then rebuilt)."""
 
 
 def cache_dir() -> Path:
@@ -23,42 +53,173 @@ def cache_dir() -> Path:
     return Path(base) / "cnlmc"
 
 
-T = TypeVar("T")
+def max_cache_bytes() -> int:
+    text = os.environ.get(MAX_BYTES_VARIABLE, "")
+    try:
+        return max(0, int(text)) if text else DEFAULT_MAX_BYTES
+    except ValueError:
+        return DEFAULT_MAX_BYTES
 
 
-def _key(kind: str, sources: Iterable[Path]) -> str:
-    digest = hashlib.sha256(f"{kind}:{__version__}".encode())
-    for path in sources:
-        st = path.stat()
-        digest.update(f"{path}:{st.st_size}:{st.st_mtime_ns}".encode())
+def source_key(kind: str, sources: Iterable[Path]) -> str | None:
+    """A key for this set of source files, or None when one cannot be looked at (no caching then:
+    building reports the problem)."""
+    digest = hashlib.sha256(f"{kind}:{__version__}:{FORMAT}".encode())
+    try:
+        for path in sources:
+            st = os.stat(path)
+            digest.update(f"{path}:{st.st_size}:{st.st_mtime_ns}\0".encode())
+    except (OSError, ValueError):
+        return None
     return digest.hexdigest()[:32]
 
 
-def cached(kind: str, sources: Iterable[Path], build: Callable[[], T]) -> T:
-    """build() once per distinct set of source files; later calls read the pickle."""
+def _digest(name: str, payload: bytes) -> str:
+    return hashlib.sha256(f"{FORMAT}\n{name}\n".encode() + payload).hexdigest()
+
+
+def encode(name: str, payload: bytes) -> bytes:
+    """A cache file's bytes: the format line with the payload's digest, then the payload."""
+    return f"{FORMAT} sha256={_digest(name, payload)}\n".encode() + payload
+
+
+def decode(name: str, blob: bytes) -> bytes:
+    """The payload of a cache file's bytes; Corrupt unless the header and the digest check out."""
+    header, newline, payload = blob.partition(b"\n")
+    prefix = f"{FORMAT} sha256=".encode()
+    if not newline or not header.startswith(prefix):
+        raise Corrupt("not a cache file of this version")
+    expected = header[len(prefix) :].decode("ascii", "replace")
+    if not hmac.compare_digest(expected, _digest(name, payload)):
+        raise Corrupt("checksum mismatch")
+    return payload
+
+
+def dump_json(data: object) -> bytes:
+    """Plain data (dicts, lists, strings, finite numbers, booleans, None) as compact UTF-8 JSON."""
+    return json.dumps(data, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
+
+
+def load_json(payload: bytes) -> Any:
+    """dump_json's data back; ValueError for anything else (NaN and Infinity included)."""
+    try:
+        return json.loads(payload, parse_constant=_refuse_constant)
+    except RecursionError:
+        raise ValueError("nested too deeply") from None
+
+
+def _refuse_constant(name: str) -> float:
+    raise ValueError(f"{name} is not a finite number")
+
+
+class DiskCache:
+    """The cache folder: read verified entries, write atomically, trim to a size."""
+
+    def __init__(self, folder: Path | None = None, max_bytes: int | None = None) -> None:
+        self.folder = cache_dir() if folder is None else folder
+        self.max_bytes = max_cache_bytes() if max_bytes is None else max_bytes
+
+    def path(self, name: str) -> Path:
+        return self.folder / f"{name}{SUFFIX}"
+
+    def load(self, name: str) -> bytes:
+        """The stored payload, or Corrupt (also for a missing or unreadable file)."""
+        path = self.path(name)
+        try:
+            blob = read_bytes(str(path), limit=max(self.max_bytes, 1), what="cache file")
+        except UsageError as exc:  # missing, unreadable, not a regular file, too large: rebuild
+            raise Corrupt(str(exc)) from None
+        payload = decode(name, blob)
+        try:
+            os.utime(path)  # recently used: evicted last
+        except OSError:
+            pass
+        return payload
+
+    def store(self, name: str, payload: bytes) -> None:
+        """Write atomically (a private temporary file renamed over the entry), then trim the folder.
+        A folder that cannot be written is fine: the next run rebuilds."""
+        import tempfile  # only a miss writes
+
+        blob = encode(name, payload)
+        if len(blob) > self.max_bytes:
+            return
+        try:
+            self.folder.mkdir(mode=0o700, parents=True, exist_ok=True)
+            fd, tmp = tempfile.mkstemp(dir=self.folder, prefix=TEMP_PREFIX, suffix=SUFFIX)
+            try:
+                with os.fdopen(fd, "wb") as handle:
+                    handle.write(blob)
+                os.replace(tmp, self.path(name))
+            except BaseException:
+                _remove(Path(tmp))
+                raise
+        except OSError:
+            return
+        self.evict()
+
+    def evict(self) -> None:
+        """Delete stale temporaries and old formats, then the least recently used entries until
+        the folder's cache files total at most max_bytes."""
+        entries = []
+        now = time.time()
+        try:
+            listing = list(os.scandir(self.folder))
+        except OSError:
+            return
+        for item in listing:
+            try:
+                if not item.is_file(follow_symlinks=False):
+                    continue
+                info = item.stat(follow_symlinks=False)
+            except OSError:
+                continue
+            if item.name.endswith(LEGACY_SUFFIXES):
+                _remove(Path(item.path))
+            elif item.name.startswith(TEMP_PREFIX):
+                if now - info.st_mtime > STALE_TEMP_SECONDS:
+                    _remove(Path(item.path))
+            elif item.name.endswith(SUFFIX):
+                entries.append((info.st_mtime, info.st_size, item.path))
+        total = sum(size for _mtime, size, _path in entries)
+        for _mtime, size, path in sorted(entries):
+            if total <= self.max_bytes:
+                break
+            _remove(Path(path))
+            total -= size
+
+
+def _remove(path: Path) -> None:
+    try:
+        path.unlink()
+    except OSError:
+        pass
+
+
+def cached(
+    kind: str, sources: Iterable[Path], build: Callable[[], T], dump: Callable[[T], bytes], load: Callable[[bytes], T]
+) -> T:
+    """build() once per distinct set of source files; later calls rebuild the value with
+    load(payload) from the verified cache file. dump and load are the caller's codec of plain
+    data (dump_json / load_json and explicit constructors; never pickle): load raises ValueError,
+    TypeError, KeyError or OSError on a payload it does not accept, and the value is rebuilt."""
     if os.environ.get("CNLMC_NO_CACHE"):
         return build()
-    path = cache_dir() / f"{kind}-{_key(kind, sources)}.pickle"
+    key = source_key(kind, sources)
+    if key is None:
+        return build()
+    cache, name = DiskCache(), f"{kind}-{key}"
     try:
-        with open(path, "rb") as handle:
-            value: T = pickle.load(handle)
-            return value
-    except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError):
+        return load(cache.load(name))
+    except (Corrupt, ValueError, TypeError, KeyError, IndexError, AttributeError, OSError):
         pass
     built = build()
-    _store(path, built)
-    return built
-
-
-def _store(path: Path, value: object) -> None:
     try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
-        with os.fdopen(fd, "wb") as handle:
-            pickle.dump(value, handle, protocol=pickle.HIGHEST_PROTOCOL)
-        os.replace(tmp, path)
-    except OSError:
-        pass  # a read-only home is fine: we just rebuild next time
+        payload = dump(built)
+    except (ValueError, TypeError):
+        return built  # not plain data (a NaN, say): not cached
+    cache.store(name, payload)
+    return built
 
 
 def freeze_long_lived() -> None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Sequence
 
 LUMA = (0.2126, 0.7152, 0.0722)  # Rec.709 luminance weights
@@ -17,10 +18,27 @@ def linear_to_srgb(c: float) -> float:
     return c * 12.92 if c <= 0.0031308 else 1.055 * c ** (1 / 2.4) - 0.055
 
 
+HEX_COLOUR = re.compile(r"#?([0-9a-fA-F]{3}|[0-9a-fA-F]{6})")
+
+
+def parse_hex(hex_code: str) -> tuple[int, int, int] | None:
+    """'#0000ff', '0000ff' or the CSS shorthand '#00f' -> (0, 0, 255); None if it is not one of these."""
+    match = HEX_COLOUR.fullmatch(hex_code)
+    if match is None:
+        return None
+    digits = match.group(1)
+    if len(digits) == 3:
+        digits = "".join(d * 2 for d in digits)
+    return int(digits[0:2], 16), int(digits[2:4], 16), int(digits[4:6], 16)
+
+
 def hex_to_linear(hex_code: str) -> list[float]:
-    """'#0000ff' -> [0.0, 0.0, 1.0], rounded to 6 decimals so output is stable."""
-    h = hex_code.lstrip("#")
-    return [round(srgb_to_linear(int(h[i : i + 2], 16) / 255), 6) for i in (0, 2, 4)]
+    """'#0000ff' (or '#00f') -> [0.0, 0.0, 1.0], rounded to 6 decimals so output is stable.
+    ValueError for text that is not a hex colour."""
+    channels = parse_hex(hex_code)
+    if channels is None:
+        raise ValueError(f"{hex_code!r} is not a hex colour ('#rrggbb' or '#rgb')")
+    return [round(srgb_to_linear(c / 255), 6) for c in channels]
 
 
 def linear_to_hex(rgb: Iterable[float]) -> str:

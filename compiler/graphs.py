@@ -1,7 +1,8 @@
-"""What the compiler needs to know of procedural graphs: their parameters' names and ranges.
+"""What the compiler needs to know of procedural graphs: their names, outputs, parameters and ranges.
 
 Read from the graph data files (stdlib/graphs/NAME.toml); evaluating graphs is the maps
-backend's job, not the compiler's.
+backend's job, not the compiler's. Only the bundled graphs exist: a name that is not one of
+them (say '../x') is never turned into a path.
 """
 
 from __future__ import annotations
@@ -10,18 +11,33 @@ from collections.abc import Mapping
 from functools import cache
 from importlib import resources
 from types import MappingProxyType
+from typing import Any
+
+
+@cache
+def graph_names() -> frozenset[str]:
+    """The names of the bundled graphs (read once per process from package data)."""
+    folder = resources.files("cnlmc.stdlib").joinpath("graphs")
+    if not folder.is_dir():
+        return frozenset()
+    return frozenset(p.name[:-5] for p in folder.iterdir() if p.name.endswith(".toml"))
+
+
+@cache
+def _graph_table(name: str) -> Mapping[str, Any]:
+    import tomllib
+
+    if name not in graph_names():
+        return MappingProxyType({})
+    path = resources.files("cnlmc.stdlib").joinpath("graphs").joinpath(f"{name}.toml")
+    return MappingProxyType(tomllib.loads(path.read_text("utf-8")))
 
 
 @cache
 def graph_params(name: str) -> Mapping[str, tuple[float, float, float]]:
     """param -> (low, high, default) for a stdlib graph; empty when the graph is unknown.
     Read once per process from package data (immutable), and handed out read-only."""
-    import tomllib
-
-    path = resources.files("cnlmc.stdlib").joinpath("graphs").joinpath(f"{name}.toml")
-    if not path.is_file():
-        return MappingProxyType({})
-    table = tomllib.loads(path.read_text("utf-8")).get("params", {})
+    table = _graph_table(name).get("params", {})
     return MappingProxyType(
         {
             k: (float(v["range"][0]), float(v["range"][1]), float(v.get("default", 1.0)))
@@ -29,3 +45,15 @@ def graph_params(name: str) -> Mapping[str, tuple[float, float, float]]:
             if "range" in v
         }
     )
+
+
+@cache
+def graph_outputs(name: str) -> tuple[str, ...]:
+    """The output names of a stdlib graph ('color', 'normal', ...); empty when the graph is unknown."""
+    return tuple(_graph_table(name).get("outputs", {}))
+
+
+@cache
+def all_graph_params() -> frozenset[str]:
+    """Every parameter name some bundled graph has (what a property's map_param may name)."""
+    return frozenset(p for name in graph_names() for p in graph_params(name))

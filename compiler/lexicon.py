@@ -11,14 +11,13 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
-from importlib.resources.abc import Traversable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .cache import cached
-from .colour import hex_to_linear
+from .cache import cached, dump_json, load_json
 from .diagnostics import FailureKey, Mistake
-from .lexicon_schema import LexiconError, check_entry
+from .graphs import graph_names
+from .material import MAP_ROLES
 from .syntax import ShapeCache
 from .tagged import Candidate
 
@@ -36,7 +35,17 @@ CATEGORY_TAGS = {
     "coats": "COAT",
 }
 SPECIAL_FILES = ("settings", "inflections", "keywords")
-Folder = Path | Traversable  # a lexicon folder or file: the user's, or inside the installed package
+#: The modules that read and check lexicon files: a change to one of them makes a new cache entry.
+READER_MODULES = (
+    "lexicon",
+    "lexicon_load",
+    "lexicon_schema",
+    "lexicon_refs",
+    "lexicon_source",
+    "colour",
+    "graphs",
+    "params",
+)
 Overlays = str | tuple[str, ...] | None  # overlay names, e.g. "paper" or ("de", "paper")
 
 
@@ -64,7 +73,7 @@ def normalise(surface: str) -> tuple[str, ...]:
 
 
 class LexiconCaches:
-    """What is derived from one lexicon while it is used, kept with it and never pickled with it.
+    """What is derived from one lexicon while it is used, kept with it (never written to the disk cache).
 
     - tagger: the Tagger of this lexicon (document.parse_document makes it on first use)
     - tags: word tuple -> the candidate tags the tagger found for it
@@ -116,13 +125,6 @@ class Lexicon:
         self.max_form_words = max(len(f) for f in self.forms)
         self.followers = _multi_word_followers(self.forms)
         self.lengths_from = _multi_word_lengths(self.forms)
-        self.caches = LexiconCaches()
-
-    def __getstate__(self) -> dict[str, Any]:
-        return {name: value for name, value in self.__dict__.items() if name != "caches"}
-
-    def __setstate__(self, state: dict[str, Any]) -> None:
-        self.__dict__.update(state)
         self.caches = LexiconCaches()
 
     def multi_word_followers(self) -> dict[str, frozenset[str]]:
@@ -207,13 +209,6 @@ def _index_forms(entries: dict[str, dict[str, Entry]]) -> Forms:
     return forms
 
 
-def _schema() -> dict[str, Any]:
-    import tomllib
-
-    text = resources.files("cnlmc.stdlib").joinpath("schema.toml").read_text("utf-8")
-    return tomllib.loads(text)
-
-
 def keyword_table(table: dict[str, Any] | None = None) -> dict[str, str]:
     """Closed-class words -> grammar terminal, from grammar/keywords.toml (or a given table)."""
     if table is None:
@@ -224,126 +219,44 @@ def keyword_table(table: dict[str, Any] | None = None) -> dict[str, str]:
     return {word: terminal for terminal, words in table["terminals"].items() for word in words}
 
 
-def _category_of(stem: str) -> str | None:
-    for category in (*CATEGORY_TAGS, *SPECIAL_FILES):
-        if stem == category or stem.startswith(category + "_"):
-            return category
-    return None
+def load_lexicon(user_paths: Iterable[str | Path] = (), overlay: Overlays = None) -> Lexicon:
+    """Load the lexicon: user folders first, then the overlays in order, then the bundled stdlib.
+    A malformed file is a LexiconError naming FILE:LINE:COL and the key (cnlmc.lexicon_load)."""
+    from .lexicon_load import load
+
+    return load(user_paths, overlay)
 
 
-def _read_toml(path: Folder) -> dict[str, Any]:
-    import tomllib
-
-    try:
-        return tomllib.loads(path.read_text("utf-8"))
-    except tomllib.TOMLDecodeError as exc:
-        raise LexiconError(f"{path}: not valid TOML: {exc}") from None
-    except OSError as exc:
-        raise LexiconError(f"{path}: cannot read: {exc.strerror}") from None
+@lru_cache(maxsize=8)
+def cached_lexicon(user_paths: tuple[str | Path, ...] = (), overlay: Overlays = None) -> Lexicon:
+    """The lexicon, from the on-disk cache when no source file changed since it was written."""
+    sources = lexicon_sources(user_paths, overlay)
+    return cached("lexicon", sources, lambda: load_lexicon(user_paths, overlay), _dump, _load)
 
 
-def _layer_files(folder: Folder) -> list[Folder]:
-    return sorted((p for p in folder.iterdir() if p.name.endswith(".toml")), key=lambda p: p.name)
+def _dump(lexicon: Lexicon) -> bytes:
+    return dump_json(to_data(lexicon))
 
 
-class _Builder:
-    """Accumulates layers, most specific first; a field already set is never replaced."""
-
-    def __init__(self) -> None:
-        self.schema = _schema()
-        self.raw: dict[str, dict[str, tuple[dict[str, Any], str]]] = {c: {} for c in CATEGORY_TAGS}
-        self.settings: dict[str, Any] = {}
-        self.inflections: list[tuple[str, str]] = []
-        self.keywords: dict[str, str] = {}
-        self.sources: list[str] = []
-
-    def add_layer(self, folder: Folder, strict_entries: bool) -> None:
-        self.sources.append(str(folder))
-        for path in _layer_files(folder):
-            self._add_file(path, strict_entries)
-
-    def _add_file(self, path: Folder, strict_entries: bool) -> None:
-        stem = path.name[:-5]
-        category = _category_of(stem)
-        if category is None:
-            raise LexiconError(
-                f"{path}: unknown lexicon file (its name must start with one of: "
-                f"{', '.join([*CATEGORY_TAGS, *SPECIAL_FILES])})"
-            )
-        data = _read_toml(path)
-        if category == "inflections":  # every layer's rules, the most specific layer's first
-            self.inflections += [tuple(r) for r in data.get("rules", [])]
-            return
-        if category == "keywords":  # a language's closed-class words (and, or, with, articles)
-            self._add_keywords(path, data)
-            return
-        if category == "settings":
-            check_entry(data, self.schema["settings"]["fields"], str(path), partial=True)
-            self.settings = {**data, **self.settings}
-            return
-        self._add_entries(path, category, data, strict_entries)
-
-    def _add_entries(self, path: Folder, category: str, data: dict[str, Any], strict_entries: bool) -> None:
-        fields = self.schema[category]["fields"]
-        for key, entry in data.items():
-            where = f"{path} [{key}]"
-            if not isinstance(entry, dict):
-                raise LexiconError(f"{where}: expected a table of fields")
-            known = key in self.raw[category]
-            check_entry(entry, fields, where, partial=known or not strict_entries)
-            self._merge(category, key, entry, str(path))
-
-    def _merge(self, category: str, key: str, entry: dict[str, Any], origin: str) -> None:
-        current = self.raw[category].get(key)
-        if current is None:
-            self.raw[category][key] = (dict(entry), origin)
-            return
-        merged = {**entry, **current[0]}
-        merged["aliases"] = sorted(set(current[0].get("aliases", [])) | set(entry.get("aliases", [])))
-        self.raw[category][key] = (merged, current[1])
-
-    def _add_keywords(self, path: Folder, data: dict[str, Any]) -> None:
-        terminals = set(keyword_table().values())
-        table = data.get("terminals")
-        if not isinstance(table, dict) or not set(table) <= terminals:
-            raise LexiconError(f"{path} [terminals]: expected a table of {', '.join(sorted(terminals))}")
-        self.keywords = {**keyword_table(data), **self.keywords}
-
-    def check_complete(self) -> None:
-        """Entries added only by a user layer must still carry every required field."""
-        for category, by_key in self.raw.items():
-            for key, (data, origin) in by_key.items():
-                check_entry(data, self.schema[category]["fields"], f"{origin} [{key}]")
-
-    def build(self) -> Lexicon:
-        entries = {c: {k: _finish(c, k, d, o) for k, (d, o) in by.items()} for c, by in self.raw.items()}
-        return Lexicon(entries, self.settings, self.inflections, self.sources, self.keywords)
+def _load(payload: bytes) -> Lexicon:
+    return from_data(load_json(payload))
 
 
-def _finish(category: str, key: str, data: dict[str, Any], origin: str) -> Entry:
-    if category == "colours" and "rgb" not in data:
-        data = {**data, "rgb": hex_to_linear(data["hex"])}
-    return Entry(category, key, data, origin)
-
-
-def stdlib_folder() -> Traversable:
-    return resources.files("cnlmc.stdlib").joinpath("lexicon")
-
-
-def overlay_folder(name: str) -> Traversable:
-    folder = resources.files("cnlmc.stdlib").joinpath("overlays").joinpath(name)
-    if not folder.is_dir():
-        import difflib
-
-        close = difflib.get_close_matches(name, available_overlays(), n=1)
-        hint = f"; did you mean '{close[0]}'?" if close else ""
-        raise LexiconError(f"no lexicon overlay named '{name}' (available: {', '.join(available_overlays())}){hint}")
-    return folder
-
-
-def available_overlays() -> list[str]:
-    root = resources.files("cnlmc.stdlib").joinpath("overlays")
-    return sorted(p.name for p in root.iterdir() if p.is_dir())
+def lexicon_sources(user_paths: tuple[str | Path, ...], overlay: Overlays) -> list[Path]:
+    """Every file a lexicon is made from: a change to one of them makes a new cache entry."""
+    package = resources.files("cnlmc.stdlib")
+    folders = [Path(p) for p in user_paths]
+    folders += [Path(str(package.joinpath("overlays").joinpath(name))) for name in _overlay_names(overlay)]
+    folders += [Path(str(package.joinpath("lexicon"))), Path(str(package.joinpath("graphs")))]
+    here = Path(__file__).parent  # how entries are read and checked
+    sources = [here / f"{name}.py" for name in READER_MODULES]
+    sources += [
+        Path(str(package.joinpath("schema.toml"))),
+        Path(str(resources.files("cnlmc.grammar").joinpath("keywords.toml"))),
+    ]
+    sources += folders  # a file added to or removed from a folder changes its time
+    sources += [p for folder in folders if folder.is_dir() for p in sorted(folder.glob("*.toml"))]
+    return sources
 
 
 def _overlay_names(overlay: Overlays) -> tuple[str, ...]:
@@ -351,31 +264,47 @@ def _overlay_names(overlay: Overlays) -> tuple[str, ...]:
     return tuple(n for n in names if n and n != "stdlib")
 
 
-def load_lexicon(user_paths: Iterable[str | Path] = (), overlay: Overlays = None) -> Lexicon:
-    """Load the lexicon: user folders first, then the overlays in order, then the bundled stdlib."""
-    builder = _Builder()
-    for folder in user_paths:
-        path = Path(folder)
-        if not path.is_dir():
-            raise LexiconError(f"{path}: lexicon path is not a folder")
-        builder.add_layer(path, strict_entries=False)
-    for name in _overlay_names(overlay):
-        builder.add_layer(overlay_folder(name), strict_entries=False)
-    builder.add_layer(stdlib_folder(), strict_entries=True)
-    builder.check_complete()
-    return builder.build()
+# ---------------------------------------------------------------- the cache's plain-data form
 
 
-@lru_cache(maxsize=8)
-def cached_lexicon(user_paths: tuple[str | Path, ...] = (), overlay: Overlays = None) -> Lexicon:
-    """The lexicon, from the on-disk cache when no source file changed since it was written."""
-    folders = [Path(p) for p in user_paths]
-    folders += [Path(str(overlay_folder(name))) for name in _overlay_names(overlay)]
-    folders.append(Path(str(stdlib_folder())))
-    sources = [
-        Path(str(resources.files("cnlmc.stdlib").joinpath("schema.toml"))),
-        Path(str(resources.files("cnlmc.grammar").joinpath("keywords.toml"))),
-        Path(__file__),
-    ]  # the classes that are pickled: a change to them rebuilds the cache
-    sources += [p for folder in folders if folder.is_dir() for p in sorted(folder.glob("*.toml"))]
-    return cached("lexicon", sources, lambda: load_lexicon(user_paths, overlay))
+def to_data(lexicon: Lexicon) -> dict[str, Any]:
+    """The lexicon as plain JSON data (what from_data rebuilds it from)."""
+    return {
+        "entries": {c: {k: [e.data, e.origin] for k, e in by.items()} for c, by in lexicon.entries.items()},
+        "settings": lexicon.settings,
+        "inflections": [list(rule) for rule in lexicon.inflections],
+        "sources": lexicon.sources,
+        "keywords": lexicon.keywords,
+    }
+
+
+def from_data(data: dict[str, Any]) -> Lexicon:
+    """A Lexicon from to_data's form; ValueError or TypeError for data of any other shape."""
+    entries = {
+        c: {k: _entry_from(c, k, value) for k, value in _table(data["entries"][c]).items()} for c in CATEGORY_TAGS
+    }
+    inflections = [(_text(s), _text(r)) for s, r in data["inflections"]]
+    sources = [_text(s) for s in data["sources"]]
+    keywords = {_text(k): _text(v) for k, v in _table(data["keywords"]).items()}
+    return Lexicon(entries, _table(data["settings"]), inflections, sources, keywords)
+
+
+def _entry_from(category: str, key: str, value: list[Any]) -> Entry:
+    fields, origin = value
+    fields = _table(fields)
+    for role, ref in _table(fields.get("maps", {})).items():  # names that become paths stay checked
+        if role not in MAP_ROLES or _table(ref).get("graph") not in graph_names():
+            raise ValueError(f"cached {category} '{key}' has a map that is not in the schema")
+    return Entry(category, _text(key), fields, _text(origin))
+
+
+def _table(value: Any) -> dict[str, Any]:
+    if not isinstance(value, dict):
+        raise TypeError(f"expected a table, got {type(value).__name__}")
+    return value
+
+
+def _text(value: Any) -> str:
+    if not isinstance(value, str):
+        raise TypeError(f"expected a string, got {type(value).__name__}")
+    return value

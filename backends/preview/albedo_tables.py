@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import dataclasses
 import hashlib
+import io
 import json
 from pathlib import Path
 
@@ -127,8 +128,26 @@ def _tables(material: Material, fresnel: str, multiscatter: bool, mapped: bool) 
     inputs = json.dumps([_table_key(material), fresnel, multiscatter, mapped, MU_SIZE, ROWS, SAMPLES, SECTIONS])
     kind = "albedo-tables-" + hashlib.sha256(inputs.encode()).hexdigest()[:20]
     sources = [Path(__file__), Path(kernel_fit.__file__)] + sorted(BSDF_SOURCES.glob("*.py"))
-    tables: Tables = cached(kind, sources, lambda: _integrate(material, fresnel, multiscatter, mapped))
+    tables: Tables = cached(
+        kind, sources, lambda: _integrate(material, fresnel, multiscatter, mapped), _dump_tables, _load_tables
+    )
     return tables
+
+
+def _dump_tables(tables: Tables) -> bytes:
+    """The two tables as .npy arrays, one after the other (plain numbers; never pickled)."""
+    buffer = io.BytesIO()
+    for table in tables:
+        np.save(buffer, table, allow_pickle=False)
+    return buffer.getvalue()
+
+
+def _load_tables(payload: bytes) -> Tables:
+    buffer = io.BytesIO(payload)
+    try:
+        return np.load(buffer, allow_pickle=False), np.load(buffer, allow_pickle=False)
+    except (EOFError, OSError) as exc:
+        raise ValueError(f"not two .npy arrays: {exc}") from None
 
 
 def _integrate(material: Material, fresnel: str, multiscatter: bool, mapped: bool) -> Tables:

@@ -109,11 +109,11 @@ def test_user_lexicon_adds_and_overrides(tmp_path):
 @pytest.mark.parametrize(
     "text,message",
     [
-        ('[steel]\nroughness = "high"\n', "nouns_bad.toml [steel].roughness: expected float, got 'high'"),
-        ("[steel]\nshininess = 1.0\n", "nouns_bad.toml [steel]: unknown field 'shininess'"),
-        ("[steel]\nroughness = 7.0\n", "nouns_bad.toml [steel].roughness: 7.0 is outside [0.0, 1.0]"),
-        ("[newmetal]\nroughness = 0.1\n", "[newmetal]: missing required field"),
-        ("[steel\n", "nouns_bad.toml: not valid TOML"),
+        ('[steel]\nroughness = "high"\n', "nouns_bad.toml:2:1: key 'steel.roughness': expected a number, got a string 'high'"),
+        ("[steel]\nshininess = 1.0\n", "nouns_bad.toml:2:1: key 'steel.shininess': unknown field 'shininess'"),
+        ("[steel]\nroughness = 7.0\n", "nouns_bad.toml:2:1: key 'steel.roughness': 7.0 is outside [0, 1]"),
+        ("[newmetal]\nroughness = 0.1\n", "nouns_bad.toml:1:1: key 'newmetal': missing required field"),
+        ("[steel\n", "nouns_bad.toml:1:7: not valid TOML"),
     ],
 )
 def test_schema_errors_name_file_and_key(tmp_path, text, message):

@@ -1,0 +1,294 @@
+"""Reading lexicon folders into a Lexicon: bounded reads, TOML errors with positions, schema checks.
+
+A user's folder is untrusted: every .toml file in it is read through `cnlmc.inputs.read_bytes`
+(a FIFO, a device such as a link to /dev/zero, a folder named x.toml or a link loop is refused,
+naming the file), at most `max_bytes` bytes in all per folder (CNLMC_LEXICON_MAX_BYTES, 16 MiB
+by default) and `MAX_FILES` files; names starting with '.' (editor temporaries) are skipped.
+Every entry is checked against stdlib/schema.toml (cnlmc.lexicon_schema), then every name one
+entry gives another (cnlmc.lexicon_refs); each error is a LexiconError naming FILE:LINE:COL.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import tomllib
+from collections.abc import Iterable
+from importlib import resources
+from importlib.resources.abc import Traversable
+from pathlib import Path
+from typing import Any
+
+from .errors import UsageError
+from .inputs import DEFAULT_MAX_BYTES, InputTooLarge, decode_utf8, read_bytes
+from .lexicon import CATEGORY_TAGS, SPECIAL_FILES, Entry, Lexicon, keyword_table
+from .lexicon_refs import RawEntry, References
+from .lexicon_schema import Checker, LexiconError, check_entry, check_required, did_you_mean
+from .lexicon_source import SourceText, dotted
+
+Folder = Path | Traversable  # a lexicon folder or file: the user's, or inside the installed package
+FILE_KINDS = (*CATEGORY_TAGS, *SPECIAL_FILES)
+MAX_FILES = 256  # .toml files in one lexicon folder
+MAX_BYTES_VARIABLE = "CNLMC_LEXICON_MAX_BYTES"
+TOML_POSITION = re.compile(r"\s*\(at line (\d+), column (\d+)\)$")
+
+
+def max_bytes() -> int:
+    """The byte budget of one user lexicon folder (CNLMC_LEXICON_MAX_BYTES, else 16 MiB)."""
+    text = os.environ.get(MAX_BYTES_VARIABLE, "")
+    try:
+        return max(1, int(text)) if text else DEFAULT_MAX_BYTES
+    except ValueError:
+        raise LexiconError(f"{MAX_BYTES_VARIABLE}={text!r}: expected a number of bytes") from None
+
+
+def schema() -> dict[str, Any]:
+    text = resources.files("cnlmc.stdlib").joinpath("schema.toml").read_text("utf-8")
+    return tomllib.loads(text)
+
+
+def category_of(stem: str) -> str | None:
+    for category in FILE_KINDS:
+        if stem == category or stem.startswith(category + "_"):
+            return category
+    return None
+
+
+# ---------------------------------------------------------------- reading one folder
+
+
+class FolderReader:
+    """Lists and reads one folder's .toml files within a byte budget (None: trusted package data)."""
+
+    def __init__(self, folder: Folder, budget: int | None) -> None:
+        self.folder = folder
+        self.budget = budget
+
+    def files(self) -> list[Folder]:
+        try:
+            found = [p for p in self.folder.iterdir() if p.name.endswith(".toml") and not p.name.startswith(".")]
+        except OSError as exc:
+            raise LexiconError(f"{self.folder}: cannot list the lexicon folder: {exc.strerror}") from None
+        if len(found) > MAX_FILES:
+            raise LexiconError(f"{self.folder}: {len(found)} .toml files; a lexicon folder holds at most {MAX_FILES}")
+        return sorted(found, key=lambda p: p.name)
+
+    def read(self, path: Folder) -> SourceText:
+        name = str(path)
+        if self.budget is None:
+            return SourceText(name, path.read_text("utf-8"))
+        try:
+            data = read_bytes(name, limit=self.budget, what="lexicon file", option=f"{MAX_BYTES_VARIABLE}=")
+        except InputTooLarge:
+            raise LexiconError(
+                f"{name}: the lexicon folder {self.folder} holds more than {self.budget} bytes of .toml files "
+                f"(the limit); raise it with the environment variable {MAX_BYTES_VARIABLE}=N"
+            ) from None
+        except UsageError as exc:
+            raise LexiconError(str(exc)) from None
+        self.budget -= len(data)
+        try:
+            return SourceText(name, decode_utf8(data, name))
+        except UsageError as exc:
+            raise LexiconError(str(exc)) from None
+
+
+def parse_toml(source: SourceText) -> dict[str, Any]:
+    """The file's table, or a LexiconError at the line and column tomllib names."""
+    try:
+        return tomllib.loads(source.text)
+    except tomllib.TOMLDecodeError as exc:
+        raise LexiconError(_toml_message(source, str(exc))) from None
+    except RecursionError:
+        raise LexiconError(f"{source.name}:1:1: not valid TOML: arrays or tables nested too deeply") from None
+
+
+def _toml_message(source: SourceText, message: str) -> str:
+    duplicates = source.positions.duplicates
+    if message.startswith(("Cannot overwrite", "Cannot declare")) and duplicates:
+        path, offset = duplicates[0]
+        line, column = source.line_col(offset)
+        first, _ = source.locate(path)
+        return f"{source.name}:{line}:{column}: not valid TOML: key '{dotted(path)}' is defined twice (first on line {first})"
+    match = TOML_POSITION.search(message)
+    if match is not None:
+        return f"{source.name}:{match[1]}:{match[2]}: not valid TOML: {message[: match.start()]}"
+    line, column = source.line_col(len(source.text))
+    return f"{source.name}:{line}:{column}: not valid TOML: {TOML_POSITION.sub('', message)}"
+
+
+# ---------------------------------------------------------------- layers
+
+
+class Builder:
+    """Accumulates layers, most specific first; a field already set is never replaced."""
+
+    def __init__(self) -> None:
+        self.schema = schema()
+        self.raw: dict[str, dict[str, RawEntry]] = {c: {} for c in CATEGORY_TAGS}
+        self.settings: dict[str, Any] = {}
+        self.inflections: list[tuple[str, str]] = []
+        self.keywords: dict[str, str] = {}
+        self.sources: list[str] = []
+
+    def add_layer(self, folder: Folder, bundled: bool, strict: bool) -> None:
+        """`bundled`: package data (read without a budget); `strict`: a new entry must be complete here."""
+        self.sources.append(str(folder))
+        reader = FolderReader(folder, None if bundled else max_bytes())
+        for path in reader.files():
+            self._add_file(path, reader, strict)
+
+    def _add_file(self, path: Folder, reader: FolderReader, strict: bool) -> None:
+        stem = path.name[:-5]
+        category = category_of(stem)
+        if category is None:
+            close = did_you_mean(stem.split("_")[0], FILE_KINDS)
+            raise LexiconError(
+                f"{path}:1:1: unknown lexicon file{close}: its name must be one of {', '.join(FILE_KINDS)}, "
+                f"or start with one of them and '_' (nouns_studio.toml)"
+            )
+        source = reader.read(path)
+        data = parse_toml(source)
+        checker = Checker(source)
+        if category == "inflections":  # every layer's rules, the most specific layer's first
+            self.inflections += _inflection_rules(checker, data)
+        elif category == "keywords":  # a language's closed-class words (and, or, with, articles)
+            self.keywords = {**_keywords(checker, data), **self.keywords}
+        elif category == "settings":
+            check_entry(checker, data, self.schema["settings"]["fields"], (), partial=True, common=False)
+            self.settings = {**data, **self.settings}
+        else:
+            self._add_entries(checker, category, data, strict)
+
+    def _add_entries(self, c: Checker, category: str, data: dict[str, Any], strict: bool) -> None:
+        fields = self.schema[category]["fields"]
+        for key, entry in data.items():
+            if not key.strip():
+                c.fail((key,), "an entry needs a name: [name] with at least one word")
+            known = key in self.raw[category]
+            check_entry(c, entry, fields, (key,), partial=known or not strict)
+            self._merge(category, key, entry, c.source)
+
+    def _merge(self, category: str, key: str, entry: dict[str, Any], source: SourceText) -> None:
+        current = self.raw[category].get(key)
+        if current is None:
+            self.raw[category][key] = RawEntry(dict(entry), source, dict.fromkeys(entry, source))
+            return
+        for name, value in entry.items():
+            if name not in current.data:
+                current.data[name] = value
+                current.field_sources[name] = source
+        aliases = set(current.data.get("aliases", [])) | set(entry.get("aliases", []))
+        current.data["aliases"] = sorted(aliases)
+
+    def check(self) -> None:
+        """Entries added only by a user layer must carry every required field; every name must exist."""
+        for category, by_key in self.raw.items():
+            fields = self.schema[category]["fields"]
+            for key, entry in by_key.items():
+                check_required(Checker(entry.source), entry.data, fields, (key,))
+        References(self.raw).check()
+
+    def build(self) -> Lexicon:
+        entries = {c: {k: _finish(c, k, e) for k, e in by.items()} for c, by in self.raw.items()}
+        return Lexicon(entries, self.settings, self.inflections, self.sources, self.keywords)
+
+
+def _finish(category: str, key: str, raw: RawEntry) -> Entry:
+    data = raw.data
+    if category == "colours" and "rgb" not in data:
+        from .colour import hex_to_linear
+
+        data = {**data, "rgb": hex_to_linear(data["hex"])}
+    return Entry(category, key, data, raw.source.name)
+
+
+def _inflection_rules(c: Checker, data: dict[str, Any]) -> list[tuple[str, str]]:
+    """rules = [["ies", "y"], ...]: a suffix (not empty) and what replaces it."""
+    c.known_keys(data, ("rules",), ())
+    rules = []
+    for i, rule in enumerate(c.array(data.get("rules", []), ("rules",), "a list of [suffix, replacement] pairs")):
+        if not isinstance(rule, list) or len(rule) != 2:
+            c.fail(("rules", i), f'expected a pair [suffix, replacement], e.g. ["ies", "y"], got {rule!r:.60}')
+        suffix = c.string(rule[0], ("rules", i, 0), blank=False)
+        rules.append((suffix, c.string(rule[1], ("rules", i, 1))))
+    return rules
+
+
+def _keywords(c: Checker, data: dict[str, Any]) -> dict[str, str]:
+    """[terminals] AND = ["und"], ...: a language's closed-class words by grammar terminal."""
+    terminals = sorted(set(keyword_table().values()))
+    c.known_keys(data, ("terminals",), ())
+    table = c.table(c.required(data, "terminals", ()), ("terminals",), f"a table of {', '.join(terminals)}")
+    c.known_keys(table, terminals, ("terminals",), "grammar terminal")
+    for terminal, words in table.items():
+        for i, word in enumerate(c.array(words, ("terminals", terminal), "a list of words")):
+            c.string(word, ("terminals", terminal, i), blank=False)
+    return keyword_table(data)
+
+
+# ---------------------------------------------------------------- folders and overlays
+
+
+def stdlib_folder() -> Traversable:
+    return resources.files("cnlmc.stdlib").joinpath("lexicon")
+
+
+def available_overlays() -> list[str]:
+    root = resources.files("cnlmc.stdlib").joinpath("overlays")
+    return sorted(p.name for p in root.iterdir() if p.is_dir())
+
+
+def overlay_folder(name: str) -> Traversable:
+    if name not in available_overlays():
+        raise LexiconError(_not_an_overlay(name))
+    return resources.files("cnlmc.stdlib").joinpath("overlays").joinpath(name)
+
+
+def _not_an_overlay(name: str) -> str:
+    """Why `name` is neither a lexicon folder nor an overlay: a file, a broken link, or a typo."""
+    available = ", ".join(available_overlays())
+    if os.path.lexists(name) or os.sep in name or name.endswith(".toml"):
+        what = "does not exist" if not os.path.lexists(name) else _what_it_is(Path(name))
+        return (
+            f"{name}: not a lexicon folder ({what}); --lexicon takes a folder of .toml files "
+            f"(nouns_studio.toml, ...) or an overlay name ({available})"
+        )
+    return f"no lexicon overlay named '{name}' (available: {available}){did_you_mean(name, available_overlays())}"
+
+
+def _what_it_is(path: Path) -> str:
+    try:
+        path.stat()
+    except OSError as exc:
+        return f"cannot be followed: {exc.strerror}"
+    return "it is a file" if path.is_file() else "it is not a folder"
+
+
+def overlay_names(overlay: str | tuple[str, ...] | None) -> tuple[str, ...]:
+    names = (overlay,) if isinstance(overlay, str) else tuple(overlay or ())
+    return tuple(n for n in names if n and n != "stdlib")
+
+
+def user_folder(folder: str | Path) -> Path:
+    path = Path(folder)
+    try:
+        if path.is_dir():
+            return path
+    except OSError:
+        pass
+    raise LexiconError(
+        _not_an_overlay(str(folder)) if os.path.lexists(path) else f"{path}: lexicon path is not a folder"
+    )
+
+
+def load(user_paths: Iterable[str | Path], overlay: str | tuple[str, ...] | None) -> Lexicon:
+    """User folders first, then the overlays in order, then the bundled stdlib."""
+    builder = Builder()
+    for folder in user_paths:
+        builder.add_layer(user_folder(folder), bundled=False, strict=False)
+    for name in overlay_names(overlay):
+        builder.add_layer(overlay_folder(name), bundled=True, strict=False)
+    builder.add_layer(stdlib_folder(), bundled=True, strict=True)
+    builder.check()
+    return builder.build()
