@@ -206,17 +206,17 @@ def hue_family(rgb: Sequence[float]) -> str:
     """The everyday hue family of a linear sRGB colour, from its OKLCh (L, C, h).
 
     neutral: C < 0.04. Otherwise by hue angle h (degrees):
-      [355, 40)  pink when L >= 0.75 or (L >= 0.62 and C < 0.12), else red
+      [0, 40)    pink when L >= 0.72 or (L >= 0.62 and C < 0.12), else red
       [40, 100)  brown when L < 0.62 or (C < 0.1 and L < 0.82); else orange (h < 75) or yellow
       [100, 115) yellow when L >= 0.7, else green (olive)
       [115, 170) green;  [170, 225) cyan;  [225, 290) blue
-      [290, 320) purple; [320, 355) pink when L >= 0.55, else purple
+      [290, 320) purple; [320, 360) pink when L >= 0.55, else purple
     """
     L, C, h = oklch(rgb)
     if C < NEUTRAL_CHROMA:
         return "neutral"
-    if h >= 355 or h < 40:
-        return "pink" if L >= 0.75 or (L >= 0.62 and C < 0.12) else "red"
+    if h < 40:
+        return "pink" if L >= 0.72 or (L >= 0.62 and C < 0.12) else "red"
     if h < 100:
         if L < 0.62 or (C < 0.1 and L < 0.82):
             return "brown"
