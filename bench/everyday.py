@@ -174,7 +174,7 @@ BOOLEAN_KEYS = ("conductor", "transmissive", "coat", "anisotropic", "warns")
 BAND_KEYS = ("lightness", "roughness")
 HUE_FAMILIES = ("red", "orange", "yellow", "green", "cyan", "blue", "purple", "pink", "brown", "neutral")
 EXPECTATION_KEYS = (*BOOLEAN_KEYS, *BAND_KEYS, "hue", "maps")
-ENTRY_KEYS = ("text", "category", "lexicon", "note", *EXPECTATION_KEYS)
+ENTRY_KEYS = ("text", "category", "lexicon", "note", "same_as", *EXPECTATION_KEYS)
 DIRECTIONS = ("up", "down", "same", "changed")
 DIRECTION_KEYS = ("roughness", "lightness", "chroma", "anisotropy", "maps", "hue")
 
@@ -427,7 +427,51 @@ def run_phrase(entry: Mapping[str, Any], bands: Mapping[str, Any]) -> Outcome:
         return Outcome(text, category, False, errors or [("E003", "the phrase names no material")], warnings)
     expect = {k: entry[k] for k in EXPECTATION_KEYS if k in entry}
     misses = check_material(result.materials[0], expect, bands, [c for c, _ in warnings])
+    if "same_as" in entry:
+        other = api.compile_source(entry["same_as"], "<everyday>", lexicon(entry.get("lexicon")))
+        if not other.ok or not other.materials:
+            misses.append(("same_as", entry["same_as"], "that phrase is rejected"))
+        else:
+            diff = differences(result.materials[0], other.materials[0])
+            if diff:
+                misses.append(("same_as", entry["same_as"], "; ".join(diff)))
     return Outcome(text, category, True, [], warnings, misses)
+
+
+def differences(a: Mapping[str, Any], b: Mapping[str, Any], tol: float = 1e-6) -> list[str]:
+    """What differs between two IR materials' model, params and maps ('params.roughness 0.3 vs 0.36')."""
+    out: list[str] = []
+
+    def walk(x: Any, y: Any, path: str) -> None:
+        if isinstance(x, dict) and isinstance(y, dict):
+            for k in sorted(set(x) | set(y)):
+                walk(x.get(k), y.get(k), f"{path}.{k}" if path else k)
+        elif isinstance(x, list) and isinstance(y, list) and len(x) == len(y):
+            if any(isinstance(v, (dict, list)) for v in x):
+                for i, (u, v) in enumerate(zip(x, y)):
+                    walk(u, v, f"{path}[{i}]")
+            elif any(not _close(u, v, tol) for u, v in zip(x, y)):
+                out.append(f"{path} {_show(x)} vs {_show(y)}")
+        elif not _close(x, y, tol):
+            out.append(f"{path} {_show(x)} vs {_show(y)}")
+
+    for key in ("model", "params", "maps"):
+        walk(a.get(key), b.get(key), key)
+    return out
+
+
+def _close(x: Any, y: Any, tol: float) -> bool:
+    if isinstance(x, (int, float)) and isinstance(y, (int, float)) and not isinstance(x, bool):
+        return abs(x - y) <= tol
+    return bool(x == y)
+
+
+def _show(v: Any) -> str:
+    if isinstance(v, float):
+        return f"{v:.4g}"
+    if isinstance(v, list):
+        return "[" + ", ".join(_show(u) for u in v) + "]"
+    return json.dumps(v)
 
 
 def run_refinement(seq: Mapping[str, Any]) -> list[Outcome]:

@@ -79,6 +79,7 @@ def test_every_category_of_the_issue_has_ten_phrases(data):
 def test_every_key_and_value_is_known(data):
     bands = data["bands"]
     features = set(ev.MAP_FEATURES)
+    texts = [e["text"] for e in data["phrase"]]
     for e in data["phrase"]:
         assert set(e) <= set(ev.ENTRY_KEYS), e
         assert {"text", "category"} <= set(e), e
@@ -93,6 +94,7 @@ def test_every_key_and_value_is_known(data):
         if "maps" in e:
             assert isinstance(e["maps"], list) and set(e["maps"]) <= features, e
         assert e.get("lexicon", "de") == "de", e
+        assert e.get("same_as", texts[0]) in texts, e
         assert (e["category"] == "german") == (e.get("lexicon") == "de"), e
 
 
@@ -110,7 +112,18 @@ def test_bands_are_contiguous_and_cover_0_to_1(data, name):
 
 def test_the_header_defines_the_vocabulary():
     header = "".join(line for line in SET.read_text("utf-8").splitlines(keepends=True) if line.startswith("#"))
-    for word in [*ev.EXPECTATION_KEYS, *ev.HUE_FAMILIES, "mirror", "glossy", "satin", "rough", "dark", "mid", "light"]:
+    for word in [
+        *ev.EXPECTATION_KEYS,
+        "same_as",
+        *ev.HUE_FAMILIES,
+        "mirror",
+        "glossy",
+        "satin",
+        "rough",
+        "dark",
+        "mid",
+        "light",
+    ]:
         assert re.search(rf"\b{word}\b", header), word
     for feature in ev.MAP_FEATURES:
         assert feature in header, feature
@@ -268,6 +281,13 @@ def test_directions():
     assert ev.direction(ev.quantity(rough, "roughness"), ev.quantity(smooth, "roughness")) == "down"
     dark, light = material(color=(0.1, 0.1, 0.1)), material(color=(0.6, 0.6, 0.6))
     assert ev.direction(ev.quantity(dark, "lightness"), ev.quantity(light, "lightness")) == "up"
+
+
+def test_differences_name_what_differs():
+    a, b = material(roughness=0.3), material(roughness=0.36)
+    assert ev.differences(a, a) == []
+    assert ev.differences(a, b) == ["params.alpha [0.09, 0.09] vs [0.1296, 0.1296]", "params.roughness 0.3 vs 0.36"]
+    assert ev.differences(material(), material(base="conductor"))[0].startswith("model.base")
 
 
 def test_failures_group_by_kind():
