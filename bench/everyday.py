@@ -401,6 +401,7 @@ class Outcome:
     errors: list[tuple[str, str]] = field(default_factory=list)  # (code, message)
     warnings: list[tuple[str, str]] = field(default_factory=list)
     misses: list[tuple[str, str, str]] = field(default_factory=list)
+    hints: list[str] = field(default_factory=list)  # the first error's hints ("did you mean ...")
 
     @property
     def plausible(self) -> bool:
@@ -424,7 +425,8 @@ def run_phrase(entry: Mapping[str, Any], bands: Mapping[str, Any]) -> Outcome:
     errors = [(d.code, d.message) for d in result.diagnostics if d.is_error]
     warnings = [(d.code, d.message) for d in result.diagnostics if d.severity.value == "warning"]
     if errors or not result.materials:
-        return Outcome(text, category, False, errors or [("E003", "the phrase names no material")], warnings)
+        hints = next((list(d.hints) for d in result.diagnostics if d.is_error), [])
+        return Outcome(text, category, False, errors or [("E003", "the phrase names no material")], warnings, [], hints)
     expect = {k: entry[k] for k in EXPECTATION_KEYS if k in entry}
     misses = check_material(result.materials[0], expect, bands, [c for c, _ in warnings])
     if "same_as" in entry:
@@ -551,7 +553,8 @@ def reasons(outcomes: Sequence[Outcome]) -> dict[str, list[str]]:
     for o in outcomes:
         if not o.accepted:
             code, msg = o.errors[0]
-            groups[f"rejected {code}: {message_template(msg)}"].append(f"{o.text!r}: {msg}")
+            hint = f"  [{'; '.join(o.hints)}]" if o.hints else "  [no hint]"
+            groups[f"rejected {code}: {message_template(msg)}"].append(f"{o.text!r}: {msg}{hint}")
         for key, want, got in o.misses:
             groups[f"expectation {key} = {want}"].append(f"{o.text!r}: got {got}")
     return dict(sorted(groups.items(), key=lambda kv: (-len(kv[1]), kv[0])))
@@ -578,6 +581,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     print(f"({len(outcomes)} items in {seconds:.1f} s)")
     warned = Counter(code for o in outcomes for code, _ in o.warnings)
     print("warnings on accepted phrases:", ", ".join(f"{c}×{n}" for c, n in warned.most_common()) or "none")
+    rejected = [o for o in outcomes if not o.accepted and o.category != "refinement"]
+    hinted = sum(any("did you mean" in h for h in o.hints) for o in rejected)
+    print(
+        f"rejected phrases: {len(rejected)}, with a 'did you mean': {hinted}, with no hint at all: {sum(not o.hints for o in rejected)}"
+    )
     if not args.summary:
         print("\nFailures by reason (count: reason, then the phrases):")
         for reason, items in reasons(outcomes).items():
