@@ -66,7 +66,8 @@ def remove_stale(folder: Path, old: set[str], new: set[str]) -> list[Path]:
 
 
 def prune(folder: Path) -> None:
-    """Remove `folder` and then its parent where they are empty (after the lock is released)."""
-    for empty in (folder, folder.parent):
+    """Remove `folder` when empty (after the lock is released), then its parent when that is an
+    empty `textures` folder."""
+    for empty in (folder, folder.parent) if folder.parent.name == OWNED_ROOT else (folder,):
         with contextlib.suppress(OSError):
             empty.rmdir()

@@ -10,18 +10,27 @@ import numpy as np
 
 from cnlmc.output import write_atomic
 
+from ..image_size import ImageTooLarge, check_image_size
 from .compositor import composite
 from .errors import AROptionError, PhotoUnreadable
 from .options import IR, parse_options, pick_material
 
 
 def read_photo(path) -> np.ndarray:
+    """The photo as BGR uint8; its size is checked from the header before decoding
+    (cnlmc.backends.image_size: PhotoUnreadable naming the file and its size)."""
     import cv2
 
     path = Path(path)
     if not path.exists():
         raise PhotoUnreadable(f"photo {path} does not exist")
-    image = cv2.imread(str(path), cv2.IMREAD_COLOR)
+    try:
+        check_image_size(path, "photo")
+        image = cv2.imread(str(path), cv2.IMREAD_COLOR)
+    except ImageTooLarge as exc:
+        raise PhotoUnreadable(str(exc)) from None
+    except cv2.error as exc:  # a decoder's own refusal, e.g. its pixel limit for a format without a header check
+        raise PhotoUnreadable(f"cannot read {path} as an image: {str(exc).strip().splitlines()[-1]}") from None
     if image is None:
         raise PhotoUnreadable(f"cannot read {path} as an image")
     return image

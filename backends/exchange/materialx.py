@@ -96,6 +96,7 @@ TEXTURE_INPUTS = {
     "normal": ("normal", "vector3"),
 }
 COLOUR_SPACES = {"srgb": "srgb_texture", "linear": "lin_rec709"}
+MAIN_FILE = "materials.mtlx"  # the document's name when -o names a folder
 
 
 def load_standard_library() -> Any:
@@ -293,7 +294,7 @@ class MaterialxBuild:
         """The material's shader and material nodes; returns its baked images."""
         ident, natives = self.idents[material], self.natives(material)
         roles = tuple(r for r in TEXTURE_INPUTS if r not in natives)
-        textures, images = bake_textures(material, ident, self.options, roles=roles)
+        textures, images = bake_textures(material, ident, self.options, roles=roles, main=MAIN_FILE)
         add_material(self.doc, material, ident, self.options.surface, textures, natives)
         return images
 
@@ -313,7 +314,7 @@ class MaterialxTarget(Target):
         build = MaterialxBuild(document, options)
         images = emit_each(self, document, build.add, build.capabilities_of)
         validate(build.doc, self.library)
-        return EmitResult([Artifact("materials.mtlx", to_xml(build.doc)), *images.artifacts], images.notes)
+        return EmitResult([Artifact(MAIN_FILE, to_xml(build.doc)), *images.artifacts], images.notes)
 
 
 TARGET = MaterialxTarget()

@@ -311,9 +311,9 @@ def template_environment() -> jinja2.Environment:
 
 
 def layout(count: int) -> tuple[list[list[float]], dict[str, Any]]:
-    """Sphere centres on a grid and a camera that frames them."""
-    cols = math.ceil(math.sqrt(count))
-    rows = math.ceil(count / cols)
+    """Sphere centres on a grid and a camera that frames them (an empty scene: no sphere, the camera of one)."""
+    cols = max(1, math.ceil(math.sqrt(count)))
+    rows = max(1, math.ceil(count / cols))
     spacing = 2.5
     centres = [
         [(i % cols - (cols - 1) / 2) * spacing, ((rows - 1) / 2 - i // cols) * spacing, 0.0] for i in range(count)
@@ -351,6 +351,11 @@ def render_xml(entries: list[dict[str, Any]], options: Options, env: jinja2.Envi
 # ------------------------------------------------------------------------------------ emit
 
 
+def main_file(options: Options) -> str:
+    """The XML file's name when -o names a folder (its textures go to textures/<that name>/)."""
+    return "materials.xml" if options.form == "fragment" else "scene.xml"
+
+
 class MitsubaScene:
     """One scene (or fragment) being built: the shared emit loop adds the materials' BSDFs."""
 
@@ -369,7 +374,8 @@ class MitsubaScene:
         ident, cnlm = self.idents[material], uses_cnlm(material, self.options)
         alpha_maps = None if cnlm else AlphaMaps(material)
         roles = CNLM_MAPS if cnlm else USED_MAPS
-        textures, images = bake_textures(material, ident, self.options, roles=roles, derive=alpha_maps)
+        main = main_file(self.options)
+        textures, images = bake_textures(material, ident, self.options, roles=roles, derive=alpha_maps, main=main)
         tex: BsdfTextures = dict(textures)
         if alpha_maps and alpha_maps.mean_alpha is not None and plugin_for(material) == "roughplastic":
             tex["mean_alpha"] = alpha_maps.mean_alpha
@@ -396,9 +402,8 @@ class MitsubaTarget(Target):
     def emit(self, document: Document, options: Options) -> EmitResult:
         scene = MitsubaScene(document, options)
         baked = emit_each(self, document, scene.add, scene.capabilities_of)
-        name = "materials.xml" if options.form == "fragment" else "scene.xml"
         xml = render_xml(scene.entries, options, self.templates, self.version)
-        return EmitResult([Artifact(name, xml), *baked.artifacts], baked.notes)
+        return EmitResult([Artifact(main_file(options), xml), *baked.artifacts], baked.notes)
 
 
 TARGET = MitsubaTarget()

@@ -1,20 +1,24 @@
 """Baked maps as image files an exchange document references: role, relative path, encoding.
 
-The images come from the one map-baking service (cnlmc.backends.maps.service)."""
+The images come from the one map-baking service (cnlmc.backends.maps.service). They go into the
+folder that belongs to the document's main file, `textures/<main file name>/<material>_<role>.ext`
+(cnlmc.output.texture_folder: `-o out/wood.mtlx` -> `out/textures/wood.mtlx/`), so two documents
+compiled into one folder never share a texture, and the writer's manifest there lets the next
+compile of the same document remove the textures it no longer has. A name too long for a file is
+shortened with a hash (cnlmc.filenames.fit_name)."""
 
 from __future__ import annotations
 
 from collections.abc import Collection
 from dataclasses import dataclass
-from pathlib import PurePosixPath
 
 from cnlmc.material import Material
+from cnlmc.output import texture_folder
 
 from ..base import Artifact, Options
-from ..maps.service import Derive, bake_artifacts
+from ..maps.service import Derive, bake_images
 
 COLOUR_ROLES = ("base_color",)
-FOLDER = "textures"
 
 
 @dataclass(frozen=True)
@@ -45,19 +49,20 @@ def bake_textures(
     options: Options,
     roles: Collection[str] | None = None,
     derive: Derive | None = None,
+    *,
+    main: str,
 ) -> tuple[Textures, list[Artifact]]:
-    """Bake the material's maps (the roles given, default all) into image Artifacts under textures/.
+    """Bake the material's maps (the roles given, default all) into image Artifacts in the folder of
+    the document's main file (`main`: its name when -o names a folder, e.g. "materials.mtlx").
 
     `derive(arrays) -> arrays` may add roles computed from the baked ones (e.g. Mitsuba's
     alpha = roughness^2). Returns role -> Texture and the artifacts (bytes) to write.
     """
     if options.maps == "none" or not any(roles is None or role in roles for role in material.maps):
         return {}, []
-    artifacts = bake_artifacts(
-        material, options.map_size, options.map_format, options.seed, ident, FOLDER, roles, derive
-    )
-    textures = {}
-    for artifact in artifacts:
-        role = PurePosixPath(artifact.name).stem[len(ident) + 1 :]
-        textures[role] = Texture(role, artifact.name, texture_encoding(role, options.map_format))
-    return textures, artifacts
+    folder = texture_folder(options.output, main)
+    images = bake_images(material, options.map_size, options.map_format, options.seed, ident, folder, roles, derive)
+    textures = {
+        role: Texture(role, image.name, texture_encoding(role, options.map_format)) for role, image in images.items()
+    }
+    return textures, list(images.values())

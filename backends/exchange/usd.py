@@ -36,6 +36,7 @@ OPTIONS = (
     Option("root", str, "Root", doc="the name of the stage's default prim"),
 )
 VARIANT_SET = "material"
+STEM = "materials"  # the stage's file name (before its suffix) when -o names a folder
 
 KEPT = "(the MaterialX network beside it keeps it)"
 BAKED = ("bake", "procedural graph baked to an image read by UsdUVTexture (st from UsdPrimvarReader_float2)")
@@ -367,7 +368,7 @@ def build_stage(materials: Sequence[Material], options: Options, textures: Seque
     return stage
 
 
-def export(stage: Any, fmt: str, images: list[Artifact], stem: str = "materials") -> list[Artifact]:
+def export(stage: Any, fmt: str, images: list[Artifact], stem: str = STEM) -> list[Artifact]:
     if fmt == "usda":
         return [Artifact(f"{stem}.usda", stage.GetRootLayer().ExportToString())] + images
     with tempfile.TemporaryDirectory(prefix="cnlmc-usd-") as tmp:
@@ -398,7 +399,8 @@ class UsdTarget(Target):
 
         def bake(material: Material) -> list[Artifact]:
             ident = idents[material]
-            textures[ident], images = bake_textures(material, ident, options, roles=tuple(PREVIEW_TEXTURES))
+            main = f"{STEM}.{output_format(options)}"
+            textures[ident], images = bake_textures(material, ident, options, roles=tuple(PREVIEW_TEXTURES), main=main)
             return images
 
         baked = emit_each(self, document, bake, lambda material: table)

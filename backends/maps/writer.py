@@ -57,8 +57,9 @@ def write_image(path: Path, pixels: np.ndarray, pixel_type: str, colour_space: s
 
 
 def map_file_name(stem: str, role: str, extension: str) -> str:
-    """`{stem}_{role}{extension}`, shortened with a hash when longer than a file name may be."""
-    return fit_name(f"{stem}_{role}", suffix=extension)
+    """`{stem}_{role}{extension}`; a stem too long for a file name is shortened with a hash
+    (the role and the extension stay readable)."""
+    return fit_name(stem, suffix=f"_{role}{extension}")
 
 
 def write_maps(

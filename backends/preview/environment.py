@@ -18,6 +18,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..image_size import check_image_size
+
 ENV_WIDTH, ENV_HEIGHT = 512, 256
 
 
@@ -138,8 +140,11 @@ ENVIRONMENTS = {"studio": studio, "sky": sky, "sun": sun}
 
 
 def read_image(path) -> np.ndarray:
+    """An environment file as (H, W, 3) float32; its size is checked from the header first
+    (cnlmc.backends.image_size: ImageTooLarge, a ValueError naming the file and its size)."""
     import OpenImageIO as oiio
 
+    check_image_size(path, "environment map")
     inp = oiio.ImageInput.open(str(path))
     if inp is None:
         raise EnvironmentError(f"cannot read environment map {path}: {oiio.geterror()}")

@@ -41,7 +41,9 @@ def test_native_maps(phrase, surface, mx_library, glsl):  # noqa: F811
     assert categories <= present
     images = {n.getName() for n in doc.getNodes("image")}
     assert images == {f"{material['name']}_{role}_image" for role in baked_roles}
-    assert {a.name for a in result.artifacts[1:]} == {f"textures/{material['name']}_{role}.png" for role in baked_roles}
+    assert {a.name for a in result.artifacts[1:]} == {
+        f"textures/materials.mtlx/{material['name']}_{role}.png" for role in baked_roles
+    }
     policies = {n.feature: (n.policy, n.message) for n in result.notes if n.feature.startswith("maps.")}
     assert set(policies) == {f"maps.{role}" for role in native_roles | baked_roles}
     for role in native_roles:

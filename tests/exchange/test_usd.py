@@ -181,3 +181,66 @@ def test_preview_is_gf():  # the diffuse preview has no specular lobe
     inputs = backend.preview_inputs(Material.from_ir(ir_of("deep red velvet")["materials"][0]))
     assert inputs["useSpecularWorkflow"][1] == 1 and inputs["specularColor"][1] == [0.0, 0.0, 0.0]
     assert Gf.Vec3f(*inputs["diffuseColor"][1])
+
+
+# ---------------------------------------------------------------- authoring again (#13)
+
+
+def preview_of(stage, path):
+    return UsdShade.Shader(stage.GetPrimAtPath(f"{path}/PreviewSurface"))
+
+
+def test_authoring_again_replaces_the_old_network(tmp_path):
+    stage = Usd.Stage.CreateNew(str(tmp_path / "shot.usda"))
+    author_material(stage, "/Looks/Hull", "steel with a clear coat")
+    assert preview_of(stage, "/Looks/Hull").GetInput("clearcoat").Get() == 1.0
+    author_material(stage, "/Looks/Hull", "red glass")
+    stage.Save()
+    reopened = Usd.Stage.Open(str(tmp_path / "shot.usda"))
+    preview = preview_of(reopened, "/Looks/Hull")
+    assert not preview.GetInput("clearcoat"), "the coat of the old phrase was kept"
+    assert preview.GetInput("opacity").Get() == 0.0
+    names = {child.GetName() for child in reopened.GetPrimAtPath("/Looks/Hull").GetChildren()}
+    assert not any("steel" in name for name in names), names
+
+
+def test_authoring_again_drops_the_old_variants(tmp_path):
+    stage = Usd.Stage.CreateInMemory()
+    author_material(stage, "/Looks/Coin", "copper or gold")
+    assert stage.GetPrimAtPath("/Looks/Coin").GetVariantSets().HasVariantSet(backend.VARIANT_SET)
+    author_material(stage, "/Looks/Coin", "red plastic")
+    prim = stage.GetPrimAtPath("/Looks/Coin")
+    assert not prim.GetVariantSets().HasVariantSet(backend.VARIANT_SET), "the copper variant still renders"
+    assert close(preview_of(stage, "/Looks/Coin").GetInput("diffuseColor").Get(), (1.0, 0.0, 0.0))
+
+
+def test_texture_dir_is_relative_to_the_stage_and_asset_paths_are_relative(tmp_path, monkeypatch):
+    shot = tmp_path / "shot"
+    shot.mkdir()
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    monkeypatch.chdir(elsewhere)
+    stage = Usd.Stage.CreateNew(str(shot / "shot.usda"))
+    author_material(stage, "/Looks/Table", "white varnished oak", texture_dir="tex", map_size=16)
+    stage.Save()
+    assert list(elsewhere.iterdir()) == [], "textures were written relative to the current folder"
+    reopened = Usd.Stage.Open(str(shot / "shot.usda"))
+    texture = UsdShade.Shader(reopened.GetPrimAtPath("/Looks/Table/Texture_base_color"))
+    asset = texture.GetInput("file").Get()
+    assert asset.path.startswith("./tex/") and not asset.path.startswith("./tex//")
+    assert (shot / asset.path).is_file()
+    assert (shot / "tex" / "shot.usda_Looks_Table" / "white_varnished_oak_base_color.png").is_file()
+
+
+def test_authoring_again_removes_its_old_textures_only(tmp_path):
+    stage = Usd.Stage.CreateNew(str(tmp_path / "shot.usda"))
+    author_material(stage, "/Looks/Table", "white varnished oak", texture_dir="tex", map_size=16)
+    author_material(stage, "/Looks/Chair", "walnut", texture_dir="tex", map_size=16)
+    table = tmp_path / "tex" / "shot.usda_Looks_Table"
+    chair = sorted(p.name for p in (tmp_path / "tex" / "shot.usda_Looks_Chair").iterdir())
+    author_material(stage, "/Looks/Table", "heavily rusted iron", texture_dir="tex", map_size=16)
+    names = sorted(p.name for p in table.iterdir() if not p.name.startswith("."))
+    assert names and all(name.startswith("rusted_iron") for name in names)
+    assert sorted(p.name for p in (tmp_path / "tex" / "shot.usda_Looks_Chair").iterdir()) == chair
+    author_material(stage, "/Looks/Table", "red plastic", texture_dir="tex", map_size=16)
+    assert not table.exists()

@@ -256,3 +256,46 @@ def test_bake_is_all_or_nothing_across_materials(tmp_path: Path) -> None:
     (out / "hammered_copper_normal.png").rmdir()
     assert run_cnlmc("bake", str(src), "-o", str(out), "--size", "16").returncode == 0
     assert len(list(out.iterdir())) == 4 and not [p for p in out.iterdir() if p.name.startswith(".")]
+
+
+# ---------------------------------------------------------------- never outside the output folder
+
+
+class Named:
+    def __init__(self, name: str, content: str) -> None:
+        self.name, self.content = name, content
+
+
+@pytest.mark.parametrize("name", ["../escaped.json", "sub/../../escaped.json", "/tmp/escaped-by-cnlmc.json"])
+def test_an_artifact_name_outside_the_output_folder_is_refused(tmp_path: Path, name: str) -> None:
+    out = tmp_path / "a" / "out"
+    out.mkdir(parents=True)
+    artifacts = [Named("main.json", "{}"), Named(name, "{}")]
+    with pytest.raises(UsageError, match="leads outside the output folder"):
+        output.write_artifacts(artifacts, f"{out}/")
+    assert list(out.iterdir()) == [] and not (tmp_path / "a" / "escaped.json").exists()
+    assert not Path("/tmp/escaped-by-cnlmc.json").exists()
+
+
+def test_a_staged_path_outside_the_root_is_refused(tmp_path: Path) -> None:
+    root = tmp_path / "maps"
+    with pytest.raises(UsageError, match="outside the output folder"), output.Staging(root=root) as staging:
+        staging.add(root / "x_a" / ".." / ".." / "ESCAPED.png", lambda temp: temp.write_bytes(b"x"))
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_hostile_lexicon_role_never_writes_outside(tmp_path: Path) -> None:
+    lexicon = tmp_path / "words"
+    lexicon.mkdir()
+    (lexicon / "nouns.toml").write_text(
+        '[evilwood]\naliases = []\nclass = "wood"\nmodel = "dielectric"\nroughness = 0.5\n'
+        "base_color = [0.3, 0.2, 0.1]\nior = 1.5\n"
+        'maps = { "a/../../../ESCAPED" = { graph = "wood", output = "color" } }\n'
+        'source = "test"\ndoc = "a hostile entry"\nexample = "evilwood"\n'
+    )
+    src = tmp_path / "evil.cnl"
+    src.write_text("evilwood\n")
+    out = tmp_path / "x" / "y" / "maps"
+    proc = run_cnlmc("bake", str(src), "-L", str(lexicon), "-o", str(out), "--size", "16")
+    refused(proc, "a/../../../ESCAPED")
+    assert not list(tmp_path.rglob("*ESCAPED*"))

@@ -96,3 +96,36 @@ def decode(role, pixels, fmt):
 def test_unknown_format(tmp_path):
     with pytest.raises(MapError, match="png8"):
         write_maps({"mask": np.zeros((8, 8), np.float32)}, tmp_path, fmt="jpeg")
+
+
+HOSTILE = "a/../../../ESCAPED"
+
+
+def test_a_role_that_climbs_out_of_the_folder_is_refused(tmp_path):
+    from cnlmc.errors import UsageError
+
+    out = tmp_path / "one" / "two" / "maps"
+    out.mkdir(parents=True)
+    with pytest.raises(UsageError, match="outside the output folder"):
+        write_maps({HOSTILE: np.zeros((8, 8), np.float32)}, out, stem="oak")
+    assert sorted(str(p.relative_to(tmp_path)) for p in tmp_path.rglob("*")) == ["one", "one/two", "one/two/maps"]
+
+
+def test_the_baking_service_refuses_a_hostile_role_in_an_ir(tmp_path):
+    from cnlmc.backends.maps import bake_files
+    from cnlmc.errors import UsageError
+    from cnlmc.output import Staging
+
+    material = {"name": "evil", "maps": {HOSTILE: REFS["mask"]}, "params": {}}
+    out = tmp_path / "deep" / "maps"
+    out.mkdir(parents=True)
+    with pytest.raises(UsageError, match="outside the output folder"), Staging(root=out) as staging:
+        bake_files(material, out, 16, "png8", 0, staging=staging)
+    assert not list(tmp_path.rglob("*ESCAPED*")) and list(out.iterdir()) == []
+
+
+def test_a_long_stem_keeps_the_role_and_fits(tmp_path):
+    paths = write_maps({"mask": np.zeros((8, 8), np.float32)}, tmp_path, stem="s" * 300)
+    (name,) = [p.name for p in paths]
+    assert len(name.encode()) <= 255 and name.startswith("s" * 100) and name.endswith("_mask.png")
+    assert paths[0].is_file()
