@@ -102,14 +102,20 @@ class FolderLock:
             if time.monotonic() >= deadline:
                 raise self._busy()
             time.sleep(POLL_S)
-        os.ftruncate(self.fd, 0)
-        os.write(self.fd, f"{os.getpid()}\n".encode())
+        with contextlib.suppress(OSError):  # a read-only lock file keeps no pid
+            os.ftruncate(self.fd, 0)
+            os.write(self.fd, f"{os.getpid()}\n".encode())
         remove_stale_temps(self.folder)
 
     def _open(self) -> int:
-        flags = os.O_RDWR | os.O_CREAT | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_CLOEXEC", 0)
+        """The lock file, for writing (to record the pid) or, when another user's killed writer
+        left it behind and it is not ours to write, for reading: flock needs no write access."""
+        flags = os.O_CREAT | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_CLOEXEC", 0)
         try:
-            return os.open(self.path, flags, 0o644)
+            try:
+                return os.open(self.path, flags | os.O_RDWR, 0o644)
+            except PermissionError:
+                return os.open(self.path, flags | os.O_RDONLY, 0o644)
         except OSError as exc:
             reason = exc.strerror or errno.errorcode.get(exc.errno or 0, str(exc))
             raise UsageError(f"cannot write into '{self.folder}': {reason}") from None
