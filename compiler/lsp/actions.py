@@ -22,7 +22,7 @@ COLOUR_CUTOFF = 70
 
 def quick_fixes(snapshot: Snapshot, uri: str, where: types.Range, lexicon: Lexicon) -> list[types.CodeAction]:
     fixes = []
-    for diag in snapshot.diagnostics:
+    for diag in snapshot.diagnostics_between(where.start.line, where.end.line):
         line = span_of(diag).line - 1
         if not where.start.line <= line <= where.end.line:
             continue

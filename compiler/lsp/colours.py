@@ -3,7 +3,7 @@ picker's answer is the nearest phrase ("dark slate blue") from the lexicon's col
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 
 from lsprotocol import types
 
@@ -23,9 +23,14 @@ def swatch(rgb: Sequence[float]) -> types.Color:
 
 
 def document_colours(snapshot: Snapshot, lexicon: Lexicon) -> list[types.ColorInformation]:
+    return [swatch for batch in colour_batches(snapshot, lexicon) for swatch in batch]
+
+
+def colour_batches(snapshot: Snapshot, lexicon: Lexicon) -> Iterator[list[types.ColorInformation]]:
+    """The swatches of each line, one list per line (the server runs them in time slices)."""
     ctx = Context(lexicon)
-    out = []
     for line in range(len(snapshot.index.lines)):
+        out = []
         for phrase, start, end in snapshot.colours_on(line):
             if phrase.base is not None and not phrase.base.unknown:
                 out.append(
@@ -33,8 +38,7 @@ def document_colours(snapshot: Snapshot, lexicon: Lexicon) -> list[types.ColorIn
                         snapshot.index.range_of(line, start, end), swatch(resolve_colour(phrase, ctx))
                     )
                 )
-        out += material_swatches(snapshot, line)
-    return out
+        yield out + material_swatches(snapshot, line)
 
 
 def material_swatches(snapshot: Snapshot, line: int) -> list[types.ColorInformation]:

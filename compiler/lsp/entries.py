@@ -8,6 +8,7 @@ from typing import Any
 from ..colour import linear_to_hex
 from ..formulas import describe
 from ..lexicon import Entry
+from .markdown import code_span, prose, strong
 
 CATEGORY_NAMES = {
     "nouns": "material noun",
@@ -108,13 +109,15 @@ def _rgb(values: Sequence[float]) -> str:
 
 
 def entry_markdown(entry: Entry, surface: str | None = None) -> str:
-    title = f"**{surface or entry.key}** — {CATEGORY_NAMES[entry.category]}"
+    """The entry's doc and effects in Markdown; the surface word (document text) and the lexicon's
+    text are escaped (lsp/markdown.py), so neither can add links, images or HTML."""
+    title = f"{strong(surface or entry.key)} — {CATEGORY_NAMES[entry.category]}"
     if surface and surface.lower() != entry.key:
-        title += f" (`{entry.key}`)"
-    parts = [title, entry.get("doc", "")]
+        title += f" ({code_span(entry.key)})"
+    parts = [title, prose(str(entry.get("doc", "")))]
     effects = effect_lines(entry)
     if effects:
-        parts.append("\n".join(f"- {line}" for line in effects))
+        parts.append("\n".join(f"- {prose(line)}" for line in effects))
     if entry.get("example"):
-        parts.append(f"e.g. *{entry.get('example')}*")
+        parts.append(f"e.g. *{prose(str(entry.get('example')))}*")
     return "\n\n".join(p for p in parts if p)

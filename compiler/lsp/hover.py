@@ -13,6 +13,7 @@ from ..lexicon import Lexicon
 from .entries import entry_markdown
 from .incremental import Snapshot
 from .lines import LineWord, line_words, word_at
+from .markdown import code_block, code_span, prose, strong
 
 
 def hover(snapshot: Snapshot, position: types.Position, lexicon: Lexicon) -> types.Hover | None:
@@ -46,22 +47,21 @@ def line_materials(snapshot: Snapshot, line: int) -> list[dict[str, Any]]:
 def word_section(word: LineWord, lexicon: Lexicon) -> str:
     if word.category == "unknown":
         suggestions = lexicon.suggest(word.text) if word.text[:1].isalpha() else []
-        hint = f" — did you mean {', '.join(repr(s) for s in suggestions)}?" if suggestions else ""
-        return f"**{word.text}** — not in the lexicon{hint}"
+        hint = f" — did you mean {', '.join(code_span(s) for s in suggestions)}?" if suggestions else ""
+        return f"{strong(word.text)} — not in the lexicon{hint}"
     entry = lexicon.entry(word.category, word.key)
     if entry is not None:
         return entry_markdown(entry, word.text)
     if word.category == "name":
-        return f"**{word.text}** — material name"
+        return f"{strong(word.text)} — material name"
     return ""
 
 
 def material_section(material: dict[str, Any]) -> str:
     params = material["params"]
-    summary = [f"**{material['name']}**"]
+    summary = [strong(str(material["name"]))]
     if "base_color" in params:
-        summary.append(f"colour `{linear_to_hex(params['base_color'])}`")
+        summary.append(f"colour {code_span(linear_to_hex(params['base_color']))}")
     if "roughness" in params:
-        summary.append(f"roughness {params['roughness']:.3g}")
-    table = "\n".join(explain_material(material))
-    return " · ".join(summary) + f"\n\n```text\n{table}\n```"
+        summary.append(prose(f"roughness {params['roughness']:.3g}"))
+    return " · ".join(summary) + "\n\n" + code_block(explain_material(material))

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 from lsprotocol import types
 
 from ..lexicon import Lexicon
@@ -52,18 +54,33 @@ def line_tokens(snapshot: Snapshot, line: int, lexicon: Lexicon) -> list[tuple[i
     return sorted(found)
 
 
+Token = tuple[int, int, int, int]  # line, start and length in code units, token type index
+
+
 def semantic_tokens(snapshot: Snapshot, lexicon: Lexicon) -> types.SemanticTokens:
-    data: list[int] = []
+    return encode([token for batch in token_batches(snapshot, lexicon) for token in batch])
+
+
+def token_batches(snapshot: Snapshot, lexicon: Lexicon) -> Iterator[list[Token]]:
+    """The tokens of each line, one list per line (the server runs them in time slices)."""
     encoding = snapshot.index.encoding
-    previous_line, previous_start = 0, 0
     for line, text in enumerate(snapshot.index.lines):
         if not text.strip():
+            yield []
             continue
-        for start, end, kind in line_tokens(snapshot, line, lexicon):
-            unit_start = code_units(text[:start], encoding)
-            length = code_units(text[start:end], encoding)
-            delta_line = line - previous_line
-            delta_start = unit_start - previous_start if delta_line == 0 else unit_start
-            data += [delta_line, delta_start, length, INDEX[kind], 0]
-            previous_line, previous_start = line, unit_start
+        yield [
+            (line, code_units(text[:start], encoding), code_units(text[start:end], encoding), INDEX[kind])
+            for start, end, kind in line_tokens(snapshot, line, lexicon)
+        ]
+
+
+def encode(tokens: list[Token]) -> types.SemanticTokens:
+    """The LSP's relative encoding: each token's line and start as deltas from the one before."""
+    data: list[int] = []
+    previous_line, previous_start = 0, 0
+    for line, start, length, kind in tokens:
+        delta_line = line - previous_line
+        delta_start = start - previous_start if delta_line == 0 else start
+        data += [delta_line, delta_start, length, kind, 0]
+        previous_line, previous_start = line, start
     return types.SemanticTokens(data=data)
