@@ -203,7 +203,7 @@ def deliver(artifacts: list[Artifact], output: str | None, protect: Sequence[str
 def emit_stage(stage: str, source: str, name: str, lexicon: Lexicon) -> int:
     """--emit tokens | ast: the stage printed on stdout."""
     if stage == "tokens":
-        tagger = Tagger(lexicon)
+        tagger = Tagger.of(lexicon)
         for number, offset, text in iter_lines(source):
             tagged, _diags = tagger.tag_line(text, number, offset)
             for t in tagged:

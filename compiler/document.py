@@ -23,9 +23,7 @@ MAX_LINE_WORDS = 64
 def parse_document(source: str, lexicon: Lexicon, filename: str = "<input>") -> ast.Document:
     """Parse every line; problems become diagnostics and the next line is parsed anyway."""
     doc = ast.Document(filename, source)
-    tagger = lexicon.caches.tagger
-    if tagger is None:
-        tagger = lexicon.caches.tagger = Tagger(lexicon)
+    tagger = Tagger.of(lexicon)
     for number, offset, text in iter_lines(source):
         node = parse_line(text, number, offset, tagger, doc.diagnostics)
         if node is not None:

@@ -9,13 +9,24 @@ candidate tags ("gold": colour or noun); the parser picks the one the grammar ac
 from __future__ import annotations
 
 import re
+from collections import OrderedDict
 
 from .diagnostics import Diagnostic, did_you_mean, error
 from .lexicon import Lexicon
 from .spans import Span, line_span
 from .tagged import Candidate, Tagged
 
-__all__ = ["OPEN_TAGS", "TAG_PREFERENCE", "TOKEN_RE", "Candidate", "Tagged", "Tagger", "raw_tokens"]
+__all__ = [
+    "MEMO_SIZE",
+    "OPEN_TAGS",
+    "TAG_PREFERENCE",
+    "TOKEN_RE",
+    "Candidate",
+    "Tagged",
+    "Tagger",
+    "WordMemo",
+    "raw_tokens",
+]
 
 TOKEN_RE = re.compile(r"[^\W\d_](?:[\w'’\-]*\w)?|\d+(?:\.\d+)?%?|[,;:&]|\S", re.UNICODE)
 OPEN_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "REFINE")
@@ -35,19 +46,64 @@ def raw_tokens(line: str) -> list[tuple[str, int]]:
 
 
 RawToken = tuple[str, int]  # a word's text and 0-based column
+WordKey = tuple[str, ...]  # the lower-case words of a (multi-word) form
+
+#: How many word forms a Tagger remembers (known, inflected and unknown ones alike). An entry is
+#: a few hundred bytes, so a memo this full holds a few MB; the least recently used goes first.
+MEMO_SIZE = 20_000
+
+
+class WordMemo:
+    """Word form -> its candidates, least recently used first out beyond `limit` entries."""
+
+    __slots__ = ("_entries", "limit")
+
+    def __init__(self, limit: int = MEMO_SIZE) -> None:
+        self._entries: OrderedDict[WordKey, tuple[Candidate, ...]] = OrderedDict()
+        self.limit = limit
+
+    def get(self, key: WordKey) -> tuple[Candidate, ...] | None:
+        entries = self._entries
+        found = entries.get(key)
+        if found is not None:
+            entries.move_to_end(key)
+        return found
+
+    def put(self, key: WordKey, candidates: tuple[Candidate, ...]) -> None:
+        entries = self._entries
+        entries[key] = candidates
+        entries.move_to_end(key)
+        if len(entries) > self.limit:
+            entries.popitem(last=False)
+
+    def __len__(self) -> int:
+        return len(self._entries)
+
+    def __contains__(self, key: object) -> bool:
+        return key in self._entries
 
 
 class Tagger:
-    """Tags lines against one lexicon; what it learns about words is kept in lexicon.caches.tags."""
+    """Tags lines against one lexicon; what it learns about words is kept in its own bounded memo
+    (`memo`, a WordMemo of MEMO_SIZE entries). `Tagger.of(lexicon)` is the lexicon's shared one."""
 
     __slots__ = ("lexicon", "keywords", "followers", "lengths_from", "memo")  # made for every document
 
-    def __init__(self, lexicon: Lexicon) -> None:
+    def __init__(self, lexicon: Lexicon, memo_size: int = MEMO_SIZE) -> None:
         self.lexicon = lexicon
         self.keywords = lexicon.keywords
         self.followers = lexicon.followers
         self.lengths_from = lexicon.lengths_from
-        self.memo = lexicon.caches.tags
+        self.memo = WordMemo(memo_size)
+
+    @classmethod
+    def of(cls, lexicon: Lexicon) -> Tagger:
+        """The tagger kept with `lexicon` (lexicon.caches.tagger), made on first use: its memo is
+        warm for every document compiled with that lexicon and stays within MEMO_SIZE entries."""
+        tagger = lexicon.caches.tagger
+        if tagger is None:
+            tagger = lexicon.caches.tagger = cls(lexicon)
+        return tagger
 
     def tag_line(self, line: str, line_no: int, offset: int) -> tuple[list[Tagged], list[Diagnostic]]:
         """Return (tagged words, diagnostics) for one line of source."""
@@ -113,7 +169,8 @@ class Tagger:
     def _candidates(self, words: tuple[str, ...]) -> tuple[Candidate, ...]:
         cached = self.memo.get(words)
         if cached is None:
-            cached = self.memo[words] = self._find_candidates(words)
+            cached = self._find_candidates(words)
+            self.memo.put(words, cached)
         return cached
 
     def _find_candidates(self, words: tuple[str, ...]) -> tuple[Candidate, ...]:

@@ -16,7 +16,7 @@ from cnlmc.formulas import round6, rounded
 from cnlmc.parser import ParseFailure, parse_line_shape, parse_tagged
 from cnlmc.passes.variants import NON_WORD, ascii_fold, identifier
 from cnlmc.syntax import ShapeCache
-from cnlmc.tagger import Tagger
+from cnlmc.tagger import MEMO_SIZE, Tagger
 
 
 @pytest.fixture(scope="module")
@@ -136,3 +136,25 @@ def test_identifier_shortcut_is_the_general_rule():
     texts += ["".join(rng.choice("aZ _-9ßé\t.'") for _ in range(rng.randint(0, 8))) for _ in range(20000)]
     for text in texts:
         assert identifier(text) == general(text), repr(text)
+
+
+def test_the_tagger_memo_is_bounded_least_recently_used_first(lexicon):
+    """#13: the language server kept 2.83 GB after 40 documents of unknown words (the memo grew forever)."""
+    tagger = Tagger(lexicon, memo_size=50)
+    tagger.tag_line("polished brass", 1, 0)
+    for n in range(300):
+        tagger.tag_line(f"zq{n}x brass", 1, 0)  # a new unknown word each line; 'brass' stays in use
+    assert len(tagger.memo) == 50
+    assert ("brass",) in tagger.memo  # used on every line: kept
+    assert ("polished",) not in tagger.memo  # not used since the start: evicted
+    assert ("zq0x",) not in tagger.memo and ("zq299x",) in tagger.memo
+    words, _ = tagger.tag_line("polished brass", 1, 0)
+    assert [c.tag for c in words[0].candidates] == ["ADJ"]  # evicted words are simply looked up again
+
+
+def test_documents_share_the_lexicons_tagger(lexicon):
+    parse_document("polished brass", lexicon)
+    tagger = Tagger.of(lexicon)
+    assert Tagger.of(lexicon) is tagger
+    assert ("brass",) in tagger.memo
+    assert tagger.memo.limit == MEMO_SIZE
