@@ -113,3 +113,35 @@ def test_numbers_and_symbols_are_reported_not_crashed_on(compile_text):
         "numbers are not part of the language: '50%' (describe the look in words)",
         "unexpected character '@'",
     ]
+
+
+def test_rendering_many_diagnostics_splits_the_source_once(compile_text, monkeypatch):
+    """#13: 10k errors in a 740 KB file took 28 s: the renderer re-split the whole source per diagnostic."""
+    import cnlmc.diagnostics as diagnostics
+
+    src = "".join(f"polished brasz{n % 7}\r\n" for n in range(300))
+    r = compile_text(src)
+    assert len(r.diagnostics) == 300
+    tables = []
+
+    class Counted(diagnostics.LineTable):
+        def __init__(self, source):
+            tables.append(source)
+            super().__init__(source)
+
+    monkeypatch.setattr(diagnostics, "LineTable", Counted)
+    rendered = list(diagnostics.render_all(r.diagnostics, src, "many.cnl"))
+    assert len(tables) == 1  # one line table for the whole report, not one per diagnostic
+    assert rendered[299].startswith("many.cnl:300:10: error[E001]: unknown word 'brasz5'\n 300 | polished brasz5\n")
+    assert [text == render(d, src, "many.cnl") for d, text in zip(r.diagnostics, rendered, strict=True)] == [True] * 300
+
+
+def test_ten_thousand_errors_through_the_cli():
+    """Every one of 10k errors is reported at its own line (the CLI renders them against one line table)."""
+    from tests.helpers import run_cnlmc
+
+    r = run_cnlmc("compile", "-", stdin="".join(f"polished brasz{n % 7}\n" for n in range(10_000)))
+    assert r.returncode == 1
+    heads = [line for line in r.stderr.splitlines() if ": error[E001]: " in line]
+    assert len(heads) == 10_000
+    assert heads[-1] == "<stdin>:10000:10: error[E001]: unknown word 'brasz3'"
