@@ -71,7 +71,7 @@ class CnlProtocol(LanguageServerProtocol):
         problem = envelope_problem(data)
         if problem is not None:
             log.warning("dropped a message: %s", problem)
-            msg_id = _usable_id(data)
+            msg_id = _usable_id(data) if isinstance(data, dict) else None
             if msg_id is not None and "method" in data:
                 self.reply_error(msg_id, INVALID_REQUEST, problem)
             return
@@ -219,7 +219,7 @@ def _json_type(value: Any) -> str:
     if value is None:
         return "null"
     if isinstance(value, int) and not isinstance(value, bool):
-        return "an out-of-range integer"
+        return "a number" if -(2**53) <= value <= 2**53 else "an integer too large for JSON-RPC"
     return names.get(type(value), type(value).__name__)
 
 
