@@ -14,7 +14,7 @@ The key is the names, sizes and modification times of the source files plus the 
 any change makes a new entry. The folder is $XDG_CACHE_HOME/cnlmc (or ~/.cache/cnlmc), made
 private to the user (mode 0700, files 0600). After each write the folder is trimmed to
 CNLMC_CACHE_MAX_BYTES (default 32 MiB), least recently used first; leftover temporary files
-older than an hour and cache files of older formats (*.pickle) are deleted. Set
+older than an hour and pickled caches of older versions (*.pickle, *.lark-cache) are deleted. Set
 CNLMC_NO_CACHE=1 to bypass the cache.
 """
 
@@ -38,7 +38,7 @@ T = TypeVar("T")
 FORMAT = "cnlmc-cache 2"
 SUFFIX = ".cache.json"
 TEMP_PREFIX = ".tmp-"
-LEGACY_SUFFIXES = (".pickle",)  # formats that executed code on load: removed, never read
+LEGACY_SUFFIXES = (".pickle", ".lark-cache")  # pickles (they ran code on load): removed, never read
 DEFAULT_MAX_BYTES = 32 * 1024 * 1024
 MAX_BYTES_VARIABLE = "CNLMC_CACHE_MAX_BYTES"
 STALE_TEMP_SECONDS = 3600

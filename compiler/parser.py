@@ -14,20 +14,18 @@ never cached.
 
 from __future__ import annotations
 
-import hashlib
-import os
 from collections.abc import Iterator, Sequence
 from functools import lru_cache
 from importlib import resources
-from typing import Any, Literal, TypedDict
+from typing import Any, TypedDict
 
 from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedInput, UnexpectedToken
 from lark.lexer import Lexer, LexerState
 from lark.parsers.lalr_interactive_parser import InteractiveParser
 
-from .cache import cache_dir
 from .diagnostics import FailureKey
+from .grammar_cache import cached_lark
 from .syntax import Shape, ShapeCache, ShapeKey
 from .tagged import Candidate, Tagged
 
@@ -65,29 +63,11 @@ class _Lexer(Lexer):
         yield from lexer_state
 
 
-def _grammar_cache_path(grammar: str) -> str | Literal[False]:
-    """Where lark keeps the built LALR tables for this grammar text (rebuilt when it changes)."""
-    folder = cache_dir()
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError:
-        return False
-    if os.environ.get("CNLMC_NO_CACHE") or not os.access(folder, os.W_OK):
-        return False
-    return str(folder / f"grammar-{hashlib.sha256(grammar.encode()).hexdigest()[:16]}.lark-cache")
-
-
 @lru_cache(maxsize=1)
 def lark_parser() -> Lark:
+    """The LALR parser; its tables come from the disk cache as verified plain data (cnlmc.grammar_cache)."""
     grammar = resources.files("cnlmc.grammar").joinpath("cnl.lark").read_text("utf-8")
-    return Lark(
-        grammar,
-        parser="lalr",
-        lexer=_Lexer,
-        propagate_positions=False,
-        maybe_placeholders=False,
-        cache=_grammar_cache_path(grammar),
-    )
+    return cached_lark(grammar, _Lexer, parser="lalr", propagate_positions=False, maybe_placeholders=False)
 
 
 def _token(t: Tagged, tag: str) -> Token:

@@ -1,0 +1,1 @@
+"""Bounded fuzz suites (#13): hypothesis, derandomized, with a fixed budget."""
