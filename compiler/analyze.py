@@ -72,7 +72,9 @@ def build_states(
     for selection, variant in expand(material, name, diags):
         if selection.nouns[0].unknown:
             continue
-        state = MaterialState(_variant_name(name, variant), _phrase(material), selection, variant)
+        state = MaterialState(
+            _variant_name(name, variant), _phrase(material), selection, variant, label=_label(material)
+        )
         for step in BUILD_PASSES:
             state = step(state, ctx)
         for refinement in refinements:
@@ -82,6 +84,12 @@ def build_states(
             state = step(state, ctx)
         states.append(state)
     return states
+
+
+def _label(material: ast.Material) -> str:
+    """The name as written ('名前 ünïcødé 🔥 Ω', 'Hull'), when its identifier could not keep it."""
+    written = material.name.text.strip() if material.name else ""
+    return written if written and identifier(written) != written else ""
 
 
 def _variant_name(name: str, variant: dict[str, Any] | None) -> str:

@@ -25,6 +25,7 @@ def material_ir(state: MaterialState, convention: str, rounded_optics: dict[tupl
     assert model is not None, "select_model runs before the IR is made"
     return {
         "name": state.name,
+        **({"label": state.label} if state.label else {}),
         "phrase": state.phrase,
         "variant": state.variant,
         "model": model,

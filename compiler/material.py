@@ -342,6 +342,7 @@ class Material:
     params: Params
     maps: Mapping[str, MapRef]
     provenance: Provenance
+    label: str = ""  # the name as written, when `name` could not keep it (IR key "label", optional)
 
     @classmethod
     def from_ir(cls, d: object, path: str = "", ranged: bool = True) -> Material:
@@ -360,11 +361,13 @@ class Material:
             params=params_from_ir(d.get("params"), model, f"{at}params", ranged),
             maps=_maps_from_ir(d.get("maps", {}), f"{at}maps"),
             provenance=_provenance_from_ir(d.get("provenance", {}), f"{at}provenance"),
+            label=_string(d.get("label", ""), f"{at}label"),
         )
 
     def to_ir(self) -> dict[str, JSON]:
         return {
             "name": self.name,
+            **({"label": self.label} if self.label else {}),
             "phrase": self.phrase,
             "variant": None if self.variant is None else self.variant.to_ir(),
             "model": self.model.to_ir(),

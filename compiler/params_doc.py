@@ -76,6 +76,7 @@ def _material() -> JSONDict:
         "additionalProperties": False,
         "properties": {
             "name": {"type": "string", "pattern": "^[A-Za-z_][A-Za-z0-9_]*$"},
+            "label": {"type": "string"},
             "phrase": {"type": "string"},
             "variant": {"oneOf": [{"type": "null"}, variant]},
             "model": {"$ref": "#/$defs/model"},

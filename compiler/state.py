@@ -87,6 +87,7 @@ class MaterialState:
     applied: list[tuple[str, ast.Word]] = field(default_factory=list)  # (adjective key, Word) in order
     brackets: dict[str, Any] = field(default_factory=dict)  # refinement search state per target
     model: dict[str, Any] | None = None
+    label: str = ""  # the name as written, when `name` (an identifier) could not keep it
 
     def record(
         self,

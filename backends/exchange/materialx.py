@@ -20,7 +20,7 @@ from cnlmc.material import Document, MapRef, Material
 from ..base import Artifact, Option, Options, Target, emit_each
 from ..capabilities import ALL_FEATURES, EmitResult
 from . import materialx_native as native
-from .naming import MaterialIdents, phrase_text, unique_identifiers
+from .naming import MaterialIdents, display_name, phrase_text, unique_identifiers
 from .options import Capabilities, capabilities_for, map_options
 from .surface_inputs import SURFACE_NAMES, SURFACES, Inputs, surface_inputs, tangent_rotation
 from .textures import Texture, Textures, bake_textures
@@ -216,6 +216,8 @@ def add_material(
         add_tangent_rotation(doc, ident, shader, angle, surface)
     node = doc.addMaterialNode(f"M_{ident}", shader)
     node.setDocString(phrase_text(material))
+    if display_name(material):  # the name as written, where the identifier could not keep it
+        node.setAttribute("uiname", display_name(material))
 
 
 def new_document() -> Any:
@@ -254,23 +256,29 @@ def escape_attribute(text: str) -> str:
     return "".join(table.get(c, c) for c in text)
 
 
+FREE_TEXT = ("doc", "uiname")  # attributes that hold free text (a phrase, a name as written)
+
+
 def to_xml(doc: Any) -> str:
     """Serialise with MaterialX's writer. Its writer leaves '<' raw inside attributes (not
-    well-formed XML), so free text (doc strings) is written through placeholders and escaped here."""
+    well-formed XML), so free text (doc strings, ui names) is written through placeholders and
+    escaped here."""
     options = mx.XmlWriteOptions()
     options.writeXIncludeEnable = False
-    texts = {}
-    for i, element in enumerate(e for e in doc.traverseTree() if e.hasAttribute("doc")):
-        key = f"cnlmc_doc_placeholder_{i}"
-        texts[key] = (element, element.getDocString())
-        element.setDocString(key)
+    texts: dict[str, tuple[Any, str, str]] = {}
+    for element in doc.traverseTree():
+        for attribute in FREE_TEXT:
+            if element.hasAttribute(attribute):
+                key = f"cnlmc_text_placeholder_{len(texts)}"
+                texts[key] = (element, attribute, element.getAttribute(attribute))
+                element.setAttribute(attribute, key)
     try:
         xml = mx.writeToXmlString(doc, options)
     finally:
-        for element, text in texts.values():
-            element.setDocString(text)
-    for key, (_, text) in texts.items():
-        xml = xml.replace(f'doc="{key}"', f'doc="{escape_attribute(text)}"', 1)
+        for element, attribute, text in texts.values():
+            element.setAttribute(attribute, text)
+    for key, (_, attribute, text) in texts.items():
+        xml = xml.replace(f'{attribute}="{key}"', f'{attribute}="{escape_attribute(text)}"', 1)
     return xml
 
 

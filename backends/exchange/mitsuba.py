@@ -28,7 +28,7 @@ from cnlmc.material import Document, Material
 from ..base import Artifact, Option, Options, Target, emit_each
 from ..capabilities import ALL_FEATURES, EmitResult
 from .conversions import alpha_pair, alpha_to_roughness, clip01, conductor_f0, measured, rounded
-from .naming import MaterialIdents, xml_text
+from .naming import MaterialIdents, described, xml_text
 from .options import Capabilities, capabilities_for, map_options
 from .textures import Texture, bake_textures
 
@@ -379,7 +379,8 @@ class MitsubaScene:
         tex: BsdfTextures = dict(textures)
         if alpha_maps and alpha_maps.mean_alpha is not None and plugin_for(material) == "roughplastic":
             tex["mean_alpha"] = alpha_maps.mean_alpha
-        self.entries.append({"ident": ident, "phrase": material.phrase, "bsdf": bsdf_for(material, ident, tex, cnlm)})
+        entry = {"ident": ident, "phrase": described(material), "bsdf": bsdf_for(material, ident, tex, cnlm)}
+        self.entries.append(entry)
         return images
 
 

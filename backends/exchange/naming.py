@@ -3,17 +3,34 @@
 from __future__ import annotations
 
 import re
-import unicodedata
 from collections.abc import Iterable, Sequence
 
+from cnlmc.filenames import short_hash
 from cnlmc.material import Material
+from cnlmc.passes.variants import ascii_fold
 
 
 def identifier(text: str, fallback: str = "material") -> str:
-    """Any text -> [A-Za-z_][A-Za-z0-9_]*: accents folded, everything else becomes '_'."""
-    folded = unicodedata.normalize("NFKD", str(text)).encode("ascii", "ignore").decode("ascii")
-    name = re.sub(r"[^A-Za-z0-9_]+", "_", folded).strip("_") or fallback
+    """Any text -> [A-Za-z_][A-Za-z0-9_]*: accents folded ('ünïcødé' -> 'unicode'), everything
+    else becomes '_'; a text with nothing ASCII left gets `fallback` and a short hash of it, so two
+    such names never collide. (The name as written is shown beside it: `display_name`.)"""
+    text = str(text)
+    folded = ascii_fold(text).encode("ascii", "ignore").decode("ascii")
+    name = re.sub(r"[^A-Za-z0-9_]+", "_", folded).strip("_")
+    if not name:
+        name = fallback if text.isascii() else f"{fallback}_{short_hash(text)}"
     return name if not name[0].isdigit() else f"_{name}"
+
+
+def display_name(material: Material) -> str:
+    """The material's name as written, when its identifier could not keep it ('' otherwise)."""
+    return xml_text(material.label)
+
+
+def described(material: Material) -> str:
+    """'NAME AS WRITTEN: phrase' (or the phrase): a comment or doc string beside an identifier."""
+    label = display_name(material)
+    return f"{label}: {phrase_text(material)}" if label else phrase_text(material)
 
 
 def unique_identifiers(names: Iterable[str], fallback: str = "material") -> list[str]:

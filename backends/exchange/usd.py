@@ -23,7 +23,7 @@ from ..base import Artifact, Option, Options, Target, emit_each
 from ..capabilities import ALL_FEATURES, EmitResult
 from . import materialx as mtlx_backend
 from .conversions import alpha_pair, alpha_to_roughness, clip01, conductor_f0, rounded
-from .naming import MaterialIdents, identifier, phrase_text, unique_identifiers
+from .naming import MaterialIdents, display_name, identifier, phrase_text, unique_identifiers
 from .options import Capabilities, capabilities_for, map_options
 from .textures import Texture, Textures, bake_textures
 
@@ -220,6 +220,8 @@ def record_phrase(material_prim: Any, material: Material) -> None:
     phrase = phrase_text(material)
     prim.SetCustomDataByKey("cnlmc:phrase", phrase)
     prim.SetDocumentation(phrase)
+    if display_name(material):  # the name as written, where the prim name could not keep it
+        prim.SetDisplayName(display_name(material))
 
 
 def groups_of(materials: Sequence[Material]) -> list[tuple[str, list[int]]]:

@@ -6,6 +6,7 @@ cartesian product; each selection is a Material with exactly one word per choice
 
 from __future__ import annotations
 
+import hashlib
 import itertools
 import re
 import unicodedata
@@ -18,11 +19,26 @@ MAX_VARIANTS = 64
 NON_WORD = re.compile(r"\W+", re.ASCII)
 
 
+#: Latin letters NFKD leaves whole (no accent to drop): their usual ASCII spelling
+LATIN = str.maketrans(
+    {
+        **dict(zip("øØłŁđĐðÐıħĦ", "oOlLdDdDihH")),
+        "ß": "ss",
+        "æ": "ae",
+        "Æ": "AE",
+        "œ": "oe",
+        "Œ": "OE",
+        "þ": "th",
+        "Þ": "Th",
+    }
+)
+
+
 def ascii_fold(text: str) -> str:
-    """'gebürstetes Weiß' -> 'geburstetes Weiss': accents dropped, ß as ss."""
+    """'gebürstetes Weiß' -> 'geburstetes Weiss', 'ünïcødé' -> 'unicode': accents dropped, ß as ss."""
     if text.isascii():
         return text
-    decomposed = unicodedata.normalize("NFKD", text.replace("ß", "ss"))
+    decomposed = unicodedata.normalize("NFKD", text.translate(LATIN))
     return "".join(c for c in decomposed if not unicodedata.combining(c))
 
 
@@ -31,8 +47,16 @@ def identifier(text: str) -> str:
     simple = text.strip().lower().replace(" ", "_")
     if simple.isascii() and simple.isidentifier() and "__" not in simple and simple.strip("_") == simple:
         return simple  # "Anodized aluminum": what the general rule below gives, in a fifth of the time
-    name = NON_WORD.sub("_", ascii_fold(text).strip().lower()).strip("_") or "material"
+    name = NON_WORD.sub("_", ascii_fold(text).strip().lower()).strip("_") or _nothing_ascii(text)
     return "m_" + name if name[0].isdigit() else name
+
+
+def _nothing_ascii(text: str) -> str:
+    """The name of a text with no ASCII letter or digit left: a short hash of it ('名前' -> 'm_1f0e3dad'),
+    so two such names never collide; 'material' for a text of punctuation only."""
+    if text.isascii():
+        return "material"
+    return "m_" + hashlib.sha256(text.strip().encode("utf-8", "surrogatepass")).hexdigest()[:8]
 
 
 Choice = ast.Colour | ast.Word

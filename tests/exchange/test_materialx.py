@@ -124,3 +124,40 @@ def test_anisotropy_fits_give_back_the_widths(ax, ay):
     assert (at, (1 - a) * at) == pytest.approx((ax, ay), rel=1e-9)
     r, a = standard_roughness(ax, ay)
     assert (r * r / math.sqrt(1 - a), r * r * math.sqrt(1 - a)) == pytest.approx((ax, ay), rel=1e-9)
+
+
+# ---------------------------------------------------------------- names as written (#13)
+
+UNICODE = "名前 ünïcødé 🔥 Ω"
+
+
+def test_a_unicode_name_keeps_its_display_name(tmp_path, mx_library):
+    from tests.helpers import run_cnlmc
+
+    source = tmp_path / "u.cnl"
+    source.write_text(f"{UNICODE}: red plastic\n")
+    ir = json.loads(run_cnlmc("compile", str(source)).stdout)
+    (material,) = ir["materials"]
+    assert material["name"] == "unicode" and material["label"] == UNICODE  # accents folded, the rest kept aside
+    done = run_cnlmc("compile", str(source), "-t", "materialx")
+    assert done.returncode == 0, done.stderr
+    doc = load(done.stdout, mx_library)
+    assert doc.validate()[0]
+    node = doc.getNode("M_unicode")
+    assert node is not None and node.getAttribute("uiname") == UNICODE
+
+
+def test_names_with_nothing_ascii_left_do_not_collide(tmp_path, mx_library):
+    from tests.helpers import run_cnlmc
+
+    source = tmp_path / "cjk.cnl"
+    source.write_text('名前: red plastic\n前名: blue plastic\nɸ<&">: gold\n')
+    ir = json.loads(run_cnlmc("compile", str(source)).stdout)
+    names = [m["name"] for m in ir["materials"]]
+    assert len(set(names)) == 3 and all(n.startswith("m_") and n.isascii() for n in names), names
+    assert [m["label"] for m in ir["materials"]] == ["名前", "前名", 'ɸ < & " >']
+    done = run_cnlmc("compile", str(source), "-t", "materialx")
+    assert done.returncode == 0, done.stderr
+    doc = load(done.stdout, mx_library)
+    assert doc.validate()[0]
+    assert sorted(n.getAttribute("uiname") for n in doc.getMaterialNodes()) == sorted(["名前", "前名", 'ɸ < & " >'])

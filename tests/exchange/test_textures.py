@@ -114,3 +114,9 @@ def test_bake_with_a_300_character_name(tmp_path: Path) -> None:
     assert all(len(n.encode()) <= NAME_MAX and n.startswith("a" * 100) for n in names)
     roles = sorted(n.split("~", 1)[1].split("_", 1)[1] for n in names)  # the role stays readable
     assert roles == ["base_color.png", "mask.png", "normal.png", "roughness.png"]
+
+
+def test_mitsuba_keeps_the_name_as_written_in_the_id_comment(tmp_path: Path) -> None:
+    compile_to(tmp_path, "名前 ünïcødé 🔥 Ω: red plastic", tmp_path / "out" / "u.xml", "mitsuba")
+    xml = (tmp_path / "out" / "u.xml").read_text()
+    assert "<!-- unicode: 名前 ünïcødé 🔥 Ω: red plastic -->" in xml and 'id="unicode"' in xml

@@ -244,3 +244,16 @@ def test_authoring_again_removes_its_old_textures_only(tmp_path):
     assert sorted(p.name for p in (tmp_path / "tex" / "shot.usda_Looks_Chair").iterdir()) == chair
     author_material(stage, "/Looks/Table", "red plastic", texture_dir="tex", map_size=16)
     assert not table.exists()
+
+
+def test_a_unicode_name_is_the_prim_s_display_name(tmp_path):
+    from tests.helpers import run_cnlmc
+
+    source = tmp_path / "u.cnl"
+    source.write_text("名前 ünïcødé 🔥 Ω: red plastic\n")
+    out = tmp_path / "u.usda"
+    done = run_cnlmc("compile", str(source), "-t", "usd", "-o", str(out))
+    assert done.returncode == 0, done.stderr
+    stage = Usd.Stage.Open(str(out))
+    prim = stage.GetPrimAtPath("/Root/Looks/unicode")
+    assert prim.IsValid() and prim.GetDisplayName() == "名前 ünïcødé 🔥 Ω"
