@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from numbers import Real
 
 from .errors import GraphSchemaError, did_you_mean
@@ -10,6 +11,7 @@ from .spec import OUTPUT_ROLES, Graph, GraphInput, GraphParam, NodeSpec, Ref
 
 TOP_KEYS = ("name", "doc", "params", "inputs", "nodes", "outputs", "presets")
 REF_KEYS = ("node", "param", "input", "mul", "add")
+IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]{0,63}")  # names that end up in node names and file names
 
 
 class Checker:
@@ -25,6 +27,13 @@ class Checker:
         for key in table:
             if key not in allowed:
                 self.fail(f"{where}.{key}".lstrip("."), f"unknown key '{key}'{did_you_mean(key, allowed)}")
+
+    def names(self, table: dict, key: str) -> dict:
+        """A table whose keys are names (nodes, params, inputs, presets): each a plain identifier."""
+        for name in table:
+            if not IDENTIFIER.fullmatch(name):
+                self.fail(f"{key}.{name}", f"'{name}' is not a plain name (letters, digits and '_', at most 64)")
+        return table
 
     def table(self, value, key: str) -> dict:
         if not isinstance(value, dict):
@@ -186,7 +195,7 @@ def check_outputs(c: Checker, raw, nodes) -> dict[str, str]:
 
 def check_presets(c: Checker, raw, params: dict[str, GraphParam]) -> dict:
     presets = {}
-    for preset, values in c.table(raw, "presets").items():
+    for preset, values in c.names(c.table(raw, "presets"), "presets").items():
         key = f"presets.{preset}"
         c.known_keys(c.table(values, key), params, key)
         presets[preset] = {p: c.number(v, f"{key}.{p}") for p, v in values.items()}
@@ -203,11 +212,13 @@ def check_graph(raw: dict, file: str, stem: str) -> Graph:
         if required not in raw:
             c.fail(required, "missing")
     name = c.string(raw.get("name", stem), "name")
+    if not IDENTIFIER.fullmatch(name):
+        c.fail("name", f"'{name}' is not a plain name (letters, digits and '_', at most 64)")
     if name != stem:
         c.fail("name", f"'{name}' differs from the file name '{stem}'")
-    params = {k: check_param(c, k, v) for k, v in c.table(raw.get("params", {}), "params").items()}
-    inputs = {k: check_input(c, k, v) for k, v in c.table(raw.get("inputs", {}), "inputs").items()}
-    raw_nodes = c.table(raw["nodes"], "nodes")
+    params = {k: check_param(c, k, v) for k, v in c.names(c.table(raw.get("params", {}), "params"), "params").items()}
+    inputs = {k: check_input(c, k, v) for k, v in c.names(c.table(raw.get("inputs", {}), "inputs"), "inputs").items()}
+    raw_nodes = c.names(c.table(raw["nodes"], "nodes"), "nodes")
     names = {"node": raw_nodes, "param": params, "input": inputs}
     nodes = {k: check_node(c, names, k, v) for k, v in raw_nodes.items()}
     check_acyclic(c, nodes)

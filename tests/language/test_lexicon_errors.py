@@ -446,3 +446,37 @@ def test_a_complete_new_entry_still_loads_and_compiles(tmp_path):
     folder = lexicon_folder(tmp_path, "nouns_studio.toml", "[unobtainium]\n" + NEW_NOUN)
     result = compile_source("brushed unobtainium", "x.cnl", load_lexicon([folder]))
     assert result.ok, [d.message for d in result.diagnostics]
+
+
+# ---------------------------------------------------------------- graph files: names are plain identifiers
+
+GRAPH = """
+doc = "test"
+[params.scale]
+default = 1.0
+range = [0.5, 2.0]
+doc = "density"
+[nodes.noise]
+type = "perlin"
+scale = { param = "scale", mul = 4 }
+[outputs]
+mask = "noise"
+"""
+
+
+@pytest.mark.parametrize(
+    "old,new,expected",
+    [
+        ("[nodes.noise]", '[nodes."../x"]', "nodes.../x: '../x' is not a plain name"),
+        ("[params.scale]", '[params."a b"]', "params.a b: 'a b' is not a plain name"),
+        ('doc = "test"', 'doc = "test"\nname = "a/b"', "name: 'a/b' is not a plain name"),
+    ],
+)
+def test_graph_names_are_plain_identifiers(tmp_path, old, new, expected):
+    from cnlmc.backends.maps import GraphSchemaError, load_graph_file
+
+    path = tmp_path / "g.toml"
+    path.write_text(GRAPH.replace(old, new))
+    with pytest.raises(GraphSchemaError) as info:
+        load_graph_file(path)
+    assert expected in str(info.value)
