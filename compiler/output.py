@@ -44,6 +44,7 @@ from pathlib import Path, PurePosixPath
 from typing import Protocol
 
 from .errors import UsageError
+from .filenames import fit_file_name
 from .folder_lock import FolderLock, backup_name, temp_prefix
 from .interrupts import SignalGuard
 from .manifest import MANIFEST_NAME, manifest_text, owned_folder, prune, read_manifest, remove_stale
@@ -175,12 +176,13 @@ def inside(root: Path, path: Path) -> bool:
 
 
 def safe_name(name: str, root: Path) -> Path:
-    """`root / name` for an artifact name that stays in `root`; UsageError for an absolute name
-    or one that climbs out ('..')."""
+    """`root / name` for an artifact name that stays in `root`, each part too long for a file
+    name shortened (cnlmc.filenames.fit_file_name); UsageError for an absolute name or one that
+    climbs out ('..')."""
     parts = PurePosixPath(name).parts
     if not name or PurePosixPath(name).is_absolute() or os.path.isabs(name) or ".." in parts:
         raise UsageError(f"refusing to write '{name}': the name leads outside the output folder '{root}'")
-    return root / name
+    return root.joinpath(*(fit_file_name(part) for part in parts))
 
 
 class Staging:

@@ -299,3 +299,26 @@ def test_a_hostile_lexicon_role_never_writes_outside(tmp_path: Path) -> None:
     proc = run_cnlmc("bake", str(src), "-L", str(lexicon), "-o", str(out), "--size", "16")
     refused(proc, "a/../../../ESCAPED")
     assert not list(tmp_path.rglob("*ESCAPED*"))
+
+
+# ---------------------------------------------------------------- names too long for a file
+
+
+def test_a_300_character_material_name_gets_short_file_names(tmp_path: Path) -> None:
+    src = tmp_path / "long.cnl"
+    src.write_text("a" * 300 + ": gold\n" + "a" * 300 + "b: silver\n")
+    out = tmp_path / "gl"
+    proc = run_cnlmc("compile", str(src), "-t", "glsl", "-o", f"{out}/")
+    assert proc.returncode == 0, proc.stderr
+    names = sorted(p.name for p in out.iterdir())
+    assert len(names) == 8 and all(len(n.encode()) <= 255 and n.startswith("a" * 100) for n in names)
+    stems = {n.split(".", 1)[0] for n in names}  # one shortened stem per material, its suffixes kept
+    assert len(stems) == 2 and {n.split(".", 1)[1] for n in names} == {"glsl", "frag", "vert", "glsl.json"}
+
+
+def test_unicode_names_are_cut_on_a_character_boundary() -> None:
+    from cnlmc.filenames import NAME_MAX, fit_file_name
+
+    name = fit_file_name("名" * 200 + ".glsl.json")
+    assert len(name.encode()) <= NAME_MAX and name.endswith(".glsl.json") and "~" in name
+    assert fit_file_name("short.png") == "short.png"
