@@ -20,6 +20,7 @@ from .params import PARAMS
 #: What a property's `param` may name: a scalar parameter, the base colour, or the saturation.
 PROPERTY_PARAMS = (*(s.name for s in PARAMS if s.kind == "number"), "base_color", "saturation")
 REFINEMENT_TARGETS = ("colour", "any")
+CONDUCTOR_OPTICS = ("eta", "k", "f0", "f82")
 
 
 @dataclass
@@ -48,6 +49,7 @@ class References:
     def check(self) -> None:
         for key, entry in self.raw["nouns"].items():
             self._name(entry, key, "coat", self.raw["coats"], "coat")
+            self._optics(key, entry)
         for key, entry in self.raw["adjectives"].items():
             self._adjective(key, entry)
         for key, entry in self.raw["refinements"].items():
@@ -64,6 +66,19 @@ class References:
         for i, value in enumerate(entry.data.get(name, [])):
             if value not in known:
                 entry.checker(name).fail((key, name, i), f"no {what} named '{value}'{did_you_mean(value, known)}")
+
+    def _optics(self, key: str, entry: RawEntry) -> None:
+        """A metal noun carries its measured optics: eta, k, f0 and f82."""
+        if entry.data.get("model") != "conductor":
+            return
+        missing = [p for p in CONDUCTOR_OPTICS if p not in entry.data]
+        if missing:
+            entry.checker("model").fail(
+                (key,),
+                f"a conductor (model = 'conductor') needs its optics {', '.join(CONDUCTOR_OPTICS)}; missing: "
+                f"{', '.join(missing)} (f0 and f82 are the reflectances at 0 degrees and at acos(1/7); "
+                "cnlmc.bsdf.fresnel.fresnel_conductor(cos, eta, k) computes them from eta and k)",
+            )
 
     def _adjective(self, key: str, entry: RawEntry) -> None:
         self._name(entry, key, "coat", self.raw["coats"], "coat")

@@ -29,7 +29,8 @@ MAX_MAGNITUDE = 1e6  # a number without a declared range lies in [-1e6, 1e6]
 MAX_FACTOR = 1e3  # what a formula may multiply or add by
 MAX_ITEMS = 256  # formulas, shade operations or aliases in one list
 MAX_TEXT = 4096  # characters in one string field
-MODELS = ("conductor", "dielectric", "glass")  # what a noun is, and what `param = "model"` may set
+#: what a formula's `param = "model"` may set (a metal needs a noun's optics: `material = "copper"`)
+EFFECT_MODELS = ("dielectric", "glass")
 FORMULA_OPS = ("set", "mul", "add", "blend")
 SHADE_OPS = {"saturate": ("amount",), "blend": ("value", "amount"), "mul": ("value",)}
 PARAM_SPECS = {s.name: s for s in PARAMS}
@@ -249,7 +250,9 @@ def check_effect(c: Checker, raw: object, path: Path_) -> None:
     if param == "model":
         if op != "set":
             c.fail((*path, "op"), "the model can only be set: op = 'set'")
-        c.choice(value, MODELS, (*path, "value"), "model")
+        if value == "conductor":
+            c.fail((*path, "value"), "a formula cannot make a metal: its optics come from a noun (material = 'copper')")
+        c.choice(value, EFFECT_MODELS, (*path, "value"), "model")
         return
     _check_formula_value(c, PARAM_SPECS[param], op, value, (*path, "value"))
 

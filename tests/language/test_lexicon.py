@@ -96,6 +96,7 @@ def test_user_lexicon_adds_and_overrides(tmp_path):
         "nouns_studio.toml",
         '[unobtainium]\nclass = "metal"\nmodel = "conductor"\n'
         "roughness = 0.2\nbase_color = [1.0, 0.5, 0.2]\neta = [1.0, 1.0, 1.0]\nk = [3.0, 3.0, 3.0]\n"
+        "f0 = [0.69, 0.69, 0.69]\nf82 = [0.75, 0.75, 0.75]\n"
         'source = "studio"\ndoc = "A studio metal."\nexample = "brushed unobtainium"\n'
         "[steel]\nroughness = 0.5\n",
     )
@@ -109,7 +110,10 @@ def test_user_lexicon_adds_and_overrides(tmp_path):
 @pytest.mark.parametrize(
     "text,message",
     [
-        ('[steel]\nroughness = "high"\n', "nouns_bad.toml:2:1: key 'steel.roughness': expected a number, got a string 'high'"),
+        (
+            '[steel]\nroughness = "high"\n',
+            "nouns_bad.toml:2:1: key 'steel.roughness': expected a number, got a string 'high'",
+        ),
         ("[steel]\nshininess = 1.0\n", "nouns_bad.toml:2:1: key 'steel.shininess': unknown field 'shininess'"),
         ("[steel]\nroughness = 7.0\n", "nouns_bad.toml:2:1: key 'steel.roughness': 7.0 is outside [0, 1]"),
         ("[newmetal]\nroughness = 0.1\n", "nouns_bad.toml:1:1: key 'newmetal': missing required field"),

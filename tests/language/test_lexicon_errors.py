@@ -209,7 +209,8 @@ def test_a_folder_over_the_byte_limit_is_refused(tmp_path, cache_home):
 
 NEW_NOUN = (
     'class = "metal"\nmodel = "conductor"\nroughness = 0.2\nbase_color = [1.0, 0.5, 0.2]\n'
-    'eta = [1.0, 1.0, 1.0]\nk = [3.0, 3.0, 3.0]\nsource = "studio"\ndoc = "A metal."\nexample = "unobtainium"\n'
+    "eta = [1.0, 1.0, 1.0]\nk = [3.0, 3.0, 3.0]\nf0 = [0.69, 0.69, 0.69]\nf82 = [0.75, 0.75, 0.75]\n"
+    'source = "studio"\ndoc = "A metal."\nexample = "unobtainium"\n'
 )
 
 SCHEMA_CASES = [
@@ -313,6 +314,12 @@ SCHEMA_CASES = [
     ),
     ("adjectives_x.toml", '[brushed]\ncoat = "varnsh"\n', "no coat named 'varnsh' (did you mean 'varnish'?)"),
     ("adjectives_x.toml", '[brushed]\nmaterial = "oak"\n', "'oak' is not a metal"),
+    (
+        "adjectives_x.toml",
+        '[brushed]\neffects = [{ param = "model", op = "set", value = "conductor" }]\n',
+        "a formula cannot make a metal: its optics come from a noun (material = 'copper')",
+    ),
+    ("nouns_x.toml", "[unobtainium]\n" + NEW_NOUN.replace("f0 = [0.69, 0.69, 0.69]\n", ""), "missing: f0"),
     ("adjectives_x.toml", '[brushed]\ncolour_target = "bass"\n', "did you mean 'base'?"),
     # shades
     ("shades_x.toml", '[pale]\nops = [{ op = "lighten", amount = 1 }]\n', "'lighten' is not a known colour operation"),
