@@ -267,6 +267,9 @@ class Staging:
         for folder, _, new in self.owned:
             if not new:
                 prune(folder)
+        for made in reversed(self.made):  # a folder claimed for a result that put nothing in it
+            with contextlib.suppress(OSError):
+                made.rmdir()
         return [shown for _, _, shown in self.staged if shown.name != MANIFEST_NAME]
 
     def _release(self) -> None:

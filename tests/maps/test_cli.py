@@ -91,3 +91,11 @@ def test_sheet_refuses_a_tile_size_out_of_range(tmp_path, size):
     r = cnlmc("sheet", "-o", str(out), "--size", size)
     assert r.returncode == 2 and f"tile size {size} is out of range: use 16 to 1024 pixels" in r.stderr, r.stderr
     assert not out.exists()
+
+
+def test_bake_of_uniform_materials_leaves_no_folder_behind(tmp_path):
+    src = tmp_path / "plain.cnl"
+    src.write_text("red plastic\n")
+    done = cnlmc("bake", str(src), "-o", str(tmp_path / "maps"))
+    assert done.returncode == 0 and "uniform, no maps to bake" in done.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["plain.cnl"]  # no folder, no lock file
