@@ -98,6 +98,14 @@ def test_every_noun_compiles_alone_and_its_example_names_it(stdlib):
             assert key in nouns_named(result.materials[0]), (key, text, nouns_named(result.materials[0]))
 
 
+def test_every_alias_compiles_alone_and_names_its_noun_only(stdlib):
+    for key, entry in nouns(stdlib).items():
+        for alias in entry.get("aliases", []):
+            result = compile_source(alias, "alias.cnl", stdlib)
+            assert result.ok, (key, alias, [d.message for d in result.diagnostics])
+            assert nouns_named(result.materials[0]) == {key}, (key, alias, nouns_named(result.materials[0]))
+
+
 def test_every_source_names_a_known_dataset_or_says_the_value_is_our_choice(stdlib):
     for key, entry in nouns(stdlib).items():
         source = entry.get("source")
