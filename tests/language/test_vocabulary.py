@@ -156,6 +156,14 @@ def test_multi_word_nouns_are_matched_whole(stdlib, phrase, key):
     assert result.ok and key in nouns_named(result.materials[0]), [d.message for d in result.diagnostics]
 
 
+def test_every_metals_f82_agrees_with_its_own_eta_and_k(stdlib):
+    """f82 is measured (spectral) or computed from eta/k: within 0.01 of the exact Fresnel of eta/k either way."""
+    for key, entry in nouns(stdlib).items():
+        if entry.get("model") == "conductor":
+            exact = [fresnel(n, k, MU_82) for n, k in zip(entry.get("eta"), entry.get("k"))]
+            assert all(math.isclose(a, b, abs_tol=0.01) for a, b in zip(entry.get("f82"), exact)), (key, exact)
+
+
 def test_clear_plastics_transmit_and_pigmented_ones_do_not(stdlib):
     model = {key: entry.get("model") for key, entry in nouns(stdlib).items()}
     assert {model[k] for k in ("plexiglass", "polycarbonate", "pet plastic", "epoxy resin")} == {"glass"}
