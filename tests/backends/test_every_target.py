@@ -9,6 +9,7 @@ import pytest
 from cnlmc.api import compile_source, emit
 from cnlmc.backends.capabilities import ALL_FEATURES, POLICIES, material_features
 from cnlmc.backends.registry import BUILTIN_BACKENDS, TargetUnavailable, get_target
+from cnlmc.lexicon import load_lexicon
 from tests.helpers import PHRASE_BY_MODEL, require, run_cnlmc
 
 # One phrase per model kind and feature, so every row of the capability tables is exercised.
@@ -68,3 +69,65 @@ def test_every_target_from_the_command_line(tmp_path, target):
     r = run_cnlmc("compile", "-", "-t", target, "-o", str(tmp_path) + "/", *extra, stdin=source)
     assert r.returncode == 0, r.stderr
     assert any(tmp_path.iterdir()), f"{target} wrote nothing"
+
+
+def stdlib_pairs(every: bool) -> list[str]:
+    """Stdlib adjective + noun phrases ('matte denim', 'brushed walnut', ...): with `every`, each
+    adjective before each noun; else each adjective and each noun at least once (round robin)."""
+    lexicon = load_lexicon()
+    adjectives, nouns = sorted(lexicon.all_of("adjectives")), sorted(lexicon.all_of("nouns"))
+    if every:
+        return [f"{adjective} {noun}" for adjective in adjectives for noun in nouns]
+    count = max(len(adjectives), len(nouns))
+    return [f"{adjectives[i % len(adjectives)]} {nouns[i % len(nouns)]}" for i in range(count)]
+
+
+def pairs_document(every: bool):
+    """One document of the pairs, one material per line; it compiles cleanly."""
+    source = "".join(f"m{i}: {phrase}\n" for i, phrase in enumerate(stdlib_pairs(every)))
+    result = compile_source(source)
+    assert result.ok, [d.message for d in result.diagnostics if d.is_error][:5]
+    return result
+
+
+def test_matte_denim_through_mitsuba_from_the_command_line():
+    """#13: `echo "matte denim" | cnlmc compile - --target mitsuba` was `internal error: KeyError: 'ior'`."""
+    r = run_cnlmc("compile", "-", "--target", "mitsuba", "--option", "maps=none", stdin="matte denim\n")
+    assert r.returncode == 0, r.stderr
+    assert 'id="matte_denim"' in r.stdout and "internal error" not in r.stderr
+
+
+def emits_every_material(result, bsdf: str) -> None:
+    [scene] = emit(result.ir, "mitsuba", {"maps": "none", "bsdf": bsdf}).artifacts
+    missing = [m["name"] for m in result.ir["materials"] if f'id="{m["name"]}"' not in scene.content]
+    assert not missing, missing[:5]
+
+
+@pytest.mark.parametrize("bsdf", ["native", "cnlm"])
+def test_every_adjective_and_every_noun_through_mitsuba(bsdf):
+    """#13: 41 stdlib adjective x noun pairs crashed the Mitsuba target (KeyError: 'ior')."""
+    backend("mitsuba")
+    emits_every_material(pairs_document(every=False), bsdf)
+
+
+@pytest.fixture(scope="module")
+def every_pair():
+    return pairs_document(every=True)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("bsdf", ["native", "cnlm"])
+def test_every_adjective_noun_pair_through_mitsuba(every_pair, bsdf):
+    backend("mitsuba")
+    emits_every_material(every_pair, bsdf)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    ("target", "options"),
+    [("ir", {}), ("glsl", {}), ("materialx", {"maps": "none"}), ("usd", {"maps": "none"})],
+)
+def test_every_adjective_noun_pair_through_every_target(every_pair, target, options):
+    backend(target)
+    result = emit(every_pair.ir, target, options)
+    assert result.artifacts
