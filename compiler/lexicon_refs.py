@@ -112,3 +112,8 @@ class References:
             )
         self._name(entry, key, "param", PROPERTY_PARAMS, "parameter a property can change")
         self._name(entry, key, "map_param", sorted(all_graph_params()), "graph parameter")
+        step = entry.data.get("step", {})
+        if step.get("op") == "blend" and entry.data.get("param") != "base_color":
+            entry.checker("step").fail(
+                (key, "step", "op"), "a blend step moves towards a colour: it is for param = 'base_color' only"
+            )

@@ -253,6 +253,9 @@ def write_folder(folder: Path, files: list[tuple[str, str]]) -> None:
 )
 @given(files=lexicon_files)
 @example(files=[("nouns_x.toml", '[steel]\nmaps = { "a/../../../ESCAPED" = { graph = "wood", output = "color" } }\n')])
+@example(
+    files=[("properties_x.toml", '[diffuse]\nstep = { op = "blend", value = 0.1 }\n')]
+)  # a colour step on a number
 @example(files=[("colours_x.toml", '[zork]\nhex = "#fff"\ndoc = "d"\nexample = "zork steel"\n')])
 @example(files=[("adjectives_x.toml", '[brushed]\neffects = [{ param = "roughness", op = "mul", value = 1e300 }]\n')])
 def test_random_lexicon_folders_never_crash_the_compiler(tmp_path_factory, files):

@@ -354,6 +354,11 @@ SCHEMA_CASES = [
     ("properties_x.toml", '[grain]\nparam = "roughness"\n', "key 'grain.param': a property names exactly one of param"),
     (
         "properties_x.toml",
+        '[diffuse]\nstep = { op = "blend", value = 0.1 }\n',
+        "2:10: key 'diffuse.step.op': a blend step moves towards a colour: it is for param = 'base_color' only",
+    ),
+    (
+        "properties_x.toml",
         '[shine]\nparam = "roughnes"\nstep = { op = "add", value = 0.1 }\ndoc = "d"\nexample = "more shine"\n',
         "did you mean 'roughness'?",
     ),
