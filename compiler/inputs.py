@@ -22,6 +22,7 @@ from __future__ import annotations
 import os
 import stat
 import sys
+from codecs import BOM_UTF8
 from typing import BinaryIO
 
 from .errors import UsageError
@@ -140,13 +141,15 @@ def _bounded(handle: BinaryIO, name: str, limit: int, size: int | None, option: 
 
 def decode_utf8(data: bytes, name: str) -> str:
     """UTF-8 text (a leading byte order mark dropped); NotUTF8 at file:line:col of the first bad byte."""
+    bom = len(BOM_UTF8) if data.startswith(BOM_UTF8) else 0  # utf-8-sig counts its error offsets after the BOM
     try:
-        return data.decode("utf-8-sig")
+        return data[bom:].decode("utf-8")
     except UnicodeDecodeError as exc:
-        good = data[: exc.start].decode("utf-8-sig")
+        start = bom + exc.start
+        good = data[bom:start].decode("utf-8")
         line, column = LineTable(good).position(len(good))
         raise NotUTF8(
-            f"{name}:{line}:{column + 1}: not UTF-8 text (byte 0x{data[exc.start]:02x} at byte offset {exc.start}); "
+            f"{name}:{line}:{column + 1}: not UTF-8 text (byte 0x{data[start]:02x} at byte offset {start}); "
             f"save the file as UTF-8"
         ) from None
 
