@@ -298,14 +298,21 @@ def trace(uri: str, version: int | None, t0: float, t1: float, t2: float, t3: fl
 
 class MemoryRelease:
     """Gives memory back after a document closes: collects what gc.freeze() kept out of reach,
-    then asks the C allocator to return free pages to the system (glibc's malloc_trim)."""
+    then asks the C allocator to return free pages to the system (glibc's malloc_trim). On glibc
+    the threshold above which blocks get their own mapping is also fixed (glibc raises it after
+    each large free, and then large published diagnostics and document texts fragment the heap)."""
+
+    M_MMAP_THRESHOLD = -3  # glibc <malloc.h>
+    MMAP_THRESHOLD_BYTES = 256 * 1024
 
     def __init__(self) -> None:
         self._trim: Callable[[int], int] | None = None
         name = ctypes.util.find_library("c") if sys.platform.startswith("linux") else None
         if name:
             try:
-                self._trim = ctypes.CDLL(name).malloc_trim
+                libc = ctypes.CDLL(name)
+                self._trim = libc.malloc_trim
+                libc.mallopt(self.M_MMAP_THRESHOLD, self.MMAP_THRESHOLD_BYTES)
             except (OSError, AttributeError):
                 self._trim = None
 

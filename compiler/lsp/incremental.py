@@ -308,8 +308,13 @@ class Analyzer:
             self._kinds.discard(line)
 
     def clear(self) -> None:
+        """Drop everything learnt from documents (when none is open): the blocks and lines kept
+        here and what the lexicon memoised about their words (its tagger's word memo, made again
+        on first use, and its suggestions)."""
         self._kinds.clear()
         self._blocks.clear()
+        self.lexicon.caches.tagger = None
+        self.lexicon.caches.suggestions.clear()
 
 
 def _with_spans(result: Result) -> Iterator[Diagnostic]:

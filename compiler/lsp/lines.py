@@ -23,7 +23,7 @@ class LineWord:
 
 def tag_text(text: str, lexicon: Lexicon) -> list[Tagged]:
     """Tagged words of a line, with spans whose offsets are the columns on that line."""
-    tagged, _diags = Tagger(lexicon).tag_line(text, 1, 0)
+    tagged, _diags = Tagger.of(lexicon).tag_line(text, 1, 0)
     return tagged
 
 

@@ -20,6 +20,7 @@ import logging
 from collections.abc import Callable, Generator
 from typing import TYPE_CHECKING, Any
 
+import attrs
 import cattrs
 from lsprotocol import types
 from pygls.protocol import LanguageServerProtocol
@@ -96,8 +97,12 @@ class CnlProtocol(LanguageServerProtocol):
         if not self._knows(method):
             self.reply_error(msg_id, METHOD_NOT_FOUND, f"cnlmc's language server has no method '{method}'")
             return
+        kind = self.get_message_type(method) or JsonRPCRequestMessage
+        if "id" not in attrs.fields_dict(kind):
+            self.reply_error(msg_id, INVALID_REQUEST, f"'{method}' is a notification: it is sent without an 'id'")
+            return
         try:
-            message = self._structure(data, self.get_message_type(method) or JsonRPCRequestMessage)
+            message = self._structure(data, kind)
         except BadParams as exc:
             log.warning("answered '%s' (id %s) with InvalidParams: %s", method, msg_id, exc)
             self.reply_error(msg_id, INVALID_PARAMS, f"invalid params for '{method}': {exc}")

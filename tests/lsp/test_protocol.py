@@ -42,6 +42,11 @@ def test_invalid_params_are_answered_with_what_is_wrong(server):
     assert error_of(server, "textDocument/hover", "a string")["code"] == -32600  # params must be an object or array
 
 
+def test_a_notification_sent_as_a_request_is_answered(server):
+    error = error_of(server, "textDocument/didClose", {"textDocument": {"uri": "file:///never-opened.cnl"}})
+    assert error == {"code": -32600, "message": "'textDocument/didClose' is a notification: it is sent without an 'id'"}
+
+
 def test_unknown_method(server):
     error = error_of(server, "cnlmc/noSuchMethod", {})
     assert error == {"code": -32601, "message": "cnlmc's language server has no method 'cnlmc/noSuchMethod'"}
