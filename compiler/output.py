@@ -360,7 +360,9 @@ def write_artifacts(artifacts: Sequence[Artifact], out: str, protect: Iterable[s
     `out` a folder (existing, ending in '/', or without a suffix): every artifact goes into it.
     All-or-nothing, never over an input in `protect`, never outside the output folder; the files
     in the main file's own folder (`texture_folder`) are its, with a manifest (see the module
-    docstring)."""
+    docstring). No artifact: nothing is written (e.g. the maps target on materials without maps)."""
+    if not artifacts:
+        return []
     target = Path(out)
     if looks_like_file(out) or (len(artifacts) == 1 and not os.path.isdir(target) and not out.endswith(("/", os.sep))):
         root, first = target.parent, target

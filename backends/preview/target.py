@@ -48,6 +48,8 @@ class PreviewTarget(Target):
 
     def emit(self, document: Document, options: Options) -> EmitResult:
         opts = preview_options(options)
+        if not document.materials:  # as `cnlmc preview` says it, before a GL context is made
+            raise ValueError("preview: the document has no material to render")
         frames: Rendered = []
         with Renderer(opts.size, msaa=opts.msaa) as renderer:
             scene = preview_scene(renderer, opts)
