@@ -137,13 +137,15 @@ def _make_parents(folder: Path, made: list[Path]) -> None:
 
 
 def _commit(staged: Sequence[tuple[Path, Path, Path]]) -> None:
-    """Rename every temp over its destination; on a failure, put back the ones already renamed."""
-    done: list[tuple[Path, Path | None]] = []
+    """Rename every temp over its destination; on a failure (or a signal), put back the ones
+    already renamed. Each rename is recorded before it runs, so a signal between the rename and
+    the next line still finds it: putting back a rename that did not happen changes nothing."""
+    done: list[tuple[Path, Path | None, bool]] = []
     backups: list[Path] = []
     try:
         for tmp, real, shown in staged:
-            backup = None
-            if len(staged) > 1 and os.path.lexists(real):
+            existed, backup = os.path.lexists(real), None
+            if len(staged) > 1 and existed:
                 backup = real.parent / backup_name(real.name)
                 backup.unlink(missing_ok=True)
                 try:
@@ -151,22 +153,28 @@ def _commit(staged: Sequence[tuple[Path, Path, Path]]) -> None:
                     backups.append(backup)
                 except OSError:
                     backup = None  # no hard links here: this file cannot be put back
+            done.append((real, backup, existed))
             try:
                 os.replace(tmp, real)
             except OSError as exc:
+                done.pop()
                 raise os_error(shown, exc) from None
-            done.append((real, backup))
     except BaseException:
-        for real, backup in reversed(done):
-            with contextlib.suppress(OSError):
-                if backup is not None:
-                    os.replace(backup, real)
-                else:
-                    real.unlink()
+        _put_back(done)
         raise
     finally:
         for backup in backups:
             backup.unlink(missing_ok=True)
+
+
+def _put_back(done: Sequence[tuple[Path, Path | None, bool]]) -> None:
+    """Undo renames, last first: the old file back from its backup, a new file removed."""
+    for real, backup, existed in reversed(done):
+        with contextlib.suppress(OSError):
+            if backup is not None:
+                os.replace(backup, real)
+            elif not existed:
+                real.unlink(missing_ok=True)
 
 
 def inside(root: Path, path: Path) -> bool:

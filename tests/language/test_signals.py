@@ -155,3 +155,39 @@ def test_only_the_temps_of_dead_writers_are_removed(tmp_path: Path) -> None:
         path.write_bytes(b"x")
     assert remove_stale_temps(tmp_path) == [stale]
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted([live.name, other.name])
+
+
+def test_a_signal_in_process_discards_the_staging_and_says_so(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (tmp_path / "old.json").write_text("old")
+    with pytest.raises(SystemExit) as raised, output.Staging() as staging:
+        staging.add(tmp_path / "old.json", lambda temp: temp.write_text("new"))
+        staging.add(tmp_path / "new.json", lambda temp: temp.write_text("new"))
+        os.kill(os.getpid(), signal.SIGTERM)  # handled at the next bytecode: raises Interrupted
+        staging.commit()
+    assert raised.value.code == 128 + signal.SIGTERM
+    assert "cnlmc: interrupted by SIGTERM: nothing was written" in capsys.readouterr().err
+    assert entries(tmp_path) == {"old.json": b"old"}
+    assert signal.getsignal(signal.SIGTERM) == signal.SIG_DFL  # the default handler is back
+
+
+def test_a_signal_right_after_a_rename_is_rolled_back(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from cnlmc.interrupts import Interrupted
+
+    for name in ("a.glsl", "b.frag"):
+        (tmp_path / name).write_text(f"old {name}")
+    real_replace, calls = os.replace, []
+
+    def replace_then_signal(src: str | Path, dst: str | Path) -> None:
+        real_replace(src, dst)
+        calls.append(dst)
+        if len(calls) == 2:  # a signal arrives just after the second rename returned
+            raise Interrupted(signal.SIGTERM)
+
+    monkeypatch.setattr(os, "replace", replace_then_signal)
+    files = [(tmp_path / name, f"new {name}") for name in ("a.glsl", "b.frag", "c.vert")]
+    with pytest.raises(Interrupted):
+        output.write_files(files)
+    monkeypatch.setattr(os, "replace", real_replace)
+    assert entries(tmp_path) == {"a.glsl": b"old a.glsl", "b.frag": b"old b.frag"}
