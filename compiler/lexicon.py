@@ -7,11 +7,12 @@ earlier one does not set are kept, so an overlay can change one number of a noun
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
+from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
 from .cache import cached, dump_json, load_json
@@ -202,9 +203,9 @@ def _index_forms(entries: dict[str, dict[str, Entry]]) -> Forms:
     forms: Forms = {}
     for by_key in entries.values():
         for entry in by_key.values():
-            for surface in [entry.key, *entry.get("aliases", [])]:
-                hits = forms.setdefault(normalise(surface), [])
-                if entry not in hits:
+            for surface in [entry.key, *entry.data.get("aliases", ())]:
+                hits = forms.setdefault(tuple(surface.lower().split()), [])
+                if not any(hit is entry for hit in hits):  # identity: comparing entries compares their data
                     hits.append(entry)
     return forms
 
@@ -212,11 +213,17 @@ def _index_forms(entries: dict[str, dict[str, Entry]]) -> Forms:
 def keyword_table(table: dict[str, Any] | None = None) -> dict[str, str]:
     """Closed-class words -> grammar terminal, from grammar/keywords.toml (or a given table)."""
     if table is None:
-        import tomllib
-
-        text = resources.files("cnlmc.grammar").joinpath("keywords.toml").read_text("utf-8")
-        table = tomllib.loads(text)
+        return dict(_bundled_keywords())
     return {word: terminal for terminal, words in table["terminals"].items() for word in words}
+
+
+@lru_cache(maxsize=1)
+def _bundled_keywords() -> Mapping[str, str]:
+    """grammar/keywords.toml's table, read once per process (immutable package data)."""
+    import tomllib
+
+    text = resources.files("cnlmc.grammar").joinpath("keywords.toml").read_text("utf-8")
+    return MappingProxyType(keyword_table(tomllib.loads(text)))
 
 
 def load_lexicon(user_paths: Iterable[str | Path] = (), overlay: Overlays = None) -> Lexicon:
