@@ -23,7 +23,7 @@ from .errors import UsageError
 from .inputs import DEFAULT_MAX_BYTES, InputTooLarge, decode_utf8, read_bytes
 from .lexicon import CATEGORY_TAGS, SPECIAL_FILES, Entry, Lexicon, keyword_table
 from .lexicon_refs import RawEntry, References
-from .lexicon_schema import Checker, LexiconError, check_entry, check_required, did_you_mean
+from .lexicon_schema import MAX_TEXT, Checker, LexiconError, check_entry, check_required, did_you_mean
 from .lexicon_source import SourceText, dotted
 
 Folder = Path | Traversable  # a lexicon folder or file: the user's, or inside the installed package
@@ -165,6 +165,8 @@ class Builder:
         for key, entry in data.items():
             if not key.strip():
                 c.fail((key,), "an entry needs a name: [name] with at least one word")
+            if len(key) > MAX_TEXT:
+                c.fail((key,), f"a name of {len(key)} characters; at most {MAX_TEXT} are allowed")
             known = key in self.raw[category]
             check_entry(c, entry, fields, (key,), partial=known or not strict)
             self._merge(category, key, entry, c.source)
@@ -186,7 +188,7 @@ class Builder:
         for category, by_key in self.raw.items():
             fields = self.schema[category]["fields"]
             for key, entry in by_key.items():
-                check_required(Checker(entry.source), entry.data, fields, (key,))
+                check_required(Checker(entry.source), entry.data, fields, (key,), by_key)
         References(self.raw).check()
 
     def build(self) -> Lexicon:

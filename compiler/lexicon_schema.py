@@ -168,10 +168,17 @@ def check_entry(
     return table
 
 
-def check_required(c: Checker, table: dict[str, Any], fields: dict[str, FieldSpec], path: Path_) -> None:
+def check_required(
+    c: Checker, table: dict[str, Any], fields: dict[str, FieldSpec], path: Path_, others: Collection[str] = ()
+) -> None:
+    """Every required field is there; `others`: the names of the entries there are (a new entry named
+    close to one of them is most likely a change to it, mistyped)."""
     for name, spec in {**COMMON_FIELDS, **fields}.items():
         if spec.get("required") and name not in table:
-            c.fail(path, f"missing required field '{name}' (a new entry needs: {_required_list(fields)})")
+            key = str(path[0]) if path else ""
+            close = difflib.get_close_matches(key, [o for o in others if o != key], n=1, cutoff=0.6)
+            hint = f"; did you mean to change '{close[0]}'?" if close else ""
+            c.fail(path, f"missing required field '{name}' (a new entry needs: {_required_list(fields)}){hint}")
 
 
 def _required_list(fields: dict[str, FieldSpec]) -> str:
