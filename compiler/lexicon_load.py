@@ -256,7 +256,8 @@ def _not_an_overlay(name: str) -> str:
             f"{name}: not a lexicon folder ({what}); --lexicon takes a folder of .toml files "
             f"(nouns_studio.toml, ...) or an overlay name ({available})"
         )
-    return f"no lexicon overlay named '{name}' (available: {available}){did_you_mean(name, available_overlays())}"
+    close = did_you_mean(name, available_overlays())  # " (did you mean 'x'?)"
+    return f"no lexicon overlay named '{name}' (available: {available}){'; ' + close[2:-1] if close else ''}"
 
 
 def _what_it_is(path: Path) -> str:

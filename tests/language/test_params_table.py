@@ -7,7 +7,8 @@ import pytest
 from cnlmc import params_doc
 from cnlmc.ir import PARAMS_BY_MODEL
 from cnlmc.lexicon import load_lexicon
-from cnlmc.lexicon_schema import TABLE_FIELDS, LexiconError, check_entry
+from cnlmc.lexicon_schema import TABLE_FIELDS, Checker, LexiconError, check_entry
+from cnlmc.lexicon_source import SourceText
 from cnlmc.params import PARAMS, Params
 from cnlmc.passes.ranges import COAT_RANGES, RANGES
 from cnlmc.state import NOUN_PARAMS
@@ -66,5 +67,6 @@ def test_the_lexicon_schema_takes_noun_ranges_from_the_table():
 
 def test_a_noun_out_of_the_tables_range_is_rejected_naming_the_key():
     fields = {"roughness": {"from": "params.roughness", "required": True}}
-    with pytest.raises(LexiconError, match=r"steel\]\.roughness: 1.5 is outside \[0.0, 1.0\]"):
-        check_entry({"roughness": 1.5, "doc": "d", "example": "e"}, fields, "nouns.toml [steel]")
+    checker = Checker(SourceText("nouns.toml", "[steel]\nroughness = 1.5\n"))
+    with pytest.raises(LexiconError, match=r"nouns.toml:2:1: key 'steel.roughness': 1.5 is outside \[0, 1\]"):
+        check_entry(checker, {"roughness": 1.5, "doc": "d", "example": "e"}, fields, ("steel",))
