@@ -25,7 +25,7 @@ from cnlmc.backends.registry import (
     get_target,
 )
 
-from .api import Result, compile_source, lexicon_for
+from .api import Result, compile_source, cyclic_gc_paused, lexicon_for
 from .diagnostics import Diagnostic, render_all, visible
 from .document import parse_document
 from .errors import UsageError
@@ -119,7 +119,7 @@ def print_diagnostics(diags: Sequence[Diagnostic], source: str, name: str) -> No
 
 def compile_reported(source: str, name: str, args: argparse.Namespace) -> Result:
     """Compile with the arguments' lexicon and seed; diagnostics go to stderr."""
-    result = compile_source(source, name, lexicon_of(args), args.seed)
+    result = compile_source(source, name, lexicon_of(args), args.seed, keep_stages=False)
     report(result, source, name)
     return result
 
@@ -147,7 +147,7 @@ class CompileCommand(Command):
         lexicon = lexicon_of(args)
         if args.emit in ("tokens", "ast"):
             return emit_stage(args.emit, source, name, lexicon)
-        result = compile_source(source, name, lexicon, args.seed)
+        result = compile_source(source, name, lexicon, args.seed, keep_stages=False)
         report(result, source, name)
         if not result.ok:
             return EXIT_ERRORS
@@ -165,7 +165,8 @@ def run_target(target: Target, result: Result, args: argparse.Namespace) -> Emit
     if args.output:
         options.setdefault("output", args.output)
     try:
-        return target.emit_ir(result.document, options)
+        with cyclic_gc_paused():
+            return target.emit_ir(result.ir, options)  # typed by the target (the IR target writes it as it is)
     except BackendRefused as exc:
         print(f"error[E201]: {exc}", file=sys.stderr)
         return None
