@@ -6,7 +6,8 @@
   first file staged there until the commit or the clean-up is done; the lock file is removed when
   it is released (nothing is left behind). A second writer waits up to `CNLMC_LOCK_WAIT` seconds
   (default 60) for the first to finish, then fails with a usage error naming the folder and the
-  process that holds it. The kernel releases the lock of a killed process.
+  process that holds it. The kernel releases the lock of a killed process. On a file system
+  without locks the folder is written unlocked.
 - **Stale temps**: once it holds the lock, a writer removes the temps and backups in that folder
   whose process is no longer alive (a writer killed by SIGKILL, a power cut).
 """
@@ -30,6 +31,8 @@ STALE = re.compile(r"^\..*\." + re.escape(TEMP_MARK) + r"\.(\d+)\.")
 WAIT_VARIABLE = "CNLMC_LOCK_WAIT"
 DEFAULT_WAIT_S = 60.0
 POLL_S = 0.05
+#: flock's errors on a file system that has no locks
+UNLOCKABLE = {errno.ENOLCK, errno.EOPNOTSUPP, errno.ENOTSUP, errno.EINVAL}
 #: the longest part of a destination's name a temp's name repeats (the temp stays under NAME_MAX)
 TEMP_NAME_PART = 100
 
@@ -127,6 +130,10 @@ class FolderLock:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
             return False
+        except OSError as exc:
+            if exc.errno not in UNLOCKABLE:
+                raise
+            return True  # a file system without locks (some FUSE mounts): written unlocked, as before
         try:
             now = os.stat(self.path, follow_symlinks=False)
         except FileNotFoundError:

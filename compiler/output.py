@@ -218,9 +218,9 @@ class Staging:
         """Create `folder` (when missing) and lock it now, before anything is staged there."""
         try:
             _make_parents(Path(folder), self.made)
+            self._lock(Path(os.path.realpath(folder)))
         except OSError as exc:
             raise os_error(folder, exc) from None
-        self._lock(Path(os.path.realpath(folder)))
 
     def _lock(self, folder: Path) -> None:
         if folder not in self.locks:
@@ -257,7 +257,10 @@ class Staging:
         if not new and not os.path.isdir(folder):
             return
         if os.path.isdir(folder):
-            self._lock(Path(os.path.realpath(folder)))
+            try:
+                self._lock(Path(os.path.realpath(folder)))
+            except OSError as exc:
+                raise os_error(folder, exc) from None
         old = read_manifest(Path(folder))
         if new:
             self.add(Path(folder) / MANIFEST_NAME, _writer(manifest_text(new).encode("utf-8")))

@@ -23,8 +23,9 @@ from tests.helpers import run_cnlmc
 pytestmark = pytest.mark.oiio
 pytest.importorskip("OpenImageIO")
 
-#: many materials with maps: a bake that runs long enough to be interrupted between two of them
-SLOW = "heavily rusted iron\n" + "hammered copper\n" * 40
+#: many materials with maps: a bake that runs long enough (tens of seconds) to be interrupted
+#: between two of them; the tests stop it as soon as its first maps are staged
+SLOW = "heavily rusted iron\n" * 100
 KEEP = b"a file that was there before"
 
 
@@ -99,21 +100,39 @@ def test_temps_of_a_killed_bake_are_removed_by_the_next_writer(slow_source: Path
     assert entries(out).keys() == {"keep.txt", "hammered_copper_normal.png"}  # stale temps and lock gone
 
 
-def test_a_second_bake_into_a_locked_folder_fails_clearly(slow_source: Path, out: Path, tmp_path: Path) -> None:
-    first = start_bake(slow_source, out, "--size", "256")
+def test_a_second_writer_into_a_locked_folder_fails_clearly(out: Path, tmp_path: Path) -> None:
+    small = tmp_path / "one.cnl"
+    small.write_text("hammered copper\n")
+    holder = FolderLock(out, wait=0)  # this test's process is the first writer
+    holder.acquire()
     try:
-        wait_for(lambda: (out / LOCK_NAME).exists(), first, "lock")
-        small = tmp_path / "one.cnl"
-        small.write_text("hammered copper\n")
         env = {**os.environ, "CNLMC_LOCK_WAIT": "0.5"}
         second = run_cnlmc("bake", str(small), "-o", str(out), "--size", "16", env=env)
-        assert second.returncode == 2, second.stderr
-        assert f"cannot write into '{out}': another cnlmc (process {first.pid}) is writing there" in second.stderr
-        assert "CNLMC_LOCK_WAIT" in second.stderr and "internal error" not in second.stderr
+    finally:
+        holder.release()
+    assert second.returncode == 2, second.stderr
+    assert f"cannot write into '{out}': another cnlmc (process {os.getpid()}) is writing there" in second.stderr
+    assert "waited 0.5 s" in second.stderr and "CNLMC_LOCK_WAIT" in second.stderr
+    assert "internal error" not in second.stderr
+    assert entries(out) == {"keep.txt": KEEP}
+
+
+def test_a_second_bake_waits_for_the_first(slow_source: Path, out: Path, tmp_path: Path) -> None:
+    first = start_bake(slow_source, out, "--size", "512")
+    try:
+        wait_for(lambda: bool(temps(out)), first, "staged map")
+        small = tmp_path / "one.cnl"
+        small.write_text("hammered copper\n")
+        second = start_bake(small, out, "--size", "16")
+        time.sleep(4.0)  # long enough to start, compile and bake; then it waits for the lock
+        assert first.poll() is None, "the first bake ended too soon for this test"
+        assert second.poll() is None, second.communicate()  # still waiting for the lock
+        assert not (out / "hammered_copper_normal.png").exists()
     finally:
         first.send_signal(signal.SIGTERM)
         first.communicate(timeout=120)
-    assert entries(out) == {"keep.txt": KEEP}
+    assert second.wait(timeout=240) == 0, second.communicate()
+    assert entries(out).keys() == {"keep.txt", "hammered_copper_normal.png"}
 
 
 def test_two_bakes_into_one_folder_do_not_mix(tmp_path: Path, out: Path) -> None:
