@@ -88,7 +88,7 @@ def test_a_crafted_pickle_at_the_cache_path_never_runs(tmp_path, where):
 
 
 def test_a_crafted_json_cache_with_a_good_checksum_cannot_smuggle_a_map_role(tmp_path, stdlib):
-    data = to_data(stdlib)
+    data = load_json(dump_json(to_data(stdlib)))  # a copy: the shared lexicon stays as it is
     data["entries"]["nouns"]["oak"][0]["maps"] = {"a/../../../ESCAPED": {"graph": "wood"}}
     path = lexicon_cache_file(tmp_path)
     path.parent.mkdir(parents=True)

@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import math
 import sys
+import tomllib
 from pathlib import Path
 from typing import Any
 
@@ -14,7 +15,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from cnlmc.api import compile_source
-from cnlmc.lexicon import load_lexicon
+from cnlmc.cache import dump_json, load_json
+from cnlmc.lexicon import Lexicon, from_data, load_lexicon, to_data
+from cnlmc.lexicon_schema import LexiconError
 from cnlmc.material import Document
 
 REFINEMENTS = [
@@ -65,6 +68,17 @@ def test_a_refinement_repeated_past_overflow_gives_strict_json_and_a_warning() -
     assert w107 and w107[0].hints == ("set by: more grain (1751 times)",)  # repeats named once
 
 
+def unchecked_lexicon(folder: Path) -> Lexicon:
+    """The stdlib plus a folder's entries, put together without the loader's checks (as a program
+    building a Lexicon could): the IR boundary must still hold against such data."""
+    data = load_json(dump_json(to_data(load_lexicon())))
+    for path in folder.glob("*.toml"):
+        category = path.name.split("_")[0]
+        for key, fields in tomllib.loads(path.read_text("utf-8")).items():
+            data["entries"][category][key] = [fields, str(path)]
+    return from_data(data)
+
+
 def test_nan_and_infinity_from_lexicon_formulas_are_replaced(tmp_path: Path) -> None:
     (tmp_path / "nouns_studio.toml").write_text(
         '[unobtainium]\nclass = "metal"\nmodel = "conductor"\n'
@@ -78,7 +92,11 @@ def test_nan_and_infinity_from_lexicon_formulas_are_replaced(tmp_path: Path) -> 
         ' { param = "k", op = "add", value = [0.0, -1e308, inf] }]\n',
         "utf-8",
     )
-    result = compile_source("cursed unobtainium", "x.cnl", load_lexicon([tmp_path]))
+    with pytest.raises(
+        LexiconError, match=r"adjectives_studio.toml:5:47: key 'cursed.effects\[0\].value': expected a finite"
+    ):
+        load_lexicon([tmp_path])  # the loader refuses such a folder, naming the key
+    result = compile_source("cursed unobtainium", "x.cnl", unchecked_lexicon(tmp_path))
     strict(result.ir)
     assert nonfinite_paths(result.ir) == []
     params = result.materials[0]["params"]
