@@ -53,10 +53,24 @@ def ir_json_text(document: Document | Mapping[str, Any]) -> str:
         materials: Iterable[object] = (m.to_ir() for m in document.materials)
     else:
         ir, materials = document, document["materials"]
-    fields = [f"  {_dumps(key)}: {_dumps(ir[key])}" for key in ("ir_version", "source", "lexicon", "colour_space")]
-    fields.append(f'  "materials": {_items(_dumps(m) for m in materials)}')
-    fields.append(f'  "diagnostics": {_items(_dumps(d) for d in ir["diagnostics"])}')
-    return "{\n" + ",\n".join(fields) + "\n}\n"
+    pieces = ["{\n"]
+    for key in ("ir_version", "source", "lexicon", "colour_space"):
+        pieces += ["  ", _dumps(key), ": ", _dumps(ir[key]), ",\n"]
+    _add_items(pieces, "materials", materials)
+    pieces.append(",\n")
+    _add_items(pieces, "diagnostics", ir["diagnostics"])
+    pieces.append("\n}\n")
+    return "".join(pieces)  # one join of the pieces: the text is copied once
+
+
+def _add_items(pieces: list[str], key: str, items: Iterable[object]) -> None:
+    """`  "key": [` then one item a line, or `[]`."""
+    pieces += ["  ", _dumps(key), ": ["]
+    empty = True
+    for item in items:
+        pieces += ["\n    " if empty else ",\n    ", _dumps(item)]
+        empty = False
+    pieces.append("]" if empty else "\n  ]")
 
 
 def _head(document: Document) -> dict[str, object]:
@@ -66,11 +80,6 @@ def _head(document: Document) -> dict[str, object]:
         "lexicon": list(document.lexicon),
         "colour_space": document.colour_space,
     }
-
-
-def _items(lines: Iterable[str]) -> str:
-    body = ",\n".join(f"    {line}" for line in lines)
-    return f"[\n{body}\n  ]" if body else "[]"
 
 
 def _dumps(value: object) -> str:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from typing import Any
 
 from . import ast
@@ -103,23 +104,51 @@ def _phrase(material: ast.Material) -> str:
 
 def analyze(doc: ast.Document, ctx: Context) -> tuple[list[MaterialState], list[Diagnostic]]:
     """All material states of a document, and every diagnostic, sorted by position."""
+    diags: list[Diagnostic] = []
+    states = list(iter_states(doc, ctx, diags))
+    return states, sort_diagnostics(diags)
+
+
+def iter_states(doc: ast.Document, ctx: Context, diags: list[Diagnostic]) -> Iterator[MaterialState]:
+    """Each material state in document order, made as it is asked for; `diags` gets the document's
+    diagnostics first, then each state's new ones as it is made (variants of one phrase repeat the
+    same warnings: each is reported once). Each material's syntax tree is let go once its states
+    are made: a caller that keeps no state keeps no tree."""
     pairs = attach_refinements(doc)  # may add W104 to the document's diagnostics
-    diags = list(doc.diagnostics)
-    bad_lines = {d.span.line for d in diags if d.is_error and d.span}
-    states: list[MaterialState] = []
+    diags += doc.diagnostics
+    return _states(pairs, {d.span.line for d in diags if d.is_error and d.span}, ctx, diags)
+
+
+def _states(
+    pairs: list[tuple[ast.Material, list[ast.Refinement]]], bad_lines: set[int], ctx: Context, diags: list[Diagnostic]
+) -> Iterator[MaterialState]:
+    seen = set(diags)
     used: dict[str, int] = {}
-    for material, refinements in pairs:
+    pairs.reverse()  # popped from the end: document order, and each pair let go once used
+    while pairs:
+        material, refinements = pairs.pop()
         if material.span.line in bad_lines:
             continue  # reported already; half-understood materials are not emitted
         refinements = [r for r in refinements if r.span.line not in bad_lines]
-        states += build_states(material, refinements, ctx, material_name(material, used), diags)
-    seen = set(diags)
-    for state in states:  # variants of one phrase repeat the same warnings: report each once
-        for d in state.diagnostics:
-            if d not in seen:
-                seen.add(d)
-                diags.append(d)
-    return states, sort_diagnostics(diags)
+        for state in build_states(material, refinements, ctx, material_name(material, used), diags):
+            for d in state.diagnostics:
+                if d not in seen:
+                    seen.add(d)
+                    diags.append(d)
+            yield state
+
+
+def analyze_to_ir(doc: ast.Document, ctx: Context) -> tuple[dict[str, Any], list[Diagnostic]]:
+    """The IR document and the sorted diagnostics, each state turned into its IR as soon as it is
+    made and let go: the syntax tree and the states are never all held at once (doc.items is emptied)."""
+    diags: list[Diagnostic] = []
+    convention = ctx.settings.get("alpha_convention", Params.alpha_convention)
+    rounded_optics = ctx.lexicon.caches.rounded_optics
+    states = iter_states(doc, ctx, diags)
+    doc.items.clear()  # iter_states holds the material/refinement pairs from here on
+    materials = [material_ir(state, convention, rounded_optics) for state in states]
+    diags = sort_diagnostics(diags)
+    return document_ir(materials, diags, ctx.filename, ctx.lexicon.sources), diags
 
 
 def sort_diagnostics(diags: list[Diagnostic]) -> list[Diagnostic]:

@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from . import ast
-from .analyze import analyze, to_ir
+from .analyze import analyze, analyze_to_ir, to_ir
 from .diagnostics import Diagnostic, has_errors, render_all
 from .document import parse_document
 from .lexicon import Lexicon, cached_lexicon
@@ -83,11 +83,10 @@ def compile_source(
     with cyclic_gc_paused():
         doc = parse_document(source, lexicon, filename)
         ctx = Context(lexicon, seed=seed, filename=filename)
-        states, diags = analyze(doc, ctx)
-        ir = to_ir(states, diags, ctx)
         if not keep_stages:
-            return Result(ir, diags)
-        return Result(ir, diags, doc, states)
+            return Result(*analyze_to_ir(doc, ctx))
+        states, diags = analyze(doc, ctx)
+        return Result(to_ir(states, diags, ctx), diags, doc, states)
 
 
 def compile_phrase(phrase: str, lexicon: Lexicon | None = None, seed: int = 0) -> JSONDict:
