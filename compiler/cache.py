@@ -12,7 +12,8 @@ that does not parse, data the caller's decoder refuses) is ignored and rebuilt, 
 
 The key is the names, sizes and modification times of the source files plus the cnlmc version;
 any change makes a new entry. The folder is $XDG_CACHE_HOME/cnlmc (or ~/.cache/cnlmc), made
-private to the user (mode 0700, files 0600). After each write the folder is trimmed to
+private to the user (mode 0700, files 0600); a folder owned by someone else or writable by group
+or others is not used at all. After each write the folder is trimmed to
 CNLMC_CACHE_MAX_BYTES (default 32 MiB), least recently used first; leftover temporary files
 older than an hour and pickled caches of older versions (*.pickle, *.lark-cache) are deleted. Set
 CNLMC_NO_CACHE=1 to bypass the cache.
@@ -122,9 +123,21 @@ class DiskCache:
     def path(self, name: str) -> Path:
         return self.folder / f"{name}{SUFFIX}"
 
+    def private(self) -> bool:
+        """Whether the folder is this user's own and no one else may write in it (owner, no group or
+        other write bit): only then are its files trusted to be what cnlmc wrote (as ssh does)."""
+        try:
+            info = os.stat(self.folder)
+        except OSError:
+            return False
+        owner = getattr(os, "getuid", None)
+        return (owner is None or info.st_uid == owner()) and not info.st_mode & 0o022
+
     def load(self, name: str) -> bytes:
         """The stored payload, or Corrupt (also for a missing or unreadable file)."""
         path = self.path(name)
+        if not self.private():
+            raise Corrupt(f"{self.folder} is not private to this user: not used")
         try:
             blob = read_bytes(str(path), limit=max(self.max_bytes, 1), what="cache file")
         except UsageError as exc:  # missing, unreadable, not a regular file, too large: rebuild
@@ -146,6 +159,8 @@ class DiskCache:
             return
         try:
             self.folder.mkdir(mode=0o700, parents=True, exist_ok=True)
+            if not self.private():
+                return
             fd, tmp = tempfile.mkstemp(dir=self.folder, prefix=TEMP_PREFIX, suffix=SUFFIX)
             try:
                 with os.fdopen(fd, "wb") as handle:

@@ -227,3 +227,19 @@ def test_a_crafted_lark_pickle_in_the_cache_never_runs(tmp_path):
     assert result.returncode == 0, result.stderr
     assert not marker.exists()
     assert not list(folder.glob("*.lark-cache"))  # removed with the other old pickles
+
+
+def test_a_cache_folder_others_may_write_is_not_used(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    monkeypatch.delenv("CNLMC_NO_CACHE", raising=False)
+    folder = tmp_path / "cnlmc"
+    folder.mkdir()
+    folder.chmod(0o777)
+    source = tmp_path / "source.txt"
+    source.write_text("v1")
+    name = f"test-{source_key('test', [source])}"
+    (folder / f"{name}{SUFFIX}").write_bytes(encode(name, dump_json({"planted": True})))
+    assert cached("test", [source], lambda: {"built": True}, dump_json, load_json) == {"built": True}
+    assert [p.name for p in folder.iterdir()] == [f"{name}{SUFFIX}"]  # nothing written there either
+    folder.chmod(0o700)
+    assert cached("test", [source], lambda: {"built": True}, dump_json, load_json) == {"planted": True}
