@@ -23,9 +23,17 @@ VIDEO_SUFFIXES = (".mp4", ".avi", ".mov", ".mkv", ".m4v", ".webm")
 
 def phrase_source(text: str, max_bytes: int) -> tuple[str, str]:
     """The AR phrase argument: a material file when such a file exists, else the phrase itself."""
-    if Path(text).is_file():
+    if names_a_file(text):
         return read_source(text, max_bytes)
     return text, "<phrase>"
+
+
+def names_a_file(text: str) -> bool:
+    """Whether the text is the path of an existing file (a phrase too long for a path is not)."""
+    try:
+        return Path(text).is_file()
+    except (OSError, ValueError):  # ENAMETOOLONG, a NUL character
+        return False
 
 
 def require_opencv() -> None:
