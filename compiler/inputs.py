@@ -84,7 +84,7 @@ def read_text(path: str, *, limit: int = DEFAULT_MAX_BYTES, what: str = "file", 
 def read_bytes(path: str, *, limit: int = DEFAULT_MAX_BYTES, what: str = "file", option: str = "--max-bytes") -> bytes:
     """The bytes of a regular file (or standard input for `-`), at most `limit` of them."""
     if path == "-":
-        return _bounded(sys.stdin.buffer, "<stdin>", limit, None, option)
+        return _stdin(limit, option)
     try:
         _require_regular(os.stat(path).st_mode, path, what)  # a socket cannot even be opened: say what it is
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0))
@@ -103,6 +103,17 @@ def read_bytes(path: str, *, limit: int = DEFAULT_MAX_BYTES, what: str = "file",
             return _bounded(handle, path, limit, info.st_size, option)
         except OSError as exc:
             raise InputError(f"cannot read '{path}': {exc.strerror}") from None
+
+
+def _stdin(limit: int, option: str) -> bytes:
+    """Standard input, bounded; a closed one (`<&-`) is said, not a crash."""
+    stream = sys.stdin.buffer if sys.stdin is not None else None
+    if stream is None:
+        raise InputError("cannot read standard input: it is closed; give a file instead of '-'")
+    try:
+        return _bounded(stream, "<stdin>", limit, None, option)
+    except OSError as exc:
+        raise InputError(f"cannot read standard input: {exc.strerror}") from None
 
 
 def _require_regular(mode: int, path: str, what: str) -> None:

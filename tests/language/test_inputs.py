@@ -163,3 +163,16 @@ def test_nul_bytes_are_not_text(tmp_path):
     path.write_bytes(b"steel\x00\n")
     with pytest.raises(NotUTF8, match="not a text file"):
         read_text(str(path))
+
+
+@posix_only
+def test_a_closed_stdin_is_a_usage_error():
+    r = subprocess.run(
+        ["/bin/sh", "-c", f"'{sys.executable}' -m cnlmc compile - <&-"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert r.returncode == 2, r.stderr
+    assert "cannot read standard input" in r.stderr and "Traceback" not in r.stderr
