@@ -1,44 +1,57 @@
 """The lexicon: words as data (stdlib/lexicon/*.toml), overlays and user lexicons.
 
 Search order for an entry: user lexicon folders (first given wins), then named overlays
-(stdlib/overlays/NAME, e.g. 'paper' or the German 'de'; first given wins), then the bundled stdlib. Fields of a later-searched entry that the
-earlier one does not set are kept, so an overlay can change one number of a noun.
+(stdlib/overlays/NAME, e.g. 'paper' or the German 'de'; first given wins), then the bundled stdlib.
+Fields of a later-searched entry that the earlier one does not set are kept, so an overlay can
+change one number of a noun.
+
+The model (Entry, Lexicon, ...) is cnlmc.lexicon_model's, reading files cnlmc.lexicon_load's;
+this module loads (load_lexicon), caches on disk as plain data (cached_lexicon) and re-exports.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from collections.abc import Iterable
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
-from types import MappingProxyType
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from .cache import cached, dump_json, load_json
-from .diagnostics import FailureKey, Mistake
 from .graphs import graph_names
+from .lexicon_model import (
+    CATEGORY_TAGS,
+    SPECIAL_FILES,
+    Entry,
+    Forms,
+    Lexicon,
+    LexiconCaches,
+    keyword_table,
+    normalise,
+)
 from .material import MAP_ROLES
-from .syntax import ShapeCache
-from .tagged import Candidate
 
-if TYPE_CHECKING:  # the tagger reads the lexicon; a lexicon keeps the tagger made for it
-    from .tagger import Tagger
+__all__ = [
+    "CATEGORY_TAGS",
+    "SPECIAL_FILES",
+    "Entry",
+    "Forms",
+    "Lexicon",
+    "LexiconCaches",
+    "Overlays",
+    "cached_lexicon",
+    "from_data",
+    "keyword_table",
+    "lexicon_sources",
+    "load_lexicon",
+    "normalise",
+    "to_data",
+]
 
-CATEGORY_TAGS = {
-    "nouns": "NOUN",
-    "adjectives": "ADJ",
-    "adverbs": "ADV",
-    "colours": "COLOR",
-    "shades": "SHADE",
-    "refinements": "REFINE",
-    "properties": "PROP",
-    "coats": "COAT",
-}
-SPECIAL_FILES = ("settings", "inflections", "keywords")
 #: The modules that read and check lexicon files: a change to one of them makes a new cache entry.
 READER_MODULES = (
     "lexicon",
+    "lexicon_model",
     "lexicon_load",
     "lexicon_schema",
     "lexicon_refs",
@@ -48,182 +61,6 @@ READER_MODULES = (
     "params",
 )
 Overlays = str | tuple[str, ...] | None  # overlay names, e.g. "paper" or ("de", "paper")
-
-
-@dataclass(frozen=True)
-class Entry:
-    category: str
-    key: str
-    data: dict[str, Any]
-    origin: str
-
-    @property
-    def tag(self) -> str:
-        return CATEGORY_TAGS[self.category]
-
-    def get(self, name: str, default: Any = None) -> Any:
-        return self.data.get(name, default)
-
-
-Forms = dict[tuple[str, ...], list[Entry]]  # normalised surface form -> the entries spelled so
-
-
-def normalise(surface: str) -> tuple[str, ...]:
-    """'Powder  Coated' -> ('powder', 'coated'): lower case, split on white space."""
-    return tuple(surface.lower().split())
-
-
-class LexiconCaches:
-    """What is derived from one lexicon while it is used, kept with it (never written to the disk cache).
-
-    - tagger: the Tagger of this lexicon (document.parse_document makes it on first use)
-    - tags: word tuple -> the candidate tags the tagger found for it
-    - suggestions: (word, categories, limit) -> the closest surface forms (Lexicon.suggest)
-    - suggestion_pools: categories -> the sorted surface forms suggestions are drawn from
-    - shapes: parse shapes by the candidate tags of a line's words (parser.parse_line_shape)
-    - mistakes: parser failure key -> the friendly message learned from grammar/bad_examples.toml
-      (None until a line first fails to parse; mistakes.known_mistake)
-    - colour_phrases: (phrase, CIELAB) of every colour and shade+colour (the LSP's colour picker)
-    - effect_rules: (rule, where the effect list is, effect index, weight) -> the provenance text
-      of that lexicon effect (passes/words.py)
-    - rounded_optics: (noun key, parameter) -> the noun's list value rounded for the IR (ir.py)
-    """
-
-    MAX_ENTRIES = 4096  # a memo this full starts over
-
-    def __init__(self) -> None:
-        self.tagger: Tagger | None = None
-        self.tags: dict[tuple[str, ...], tuple[Candidate, ...]] = {}
-        self.suggestions: dict[tuple[str, tuple[str, ...], int], list[str]] = {}
-        self.suggestion_pools: dict[tuple[str, ...], list[str]] = {}
-        self.shapes = ShapeCache()
-        self.mistakes: dict[FailureKey, Mistake] | None = None
-        self.effect_rules: dict[tuple[str, str, int, float], str] = {}
-        self.colour_phrases: tuple[tuple[str, tuple[float, float, float]], ...] | None = None
-        self.rounded_optics: dict[tuple[str, str], list[float]] = {}
-
-
-class Lexicon:
-    """Entries by category, an index of surface forms, inflection rules and settings.
-
-    Everything derived from it while it is used lives in `caches` (a LexiconCaches).
-    """
-
-    def __init__(
-        self,
-        entries: dict[str, dict[str, Entry]],
-        settings: dict[str, Any],
-        inflections: list[tuple[str, str]],
-        sources: list[str],
-        keywords: dict[str, str] | None = None,
-    ) -> None:
-        self.keywords = {**keyword_table(), **(keywords or {})}
-        self.entries = entries
-        self.settings = settings
-        self.inflections = inflections
-        self.sources = sources
-        self.forms = _index_forms(entries)
-        self.max_form_words = max(len(f) for f in self.forms)
-        self.followers = _multi_word_followers(self.forms)
-        self.lengths_from = _multi_word_lengths(self.forms)
-        self.caches = LexiconCaches()
-
-    def multi_word_followers(self) -> dict[str, frozenset[str]]:
-        """First word of a multi-word form -> the words that can come second ("stainless" -> {"steel"})."""
-        return self.followers
-
-    def multi_word_lengths(self) -> dict[str, tuple[int, ...]]:
-        """First word -> the word counts (> 1) of the forms it starts, longest first."""
-        return self.lengths_from
-
-    def entry(self, category: str, key: str) -> Entry | None:
-        by_key = self.entries.get(category)
-        return None if by_key is None else by_key.get(key)
-
-    def require(self, category: str, key: str) -> Entry:
-        """The entry of a word the tagger found in this lexicon (KeyError if there is none)."""
-        return self.entries[category][key]
-
-    def lookup(self, words: tuple[str, ...]) -> list[Entry]:
-        return self.forms.get(words, [])
-
-    def base_forms(self, word: str) -> list[str]:
-        """Candidate base forms of an unknown word by the inflection rules, in order."""
-        out = []
-        for suffix, repl in self.inflections:
-            if word.endswith(suffix) and len(word) > len(suffix) + 2:
-                out.append(word[: len(word) - len(suffix)] + repl)
-        return out
-
-    def suggest(self, word: str, categories: Iterable[str] | None = None, limit: int = 3) -> list[str]:
-        """Closest surface forms to `word`, best first (rapidfuzz ratio >= 70)."""
-        key = (word.lower(), tuple(categories or CATEGORY_TAGS), limit)
-        memo = self.caches.suggestions
-        if key not in memo:
-            if len(memo) > LexiconCaches.MAX_ENTRIES:
-                memo.clear()
-            memo[key] = self._closest(*key)
-        return list(memo[key])
-
-    def _closest(self, word: str, categories: tuple[str, ...], limit: int) -> list[str]:
-        from rapidfuzz import fuzz, process  # only needed when a word is unknown
-
-        found = process.extract(word, self._pool(categories), scorer=fuzz.ratio, limit=limit, score_cutoff=70)
-        return [match for match, _score, _i in found]
-
-    def _pool(self, categories: tuple[str, ...]) -> list[str]:
-        pools = self.caches.suggestion_pools
-        if categories not in pools:
-            pools[categories] = sorted(
-                " ".join(form) for form, hits in self.forms.items() if any(e.category in categories for e in hits)
-            )
-        return pools[categories]
-
-    def all_of(self, category: str) -> dict[str, Entry]:
-        return self.entries.get(category, {})
-
-
-def _multi_word_followers(forms: Forms) -> dict[str, frozenset[str]]:
-    followers: dict[str, set[str]] = {}
-    for form in forms:
-        if len(form) > 1:
-            followers.setdefault(form[0], set()).add(form[1])
-    return {first: frozenset(seconds) for first, seconds in followers.items()}
-
-
-def _multi_word_lengths(forms: Forms) -> dict[str, tuple[int, ...]]:
-    lengths: dict[str, set[int]] = {}
-    for form in forms:
-        if len(form) > 1:
-            lengths.setdefault(form[0], set()).add(len(form))
-    return {first: tuple(sorted(ns, reverse=True)) for first, ns in lengths.items()}
-
-
-def _index_forms(entries: dict[str, dict[str, Entry]]) -> Forms:
-    forms: Forms = {}
-    for by_key in entries.values():
-        for entry in by_key.values():
-            for surface in [entry.key, *entry.data.get("aliases", ())]:
-                hits = forms.setdefault(tuple(surface.lower().split()), [])
-                if not any(hit is entry for hit in hits):  # identity: comparing entries compares their data
-                    hits.append(entry)
-    return forms
-
-
-def keyword_table(table: dict[str, Any] | None = None) -> dict[str, str]:
-    """Closed-class words -> grammar terminal, from grammar/keywords.toml (or a given table)."""
-    if table is None:
-        return dict(_bundled_keywords())
-    return {word: terminal for terminal, words in table["terminals"].items() for word in words}
-
-
-@lru_cache(maxsize=1)
-def _bundled_keywords() -> Mapping[str, str]:
-    """grammar/keywords.toml's table, read once per process (immutable package data)."""
-    import tomllib
-
-    text = resources.files("cnlmc.grammar").joinpath("keywords.toml").read_text("utf-8")
-    return MappingProxyType(keyword_table(tomllib.loads(text)))
 
 
 def load_lexicon(user_paths: Iterable[str | Path] = (), overlay: Overlays = None) -> Lexicon:

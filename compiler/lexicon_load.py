@@ -21,7 +21,7 @@ from typing import Any
 
 from .errors import UsageError
 from .inputs import DEFAULT_MAX_BYTES, InputTooLarge, decode_utf8, read_bytes
-from .lexicon import CATEGORY_TAGS, SPECIAL_FILES, Entry, Lexicon, keyword_table
+from .lexicon_model import CATEGORY_TAGS, SPECIAL_FILES, Entry, Lexicon, keyword_table
 from .lexicon_refs import RawEntry, References
 from .lexicon_schema import MAX_TEXT, Checker, LexiconError, check_entry, check_required, did_you_mean
 from .lexicon_source import SourceText, dotted
