@@ -7,8 +7,8 @@ server's RSS is back within 50 MB of where it started.
 Talks to `cnlmc lsp` over stdio with raw JSON-RPC frames; RSS is the server process's VmRSS
 from /proc/PID/status (Linux). "start" is after initialize and one small document opened and
 closed (what the first analysis loads is not retention); "peak" is the highest RSS sampled
-while documents are open; "after close" is once every document is closed and the server has
-answered a request sent after the last didClose.
+while documents are open; "after close" is once every document is closed (the server clears a
+closed document's problems after it has dropped what it kept for it).
 """
 
 from __future__ import annotations
@@ -109,7 +109,15 @@ def open_and_wait(server: Server, uri: str, text: str) -> int:
 
 
 def close(server: Server, uri: str) -> None:
+    """Close a document and wait until the server has dropped it (it clears the document's
+    problems last, after giving the memory back)."""
     server.notify("textDocument/didClose", {"textDocument": {"uri": uri}})
+    server.wait(
+        lambda m: m.get("method") == "textDocument/publishDiagnostics"
+        and m["params"]["uri"] == uri
+        and not m["params"]["diagnostics"]
+        and "version" not in m["params"]
+    )
 
 
 def main() -> None:
@@ -129,7 +137,6 @@ def main() -> None:
     cold = rss_mb(pid)
     open_and_wait(server, "file:///warm-up.cnl", "blu plastic\nzorblat steel")
     close(server, "file:///warm-up.cnl")
-    server.request("cnlmc/sync", {})
     start = rss_mb(pid)
     peak, chars, diagnostics = start, 0, 0
     t0 = time.perf_counter()
@@ -143,7 +150,6 @@ def main() -> None:
             peak = max(peak, rss_mb(pid))
         for uri in uris:
             close(server, uri)
-        server.request("cnlmc/sync", {})
         print(f"  {batch + len(uris):4d} documents opened and closed: RSS {rss_mb(pid):8.1f} MB", flush=True)
     after = rss_mb(pid)
     elapsed = time.perf_counter() - t0

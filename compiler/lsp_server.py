@@ -78,6 +78,7 @@ class CnlServer(LanguageServer):
         self.lsp_diagnostics = LspDiagnostics()
         self.lexicon_error: str | None = None
         self.memory = MemoryRelease()
+        self.closing: set[asyncio.Task[None]] = set()
 
     @property
     def encoding(self) -> str:
@@ -210,8 +211,16 @@ class CnlServer(LanguageServer):
             {"jsonrpc": "2.0", "method": types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS, "params": params}
         )
 
+    def start_close(self, uri: str) -> None:
+        """Close in the background (a task of our own: pygls keeps the future of an async
+        notification handler for ever)."""
+        task = asyncio.ensure_future(self.close(uri))
+        self.closing.add(task)
+        task.add_done_callback(self.closing.discard)
+
     async def close(self, uri: str) -> None:
-        """Forget everything kept for a closed document, then give the memory back."""
+        """Forget everything kept for a closed document and give the memory back; the empty
+        publishDiagnostics that clears the editor's problems comes last, once that is done."""
         for table in (self.pending, self.analyses):
             running = table.pop(uri, None)
             task = running[2] if isinstance(running, tuple) else running
@@ -220,7 +229,6 @@ class CnlServer(LanguageServer):
         self.generation.pop(uri, None)
         snap = self.snapshots.pop(uri, None)
         self.lsp_diagnostics.forget(uri)
-        self.publish(uri, None, [])
         if snap is not None:
             await self.worker.call(self.analyzer.forget, snap)
         if not self.documents:
@@ -228,6 +236,8 @@ class CnlServer(LanguageServer):
             self.lsp_diagnostics.clear()
         del snap
         self.memory.release()
+        if uri not in self.documents:  # not opened again meanwhile
+            self.publish(uri, None, [])
 
     # ------------------------------------------------------------------ serving
 
@@ -380,8 +390,8 @@ def did_change(ls: CnlServer, params: types.DidChangeTextDocumentParams) -> None
 
 
 @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
-async def did_close(ls: CnlServer, params: types.DidCloseTextDocumentParams) -> None:
-    await ls.close(params.text_document.uri)
+def did_close(ls: CnlServer, params: types.DidCloseTextDocumentParams) -> None:
+    ls.start_close(params.text_document.uri)
 
 
 @server.feature(types.TEXT_DOCUMENT_HOVER)

@@ -129,6 +129,14 @@ class CnlProtocol(LanguageServerProtocol):
             log.warning("ignored '%s': %s", method, exc)
             return
         self.handle_message(message)
+        self._forget_finished_notifications()
+
+    def _forget_finished_notifications(self) -> None:
+        """pygls files the future of every notification it runs with the in-flight requests and
+        never takes it out (one per keystroke, for ever); requests are taken out when answered."""
+        finished = [key for key, future in self._request_futures.items() if future.done()]
+        for key in finished:
+            del self._request_futures[key]
 
     def _accept_response(self, data: dict[str, Any]) -> None:
         kind = types.ResponseErrorMessage if "error" in data else self._result_types.pop(data["id"], None)
