@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-import os
-import tempfile
+import io
 from pathlib import Path
 
 import numpy as np
 
-from cnlmc.output import usual_mode
+from cnlmc.output import write_files
 
 from .colour import linear_to_srgb
 from .evaluate import evaluate
@@ -52,13 +51,12 @@ def render_contact_sheet(path, size: int = 256, seed: int = 0) -> Path:
 
 
 def save_atomically(figure, path: Path) -> Path:
+    """The figure as a PNG, written through the one output writer (cnlmc.output: atomic, only a
+    regular file, a usage error naming the path when it cannot be written)."""
     import matplotlib.pyplot as plt
 
-    path.parent.mkdir(parents=True, exist_ok=True)
-    handle, temp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=".png", dir=path.parent)
-    os.close(handle)
-    figure.savefig(temp, dpi=100)
+    png = io.BytesIO()
+    figure.savefig(png, format="png", dpi=100)
     plt.close(figure)
-    os.chmod(temp, usual_mode())
-    os.replace(temp, path)
-    return path
+    [written] = write_files([(path, png.getvalue())])
+    return written
