@@ -97,7 +97,13 @@ class References:
     def _refinement(self, key: str, entry: RawEntry) -> None:
         targets = (*REFINEMENT_TARGETS, *self.raw["properties"])
         self._name(entry, key, "target", targets, "refinement target (a property, 'colour' or 'any')")
-        if entry.data.get("target") == "colour" and "step" not in entry.data:
+        target = entry.data.get("target")
+        if target != "colour" and "step" in entry.data:
+            where = f"properties.{target}.step" if target != "any" else "the step of the property it names"
+            entry.checker("step").fail(
+                (key, "step"), f"a step is used only with target = 'colour' (here {where} applies)"
+            )
+        if target == "colour" and "step" not in entry.data:
             entry.checker("target").fail(
                 (key,), "a refinement of the colour needs a step, e.g. step = { op = 'mul', value = 0.5 }"
             )

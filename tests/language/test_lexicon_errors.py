@@ -377,6 +377,11 @@ SCHEMA_CASES = [
     ("refinements_x.toml", '[darker]\ntarget = "colur"\n', "did you mean 'colour'?"),
     (
         "refinements_x.toml",
+        '[rougher]\nstep = { op = "add", value = 0.3 }\n',
+        "2:1: key 'rougher.step': a step is used only with target = 'colour' (here properties.roughness.step applies)",
+    ),
+    (
+        "refinements_x.toml",
         '[dimmer2]\ndirection = -1\ntarget = "colour"\ndoc = "d"\nexample = "dimmer2"\n',
         "a refinement of the colour needs a step",
     ),
