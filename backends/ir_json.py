@@ -9,14 +9,17 @@ the typed records' copy back to JSON; given a Document, each material is copied 
 
 from __future__ import annotations
 
+import io
 import json
-from collections.abc import Iterable, Mapping
-from typing import Any
+from collections.abc import Iterable, Mapping, Sequence
+from typing import Any, BinaryIO
 
 from cnlmc.material import Document, Material
 
 from .base import DOCUMENT_FIELDS, Artifact, Options, Target, as_document
 from .capabilities import ALL_FEATURES, EmitResult
+
+HEAD_FIELDS = ("ir_version", "source", "lexicon", "colour_space")
 
 
 class IrTarget(Target):
@@ -26,6 +29,11 @@ class IrTarget(Target):
 
     def emit(self, document: Document, options: Options) -> EmitResult:
         return EmitResult([Artifact("materials.ir.json", ir_json_text(document))])
+
+    def material_writer(self, out: BinaryIO, head: Mapping[str, Any]) -> IrWriter:
+        """Streaming (cnlmc.commands.compile_streamed): the document written to `out` as its
+        materials come, each one checked before it is written."""
+        return IrWriter(out, head, check=True)
 
     def emit_ir(self, ir: Document | Mapping[str, Any], pairs: Mapping[str, object] | None = None) -> EmitResult:
         options = self.parse_options(pairs)
@@ -49,28 +57,51 @@ def checked(ir: Mapping[str, Any]) -> Mapping[str, Any]:
 def ir_json_text(document: Document | Mapping[str, Any]) -> str:
     """The document as JSON text (the layout in the module's doc)."""
     if isinstance(document, Document):
-        ir: Mapping[str, Any] = {**_head(document), "diagnostics": document.diagnostics}
+        head: Mapping[str, Any] = _head(document)
         materials: Iterable[object] = (m.to_ir() for m in document.materials)
+        diagnostics: Sequence[object] = document.diagnostics
     else:
-        ir, materials = document, document["materials"]
-    pieces = ["{\n"]
-    for key in ("ir_version", "source", "lexicon", "colour_space"):
-        pieces += ["  ", _dumps(key), ": ", _dumps(ir[key]), ",\n"]
-    _add_items(pieces, "materials", materials)
-    pieces.append(",\n")
-    _add_items(pieces, "diagnostics", ir["diagnostics"])
-    pieces.append("\n}\n")
-    return "".join(pieces)  # one join of the pieces: the text is copied once
+        head, materials, diagnostics = document, document["materials"], document["diagnostics"]
+    out = io.BytesIO()
+    writer = IrWriter(out, head)
+    for material in materials:
+        writer.write(material)
+    writer.finish(diagnostics)
+    return out.getvalue().decode("utf-8")
 
 
-def _add_items(pieces: list[str], key: str, items: Iterable[object]) -> None:
-    """`  "key": [` then one item a line, or `[]`."""
-    pieces += ["  ", _dumps(key), ": ["]
-    empty = True
-    for item in items:
-        pieces += ["\n    " if empty else ",\n    ", _dumps(item)]
-        empty = False
-    pieces.append("]" if empty else "\n  ]")
+class IrWriter:
+    """The IR document written to a binary file as it is made, in the layout of the module's doc
+    (what ir_json_text gives, byte for byte): the head at once, each material as it comes, the
+    diagnostics at the end. With `check`, each material is validated as every target types it
+    (ValueError naming it) before it is written, and the head and diagnostics at `finish`."""
+
+    def __init__(self, out: BinaryIO, head: Mapping[str, Any], check: bool = False) -> None:
+        self.out, self.head, self.check, self.count = out, head, check, 0
+        if check:
+            Document.from_ir({**head, "materials": [], "diagnostics": []})
+        pieces = ["{\n"]
+        for key in HEAD_FIELDS:
+            pieces += ["  ", _dumps(key), ": ", _dumps(head[key]), ",\n"]
+        pieces += ["  ", _dumps("materials"), ": ["]
+        self.out.write("".join(pieces).encode("utf-8"))
+
+    def write(self, material: object) -> None:
+        if self.check:
+            assert isinstance(material, Mapping)
+            Material.from_ir(material, f"materials[{self.count}]")
+        self.out.write(((",\n    " if self.count else "\n    ") + _dumps(material)).encode("utf-8"))
+        self.count += 1
+
+    def finish(self, diagnostics: Sequence[object]) -> None:
+        if self.check:
+            Document.from_ir({**self.head, "materials": [], "diagnostics": list(diagnostics)})
+        pieces = ["]" if not self.count else "\n  ]", ",\n", "  ", _dumps("diagnostics"), ": ["]
+        for i, item in enumerate(diagnostics):
+            pieces += [",\n    " if i else "\n    ", _dumps(item)]
+        pieces.append("\n  ]" if diagnostics else "]")
+        pieces.append("\n}\n")
+        self.out.write("".join(pieces).encode("utf-8"))
 
 
 def _head(document: Document) -> dict[str, object]:

@@ -1,7 +1,8 @@
 """Time, peak memory and output size of `cnlmc compile` on 1k / 10k / 100k-line files.
 
 Run: .venv/bin/python bench/scale_bench.py [--sizes 1000 10000 100000]
-Each size is a file of named material phrases, one per line (about 30 bytes a line), compiled
+Each size is a file of material phrases, one per line (about 35 bytes a line), drawn from 300
+distinct stdlib phrases (see phrase_pool), most of them named, some followed by a refinement line; compiled
 to IR in a fresh process (`python -m cnlmc compile FILE -o OUT`). Its wall and CPU time and its
 peak RSS come from that process's own rusage (os.wait4). Printed: per size, then the RSS per
 input line beyond the smallest size's (the goal is <= 2 KB) and time(largest)/time(previous)
@@ -12,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import random
 import subprocess
 import sys
 import tempfile
@@ -19,23 +21,38 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-PHRASES = (
-    "aluminum",
-    "anodized aluminum",
-    "blue anodized aluminum",
-    "lightly brushed, blue anodized aluminum",
-    "white varnished oak",
-    "oak with a glossy white varnish",
-    "red or blue anodized aluminum",
-    "heavily rusted iron",
-    "polished white marble",
-    "matte black rubber",
-    "gold plated steel",
-    "brushed and anodized titanium",
-    "frosted glass",
-    "deep red velvet",
-    "metallic red car paint",
-)
+POOL_SIZE = 300
+REFINEMENTS = ("darker", "lighter", "rougher", "smoother", "glossier", "duller")
+
+
+def phrase_pool(size: int = POOL_SIZE, seed: int = 13) -> list[str]:
+    """`size` distinct stdlib phrases, each compiling without a diagnostic: adjective-noun pairs,
+    colours, adverbs, comma groups, coat clauses and a few 'or' alternatives (variants), drawn
+    with a fixed seed from the stdlib lexicon's own word lists."""
+    from cnlmc.api import compile_source, lexicon_for
+
+    lexicon = lexicon_for()
+    adjectives, nouns = sorted(lexicon.all_of("adjectives")), sorted(lexicon.all_of("nouns"))
+    colours, adverbs = sorted(lexicon.all_of("colours")), sorted(lexicon.all_of("adverbs"))
+    coats = sorted(lexicon.all_of("coats"))
+    rng = random.Random(seed)
+    forms = (
+        lambda: f"{rng.choice(adjectives)} {rng.choice(nouns)}",
+        lambda: f"{rng.choice(colours)} {rng.choice(adjectives)} {rng.choice(nouns)}",
+        lambda: f"{rng.choice(adverbs)} {rng.choice(adjectives)}, {rng.choice(colours)} {rng.choice(nouns)}",
+        lambda: f"{rng.choice(nouns)} with a {rng.choice(colours)} {rng.choice(coats)}",
+        lambda: f"{rng.choice(colours)} or {rng.choice(colours)} {rng.choice(nouns)}",
+        lambda: rng.choice(nouns),
+    )
+    pool: list[str] = []
+    while len(pool) < size:
+        phrase = rng.choice(forms)()
+        if phrase in pool:
+            continue
+        result = compile_source(phrase, "<pool>", lexicon)
+        if result.materials and not result.diagnostics:  # no word ignored, nothing clamped
+            pool.append(phrase)
+    return pool
 
 
 @dataclass
@@ -49,10 +66,19 @@ class Run:
     exit_code: int
 
 
-def write_source(path: Path, lines: int) -> None:
+def write_source(path: Path, lines: int, pool: list[str], seed: int = 13) -> None:
+    """`lines` lines: phrases drawn from the pool, most named (`m12: ...`), a fifth unnamed (their
+    names come from the words, repeats numbered), and about one in seven followed by a refinement."""
+    rng = random.Random(seed)
     with path.open("w", encoding="utf-8") as out:
-        for n in range(lines):
-            out.write(f"m{n}: {PHRASES[n % len(PHRASES)]}\n")
+        n = 0
+        while n < lines:
+            phrase = rng.choice(pool)
+            out.write(f"m{n}: {phrase}\n" if rng.random() < 0.8 else f"{phrase}\n")
+            n += 1
+            if n < lines and rng.random() < 0.15:
+                out.write(f"{rng.choice(REFINEMENTS)}\n")
+                n += 1
 
 
 def compile_once(source: Path, output: Path) -> Run:
@@ -79,10 +105,11 @@ def main() -> int:
     parser.add_argument("--sizes", type=int, nargs="+", default=[1000, 10_000, 100_000])
     args = parser.parse_args()
     runs = []
+    pool = phrase_pool()
     with tempfile.TemporaryDirectory() as folder:
         for size in sorted(args.sizes):
             source, output = Path(folder) / f"{size}.cnl", Path(folder) / f"{size}.ir.json"
-            write_source(source, size)
+            write_source(source, size, pool)
             run = compile_once(source, output)
             runs.append(run)
             print(

@@ -7,7 +7,8 @@ from typing import Any
 
 from . import ast
 from .diagnostics import Diagnostic, warning
-from .ir import document_ir, material_ir
+from .document import iter_items
+from .ir import JSONDict, document_ir, material_ir
 from .params import Params
 from .passes.base import apply_noun
 from .passes.coats import apply_coat_clause
@@ -31,15 +32,17 @@ def attach_refinements(doc: ast.Document) -> list[tuple[ast.Material, list[ast.R
         elif pairs:
             pairs[-1][1].append(item)
         else:
-            doc.diagnostics.append(
-                warning(
-                    item.span,
-                    "W104",
-                    "a refinement needs a material above it",
-                    ("write the material first, e.g. 'blue anodized aluminum' then 'darker'",),
-                )
-            )
+            doc.diagnostics.append(_orphan(item))
     return pairs
+
+
+def _orphan(item: ast.Item) -> Diagnostic:
+    return warning(
+        item.span,
+        "W104",
+        "a refinement needs a material above it",
+        ("write the material first, e.g. 'blue anodized aluminum' then 'darker'",),
+    )
 
 
 def material_name(material: ast.Material, used: dict[str, int]) -> str:
@@ -149,6 +152,54 @@ def analyze_to_ir(doc: ast.Document, ctx: Context) -> tuple[dict[str, Any], list
     materials = [material_ir(state, convention, rounded_optics) for state in states]
     diags = sort_diagnostics(diags)
     return document_ir(materials, diags, ctx.filename, ctx.lexicon.sources), diags
+
+
+def iter_material_irs(source: str, ctx: Context, diags: list[Diagnostic]) -> Iterator[JSONDict]:
+    """Each material's IR in document order, made as it is asked for: the lines are parsed as they
+    are reached, and each material's syntax tree and states are let go once its IR is made (what
+    analyze_to_ir gives, and the same diagnostics). `diags` gets every diagnostic as it is found:
+    sort_diagnostics(diags) once the iterator is exhausted."""
+    convention = ctx.settings.get("alpha_convention", Params.alpha_convention)
+    rounded_optics = ctx.lexicon.caches.rounded_optics
+    for state in _streamed_states(source, ctx, diags):
+        yield material_ir(state, convention, rounded_optics)
+
+
+def _streamed_states(source: str, ctx: Context, diags: list[Diagnostic]) -> Iterator[MaterialState]:
+    seen: set[Diagnostic] = set()
+    used: dict[str, int] = {}
+    mark = 0
+    for material, refinements in _material_groups(iter_items(source, ctx.lexicon, diags), diags):
+        seen.update(diags[mark:])  # the parser's since the last material: a state repeating one is not added
+        for state in build_states(material, refinements, ctx, material_name(material, used), diags):
+            for d in state.diagnostics:
+                if d not in seen:
+                    seen.add(d)
+                    diags.append(d)
+            yield state
+        mark = len(diags)
+
+
+def _material_groups(
+    items: Iterator[tuple[ast.Item, bool]], diags: list[Diagnostic]
+) -> Iterator[tuple[ast.Material, list[ast.Refinement]]]:
+    """Each material without an error on its line, with the error-free refinement lines below it,
+    once the next material (or the end) is reached; a material with an error is left out with its
+    refinements (reported already), a refinement before any material gets W104."""
+    material: ast.Material | None = None
+    refinements: list[ast.Refinement] = []
+    material_ok = False
+    for item, has_error in items:
+        if isinstance(item, ast.Material):
+            if material is not None and material_ok:
+                yield material, refinements
+            material, refinements, material_ok = item, [], not has_error
+        elif material is None:
+            diags.append(_orphan(item))
+        elif not has_error:
+            refinements.append(item)
+    if material is not None and material_ok:
+        yield material, refinements
 
 
 def sort_diagnostics(diags: list[Diagnostic]) -> list[Diagnostic]:

@@ -11,9 +11,10 @@ from pathlib import Path
 from typing import Any
 
 from . import ast
-from .analyze import analyze, analyze_to_ir, to_ir
+from .analyze import analyze, iter_material_irs, sort_diagnostics, to_ir
 from .diagnostics import Diagnostic, has_errors, render_all
 from .document import parse_document
+from .ir import document_head, document_ir
 from .lexicon import Lexicon, cached_lexicon
 from .material import Document
 from .state import Context, MaterialState
@@ -81,12 +82,44 @@ def compile_source(
     IR, and on a large file those stages are most of the memory."""
     lexicon = lexicon or lexicon_for()
     with cyclic_gc_paused():
+        if not keep_stages:
+            stream = compile_stream(source, filename, lexicon, seed)
+            materials = list(stream.materials)
+            diags = stream.sorted_diagnostics()
+            return Result(document_ir(materials, diags, filename, lexicon.sources), diags)
         doc = parse_document(source, lexicon, filename)
         ctx = Context(lexicon, seed=seed, filename=filename)
-        if not keep_stages:
-            return Result(*analyze_to_ir(doc, ctx))
         states, diags = analyze(doc, ctx)
         return Result(to_ir(states, diags, ctx), diags, doc, states)
+
+
+@dataclass
+class Stream:
+    """A document compiled as its materials are asked for (compile_stream): `head` is the IR
+    document's fields before its materials; `materials` makes each material's IR in turn (the
+    lines are parsed as they are reached; nothing of a material is kept once its IR is handed
+    out); `diagnostics` grows as they are found, complete once `materials` is exhausted."""
+
+    head: JSONDict
+    materials: Iterator[JSONDict]
+    diagnostics: list[Diagnostic]
+
+    def sorted_diagnostics(self) -> list[Diagnostic]:
+        """Every diagnostic by position (call once `materials` is exhausted)."""
+        return sort_diagnostics(self.diagnostics)
+
+    @property
+    def ok(self) -> bool:
+        return not has_errors(self.diagnostics)
+
+
+def compile_stream(source: str, filename: str = "<input>", lexicon: Lexicon | None = None, seed: int = 0) -> Stream:
+    """The document's IR one material at a time (see Stream): what `compile_source(keep_stages=False)`
+    gives, without holding the materials. Iterate with the cyclic GC paused (cyclic_gc_paused)."""
+    lexicon = lexicon or lexicon_for()
+    ctx = Context(lexicon, seed=seed, filename=filename)
+    diags: list[Diagnostic] = []
+    return Stream(document_head(filename, lexicon.sources), iter_material_irs(source, ctx, diags), diags)
 
 
 def compile_phrase(phrase: str, lexicon: Lexicon | None = None, seed: int = 0) -> JSONDict:

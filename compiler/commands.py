@@ -9,9 +9,12 @@ from __future__ import annotations
 
 import argparse
 import json
+import shutil
 import sys
-from collections.abc import Sequence
+import tempfile
+from collections.abc import Callable, Sequence
 from dataclasses import asdict
+from typing import Any, BinaryIO, Protocol
 
 from cnlmc.backends.registry import (
     Artifact,
@@ -25,8 +28,8 @@ from cnlmc.backends.registry import (
     get_target,
 )
 
-from .api import Result, compile_source, cyclic_gc_paused, lexicon_for
-from .diagnostics import Diagnostic, render_all, visible
+from .api import Result, compile_source, compile_stream, cyclic_gc_paused, lexicon_for
+from .diagnostics import Diagnostic, has_errors, render_all, visible
 from .document import parse_document
 from .errors import UsageError
 from .explain import explain
@@ -34,7 +37,7 @@ from .inputs import DEFAULT_MAX_BYTES, input_name, read_text
 from .lexicon import Lexicon
 from .lexicon_schema import LexiconError
 from .lines import iter_lines
-from .output import write_artifacts
+from .output import write_artifacts, write_streamed
 from .tagger import Tagger
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
@@ -147,6 +150,9 @@ class CompileCommand(Command):
         lexicon = lexicon_of(args)
         if args.emit in ("tokens", "ast"):
             return emit_stage(args.emit, source, name, lexicon)
+        streams = getattr(target, "material_writer", None)
+        if callable(streams):
+            return compile_streamed(target, streams, source, name, lexicon, args)
         result = compile_source(source, name, lexicon, args.seed, keep_stages=False)
         report(result, source, name)
         if not result.ok:
@@ -172,6 +178,72 @@ def run_target(target: Target, result: Result, args: argparse.Namespace) -> Emit
         return None
     except ValueError as exc:
         raise UsageError(str(exc)) from None
+
+
+class _CompileErrors(Exception):
+    """The document has errors (already on stderr): what is staged is discarded, exit 1."""
+
+
+class MaterialWriter(Protocol):
+    """What a streaming target's `material_writer(out, head)` returns (the IR target's IrWriter):
+    `write(material_ir)` checks one material and writes it to `out`, `finish(diagnostics)` the rest."""
+
+    def write(self, material: object) -> None: ...
+
+    def finish(self, diagnostics: Sequence[object]) -> None: ...
+
+
+def compile_streamed(
+    target: Target,
+    material_writer: Callable[[BinaryIO, dict[str, Any]], MaterialWriter],
+    source: str,
+    name: str,
+    lexicon: Lexicon,
+    args: argparse.Namespace,
+) -> int:
+    """compile to a target that writes one file a material at a time (`material_writer`, the IR
+    target's): each material's IR is made, checked, written to the staged output
+    (cnlmc.output.write_streamed; a spool file on disk for stdout) and let go, so memory does not
+    grow with the document. The diagnostics go to stderr once every line is read; with an error
+    nothing is written (exit 1), as when the whole IR is made first."""
+    stream = compile_stream(source, name, lexicon, args.seed)
+
+    def write(out: BinaryIO) -> None:
+        writer = material_writer(out, stream.head)
+        for material in stream.materials:
+            writer.write(material)
+        diags = stream.sorted_diagnostics()
+        print_diagnostics(diags, source, name)
+        if has_errors(diags):
+            raise _CompileErrors
+        options: dict[str, object] = {**option_pairs(args.option), "seed": args.seed}
+        if args.output:
+            options["output"] = args.output
+        try:
+            target.parse_options(options)
+            writer.finish([d.to_json() for d in diags])
+        except ValueError as exc:
+            raise UsageError(str(exc)) from None
+
+    try:
+        with cyclic_gc_paused():
+            if args.output:
+                say_wrote(write_streamed("materials.ir.json", args.output, write, protect=[args.file]))
+            else:
+                _to_stdout(write)
+    except _CompileErrors:
+        return EXIT_ERRORS
+    return EXIT_OK
+
+
+def _to_stdout(write: Callable[[BinaryIO], None]) -> None:
+    """`write` into a spool file on disk, then copied to stdout once it has succeeded."""
+    with tempfile.TemporaryFile() as spool:
+        write(spool)
+        spool.seek(0)
+        sys.stdout.flush()
+        shutil.copyfileobj(spool, sys.stdout.buffer)
+        sys.stdout.buffer.flush()
 
 
 def print_notes(emitted: EmitResult) -> None:

@@ -4,6 +4,8 @@ Lines end as cnlmc.lines says (CRLF, LF or a lone CR); `iter_lines` is re-export
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 from . import ast
 from .diagnostics import Diagnostic, error
 from .lexicon import Lexicon
@@ -14,7 +16,7 @@ from .spans import Span
 from .tagged import Tagged
 from .tagger import Tagger
 
-__all__ = ["iter_lines", "parse_document", "parse_line"]
+__all__ = ["iter_items", "iter_lines", "parse_document", "parse_line"]
 
 MAX_LINE_CHARS = 2000
 MAX_LINE_WORDS = 64
@@ -29,6 +31,17 @@ def parse_document(source: str, lexicon: Lexicon, filename: str = "<input>") -> 
         if node is not None:
             doc.items.append(node)
     return doc
+
+
+def iter_items(source: str, lexicon: Lexicon, diags: list[Diagnostic]) -> Iterator[tuple[ast.Item, bool]]:
+    """Each line's node in document order, parsed as it is asked for, and whether its line has an
+    error; the problems go to `diags` as each line is parsed (what parse_document collects)."""
+    tagger = Tagger.of(lexicon)
+    for number, offset, text in iter_lines(source):
+        before = len(diags)
+        node = parse_line(text, number, offset, tagger, diags)
+        if node is not None:
+            yield node, any(d.is_error for d in diags[before:])
 
 
 def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Item | None:

@@ -87,14 +87,21 @@ def _provenance(state: MaterialState) -> dict[str, list[JSONDict]]:
     return out
 
 
-def document_ir(
-    materials: list[JSONDict], diagnostics: list[Diagnostic], source_name: str, lexicon_sources: Iterable[str]
-) -> JSONDict:
+def document_head(source_name: str, lexicon_sources: Iterable[str]) -> JSONDict:
+    """The document's fields before its materials (ir_version, source, lexicon, colour_space)."""
     return {
         "ir_version": IR_VERSION,
         "source": source_name,
         "lexicon": list(lexicon_sources),
         "colour_space": "linear Rec.709",
+    }
+
+
+def document_ir(
+    materials: list[JSONDict], diagnostics: list[Diagnostic], source_name: str, lexicon_sources: Iterable[str]
+) -> JSONDict:
+    return {
+        **document_head(source_name, lexicon_sources),
         "materials": materials,
         "diagnostics": [d.to_json() for d in diagnostics],
     }

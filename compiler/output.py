@@ -41,7 +41,7 @@ import stat
 import tempfile
 from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path, PurePosixPath
-from typing import Protocol
+from typing import BinaryIO, Protocol
 
 from .errors import UsageError
 from .filenames import fit_file_name
@@ -51,6 +51,8 @@ from .manifest import MANIFEST_NAME, manifest_text, owned_folder, prune, read_ma
 
 #: a temp keeps its destination's suffix (image writers choose the format by it) up to this length
 MAX_TEMP_SUFFIX = 16
+#: the write buffer of a streamed file (write_streamed)
+STREAM_BUFFER = 1 << 16
 
 
 class Artifact(Protocol):
@@ -374,12 +376,38 @@ def write_artifacts(artifacts: Sequence[Artifact], out: str, protect: Iterable[s
     docstring). No artifact: nothing is written (e.g. the maps target on materials without maps)."""
     if not artifacts:
         return []
-    target = Path(out)
-    if looks_like_file(out) or (len(artifacts) == 1 and not os.path.isdir(target) and not out.endswith(("/", os.sep))):
-        root, first = target.parent, target
-    else:
-        root, first = target, None
+    root, first = _placed(out, len(artifacts) == 1)
     paths = [first or safe_name(artifacts[0].name, root)] + [safe_name(a.name, root) for a in artifacts[1:]]
     owned = paths[0].parent / owned_folder(paths[0].name)
     files = [(path, a.content) for path, a in zip(paths, artifacts)]
     return write_files(files, protect, owned=owned, root=root)
+
+
+def _placed(out: str, single: bool) -> tuple[Path, Path | None]:
+    """(the output folder, the main file's path when `out` names it) for `-o out`."""
+    target = Path(out)
+    if looks_like_file(out) or (single and not os.path.isdir(target) and not out.endswith(("/", os.sep))):
+        return target.parent, target
+    return target, None
+
+
+def write_streamed(name: str, out: str, write: Callable[[BinaryIO], None], protect: Iterable[str | Path] = ()) -> Path:
+    """One file (named `name` in the folder when `out` is one) whose content `write(file)` writes
+    piece by piece to its staged temp, e.g. a large IR one material at a time: the guarantees of
+    write_artifacts for a one-file result (checked before `write` runs; atomic; a signal or any
+    exception from `write` discards the temp and changes nothing). Returns the path written."""
+    root, first = _placed(out, True)
+    path = first or safe_name(name, root)
+    with Staging(protect, root) as staging:
+        staging.add(path, _streaming_writer(write))
+        staging.own(path.parent / owned_folder(path.name), [])
+        staging.commit()
+    return path
+
+
+def _streaming_writer(write: Callable[[BinaryIO], None]) -> Callable[[Path], None]:
+    def to_temp(temp: Path) -> None:
+        with temp.open("wb", buffering=STREAM_BUFFER) as file:
+            write(file)
+
+    return to_temp
