@@ -114,7 +114,7 @@ def _head(document: Document) -> dict[str, object]:
 
 
 def _dumps(value: object) -> str:
-    return json.dumps(value, ensure_ascii=False, default=_plain)
+    return _ENCODER.encode(value)
 
 
 def _plain(value: object) -> Any:
@@ -123,5 +123,8 @@ def _plain(value: object) -> Any:
         return dict(value)
     raise TypeError(f"{type(value).__name__} is not JSON")
 
+
+#: what json.dumps(value, ensure_ascii=False, default=_plain) makes anew on every call (it holds no state)
+_ENCODER = json.JSONEncoder(ensure_ascii=False, default=_plain)
 
 TARGET = IrTarget()

@@ -63,13 +63,18 @@ def _number(value: object, path: str, bounds: tuple[float, float] | None = None)
 
 
 def _numbers(value: object, n: int, path: str, bounds: tuple[float, float] | None) -> tuple[float, ...]:
-    what = f"a list of {n} numbers" + (f" in [{_fmt(bounds[0])}, {_fmt(bounds[1])}]" if bounds else "")
     if not isinstance(value, (list, tuple)) or len(value) != n:
-        raise _fail(path, what, value)
+        raise _numbers_fail(value, n, path, bounds)
+    low, high = bounds if bounds is not None else (-_BIGGEST, _BIGGEST)
     for v in value:
-        if not _is_number(v) or (bounds is not None and not bounds[0] <= v <= bounds[1]):
-            raise _fail(path, what, value)
+        if not _is_number(v) or not low <= v <= high:
+            raise _numbers_fail(value, n, path, bounds)
     return tuple(value)
+
+
+def _numbers_fail(value: object, n: int, path: str, bounds: tuple[float, float] | None) -> ValueError:
+    what = f"a list of {n} numbers" + (f" in [{_fmt(bounds[0])}, {_fmt(bounds[1])}]" if bounds else "")
+    return _fail(path, what, value)
 
 
 def _string(value: object, path: str) -> str:
