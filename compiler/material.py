@@ -96,7 +96,7 @@ def _boolean(value: object, path: str) -> bool:
 
 
 def _object(value: object, path: str) -> Mapping[str, Any]:
-    if not isinstance(value, Mapping):
+    if type(value) is not dict and not isinstance(value, Mapping):  # a dict, the common case, without the ABC check
         raise _fail(path, "an object", value)
     return value
 
@@ -210,7 +210,7 @@ def params_from_ir(d: object, model: Model, path: str = "params", ranged: bool =
         _no_unknown_keys(d, PARAM_NAMES, path)
     values: dict[str, Any] = {}
     convention = _value(
-        _spec("alpha_convention"), d.get("alpha_convention", Params.alpha_convention), f"{path}.alpha_convention"
+        _ALPHA_CONVENTION, d.get("alpha_convention", Params.alpha_convention), f"{path}.alpha_convention"
     )
     for s in PARAMS:
         if s.name not in d:
@@ -240,6 +240,9 @@ def _spec(name: str) -> ParamSpec:
     return next(s for s in PARAMS if s.name == name)
 
 
+_ALPHA_CONVENTION = _spec("alpha_convention")
+
+
 @dataclass(frozen=True)
 class MapRef:
     graph: str
@@ -252,7 +255,8 @@ class MapRef:
         d = _object(d, path)
         params = _object(d.get("params", {}), f"{path}.params")
         for name, value in params.items():
-            _number(value, f"{path}.params.{name}")
+            if not _is_number(value):
+                raise _fail(f"{path}.params.{name}", "a number", value)
         seed = d.get("seed", 0)
         if not isinstance(seed, int) or isinstance(seed, bool):
             raise _fail(f"{path}.seed", "an integer", seed)
@@ -333,7 +337,7 @@ class Provenance(Mapping[str, tuple[Step, ...]]):
 def _provenance_from_ir(d: object, path: str) -> Provenance:
     d = _object(d, path)
     for name, steps in d.items():
-        if not isinstance(steps, list) or not all(isinstance(s, Mapping) for s in steps):
+        if not isinstance(steps, list) or not all(type(s) is dict or isinstance(s, Mapping) for s in steps):
             raise _fail(f"{path}.{name}", "a list of steps", steps)
     return Provenance(dict(d))
 
