@@ -113,10 +113,12 @@ def close(server: Server, uri: str) -> None:
     problems last, after giving the memory back)."""
     server.notify("textDocument/didClose", {"textDocument": {"uri": uri}})
     server.wait(
-        lambda m: m.get("method") == "textDocument/publishDiagnostics"
-        and m["params"]["uri"] == uri
-        and not m["params"]["diagnostics"]
-        and "version" not in m["params"]
+        lambda m: (
+            m.get("method") == "textDocument/publishDiagnostics"
+            and m["params"]["uri"] == uri
+            and not m["params"]["diagnostics"]
+            and "version" not in m["params"]
+        )
     )
 
 
