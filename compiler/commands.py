@@ -237,13 +237,33 @@ def compile_streamed(
 
 
 def _to_stdout(write: Callable[[BinaryIO], None]) -> None:
-    """`write` into a spool file on disk, then copied to stdout once it has succeeded."""
-    with tempfile.TemporaryFile() as spool:
-        write(spool)
+    """`write` into a spool file on disk (in TMPDIR), then copied to stdout once it has succeeded."""
+    try:
+        spool = tempfile.TemporaryFile()
+    except OSError as exc:
+        raise _spool_error(exc) from None
+    with spool:
+        try:
+            write(spool)
+            spool.flush()
+        except OSError as exc:
+            raise _spool_error(exc) from None
         spool.seek(0)
-        sys.stdout.flush()
-        shutil.copyfileobj(spool, sys.stdout.buffer)
-        sys.stdout.buffer.flush()
+        try:
+            sys.stdout.flush()
+            shutil.copyfileobj(spool, sys.stdout.buffer)
+            sys.stdout.buffer.flush()
+        except BrokenPipeError:
+            raise
+        except OSError as exc:
+            raise UsageError(f"cannot write to standard output: {exc.strerror or exc}") from None
+
+
+def _spool_error(exc: OSError) -> UsageError:
+    return UsageError(
+        f"cannot write the output to a temporary file in '{tempfile.gettempdir()}': {exc.strerror or exc}; "
+        "give -o PATH, or set TMPDIR to a folder with room"
+    )
 
 
 def print_notes(emitted: EmitResult) -> None:

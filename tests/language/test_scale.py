@@ -161,3 +161,21 @@ def test_memory_per_input_line_stays_bounded(tmp_path):
         peaks.append(peak_rss_kb(source, tmp_path / f"{lines}.ir.json"))
     per_line = (peaks[1] - peaks[0]) * 1024 / (sizes[1] - sizes[0])
     assert per_line <= 2048, f"{per_line:.0f} bytes of RSS per added line (peaks {peaks} KB)"
+
+
+def test_standard_output_that_cannot_be_written_is_a_clear_usage_error(tmp_path):
+    """The streamed IR is copied to stdout at the end: a full device there is exit 2 with the
+    reason, not an internal error."""
+    if not os.path.exists("/dev/full"):
+        import pytest
+
+        pytest.skip("no /dev/full here")
+    source = tmp_path / "a.cnl"
+    source.write_text(mixed_source(50), encoding="utf-8")
+    with open("/dev/full", "w") as full:
+        r = subprocess.run(
+            [sys.executable, "-m", "cnlmc", "compile", str(source)], stdout=full, stderr=subprocess.PIPE, text=True
+        )
+    assert r.returncode == 2, r.stderr
+    assert "cannot write to standard output: No space left on device" in r.stderr
+    assert "internal error" not in r.stderr and "Traceback" not in r.stderr
