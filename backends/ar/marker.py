@@ -11,6 +11,7 @@ from cnlmc.output import write_atomic
 from .errors import AROptionError
 
 DICTIONARY_NAME = "DICT_4X4_50"
+MARKER_IDS = 50  # the dictionary's markers: ids 0 ... 49
 DEFAULT_ID = 0
 BITS = 4 + 2  # 4x4 data bits plus the one-bit black border on each side
 
@@ -39,8 +40,8 @@ def write_marker(path, marker_id: int = DEFAULT_ID, pixels: int = 480, name: str
     Print it so the black square measures the `marker_length` given to `ar_command`."""
     import cv2
 
-    if not 0 <= int(marker_id) < 50:
-        raise AROptionError(f"marker id {marker_id} is outside {name} (0 ... 49)")
+    if not 0 <= int(marker_id) < MARKER_IDS:
+        raise AROptionError(f"marker id {marker_id} is outside {name} (0 ... {MARKER_IDS - 1})")
     image, _ = marker_image(marker_id, pixels, name=name)
     path = Path(path)
     ok, data = cv2.imencode(path.suffix or ".png", image)

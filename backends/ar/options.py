@@ -3,6 +3,7 @@ and parsed once, and what they choose: the camera matrix and the IR material to 
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -15,16 +16,23 @@ from ..base import Option, OptionError, as_document
 from ..base import parse_options as parse_declared
 from ..preview.options import GLSL_PASSED, checked_tier, glsl_pairs, preview_option
 from .errors import AROptionError
+from .marker import MARKER_IDS
 from .pose import default_intrinsics
 
 NAME = "ar"
 #: AR's own options, then the preview's it renders with (AR's defaults: the teapot, msaa 4)
 OPTIONS: tuple[Option, ...] = (
-    Option("marker_length", float, 0.1, doc="the printed marker's side (any unit: the scene is relative to it)"),
-    Option("marker_id", int, None, doc="the marker to use (default: the largest found)"),
-    Option("scale", float, 1.0, doc="the object's bounding-sphere diameter in marker lengths"),
+    Option(
+        "marker_length",
+        float,
+        0.1,
+        doc="the printed marker's side (any unit: the scene is relative to it)",
+        range=(1e-6, 1e6),
+    ),
+    Option("marker_id", int, None, doc="the marker to use (default: the largest found)", range=(0, MARKER_IDS - 1)),
+    Option("scale", float, 1.0, doc="the object's bounding-sphere diameter in marker lengths", range=(1e-3, 1e3)),
     Option("intrinsics", str, None, doc="fx,fy,cx,cy in pixels (default: from the image size and fov)"),
-    Option("fov", float, 60.0, doc="horizontal field of view in degrees, without intrinsics"),
+    Option("fov", float, 60.0, doc="horizontal field of view in degrees, without intrinsics", range=(1.0, 179.0)),
     Option("dist", str, None, doc="lens distortion k1,k2,p1,p2[,k3[,k4,k5,k6]]"),
     Option("shadow", float, 0.65, doc="contact shadow opacity (0: none)", range=(0.0, 1.0)),
     Option("material", str, None, doc="the IR material to place: its name or index (default the first)"),
@@ -64,6 +72,16 @@ def _floats(text: str | None, count: tuple[int, ...], what: str) -> tuple[float,
         raise AROptionError(f"ar: {what} must be comma-separated numbers, got {text!r}") from None
     if len(values) not in count:
         raise AROptionError(f"ar: {what} takes {' or '.join(map(str, count))} numbers, got {len(values)}")
+    if not all(math.isfinite(v) for v in values):
+        raise AROptionError(f"ar: {what} must be finite numbers, got {text!r}")
+    return values
+
+
+def _intrinsics(text: str | None) -> tuple[float, ...] | None:
+    """fx,fy,cx,cy: focal lengths in pixels (positive), the principal point (finite)."""
+    values = _floats(text, (4,), "intrinsics")
+    if values is not None and not (values[0] > 0 and values[1] > 0):
+        raise AROptionError(f"ar: intrinsics fx and fy must be positive (pixels), got {text!r}")
     return values
 
 
@@ -73,13 +91,11 @@ def parse_options(pairs: Mapping[str, object] | None) -> AROptions:
         o = parse_declared(OPTIONS, pairs, NAME)
     except OptionError as exc:
         raise AROptionError(str(exc)) from None
-    if o.marker_length <= 0 or o.scale <= 0 or not 1 < o.fov < 179:
-        raise AROptionError("ar: marker_length and scale must be positive and fov within (1, 179) degrees")
     return AROptions(
         o.marker_length,
         o.marker_id,
         o.scale,
-        _floats(o.intrinsics, (4,), "intrinsics"),
+        _intrinsics(o.intrinsics),
         o.fov,
         _floats(o.dist, (4, 5, 8), "dist"),
         o.mesh,

@@ -408,8 +408,17 @@ RAW_CONTROLS = frozenset(
 KEPT_HIDDEN = frozenset({".cnlmc-manifest.json"})
 
 
+#: what must not reach the terminal even in a file printed on stdout (JSON, XML, USD, GLSL text):
+#: the C0 controls that are not layout (ESC, BEL, backspace, ...), DEL and C1 (CSI, OSC as one byte)
+TERMINAL_CONTROLS = frozenset(c for c in RAW_CONTROLS if c not in "\r\f\u2028\u2029" and not "\u202a" <= c <= "\u2069")
+
+
 def raw_controls(text: str) -> list[str]:
     return sorted({repr(c) for c in text if c in RAW_CONTROLS})
+
+
+def terminal_controls(text: str) -> list[str]:
+    return sorted({repr(c) for c in text if c in TERMINAL_CONTROLS})
 
 
 def strict_json(text: str) -> object:
@@ -434,6 +443,7 @@ def check_run(run: Run, sandbox: Sandbox, before: dict[str, tuple[int, int]]) ->
     for stream in (run.stdout, run.stderr):
         assert "Traceback" not in stream and "internal error" not in stream, said
     assert not raw_controls(run.stderr), f"raw control characters {raw_controls(run.stderr)} on stderr\n{said}"
+    assert not terminal_controls(run.stdout), f"terminal controls {terminal_controls(run.stdout)} on stdout\n{said}"
     after = sandbox.snapshot()
     changed = sorted(set(before.items()) ^ set(after.items()))
     assert not changed, f"files changed outside the output folder: {changed}\n{said}"

@@ -420,3 +420,29 @@ def test_an_ar_phrase_too_long_for_a_file_name_is_a_phrase(runs, marker_photo):
         run = run_cli(["ar", str(marker_photo), "gold " * 100, "-o", "../out/ar.png"], b"", sandbox)
         check_run(run, sandbox, before)
     assert run.code == 1 and "phrase is too long" in run.stderr, run.stderr
+
+
+@pytest.mark.cv2
+@pytest.mark.parametrize(
+    ("option", "said"),
+    [
+        ("marker_length=1e300", "option marker_length=1e+300 is outside [1e-06, 1000000]"),
+        ("scale=1e300", "option scale=1e+300 is outside [0.001, 1000]"),
+        ("fov=0", "option fov=0.0 is outside [1, 179]"),
+        ("marker_id=-1", "option marker_id=-1 is outside [0, 49]"),
+        ("intrinsics=nan,1,1,1", "intrinsics must be finite numbers"),
+        ("intrinsics=0,0,0,0", "intrinsics fx and fy must be positive"),
+        ("dist=inf,0,0,0", "dist must be finite numbers"),
+    ],
+)
+def test_ar_options_outside_what_a_camera_can_be(runs, marker_photo, option, said):
+    """Found by the fuzzing: AR's scale=1e300, marker_length=1e300 and intrinsics=nan,1,1,1 or
+    0,0,0,0 rendered an image with exit 0; marker_id=-1 said 'no marker found'. Each is a usage error."""
+    with Sandbox.made(runs) as sandbox:
+        before = sandbox.snapshot()
+        run = run_cli(
+            ["ar", str(marker_photo), "polished gold", "-o", "../out/ar.png", "--option", option], b"", sandbox
+        )
+        check_run(run, sandbox, before)
+    assert run.code == 2 and said in run.stderr, run.stderr
+    assert not (sandbox.out / "ar.png").exists()
