@@ -141,19 +141,6 @@ def _states(
             yield state
 
 
-def analyze_to_ir(doc: ast.Document, ctx: Context) -> tuple[dict[str, Any], list[Diagnostic]]:
-    """The IR document and the sorted diagnostics, each state turned into its IR as soon as it is
-    made and let go: the syntax tree and the states are never all held at once (doc.items is emptied)."""
-    diags: list[Diagnostic] = []
-    convention = ctx.settings.get("alpha_convention", Params.alpha_convention)
-    rounded_optics = ctx.lexicon.caches.rounded_optics
-    states = iter_states(doc, ctx, diags)
-    doc.items.clear()  # iter_states holds the material/refinement pairs from here on
-    materials = [material_ir(state, convention, rounded_optics) for state in states]
-    diags = sort_diagnostics(diags)
-    return document_ir(materials, diags, ctx.filename, ctx.lexicon.sources), diags
-
-
 def iter_material_irs(source: str, ctx: Context, diags: list[Diagnostic]) -> Iterator[JSONDict]:
     """Each material's IR in document order, made as it is asked for: the lines are parsed as they
     are reached, and each material's syntax tree and states are let go once its IR is made (what

@@ -10,7 +10,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from cnlmc.analyze import analyze, analyze_to_ir, to_ir
+from cnlmc.analyze import analyze, iter_material_irs, sort_diagnostics, to_ir
 from cnlmc.api import compile_source, cyclic_gc_paused, lexicon_for
 from cnlmc.document import parse_document
 from cnlmc.state import Context
@@ -21,16 +21,16 @@ SOURCE = "".join(f"m{n}: {PHRASES[n % 3]}\n" if n % 7 else f"{PHRASES[3 + n % 2]
 
 
 def test_the_streamed_ir_is_the_ir_of_the_states():
-    """analyze_to_ir (the CLI's path: each state to IR at once, then let go) gives exactly what
-    analyze + to_ir (the language server's path, which keeps the stages) give."""
+    """iter_material_irs (the CLI's path: each line parsed as reached, each state to IR at once,
+    then let go) gives exactly what parse_document + analyze + to_ir (the language server's path,
+    which keeps the stages) give, and the same diagnostics once sorted."""
     lexicon = lexicon_for()
     ctx = Context(lexicon, filename="big.cnl")
     states, diags = analyze(parse_document(SOURCE, lexicon, "big.cnl"), ctx)
-    doc = parse_document(SOURCE, lexicon, "big.cnl")
-    streamed, streamed_diags = analyze_to_ir(doc, ctx)
-    assert streamed == to_ir(states, diags, ctx)
-    assert streamed_diags == diags
-    assert doc.items == []  # the syntax tree is not kept
+    found: list = []
+    streamed = list(iter_material_irs(SOURCE, ctx, found))
+    assert streamed == to_ir(states, diags, ctx)["materials"]
+    assert sort_diagnostics(found) == diags
 
 
 def test_compile_without_stages_keeps_only_the_ir():
