@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from ..base import Option
+from ..maps.bake import MAX_SIZE, MIN_SIZE
 from ..maps.writer import FORMATS
 
 MAP_FORMATS = tuple(FORMATS)
@@ -18,7 +19,13 @@ def map_options(modes: tuple[str, ...] = MAP_MODES) -> tuple[Option, ...]:
     """The map options; `modes`: the values `maps` takes for this target (bake first, the default)."""
     return (
         Option("maps", str, "bake", choices=modes, doc="bake: procedural maps become image files; none: left out"),
-        Option("map_size", int, 256, doc="baked image size in pixels (a power of two)"),
+        Option(
+            "map_size",
+            int,
+            256,
+            doc=f"baked image size in pixels (a power of two, {MIN_SIZE} to {MAX_SIZE})",
+            range=(MIN_SIZE, MAX_SIZE),
+        ),
         Option("map_format", str, "png8", choices=MAP_FORMATS, doc="baked image encoding"),
     )
 
