@@ -23,6 +23,7 @@ import markupsafe
 import numpy as np
 
 from cnlmc.conventions import ALPHA_MIRROR, alpha_isotropic, alpha_of
+from cnlmc.diagnostics import visible
 from cnlmc.material import Document, Material
 
 from ..base import Artifact, Option, Options, Target, emit_each
@@ -288,8 +289,9 @@ def bsdf_for(material: Material, ident: str, tex: BsdfTextures, cnlm: bool = Fal
 
 
 def comment(value: object) -> str:
-    """Safe inside <!-- -->: no '--', no trailing '-', one line."""
-    text = xml_text(value).replace("\r", " ").replace("\n", " ")
+    """Safe inside <!-- -->: no '--', no trailing '-', one line; control characters (DEL, C1, bidi
+    overrides) shown escaped as on the terminal, so a file printed there cannot drive it."""
+    text = visible(xml_text(value).replace("\r", " ").replace("\n", " "), one_line=True)
     text = re.sub("-(?=-)", "- ", text)
     return text + " " if text.endswith("-") else text
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 from typing import Any
 
 from cnlmc.material import Material
@@ -101,6 +102,17 @@ BTDF_RETURNS = (
 )
 
 
+#: characters JSON may hold raw that a terminal obeys (DEL, C1 such as CSI, line separators, bidi overrides)
+TERMINAL_CONTROLS = re.compile("[\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+
+
+def sidecar_json(meta: dict[str, Any]) -> str:
+    """The sidecar as JSON: unicode kept as written, the characters a terminal would obey as \\u
+    escapes (inside JSON they can only be in strings, so the value is the same)."""
+    text = json.dumps(meta, indent=2, ensure_ascii=False) + "\n"
+    return TERMINAL_CONTROLS.sub(lambda m: f"\\u{ord(m.group()):04x}", text)
+
+
 def sidecar(material: Material, plan: Plan, options: GlslOptions, files: list[str]) -> dict[str, Any]:
     maps = {role: ref.to_ir() for role, ref in material.maps.items()}
     extra = {"btdf_entry_points": BTDF_ENTRY_POINTS, "btdf_returns": BTDF_RETURNS} if plan.transmission else {}
@@ -142,5 +154,5 @@ def emit_material(material: Material, options: GlslOptions, writer: ShaderWriter
         artifacts += [Artifact(f"{name}.frag", frag), Artifact(f"{name}.vert", vert)]
     files = [a.name for a in artifacts]
     meta = sidecar(material, plan, options, files)
-    artifacts.append(Artifact(f"{name}.glsl.json", json.dumps(meta, indent=2, ensure_ascii=False) + "\n"))
+    artifacts.append(Artifact(f"{name}.glsl.json", sidecar_json(meta)))
     return artifacts
