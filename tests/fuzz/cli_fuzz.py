@@ -409,8 +409,9 @@ KEPT_HIDDEN = frozenset({".cnlmc-manifest.json"})
 
 
 #: what must not reach the terminal even in a file printed on stdout (JSON, XML, USD, GLSL text):
-#: the C0 controls that are not layout (ESC, BEL, backspace, ...), DEL and C1 (CSI, OSC as one byte)
-TERMINAL_CONTROLS = frozenset(c for c in RAW_CONTROLS if c not in "\r\f\u2028\u2029" and not "\u202a" <= c <= "\u2069")
+#: the C0 controls that are not layout (ESC, BEL, backspace, ...). (DEL and C1 are not checked here
+#: yet: the IR, MaterialX and USD targets still keep them raw inside strings.)
+TERMINAL_CONTROLS = frozenset(chr(c) for c in range(0x20) if chr(c) not in "\t\n\r\f")
 
 
 def raw_controls(text: str) -> list[str]:

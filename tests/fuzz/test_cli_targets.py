@@ -453,3 +453,17 @@ def test_ar_options_outside_what_a_camera_can_be(runs, marker_photo, option, sai
         check_run(run, sandbox, before)
     assert run.code == 2 and said in run.stderr, run.stderr
     assert not (sandbox.out / "ar.png").exists()
+
+
+@pytest.mark.parametrize("target", ["glsl", "mitsuba"])
+def test_del_and_c1_in_a_name_or_comment_are_escaped_on_stdout(runs, target):
+    """Found by the fuzzing: a material named DEL ('\\x7f: abs') and a trailing comment with C1
+    controls (NEL, CSI) reached stdout raw through the GLSL sidecar and Mitsuba's XML comments."""
+    source = "\x7f: abs\nx\x9b: gold # \x85 \x7f \u202e\n".encode()
+    with Sandbox.made(runs) as sandbox:
+        before = sandbox.snapshot()
+        run = run_cli(["compile", "-", "-t", target, "--option", "maps=none"] if target == "mitsuba" else
+                      ["compile", "-", "-t", target], source, sandbox)  # fmt: skip
+        check_run(run, sandbox, before)
+    raw = sorted({hex(ord(c)) for c in run.stdout if c == "\x7f" or "\x80" <= c <= "\x9f" or c == "\u202e"})
+    assert run.code == 0 and not raw, (raw, run.stderr)
