@@ -53,7 +53,7 @@ class ARCommand(Command):
         parser.add_argument("-o", "--output", help="output image or video")
         parser.add_argument("--marker", metavar="PNG", help="write a printable marker to PNG and stop")
         add_lexicon_arguments(parser)
-        add_render_arguments(parser)
+        add_render_arguments(parser, size=False)  # the output has the photo's size
 
     def run(self, args: argparse.Namespace) -> int:
         require_opencv()

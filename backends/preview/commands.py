@@ -31,9 +31,11 @@ from .window import Window
 RENDER_FLAGS = ("mesh", "size", "tier", "budget_ms", "env")
 
 
-def add_render_arguments(parser: argparse.ArgumentParser) -> None:
+def add_render_arguments(parser: argparse.ArgumentParser, size: bool = True) -> None:
+    """The render flags; `size`: whether the image size is one (AR renders at the photo's size)."""
     parser.add_argument("--mesh", help="sphere, shader_ball, teapot, or an .obj/.ply/.gltf/.glb file")
-    parser.add_argument("--size", help="image size in pixels (preview default 512)")
+    if size:
+        parser.add_argument("--size", help="image size in pixels (preview default 512)")
     parser.add_argument("--tier", help="quality tier: analytic, splitsum, fisN, mcN (see docs/preview.md)")
     parser.add_argument("--budget-ms", dest="budget_ms", help="pick the best tier whose frame time fits")
     parser.add_argument("--env", help="studio, sky, sun, or an .hdr/.exr environment")

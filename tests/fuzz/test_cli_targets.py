@@ -467,3 +467,13 @@ def test_del_and_c1_in_a_name_or_comment_are_escaped_on_stdout(runs, target):
         check_run(run, sandbox, before)
     raw = sorted({hex(ord(c)) for c in run.stdout if c == "\x7f" or "\x80" <= c <= "\x9f" or c == "\u202e"})
     assert run.code == 0 and not raw, (raw, run.stderr)
+
+
+def test_ar_offers_no_size_flag(runs):
+    """`cnlmc ar --help` listed --size, which AR then refused as 'unknown option(s) size' (AR renders
+    at the photo's size); the flag is not offered."""
+    with Sandbox.made(runs) as sandbox:
+        helped = run_cli(["ar", "--help"], b"", sandbox)
+        refused = run_cli(["ar", "photo.png", "gold", "-o", "../out/a.png", "--size", "32"], b"", sandbox)
+    assert helped.code == 0 and "--size" not in helped.stdout and "--mesh" in helped.stdout
+    assert refused.code == 2 and "unrecognized arguments: --size 32" in refused.stderr
