@@ -301,7 +301,10 @@ def emit_stage(stage: str, source: str, name: str, lexicon: Lexicon) -> int:
             tagged, _diags = tagger.tag_line(text, number, offset)
             for t in tagged:
                 tags = "|".join(c.tag for c in t.candidates) or "?"
-                print(f"{t.span.line}:{t.span.col}\t{tags}\t{t.text}" + ("\t(unknown)" if t.unknown else ""))
+                print(
+                    f"{t.span.line}:{t.span.col}\t{tags}\t{visible(t.text, one_line=True)}"
+                    + ("\t(unknown)" if t.unknown else "")
+                )
         return EXIT_OK
     doc = parse_document(source, lexicon, name)
     print_diagnostics(doc.diagnostics, source, name)

@@ -400,6 +400,8 @@ def test_the_checks_fail_what_they_are_for(runs):
         (["compile", "-", "--target", "preview", "-o", "../out/"], b"# x\n", 2, "no material to render"),
         # a byte order mark, then a byte that is not UTF-8: UnicodeDecodeError
         (["compile", "-", "--target", "materialx"], b"\xef\xbb\xbf\n\xff", 2, "<stdin>:2:1: not UTF-8 text"),
+        # --emit tokens printed a word's text raw: an ESC in the source reached the terminal
+        (["compile", "-", "--emit", "tokens"], b"\x1b]0;title\x07 gold\n", 0, ""),
         # an exchange map size is checked whether or not a material has maps (it was accepted for 'gold')
         (
             ["compile", "-", "-t", "materialx", "--option", "map_size=0"],
