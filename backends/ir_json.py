@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import io
 import json
+import re
 from collections.abc import Iterable, Mapping, Sequence
 from typing import Any, BinaryIO
 
@@ -114,7 +115,20 @@ def _head(document: Document) -> dict[str, object]:
 
 
 def _dumps(value: object) -> str:
-    return _ENCODER.encode(value)
+    """JSON text with DEL, the C1 controls and U+2028/U+2029 written as \\u escapes: the encoder
+    leaves them raw (valid JSON), but a terminal reads C1 as commands (U+009B is CSI) and
+    JavaScript reads U+2028 as a line end. They occur only inside strings, so escaping the text is exact."""
+    text = _ENCODER.encode(value)
+    if _UNSAFE_ON_TERMINAL.search(text) is None:
+        return text
+    return _UNSAFE_ON_TERMINAL.sub(_escaped, text)
+
+
+def _escaped(match: re.Match[str]) -> str:
+    return f"\\u{ord(match.group()):04x}"
+
+
+_UNSAFE_ON_TERMINAL = re.compile("[\x7f-\x9f\u2028\u2029]")
 
 
 def _plain(value: object) -> Any:

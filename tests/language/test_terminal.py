@@ -65,3 +65,17 @@ def test_cli_stderr_has_no_raw_control_characters(tmp_path: Path) -> None:
         assert not RAW_CONTROL.search(done.stdout), (args, done.stdout)
     done = run_cnlmc("compile", "-", stdin="blue \x1b[2Jplastic\n")
     assert done.returncode == 1 and "\\x1b" in done.stderr and not RAW_CONTROL.search(done.stderr)
+
+
+def test_the_ir_on_stdout_escapes_del_c1_and_line_separators() -> None:
+    """JSON allows DEL, C1 and U+2028 raw inside strings; a terminal reads U+009B as CSI and
+    JavaScript U+2028 as a line end, so the IR writes them as \\u escapes (still the same JSON)."""
+    import json
+
+    source = "x: gold # \x9b[2J \u2028 \x7f\n"
+    run = run_cnlmc("compile", "-", stdin=source)
+    assert run.returncode == 0, run.stderr
+    assert not RAW_CONTROL.search(run.stdout), repr(run.stdout)
+    assert "\\u009b" in run.stdout and "\\u007f" in run.stdout and "\\u2028" in run.stdout
+    phrase = json.loads(run.stdout)["materials"][0]["phrase"]
+    assert "\x9b[2J" in phrase and "\x7f" in phrase  # the text is kept, only its spelling changes
