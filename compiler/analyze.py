@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from typing import Any
 
 from . import ast
@@ -134,10 +134,7 @@ def _states(
             continue  # reported already; half-understood materials are not emitted
         refinements = [r for r in refinements if r.span.line not in bad_lines]
         for state in build_states(material, refinements, ctx, material_name(material, used), diags):
-            for d in state.diagnostics:
-                if d not in seen:
-                    seen.add(d)
-                    diags.append(d)
+            _report_new(state.diagnostics, seen, diags)
             yield state
 
 
@@ -152,6 +149,14 @@ def iter_material_irs(source: str, ctx: Context, diags: list[Diagnostic]) -> Ite
         yield material_ir(state, convention, rounded_optics)
 
 
+def _report_new(found: Iterable[Diagnostic], seen: set[Diagnostic], diags: list[Diagnostic]) -> None:
+    """Append what was not reported yet (variants of one phrase repeat the same warnings)."""
+    for d in found:
+        if d not in seen:
+            seen.add(d)
+            diags.append(d)
+
+
 def _streamed_states(source: str, ctx: Context, diags: list[Diagnostic]) -> Iterator[MaterialState]:
     seen: set[Diagnostic] = set()
     used: dict[str, int] = {}
@@ -159,10 +164,7 @@ def _streamed_states(source: str, ctx: Context, diags: list[Diagnostic]) -> Iter
     for material, refinements in _material_groups(iter_items(source, ctx.lexicon, diags), diags):
         seen.update(diags[mark:])  # the parser's since the last material: a state repeating one is not added
         for state in build_states(material, refinements, ctx, material_name(material, used), diags):
-            for d in state.diagnostics:
-                if d not in seen:
-                    seen.add(d)
-                    diags.append(d)
+            _report_new(state.diagnostics, seen, diags)
             yield state
         mark = len(diags)
 

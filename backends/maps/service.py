@@ -71,6 +71,19 @@ def bake_arrays(
         raise MapBakeError(name, str(exc)) from None
 
 
+def _derived(
+    material: Material | Mapping[str, Any],
+    size: int,
+    seed: int,
+    roles: Collection[str] | None,
+    derive: Derive | None,
+    on_progress: OnProgress | None = None,
+) -> tuple[str, Arrays]:
+    """The material's name and its baked arrays, passed through `derive` when one is given."""
+    arrays = bake_arrays(material, size, seed, roles, on_progress)
+    return _parts(material)[0], arrays if derive is None else derive(arrays)
+
+
 def bake_files(
     material: Material | Mapping[str, Any],
     out_dir: str | Path,
@@ -85,10 +98,7 @@ def bake_files(
 ) -> list[Path]:
     """Bake and write out_dir/{stem}_{role}{.png|.exr} (stem: the material's name); all-or-nothing,
     or, with `staging`, written when the caller commits it (cnlmc.output.Staging)."""
-    name = _parts(material)[0]
-    arrays = bake_arrays(material, size, seed, roles, on_progress)
-    if derive is not None:
-        arrays = derive(arrays)
+    name, arrays = _derived(material, size, seed, roles, derive, on_progress)
     try:
         return write_maps(arrays, out_dir, fmt, stem=stem or name, staging=staging)
     except MapError as exc:
@@ -109,10 +119,7 @@ def bake_images(
     a name too long for a file is shortened, writer.map_file_name). The images pass through a
     scratch folder that a signal (SIGTERM, SIGHUP, SIGINT) removes too."""
     prefix = f"{folder}/" if folder else ""
-    name = _parts(material)[0]
-    arrays = bake_arrays(material, size, seed, roles)
-    if derive is not None:
-        arrays = derive(arrays)
+    name, arrays = _derived(material, size, seed, roles, derive)
     with SignalGuard(), tempfile.TemporaryDirectory(prefix="cnlmc-maps-") as tmp:
         try:
             paths = write_maps(arrays, tmp, fmt, stem=stem or name)
