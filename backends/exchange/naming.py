@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Sequence
 
+from cnlmc.diagnostics import visible
 from cnlmc.filenames import short_hash
 from cnlmc.material import Material
 from cnlmc.passes.variants import ascii_fold
@@ -72,9 +73,12 @@ INVALID_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]"
 
 
 def xml_text(value: object) -> str:
-    """Characters XML 1.0 cannot hold at all (even escaped) are removed; the rest is escaped
-    by whichever writer the backend uses (MaterialX's, pxr's, jinja2's autoescape)."""
-    return INVALID_XML.sub("", str(value))
+    """Free text (a phrase, a name as written) for a doc string or comment: control characters
+    (C0, DEL, C1, line separators, bidi overrides) become visible escapes such as `\\x9b`, as on
+    the terminal (a file printed on stdout must not drive the terminal; XML 1.0 cannot hold C0
+    at all), and lone surrogates are removed; the rest is escaped by whichever writer the
+    backend uses (MaterialX's, pxr's, jinja2's autoescape)."""
+    return INVALID_XML.sub("", visible(str(value), one_line=True))
 
 
 def phrase_text(material: Material) -> str:

@@ -409,9 +409,10 @@ KEPT_HIDDEN = frozenset({".cnlmc-manifest.json"})
 
 
 #: what must not reach the terminal even in a file printed on stdout (JSON, XML, USD, GLSL text):
-#: the C0 controls that are not layout (ESC, BEL, backspace, ...). (DEL and C1 are not checked here
-#: yet: the IR, MaterialX and USD targets still keep them raw inside strings.)
-TERMINAL_CONTROLS = frozenset(chr(c) for c in range(0x20) if chr(c) not in "\t\n\r\f")
+#: the C0 controls that are not layout (ESC, BEL, backspace, ...), DEL and C1 (U+009B is CSI)
+TERMINAL_CONTROLS = frozenset(
+    [*(chr(c) for c in range(0x20) if chr(c) not in "\t\n\r\f"), "\x7f", *(chr(c) for c in range(0x80, 0xA0))]
+)
 
 
 def raw_controls(text: str) -> list[str]:

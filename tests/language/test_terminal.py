@@ -6,6 +6,8 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import pytest
+
 from cnlmc.api import compile_source
 from cnlmc.diagnostics import render, visible, warning
 from cnlmc.explain import explain
@@ -79,3 +81,16 @@ def test_the_ir_on_stdout_escapes_del_c1_and_line_separators() -> None:
     assert "\\u009b" in run.stdout and "\\u007f" in run.stdout and "\\u2028" in run.stdout
     phrase = json.loads(run.stdout)["materials"][0]["phrase"]
     assert "\x9b[2J" in phrase and "\x7f" in phrase  # the text is kept, only its spelling changes
+
+
+@pytest.mark.parametrize(
+    "target", [pytest.param("materialx", marks=pytest.mark.materialx), pytest.param("usd", marks=pytest.mark.usd)]
+)
+def test_exchange_files_on_stdout_show_control_characters_escaped(target: str) -> None:
+    """The phrase goes into doc strings: its control characters are written as visible escapes."""
+    run = run_cnlmc(
+        "compile", "-", "--target", target, "--option", "maps=none", stdin="x: gold # \x9b[2J \x7f \x1b]0;t\x07\n"
+    )
+    assert run.returncode == 0, run.stderr
+    assert not RAW_CONTROL.search(run.stdout), repr(run.stdout)
+    assert "x9b[2J" in run.stdout and "x1b]0;t" in run.stdout
