@@ -280,6 +280,12 @@ def say_wrote(path: object) -> None:
 def deliver(artifacts: list[Artifact], output: str | None, protect: Sequence[str] = ()) -> int:
     """Write the files (all-or-nothing, never over an input in `protect`: cnlmc.output) where -o
     says, or print the text ones on stdout."""
+    if not artifacts:
+        print(
+            "cnlmc: note: nothing to write: the result has no files (no material of the input has what this target writes)",
+            file=sys.stderr,
+        )
+        return EXIT_OK
     if output:
         for path in write_artifacts(artifacts, output, protect):
             say_wrote(path)

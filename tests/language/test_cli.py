@@ -1,6 +1,7 @@
 """The CLI end to end, as a user runs it: exit codes, stdout/stderr, files."""
 
 import json
+from pathlib import Path
 
 import pytest
 
@@ -122,3 +123,11 @@ def test_emit_ir_stops_at_the_ir_whatever_the_target():
     r = cnlmc("compile", "-", "--target", "glsl", "--emit", "ir", stdin="steel")
     assert r.returncode == 0
     assert json.loads(r.stdout)["ir_version"] == 1
+
+
+def test_a_result_without_files_says_so(tmp_path: Path) -> None:
+    """`--target maps` of a material without procedural maps writes nothing, and says so."""
+    run = cnlmc("compile", "-", "--target", "maps", "-o", str(tmp_path / "out") + "/", stdin="red plastic\n")
+    assert run.returncode == 0, run.stderr
+    assert "nothing to write" in run.stderr
+    assert not (tmp_path / "out").exists()
