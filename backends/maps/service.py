@@ -15,7 +15,6 @@ Formats: png8, png16, exr-half, exr-float (writer.FORMATS). Sizes: a power of tw
 
 from __future__ import annotations
 
-import tempfile
 from collections.abc import Callable, Collection, Mapping
 from pathlib import Path
 from typing import Any
@@ -25,6 +24,7 @@ import numpy as np
 from cnlmc.interrupts import SignalGuard
 from cnlmc.material import Material, params_to_ir
 from cnlmc.output import Staging
+from cnlmc.scratch import scratch_folder
 
 from ..base import Artifact
 from .bake import OnProgress, bake
@@ -120,7 +120,7 @@ def bake_images(
     scratch folder that a signal (SIGTERM, SIGHUP, SIGINT) removes too."""
     prefix = f"{folder}/" if folder else ""
     name, arrays = _derived(material, size, seed, roles, derive)
-    with SignalGuard(), tempfile.TemporaryDirectory(prefix="cnlmc-maps-") as tmp:
+    with SignalGuard(), scratch_folder("maps") as tmp:
         try:
             paths = write_maps(arrays, tmp, fmt, stem=stem or name)
         except MapError as exc:
