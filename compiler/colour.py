@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import math
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
+from typing import Any
 
 LUMA = (0.2126, 0.7152, 0.0722)  # Rec.709 luminance weights
 
@@ -61,3 +63,101 @@ def blend(a: Iterable[float], b: Iterable[float], t: float) -> list[float]:
 
 def clamp01(rgb: Iterable[float]) -> list[float]:
     return [min(max(c, 0.0), 1.0) for c in rgb]
+
+
+# ---------------------------------------------------------------- OKLab (Ottosson 2020)
+# https://bottosson.github.io/posts/oklab/ : a perceptual space on linear sRGB (= linear Rec.709).
+# Colour shifts ("dark", "light", "-ish") are defined here, so "dark X" is darker than X by
+# construction: L is what changes, and a colour outside the gamut loses chroma, never lightness.
+
+
+def linear_to_oklab(rgb: Sequence[float]) -> list[float]:
+    r, g, b = rgb
+    lms = (
+        0.4122214708 * r + 0.5363325363 * g + 0.0514459929 * b,
+        0.2119034982 * r + 0.6806995451 * g + 0.1073969566 * b,
+        0.0883024619 * r + 0.2817188376 * g + 0.6299787005 * b,
+    )
+    l_, m_, s_ = (math.copysign(abs(v) ** (1 / 3), v) for v in lms)
+    return [
+        0.2104542553 * l_ + 0.7936177850 * m_ - 0.0040720468 * s_,
+        1.9779984951 * l_ - 2.4285922050 * m_ + 0.4505937099 * s_,
+        0.0259040371 * l_ + 0.7827717662 * m_ - 0.8086757660 * s_,
+    ]
+
+
+def oklab_to_linear(lab: Sequence[float]) -> list[float]:
+    L, a, b = lab
+    l_ = (L + 0.3963377774 * a + 0.2158037573 * b) ** 3
+    m_ = (L - 0.1055613458 * a - 0.0638541728 * b) ** 3
+    s_ = (L - 0.0894841775 * a - 1.2914855480 * b) ** 3
+    return [
+        4.0767416621 * l_ - 3.3077115913 * m_ + 0.2309699292 * s_,
+        -1.2684380046 * l_ + 2.6097574011 * m_ - 0.3413193965 * s_,
+        -0.0041960863 * l_ - 0.7034186147 * m_ + 1.7076147010 * s_,
+    ]
+
+
+def _in_gamut(rgb: Sequence[float], eps: float = 1e-7) -> bool:
+    return all(-eps <= c <= 1 + eps for c in rgb)
+
+
+def oklab_to_linear_in_gamut(lab: Sequence[float]) -> list[float]:
+    """Linear RGB of an OKLab colour; outside [0, 1] it keeps L and hue and loses chroma (bisection)."""
+    L = min(max(lab[0], 0.0), 1.0)
+    a, b = lab[1], lab[2]
+    rgb = oklab_to_linear((L, a, b))
+    if _in_gamut(rgb):
+        return clamp01(rgb)
+    low, high = 0.0, 1.0  # the fraction of the chroma kept
+    for _ in range(24):
+        mid = (low + high) / 2
+        if _in_gamut(oklab_to_linear((L, a * mid, b * mid))):
+            low = mid
+        else:
+            high = mid
+    return clamp01(oklab_to_linear((L, a * low, b * low)))
+
+
+def shift_lightness(rgb: Sequence[float], toward: float, amount: float) -> list[float]:
+    """OKLab L moved toward `toward` (0 black, 1 white) by `amount`; chroma kept where the gamut allows."""
+    L, a, b = linear_to_oklab(rgb)
+    return oklab_to_linear_in_gamut((L + (toward - L) * amount, a, b))
+
+
+def scale_chroma(rgb: Sequence[float], scale: float) -> list[float]:
+    """OKLCh chroma times `scale` at the same L and hue."""
+    L, a, b = linear_to_oklab(rgb)
+    return oklab_to_linear_in_gamut((L, a * scale, b * scale))
+
+
+def toward_hue(rgb: Sequence[float], target: Sequence[float], amount: float) -> list[float]:
+    """OKLab a, b (hue and chroma) moved toward the OKLab `target`'s by `amount`, L kept ("reddish")."""
+    L, a, b = linear_to_oklab(rgb)
+    return oklab_to_linear_in_gamut((L, a + (target[1] - a) * amount, b + (target[2] - b) * amount))
+
+
+def mix_oklab(x: Sequence[float], y: Sequence[float], t: float = 0.5) -> list[float]:
+    """The OKLab mix of two linear colours ("blue-green": t = 0.5)."""
+    p, q = linear_to_oklab(x), linear_to_oklab(y)
+    return oklab_to_linear_in_gamut([u + t * (v - u) for u, v in zip(p, q)])
+
+
+def apply_ops(rgb: Sequence[float], ops: Iterable[Mapping[str, Any]]) -> list[float]:
+    """A shade's colour operations (stdlib/lexicon/shades.toml) in order, on linear RGB."""
+    out = list(rgb)
+    for op in ops:
+        kind = op["op"]
+        if kind == "saturate":
+            out = saturate(out, op["amount"])
+        elif kind == "blend":
+            out = blend(out, op["value"], op["amount"])
+        elif kind == "mul":
+            out = [c * op["value"] for c in out]
+        elif kind == "lightness":
+            out = shift_lightness(out, op["toward"], op["amount"])
+        elif kind == "chroma":
+            out = scale_chroma(out, op["scale"])
+        elif kind == "toward":
+            out = toward_hue(out, op["oklab"], op["amount"])
+    return clamp01(out)

@@ -183,6 +183,13 @@ class Builder:
         aliases = set(current.data.get("aliases", [])) | set(entry.get("aliases", []))
         current.data["aliases"] = sorted(aliases)
 
+    def add_colour_names(self) -> None:
+        """The xkcd colour survey's names (stdlib/data/colour_names.toml) as the everyday colours,
+        under every folder (an entry a folder has wins); see add_survey_colours."""
+        path = colour_names_file()
+        source = SourceText(str(path), path.read_text("utf-8"))
+        add_survey_colours(self, tomllib.loads(source.text), source)
+
     def check(self) -> None:
         """Entries added only by a user layer must carry every required field; every name must exist."""
         for category, by_key in self.raw.items():
@@ -194,6 +201,120 @@ class Builder:
     def build(self) -> Lexicon:
         entries = {c: {k: _finish(c, k, e) for k, e in by.items()} for c, by in self.raw.items()}
         return Lexicon(entries, self.settings, self.inflections, self.sources, self.keywords)
+
+
+# ---------------------------------------------------------------- the xkcd colour survey
+
+SURVEY = "xkcd colour survey (Munroe 2010, https://xkcd.com/color/rgb/, CC0 1.0)"
+#: Shades whose survey compounds ("dark X") must move L this way from X: -1 darker, +1 lighter.
+SHADE_DIRECTIONS = {"dark": -1, "deep": -1, "light": 1, "pale": 1}
+#: Survey names that are another kind of word too and stay colours as well: nouns that were colours
+#: before the survey, and the -ish shades ("reddish oak": the colour reddish, "reddish grey": a shade).
+NOUN_COLOURS = ("charcoal", "cherry", "gold", "gunmetal", "ivory", "linen", "silver", "snow")
+ISH_COLOURS = ("reddish", "bluish", "greenish", "yellowish", "pinkish", "greyish", "purplish", "brownish", "orangish")
+#: Everyday spellings of survey colours that the survey does not list (added where not a name of its own).
+EXTRA_ALIASES = {
+    "gunmetal": ("gunmetal grey", "gunmetal gray"),
+    "charcoal": ("charcoal gray",),
+    "ochre": ("ocher",),
+    "rust red": ("rust colored", "rust coloured"),
+    "burgundy": ("wine red",),
+    "sage": ("sage green",),
+    "emerald": ("emerald green",),
+    "cherry": ("cherry red",),
+}
+#: Colours two of which make a compound ("blue green", written "blue-green") where the survey has none.
+MIX_COLOURS = ("red", "orange", "yellow", "green", "blue", "purple", "pink", "brown", "grey")
+
+
+def colour_names_file() -> Traversable:
+    return resources.files("cnlmc.stdlib").joinpath("data").joinpath("colour_names.toml")
+
+
+def add_survey_colours(builder: Builder, names: dict[str, Any], source: SourceText) -> None:
+    """Each survey name not already a colour: its hex, "gray" and "a b" (for "a/b") aliases, a doc
+    citing the survey. A single word that another category has ("dark", "rust", "steel") stays
+    that category's only, but for NOUN_COLOURS (colour and noun, the parser picks the reading). The survey's "dark X" / "light X" / "pale X" / "deep X" is kept only
+    if it is darker / lighter than X in OKLab L, else it is X with the shade's OKLab operations.
+    Hyphenated compounds of two MIX_COLOURS the survey lacks ("red-blue") are their OKLab midpoint
+    (the tagger reads a hyphenated word the lexicon lacks as its spaced form: "blue-grey")."""
+    from . import colour
+
+    colours = builder.raw["colours"]
+    others = {f for c, by in builder.raw.items() if c != "colours" for k, e in by.items() for f in _forms(k, e)}
+    others -= {*NOUN_COLOURS, *ISH_COLOURS}
+    known = {f for k, e in colours.items() for f in _forms(k, e)}
+    added: set[str] = set()
+    for name, row in names.items():
+        if row.get("source") != "xkcd":
+            continue
+        if "/" in name:  # "blue/green": '/' is not a word character; the spaced form, unless the survey has it
+            name = name.replace("/", " ")
+            if name in names:
+                continue
+        if name not in colours and ((" " not in name and name in others) or name in known):
+            continue
+        variants = {name.replace("grey", "gray")}
+        variants |= set(EXTRA_ALIASES.get(name, ()))
+        aliases = sorted(v for v in variants - {name} if v not in names and v not in known)
+        hex_code = row["hex"]
+        entry = {
+            "hex": hex_code,
+            "aliases": aliases,
+            "doc": f"'{name}' ({hex_code}) in the {SURVEY}{'' if row is names.get(name) else ' (written with a slash there)'}.",
+            "example": f"{name} plastic",
+            "source": SURVEY,
+        }
+        builder._merge("colours", name, entry, source)
+        added.add(name)
+    for name in sorted(added):
+        first, _, rest = name.partition(" ")
+        direction = SHADE_DIRECTIONS.get(first)
+        if direction is None or rest not in colours or first not in builder.raw["shades"]:
+            continue
+        if colours[name].field_sources.get("hex") is not source:  # a folder's own value stays
+            continue
+        base = colour.hex_to_linear(colours[rest].data["hex"])
+        own = colours[name].data
+        if (
+            colour.linear_to_oklab(colour.hex_to_linear(own["hex"]))[0] - colour.linear_to_oklab(base)[0]
+        ) * direction > 0:
+            continue
+        shifted = colour.linear_to_hex(colour.apply_ops(base, builder.raw["shades"][first].data["ops"]))
+        own["doc"] = (
+            f"'{name}': {rest} with the shade '{first}' ({shifted}); the {SURVEY} has {own['hex']}, "
+            f"which is not {'darker' if direction < 0 else 'lighter'} than its '{rest}'."
+        )
+        own["hex"] = shifted
+    for a in MIX_COLOURS:
+        for b in MIX_COLOURS:
+            name, spaced = f"{a}-{b}", f"{a} {b}"
+            if (
+                a == b
+                or spaced in colours
+                or spaced.replace("grey", "gray") in known
+                or a not in colours
+                or b not in colours
+            ):
+                continue
+            mixed = colour.linear_to_hex(
+                colour.mix_oklab(
+                    colour.hex_to_linear(colours[a].data["hex"]), colour.hex_to_linear(colours[b].data["hex"])
+                )
+            )
+            gray = name.replace("grey", "gray")
+            entry = {
+                "hex": mixed,
+                "aliases": [gray] if gray != name else [],
+                "doc": f"'{name}': the OKLab midpoint of {a} and {b} ({mixed}); the survey has no '{spaced}'.",
+                "example": f"{a}-{b} plastic",
+                "source": f"computed from the {SURVEY}",
+            }
+            builder._merge("colours", name, entry, source)
+
+
+def _forms(key: str, entry: RawEntry) -> list[str]:
+    return [key.lower(), *(a.lower() for a in entry.data.get("aliases", []))]
 
 
 def _finish(category: str, key: str, raw: RawEntry) -> Entry:
@@ -293,5 +414,6 @@ def load(user_paths: Iterable[str | Path], overlay: str | tuple[str, ...] | None
     for name in overlay_names(overlay):
         builder.add_layer(overlay_folder(name), bundled=True, strict=False)
     builder.add_layer(stdlib_folder(), bundled=True, strict=True)
+    builder.add_colour_names()
     builder.check()
     return builder.build()

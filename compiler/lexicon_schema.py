@@ -32,7 +32,14 @@ MAX_TEXT = 4096  # characters in one string field
 #: what a formula's `param = "model"` may set (a metal needs a noun's optics: `material = "copper"`)
 EFFECT_MODELS = ("dielectric", "glass")
 FORMULA_OPS = ("set", "mul", "add", "blend")
-SHADE_OPS = {"saturate": ("amount",), "blend": ("value", "amount"), "mul": ("value",)}
+SHADE_OPS = {
+    "saturate": ("amount",),
+    "blend": ("value", "amount"),
+    "mul": ("value",),
+    "lightness": ("toward", "amount"),  # OKLab L toward 0 or 1 (compiler/colour.py)
+    "chroma": ("scale",),  # OKLCh chroma times scale
+    "toward": ("oklab", "amount"),  # OKLab a, b toward a colour's ("reddish")
+}
 PARAM_SPECS = {s.name: s for s in PARAMS}
 #: What an adjective's formula may change: the scalar parameters, the base colour and the model.
 #: (A metal's optics come whole from a noun: `material = "copper"`.)
@@ -309,7 +316,8 @@ def _check_ops(c: Checker, value: object, spec: FieldSpec, path: Path_) -> None:
 
 
 def check_shade_op(c: Checker, raw: object, path: Path_) -> None:
-    """saturate (amount), blend (value = [r, g, b], amount) or mul (value)."""
+    """saturate (amount), blend (value = [r, g, b], amount), mul (value), and in OKLab: lightness
+    (toward = 0 or 1, amount), chroma (scale) or toward (oklab = [L, a, b], amount)."""
     op_table = c.table(raw, path, "an operation table { op = ..., ... }")
     op = c.choice(c.required(op_table, "op", path), SHADE_OPS, (*path, "op"), "colour operation")
     needs = SHADE_OPS[op]
@@ -320,6 +328,14 @@ def check_shade_op(c: Checker, raw: object, path: Path_) -> None:
         c.number(op_table["amount"], (*path, "amount"), -1.0, 10.0)
     elif op == "blend":
         c.rgb(op_table["value"], (*path, "value"), 0.0, 1.0)
+        c.number(op_table["amount"], (*path, "amount"), 0.0, 1.0)
+    elif op == "lightness":
+        c.number(op_table["toward"], (*path, "toward"), 0.0, 1.0)
+        c.number(op_table["amount"], (*path, "amount"), 0.0, 1.0)
+    elif op == "chroma":
+        c.number(op_table["scale"], (*path, "scale"), 0.0, 4.0)
+    elif op == "toward":
+        c.rgb(op_table["oklab"], (*path, "oklab"), -1.0, 1.0)
         c.number(op_table["amount"], (*path, "amount"), 0.0, 1.0)
     else:
         c.number(op_table["value"], (*path, "value"), 0.0, MAX_FACTOR)

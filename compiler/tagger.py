@@ -2,7 +2,8 @@
 
 Words are matched against the lexicon longest-first ("stainless steel" before "steel",
 "a bit" before "a"); a word that is not found is tried in its base forms (inflection
-rules from the lexicon), then reported with "did you mean". A word may carry several
+rules from the lexicon) and, hyphenated, as its spaced form ("blue-grey" as "blue grey"), then
+reported with "did you mean". A word may carry several
 candidate tags ("gold": colour or noun); the parser picks the one the grammar accepts.
 """
 
@@ -180,6 +181,8 @@ class Tagger:
                 found = self._exact((base,))
                 if found:
                     break
+        if not found and len(words) == 1 and "-" in words[0]:  # "blue-grey", "off-white": the spaced form
+            found = self._exact(tuple(part for part in words[0].split("-") if part))
         return tuple(sorted(found, key=lambda c: TAG_PREFERENCE[c.tag]))
 
     def _exact(self, words: tuple[str, ...]) -> list[Candidate]:

@@ -85,6 +85,12 @@ def _shade_op(op: dict[str, Any]) -> str:
         return f"colour *= {op['value']}"
     if op["op"] == "blend":
         return f"blend to {op['value']} by {op['amount']}"
+    if op["op"] == "lightness":
+        return f"OKLab L {op['amount']:.0%} of the way to {'white' if op['toward'] else 'black'}"
+    if op["op"] == "chroma":
+        return f"OKLCh chroma *= {op['scale']}"
+    if op["op"] == "toward":
+        return f"OKLab a, b {op['amount']:.0%} of the way to {op['oklab'][1:]}"
     return f"saturate by {op['amount']}"
 
 

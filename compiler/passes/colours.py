@@ -11,20 +11,17 @@ NEUTRAL = [1.0, 1.0, 1.0]
 
 
 def shade(rgb: list[float], ops: list[dict[str, Any]]) -> list[float]:
-    for op in ops:
-        if op["op"] == "saturate":
-            rgb = colour.saturate(rgb, op["amount"])
-        elif op["op"] == "blend":
-            rgb = colour.blend(rgb, op["value"], op["amount"])
-        elif op["op"] == "mul":
-            rgb = [c * op["value"] for c in rgb]
-    return colour.clamp01(rgb)
+    return colour.apply_ops(rgb, ops)
 
 
 def resolve_colour(c: ast.Colour, ctx: Context, start: list[float] | None = None) -> list[float]:
-    """RGB of a colour phrase; shades alone ("dark wood") act on `start`."""
-    rgb = list(ctx.lexicon.require("colours", c.base.key).get("rgb")) if c.base else list(start or NEUTRAL)
-    for word in reversed(c.shades):  # the shade nearest the colour applies first
+    """RGB of a colour phrase; shades alone ("dark wood") act on `start`, but a last shade that is
+    also a colour ("reddish" in "reddish plastic", "dark reddish oak") is that colour, as "red" would be."""
+    shades, base = c.shades, c.base
+    if base is None and shades and ctx.lexicon.entry("colours", shades[-1].key) is not None:
+        shades, base = shades[:-1], shades[-1]
+    rgb = list(ctx.lexicon.require("colours", base.key).get("rgb")) if base else list(start or NEUTRAL)
+    for word in reversed(shades):  # the shade nearest the colour applies first
         rgb = shade(rgb, ctx.lexicon.require("shades", word.key).get("ops"))
     return rgb
 

@@ -104,7 +104,7 @@ def test_clamped_value_warns_with_its_words(compile_text):
 def test_second_colour_warns(compile_text):
     r = compile_text("red blue plastic")
     assert [c for c, *_ in diags(r)] == ["W105"]
-    assert r.materials[0]["params"]["base_color"] == [0.0, 0.0, 1.0]
+    assert r.materials[0]["params"]["base_color"] == [0.000911, 0.056128, 0.73791]  # the survey's blue #0343df
 
 
 def test_numbers_and_symbols_are_reported_not_crashed_on(compile_text):

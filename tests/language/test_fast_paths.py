@@ -55,7 +55,7 @@ def test_one_shape_serves_lines_with_the_same_tags(lexicon):
         ("red or blue anodized aluminum", "green or white brushed steel"),
         ("darker blue, less diffuse", "lighter red, more diffuse"),
         ("pale dark slate gray plastic", "light dark slate gray rubber"),
-        ("dark pale slate gray rubber", "light dark navy blue rubber"),
+        ("dark pale slate gray rubber", "light deep navy blue rubber"),
         ("gold plated steel", "gold plated steel"),
     ],
 )

@@ -60,14 +60,15 @@ def test_metals_cite_the_dataset_and_use_its_numbers(stdlib):
         ("anodised", "anodized"),
         ("anodize", "anodized"),
         ("aluminium", "aluminum"),
-        ("grey", "gray"),
+        ("gray", "grey"),
         ("brush", "brushed"),
         ("bricks", "brick"),
         ("coppers", "copper"),
         ("oxidised", "oxidized"),
         ("colour", "colour"),
         ("dark slate grey", "dark slate gray"),
-        ("navy blue", "navy"),
+        ("blue-gray", "blue grey"),  # the survey's name, hyphenated and spelled gray
+        ("off-white", "off white"),
     ],
 )
 def test_spellings_resolve_to_one_entry(stdlib, spelling, key):

@@ -15,14 +15,14 @@
 //   unit vectors in any one space. Returns the BRDF f (linear Rec.709 RGB),
 //   NOT multiplied by cos(theta_l).
 // uniforms: (values also in the .glsl.json sidecar)
-//   vec3 cnlm_base_color = vec3(0.0, 0.0, 1.0)
+//   vec3 cnlm_base_color = vec3(0.000911, 0.056128, 0.73791)
 //   vec2 cnlm_alpha = vec2(0.1125, 0.072)
 //   float cnlm_anisotropy_rotation = 0.0
 //   vec3 cnlm_eta = vec3(1.5022, 0.9853, 0.606)
 //   vec3 cnlm_k = vec3(7.6534, 6.5496, 5.3505)
 // samplers: (bind baked maps; see the sidecar)
 //   sampler2D cnlm_map_normal  role=normal colour_space=linear: tangent-space normal, OpenGL convention (+Y up the image), stored as n * 0.5 + 0.5
-uniform vec3 cnlm_base_color = vec3(0.0, 0.0, 1.0);
+uniform vec3 cnlm_base_color = vec3(0.000911, 0.056128, 0.73791);
 uniform vec2 cnlm_alpha = vec2(0.1125, 0.072);
 uniform float cnlm_anisotropy_rotation = 0.0;
 uniform vec3 cnlm_eta = vec3(1.5022, 0.9853, 0.606);

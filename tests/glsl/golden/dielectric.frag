@@ -15,11 +15,11 @@
 //   unit vectors in any one space. Returns the BRDF f (linear Rec.709 RGB),
 //   NOT multiplied by cos(theta_l).
 // uniforms: (values also in the .glsl.json sidecar)
-//   vec3 cnlm_base_color = vec3(1.0, 0.0, 0.0)
+//   vec3 cnlm_base_color = vec3(0.783538, 0.0, 0.0)
 //   float cnlm_alpha = 0.0064
 //   float cnlm_ior = 1.4905
 // samplers: none
-uniform vec3 cnlm_base_color = vec3(1.0, 0.0, 0.0);
+uniform vec3 cnlm_base_color = vec3(0.783538, 0.0, 0.0);
 uniform float cnlm_alpha = 0.0064;
 uniform float cnlm_ior = 1.4905;
 // cnlm common: constants and helpers of the local shading frame (n = +z, t = +x).

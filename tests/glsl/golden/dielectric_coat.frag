@@ -18,7 +18,7 @@
 //   float cnlm_ior = 1.472
 //   float cnlm_coat_ior = 1.5
 //   float cnlm_coat_alpha = 0.01
-//   vec3 cnlm_coat_color = vec3(1.0, 0.0, 0.0)
+//   vec3 cnlm_coat_color = vec3(0.783538, 0.0, 0.0)
 //   float cnlm_coat_thickness = 1.0
 // samplers: (bind baked maps; see the sidecar)
 //   sampler2D cnlm_map_base_color  role=base_color colour_space=srgb: RGB albedo/tint; upload as an sRGB texture (GL_SRGB8[_ALPHA8]) so texture() returns linear
@@ -26,7 +26,7 @@
 uniform float cnlm_ior = 1.472;
 uniform float cnlm_coat_ior = 1.5;
 uniform float cnlm_coat_alpha = 0.01;
-uniform vec3 cnlm_coat_color = vec3(1.0, 0.0, 0.0);
+uniform vec3 cnlm_coat_color = vec3(0.783538, 0.0, 0.0);
 uniform float cnlm_coat_thickness = 1.0;
 uniform sampler2D cnlm_map_base_color;
 uniform sampler2D cnlm_map_roughness;
