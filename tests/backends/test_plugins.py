@@ -37,7 +37,7 @@ def test_an_installed_plugin_is_a_target(tmp_path):
     assert "names and base colours as text" in listed.stdout  # each target with its description
     r = cnlmc(tmp_path, "compile", "-", "--target", "toy", stdin="blue plastic\n")
     assert r.returncode == 0, r.stderr
-    assert r.stdout == "blue_plastic [0.0, 0.0, 1.0]\n"
+    assert r.stdout == "blue_plastic [0.000911, 0.056128, 0.73791]\n"  # the survey's blue #0343df
 
 
 def test_a_misspelled_plugin_target_gets_did_you_mean(tmp_path):

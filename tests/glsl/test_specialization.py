@@ -142,7 +142,7 @@ def test_sidecar_lists_uniform_values():
     meta = json.loads(emit_phrase("lightly brushed, blue anodized aluminum")["glsl.json"])
     values = {u["name"]: (u["type"], u["value"]) for u in meta["uniforms"]}
     assert values["cnlm_alpha"] == ("vec2", [0.1125, 0.072])
-    assert values["cnlm_base_color"] == ("vec3", [0.0, 0.0, 1.0])
+    assert values["cnlm_base_color"] == ("vec3", [0.000911, 0.056128, 0.73791])  # the survey's blue
     assert values["cnlm_eta"][0] == "vec3"
     assert meta["model"]["distribution"] == "ward"
 
