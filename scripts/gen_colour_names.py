@@ -44,7 +44,7 @@ HEADER = """\
 # name that matches after lower-casing, removing spaces and reading gray as grey.
 # hex: sRGB as published. oklab: [L, a, b] of that colour (OKLab, Ottosson 2020,
 # https://bottosson.github.io/posts/oklab/), on linear sRGB, rounded to 4 decimals.
-# English names only. Not loaded by the lexicon yet (groundwork for issue #14).
+# English names only. The lexicon loads it beneath every lexicon folder (docs/language.md, Colours).
 """
 
 
