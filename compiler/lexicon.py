@@ -98,6 +98,7 @@ def lexicon_sources(user_paths: tuple[str | Path, ...], overlay: Overlays) -> li
         Path(str(package.joinpath("schema.toml"))),
         Path(str(resources.files("cnlmc.grammar").joinpath("keywords.toml"))),
         Path(str(package.joinpath("data").joinpath("colour_names.toml"))),  # the everyday colours
+        Path(str(package.joinpath("data").joinpath("colour_rules.toml"))),  # how the survey joins the lexicon
     ]
     sources += folders  # a file added to or removed from a folder changes its time
     sources += [p for folder in folders if folder.is_dir() for p in sorted(folder.glob("*.toml"))]

@@ -206,43 +206,31 @@ class Builder:
 # ---------------------------------------------------------------- the xkcd colour survey
 
 SURVEY = "xkcd colour survey (Munroe 2010, https://xkcd.com/color/rgb/, CC0 1.0)"
-#: Shades whose survey compounds ("dark X") must move L this way from X: -1 darker, +1 lighter.
-SHADE_DIRECTIONS = {"dark": -1, "deep": -1, "light": 1, "pale": 1}
-#: Survey names that are another kind of word too and stay colours as well: nouns that were colours
-#: before the survey, and the -ish shades ("reddish oak": the colour reddish, "reddish grey": a shade).
-NOUN_COLOURS = ("charcoal", "cherry", "gold", "gunmetal", "ivory", "linen", "silver", "snow")
-ISH_COLOURS = ("reddish", "bluish", "greenish", "yellowish", "pinkish", "greyish", "purplish", "brownish", "orangish")
-#: Everyday spellings of survey colours that the survey does not list (added where not a name of its own).
-EXTRA_ALIASES = {
-    "gunmetal": ("gunmetal grey", "gunmetal gray"),
-    "charcoal": ("charcoal gray",),
-    "ochre": ("ocher",),
-    "rust red": ("rust colored", "rust coloured"),
-    "burgundy": ("wine red",),
-    "sage": ("sage green",),
-    "emerald": ("emerald green",),
-    "cherry": ("cherry red",),
-}
-#: Colours two of which make a compound ("blue green", written "blue-green") where the survey has none.
-MIX_COLOURS = ("red", "orange", "yellow", "green", "blue", "purple", "pink", "brown", "grey")
 
 
 def colour_names_file() -> Traversable:
     return resources.files("cnlmc.stdlib").joinpath("data").joinpath("colour_names.toml")
 
 
+def colour_rules_file() -> Traversable:
+    """stdlib/data/colour_rules.toml: which survey words stay colours beside another category, the
+    -ish shades, the colours that mix into compounds, shade directions and everyday aliases."""
+    return resources.files("cnlmc.stdlib").joinpath("data").joinpath("colour_rules.toml")
+
+
 def add_survey_colours(builder: Builder, names: dict[str, Any], source: SourceText) -> None:
     """Each survey name not already a colour: its hex, "gray" and "a b" (for "a/b") aliases, a doc
     citing the survey. A single word that another category has ("dark", "rust", "steel") stays
-    that category's only, but for NOUN_COLOURS (colour and noun, the parser picks the reading). The survey's "dark X" / "light X" / "pale X" / "deep X" is kept only
+    that category's only, but for the rules' noun_colours and ish_colours (colour_rules_file). The survey's "dark X" / "light X" / "pale X" / "deep X" is kept only
     if it is darker / lighter than X in OKLab L, else it is X with the shade's OKLab operations.
-    Hyphenated compounds of two MIX_COLOURS the survey lacks ("red-blue") are their OKLab midpoint
+    Hyphenated compounds of two mix_colours the survey lacks ("red-blue") are their OKLab midpoint
     (the tagger reads a hyphenated word the lexicon lacks as its spaced form: "blue-grey")."""
     from . import colour
 
+    rules = tomllib.loads(colour_rules_file().read_text(encoding="utf-8"))
     colours = builder.raw["colours"]
     others = {f for c, by in builder.raw.items() if c != "colours" for k, e in by.items() for f in _forms(k, e)}
-    others -= {*NOUN_COLOURS, *ISH_COLOURS}
+    others -= {*rules["noun_colours"], *rules["ish_colours"]}
     known = {f for k, e in colours.items() for f in _forms(k, e)}
     added: set[str] = set()
     for name, row in names.items():
@@ -255,7 +243,7 @@ def add_survey_colours(builder: Builder, names: dict[str, Any], source: SourceTe
         if name not in colours and ((" " not in name and name in others) or name in known):
             continue
         variants = {name.replace("grey", "gray")}
-        variants |= set(EXTRA_ALIASES.get(name, ()))
+        variants |= set(rules["extra_aliases"].get(name, ()))
         aliases = sorted(v for v in variants - {name} if v not in names and v not in known)
         hex_code = row["hex"]
         entry = {
@@ -269,7 +257,7 @@ def add_survey_colours(builder: Builder, names: dict[str, Any], source: SourceTe
         added.add(name)
     for name in sorted(added):
         first, _, rest = name.partition(" ")
-        direction = SHADE_DIRECTIONS.get(first)
+        direction = rules["shade_directions"].get(first)
         if direction is None or rest not in colours or first not in builder.raw["shades"]:
             continue
         if colours[name].field_sources.get("hex") is not source:  # a folder's own value stays
@@ -286,8 +274,8 @@ def add_survey_colours(builder: Builder, names: dict[str, Any], source: SourceTe
             f"which is not {'darker' if direction < 0 else 'lighter'} than its '{rest}'."
         )
         own["hex"] = shifted
-    for a in MIX_COLOURS:
-        for b in MIX_COLOURS:
+    for a in rules["mix_colours"]:
+        for b in rules["mix_colours"]:
             name, spaced = f"{a}-{b}", f"{a} {b}"
             if (
                 a == b
