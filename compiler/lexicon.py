@@ -59,6 +59,7 @@ READER_MODULES = (
     "colour",
     "graphs",
     "params",
+    "word_formation_rules",
 )
 Overlays = str | tuple[str, ...] | None  # overlay names, e.g. "paper" or ("de", "paper")
 
@@ -121,6 +122,7 @@ def to_data(lexicon: Lexicon) -> dict[str, Any]:
         "inflections": [list(rule) for rule in lexicon.inflections],
         "sources": lexicon.sources,
         "keywords": lexicon.keywords,
+        "word_formation": lexicon.word_formation,
     }
 
 
@@ -132,7 +134,8 @@ def from_data(data: dict[str, Any]) -> Lexicon:
     inflections = [(_text(s), _text(r)) for s, r in data["inflections"]]
     sources = [_text(s) for s in data["sources"]]
     keywords = {_text(k): _text(v) for k, v in _table(data["keywords"]).items()}
-    return Lexicon(entries, _table(data["settings"]), inflections, sources, keywords)
+    word_formation = [_table(layer) for layer in data.get("word_formation", [])]
+    return Lexicon(entries, _table(data["settings"]), inflections, sources, keywords, word_formation)
 
 
 def _entry_from(category: str, key: str, value: list[Any]) -> Entry:

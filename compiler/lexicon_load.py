@@ -129,6 +129,8 @@ class Builder:
         self.settings: dict[str, Any] = {}
         self.inflections: list[tuple[str, str]] = []
         self.keywords: dict[str, str] = {}
+        self.word_formation: list[dict[str, Any]] = []  # each layer's rules, most specific first
+        self.word_formation_checkers: list[Checker] = []  # the file each of those came from
         self.sources: list[str] = []
 
     def add_layer(self, folder: Folder, bundled: bool, strict: bool) -> None:
@@ -154,6 +156,11 @@ class Builder:
             self.inflections += _inflection_rules(checker, data)
         elif category == "keywords":  # a language's closed-class words (and, or, with, articles)
             self.keywords = {**_keywords(checker, data), **self.keywords}
+        elif category == "word_formation":  # how unknown words are read (cnlmc.word_formation_rules)
+            from .word_formation_rules import check_rules
+
+            self.word_formation.append(check_rules(checker, data))
+            self.word_formation_checkers.append(checker)
         elif category == "settings":
             check_entry(checker, data, self.schema["settings"]["fields"], (), partial=True, common=False)
             self.settings = {**data, **self.settings}
@@ -197,10 +204,15 @@ class Builder:
             for key, entry in by_key.items():
                 check_required(Checker(entry.source), entry.data, fields, (key,), by_key)
         References(self.raw).check()
+        if self.word_formation:
+            from .word_formation_rules import check_rule_names
+
+            for checker, rules in zip(self.word_formation_checkers, self.word_formation, strict=True):
+                check_rule_names(checker, rules, self.raw["adverbs"])
 
     def build(self) -> Lexicon:
         entries = {c: {k: _finish(c, k, e) for k, e in by.items()} for c, by in self.raw.items()}
-        return Lexicon(entries, self.settings, self.inflections, self.sources, self.keywords)
+        return Lexicon(entries, self.settings, self.inflections, self.sources, self.keywords, self.word_formation)
 
 
 # ---------------------------------------------------------------- the xkcd colour survey

@@ -20,6 +20,7 @@ from .tagged import Candidate
 
 if TYPE_CHECKING:  # the tagger reads the lexicon; a lexicon keeps the tagger made for it
     from .tagger import Tagger
+    from .word_formation import WordFormation
 
 CATEGORY_TAGS = {
     "nouns": "NOUN",
@@ -30,8 +31,9 @@ CATEGORY_TAGS = {
     "refinements": "REFINE",
     "properties": "PROP",
     "coats": "COAT",
+    "objects": "OBJECT",  # things made of a material ("planks"): the tagger reads them as their material
 }
-SPECIAL_FILES = ("settings", "inflections", "keywords")
+SPECIAL_FILES = ("settings", "inflections", "keywords", "word_formation")
 
 
 @dataclass(frozen=True)
@@ -71,6 +73,7 @@ class LexiconCaches:
     - effect_rules: (rule, where the effect list is, effect index, weight) -> the provenance text
       of that lexicon effect (passes/words.py)
     - rounded_optics: (noun key, parameter) -> the noun's list value rounded for the IR (ir.py)
+    - word_formation: the rules of word_formation*.toml, compiled on first use (cnlmc.word_formation)
     """
 
     MAX_ENTRIES = 4096  # a memo this full starts over
@@ -85,6 +88,7 @@ class LexiconCaches:
         self.effect_rules: dict[tuple[str, str, int, float], str] = {}
         self.colour_phrases: tuple[tuple[str, tuple[float, float, float]], ...] | None = None
         self.rounded_optics: dict[tuple[str, str], list[float]] = {}
+        self.word_formation: WordFormation | None = None
 
 
 class Lexicon:
@@ -100,8 +104,10 @@ class Lexicon:
         inflections: list[tuple[str, str]],
         sources: list[str],
         keywords: dict[str, str] | None = None,
+        word_formation: list[dict[str, Any]] | None = None,
     ) -> None:
         self.keywords = {**keyword_table(), **(keywords or {})}
+        self.word_formation = word_formation or []  # each layer's word_formation table, most specific first
         self.entries = entries
         self.settings = settings
         self.inflections = inflections

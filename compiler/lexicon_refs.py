@@ -56,6 +56,8 @@ class References:
             self._refinement(key, entry)
         for key, entry in self.raw["properties"].items():
             self._property(key, entry)
+        for key, entry in self.raw["objects"].items():  # "planks" alone reads as its material noun
+            self._name(entry, key, "material", self.raw["nouns"], "noun")
 
     def _name(self, entry: RawEntry, key: str, name: str, known: Collection[str], what: str) -> None:
         value = entry.data.get(name)
@@ -84,6 +86,7 @@ class References:
         self._name(entry, key, "coat", self.raw["coats"], "coat")
         self._names(entry, key, "applies_to", self.noun_names, "noun or noun class")
         self._names(entry, key, "opposes", self.raw["adjectives"], "adjective")
+        self._name(entry, key, "opposite", self.raw["adjectives"], "adjective")  # what 'not X' reads as
         for target in entry.data.get("on", {}):
             if target not in self.noun_names:
                 hint = did_you_mean(target, self.noun_names)

@@ -1,0 +1,106 @@
+"""Reading word_formation*.toml: how the tagger reads a word the lexicon does not know (issue #14).
+
+The file format is documented in stdlib/lexicon/word_formation.toml's header. `check_rules` checks
+one file's table (every failure a LexiconError at FILE:LINE:COL) and returns it in a normal form
+with every key present; `check_rule_names` checks, once all layers are merged, that the adverbs
+the rules name exist. The rules are used by cnlmc.word_formation.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from .lexicon_schema import Checker, did_you_mean
+
+__all__ = ["RULE_TAGS", "check_rule_names", "check_rules", "empty_rules"]
+
+#: The tags a suffix rule may keep from its stem's reading (the grammar's open word classes).
+RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN")
+
+_LISTS = {
+    "punctuation": ("trailing", "leading", "quotes"),
+    "negation": ("words", "prefixes", "softeners"),
+}
+
+
+def empty_rules() -> dict[str, Any]:
+    """The normal form of a file with no rules at all."""
+    return {
+        "punctuation": {"trailing": [], "leading": [], "quotes": []},
+        "negation": {"words": [], "prefixes": [], "softeners": [], "soft_adverb": ""},
+        "prefix": [],
+        "suffix": [],
+        "compounds": {"join": False, "split": False, "linkers": [], "min_part": 3, "head_last": False},
+    }
+
+
+def check_rules(c: Checker, data: dict[str, Any]) -> dict[str, Any]:
+    """One word_formation file's table, checked, in the normal form of `empty_rules`."""
+    rules = empty_rules()
+    c.known_keys(data, tuple(rules), (), "section")
+    for section, names in _LISTS.items():
+        table = c.table(data.get(section, {}), (section,))
+        allowed = (*names, "soft_adverb") if section == "negation" else names
+        c.known_keys(table, allowed, (section,))
+        for name in names:
+            rules[section][name] = _words(c, table.get(name, []), (section, name))
+        if section == "negation":
+            rules[section]["soft_adverb"] = c.string(table.get("soft_adverb", ""), (section, "soft_adverb"))
+    rules["prefix"] = [_prefix(c, raw, i) for i, raw in enumerate(c.array(data.get("prefix", []), ("prefix",)))]
+    rules["suffix"] = [_suffix(c, raw, i) for i, raw in enumerate(c.array(data.get("suffix", []), ("suffix",)))]
+    rules["compounds"] = _compounds(c, data.get("compounds", {}))
+    return rules
+
+
+def _words(c: Checker, value: object, path: tuple[str | int, ...], blank: bool = False) -> list[str]:
+    return [c.string(w, (*path, i), blank=blank).lower() for i, w in enumerate(c.array(value, path, "a list of words"))]
+
+
+def _prefix(c: Checker, raw: object, i: int) -> dict[str, Any]:
+    table = c.table(raw, ("prefix", i))
+    c.known_keys(table, ("forms", "adverb", "doc"), ("prefix", i))
+    return {
+        "forms": _words(c, c.required(table, "forms", ("prefix", i)), ("prefix", i, "forms")),
+        "adverb": c.string(c.required(table, "adverb", ("prefix", i)), ("prefix", i, "adverb"), blank=False),
+        "doc": c.string(c.required(table, "doc", ("prefix", i)), ("prefix", i, "doc"), blank=False),
+    }
+
+
+def _suffix(c: Checker, raw: object, i: int) -> dict[str, Any]:
+    path = ("suffix", i)
+    table = c.table(raw, path)
+    c.known_keys(table, ("forms", "endings", "reads_as", "doc"), path)
+    reads_as = _words(c, c.required(table, "reads_as", path), (*path, "reads_as"))
+    for k, tag in enumerate(reads_as):
+        c.choice(tag.upper(), RULE_TAGS, (*path, "reads_as", k), "tag")
+    return {
+        "forms": _words(c, c.required(table, "forms", path), (*path, "forms")),
+        "endings": _words(c, table.get("endings", [""]), (*path, "endings"), blank=True),
+        "reads_as": [tag.upper() for tag in reads_as],
+        "doc": c.string(c.required(table, "doc", path), (*path, "doc"), blank=False),
+    }
+
+
+def _compounds(c: Checker, raw: object) -> dict[str, Any]:
+    table = c.table(raw, ("compounds",))
+    out = empty_rules()["compounds"]
+    c.known_keys(table, tuple(out), ("compounds",))
+    for flag in ("join", "split", "head_last"):
+        value = table.get(flag, out[flag])
+        if not isinstance(value, bool):
+            c.fail(("compounds", flag), f"expected true or false, got {value!r:.40}")
+        out[flag] = value
+    out["linkers"] = _words(c, table.get("linkers", []), ("compounds", "linkers"))
+    out["min_part"] = int(c.number(table.get("min_part", out["min_part"]), ("compounds", "min_part"), 1, 20))
+    return out
+
+
+def check_rule_names(c: Checker, rules: Mapping[str, Any], adverbs: Mapping[str, Any]) -> None:
+    """Every adverb a rule reads as must be an adverb of the merged lexicon."""
+    named = [(("prefix", i, "adverb"), p["adverb"]) for i, p in enumerate(rules["prefix"])]
+    if rules["negation"]["soft_adverb"]:
+        named.append((("negation", "soft_adverb"), rules["negation"]["soft_adverb"]))
+    for path, name in named:
+        if name not in adverbs:
+            c.fail(path, f"no adverb named '{name}'{did_you_mean(name, adverbs)}")
