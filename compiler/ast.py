@@ -102,6 +102,7 @@ class Material:
     coat: Coat | None
     span: Span
     text: str
+    refinements: tuple[RefineItem, ...] = ()  # an inline comparative: 'shinier' in 'shinier aluminum'
 
     def __init__(
         self,
@@ -111,6 +112,7 @@ class Material:
         coat: Coat | None,
         span: Span,
         text: str,
+        refinements: tuple[RefineItem, ...] = (),
     ) -> None:
         fields = self.__dict__
         fields["name"] = name
@@ -119,21 +121,25 @@ class Material:
         fields["coat"] = coat
         fields["span"] = span
         fields["text"] = text
+        fields["refinements"] = refinements
 
 
 @dataclass(frozen=True, init=False)
 class RefineItem:
-    """One refinement ('darker', 'less diffuse') and what it is about ('blue'), if said."""
+    """One refinement ('darker', 'less diffuse') and what it is about ('blue'), if said;
+    the adverbs before it ('much' in 'much rougher', 'a bit' in 'a bit glossier')."""
 
     word: Word
     target: Word | Colour | None
     span: Span
+    adverbs: tuple[Word, ...] = ()
 
-    def __init__(self, word: Word, target: Word | Colour | None, span: Span) -> None:
+    def __init__(self, word: Word, target: Word | Colour | None, span: Span, adverbs: tuple[Word, ...] = ()) -> None:
         fields = self.__dict__
         fields["word"] = word
         fields["target"] = target
         fields["span"] = span
+        fields["adverbs"] = adverbs
 
 
 @dataclass(frozen=True, init=False)

@@ -103,6 +103,21 @@ class CoatPlan(NamedTuple):
         return ast.Coat(tuple(groups), words[self.coat], span_of(tagged, self.first, self.last))
 
 
+class RefineItemPlan(NamedTuple):
+    word: int
+    target: int | ColourPlan | None  # a word (ADJ or PROP), a colour, or nothing
+    first: int
+    last: int
+    adverbs: slice = NONE
+
+    def build(self, words: Words, tagged: Sequence[Tagged]) -> ast.RefineItem:
+        target = self.target
+        built = words[target] if isinstance(target, int) else None if target is None else target.build(words, tagged)
+        a, last = tagged[self.first].span, self.last
+        span = a if last == self.first else Span(a.start, tagged[last].span.end, a.line, a.col)
+        return ast.RefineItem(words[self.word], built, span, words[self.adverbs])
+
+
 class MaterialPlan(NamedTuple):
     name: int | None
     groups: tuple[GroupPlan, ...]
@@ -110,12 +125,16 @@ class MaterialPlan(NamedTuple):
     coat: CoatPlan | None
     first: int
     last: int
+    refinements: tuple[RefineItemPlan, ...] = ()  # an inline comparative before the material
 
     def build(self, words: Words, tagged: Sequence[Tagged], text: str) -> ast.Material:
         a, last = tagged[self.first].span, self.last  # the span: a word's own, or first to last word
         groups = []
         for g in self.groups:
             groups.append(g.build(words, tagged))
+        refinements: tuple[ast.RefineItem, ...] = ()
+        if self.refinements:
+            refinements = tuple([r.build(words, tagged) for r in self.refinements])
         return ast.Material(
             None if self.name is None else words[self.name],
             tuple(groups),
@@ -123,21 +142,8 @@ class MaterialPlan(NamedTuple):
             None if self.coat is None else self.coat.build(words, tagged),
             a if last == self.first else Span(a.start, tagged[last].span.end, a.line, a.col),
             text,
+            refinements,
         )
-
-
-class RefineItemPlan(NamedTuple):
-    word: int
-    target: int | ColourPlan | None  # a word (ADJ or PROP), a colour, or nothing
-    first: int
-    last: int
-
-    def build(self, words: Words, tagged: Sequence[Tagged]) -> ast.RefineItem:
-        target = self.target
-        built = words[target] if isinstance(target, int) else None if target is None else target.build(words, tagged)
-        a, last = tagged[self.first].span, self.last
-        span = a if last == self.first else Span(a.start, tagged[last].span.end, a.line, a.col)
-        return ast.RefineItem(words[self.word], built, span)
 
 
 class RefinementPlan(NamedTuple):
@@ -244,6 +250,7 @@ class _Reader:
         groups: tuple[GroupPlan, ...] = ()
         nouns = NONE
         coat = None
+        refinements: tuple[RefineItemPlan, ...] = ()
         for child in tree.children:
             if isinstance(child, Token):
                 continue  # the article
@@ -253,7 +260,9 @@ class _Reader:
                 nouns = self.alternatives(child)
             elif child.data == "coat":
                 coat = self.coat(child)
-        return MaterialPlan(name, groups, nouns, coat, *self.edges(tree))
+            elif child.data == "refine_item":
+                refinements = (self.refine_item(child),)
+        return MaterialPlan(name, groups, nouns, coat, *self.edges(tree), refinements)
 
     def groups(self, tree: Tree[Token]) -> tuple[GroupPlan, ...]:
         return tuple([self.group(c) for c in tree.children if isinstance(c, Tree) and c.data in GROUP_RULES])
@@ -294,9 +303,15 @@ class _Reader:
         return RefinementPlan(name, items, *self.edges(tree))
 
     def refine_item(self, tree: Tree[Token]) -> RefineItemPlan:
-        word = self.word(_token(tree.children[0]))
+        children = list(tree.children)
+        adverbs = NONE
+        first = children[0]
+        if isinstance(first, Tree) and first.data == "advs":
+            adverbs = self.words(first.children)
+            children = children[1:]
+        word = self.word(_token(children[0]))
         target: int | ColourPlan | None = None
-        if len(tree.children) > 1:
-            t = tree.children[1]
+        if len(children) > 1:
+            t = children[1]
             target = self.colour(t) if isinstance(t, Tree) else self.word(t)
-        return RefineItemPlan(word, target, *self.edges(tree))
+        return RefineItemPlan(word, target, *self.edges(tree), adverbs)
