@@ -106,9 +106,14 @@ class References:
             entry.checker("step").fail(
                 (key, "step"), f"a step is used only with target = 'colour' (here {where} applies)"
             )
-        if target == "colour" and "step" not in entry.data:
+        if target == "colour" and "step" not in entry.data and "ops" not in entry.data:
             entry.checker("target").fail(
-                (key,), "a refinement of the colour needs a step, e.g. step = { op = 'mul', value = 0.5 }"
+                (key,), "a refinement of the colour needs a step, e.g. step = { op = 'mul', value = 0.5 }, or ops"
+            )
+        if target != "colour" and ("ops" in entry.data or "axis" in entry.data):
+            field = "ops" if "ops" in entry.data else "axis"
+            entry.checker(field).fail(
+                (key, field), f"'{field}' belongs to a refinement of the colour (target = 'colour')"
             )
 
     def _property(self, key: str, entry: RawEntry) -> None:
