@@ -1,0 +1,174 @@
+"""'less glossy', 'more matte', 'stronger brushing': an adjective's parameters, moved relative to now.
+
+An adjective's formula says which way it pushes a parameter (its pole): 'glossy' (roughness = 0.08)
+and 'shiny' (roughness * 0.5) push roughness down, 'matte' (= 0.8) pushes it up. "more X" moves
+the parameter towards X's pole, "less X" away from it, on the bracket of that parameter (the same
+one 'rougher' and 'less diffuse' use, in the parameter's own direction). The step is the
+adjective's formula at the weight step (paper: stronger brushing = brushed again at 0.5); where
+that formula cannot move the value the right way (a 'set' already reached, a factor of zero), it
+is one step of the property that owns the parameter (properties.toml: roughness +- 0.1).
+
+An adjective that only sets parameters refines any material ('less glossy' on plain plastic); one
+that brings a treatment (a map, a coat, a material) must be part of the material (W104).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .. import ast
+from ..diagnostics import warning
+from ..formulas import apply_op, invert_op
+from ..lexicon import Entry
+from ..state import Context, MaterialState
+from .bracket import Move, Step, bracket_move, scaled_steps
+from .refine_target import item_words, note, surface
+from .words import Effect, effects_for
+
+MIN_MOVE = 1e-6  # a formula step smaller than this does not move the value
+MIDDLE = 1 / 6  # a 'set' this close to its range's centre (a fraction of the range) has no pole: it is a target
+
+
+def refine_adjective(
+    state: MaterialState, ctx: Context, adjective: Entry, item: ast.RefineItem, direction: int, weight: float
+) -> None:
+    word = _target(item)
+    applied = adjective.key in [k for k, _w in state.applied]
+    effects = [e for e in effects_for(adjective, state) if e["param"] != "model"]
+    if not applied and (_brings_treatment(adjective) or not effects):
+        state.diagnostics.append(
+            warning(
+                item.span,
+                "W104",
+                f"'{word.text}' is not part of this material",
+                ("refine a word the material has, or add it to the phrase",),
+            )
+        )
+        return
+    if not applied:
+        state.diagnostics.append(
+            note(
+                item.span,
+                "N104",
+                f"read '{item.word.text} {word.text}' relative to the current material "
+                f"('{word.text}' is not in its phrase)",
+            )
+        )
+    w = ctx.settings.get("weight_step", 0.5) * weight
+    for effect in effects:
+        _refine_effect(state, ctx, effect, item, direction, (w, weight))
+    for role in adjective.get("maps", {}):
+        for name in adjective.get("maps")[role].get("weighted", []):
+            _refine_weighted_map(state, role, name, item, direction, (w, weight))
+
+
+def _target(item: ast.RefineItem) -> ast.Word:
+    assert isinstance(item.target, ast.Word), item
+    return item.target
+
+
+def _brings_treatment(adjective: Entry) -> bool:
+    return any(adjective.get(field) for field in ("maps", "coat", "material"))
+
+
+def _refine_effect(
+    state: MaterialState,
+    ctx: Context,
+    effect: Effect,
+    item: ast.RefineItem,
+    direction: int,
+    weights: tuple[float, float],
+) -> None:
+    param = effect["param"]
+    holder, key, limits = surface(state, param)
+    current = holder.get(param, 0.0)
+    if isinstance(current, list):
+        _refine_list_effect(state, effect, item, direction, weights)
+        return
+    pole = _pole(effect, current, limits)
+    if pole == 0:
+        return
+    param_direction = direction * pole
+    step = _step(ctx, effect, current, param_direction, direction, weights)
+    new = bracket_move(state.brackets, key, current, Move(param_direction, step, weights[1], limits))
+    holder[param] = new
+    state.note(key, new, f"refinements.{item.word.key} {_target(item).key}: bracket step", item_words(item))
+
+
+def _pole(effect: Effect, current: float, limits: tuple[float, float] | None) -> int:
+    """Which way the adjective pushes the parameter: +1 up, -1 down, 0 nowhere."""
+    op, value = effect["op"], effect.get("value")
+    if not isinstance(value, (int, float)):
+        return 0
+    if op == "mul":
+        return _sign(value - 1.0)
+    if op == "add":
+        return _sign(value)
+    low, high = limits or (0.0, 1.0)
+    centre = (low + high) / 2
+    if abs(value - centre) > MIDDLE * (high - low):
+        return _sign(value - centre)  # glossy, matte: a pole
+    return _sign(value - current)  # satin: a target in the middle
+
+
+def _sign(x: float) -> int:
+    return (x > 0) - (x < 0)
+
+
+def _step(
+    ctx: Context, effect: Effect, current: float, param_direction: int, direction: int, weights: tuple[float, float]
+) -> Step:
+    """The adjective's formula at the weight step when it moves the value the right way; else the
+    parameter's own property step (properties.toml)."""
+    op, value, amount = effect["op"], effect.get("value"), effect.get("amount")
+    w = weights[0]
+    formula: Step = (
+        (lambda x: apply_op(op, x, value, w, amount))
+        if direction > 0
+        else (lambda x: invert_op(op, x, value, w, amount))
+    )
+    if op != "set" and (formula(current) - current) * param_direction > MIN_MOVE:
+        return formula
+    prop = _property_of(ctx, effect["param"])
+    if prop is None:
+        return formula
+    up, down = scaled_steps(prop.get("step"), weights[1])
+    return up if param_direction > 0 else down
+
+
+def _property_of(ctx: Context, param: str) -> Entry | None:
+    """The property that owns a parameter ('roughness', 'anisotropy'), for its step."""
+    entry = ctx.lexicon.entry("properties", param)
+    if entry is not None and entry.get("param") == param and not entry.get("invert"):
+        return entry
+    return None
+
+
+def _refine_list_effect(
+    state: MaterialState, effect: Effect, item: ast.RefineItem, direction: int, weights: tuple[float, float]
+) -> None:
+    """A colour an adjective sets: towards it ("more"), or away from it ("less")."""
+    param, op, value, amount = effect["param"], effect["op"], effect.get("value"), effect.get("amount")
+    w = weights[0]
+    step: Step = (
+        (lambda x: apply_op(op, x, value, w, amount))
+        if direction > 0
+        else (lambda x: invert_op(op, x, value, w, amount))
+    )
+    key = f"{param}:{_target(item).key}"
+    new = bracket_move(state.brackets, key, state.params.get(param), Move(direction, step, weights[1], (0.0, 1.0)))
+    state.record(param, new, f"refinements.{item.word.key} {_target(item).key}: bracket step", item_words(item))
+
+
+def _refine_weighted_map(
+    state: MaterialState, role: str, name: str, item: ast.RefineItem, direction: int, weights: tuple[float, float]
+) -> None:
+    ref: dict[str, Any] | None = state.maps.get(role)
+    if ref is None:
+        return
+    key = f"maps.{role}.{name}"
+    w = weights[0]
+    step: Step = (lambda x: x * (1 + w)) if direction > 0 else (lambda x: x / (1 + w))
+    new = bracket_move(state.brackets, key, ref["params"].get(name, 1.0), Move(direction, step, weights[1]))
+    ref["params"][name] = new
+    state.note(key, new, f"refinements.{item.word.key} {_target(item).key}: bracket step", item_words(item))

@@ -1,0 +1,43 @@
+"""What a refinement acts on, and how strongly: the visible surface, the adverbs' weight, the words."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .. import ast
+from ..diagnostics import Diagnostic, Severity
+from ..params import COAT_PARAMS, PARAMS, ranges
+from ..spans import Span
+from ..state import Context, MaterialState
+
+PARAM_RANGES = ranges(PARAMS)  # param -> (low, high), from the parameter table (immutable data)
+COAT_RANGES = ranges(COAT_PARAMS)
+SURFACE_PARAMS = ("roughness",)  # what one sees on the outermost layer: the coat's, when there is one
+
+
+def surface(state: MaterialState, param: str) -> tuple[dict[str, Any], str, tuple[float, float] | None]:
+    """(where the value lives, its provenance key, its range) for a parameter a refinement moves:
+    gloss and roughness act on the coat when there is one (the surface one sees)."""
+    if param in SURFACE_PARAMS and state.coat is not None and param in state.coat:
+        return state.coat, f"coat.{param}", COAT_RANGES.get(param)
+    return state.params, param, PARAM_RANGES.get(param)
+
+
+def refine_weight(item: ast.RefineItem, ctx: Context) -> float:
+    """The adverbs' weight on a refinement: 'much rougher' (2) two steps, 'slightly darker' (0.5) half."""
+    weight = 1.0
+    for adverb in item.adverbs:
+        if not adverb.unknown:
+            weight *= ctx.lexicon.require("adverbs", adverb.key).get("weight")
+    return weight
+
+
+def item_words(item: ast.RefineItem) -> tuple[ast.Word, ...]:
+    target = item.target
+    extra = target.words if isinstance(target, ast.Colour) else ((target,) if target else ())
+    return (*item.adverbs, item.word, *extra)
+
+
+def note(span: Span | None, code: str, message: str, hints: tuple[str, ...] = ()) -> Diagnostic:
+    """A NOTE diagnostic: how a refinement was read (never a warning)."""
+    return Diagnostic(span, Severity.NOTE, code, message, hints)
