@@ -15,6 +15,7 @@ from .parser import ParseFailure, describe_expected, parse_line_shape
 from .spans import Span
 from .tagged import Tagged
 from .tagger import Tagger
+from .teach import fit_unknown_words, teach_syntax_error
 
 __all__ = ["iter_items", "iter_lines", "parse_document", "parse_line"]
 
@@ -58,7 +59,8 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
         return None
     words, tag_diags = tagger.tag_line(text, number, offset)
     if tag_diags:  # only unknown words and characters may lack candidates
-        diags.extend(tag_diags)
+        fitted, words = fit_unknown_words(tag_diags, words, tagger.lexicon)
+        diags.extend(fitted)
         words = [t for t in words if t.candidates]
     if not words:
         return None
@@ -74,7 +76,7 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
     try:
         shape, picks = parse_line_shape(words, tagger.lexicon.caches.shapes)
     except ParseFailure as failure:
-        diags.append(_syntax_error(failure, words, tagger.lexicon))
+        diags.append(teach_syntax_error(_syntax_error(failure, words, tagger.lexicon), words, tagger.lexicon))
         return None
     return shape.build(words, picks, text)
 

@@ -146,7 +146,7 @@ class Lexicon:
         return out
 
     def suggest(self, word: str, categories: Iterable[str] | None = None, limit: int = 3) -> list[str]:
-        """Closest surface forms to `word`, best first (rapidfuzz ratio >= 70)."""
+        """Closest surface forms to `word`, best first: typos, never antonyms (cnlmc.suggest)."""
         key = (word.lower(), tuple(categories or CATEGORY_TAGS), limit)
         memo = self.caches.suggestions
         if key not in memo:
@@ -156,10 +156,9 @@ class Lexicon:
         return list(memo[key])
 
     def _closest(self, word: str, categories: tuple[str, ...], limit: int) -> list[str]:
-        from rapidfuzz import fuzz, process  # only needed when a word is unknown
+        from .suggest import closest_forms  # only needed when a word is unknown
 
-        found = process.extract(word, self._pool(categories), scorer=fuzz.ratio, limit=limit, score_cutoff=70)
-        return [match for match, _score, _i in found]
+        return closest_forms(word, self._pool(categories), limit)
 
     def _pool(self, categories: tuple[str, ...]) -> list[str]:
         pools = self.caches.suggestion_pools

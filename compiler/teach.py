@@ -1,0 +1,192 @@
+"""Errors that teach: a 'did you mean' that fits the word's slot, and a known word in the wrong
+role said as such, with a phrase that works ("'burgundy' is a colour here — did you mean
+'burgundy plastic'?").
+
+The slot of a word comes from where it stands in its clause (stdlib/data/teaching.toml, [slots]):
+the last word of the phrase is the noun slot, a word before a known noun a modifier slot, the
+last word after 'with' the coat slot. A phrase offered is checked: it must tag and parse.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import replace
+from functools import lru_cache
+from importlib import resources
+from types import MappingProxyType
+
+from .diagnostics import Diagnostic, did_you_mean
+from .lexicon import CATEGORY_TAGS, Lexicon
+from .suggest import teaching
+from .tagged import Candidate, Tagged
+
+__all__ = ["fit_unknown_words", "teach_syntax_error", "wordnet_kinds"]
+
+CLAUSE_BREAKS = frozenset({"WITH", "COMMA", "AND", "OR", "COLON"})
+ROLE_ORDER = {tag: i for i, tag in enumerate(("COAT", "COLOR", "ADJ", "SHADE", "PROP", "ADV", "REFINE"))}  # said first
+
+
+# ---------------------------------------------------------------- did you mean, by slot
+
+
+def fit_unknown_words(
+    diags: list[Diagnostic], words: Sequence[Tagged], lexicon: Lexicon
+) -> tuple[list[Diagnostic], list[Tagged]]:
+    """The tagger's diagnostics and words, each unknown word's suggestions redrawn from the
+    categories of its slot, and its guessed readings those of the slot (so the parser does not
+    report a second error for a guess that does not fit: 'tinn glass' is not 'tin glass')."""
+    out, fitted = [], list(words)
+    for diag in diags:
+        index = _unknown_index(diag, words)
+        if index is None:
+            out.append(diag)
+            continue
+        categories = teaching()["slots"][slot_of(words, index)]
+        suggestions = lexicon.suggest(words[index].text, categories)
+        out.append(replace(diag, hints=did_you_mean(suggestions), suggestions=tuple(suggestions)))
+        fitted[index] = _guessed(words[index], categories)
+    return out, fitted
+
+
+def _guessed(tagged: Tagged, categories: Sequence[str]) -> Tagged:
+    tags = [CATEGORY_TAGS[c] for c in categories if c in CATEGORY_TAGS]
+    return Tagged(tagged.text, tagged.span, tuple(Candidate(t, "", "unknown") for t in tags), unknown=True)
+
+
+def _unknown_index(diag: Diagnostic, words: Sequence[Tagged]) -> int | None:
+    if diag.code != "E001" or diag.span is None:
+        return None
+    for i, tagged in enumerate(words):
+        if tagged.unknown and tagged.span == diag.span and tagged.text[:1].isalpha():
+            return i
+    return None
+
+
+def slot_of(words: Sequence[Tagged], index: int) -> str:
+    """'noun', 'modifier', 'coat' or 'open': what the word at `index` stands for in its clause."""
+    in_coat = any(_is_tag(w, "WITH") for w in words[:index])
+    after = _rest_of_clause(words, index)
+    if not after:
+        return "coat" if in_coat else "noun"
+    if any(not w.unknown and _is_tag(w, "COAT" if in_coat else "NOUN") for w in after):
+        return "modifier"
+    return "open"
+
+
+def _rest_of_clause(words: Sequence[Tagged], index: int) -> list[Tagged]:
+    rest = []
+    for tagged in words[index + 1 :]:
+        if not tagged.unknown and any(c.tag in CLAUSE_BREAKS for c in tagged.candidates):
+            break
+        if tagged.text[:1].isalpha():
+            rest.append(tagged)
+    return rest
+
+
+def _only_noun(tagged: Tagged) -> bool:
+    return all(c.tag == "NOUN" for c in tagged.candidates)
+
+
+def _is_tag(tagged: Tagged, tag: str) -> bool:
+    return any(c.tag == tag for c in tagged.candidates)
+
+
+# ---------------------------------------------------------------- a known word in another role
+
+
+def teach_syntax_error(diag: Diagnostic, words: Sequence[Tagged], lexicon: Lexicon) -> Diagnostic:
+    """E002/E003 of a line whose words are all known: say the role of the word that cannot stand
+    where it is, and offer phrases that work (each one parses)."""
+    if any(w.unknown for w in words) or diag.code not in ("E002", "E003"):
+        return diag
+    main = _main_clause(words)
+    if diag.code == "E003" or not any(_is_tag(w, "NOUN") for w in main):
+        return _no_noun(diag, main, lexicon) or diag
+    return _after_noun(diag, main, lexicon) or diag
+
+
+def _main_clause(words: Sequence[Tagged]) -> list[Tagged]:
+    start = next((i + 1 for i, w in enumerate(words) if _is_tag(w, "COLON")), 0)
+    end = next((i for i, w in enumerate(words) if i >= start and _is_tag(w, "WITH")), len(words))
+    return [w for w in words[start:end] if w.text[:1].isalpha()]
+
+
+def _no_noun(diag: Diagnostic, main: list[Tagged], lexicon: Lexicon) -> Diagnostic | None:
+    """'burgundy' alone: a colour here — did you mean 'burgundy plastic'? (its entry's example; a WordNet kind first)."""
+    if not main:
+        return None
+    last, written = main[-1], " ".join(w.text for w in main)
+    for reading in sorted(last.candidates, key=lambda c: ROLE_ORDER.get(c.tag, len(ROLE_ORDER))):
+        role = teaching()["roles"].get(reading.category)
+        if role is None:
+            continue
+        offered = [*_kind_phrases(written, last.text, lexicon), *_example_phrases(written, reading, lexicon)]
+        phrases = _working(offered, lexicon)
+        hint = f"'{last.text}' is {role} here" + (f" — {did_you_mean(phrases)[0]}" if phrases else "")
+        return replace(diag, hints=(hint, *diag.hints[len(phrases) > 0 :]), suggestions=tuple(phrases))
+    return None
+
+
+def _kind_phrases(written: str, word: str, lexicon: Lexicon) -> list[str]:
+    """'gunmetal' -> 'gunmetal bronze': the nearest WordNet kind of the word that is a lexicon noun."""
+    for kind in wordnet_kinds().get(word.lower(), ()):
+        if any(e.category == "nouns" for e in lexicon.lookup(tuple(kind.split()))):
+            return [f"{written} {kind}"]
+    return []
+
+
+def _example_phrases(written: str, reading: Candidate, lexicon: Lexicon) -> list[str]:
+    """The phrase the word's own entry gives as its example, finished with that example's noun."""
+    category = reading.category
+    entry = lexicon.entry(category, reading.key)
+    example = str(entry.get("example", "")) if entry is not None else ""
+    if not example:
+        return []
+    if category == "coats":
+        noun = example.split(" with ", 1)[0]
+        return [f"{noun} with a {written}"]
+    noun = example.split()[-1]
+    return [f"{written} {noun}"]
+
+
+def _after_noun(diag: Diagnostic, main: list[Tagged], lexicon: Lexicon) -> Diagnostic | None:
+    """'steel teal': the colour comes before the noun — did you mean 'teal steel'?"""
+    nouns = [i for i, w in enumerate(main) if _is_tag(w, "NOUN")]
+    first_noun = nouns[0]
+    tail = main[first_noun + 1 :]
+    if not tail or any(_only_noun(w) for w in tail):
+        return None
+    moved = [*main[:first_noun], *tail, main[first_noun]]
+    phrases = _working([" ".join(w.text for w in moved)], lexicon)
+    if not phrases:
+        return None
+    reading = next(c for c in tail[0].candidates if c.tag != "NOUN")
+    role = teaching()["roles"].get(reading.category, "a describing word")
+    if any(phrases[0] in hint for hint in diag.hints):  # the learned hint shows this very phrase
+        return replace(diag, suggestions=tuple(phrases))
+    hint = f"'{tail[0].text}' is {role}: it comes before the noun — {did_you_mean(phrases)[0]}"
+    return replace(diag, hints=(hint,), suggestions=tuple(phrases))
+
+
+def _working(phrases: list[str], lexicon: Lexicon) -> list[str]:
+    """The phrases (each once) that this lexicon tags and parses without a diagnostic."""
+    from .document import parse_line  # document calls this module
+    from .tagger import Tagger
+
+    tagger = Tagger.of(lexicon)
+    out: list[str] = []
+    for phrase in phrases:
+        diags: list[Diagnostic] = []
+        if phrase not in out and parse_line(phrase, 1, 0, tagger, diags) is not None and not diags:
+            out.append(phrase)
+    return out
+
+
+@lru_cache(maxsize=1)
+def wordnet_kinds() -> Mapping[str, tuple[str, ...]]:
+    """WordNet noun -> its kinds, nearest first (stdlib/data/wordnet_aliases.toml; English only)."""
+    import tomllib
+
+    text = resources.files("cnlmc.stdlib").joinpath("data").joinpath("wordnet_aliases.toml").read_text("utf-8")
+    nouns = tomllib.loads(text).get("nouns", {})
+    return MappingProxyType({word: tuple(row.get("kind_of", ())) for word, row in nouns.items()})

@@ -1,0 +1,138 @@
+"""Errors that teach (#14): a 'did you mean' fits the word's slot, is a typo and never the word's
+opposite; a known word in the wrong role says what it is and offers a phrase that compiles.
+
+Every phrase here is outside tests/language/everyday.toml (checked below)."""
+
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from tests.helpers import run_cnlmc
+
+EVERYDAY = Path(__file__).with_name("everyday.toml")
+PHRASES = [
+    "pewtr",
+    "mahagony",
+    "brushed alumnium",
+    "tinn glass",
+    "clear tinn",
+    "periwinkle",
+    "khaki",
+    "very hammered",
+    "shellac",
+    "tin periwinkle",
+    "tin hammered",
+    "aluminum brushed",
+    "gneis",
+]
+
+
+def errors(compile_text, text):
+    return [d for d in compile_text(text).diagnostics if d.is_error]
+
+
+def test_the_phrases_here_are_not_in_the_everyday_set():
+    data = tomllib.loads(EVERYDAY.read_text("utf-8"))
+    listed = {row["text"].lower() for row in data["phrase"]}
+    assert not listed & {p.lower() for p in PHRASES}
+
+
+@pytest.mark.parametrize(
+    "text,word,expected",
+    [("pewtr", "pewtr", "pewter"), ("mahagony", "mahagony", "mahogany"), ("brushed alumnium", "alumnium", "aluminium")],
+)
+def test_a_typo_gets_its_word(compile_text, text, word, expected):
+    (e,) = [d for d in errors(compile_text, text) if d.code == "E001"]
+    assert e.message == f"unknown word '{word}'"
+    assert e.suggestions[0] == expected
+    assert e.hints[0].startswith(f"did you mean '{expected}'")
+
+
+def test_a_noun_slot_suggests_nouns_and_a_modifier_slot_modifiers(compile_text, stdlib):
+    noun_slot = errors(compile_text, "clear tinn")
+    modifier_slot = errors(compile_text, "tinn glass")
+    assert [d.code for d in noun_slot] == ["E001"]
+    assert [d.code for d in modifier_slot] == ["E001"]  # no second error from a guess that does not fit
+    for s in noun_slot[0].suggestions:
+        assert any(e.category == "nouns" for e in stdlib.lookup(tuple(s.split()))), s
+    assert "tin" in noun_slot[0].suggestions
+    for s in modifier_slot[0].suggestions:
+        assert all(e.category != "nouns" for e in stdlib.lookup(tuple(s.split()))), s
+    assert modifier_slot[0].suggestions
+
+
+@pytest.mark.parametrize(
+    "word,never",
+    [
+        ("unglazed", "glazed"),
+        ("non-metallic", "metallic"),
+        ("unwaxed", "waxed"),
+        ("non-anodized", "anodized"),
+        ("unbrushed", "brushed"),
+    ],
+)
+def test_a_prefixed_word_never_gets_its_opposite(stdlib, word, never):
+    assert never not in stdlib.suggest(word)
+
+
+@pytest.mark.parametrize(
+    "word,far",
+    [("pewter", ("fewer", "water")), ("beech", ("bleach",)), ("cedar", ("clear",)), ("hickory", ("thickly",))],
+)
+def test_far_fetched_look_alikes_are_not_offered(stdlib, word, far):
+    for slot in (None, ("nouns",), ("adjectives", "adverbs", "colours", "shades")):
+        assert not set(far) & set(stdlib.suggest(word, slot))
+
+
+def test_the_first_word_of_a_known_form_offers_the_form(stdlib):
+    assert stdlib.suggest("stainless", ("nouns",))[0] == "stainless steel"
+
+
+@pytest.mark.parametrize(
+    "text,role,phrase",
+    [
+        ("periwinkle", "a colour", "periwinkle plastic"),
+        ("very hammered", "a describing word", "very hammered copper"),
+        ("khaki", "a colour", "khaki fabric"),  # WordNet: khaki is a kind of fabric
+    ],
+)
+def test_a_phrase_without_a_noun_says_the_role_and_offers_a_phrase_that_compiles(compile_text, text, role, phrase):
+    (e,) = errors(compile_text, text)
+    assert (e.code, e.message) == ("E003", "this phrase names no material: end it with a noun")
+    word = text.split()[-1]
+    assert e.hints[0].startswith(f"'{word}' is {role} here — did you mean '{phrase}'")
+    assert e.suggestions[0] == phrase
+    assert compile_text(phrase).ok
+
+
+def test_a_coat_alone_is_offered_on_a_material(compile_text, stdlib):
+    coats = [k for k in stdlib.all_of("coats") if " " not in k and not stdlib.lookup((k,))[1:]]
+    (e,) = errors(compile_text, coats[0])
+    assert e.hints[0].startswith(f"'{coats[0]}' is a coat here")
+    assert f" with a {coats[0]}" in e.suggestions[0]
+    assert compile_text(e.suggestions[0]).ok
+
+
+def test_a_colour_after_the_noun_is_offered_before_it(compile_text):
+    (e,) = errors(compile_text, "tin periwinkle")
+    assert e.code == "E002"
+    assert e.hints == ("'periwinkle' is a colour: it comes before the noun — did you mean 'periwinkle tin'?",)
+    assert compile_text("periwinkle tin").ok
+
+
+def test_the_learned_hint_stays_when_it_already_shows_the_phrase(compile_text):
+    (e,) = errors(compile_text, "aluminum brushed")
+    assert e.hints == ("write 'brushed aluminum', not 'aluminum brushed'",)
+    assert e.suggestions == ("brushed aluminum",)
+    (e,) = errors(compile_text, "tin hammered")
+    assert e.hints == ("'hammered' is a describing word: it comes before the noun — did you mean 'hammered tin'?",)
+
+
+def test_teaching_errors_through_the_cli():
+    proc = run_cnlmc("compile", "-", stdin="periwinkle\nclear tinn\n")
+    assert proc.returncode != 0
+    assert "<stdin>:1:1: error[E003]: this phrase names no material: end it with a noun" in proc.stderr
+    assert "= 'periwinkle' is a colour here — did you mean 'periwinkle plastic'?" in proc.stderr
+    assert "<stdin>:2:7: error[E001]: unknown word 'tinn'" in proc.stderr
+    assert "= did you mean 'tin'?" in proc.stderr
