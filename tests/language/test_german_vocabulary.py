@@ -1,0 +1,184 @@
+"""German keeps pace (issue #14): the everyday vocabulary, declension and degrees with `--lexicon de`.
+
+The German overlay (stdlib/overlays/de) only names what the stdlib defines, so a German phrase
+must compile to exactly what its English translation compiles to: these tests compare the two
+through the real compiler. None of the phrases here is in tests/language/everyday.toml.
+"""
+
+import tomllib
+from importlib import resources
+
+import pytest
+
+from cnlmc.api import Session, compile_source, lexicon_for
+
+from .conftest import first
+
+ADJECTIVE_ENDINGS = ("e", "en", "er", "es", "em")  # strong, weak and mixed declension
+
+
+@pytest.fixture(scope="module")
+def de():
+    return lexicon_for(("de",))
+
+
+def overlay_file(name):
+    """One file of the German overlay as data (which words the overlay itself adds)."""
+    return tomllib.loads(resources.files("cnlmc.stdlib").joinpath("overlays", "de", name).read_text("utf-8"))
+
+
+def material(text, lexicon):
+    return first(compile_source(text, "de.cnl", lexicon))
+
+
+def same_look(a, b):
+    return a["model"] == b["model"] and a["params"] == b["params"] and a["maps"] == b["maps"]
+
+
+# ---------------------------------------------------------------- nouns of the new vocabulary
+
+
+@pytest.mark.parametrize(
+    "german,english",
+    [
+        ("Travertin", "travertine"),
+        ("Kalkstein", "limestone"),
+        ("Speckstein", "soapstone"),
+        ("Quarzit", "quartzite"),
+        ("Lärche", "larch"),
+        ("Fichtenholz", "spruce"),
+        ("Kiefer", "pine"),
+        ("Esche", "ash"),
+        ("Zeder", "cedar"),
+        ("Palisander", "rosewood"),
+        ("Sperrholz", "plywood"),
+        ("Spanplatte", "chipboard"),
+        ("Wildleder", "suede"),
+        ("Jute", "burlap"),
+        ("Kunstleder", "faux leather"),
+        ("Kaschmir", "cashmere"),
+        ("Gipskarton", "drywall"),
+        ("Faserzement", "fiber cement"),
+        ("Steinzeug", "stoneware"),
+        ("Polycarbonat", "polycarbonate"),
+        ("Epoxidharz", "epoxy resin"),
+        ("Kohlefaser", "carbon fibre"),
+        ("Gusseisen", "cast iron"),
+        ("Schmiedeeisen", "wrought iron"),
+        ("Blattgold", "gold leaf"),
+        ("Neusilber", "nickel silver"),
+        ("Bernstein", "amber"),
+        ("Bleikristall", "crystal"),
+    ],
+)
+def test_german_noun_is_the_english_noun(de, german, english):
+    assert same_look(material(german, de), material(english, de))
+
+
+def test_fichte_is_spruce_not_pine(de):
+    """Fichte (Picea) and Kiefer (Pinus) are different trees with different numbers in the stdlib."""
+    fichte, kiefer = material("Fichte", de), material("Kiefer", de)
+    assert same_look(fichte, material("spruce", de)) and same_look(kiefer, material("pine", de))
+    assert fichte["params"] != kiefer["params"]
+
+
+def test_every_german_noun_names_one_stdlib_noun(de):
+    """An alias of the overlay never shadows another entry's word (no new ambiguity in German)."""
+    english = lexicon_for()
+    overlay = overlay_file("nouns_de.toml")
+    assert len(overlay) >= 150  # the stdlib's nouns, most of them named in German
+    for key, entry in overlay.items():
+        assert de.entry("nouns", key) is not None, key
+        for alias in entry["aliases"]:
+            hits = {(e.category, e.key) for e in english.lookup(tuple(alias.split()))}
+            assert hits <= {("nouns", key), ("colours", alias)}, (alias, key, hits)
+
+
+# ---------------------------------------------------------------- declension
+
+
+@pytest.mark.parametrize(
+    "stem,english",
+    [("matt", "matte"), ("glänzend", "glossy"), ("rau", "rough"), ("glatt", "smooth"), ("stumpf", "dull")],
+)
+@pytest.mark.parametrize("noun,english_noun", [("Kunststoff", "plastic"), ("Keramik", "ceramic"), ("Stahl", "steel")])
+def test_every_declined_form_means_the_adjective(de, stem, english, noun, english_noun):
+    """German grammatical gender must not change the numbers: matter/mattes/matte/matten Kunststoff."""
+    want = material(f"{english} {english_noun}", de)
+    for ending in ADJECTIVE_ENDINGS:
+        assert same_look(material(f"{stem}{ending} {noun}", de), want), f"{stem}{ending} {noun}"
+
+
+@pytest.mark.parametrize("stem,shade", [("dunkl", "dark"), ("hell", "light")])
+def test_declined_shades_including_the_dropped_e(de, stem, shade):
+    """dunkel loses its e before an ending (dunkles, dunkler); hell keeps its stem."""
+    want = material(f"{shade} oak", de)
+    for ending in ADJECTIVE_ENDINGS:
+        assert same_look(material(f"{stem}{ending} Eiche", de), want), f"{stem}{ending} Eiche"
+
+
+def test_the_er_form_alone_on_a_line_is_still_the_comparative(de):
+    s = Session("roter Kunststoff", lexicon=de)
+    before = s.material["params"]
+    assert s.refine("matter")["params"]["roughness"] > before["roughness"]
+    assert sum(s.refine("dunkler")["params"]["base_color"]) < sum(before["base_color"])
+    assert s.refine("glänzender")["params"]["roughness"] < s.refine("rauer")["params"]["roughness"]
+
+
+def test_every_comparative_that_is_also_a_declined_positive_reads_both_ways(de):
+    """The rule behind the -er aliases: a German refinement 'Xer' whose 'X' is an adjective or a
+    shade must also read as that adjective/shade, else 'Xer Stahl' becomes a refinement."""
+    for refinement in overlay_file("refinements_de.toml").values():
+        for form in refinement["aliases"]:
+            if not form.endswith("er"):
+                continue
+            positives = [e for e in de.lookup((form[:-2],)) if e.category in ("adjectives", "shades")]
+            for positive in positives:
+                readings = {(e.category, e.key) for e in de.lookup((form,))}
+                assert (positive.category, positive.key) in readings, (form, positive.key)
+
+
+# ---------------------------------------------------------------- degrees and colours
+
+
+@pytest.mark.parametrize(
+    "german,english",
+    [
+        ("sehr leicht gebürsteter Stahl", "very lightly brushed steel"),
+        ("kaum zerkratztes Chrom", "barely scratched chrome"),
+        ("ziemlich verwittertes Holz", "fairly weathered wood"),
+        ("ein wenig angelaufenes Silber", "a bit tarnished silver"),
+        ("äußerst glänzendes Glas", "extremely glossy glass"),
+        ("stark verrostetes Gusseisen", "heavily rusty cast iron"),
+        ("vollständig gewachste Buche", "fully waxed beech"),
+    ],
+)
+def test_degrees_mean_what_the_english_ones_mean(de, german, english):
+    assert same_look(material(german, de), material(english, de))
+
+
+@pytest.mark.parametrize(
+    "german,english",
+    [
+        ("weinroter Samt", "wine red velvet"),
+        ("himmelblaue Keramik", "sky blue ceramic"),
+        ("olivgrünes Leinen", "olive green linen"),
+        ("bläuliches Glas", "bluish glass"),
+        ("rötliches Leder", "reddish leather"),
+        ("gräulicher Filz", "greyish felt"),
+        ("cremeweißes Leder", "cream leather"),
+        ("anthrazit lackiertes Metall", "charcoal lacquered metal"),
+        ("silbernes Glas", "silver glass"),
+    ],
+)
+def test_german_colour_names_are_the_survey_colours(de, german, english):
+    assert same_look(material(german, de), material(english, de))
+
+
+def test_german_colours_do_not_replace_the_surveys_own_words(de):
+    """'marine' and 'creme' are survey names of their own: the overlay must not re-point them."""
+    english = lexicon_for()
+    for word in ("marine", "creme"):
+        want = {e.key for e in english.lookup((word,)) if e.category == "colours"}
+        got = {e.key for e in de.lookup((word,)) if e.category == "colours"}
+        assert want and want == got, (word, want, got)
