@@ -3,8 +3,13 @@
 Words are matched against the lexicon longest-first ("stainless steel" before "steel",
 "a bit" before "a"); a word that is not found is tried in its base forms (inflection
 rules from the lexicon) and, hyphenated, as its spaced form ("blue-grey" as "blue grey"), then
-reported with "did you mean". A word may carry several
-candidate tags ("gold": colour or noun); the parser picks the one the grammar accepts.
+read by the lexicon's word formation rules (cnlmc.word_formation: unpolished, semi-matte,
+wooden, not glossy; each reading is a NOTE), then reported with "did you mean". A word may
+carry several candidate tags ("gold": colour or noun); the parser picks the one the grammar
+accepts. Decorative punctuation (a trailing '.', a leading bullet, enclosing quotes) is dropped.
+Object nouns (objects.toml) never reach the parser: after a material noun they join it ("oak
+planks" = oak), alone they read as their material ("planks" = wood); a noun followed by its own
+class ("walnut wood") is the noun.
 """
 
 from __future__ import annotations
@@ -12,10 +17,11 @@ from __future__ import annotations
 import re
 from collections import OrderedDict
 
-from .diagnostics import Diagnostic, did_you_mean, error
+from .diagnostics import Diagnostic, Severity, did_you_mean, error
 from .lexicon import Lexicon
 from .spans import Span, line_span
 from .tagged import Candidate, Tagged
+from .word_formation import NOTE_CODE, Reading, WordFormation
 
 __all__ = [
     "MEMO_SIZE",
@@ -31,7 +37,10 @@ __all__ = [
 
 TOKEN_RE = re.compile(r"[^\W\d_](?:[\w'’\-]*\w)?|\d+(?:\.\d+)?%?|[,;:&]|\S", re.UNICODE)
 OPEN_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "REFINE")
-TAG_PREFERENCE = {t: i for i, t in enumerate(("NAME", "COLON", "ARTICLE", "AND", "OR", "WITH", "COMMA", *OPEN_TAGS))}
+TAG_PREFERENCE = {
+    t: i
+    for i, t in enumerate(("NAME", "COLON", "ARTICLE", "AND", "OR", "WITH", "COMMA", *OPEN_TAGS, "OBJECT", "FEATURE"))
+}
 
 
 def raw_tokens(line: str) -> list[tuple[str, int]]:
@@ -109,6 +118,8 @@ class Tagger:
     def tag_line(self, line: str, line_no: int, offset: int) -> tuple[list[Tagged], list[Diagnostic]]:
         """Return (tagged words, diagnostics) for one line of source."""
         raw = raw_tokens(line)
+        if raw and not (raw[-1][0][0].isalnum() and raw[0][0][0].isalnum()):
+            raw = self._undecorated(raw)
         tagged: list[Tagged] = []
         diags: list[Diagnostic] = []
         i = self._name_prefix(line, raw, line_no, offset, tagged) if ":" in line else 0
@@ -127,7 +138,74 @@ class Tagger:
                     i += 1
                     continue
             i += self._tag_at(raw, i, line_no, offset, tagged, diags)
+        if _may_join(tagged):
+            tagged = self._joined_objects(tagged, diags)
         return tagged, diags
+
+    def formation(self) -> WordFormation:
+        """The lexicon's word formation engine (made on first use, kept in lexicon.caches)."""
+        return WordFormation.of(self.lexicon, self._candidates)
+
+    def _undecorated(self, raw: list[RawToken]) -> list[RawToken]:
+        """The line's words without decorative punctuation: trailing marks ('.', '!', '...'), one
+        leading bullet ('- ', '* ', '•') and quotes around the whole line (word_formation rules)."""
+        rules = self.formation().rules
+        lo, hi = 0, len(raw)
+        for _round in range(2):  # '"Brushed steel".': the mark, then the quotes, then a mark inside
+            while hi - lo > 1 and raw[hi - 1][0] in rules.trailing:
+                hi -= 1
+            if hi - lo > 1 and raw[lo][0] in rules.leading:
+                lo += 1
+            if hi - lo > 2 and raw[lo][0] in rules.quotes and raw[hi - 1][0] in rules.quotes:
+                lo, hi = lo + 1, hi - 1
+        return raw[lo:hi]
+
+    def _joined_objects(self, tagged: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
+        """Objects and class nouns joined to their material: "oak planks" = oak, "roof tiles" =
+        tiles, "planks" = wood, "walnut wood" = walnut; each with a note."""
+        out: list[Tagged] = []
+        for k, word in enumerate(tagged):
+            before = out[-1] if out else None
+            nouns = _of_tag(word, "NOUN")
+            if before is not None and _of_tag(before, "OBJECT") and not _others(before) and nouns:
+                out[-1] = self._join(before, word, nouns, f"'{word.text}' ('{before.text}' is made of it)", diags)
+            elif before is not None and _of_tag(word, "OBJECT") and _of_tag(before, "NOUN"):
+                made = _of_tag(before, "NOUN")
+                out[-1] = self._join(before, word, made, f"'{before.text}' ('{word.text}' made of it)", diags)
+            elif before is not None and nouns and self._is_class_of(before, nouns):
+                made = _of_tag(before, "NOUN")
+                out[-1] = self._join(before, word, made, f"'{before.text}' ('{word.text}' is its class)", diags)
+            elif _of_tag(word, "OBJECT"):
+                follows = k + 1 < len(tagged) and _of_tag(tagged[k + 1], "NOUN")
+                out.append(word if follows else self._object_alone(word, diags))
+            else:
+                out.append(word)
+        return out
+
+    def _join(
+        self, a: Tagged, b: Tagged, candidates: tuple[Candidate, ...], reading: str, diags: list[Diagnostic]
+    ) -> Tagged:
+        span = a.span.to(b.span)
+        text = f"{a.text} {b.text}"
+        diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read '{text}' as {reading}"))
+        return Tagged(text, span, candidates, a.unknown or b.unknown)
+
+    def _object_alone(self, word: Tagged, diags: list[Diagnostic]) -> Tagged:
+        """An object with no material noun beside it: its other readings, else its material."""
+        others = _others(word)
+        if others:
+            return Tagged(word.text, word.span, others, word.unknown)
+        key = _of_tag(word, "OBJECT")[0].key
+        material = self.lexicon.require("objects", key).data["material"]
+        note = f"read '{word.text}' as '{material}' (what {word.text} are usually made of)"
+        diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))
+        return Tagged(word.text, word.span, (Candidate("NOUN", material, "nouns"),), word.unknown)
+
+    def _is_class_of(self, before: Tagged, nouns: tuple[Candidate, ...]) -> bool:
+        """'walnut wood': the second noun is the class of the first."""
+        entries = [self.lexicon.entry("nouns", c.key) for c in _of_tag(before, "NOUN")]
+        classes = {e.get("class") for e in entries if e is not None}
+        return any(c.key in classes for c in nouns)
 
     def _name_prefix(self, line: str, raw: list[RawToken], line_no: int, offset: int, tagged: list[Tagged]) -> int:
         """'hull: ...' -> NAME COLON; the name may be several words."""
@@ -164,8 +242,38 @@ class Tagger:
         if candidates:
             tagged.append(Tagged(text, self._span(raw, i, 1, line_no, offset), candidates))
             return 1
+        if text[0].isalpha():
+            reading = self.formation().read_at([t.lower() for t, _c in raw[i : i + 3]])
+            if reading is not None:
+                return self._formed(reading, raw, i, line_no, offset, tagged, diags)
         tagged.append(self._unknown(raw[i], line_no, offset, diags))
         return 1
+
+    def _formed(
+        self,
+        reading: Reading,
+        raw: list[RawToken],
+        i: int,
+        line_no: int,
+        offset: int,
+        tagged: list[Tagged],
+        diags: list[Diagnostic],
+    ) -> int:
+        """Tag the parts of a word formation reading of raw[i:]; its note says how it was read."""
+        for part in reading.parts:
+            first_text, first_col = raw[i + part.first]
+            last_text, last_col = raw[i + part.last]
+            start = first_col + part.start
+            end = last_col + (len(last_text) if part.end is None else part.end)
+            if part.first == part.last:
+                text = first_text[part.start : part.end]
+            else:
+                text = " ".join(t for t, _c in raw[i + part.first : i + part.last + 1])
+            tagged.append(Tagged(text, line_span(line_no, start + 1, end - start, offset), part.candidates))
+        diags.append(
+            Diagnostic(self._span(raw, i, reading.words, line_no, offset), Severity.NOTE, NOTE_CODE, reading.note)
+        )
+        return reading.words
 
     def _candidates(self, words: tuple[str, ...]) -> tuple[Candidate, ...]:
         cached = self.memo.get(words)
@@ -183,6 +291,11 @@ class Tagger:
                     break
         if not found and len(words) == 1 and "-" in words[0]:  # "blue-grey", "off-white": the spaced form
             found = self._exact(tuple(part for part in words[0].split("-") if part))
+        if not found and len(words) > 1:  # "cinder blocks": the last word in its base forms
+            for base in self.lexicon.base_forms(words[-1]):
+                found = self._exact((*words[:-1], base))
+                if found:
+                    break
         return tuple(sorted(found, key=lambda c: TAG_PREFERENCE[c.tag]))
 
     def _exact(self, words: tuple[str, ...]) -> list[Candidate]:
@@ -212,6 +325,30 @@ class Tagger:
             if found:
                 return tuple(Candidate(c.tag, c.key, c.category) for c in found)
         return tuple(Candidate(t, "", "unknown") for t in OPEN_TAGS)
+
+
+def _may_join(tagged: list[Tagged]) -> bool:
+    """Whether a line has an object or two nouns side by side (see Tagger._joined_objects); a
+    word's candidates are sorted by TAG_PREFERENCE, so NOUN and OBJECT readings come last."""
+    noun_before = False
+    for word in tagged:
+        if not word.candidates:
+            noun_before = False
+            continue
+        last = word.candidates[-1].tag
+        if last == "OBJECT" or (noun_before and last in ("NOUN", "REFINE")):
+            return True
+        noun_before = last in ("NOUN", "REFINE")
+    return False
+
+
+def _of_tag(word: Tagged, tag: str) -> tuple[Candidate, ...]:
+    return tuple(c for c in word.candidates if c.tag == tag)
+
+
+def _others(word: Tagged) -> tuple[Candidate, ...]:
+    """The readings of a word that are not objects."""
+    return tuple(c for c in word.candidates if c.tag != "OBJECT")
 
 
 def _unknown_message(text: str) -> str:

@@ -1,0 +1,297 @@
+"""Word formation: how the tagger reads a word the lexicon does not know (issue #14).
+
+The rules are data (word_formation*.toml in every lexicon layer, read by
+cnlmc.word_formation_rules; the overlay's rules first). A word is tried, in order, as:
+
+1. its hyphen dropped (sand-blasted -> sandblasted);
+2. a negation prefix and an adjective (unpolished, non-glossy): the adjective's declared
+   `opposite`, else "without X" (no effect);
+3. a degree prefix and a word (semi-matte = slightly matte);
+4. a derivational suffix (wooden -> wood, mirror-like -> mirror, gold-coloured -> gold);
+5. its known parts (matte-black = matte black; glued parts with linkers: eichen|dielen);
+6. its last part alone when that is an adjective and the rest unknown (hand-hammered).
+
+Two-word forms start at an unknown word: "not X", "not too X" (slightly X), "semi matte".
+Every reading carries a note saying how it was made; the tagger turns it into a NOTE.
+Only unknown words come here, so the hot path of known words never does; a WordFormation
+remembers what it read (bounded), and lives in lexicon.caches.word_formation.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from .lexicon import Lexicon
+from .tagged import Candidate
+
+__all__ = ["NOTE_CODE", "Part", "Reading", "Rules", "WordFormation"]
+
+NOTE_CODE = "N101"  # a word read by a word formation rule
+MAX_REMEMBERED = 4096  # readings kept; a full memo starts over
+
+Lookup = Callable[[tuple[str, ...]], tuple[Candidate, ...]]  # the tagger's (memoised) look-up
+
+
+@dataclass(frozen=True, slots=True)
+class Part:
+    """One tagged word of a reading: raw words first..last (relative to the first word read),
+    characters start (in word first) to end (in word last, None: to its end)."""
+
+    first: int
+    last: int
+    start: int
+    end: int | None
+    candidates: tuple[Candidate, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Reading:
+    """How one or more raw words are read: the tagged parts (none: the words have no effect),
+    how many raw words it takes, and the note that says how it was read."""
+
+    parts: tuple[Part, ...]
+    words: int
+    note: str
+
+
+class Rules:
+    """Every layer's rules merged: lists joined in layer order (the overlay's first)."""
+
+    def __init__(self, layers: Sequence[dict[str, Any]]) -> None:
+        def joined(section: str, name: str) -> tuple[str, ...]:
+            return tuple(dict.fromkeys(w for layer in layers for w in layer[section][name]))
+
+        self.trailing = frozenset(joined("punctuation", "trailing"))
+        self.leading = frozenset(joined("punctuation", "leading"))
+        self.quotes = frozenset(joined("punctuation", "quotes"))
+        self.negation_words = frozenset(joined("negation", "words"))
+        self.negation_prefixes = joined("negation", "prefixes")
+        self.softeners = frozenset(joined("negation", "softeners"))
+        self.soft_adverb = next((x["negation"]["soft_adverb"] for x in layers if x["negation"]["soft_adverb"]), "")
+        self.prefixes = {form: p["adverb"] for layer in layers for p in layer["prefix"] for form in p["forms"]}
+        self.suffixes = [s for layer in layers for s in layer["suffix"]]
+        compounds = [layer["compounds"] for layer in layers]
+        self.join = any(c["join"] for c in compounds)
+        self.split = any(c["split"] for c in compounds)
+        self.head_last = any(c["head_last"] for c in compounds)
+        self.linkers = ("", *dict.fromkeys(k for c in compounds for k in c["linkers"]))
+        self.min_part = min((c["min_part"] for c in compounds), default=3)
+
+
+class WordFormation:
+    """Reads unknown words by the rules of one lexicon; see the module doc."""
+
+    def __init__(self, lexicon: Lexicon, lookup: Lookup) -> None:
+        self.lexicon = lexicon
+        self.rules = Rules(lexicon.word_formation)
+        self.lookup = lookup
+        self.memo: dict[str, Reading | None] = {}
+
+    @classmethod
+    def of(cls, lexicon: Lexicon, lookup: Lookup) -> WordFormation:
+        """The engine kept with `lexicon` (lexicon.caches.word_formation), made on first use."""
+        found = lexicon.caches.word_formation
+        if found is None:
+            found = lexicon.caches.word_formation = cls(lexicon, lookup)
+        return found
+
+    # ------------------------------------------------------------ the tagger's entry points
+
+    def read_at(self, words: Sequence[str]) -> Reading | None:
+        """A reading of the unknown word words[0] (lower case), which may take the words after it."""
+        first = words[0]
+        rules = self.rules
+        if len(words) > 1:
+            if first in rules.negation_words:
+                return self._negated_words(words)
+            adverb = rules.prefixes.get(first)
+            if adverb is not None:
+                return self._prefixed_word(first, adverb, words[1])
+        return self.read(first)
+
+    def read(self, word: str) -> Reading | None:
+        """A reading of one unknown word, remembered."""
+        memo = self.memo
+        if word in memo:
+            return memo[word]
+        if len(memo) >= MAX_REMEMBERED:
+            memo.clear()
+        found = memo[word] = self._read(word)
+        return found
+
+    # ------------------------------------------------------------ one word
+
+    def _read(self, word: str) -> Reading | None:
+        for rule in (self._joined, self._negated, self._prefixed, self._derived, self._split, self._head):
+            found = rule(word)
+            if found is not None:
+                return found
+        return None
+
+    def _known(self, word: str) -> tuple[Candidate, ...]:
+        return self.lookup((word,)) if word else ()
+
+    def _joined(self, word: str) -> Reading | None:
+        if not self.rules.join or "-" not in word:
+            return None
+        joined = word.replace("-", "")
+        found = self._known(joined)
+        return _whole(found, f"read '{word}' as '{joined}'") if found else None
+
+    def _negated(self, word: str) -> Reading | None:
+        for prefix in self.rules.negation_prefixes:
+            rest = word[len(prefix) :].lstrip("-")
+            if word.startswith(prefix) and len(rest) >= self.rules.min_part:
+                found = self._negation(word, rest, explicit="-" in word[: len(prefix) + 1])
+                if found is not None:
+                    return found
+        return None
+
+    def _negation(self, word: str, rest: str, explicit: bool) -> Reading | None:
+        """'un' + rest: the opposite of an adjective, "without" a known word; an unknown rest
+        only after an explicit hyphen ("non-slip": a property with no parameter)."""
+        found = self._resolved(rest)
+        adjective = next((c for c in found if c.tag == "ADJ"), None)
+        if adjective is not None:
+            return self._opposite_reading(word, 0, adjective, rest)
+        if found:
+            return Reading((), 1, f"read '{word}' as without '{rest}': the material as it is")
+        if explicit:
+            return Reading((), 1, f"read '{word}' as a property with no visual parameter here; it has no effect")
+        return None
+
+    def _opposite_reading(self, text: str, last: int, adjective: Candidate, word: str) -> Reading:
+        entry = self.lexicon.entry("adjectives", adjective.key)
+        opposite = None if entry is None else entry.get("opposite")
+        if opposite is None:
+            return Reading((), last + 1, f"read '{text}' as without '{word}' (no declared opposite): no effect")
+        part = Part(0, last, 0, None, (Candidate("ADJ", opposite, "adjectives"),))
+        return Reading((part,), last + 1, f"read '{text}' as '{opposite}' (the declared opposite of '{word}')")
+
+    def _resolved(self, word: str) -> tuple[Candidate, ...]:
+        """The candidates of a known word, or of a one-part reading of it."""
+        found = self._known(word)
+        if found:
+            return found
+        reading = self.read(word)
+        if reading is not None and len(reading.parts) == 1:
+            return reading.parts[0].candidates
+        return ()
+
+    def _prefixed(self, word: str) -> Reading | None:
+        for form, adverb in self.rules.prefixes.items():
+            if word.startswith(form):
+                rest = word[len(form) :]
+                hyphen = rest.startswith("-")
+                rest = rest.lstrip("-")
+                found = self._resolved(rest) if len(rest) >= self.rules.min_part else ()
+                if found:
+                    start = len(word) - len(rest)
+                    parts = (
+                        Part(0, 0, 0, len(form), self._adverb(adverb)),
+                        Part(0, 0, start, None, found),
+                    )
+                    sep = "-" if hyphen else ""
+                    return Reading(parts, 1, f"read '{word}' as '{adverb} {rest}' ({form}{sep}: {adverb})")
+        return None
+
+    def _adverb(self, key: str) -> tuple[Candidate, ...]:
+        return (Candidate("ADV", key, "adverbs"),)
+
+    def _derived(self, word: str) -> Reading | None:
+        for rule in self.rules.suffixes:
+            for form in rule["forms"]:
+                if not word.endswith(form) or len(word) - len(form) < self.rules.min_part:
+                    continue
+                stem = word[: len(word) - len(form)]
+                for ending in rule["endings"]:
+                    found = self._kept(self._known(stem + ending), rule["reads_as"])
+                    if found:
+                        base = stem.rstrip("-") + ending
+                        return _whole(found, f"read '{word}' as '{base}' ({rule['doc']})")
+        return None
+
+    @staticmethod
+    def _kept(found: tuple[Candidate, ...], tags: Sequence[str]) -> tuple[Candidate, ...]:
+        return tuple(sorted((c for c in found if c.tag in tags), key=lambda c: tags.index(c.tag)))
+
+    def _split(self, word: str) -> Reading | None:
+        if not self.rules.split:
+            return None
+        if "-" in word:
+            return self._split_hyphenated(word)
+        return self._split_glued(word)
+
+    def _split_hyphenated(self, word: str) -> Reading | None:
+        parts, start = [], 0
+        for piece in word.split("-"):
+            found = self._resolved(piece) if piece else ()
+            if piece and not found:
+                return None
+            if piece:
+                parts.append(Part(0, 0, start, start + len(piece), found))
+            start += len(piece) + 1
+        if len(parts) < 2:
+            return None
+        spaced = " ".join(p for p in word.split("-") if p)
+        return Reading(tuple(parts), 1, f"read '{word}' as '{spaced}'")
+
+    def _split_glued(self, word: str) -> Reading | None:
+        """The longest known last part whose rest is known, directly or without a linker."""
+        shortest = self.rules.min_part
+        for cut in range(shortest, len(word) - shortest + 1):
+            right = self._known(word[cut:])
+            if not right:
+                continue
+            left = word[:cut]
+            for linker in self.rules.linkers:
+                if linker and not left.endswith(linker):
+                    continue
+                stem = left[: len(left) - len(linker)]
+                found = self._known(stem) if len(stem) >= shortest else ()
+                if found:
+                    parts = (Part(0, 0, 0, cut, found), Part(0, 0, cut, None, right))
+                    return Reading(parts, 1, f"read '{word}' as '{stem} {word[cut:]}'")
+        return None
+
+    def _head(self, word: str) -> Reading | None:
+        if not self.rules.head_last or "-" not in word:
+            return None
+        head = word.rsplit("-", 1)[1]
+        found = self._kept(self._known(head), ("ADJ",))
+        if not found:
+            return None
+        part = Part(0, 0, len(word) - len(head), None, found)
+        return Reading((part,), 1, f"read '{word}' as '{head}' (its last part; the rest says how it was done)")
+
+    # ------------------------------------------------------------ two or more words
+
+    def _negated_words(self, words: Sequence[str]) -> Reading | None:
+        """'not X' (X's opposite, or without X); 'not too X' = the soft adverb + X."""
+        rules = self.rules
+        if words[1] in rules.softeners and len(words) > 2 and rules.soft_adverb:
+            found = self._resolved(words[2])
+            if any(c.tag == "ADJ" for c in found):
+                adverb = Part(0, 1, 0, None, self._adverb(rules.soft_adverb))
+                target = Part(2, 2, 0, None, self._kept(found, ("ADJ",)))
+                text = " ".join(words[:3])
+                return Reading((adverb, target), 3, f"read '{text}' as '{rules.soft_adverb} {words[2]}'")
+        found = self._resolved(words[1])
+        adjective = next((c for c in found if c.tag == "ADJ"), None)
+        if adjective is None:
+            return None
+        reading = self._opposite_reading(f"{words[0]} {words[1]}", 1, adjective, words[1])
+        return Reading(tuple(Part(0, 1, 0, None, p.candidates) for p in reading.parts), reading.words, reading.note)
+
+    def _prefixed_word(self, first: str, adverb: str, second: str) -> Reading | None:
+        found = self._resolved(second)
+        if not found:
+            return self.read(first)
+        parts = (Part(0, 0, 0, None, self._adverb(adverb)), Part(1, 1, 0, None, found))
+        return Reading(parts, 2, f"read '{first} {second}' as '{adverb} {second}' ({first}: {adverb})")
+
+
+def _whole(found: tuple[Candidate, ...], note: str) -> Reading:
+    return Reading((Part(0, 0, 0, None, found),), 1, note)
