@@ -10,11 +10,10 @@ the typed records' copy back to JSON; given a Document, each material is copied 
 from __future__ import annotations
 
 import io
-import json
-import re
 from collections.abc import Iterable, Mapping, Sequence
 from typing import Any, BinaryIO
 
+from cnlmc.ir import EncodedMaterial, json_text
 from cnlmc.material import Document, Material
 
 from .base import DOCUMENT_FIELDS, Artifact, Options, Target, as_document
@@ -83,23 +82,29 @@ class IrWriter:
             Document.from_ir({**head, "materials": [], "diagnostics": []})
         pieces = ["{\n"]
         for key in HEAD_FIELDS:
-            pieces += ["  ", _dumps(key), ": ", _dumps(head[key]), ",\n"]
-        pieces += ["  ", _dumps("materials"), ": ["]
+            pieces += ["  ", json_text(key), ": ", json_text(head[key]), ",\n"]
+        pieces += ["  ", json_text("materials"), ": ["]
         self.out.write("".join(pieces).encode("utf-8"))
 
     def write(self, material: object) -> None:
-        if self.check:
-            assert isinstance(material, Mapping)
-            Material.from_ir(material, f"materials[{self.count}]")
-        self.out.write(((",\n    " if self.count else "\n    ") + _dumps(material)).encode("utf-8"))
+        """One material: a mapping (checked with `check`), or an EncodedMaterial (checked where it
+        was encoded: its text is copied)."""
+        if isinstance(material, EncodedMaterial):
+            text = material.text
+        else:
+            if self.check:
+                assert isinstance(material, Mapping)
+                Material.from_ir(material, f"materials[{self.count}]")
+            text = json_text(material)
+        self.out.write(((",\n    " if self.count else "\n    ") + text).encode("utf-8"))
         self.count += 1
 
     def finish(self, diagnostics: Sequence[object]) -> None:
         if self.check:
             Document.from_ir({**self.head, "materials": [], "diagnostics": list(diagnostics)})
-        pieces = ["]" if not self.count else "\n  ]", ",\n", "  ", _dumps("diagnostics"), ": ["]
+        pieces = ["]" if not self.count else "\n  ]", ",\n", "  ", json_text("diagnostics"), ": ["]
         for i, item in enumerate(diagnostics):
-            pieces += [",\n    " if i else "\n    ", _dumps(item)]
+            pieces += [",\n    " if i else "\n    ", json_text(item)]
         pieces.append("\n  ]" if diagnostics else "]")
         pieces.append("\n}\n")
         self.out.write("".join(pieces).encode("utf-8"))
@@ -113,32 +118,5 @@ def _head(document: Document) -> dict[str, object]:
         "colour_space": document.colour_space,
     }
 
-
-def _dumps(value: object) -> str:
-    """JSON text with DEL, the C1 controls and U+2028/U+2029 written as \\u escapes: the encoder
-    leaves them raw (valid JSON), but a terminal reads C1 as commands (U+009B is CSI) and
-    JavaScript reads U+2028 as a line end. They occur only inside strings, so escaping the text is exact."""
-    text = _ENCODER.encode(value)
-    if _UNSAFE_ON_TERMINAL.search(text) is None:
-        return text
-    return _UNSAFE_ON_TERMINAL.sub(_escaped, text)
-
-
-def _escaped(match: re.Match[str]) -> str:
-    return f"\\u{ord(match.group()):04x}"
-
-
-_UNSAFE_ON_TERMINAL = re.compile("[\x7f-\x9f\u2028\u2029]")
-
-
-def _plain(value: object) -> Any:
-    """Read-only records (a diagnostic is a mapping proxy) as plain JSON objects."""
-    if isinstance(value, Mapping):
-        return dict(value)
-    raise TypeError(f"{type(value).__name__} is not JSON")
-
-
-#: what json.dumps(value, ensure_ascii=False, default=_plain) makes anew on every call (it holds no state)
-_ENCODER = json.JSONEncoder(ensure_ascii=False, default=_plain)
 
 TARGET = IrTarget()

@@ -14,12 +14,12 @@ from .passes.base import apply_noun
 from .passes.coats import apply_coat_clause
 from .passes.model import select_model
 from .passes.ranges import check_finite, check_ranges
-from .passes.refine import apply_refinement
+from .passes.refine import apply_inline_refinements, apply_refinement
 from .passes.variants import expand, identifier
 from .passes.words import apply_groups
 from .state import Context, MaterialState
 
-BUILD_PASSES = (apply_noun, apply_groups, apply_coat_clause)
+BUILD_PASSES = (apply_noun, apply_groups, apply_coat_clause, apply_inline_refinements)
 FINAL_PASSES = (select_model, check_ranges, check_finite)
 
 
@@ -32,11 +32,11 @@ def attach_refinements(doc: ast.Document) -> list[tuple[ast.Material, list[ast.R
         elif pairs:
             pairs[-1][1].append(item)
         else:
-            doc.diagnostics.append(_orphan(item))
+            doc.diagnostics.append(orphan_refinement(item))
     return pairs
 
 
-def _orphan(item: ast.Item) -> Diagnostic:
+def orphan_refinement(item: ast.Item) -> Diagnostic:
     return warning(
         item.span,
         "W104",
@@ -47,8 +47,16 @@ def _orphan(item: ast.Item) -> Diagnostic:
 
 def material_name(material: ast.Material, used: dict[str, int]) -> str:
     """An identifier from the name or the words; repeats get _2, _3, ... (used: name -> count)."""
-    base = material.name.text if material.name else " ".join(_name_words(material))
-    name = identifier(base)
+    return unique_name(base_name(material), used)
+
+
+def base_name(material: ast.Material) -> str:
+    """The identifier of the name, or of the words, before repeats are numbered."""
+    return identifier(material.name.text if material.name else " ".join(_name_words(material)))
+
+
+def unique_name(name: str, used: dict[str, int]) -> str:
+    """`name`, or `name_2`, `name_3`, ... where it was used before (used: name -> count, updated)."""
     unique = name
     while unique in used:
         used[name] += 1
@@ -184,7 +192,7 @@ def _material_groups(
                 yield material, refinements
             material, refinements, material_ok = item, [], not has_error
         elif material is None:
-            diags.append(_orphan(item))
+            diags.append(orphan_refinement(item))
         elif not has_error:
             refinements.append(item)
     if material is not None and material_ok:

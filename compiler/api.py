@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import gc
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -17,6 +17,7 @@ from .document import parse_document
 from .ir import document_head, document_ir
 from .lexicon import Lexicon, cached_lexicon
 from .material import Document
+from .parallel import parallel_material_irs, worker_count
 from .state import Context, MaterialState
 
 JSONDict = dict[str, Any]
@@ -83,7 +84,7 @@ def compile_source(
     lexicon = lexicon or lexicon_for()
     with cyclic_gc_paused():
         if not keep_stages:
-            stream = compile_stream(source, filename, lexicon, seed)
+            stream = compile_stream(source, filename, lexicon, seed, workers=1)
             materials = list(stream.materials)
             diags = stream.sorted_diagnostics()
             return Result(document_ir(materials, diags, filename, lexicon.sources), diags)
@@ -101,7 +102,7 @@ class Stream:
     out); `diagnostics` grows as they are found, complete once `materials` is exhausted."""
 
     head: JSONDict
-    materials: Iterator[JSONDict]
+    materials: Iterator[Mapping[str, Any]]
     diagnostics: list[Diagnostic]
 
     def sorted_diagnostics(self) -> list[Diagnostic]:
@@ -113,13 +114,23 @@ class Stream:
         return not has_errors(self.diagnostics)
 
 
-def compile_stream(source: str, filename: str = "<input>", lexicon: Lexicon | None = None, seed: int = 0) -> Stream:
+def compile_stream(
+    source: str, filename: str = "<input>", lexicon: Lexicon | None = None, seed: int = 0, workers: int | None = None
+) -> Stream:
     """The document's IR one material at a time (see Stream): what `compile_source(keep_stages=False)`
-    gives, without holding the materials. Iterate with the cyclic GC paused (cyclic_gc_paused)."""
+    gives, without holding the materials. Iterate with the cyclic GC paused (cyclic_gc_paused).
+
+    A large document is compiled by `workers` processes (None: $CNLMC_WORKERS, else the CPUs;
+    see cnlmc.parallel.worker_count), its materials then EncodedMaterial mappings, in the same
+    order, with the same diagnostics and the same bytes once written."""
     lexicon = lexicon or lexicon_for()
     ctx = Context(lexicon, seed=seed, filename=filename)
     diags: list[Diagnostic] = []
-    return Stream(document_head(filename, lexicon.sources), iter_material_irs(source, ctx, diags), diags)
+    count = worker_count(source, workers)
+    materials = (
+        iter_material_irs(source, ctx, diags) if count == 1 else parallel_material_irs(source, ctx, diags, count)
+    )
+    return Stream(document_head(filename, lexicon.sources), materials, diags)
 
 
 def compile_phrase(phrase: str, lexicon: Lexicon | None = None, seed: int = 0) -> JSONDict:

@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+import json
+import re
+from collections.abc import Iterable, Iterator, Mapping, Sequence
+from functools import cached_property
 from typing import Any
 
 from .conventions import alpha_of
@@ -98,10 +101,64 @@ def document_head(source_name: str, lexicon_sources: Iterable[str]) -> JSONDict:
 
 
 def document_ir(
-    materials: list[JSONDict], diagnostics: list[Diagnostic], source_name: str, lexicon_sources: Iterable[str]
+    materials: Sequence[Mapping[str, Any]], diagnostics: list[Diagnostic], source_name: str, lexicon_sources: Iterable[str]
 ) -> JSONDict:
     return {
         **document_head(source_name, lexicon_sources),
         "materials": materials,
         "diagnostics": [d.to_json() for d in diagnostics],
     }
+
+
+def json_text(value: object) -> str:
+    """JSON text of an IR value, on one line, as the IR file has it: DEL, the C1 controls and
+    U+2028/U+2029 written as \\u escapes. The encoder leaves them raw (valid JSON), but a terminal
+    reads C1 as commands (U+009B is CSI) and JavaScript reads U+2028 as a line end. They occur only
+    inside strings, so escaping the text is exact."""
+    text = _ENCODER.encode(value)
+    if text.isascii() and "\x7f" not in text:  # the common case: two C scans, no regular expression
+        return text
+    if _UNSAFE_ON_TERMINAL.search(text) is None:
+        return text
+    return _UNSAFE_ON_TERMINAL.sub(_escaped, text)
+
+
+def _escaped(match: re.Match[str]) -> str:
+    return f"\\u{ord(match.group()):04x}"
+
+
+_UNSAFE_ON_TERMINAL = re.compile("[\x7f-\x9f\u2028\u2029]")
+
+
+def _plain(value: object) -> Any:
+    """Read-only records (a diagnostic is a mapping proxy) as plain JSON objects."""
+    if isinstance(value, Mapping):
+        return dict(value)
+    raise TypeError(f"{type(value).__name__} is not JSON")
+
+
+#: what json.dumps(value, ensure_ascii=False, default=_plain) makes anew on every call (it holds no state)
+_ENCODER = json.JSONEncoder(ensure_ascii=False, default=_plain)
+
+
+class EncodedMaterial(Mapping[str, Any]):
+    """A material's IR already checked and written as its JSON text (json_text): what a worker
+    process hands back (cnlmc.parallel). The IR writer copies `text` as it is; read as a mapping,
+    it is the material's IR object (decoded on first use)."""
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+
+    @cached_property
+    def _value(self) -> JSONDict:
+        value: JSONDict = json.loads(self.text)
+        return value
+
+    def __getitem__(self, key: str) -> Any:
+        return self._value[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._value)
+
+    def __len__(self) -> int:
+        return len(self._value)

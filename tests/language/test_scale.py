@@ -179,3 +179,118 @@ def test_standard_output_that_cannot_be_written_is_a_clear_usage_error(tmp_path)
     assert r.returncode == 2, r.stderr
     assert "cannot write to standard output: No space left on device" in r.stderr
     assert "internal error" not in r.stderr and "Traceback" not in r.stderr
+
+
+# ---------------------------------------------------------------- several processes (cnlmc.parallel)
+
+TRICKY_LINES = (
+    "darker",  # W104 when it comes first; else it refines the material above, maybe across a chunk's start
+    "rougher",
+    "m1: very brushed steel",  # W107, and a name used again below
+    "m2: tinted cast iron",  # W102
+    "red or blue or green glass",  # variants: their group is the name, numbered over the whole document
+    "red or red plastic",
+    "glossier",
+    "# a comment",
+    "",
+    "m3: white varnished oak",
+    "more grain",
+    "brushd steel",  # an error: the material and its refinements are left out
+    "darkr",  # an error on a refinement line
+    "aluminum",  # unnamed repeats: aluminum, aluminum_2, ...
+    "名前 ünïcødé 🔥 Ω: red plastic",  # a label
+    "m1: red plastic",
+    "oak with a glossy white varnish",
+    "lightly brushed, blue anodized aluminum",
+    "m3: darker",
+)
+
+
+def tricky_source(lines: int, seed: int) -> str:
+    """A refinement with no material above, then every kind of line in a seeded random order, with
+    CRLF and lone CR line ends mixed in."""
+    import random
+
+    rng = random.Random(seed)
+    ends = ("\n", "\n", "\n", "\r\n", "\r")
+    return "darker\n" + "".join(rng.choice(TRICKY_LINES) + rng.choice(ends) for _ in range(lines))
+
+
+def ir_bytes(source: str, workers: int, lines_per_chunk: int) -> tuple[bytes, list]:
+    """The IR file's bytes and the sorted diagnostics, made by one process or by `workers`."""
+    import io
+
+    from cnlmc.backends.ir_json import IrWriter
+    from cnlmc.ir import document_head
+    from cnlmc.parallel import parallel_material_irs
+
+    lexicon = lexicon_for()
+    ctx = Context(lexicon, filename="big.cnl")
+    diags: list = []
+    with cyclic_gc_paused():
+        if workers == 1:
+            materials = iter_material_irs(source, ctx, diags)
+        else:
+            materials = parallel_material_irs(source, ctx, diags, workers, lines_per_chunk)
+        out = io.BytesIO()
+        writer = IrWriter(out, document_head("big.cnl", lexicon.sources), check=True)
+        for material in materials:
+            writer.write(material)
+        found = sort_diagnostics(diags)
+        writer.finish([d.to_json() for d in found])
+    return out.getvalue(), found
+
+
+def test_several_processes_give_the_bytes_and_diagnostics_of_one():
+    """Chunks as small as one line: refinements across a chunk's start, orphans, errors, names and
+    variant groups numbered over the whole document, labels, every line end; the same bytes and
+    the same diagnostics, in the same order, as one process gives."""
+    for seed in (1, 2):
+        source = tricky_source(150, seed)
+        expected = ir_bytes(source, 1, 0)
+        assert b'"name": "aluminum_2"' in expected[0] and any(d.code == "W104" for d in expected[1])
+        for workers, lines_per_chunk in ((2, 1), (2, 3), (3, 2), (2, 40)):
+            assert ir_bytes(source, workers, lines_per_chunk) == expected, (seed, workers, lines_per_chunk)
+
+
+def test_a_stream_closed_early_stops_its_workers():
+    import multiprocessing
+
+    from cnlmc.parallel import parallel_material_irs
+
+    diags: list = []
+    with cyclic_gc_paused():
+        materials = parallel_material_irs(mixed_source(400), Context(lexicon_for()), diags, 2, 50)
+        assert next(materials)["name"] == "m0"
+        materials.close()
+    assert multiprocessing.active_children() == []
+
+
+def test_how_many_workers(monkeypatch):
+    from cnlmc.parallel import PARALLEL_MIN_LINES, worker_count
+
+    small, large = mixed_source(100), mixed_source(PARALLEL_MIN_LINES)
+    assert worker_count(small, 2) == 1 and worker_count(large, 1) == 1
+    assert worker_count(large, 2) == 2
+    monkeypatch.setenv("CNLMC_WORKERS", "1")
+    assert worker_count(large) == 1
+    monkeypatch.setenv("CNLMC_WORKERS", "3")
+    assert worker_count(large) == 3
+    monkeypatch.setenv("CNLMC_WORKERS", "many")  # not a positive integer: the CPUs, as unset
+    assert worker_count(large) == min(len(os.sched_getaffinity(0)), 8)
+
+
+def test_the_cli_writes_the_same_bytes_with_one_or_two_workers(tmp_path):
+    """A file above the threshold, compiled with CNLMC_WORKERS=1 and =2: the same file, the same stderr."""
+    from cnlmc.parallel import PARALLEL_MIN_LINES
+
+    source = tmp_path / "big.cnl"
+    source.write_text(STREAMED + "\n" + mixed_source(PARALLEL_MIN_LINES + 200), encoding="utf-8")
+    results = []
+    for workers in ("1", "2"):
+        out = tmp_path / f"big{workers}.ir.json"
+        r = cnlmc("compile", str(source), "-o", str(out), env={**os.environ, "CNLMC_WORKERS": workers})
+        assert r.returncode == 0, r.stderr
+        results.append((out.read_bytes(), r.stderr.replace(f"big{workers}.ir.json", "")))
+    assert results[0] == results[1]
+    assert json.loads(results[0][0])["materials"][-1]["name"].startswith("m")

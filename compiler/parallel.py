@@ -1,0 +1,267 @@
+"""One large document compiled on several processes (#13), with the bytes of one process.
+
+The lines are cut into chunks of CHUNK_LINES; worker k of n (a forked process) compiles chunks
+k, k+n, k+2n, ... and sends each chunk's result down its own pipe; the parent reads the chunks in
+document order (chunk j from worker j mod n), so a worker runs at most one chunk ahead and memory
+stays bounded. A chunk owns the materials whose line lies in it: its leading refinement lines
+belong to the material above (the chunk before reads on past its end up to the next material).
+
+What a chunk sends is a list of events the parent replays exactly as analyze._streamed_states
+would have made them in one process: every diagnostic in the order it was found ('add'), the
+states' diagnostics that are reported only when new ('new'), the two points where the sequential
+code takes note of what was reported ('begin', 'end'), and each material: its name before repeats
+are numbered (numbered by the parent, which sees the whole document) and its states' IR, checked
+and encoded (EncodedMaterial) without the name, which the parent puts in front.
+
+Only above PARALLEL_MIN_LINES lines, with more than one CPU, and where processes can be forked;
+otherwise (or with CNLMC_WORKERS=1) the document is compiled in this process.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+from collections.abc import Iterator, Mapping
+from multiprocessing.connection import Connection
+from typing import Any
+
+from . import ast
+from .analyze import base_name, build_states, orphan_refinement, unique_name
+from .diagnostics import Diagnostic
+from .document import parse_line
+from .ir import EncodedMaterial, JSONDict, json_text, material_ir
+from .lines import LINE_END
+from .material import Material
+from .params import Params
+from .state import Context
+from .tagger import Tagger
+
+PARALLEL_MIN_LINES = 5000  # below this, starting the processes costs more than they save
+CHUNK_LINES = 1000
+MAX_WORKERS = 8
+WORKERS_VARIABLE = "CNLMC_WORKERS"
+
+ADD, NEW, BEGIN, END, MATERIAL = range(5)  # the kinds of event (see the module's doc)
+Event = tuple[Any, ...]
+FRONT_KEYS = ("label", "phrase")  # a material's IR keys between its name and its variant
+NAMED_KEYS = ("name", *FRONT_KEYS, "variant")  # the keys up to the variant's, which names the group
+
+
+def worker_count(source: str, requested: int | None = None) -> int:
+    """How many processes compile `source`: `requested`, else $CNLMC_WORKERS (a positive integer),
+    else the CPUs this process may use; 1 below PARALLEL_MIN_LINES lines or where fork is missing."""
+    wanted = requested if requested is not None else _workers_from_environment()
+    if wanted <= 1 or source.count("\n") + 1 < PARALLEL_MIN_LINES:
+        return 1
+    if "fork" not in multiprocessing.get_all_start_methods():
+        return 1
+    return min(wanted, MAX_WORKERS)
+
+
+def _workers_from_environment() -> int:
+    value = os.environ.get(WORKERS_VARIABLE, "").strip()
+    if value.isdigit() and int(value) > 0:
+        return int(value)
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):  # not on Linux
+        return os.cpu_count() or 1
+
+
+def chunk_starts(source: str, lines_per_chunk: int = CHUNK_LINES) -> list[tuple[int, int]]:
+    """(line number, offset) of the first line of each chunk."""
+    starts = [(1, 0)]
+    number = 1
+    for end in LINE_END.finditer(source):
+        number += 1
+        if (number - 1) % lines_per_chunk == 0:
+            starts.append((number, end.end()))
+    return starts
+
+
+def parallel_material_irs(
+    source: str, ctx: Context, diags: list[Diagnostic], workers: int, lines_per_chunk: int = CHUNK_LINES
+) -> Iterator[Mapping[str, Any]]:
+    """What analyze.iter_material_irs gives (as EncodedMaterial) and adds to `diags`, made by
+    `workers` forked processes; they are stopped when the iterator is closed or fails."""
+    starts = chunk_starts(source, lines_per_chunk)
+    chunks = [(i, *start, starts[i + 1][0] if i + 1 < len(starts) else None) for i, start in enumerate(starts)]
+    fork = multiprocessing.get_context("fork")
+    pipes, processes = [], []
+    try:
+        for k in range(min(workers, len(chunks))):
+            receiver, sender = fork.Pipe(duplex=False)
+            process = fork.Process(target=_work, args=(sender, source, ctx, chunks[k::workers]), daemon=True)
+            process.start()
+            sender.close()
+            pipes.append(receiver)
+            processes.append(process)
+        replay = _Replay(diags)
+        for j in range(len(chunks)):
+            yield from replay.events(_receive(pipes[j % len(pipes)]))
+        for process in processes:
+            process.join()
+    finally:
+        for process in processes:
+            if process.is_alive():
+                process.terminate()
+            process.join()
+        for pipe in pipes:
+            pipe.close()
+
+
+def _receive(pipe: Connection) -> list[Event]:
+    try:
+        result = pipe.recv()
+    except EOFError:
+        raise RuntimeError("a worker process stopped before it sent its materials") from None
+    if isinstance(result, BaseException):
+        raise result  # what the same document raises in one process
+    events: list[Event] = result
+    return events
+
+
+class _Replay:
+    """The parent's half: diagnostics reported as analyze._streamed_states reports them, names
+    numbered over the whole document, each material's name put in front of its text."""
+
+    def __init__(self, diags: list[Diagnostic]) -> None:
+        self.diags, self.seen, self.mark, self.used = diags, set[Diagnostic](), 0, dict[str, int]()
+
+    def events(self, events: list[Event]) -> Iterator[Mapping[str, Any]]:
+        diags, seen = self.diags, self.seen
+        for event in events:
+            kind = event[0]
+            if kind == ADD:
+                diags.append(event[1])
+            elif kind == NEW:
+                if event[1] not in seen:
+                    seen.add(event[1])
+                    diags.append(event[1])
+            elif kind == BEGIN:
+                seen.update(diags[self.mark :])
+            elif kind == END:
+                self.mark = len(diags)
+            else:
+                name = unique_name(event[1], self.used)
+                for encoded in event[2]:
+                    yield self.named(encoded, name)
+
+    @staticmethod
+    def named(encoded: tuple[dict[str, Any] | None, str, str] | JSONDict, name: str) -> Mapping[str, Any]:
+        """A material made by a worker, given its name (and its variant's group)."""
+        if isinstance(encoded, dict):  # failed the check: the writer says where
+            variant = encoded["variant"]
+            if variant is not None:
+                variant["group"] = name
+            return {**encoded, "name": f"{name}__{variant['name']}" if variant else name}
+        variant, front, rest = encoded
+        if variant is not None:
+            variant["group"] = name
+            name = f"{name}__{variant['name']}"
+        return EncodedMaterial(f'{{"name": {json_text(name)}, {front}, "variant": {json_text(variant)}, {rest}')
+
+
+# ---------------------------------------------------------------- the worker's half
+
+
+def _work(pipe: Connection, source: str, ctx: Context, chunks: list[tuple[int, int, int, int | None]]) -> None:
+    """A worker process: each of its chunks' events down the pipe, in order (an exception instead,
+    and nothing more, where compiling fails)."""
+    try:
+        for index, number, offset, end in chunks:
+            pipe.send(chunk_events(source, ctx, number, offset, end, first=index == 0))
+    except BaseException as exc:  # handed to the parent, which raises it
+        pipe.send(exc)
+    finally:
+        pipe.close()
+
+
+def chunk_events(source: str, ctx: Context, number: int, offset: int, end: int | None, first: bool) -> list[Event]:
+    """The events of the chunk whose first line is `number` at `offset`, up to line `end` (excluded;
+    None: the last chunk); `first`: the document's first chunk."""
+    diags: list[Diagnostic] = []
+    events: list[Event] = []
+    flushed = 0
+    convention = ctx.settings.get("alpha_convention", Params.alpha_convention)
+    rounded_optics = ctx.lexicon.caches.rounded_optics
+    items = _items(source, number, offset, Tagger.of(ctx.lexicon), diags)
+    for material, refinements in _owned_groups(items, diags, end, first):
+        events += [(ADD, d) for d in diags[flushed:]]
+        events.append((BEGIN,))
+        flushed = len(diags)
+        states = build_states(material, refinements, ctx, "", diags)
+        events += [(ADD, d) for d in diags[flushed:]]
+        flushed = len(diags)
+        encoded = []
+        for state in states:
+            events += [(NEW, d) for d in state.diagnostics]
+            encoded.append(_encoded(material_ir(state, convention, rounded_optics)))
+        events.append((MATERIAL, base_name(material), encoded))
+        events.append((END,))
+    events += [(ADD, d) for d in diags[flushed:]]
+    return events
+
+
+def _encoded(material: JSONDict) -> tuple[dict[str, Any] | None, str, str] | JSONDict:
+    """The material checked (as the IR writer checks it) and written as JSON text in the pieces
+    around what depends on its name (the name, the variant's group): its variant, the text of
+    its label and phrase, and the text of the rest (see _Replay.text). One that fails the check is
+    sent as it is (the parent's writer checks it again, and fails naming its place in the document)."""
+    try:
+        Material.from_ir(material, "material")
+    except ValueError:
+        return material
+    front = json_text({key: material[key] for key in FRONT_KEYS if key in material})
+    rest = json_text({key: value for key, value in material.items() if key not in NAMED_KEYS})
+    return material["variant"], front[1:-1], rest[1:]
+
+
+def _items(
+    source: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]
+) -> Iterator[tuple[ast.Item, bool]]:
+    """document.iter_items from line `number` (at `offset`) on."""
+    for end in LINE_END.finditer(source, offset):
+        yield from _item(source[offset : end.start()], number, offset, tagger, diags)
+        number, offset = number + 1, end.end()
+    yield from _item(source[offset:], number, offset, tagger, diags)
+
+
+def _item(
+    text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]
+) -> Iterator[tuple[ast.Item, bool]]:
+    before = len(diags)
+    node = parse_line(text, number, offset, tagger, diags)
+    if node is not None:
+        yield node, any(d.is_error for d in diags[before:])
+
+
+def _owned_groups(
+    items: Iterator[tuple[ast.Item, bool]], diags: list[Diagnostic], end: int | None, first: bool
+) -> Iterator[tuple[ast.Material, list[ast.Refinement]]]:
+    """analyze._material_groups over the materials whose line is before `end`: the chunk's
+    leading lines up to its first material's, and their diagnostics, are dropped unless it is the
+    first (the chunk before reports them); the first material at `end` or later stops it (its
+    line's diagnostics kept: in one process they are found before the last material's states are
+    made)."""
+    material: ast.Material | None = None
+    refinements: list[ast.Refinement] = []
+    material_ok = False
+    for item, has_error in items:
+        if isinstance(item, ast.Material):
+            if end is not None and item.span.line >= end:
+                break
+            if material is None and not first:
+                diags.clear()  # the leading lines and this one: the chunk before reports them
+            elif material is not None and material_ok:
+                yield material, refinements
+            material, refinements, material_ok = item, [], not has_error
+        elif material is None:
+            if first:
+                diags.append(orphan_refinement(item))
+        elif not has_error:
+            refinements.append(item)
+    if material is not None and material_ok:
+        yield material, refinements
+    elif material is None and not first:
+        diags.clear()
