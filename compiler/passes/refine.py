@@ -24,15 +24,28 @@ from .bracket import Move, bracket_move, scaled_steps
 from .refine_colour import refine_colour, refine_saturation
 from .refine_effects import refine_adjective
 from .refine_target import item_words, refine_weight, surface
+from .words import apply_group
 
 __all__ = ["apply_inline_refinements", "apply_refinement"]
 
 
 def apply_inline_refinements(state: MaterialState, ctx: Context) -> MaterialState:
-    """'shinier aluminum': the comparatives written before the noun, applied to the material it names."""
+    """'shinier aluminum', 'lighter oak': a comparative written before the material is one
+    refinement of the material the rest of the phrase names. A comparative that names its own
+    target ('brighter', 'darker') and has a word after it ('brighter red plastic') reads that word
+    as part of the material ('red plastic'), then refines it ('brighter' — the red)."""
     for item in state.selection.refinements:
+        entry = ctx.lexicon.require("refinements", item.word.key)
+        if entry.get("target") != "any" and item.target is not None:
+            apply_group(state, ctx, _as_group(item.target), target="base")
         apply_refinement(state, ctx, item)
     return state
+
+
+def _as_group(target: ast.Word | ast.Colour) -> ast.Group:
+    if isinstance(target, ast.Colour):
+        return ast.Group("colour", (), (target,), (), target.span)
+    return ast.Group("adjective", (), (), (target,), target.span)
 
 
 def apply_refinement(state: MaterialState, ctx: Context, item: ast.RefineItem) -> None:
@@ -97,9 +110,16 @@ def _refine_property(
 
 def _refine_map_param(state: MaterialState, prop: Entry, item: ast.RefineItem, direction: int, weight: float) -> None:
     name = prop.get("map_param")
-    roles = [role for role, ref in state.maps.items() if name in graph_params(ref["graph"])]
+    graphs = prop.get("graphs")
+    roles = [
+        role
+        for role, ref in state.maps.items()
+        if name in graph_params(ref["graph"]) and (not graphs or ref["graph"] in graphs)
+    ]
     if not roles:
         what = "no procedural map" if not state.maps else f"no map with '{name}'"
+        if graphs:
+            what = f"no {' or '.join(graphs)} map"
         state.diagnostics.append(
             warning(
                 item.span,

@@ -19,6 +19,7 @@ from .bracket import Move, Step, bracket_move, scaled_steps
 from .refine_target import item_words, note
 
 COLOUR_LIMITS = (0.0, 1.0)
+LIGHTNESS_AXIS = "lightness"  # the axis of darker / lighter: its bracket is on the colour's own key
 NEUTRAL_CHROMA = 1e-4  # an OKLCh chroma below this has no hue to saturate
 Ops = list[dict[str, Any]]
 
@@ -31,7 +32,8 @@ def refine_colour(state: MaterialState, entry: Entry, item: ast.RefineItem, dire
     ops = entry.get("ops")
     if ops:
         step: Step = lambda x: apply_ops(x, scaled_ops(ops, weight))
-        key = f"{param}.{entry.get('axis', entry.key)}"
+        axis = entry.get("axis", entry.key)
+        key = param if axis == LIGHTNESS_AXIS else f"{param}.{axis}"
     else:
         step = scaled_steps(entry.get("step"), weight)[0]  # the entry's own step goes its own way
         key = param
