@@ -126,13 +126,13 @@ def test_the_er_form_alone_on_a_line_is_still_the_comparative(de):
 
 
 def test_every_comparative_that_is_also_a_declined_positive_reads_both_ways(de):
-    """The rule behind the -er aliases: a German refinement 'Xer' whose 'X' is an adjective or a
-    shade must also read as that adjective/shade, else 'Xer Stahl' becomes a refinement."""
+    """The rule behind the -er aliases: a German refinement 'Xer' whose 'X' is an adjective, a shade
+    or a colour must also read as that word, else 'Xer Stahl' becomes a refinement."""
     for refinement in overlay_file("refinements_de.toml").values():
         for form in refinement["aliases"]:
             if not form.endswith("er"):
                 continue
-            positives = [e for e in de.lookup((form[:-2],)) if e.category in ("adjectives", "shades")]
+            positives = [e for e in de.lookup((form[:-2],)) if e.category in ("adjectives", "shades", "colours")]
             for positive in positives:
                 readings = {(e.category, e.key) for e in de.lookup((form,))}
                 assert (positive.category, positive.key) in readings, (form, positive.key)
