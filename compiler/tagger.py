@@ -168,10 +168,12 @@ class Tagger:
             before = out[-1] if out else None
             nouns = _of_tag(word, "NOUN")
             if before is not None and _of_tag(before, "OBJECT") and not _others(before) and nouns:
-                out[-1] = self._join(before, word, nouns, f"'{word.text}' ('{before.text}' is made of it)", diags)
+                out[-1] = self._join(before, word, nouns, f"'{word.text}' ('{before.text}' names the object)", diags)
             elif before is not None and _of_tag(word, "OBJECT") and _of_tag(before, "NOUN"):
                 made = _of_tag(before, "NOUN")
-                out[-1] = self._join(before, word, made, f"'{before.text}' ('{word.text}' made of it)", diags)
+                out[-1] = self._join(before, word, made, f"'{before.text}' (the material of the {word.text})", diags)
+            elif before is not None and k + 1 < len(tagged) and self._is_head(before, word.text):
+                out[-1] = self._with_head(before, word.text, word.span, diags)
             elif before is not None and nouns and self._is_class_of(before, nouns):
                 made = _of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{before.text}' ('{word.text}' is its class)", diags)
@@ -190,6 +192,19 @@ class Tagger:
         diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read '{text}' as {reading}"))
         return Tagged(text, span, candidates, a.unknown or b.unknown)
 
+    def _is_head(self, before: Tagged, text: str) -> bool:
+        """'finish' in "satin finish steel": a head word (word_formation rules) after a describing word."""
+        return text.lower() in self.formation().rules.heads and any(
+            c.tag in ("ADJ", "COLOR") for c in before.candidates
+        )
+
+    def _with_head(self, before: Tagged, text: str, span: Span, diags: list[Diagnostic]) -> Tagged:
+        joined = before.span.to(span)
+        note = f"read '{before.text} {text}' as '{before.text}' ('{text}' names what it describes)"
+        diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
+        kept = tuple(c for c in before.candidates if c.tag in ("ADJ", "COLOR"))
+        return Tagged(f"{before.text} {text}", joined, kept, before.unknown)
+
     def _object_alone(self, word: Tagged, diags: list[Diagnostic]) -> Tagged:
         """An object with no material noun beside it: its other readings, else its material."""
         others = _others(word)
@@ -197,7 +212,7 @@ class Tagger:
             return Tagged(word.text, word.span, others, word.unknown)
         key = _of_tag(word, "OBJECT")[0].key
         material = self.lexicon.require("objects", key).data["material"]
-        note = f"read '{word.text}' as '{material}' (what {word.text} are usually made of)"
+        note = f"read '{word.text}' as '{material}' (the usual material of '{word.text}')"
         diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))
         return Tagged(word.text, word.span, (Candidate("NOUN", material, "nouns"),), word.unknown)
 
@@ -243,6 +258,9 @@ class Tagger:
             tagged.append(Tagged(text, self._span(raw, i, 1, line_no, offset), candidates))
             return 1
         if text[0].isalpha():
+            if tagged and i + 1 < len(raw) and self._is_head(tagged[-1], text):  # "satin look steel"
+                tagged[-1] = self._with_head(tagged[-1], text, self._span(raw, i, 1, line_no, offset), diags)
+                return 1
             reading = self.formation().read_at([t.lower() for t, _c in raw[i : i + 3]])
             if reading is not None:
                 return self._formed(reading, raw, i, line_no, offset, tagged, diags)
@@ -336,7 +354,11 @@ def _may_join(tagged: list[Tagged]) -> bool:
             noun_before = False
             continue
         last = word.candidates[-1].tag
-        if last == "OBJECT" or (noun_before and last in ("NOUN", "REFINE")):
+        if (
+            last == "OBJECT"
+            or (noun_before and last in ("NOUN", "REFINE"))
+            or (last == "COAT" and word is not tagged[-1])
+        ):
             return True
         noun_before = last in ("NOUN", "REFINE")
     return False

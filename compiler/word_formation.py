@@ -78,6 +78,7 @@ class Rules:
         self.head_last = any(c["head_last"] for c in compounds)
         self.linkers = ("", *dict.fromkeys(k for c in compounds for k in c["linkers"]))
         self.min_part = min((c["min_part"] for c in compounds), default=3)
+        self.heads = frozenset(h for c in compounds for h in c["heads"])
 
 
 class WordFormation:
@@ -226,8 +227,8 @@ class WordFormation:
 
     def _split_hyphenated(self, word: str) -> Reading | None:
         parts, start = [], 0
-        for piece in word.split("-"):
-            found = self._resolved(piece) if piece else ()
+        for piece in word.split("-"):  # an object is not a part: wire-brushed is brushed (head_last)
+            found = tuple(c for c in self._resolved(piece) if c.tag != "OBJECT") if piece else ()
             if piece and not found:
                 return None
             if piece:

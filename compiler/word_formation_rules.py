@@ -31,7 +31,7 @@ def empty_rules() -> dict[str, Any]:
         "negation": {"words": [], "prefixes": [], "softeners": [], "soft_adverb": ""},
         "prefix": [],
         "suffix": [],
-        "compounds": {"join": False, "split": False, "linkers": [], "min_part": 3, "head_last": False},
+        "compounds": {"join": False, "split": False, "linkers": [], "min_part": 3, "head_last": False, "heads": []},
     }
 
 
@@ -84,7 +84,7 @@ def _suffix(c: Checker, raw: object, i: int) -> dict[str, Any]:
 
 def _compounds(c: Checker, raw: object) -> dict[str, Any]:
     table = c.table(raw, ("compounds",))
-    out = empty_rules()["compounds"]
+    out: dict[str, Any] = dict(empty_rules()["compounds"])
     c.known_keys(table, tuple(out), ("compounds",))
     for flag in ("join", "split", "head_last"):
         value = table.get(flag, out[flag])
@@ -92,13 +92,16 @@ def _compounds(c: Checker, raw: object) -> dict[str, Any]:
             c.fail(("compounds", flag), f"expected true or false, got {value!r:.40}")
         out[flag] = value
     out["linkers"] = _words(c, table.get("linkers", []), ("compounds", "linkers"))
+    out["heads"] = _words(c, table.get("heads", []), ("compounds", "heads"))
     out["min_part"] = int(c.number(table.get("min_part", out["min_part"]), ("compounds", "min_part"), 1, 20))
     return out
 
 
 def check_rule_names(c: Checker, rules: Mapping[str, Any], adverbs: Mapping[str, Any]) -> None:
     """Every adverb a rule reads as must be an adverb of the merged lexicon."""
-    named = [(("prefix", i, "adverb"), p["adverb"]) for i, p in enumerate(rules["prefix"])]
+    named: list[tuple[tuple[str | int, ...], str]] = [
+        (("prefix", i, "adverb"), p["adverb"]) for i, p in enumerate(rules["prefix"])
+    ]
     if rules["negation"]["soft_adverb"]:
         named.append((("negation", "soft_adverb"), rules["negation"]["soft_adverb"]))
     for path, name in named:

@@ -1,0 +1,251 @@
+"""Word formation (issue #14): unknown words read by the lexicon's rules, with a note each.
+
+Every phrase here is one that tests/language/everyday.toml does NOT hold: the rules must be
+general. Each reading is compared with the phrase it should mean, through the real compiler
+(model, parameters and maps of the IR; names and provenance may differ).
+"""
+
+from pathlib import Path
+
+import pytest
+
+from cnlmc.api import compile_source
+from cnlmc.diagnostics import Severity
+from cnlmc.lexicon import load_lexicon
+from cnlmc.lexicon_schema import LexiconError
+from cnlmc.tagger import Tagger
+from cnlmc.word_formation import NOTE_CODE
+
+
+@pytest.fixture(scope="module")
+def lexicon():
+    return load_lexicon()
+
+
+def compiled(lexicon, text):
+    result = compile_source(text, "wf.cnl", lexicon)
+    assert result.ok, (text, [d.message for d in result.diagnostics])
+    assert not [d for d in result.diagnostics if d.severity is Severity.WARNING], text
+    (material,) = result.ir["materials"]
+    return result, {k: material[k] for k in ("model", "params", "maps")}
+
+
+def notes(result):
+    return [d.message for d in result.diagnostics if d.severity is Severity.NOTE and d.code == NOTE_CODE]
+
+
+def assert_reads_as(lexicon, text, meaning, note_has=""):
+    result, look = compiled(lexicon, text)
+    _plain, expected = compiled(lexicon, meaning)
+    assert look == expected, (text, meaning)
+    said = notes(result)
+    assert said, f"{text!r} was read by a rule without a note"
+    assert any(note_has in n for n in said), said
+
+
+# ---------------------------------------------------------------- negation
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning", "note_has"),
+    [
+        ("not matte ceramic", "glossy ceramic", "opposite of 'matte'"),
+        ("non-matte paint", "glossy paint", "opposite of 'matte'"),
+        ("nonmatte plastic", "glossy plastic", "'glossy'"),
+        ("unglossy rubber", "matte rubber", "opposite of 'glossy'"),
+        ("not smooth slate", "rough slate", "opposite of 'smooth'"),
+        ("not dull chrome", "shiny chrome", "opposite of 'dull'"),
+        ("unwaxed pine", "raw pine", "'raw'"),
+        ("unoiled teak", "raw teak", "'raw'"),
+        ("unstained maple", "raw maple", "'raw'"),
+        ("unanodized aluminum", "aluminum", "'raw'"),
+        ("not weathered copper", "copper", "without 'weathered'"),
+        ("unscratched chrome", "chrome", "without 'scratched'"),
+        ("not too glossy paint", "slightly glossy paint", "'slightly glossy'"),
+        ("not overly rough stone", "slightly rough stone", "'slightly rough'"),
+        ("non-toxic paint", "paint", "no effect"),
+    ],
+)
+def test_negation_reads_the_declared_opposite_or_without(lexicon, text, meaning, note_has):
+    assert_reads_as(lexicon, text, meaning, note_has)
+
+
+def test_negation_of_a_reflective_word_is_rougher_than_the_word(lexicon):
+    _r, shiny = compiled(lexicon, "shiny plastic")
+    _r, not_shiny = compiled(lexicon, "not lustrous plastic")
+    assert not_shiny["params"]["roughness"] > shiny["params"]["roughness"]
+
+
+def test_un_before_an_unknown_word_stays_unknown(lexicon):
+    result = compile_source("unblorfed steel", "wf.cnl", lexicon)
+    assert [d.code for d in result.diagnostics if d.is_error] == ["E001"]
+
+
+def test_not_before_a_noun_is_not_a_negation(lexicon):
+    result = compile_source("not steel", "wf.cnl", lexicon)
+    assert not result.ok  # 'not' has nothing to negate: the word stays unknown, no traceback
+    assert any("'not'" in d.message for d in result.diagnostics if d.is_error)
+
+
+# ---------------------------------------------------------------- prefixes, suffixes, compounds
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning", "note_has"),
+    [
+        ("semi-glossy plastic", "slightly glossy plastic", "slightly glossy"),
+        ("semiglossy plastic", "slightly glossy plastic", "slightly glossy"),
+        ("half glossy ceramic", "slightly glossy ceramic", "slightly glossy"),
+        ("ultra-matte rubber", "intensely matte rubber", "intensely matte"),
+        ("mirror-look steel", "mirror steel", "'mirror'"),
+        ("matte-finished steel", "matte steel", "'matte'"),
+        ("wax-finished oak", "waxed oak", "'wax'"),
+        ("bronze-coloured plastic", "bronze plastic", "'bronze'"),
+        ("terracotta-toned paint", "terracotta paint", "'terracotta'"),
+        ("oaken", "oak", "'oak'"),
+        ("coppery plastic", "copper plastic", "'copper'"),
+        ("waxy pine", "waxed pine", "'wax'"),
+        ("glossy-white ceramic", "glossy white ceramic", "'glossy white'"),
+        ("brushed-steel", "brushed steel", "'brushed steel'"),
+        ("hand-polished brass", "polished brass", "'polished'"),
+        ("wire-brushed oak", "brushed oak", "'brushed'"),
+        ("bead-polished chrome", "polished chrome", "'polished'"),
+        ("matte look plastic", "matte plastic", "'look'"),
+        ("gloss finish white paint", "glossy white paint", "'finish'"),
+    ],
+)
+def test_derived_and_compound_words(lexicon, text, meaning, note_has):
+    assert_reads_as(lexicon, text, meaning, note_has)
+
+
+def test_a_head_word_at_the_end_is_left_to_the_coat_clause(lexicon):
+    result, look = compiled(lexicon, "copper with a matte finish")
+    assert look["model"]["coat"] is True
+    assert not notes(result)
+
+
+# ---------------------------------------------------------------- objects and classes
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning", "note_has"),
+    [
+        ("birch planks", "birch", "'birch'"),
+        ("maple boards", "maple", "'maple'"),
+        ("walnut veneer", "walnut", "'walnut'"),
+        ("copper wire", "copper", "'copper'"),
+        ("zinc sheets", "zinc", "'zinc'"),
+        ("glass jar", "glass", "'glass'"),
+        ("brushed steel handrail", "brushed steel", "'steel'"),
+        ("oaken beams", "oak", "'oak'"),
+        ("maple wood", "maple", "its class"),
+        ("granite stone", "granite", "its class"),
+        ("planks", "wood", "usual material"),
+        ("pipes", "steel", "usual material"),
+        ("floor tiles", "tiles", "names the object"),
+        ("cinder blocks", "cinder block", ""),
+        ("paving stones", "paving stone", ""),
+    ],
+)
+def test_objects_read_as_their_material(lexicon, text, meaning, note_has):
+    if note_has:
+        assert_reads_as(lexicon, text, meaning, note_has)
+    else:
+        assert compiled(lexicon, text)[1] == compiled(lexicon, meaning)[1]
+
+
+# ---------------------------------------------------------------- decorative punctuation
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning"),
+    [
+        ("Polished copper.", "polished copper"),
+        ("matte black rubber!", "matte black rubber"),
+        ("walnut?!", "walnut"),
+        ("• satin nickel", "satin nickel"),
+        ("> glossy red plastic", "glossy red plastic"),
+        ("\u201cbrushed brass\u201d", "brushed brass"),
+        ("'rough concrete'.", "rough concrete"),
+        ("oak;", "oak"),
+        ("white ceramic\u2026", "white ceramic"),
+    ],
+)
+def test_decorative_punctuation_is_dropped_silently(lexicon, text, meaning):
+    result, look = compiled(lexicon, text)
+    assert look == compiled(lexicon, meaning)[1]
+    assert not result.diagnostics
+
+
+def test_punctuation_alone_is_still_an_error(lexicon):
+    for text in ("?", "...", "- -"):
+        result = compile_source(text, "wf.cnl", lexicon)
+        assert not result.ok and all(d.span is not None for d in result.diagnostics), text
+
+
+# ---------------------------------------------------------------- speed: only unknown words
+
+
+def test_known_words_never_reach_word_formation():
+    lexicon = load_lexicon()
+    tagger = Tagger(lexicon)
+    for line in ("brushed aluminum", "glossy red plastic", "white varnished oak"):
+        tagger.tag_line(line, 1, 0)
+    assert lexicon.caches.word_formation is None
+    tagger.tag_line("semi-glossy plastic", 1, 0)
+    engine = lexicon.caches.word_formation
+    assert engine is not None and "semi-glossy" in engine.memo
+
+
+def test_a_reading_is_remembered(lexicon):
+    tagger = Tagger(lexicon)
+    first = tagger.tag_line("unpolished brass", 1, 0)
+    engine = tagger.formation()
+    remembered = engine.memo["unpolished"]
+    second = tagger.tag_line("unpolished brass", 1, 0)
+    assert engine.memo["unpolished"] is remembered
+    assert [t.candidates for t in first[0]] == [t.candidates for t in second[0]]
+
+
+# ---------------------------------------------------------------- rules as data in any lexicon
+
+
+def test_a_user_lexicon_brings_its_own_rules(tmp_path: Path):
+    (tmp_path / "word_formation.toml").write_text(
+        '[negation]\nwords = ["nie"]\n\n[[prefix]]\nforms = ["mezzo"]\nadverb = "somewhat"\ndoc = "mezzo-X: X at three quarters"\n',
+        encoding="utf-8",
+    )
+    lexicon = load_lexicon([tmp_path])
+    assert_reads_as(lexicon, "nie glossy plastic", "matte plastic", "opposite of 'glossy'")
+    assert_reads_as(lexicon, "mezzo-matte plastic", "somewhat matte plastic", "somewhat matte")
+    assert_reads_as(lexicon, "unpolished brass", "rough brass", "opposite")  # the stdlib's rules still apply
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("[negation]\nwordz = []\n", "unknown field 'wordz'"),
+        ('[[prefix]]\nforms = ["x"]\nadverb = "hugely"\ndoc = "d"\n', "no adverb named 'hugely'"),
+        ('[[suffix]]\nforms = ["ish"]\nreads_as = ["VERB"]\ndoc = "d"\n', "VERB"),
+        ("[compounds]\nsplit = 1\n", "expected true or false"),
+    ],
+)
+def test_bad_rules_name_file_line_and_column(tmp_path: Path, text, message):
+    (tmp_path / "word_formation.toml").write_text(text, encoding="utf-8")
+    with pytest.raises(LexiconError) as caught:
+        load_lexicon([tmp_path])
+    assert "word_formation.toml:" in str(caught.value) and message in str(caught.value)
+
+
+def test_an_object_names_a_noun(tmp_path: Path):
+    (tmp_path / "objects.toml").write_text(
+        '[spoon]\nmaterial = "unobtainium"\ndoc = "d"\nexample = "silver spoon"\nsource = "s"\n', encoding="utf-8"
+    )
+    with pytest.raises(LexiconError, match="no noun named 'unobtainium'"):
+        load_lexicon([tmp_path])
+
+
+def test_every_object_and_rule_reading_is_a_note_never_a_warning(lexicon):
+    for key, entry in lexicon.all_of("objects").items():
+        result, _look = compiled(lexicon, entry.get("example"))
+        assert notes(result), key
