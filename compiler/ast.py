@@ -93,6 +93,24 @@ class Coat:
 
 
 @dataclass(frozen=True, init=False)
+class Feature:
+    """'with fine grey veins': what the surface shows besides a coat; its groups give degree and colour.
+
+    A second coat clause ('with a varnish and a wax') is kept here too, its word a coat: one coat
+    per material, the analysis says the second is ignored."""
+
+    groups: tuple[Group, ...]
+    word: Word
+    span: Span
+
+    def __init__(self, groups: tuple[Group, ...], word: Word, span: Span) -> None:
+        fields = self.__dict__
+        fields["groups"] = groups
+        fields["word"] = word
+        fields["span"] = span
+
+
+@dataclass(frozen=True, init=False)
 class Material:
     """A material phrase: optional 'name:', describing groups, the noun alternatives, an optional coat."""
 
@@ -103,6 +121,7 @@ class Material:
     span: Span
     text: str
     refinements: tuple[RefineItem, ...] = ()  # an inline comparative: 'shinier' in 'shinier aluminum'
+    features: tuple[Feature, ...] = ()  # 'with' clauses that are not the coat: 'with grey veins'
 
     def __init__(
         self,
@@ -113,6 +132,7 @@ class Material:
         span: Span,
         text: str,
         refinements: tuple[RefineItem, ...] = (),
+        features: tuple[Feature, ...] = (),
     ) -> None:
         fields = self.__dict__
         fields["name"] = name
@@ -122,6 +142,7 @@ class Material:
         fields["span"] = span
         fields["text"] = text
         fields["refinements"] = refinements
+        fields["features"] = features
 
 
 @dataclass(frozen=True, init=False)

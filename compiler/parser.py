@@ -112,9 +112,33 @@ def parse_line_shape(words: list[Tagged], shapes: ShapeCache) -> tuple[Shape, li
 
 def _read_shape(words: list[Tagged]) -> tuple[Shape, tuple[int, ...] | None]:
     tree, chosen = parse_tagged(words)
+    if _reads_as_refinement(tree) and _may_end_in_noun(words, chosen):
+        tree, chosen = _material_reading(words) or (tree, chosen)
     choice = tuple(_position(t.candidates, chosen[t.span.start]) for t in words)
     shape = Shape(tree, {t.span.start: i for i, t in enumerate(words)})
     return shape, (choice if any(choice) else None)
+
+
+def _reads_as_refinement(tree: Tree[Token]) -> bool:
+    last = tree.children[-1]
+    return isinstance(last, Tree) and last.data == "refinement"
+
+
+def _may_end_in_noun(words: list[Tagged], chosen: Chosen) -> bool:
+    last = words[-1]
+    return chosen[last.span.start].tag != "NOUN" and any(c.tag == "NOUN" for c in last.candidates)
+
+
+def _material_reading(words: list[Tagged]) -> tuple[Tree[Token], Chosen] | None:
+    """A line that reads as a refinement or as a material ending in its noun is the material:
+    'slightly duller copper' is copper, one step duller, not the copper colour made duller."""
+    last = words[-1]
+    nouns_first = sorted(last.candidates, key=lambda c: c.tag != "NOUN")
+    try:
+        tree, chosen = parse_tagged([*words[:-1], Tagged(last.text, last.span, tuple(nouns_first), last.unknown)])
+    except ParseFailure:
+        return None
+    return None if _reads_as_refinement(tree) else (tree, chosen)
 
 
 def _position(candidates: tuple[Candidate, ...], chosen: Candidate) -> int:

@@ -102,6 +102,11 @@ class CoatPlan(NamedTuple):
             groups.append(g.build(words, tagged))
         return ast.Coat(tuple(groups), words[self.coat], span_of(tagged, self.first, self.last))
 
+    def build_feature(self, words: Words, tagged: Sequence[Tagged]) -> ast.Feature:
+        """A feature clause ('with grey veins'), or a second coat clause, which the analysis reports."""
+        groups = tuple([g.build(words, tagged) for g in self.groups])
+        return ast.Feature(groups, words[self.coat], span_of(tagged, self.first, self.last))
+
 
 class RefineItemPlan(NamedTuple):
     word: int
@@ -126,6 +131,7 @@ class MaterialPlan(NamedTuple):
     first: int
     last: int
     refinements: tuple[RefineItemPlan, ...] = ()  # an inline comparative before the material
+    features: tuple[CoatPlan, ...] = ()  # 'with' clauses besides the (first) coat clause
 
     def build(self, words: Words, tagged: Sequence[Tagged], text: str) -> ast.Material:
         a, last = tagged[self.first].span, self.last  # the span: a word's own, or first to last word
@@ -135,6 +141,9 @@ class MaterialPlan(NamedTuple):
         refinements: tuple[ast.RefineItem, ...] = ()
         if self.refinements:
             refinements = tuple([r.build(words, tagged) for r in self.refinements])
+        features: tuple[ast.Feature, ...] = ()
+        if self.features:
+            features = tuple([f.build_feature(words, tagged) for f in self.features])
         return ast.Material(
             None if self.name is None else words[self.name],
             tuple(groups),
@@ -143,6 +152,7 @@ class MaterialPlan(NamedTuple):
             a if last == self.first else Span(a.start, tagged[last].span.end, a.line, a.col),
             text,
             refinements,
+            features,
         )
 
 
@@ -249,7 +259,8 @@ class _Reader:
     def material(self, tree: Tree[Token], name: int | None) -> MaterialPlan:
         groups: tuple[GroupPlan, ...] = ()
         nouns = NONE
-        coat = None
+        coat: CoatPlan | None = None
+        features: tuple[CoatPlan, ...] = ()
         refinements: tuple[RefineItemPlan, ...] = ()
         for child in tree.children:
             if isinstance(child, Token):
@@ -258,11 +269,28 @@ class _Reader:
                 groups = self.groups(child)
             elif child.data == "nouns":
                 nouns = self.alternatives(child)
-            elif child.data == "coat":
-                coat = self.coat(child)
+            elif child.data == "clauses":
+                coat, features = self.clauses(child)
             elif child.data == "refine_item":
                 refinements = (self.refine_item(child),)
-        return MaterialPlan(name, groups, nouns, coat, *self.edges(tree), refinements)
+        return MaterialPlan(name, groups, nouns, coat, *self.edges(tree), refinements, features)
+
+    def clauses(self, tree: Tree[Token]) -> tuple[CoatPlan | None, tuple[CoatPlan, ...]]:
+        """The first coat clause is the coat; features and any further coat clause are features."""
+        coat, features = None, []
+        with_at = None  # a clause's span starts at its 'with'
+        for child in tree.children:
+            if isinstance(child, Token):
+                with_at = self.index[child.start_pos or 0] if child.type == "WITH" else None
+                continue
+            plan = self.coat(child)
+            if with_at is not None:
+                plan = plan._replace(first=with_at)
+            if child.data == "coat" and coat is None:
+                coat = plan
+            else:
+                features.append(plan)
+        return coat, tuple(features)
 
     def groups(self, tree: Tree[Token]) -> tuple[GroupPlan, ...]:
         return tuple([self.group(c) for c in tree.children if isinstance(c, Tree) and c.data in GROUP_RULES])
@@ -293,9 +321,9 @@ class _Reader:
         for child in tree.children:
             if isinstance(child, Tree):
                 groups = self.groups(child)
-            elif child.type == "COAT":
+            elif child.type in ("COAT", "FEATURE"):
                 coat_word = self.word(child)
-        assert coat_word is not None, "the grammar's coat rule ends with a COAT word"
+        assert coat_word is not None, "the grammar's clause rules end with a COAT or FEATURE word"
         return CoatPlan(groups, coat_word, *self.edges(tree))
 
     def refinement(self, tree: Tree[Token], name: int | None) -> RefinementPlan:

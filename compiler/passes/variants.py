@@ -108,7 +108,9 @@ def _select(material: ast.Material, combo: tuple[Choice, ...]) -> ast.Material:
     if coat:
         coat = ast.Coat(tuple([picks.group(g) for g in coat.groups]), coat.coat, coat.span)
     nouns = picks.words(material.nouns)
-    return ast.Material(material.name, groups, nouns, coat, material.span, material.text, material.refinements)
+    return ast.Material(
+        material.name, groups, nouns, coat, material.span, material.text, material.refinements, material.features
+    )
 
 
 def _choice_text(choice: Choice) -> str:

@@ -110,3 +110,22 @@ def test_shape_cache_keeps_adverbs_apart(stdlib):
     assert [a.text for a in first.items[0].adverbs] == ["slightly"]
     assert [a.text for a in second.items[0].adverbs] == ["heavily"]
     assert second.items[0].word.text == "rougher"
+
+
+def test_a_line_that_ends_in_a_noun_reads_as_a_material(stdlib):
+    """'copper' is a colour and a noun: before a noun reading, the refinement reading loses."""
+    item = parse("a bit duller silver", stdlib)
+    assert isinstance(item, ast.Material)
+    assert [n.key for n in item.nouns] == ["silver"]
+    assert [r.word.text for r in item.refinements] == ["duller"]
+
+
+def test_a_refinement_of_a_colour_stays_a_refinement(stdlib):
+    item = parse("darker navy", stdlib)
+    assert isinstance(item, ast.Refinement)
+
+
+def test_the_coat_clause_span_starts_at_with(stdlib):
+    item = parse("walnut with a satin lacquer", stdlib)
+    assert item.coat is not None
+    assert item.text[item.coat.span.start : item.coat.span.end] == "with a satin lacquer"
