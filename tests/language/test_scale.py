@@ -86,7 +86,7 @@ STREAMED = "\n".join(
     [
         "darker",  # W104: no material above
         "名前 ünïcødé 🔥 Ω: red plastic",  # a label
-        "m1: very brushed steel",  # W107
+        "m1: polished rough steel",  # W101 (an intensifier no longer clamps: issue #14)
         "m2: tinted cast iron",  # W102
         "red or blue or green glass",
         "glossier",
@@ -113,7 +113,7 @@ def test_the_streamed_ir_file_and_stdout_are_the_whole_document_byte_for_byte(tm
     r = cnlmc("compile", str(source), "-o", str(out))
     assert r.returncode == 0, r.stderr
     assert out.read_bytes() == whole
-    assert "W104" in r.stderr and "W107" in r.stderr and "W102" in r.stderr
+    assert "W104" in r.stderr and "W101" in r.stderr and "W102" in r.stderr
     r = cnlmc("compile", str(source), stdin=b"")
     assert r.returncode == 0 and r.stdout == whole
     folder = tmp_path / "folder"
@@ -186,7 +186,7 @@ def test_standard_output_that_cannot_be_written_is_a_clear_usage_error(tmp_path)
 TRICKY_LINES = (
     "darker",  # W104 when it comes first; else it refines the material above, maybe across a chunk's start
     "rougher",
-    "m1: very brushed steel",  # W107, and a name used again below
+    "m1: polished rough steel",  # W101, and a name used again below
     "m2: tinted cast iron",  # W102
     "red or blue or green glass",  # variants: their group is the name, numbered over the whole document
     "red or red plastic",
