@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any, TextIO
 
 from cnlmc.api import Session
+from cnlmc.changes import material_changes
 from cnlmc.diagnostics import did_you_mean, render
 from cnlmc.material import Material
 
@@ -150,20 +151,8 @@ def changes_of(before: Material, after: Material) -> list[str]:
 
 
 def changes(before: dict, after: dict) -> list[str]:
-    """'  name  old -> new' for every parameter that differs."""
-    rows = []
-    old, new = before["params"], after["params"]
-    for key in dict.fromkeys(list(old) + list(new)):
-        if _fmt(old.get(key)) != _fmt(new.get(key)):
-            rows.append(f"  {key:18s} {_fmt(old.get(key))} -> {_fmt(new.get(key))}")
-    if before["model"] != after["model"]:
-        rows.append(f"  {'model':18s} {_model(before)} -> {_model(after)}")
-    return rows
-
-
-def _model(material: dict) -> str:
-    m = material["model"]
-    return ", ".join(str(v) if not isinstance(v, bool) else k for k, v in m.items() if v)
+    """'  name  old -> new' for every parameter, coat and map parameter that differs (cnlmc.changes)."""
+    return material_changes(before, after)
 
 
 def _fmt(value) -> str:

@@ -86,10 +86,10 @@ def test_cli_interactive_with_piped_input(renderer, tmp_path):
     material.write_text("white varnished oak\n")
     out = tmp_path / "p.png"
     proc = run_cnlmc(
-        "preview", str(material), "-o", str(out), "--size", "64", "--interactive", stdin="darker\nwarmer\n"
+        "preview", str(material), "-o", str(out), "--size", "64", "--interactive", stdin="darker\nlightr\n"
     )
     assert proc.returncode == 0, proc.stderr
-    assert "base_color" in proc.stdout and "did you mean" in proc.stdout  # 'warmer' is no refinement word
+    assert "base_color" in proc.stdout and "did you mean" in proc.stdout  # 'lightr' is no word: did you mean 'lighter'
     assert cv2.imread(str(out)) is not None
     assert "Traceback" not in proc.stderr
 
