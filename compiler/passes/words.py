@@ -1,7 +1,9 @@
-"""Apply the describing groups in phrase order: adverb weights, adjectives, colours.
+"""Apply the describing groups in their canonical order: adverb weights, adjectives, colours.
 
 "lightly brushed, blue anodized aluminum": brushed at weight 0.5 (roughness * 1.1, anisotropic,
 a normal map), then anodized (roughness = 0.3) whose colour 'blue' goes to the base colour.
+The order is by stage (compiler/passes/order.py), not by the words' order; weights compose and
+formulas saturate inside each parameter's range (compiler/degrees.py).
 """
 
 from __future__ import annotations
@@ -9,27 +11,34 @@ from __future__ import annotations
 from typing import Any
 
 from .. import ast
+from ..degrees import compose_weights, weighted_formula, weighted_map_value
 from ..diagnostics import warning
 from ..formulas import apply_op, describe
+from ..graphs import graph_params
 from ..lexicon import Entry, LexiconCaches
+from ..params import COAT_PARAMS, PARAMS, ranges
 from ..state import Context, MaterialState
 from .base import _map_ref, noun_of
 from .colours import colour_text, resolve_colour
+from .order import canonical_groups, stage_of
 
 Effect = dict[str, Any]  # one formula of a lexicon entry: {"param": ..., "op": ..., "value": ...}
 Holder = dict[str, Any]  # where a value goes: the material's parameters or its coat's
 Words = tuple[ast.Word, ...]
 
+PARAM_BOUNDS = ranges(PARAMS)  # param -> (low, high): where a weighted formula saturates
+COAT_BOUNDS = ranges(COAT_PARAMS)
+DIFFUSE_SIGMA = "diffuse_roughness"  # the Oren-Nayar sigma that roughness words also move
+DEGREE_PARAMS = ("roughness", "anisotropy", DIFFUSE_SIGMA)  # scales whose set levels intensify ("very glossy")
+
 
 def group_weight(group: ast.Group, ctx: Context) -> float:
-    weight = 1.0
-    for adverb in group.adverbs:
-        weight *= ctx.lexicon.require("adverbs", adverb.key).get("weight")
-    return weight
+    """The adverbs' weight: "very lightly" = lightly ** very (compiler/degrees.py)."""
+    return compose_weights([ctx.lexicon.require("adverbs", a.key).get("weight") for a in group.adverbs])
 
 
 def apply_groups(state: MaterialState, ctx: Context) -> MaterialState:
-    for group in state.selection.groups:
+    for group in canonical_groups(state.selection.groups, ctx.lexicon):
         apply_group(state, ctx, group, target="base")
     return state
 
@@ -79,8 +88,8 @@ def _warn_dangling(state: MaterialState, group: ast.Group) -> None:
 def apply_colour(state: MaterialState, ctx: Context, c: ast.Colour, adverbs: Words, target: str, weight: float) -> None:
     param, holder = _colour_slot(state, target)
     current = holder.get(param)
-    rgb = resolve_colour(c, ctx, start=current)
-    if weight != 1.0 and current is not None:
+    rgb = resolve_colour(c, ctx, start=current, weight=weight)
+    if weight < 1.0 and current is not None and not c.shades:  # "slightly red": part of the way
         rgb = apply_op("set", current, rgb, weight)
     _warn_second_colour(state, param if target == "base" else "coat.color", c)
     holder[param] = rgb
@@ -164,16 +173,25 @@ def _applies(state: MaterialState, adjective: Entry, word: ast.Word) -> bool:
 
 def _check_opposition(state: MaterialState, ctx: Context, adjective: Entry, word: ast.Word) -> None:
     for earlier_key, earlier in state.applied:
-        earlier_opposes = ctx.lexicon.require("adjectives", earlier_key).get("opposes", [])
-        if earlier_key in adjective.get("opposes", []) or adjective.key in earlier_opposes:
+        first = ctx.lexicon.require("adjectives", earlier_key)
+        if earlier_key in adjective.get("opposes", []) or adjective.key in first.get("opposes", []):
             state.diagnostics.append(
                 warning(
                     word.span,
                     "W101",
-                    f"'{word.text}' contradicts '{earlier.text}'",
-                    (f"both are applied in order, so '{word.text}' wins",),
+                    f"'{word.text}' contradicts '{earlier.text}': '{word.text}' wins",
+                    (_why_it_wins(stage_of(first), stage_of(adjective), earlier.text, word.text),),
                 )
             )
+
+
+def _why_it_wins(first_stage: str, last_stage: str, first: str, last: str) -> str:
+    if first_stage == last_stage:
+        return f"both apply and the later word of the two, '{last}', applies last; drop the one you do not mean"
+    return (
+        f"both apply: '{first}' is a {first_stage} word and applies before '{last}', a {last_stage} word "
+        "(docs/language.md: Degrees and order); drop the one you do not mean"
+    )
 
 
 def _apply_effect(
@@ -184,10 +202,27 @@ def _apply_effect(
         _switch_kind(state, effect["value"], rule, words)
         return
     current = holder.get(param, 0.0 if param != "base_color" else [1.0, 1.0, 1.0])
-    value = apply_op(effect["op"], current, effect.get("value"), weight, effect.get("amount"))
+    bounds = (PARAM_BOUNDS if holder is state.params else COAT_BOUNDS).get(param)
+    degree = param in DEGREE_PARAMS
+    value = weighted_formula(effect["op"], current, effect.get("value"), weight, effect.get("amount"), bounds, degree)
     holder[param] = value
     name = param if holder is state.params else f"coat.{param}"
-    state.note(name, value, _effect_rule(ctx.lexicon.caches, place, effect, weight), words)
+    rule = _effect_rule(ctx.lexicon.caches, place, effect, weight)
+    state.note(name, value, rule, words)
+    if param == "roughness" and holder is state.params:
+        _move_sigma(state, effect, weight, rule, words)
+
+
+def _move_sigma(state: MaterialState, effect: Effect, weight: float, rule: str, words: Words) -> None:
+    """A roughness word also acts on the Oren-Nayar sigma of a surface that has one (rough concrete):
+    the same formula, its numbers read as radians of facet-slope spread, saturating in sigma's range."""
+    sigma = state.params.get(DIFFUSE_SIGMA, 0.0)
+    if not sigma > 0:
+        return
+    bounds = PARAM_BOUNDS[DIFFUSE_SIGMA]
+    value = weighted_formula(effect["op"], sigma, effect.get("value"), weight, effect.get("amount"), bounds, True)
+    state.params[DIFFUSE_SIGMA] = value
+    state.note(DIFFUSE_SIGMA, value, f"{rule}, on the Oren-Nayar sigma too", words)
 
 
 EffectPlace = tuple[str, str, int]  # (rule, where the effect list is in the entry, index in it)
@@ -237,8 +272,20 @@ def copy_optics(state: MaterialState, ctx: Context, noun_key: str, rule: str, wo
 
 def _apply_maps(state: MaterialState, ctx: Context, adjective: Entry, weight: float, words: Words) -> None:
     for role, ref in adjective.get("maps", {}).items():
-        state.maps[role] = _map_ref(ref, ctx, weight)
+        state.maps[role] = _map_ref(weighted_map(ref, weight), ctx)
         state.note(f"maps.{role}", ref["graph"], f"adjectives.{adjective.key}.maps (weight {weight:g})", words)
+
+
+def weighted_map(ref: dict[str, Any], weight: float) -> dict[str, Any]:
+    """A map reference with its weighted parameters scaled by the adverb weight, inside their ranges."""
+    if weight == 1.0 or not ref.get("weighted"):
+        return ref
+    bounds = graph_params(ref["graph"])
+    params = dict(ref.get("params", {}))
+    for name in ref["weighted"]:
+        limits = bounds.get(name)
+        params[name] = weighted_map_value(params.get(name, 1.0), weight, limits[:2] if limits else None)
+    return {**ref, "params": params, "weighted": []}
 
 
 def _apply_adjective_coat(state: MaterialState, ctx: Context, adjective: Entry, words: Words) -> None:

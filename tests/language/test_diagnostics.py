@@ -69,7 +69,7 @@ def test_no_noun(compile_text):
 def test_contradiction_warns(compile_text):
     r = compile_text("polished rough steel")
     assert r.ok
-    assert diags(r) == [("W101", 1, 10, "'rough' contradicts 'polished'")]
+    assert diags(r) == [("W101", 1, 10, "'rough' contradicts 'polished': 'rough' wins")]
 
 
 def test_word_that_does_not_apply_warns_and_is_ignored(compile_text):
@@ -95,11 +95,13 @@ def test_refinement_of_something_absent(compile_text):
     assert diags(r) == [("W106", 2, 1, "'grain' has nothing to act on: steel has no procedural map")]
 
 
-def test_clamped_value_warns_with_its_words(compile_text):
+def test_an_intensified_word_saturates_instead_of_clamping(compile_text):
+    # issue #14: "intensely rough stone" once gave roughness 1.6, clamped with a W107; degrees now
+    # saturate inside the range (W107 with its words stays for values that do leave it: test_finite.py)
     r = compile_text("intensely rough stone")
-    d = [x for x in r.diagnostics if x.code == "W107"][0]
-    assert d.message == "roughness 1.6 is outside [0.0, 1.0] and was clamped to 1"
-    assert d.hints == ("set by: stone intensely rough",)
+    assert [x.code for x in r.diagnostics] == []
+    steps = r.materials[0]["provenance"]["roughness"]
+    assert steps[-1]["words"] == ["intensely", "rough"] and 0.99 < steps[-1]["value"] < 1.0
 
 
 def test_second_colour_warns(compile_text):

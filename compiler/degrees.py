@@ -1,0 +1,149 @@
+"""Degrees: how adverb weights compose and how a weighted formula stays inside its parameter's range.
+
+The paper's formulas (compiler/formulas.py; paper §3.3, §4.2) with an adverb weight w are kept
+exactly where they make sense: for 0 <= w <= 1 the result lies between the current value x and the
+adjective's full effect y1 (lightly brushed: m * 1.1, halfway to brushed's m * 1.2). Everything
+else happens on a saturating scale, so that no ordinary phrase leaves a parameter's range:
+
+- the full effect y1 of a `mul` or `add` that moves a value toward a bound is taken on the knee
+  scale: exact while the result stays KNEE (10 %) of the range away from that bound, beyond it the
+  remaining distance shrinks exponentially (continuous, with a continuous slope, never reaching it);
+- an intensifier (w > 1) works on the logit of the value's position in its range (L below): for a
+  relative formula (mul, add) it extrapolates the step x -> y1, L(y) = L(x) + w (L(y1) - L(x)), so
+  "extremely shiny" is shinier than "very shiny", which is shinier than "shiny", and none reaches
+  0; for an absolute level (set v on a degree parameter such as roughness) it continues the step
+  from an anchor through the level, L(y) = L(a) + w (L(v) - L(a)), where the anchor a is the current
+  value when it lies between the range's middle and the level, else the middle: "very glossy" is
+  glossier than "glossy" on every material, chrome included; other set values (an IOR, a colour)
+  are simply set;
+- adverbs compose by exponents (docs/language.md "Degrees and order"): an adverb before another
+  adverb raises that adverb's weight to its own weight, so "very lightly" = 0.5 ** 1.5 (lighter
+  than "lightly") and "very heavily" = 2 ** 1.5 (heavier than "heavily").
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import Any
+
+from .formulas import apply_op
+
+Bounds = tuple[float, float]
+
+KNEE = 0.1  # the share of a range next to a bound where a step toward it saturates
+EDGE = 1e-3  # logit positions are taken at least this share of the range inside a bound
+
+
+def compose_weights(weights: Sequence[float]) -> float:
+    """The weight of a chain of adverbs, the last one nearest the adjective: w_n ** (w_1 * ... * w_n-1)."""
+    if not weights:
+        return 1.0
+    exponent = 1.0
+    for w in weights[:-1]:
+        exponent *= w
+    return float(weights[-1] ** exponent)
+
+
+def weighted_formula(
+    op: str, x: Any, value: Any, weight: float, amount: float | None, bounds: Bounds | None, degree: bool = False
+) -> Any:
+    """One lexicon formula at an adverb weight, kept inside `bounds` (per channel for colours).
+    `degree`: the parameter is a degree scale (roughness, anisotropy), whose `set` levels intensify."""
+    if op == "set" and (isinstance(value, str) or x is None):
+        return value
+    if op == "blend" or bounds is None:  # blend never leaves [x, value]; an unbounded value keeps the paper's rule
+        return apply_op(op, x, value, weight, amount)
+    if op == "set" and weight > 1.0:
+        return intensified_level(x, value, weight, bounds) if degree and not isinstance(value, list) else value
+    if isinstance(x, list):
+        values = value if isinstance(value, list) else [value] * len(x)
+        return [_weighted(op, a, b, weight, bounds) for a, b in zip(x, values)]
+    return _weighted(op, x, value, weight, bounds)
+
+
+def _weighted(op: str, x: float, value: float, weight: float, bounds: Bounds) -> float:
+    full = full_effect(op, x, value, bounds)
+    return toward(x, full, weight, bounds)
+
+
+def intensified_level(x: float, level: float, weight: float, bounds: Bounds) -> float:
+    """An absolute level intensified: the step from the anchor (x between the middle and the level,
+    else the middle) through the level, continued on the logit scale."""
+    lo, hi = bounds
+    middle = (lo + hi) / 2
+    anchor = x if min(middle, level) <= x <= max(middle, level) else middle
+    return toward(anchor, level, weight, bounds)
+
+
+def full_effect(op: str, x: float, value: float, bounds: Bounds) -> float:
+    """The formula at weight 1, saturating near the bound it moves toward."""
+    if op == "set":
+        return float(value)
+    linear = float(apply_op(op, x, value))
+    if op == "mul" and bounds[0] == 0.0 and 0.0 <= value <= 1.0:
+        return linear  # scaling toward zero never crosses it: the paper's number
+    return knee_step(x, linear - x, bounds)
+
+
+def knee_step(x: float, step: float, bounds: Bounds) -> float:
+    """x moved by `step`, exact until KNEE of the range before the bound it moves toward, then saturating."""
+    if step == 0.0:
+        return x
+    lo, hi = bounds
+    width = KNEE * (hi - lo)
+    if step > 0:
+        return hi - _knee_down(hi - x, step, width)
+    return lo + _knee_down(x - lo, -step, width)
+
+
+def _knee_down(distance: float, step: float, width: float) -> float:
+    """The remaining distance to a bound after a step toward it (distances > 0 on the knee scale)."""
+    stretched = distance if distance >= width else width + width * math.log(max(distance, 1e-300) / width)
+    left = stretched - step
+    return left if left >= width else width * math.exp((left - width) / width)
+
+
+def toward(x: float, full: float, weight: float, bounds: Bounds) -> float:
+    """x moved toward the full effect by `weight`: the paper's linear share for w <= 1, logit beyond."""
+    if weight <= 1.0 or full == x:
+        return x + weight * (full - x)
+    lo, hi = bounds
+    span = hi - lo
+    start, end = _logit((x - lo) / span), _logit((full - lo) / span)
+    return lo + span * _sigmoid(start + weight * (end - start))
+
+
+def _logit(t: float) -> float:
+    t = min(max(t, EDGE), 1.0 - EDGE)
+    return math.log(t / (1.0 - t))
+
+
+def _sigmoid(u: float) -> float:
+    if u >= 0:
+        return 1.0 / (1.0 + math.exp(-u))
+    e = math.exp(u)
+    return e / (1.0 + e)
+
+
+def weighted_map_value(base: float, weight: float, bounds: Bounds | None) -> float:
+    """A map parameter scaled by an adverb weight (lightly: half the strokes), saturating in its range."""
+    scaled = base * weight
+    if bounds is None or weight <= 1.0:
+        return scaled
+    return knee_step(base, scaled - base, bounds)
+
+
+def weighted_shade(op: dict[str, Any], weight: float) -> dict[str, Any]:
+    """A colour operation applied `weight` times: a share a of the way becomes 1 - (1 - a) ** w, a
+    factor s becomes s ** w, so "very dark" is darker than "dark" and never passes black."""
+    if weight == 1.0:
+        return op
+    out = dict(op)
+    if "amount" in out and 0.0 <= out["amount"] <= 1.0:
+        out["amount"] = 1.0 - (1.0 - out["amount"]) ** weight
+    if "scale" in out and out["scale"] > 0:
+        out["scale"] = out["scale"] ** weight
+    if out["op"] == "mul" and isinstance(out.get("value"), (int, float)) and out["value"] > 0:
+        out["value"] = out["value"] ** weight
+    return out
