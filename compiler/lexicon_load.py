@@ -208,7 +208,7 @@ class Builder:
             from .word_formation_rules import check_rule_names
 
             for checker, rules in zip(self.word_formation_checkers, self.word_formation, strict=True):
-                check_rule_names(checker, rules, self.raw["adverbs"])
+                check_rule_names(checker, rules, self.raw)
 
     def build(self) -> Lexicon:
         entries = {c: {k: _finish(c, k, e) for k, e in by.items()} for c, by in self.raw.items()}

@@ -9,11 +9,13 @@ the rules name exist. The rules are used by cnlmc.word_formation.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from importlib import resources
+from importlib.resources.abc import Traversable
 from typing import Any
 
 from .lexicon_schema import Checker, did_you_mean
 
-__all__ = ["RULE_TAGS", "check_rule_names", "check_rules", "empty_rules"]
+__all__ = ["RULE_TAGS", "check_rule_names", "check_rules", "empty_rules", "wordnet_file"]
 
 #: The tags a suffix rule may keep from its stem's reading (the grammar's open word classes).
 RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN")
@@ -32,6 +34,7 @@ def empty_rules() -> dict[str, Any]:
         "prefix": [],
         "suffix": [],
         "compounds": {"join": False, "split": False, "linkers": [], "min_part": 3, "head_last": False, "heads": []},
+        "wordnet": {"file": "", "noun_roots": {}, "adjectives": []},
     }
 
 
@@ -50,6 +53,7 @@ def check_rules(c: Checker, data: dict[str, Any]) -> dict[str, Any]:
     rules["prefix"] = [_prefix(c, raw, i) for i, raw in enumerate(c.array(data.get("prefix", []), ("prefix",)))]
     rules["suffix"] = [_suffix(c, raw, i) for i, raw in enumerate(c.array(data.get("suffix", []), ("suffix",)))]
     rules["compounds"] = _compounds(c, data.get("compounds", {}))
+    rules["wordnet"] = _wordnet(c, data.get("wordnet", {}))
     return rules
 
 
@@ -97,8 +101,36 @@ def _compounds(c: Checker, raw: object) -> dict[str, Any]:
     return out
 
 
-def check_rule_names(c: Checker, rules: Mapping[str, Any], adverbs: Mapping[str, Any]) -> None:
-    """Every adverb a rule reads as must be an adverb of the merged lexicon."""
+def _wordnet(c: Checker, raw: object) -> dict[str, Any]:
+    """[wordnet] file (in stdlib/data), noun_roots (WordNet root -> noun), adjectives (whose synonyms count)."""
+    table = c.table(raw, ("wordnet",))
+    c.known_keys(table, ("file", "noun_roots", "adjectives"), ("wordnet",))
+    name = c.string(table.get("file", ""), ("wordnet", "file"))
+    if name and not wordnet_file(name).is_file():
+        c.fail(("wordnet", "file"), f"no file '{name}' in stdlib/data (scripts/gen_wordnet_aliases.py writes one)")
+    roots = c.table(table.get("noun_roots", {}), ("wordnet", "noun_roots"))
+    return {
+        "file": name,
+        "noun_roots": {k: c.string(v, ("wordnet", "noun_roots", k), blank=False) for k, v in roots.items()},
+        "adjectives": _words(c, table.get("adjectives", []), ("wordnet", "adjectives")),
+    }
+
+
+def wordnet_file(name: str) -> Traversable:
+    """A WordNet alias file of the package's stdlib/data folder."""
+    return resources.files("cnlmc.stdlib").joinpath("data").joinpath(name)
+
+
+def check_rule_names(c: Checker, rules: Mapping[str, Any], raw: Mapping[str, Mapping[str, Any]]) -> None:
+    """Every adverb, noun and adjective a rule names must be in the merged lexicon (raw entries by category)."""
+    adverbs = raw["adverbs"]
+    for root, noun in rules["wordnet"]["noun_roots"].items():
+        if noun not in raw["nouns"]:
+            c.fail(("wordnet", "noun_roots", root), f"no noun named '{noun}'{did_you_mean(noun, raw['nouns'])}")
+    adjective_forms = {f.lower() for k, e in raw["adjectives"].items() for f in (k, *e.data.get("aliases", ()))}
+    for i, word in enumerate(rules["wordnet"]["adjectives"]):
+        if word not in adjective_forms:
+            c.fail(("wordnet", "adjectives", i), f"no adjective named '{word}'")
     named: list[tuple[tuple[str | int, ...], str]] = [
         (("prefix", i, "adverb"), p["adverb"]) for i, p in enumerate(rules["prefix"])
     ]
