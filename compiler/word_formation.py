@@ -8,6 +8,7 @@ cnlmc.word_formation_rules; the overlay's rules first). A word is tried, in orde
    `opposite`, else "without X" (no effect);
 3. a degree prefix and a word (semi-matte = slightly matte);
 4. a derivational suffix (wooden -> wood, mirror-like -> mirror, gold-coloured -> gold);
+   a WordNet noun under a lexicon noun, or a WordNet synonym of an adjective (cnlmc.wordnet);
 5. its known parts (matte-black = matte black; glued parts with linkers: eichen|dielen);
 6. its last part alone when that is an adjective and the rest unknown (hand-hammered).
 
@@ -25,6 +26,7 @@ from typing import Any
 
 from .lexicon import Lexicon
 from .tagged import Candidate
+from .wordnet import WordNet
 
 __all__ = ["NOTE_CODE", "Part", "Reading", "Rules", "WordFormation"]
 
@@ -79,6 +81,7 @@ class Rules:
         self.linkers = ("", *dict.fromkeys(k for c in compounds for k in c["linkers"]))
         self.min_part = min((c["min_part"] for c in compounds), default=3)
         self.heads = frozenset(h for c in compounds for h in c["heads"])
+        self.wordnet = _merged_wordnet([layer["wordnet"] for layer in layers])
 
 
 class WordFormation:
@@ -89,6 +92,7 @@ class WordFormation:
         self.rules = Rules(lexicon.word_formation)
         self.lookup = lookup
         self.memo: dict[str, Reading | None] = {}
+        self.wordnet_readings: WordNet | None = None  # read on first use
 
     @classmethod
     def of(cls, lexicon: Lexicon, lookup: Lookup) -> WordFormation:
@@ -125,7 +129,8 @@ class WordFormation:
     # ------------------------------------------------------------ one word
 
     def _read(self, word: str) -> Reading | None:
-        for rule in (self._joined, self._negated, self._prefixed, self._derived, self._split, self._head):
+        rules = (self._joined, self._negated, self._prefixed, self._derived, self._wordnet, self._split, self._head)
+        for rule in rules:
             found = rule(word)
             if found is not None:
                 return found
@@ -140,6 +145,18 @@ class WordFormation:
         joined = word.replace("-", "")
         found = self._known(joined)
         return _whole(found, f"read '{word}' as '{joined}'") if found else None
+
+    def _wordnet(self, word: str) -> Reading | None:
+        """A WordNet noun under a lexicon noun ("alder": wood), or a synonym of an adjective."""
+        wordnet = self.wordnet()
+        found = wordnet.noun(word) or wordnet.adjective(word)
+        return None if found is None else _whole((found[0],), found[1])
+
+    def wordnet(self) -> WordNet:
+        """The WordNet readings of these rules, read on first use."""
+        if self.wordnet_readings is None:
+            self.wordnet_readings = WordNet(self.rules.wordnet, self.lookup)
+        return self.wordnet_readings
 
     def _negated(self, word: str) -> Reading | None:
         for prefix in self.rules.negation_prefixes:
@@ -292,6 +309,18 @@ class WordFormation:
             return self.read(first)
         parts = (Part(0, 0, 0, None, self._adverb(adverb)), Part(1, 1, 0, None, found))
         return Reading(parts, 2, f"read '{first} {second}' as '{adverb} {second}' ({first}: {adverb})")
+
+
+def _merged_wordnet(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:
+    """The [wordnet] rules of all layers: the first file named, roots and adjectives joined."""
+    roots: dict[str, str] = {}
+    for layer in reversed(layers):  # the most specific layer's root wins
+        roots.update(layer["noun_roots"])
+    return {
+        "file": next((layer["file"] for layer in layers if layer["file"]), ""),
+        "noun_roots": roots,
+        "adjectives": list(dict.fromkeys(a for layer in layers for a in layer["adjectives"])),
+    }
 
 
 def _whole(found: tuple[Candidate, ...], note: str) -> Reading:

@@ -124,6 +124,29 @@ def test_a_head_word_at_the_end_is_left_to_the_coat_clause(lexicon):
     assert not notes(result)
 
 
+# ---------------------------------------------------------------- WordNet (English only)
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning", "note_has"),
+    [
+        ("burnished copper", "polished copper", "synonym in WordNet"),
+        ("glistening steel", "shiny steel", "synonym in WordNet"),
+        ("rugged slate", "rough slate", "synonym in WordNet"),
+        ("gabbro", "stone", "a kind of rock (WordNet"),
+        ("polished albite", "polished stone", "a kind of mineral (WordNet"),
+        ("aertex", "fabric", "a kind of fabric (WordNet"),
+    ],
+)
+def test_wordnet_reads_unknown_nouns_and_adjectives(lexicon, text, meaning, note_has):
+    assert_reads_as(lexicon, text, meaning, note_has)
+
+
+def test_wordnet_adjectives_are_only_the_visual_ones(lexicon):
+    result = compile_source("boring steel", "wf.cnl", lexicon)  # 'dull' is 'boring' first in WordNet: not listed
+    assert [d.code for d in result.diagnostics if d.is_error] == ["E001"]
+
+
 # ---------------------------------------------------------------- objects and classes
 
 
@@ -228,6 +251,9 @@ def test_a_user_lexicon_brings_its_own_rules(tmp_path: Path):
         ('[[prefix]]\nforms = ["x"]\nadverb = "hugely"\ndoc = "d"\n', "no adverb named 'hugely'"),
         ('[[suffix]]\nforms = ["ish"]\nreads_as = ["VERB"]\ndoc = "d"\n', "VERB"),
         ("[compounds]\nsplit = 1\n", "expected true or false"),
+        ('[wordnet]\nadjectives = ["sparkly-ish"]\n', "no adjective named 'sparkly-ish'"),
+        ('[wordnet]\nnoun_roots = { rock = "rocc" }\n', "no noun named 'rocc'"),
+        ('[wordnet]\nfile = "nope.toml"\n', "no file 'nope.toml'"),
     ],
 )
 def test_bad_rules_name_file_line_and_column(tmp_path: Path, text, message):
