@@ -182,3 +182,26 @@ def test_german_colours_do_not_replace_the_surveys_own_words(de):
         want = {e.key for e in english.lookup((word,)) if e.category == "colours"}
         got = {e.key for e in de.lookup((word,)) if e.category == "colours"}
         assert want and want == got, (word, want, got)
+
+
+# ---------------------------------------------------------------- refinement lines
+
+
+def german_and_english_sessions(de, german_first, english_first):
+    return Session(german_first, lexicon=de), Session(english_first, lexicon=de)
+
+
+@pytest.mark.parametrize(
+    "german,english",
+    [("weniger gesättigt", "less saturated"), ("etwas heller", "slightly lighter"), ("wärmer", "warmer")],
+)
+def test_a_german_refinement_line_is_the_english_one(de, german, english):
+    ours, theirs = german_and_english_sessions(de, "blauer Samt", "blue velvet")
+    assert ours.refine(german)["params"] == theirs.refine(english)["params"]
+
+
+def test_viel_is_a_bigger_step_than_etwas(de):
+    start = Session("roter Kunststoff", lexicon=de).material["params"]["base_color"]
+    much = Session("roter Kunststoff", lexicon=de).refine("viel dunkler")["params"]["base_color"]
+    little = Session("roter Kunststoff", lexicon=de).refine("etwas dunkler")["params"]["base_color"]
+    assert sum(much) < sum(little) < sum(start)
