@@ -1,23 +1,34 @@
 """Time, peak memory and output size of `cnlmc compile` on 1k / 10k / 100k-line files.
 
-Run: .venv/bin/python bench/scale_bench.py [--sizes 1000 10000 100000]
-Each size is a file of material phrases, one per line (about 35 bytes a line), drawn from 300
-distinct stdlib phrases (see phrase_pool), most of them named, some followed by a refinement line; compiled
-to IR in a fresh process (`python -m cnlmc compile FILE -o OUT`). Its wall and CPU time and its
-peak RSS come from that process's own rusage (os.wait4). Printed: per size, then the RSS per
-input line beyond the smallest size's (the goal is <= 2 KB) and time(largest)/time(previous)
-against the size ratio (linear: the same).
+Run: .venv/bin/python bench/scale_bench.py [--sizes 1000 10000 100000] [--kinds cycled distinct]
+     [--workers 1 2] [--phases 10000]
+Two kinds of file, each a material phrase a line (about 35-45 bytes), most of them named, some
+followed by a refinement line:
+- cycled: drawn from 300 distinct stdlib phrases (phrase_pool), so most lines repeat one;
+- distinct: every phrase different (distinct_phrases): adverb x adjective, colour x adjective x
+  noun combinations from the stdlib's own word lists, so nothing can be remembered per phrase.
+Each file is compiled to IR in a fresh process (`python -m cnlmc compile FILE -o OUT`) with
+CNLMC_WORKERS set to each --workers count; its wall and CPU time (user + sys, the workers'
+included) and its peak RSS come from that process's own rusage (os.wait4). Printed: per run, then
+the RSS per input line beyond the smallest size's (the goal is <= 2 KB) and time ratios against
+the size ratio (linear: the same). --phases N: the CPU time per line of each phase (parse,
+analysis, boundary check, IR build, check + JSON) in this process, and peer runs in this process
+of the previous code path against the current one (one process against two; the old JSON text
+function against json_text). The machine is shared: run it more than once and read the CPU times.
 """
 
 from __future__ import annotations
 
 import argparse
+import io
 import os
 import random
+import re
 import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -55,25 +66,68 @@ def phrase_pool(size: int = POOL_SIZE, seed: int = 13) -> list[str]:
     return pool
 
 
+def clean_lines(lines: list[str]) -> list[str]:
+    """The lines that compile, in one document, to a material with no diagnostic on their line."""
+    from cnlmc.api import compile_source, lexicon_for
+
+    result = compile_source("\n".join(lines), "<check>", lexicon_for(), keep_stages=False)
+    flagged = {d.span.line for d in result.diagnostics if d.span}
+    return [line for n, line in enumerate(lines, 1) if n not in flagged]
+
+
+def distinct_phrases(count: int, seed: int = 13) -> list[str]:
+    """`count` different phrases, none repeated: checked adjective-noun pairs and colours (each
+    compiles without a diagnostic; colours of one word or a plain compound) combined as
+    'COLOUR ADJECTIVE NOUN', 'ADVERB ADJECTIVE, COLOUR NOUN' and 'COLOUR NOUN'."""
+    from cnlmc.api import lexicon_for
+
+    lexicon = lexicon_for()
+    rng = random.Random(seed)
+    adjectives, nouns = sorted(lexicon.all_of("adjectives")), sorted(lexicon.all_of("nouns"))
+    adverbs = sorted(lexicon.all_of("adverbs"))
+    nouns = [noun for noun in nouns if " " not in noun]  # 'reddish gray card' would read as a colour 'reddish gray'
+    candidates = sorted({f"{rng.choice(adjectives)} {rng.choice(nouns)}" for _ in range(3000)})
+    pairs = [line.split(" ", 1) for line in clean_lines(candidates)]
+    plain = [c for c in sorted(lexicon.all_of("colours")) if re.fullmatch(r"[a-z]+( [a-z]+)?", c)]
+    colours = [line.rsplit(" ", 1)[0] for line in clean_lines([f"{c} plastic" for c in plain])]
+    forms: tuple[Callable[[str, str], str], ...] = (
+        lambda a, n: f"{rng.choice(colours)} {a} {n}",
+        lambda a, n: f"{rng.choice(adverbs)} {a}, {rng.choice(colours)} {n}",
+        lambda a, n: f"{rng.choice(colours)} {n}",
+    )
+    seen: set[str] = set()
+    out: list[str] = []
+    while len(out) < count:
+        adjective, noun = rng.choice(pairs)
+        phrase = rng.choice(forms)(adjective, noun)
+        if phrase not in seen:
+            seen.add(phrase)
+            out.append(phrase)
+    return out
+
+
 @dataclass
 class Run:
+    kind: str
+    workers: int
     lines: int
     input_bytes: int
     wall_s: float
     cpu_s: float
     peak_rss_kb: int
     output_bytes: int
+    warnings: int
     exit_code: int
 
 
-def write_source(path: Path, lines: int, pool: list[str], seed: int = 13) -> None:
-    """`lines` lines: phrases drawn from the pool, most named (`m12: ...`), a fifth unnamed (their
+def write_source(path: Path, lines: int, next_phrase: Callable[[], str], seed: int = 13) -> None:
+    """`lines` lines: phrases from `next_phrase`, most named (`m12: ...`), a fifth unnamed (their
     names come from the words, repeats numbered), and about one in seven followed by a refinement."""
     rng = random.Random(seed)
     with path.open("w", encoding="utf-8") as out:
         n = 0
         while n < lines:
-            phrase = rng.choice(pool)
+            phrase = next_phrase()
             out.write(f"m{n}: {phrase}\n" if rng.random() < 0.8 else f"{phrase}\n")
             n += 1
             if n < lines and rng.random() < 0.15:
@@ -81,53 +135,233 @@ def write_source(path: Path, lines: int, pool: list[str], seed: int = 13) -> Non
                 n += 1
 
 
-def compile_once(source: Path, output: Path) -> Run:
+def phrase_source(kind: str, lines: int, pool: list[str]) -> Callable[[], str]:
+    if kind == "distinct":
+        return iter(distinct_phrases(lines)).__next__
+    rng = random.Random(7)
+    return lambda: rng.choice(pool)
+
+
+def compile_once(kind: str, workers: int, source: Path, output: Path) -> Run:
     command = [sys.executable, "-m", "cnlmc", "compile", str(source), "-o", str(output), "--max-bytes", "1G"]
-    start = time.perf_counter()
-    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    _pid, status, usage = os.wait4(process.pid, 0)
-    wall = time.perf_counter() - start
-    process.returncode = os.waitstatus_to_exitcode(status)
+    env = {**os.environ, "CNLMC_WORKERS": str(workers)}
+    with tempfile.TemporaryFile() as errors:
+        start = time.perf_counter()
+        process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=errors, env=env)
+        _pid, status, usage = os.wait4(process.pid, 0)
+        wall = time.perf_counter() - start
+        errors.seek(0)
+        warnings = errors.read().count(b": warning[")
     lines = sum(1 for _ in source.open("rb"))
     return Run(
+        kind,
+        workers,
         lines,
         source.stat().st_size,
         wall,
-        usage.ru_utime + usage.ru_stime,
-        usage.ru_maxrss,  # KB on Linux
+        usage.ru_utime + usage.ru_stime,  # the workers' too: the CLI joins them
+        usage.ru_maxrss,  # KB on Linux: the largest of the process and its workers
         output.stat().st_size if output.exists() else 0,
-        process.returncode,
+        warnings,
+        os.waitstatus_to_exitcode(status),
     )
+
+
+def report(run: Run) -> None:
+    print(
+        f"{run.kind:>8} x{run.workers} {run.lines:>7} lines {run.input_bytes / 1e6:5.2f} MB: wall {run.wall_s:6.2f} s  "
+        f"cpu {run.cpu_s:6.2f} s ({run.cpu_s / run.lines * 1e6:4.0f} us/line)  peak RSS {run.peak_rss_kb / 1024:6.1f} MB  "
+        f"out {run.output_bytes / 1e6:6.1f} MB  warnings {run.warnings}  exit {run.exit_code}",
+        flush=True,
+    )
+
+
+def summarise(runs: list[Run]) -> None:
+    """RSS per added line and time ratios, per kind and worker count."""
+    for kind, workers in sorted({(r.kind, r.workers) for r in runs}):
+        series = [r for r in runs if (r.kind, r.workers) == (kind, workers)]
+        base = series[0]
+        for run in series[1:]:
+            per_line = (run.peak_rss_kb - base.peak_rss_kb) * 1024 / (run.lines - base.lines)
+            print(
+                f"{kind} x{workers}: RSS per line beyond {base.lines} lines, at {run.lines}: {per_line:,.0f} B (<= 2048)"
+            )
+        for before, after in zip(series, series[1:], strict=False):
+            print(
+                f"{kind} x{workers}: time({after.lines})/time({before.lines}): wall {after.wall_s / before.wall_s:.1f}, "
+                f"cpu {after.cpu_s / before.cpu_s:.1f} (sizes {after.lines / before.lines:.0f}x; linear = the same)"
+            )
+
+
+# ---------------------------------------------------------------- phases and peers, in this process
+
+PHASES = ("parse", "analysis", "boundary check", "IR build", "check", "JSON")
+
+
+def phase_times(text: str) -> tuple[dict[str, float], int, list[dict[str, object]]]:
+    """CPU seconds per phase of the one-process path over `text`, the number of materials, and
+    their IR (for the JSON peer). The boundary check is the analysis's last passes (ranges.py)."""
+    from cnlmc import analyze
+    from cnlmc.api import cyclic_gc_paused, lexicon_for
+    from cnlmc.document import iter_items
+    from cnlmc.ir import json_text, material_ir
+    from cnlmc.material import Material
+    from cnlmc.params import Params
+    from cnlmc.state import Context
+
+    lexicon = lexicon_for()
+    ctx = Context(lexicon, filename="bench.cnl")
+    clock, spent = time.process_time, dict.fromkeys(PHASES, 0.0)
+    convention = ctx.settings.get("alpha_convention", Params.alpha_convention)
+
+    def timed_pass(step: Callable[..., object]) -> Callable[..., object]:
+        def run(state: object, context: object) -> object:
+            start = clock()
+            try:
+                return step(state, context)
+            finally:
+                spent["boundary check"] += clock() - start
+
+        return run
+
+    def timed_items(items: Iterator[object]) -> Iterator[object]:
+        while True:
+            start = clock()
+            item = next(items, None)
+            spent["parse"] += clock() - start
+            if item is None:
+                return
+            yield item
+
+    saved = analyze.FINAL_PASSES
+    analyze.FINAL_PASSES = tuple(p if p is analyze.select_model else timed_pass(p) for p in saved)
+    materials: list[dict[str, object]] = []
+    diags: list[object] = []
+    used: dict[str, int] = {}
+    try:
+        with cyclic_gc_paused():
+            groups = analyze._material_groups(timed_items(iter_items(text, lexicon, diags)), diags)  # type: ignore[arg-type]
+            for material, refinements in groups:
+                start = clock()
+                name = analyze.material_name(material, used)
+                states = analyze.build_states(material, refinements, ctx, name, diags)  # type: ignore[arg-type]
+                spent["analysis"] += clock() - start
+                for state in states:
+                    start = clock()
+                    ir = material_ir(state, convention, lexicon.caches.rounded_optics)
+                    middle = clock()
+                    Material.from_ir(ir)
+                    end = clock()
+                    json_text(ir)
+                    spent["IR build"] += middle - start
+                    spent["check"] += end - middle
+                    spent["JSON"] += clock() - end
+                    materials.append(ir)
+    finally:
+        analyze.FINAL_PASSES = saved
+    spent["analysis"] -= spent["boundary check"]
+    return spent, len(materials), materials
+
+
+def previous_json_text(value: object) -> str:
+    """The IR's JSON text function before this change (a regular expression over every text)."""
+    from cnlmc.ir import _ENCODER, _UNSAFE_ON_TERMINAL, _escaped
+
+    text = _ENCODER.encode(value)
+    if _UNSAFE_ON_TERMINAL.search(text) is None:
+        return text
+    return _UNSAFE_ON_TERMINAL.sub(_escaped, text)
+
+
+def peer_run(text: str, workers: int) -> tuple[float, float, bytes]:
+    """Wall and CPU seconds (this process and its workers) of compile_stream + the IR writer."""
+    import resource
+
+    from cnlmc.api import compile_stream, cyclic_gc_paused, lexicon_for
+    from cnlmc.backends.ir_json import IrWriter
+
+    def cpu() -> float:
+        own, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+        return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
+
+    wall, used = time.perf_counter(), cpu()
+    with cyclic_gc_paused():
+        stream = compile_stream(text, "bench.cnl", lexicon_for(), workers=workers)
+        out = io.BytesIO()
+        writer = IrWriter(out, stream.head, check=True)
+        for material in stream.materials:
+            writer.write(material)
+        writer.finish([d.to_json() for d in stream.sorted_diagnostics()])
+    return time.perf_counter() - wall, cpu() - used, out.getvalue()
+
+
+def phases_and_peers(lines: int, pool: list[str], folder: Path) -> None:
+    from cnlmc.ir import json_text
+
+    source = folder / "phases.cnl"
+    for kind in ("cycled", "distinct"):
+        write_source(source, lines, phrase_source(kind, lines, pool))
+        text = source.read_text(encoding="utf-8")
+        phase_times(text)  # warm: the tagger's memo, the lexicon's caches
+        spent, count, materials = phase_times(text)
+        cells = "  ".join(f"{phase} {spent[phase] / lines * 1e6:4.0f}" for phase in PHASES)
+        print(f"{kind} {lines} lines, CPU us per line: {cells}  (total {sum(spent.values()):.2f} s, {count} materials)")
+        start = time.process_time()
+        old = [previous_json_text(m) for m in materials]
+        middle = time.process_time()
+        start_new = time.process_time()
+        same = [json_text(m) for m in materials] == old
+        end = time.process_time()
+        print(
+            f"  peer, JSON text: previous {middle - start:.3f} s, now {end - start_new:.3f} s "
+            f"(ratio {(middle - start) / max(1e-9, end - start_new):.2f}x, same text: {same})"
+        )
+        one, two = peer_run(text, 1), peer_run(text, 2)
+        print(
+            f"  peer, one process (previous path) vs two: wall {one[0]:.2f} s -> {two[0]:.2f} s "
+            f"({one[0] / two[0]:.2f}x), cpu {one[1]:.2f} s -> {two[1]:.2f} s, same bytes: {one[2] == two[2]}"
+        )
+
+
+def write_in_a_process(kind: str, size: int, path: Path) -> None:
+    """The source written by another process: this one stays small, so that the compiles it starts
+    measure their own peak RSS (Linux keeps a process's peak RSS across exec, and a child started
+    by vfork begins with its parent's)."""
+    subprocess.run([sys.executable, __file__, "--write", kind, str(size), str(path)], check=True)
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sizes", type=int, nargs="+", default=[1000, 10_000, 100_000])
+    parser.add_argument("--kinds", nargs="+", choices=("cycled", "distinct"), default=["cycled", "distinct"])
+    parser.add_argument("--workers", type=int, nargs="+", default=[1, 2])
+    parser.add_argument("--phases", type=int, default=0, metavar="LINES", help="phases and peers at this size")
+    parser.add_argument("--write", nargs=3, metavar=("KIND", "LINES", "PATH"), help=argparse.SUPPRESS)
+    parser.add_argument("--phases-only", type=int, default=0, help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.write:
+        kind, size, path = args.write[0], int(args.write[1]), Path(args.write[2])
+        write_source(path, size, phrase_source(kind, size, phrase_pool() if kind == "cycled" else []))
+        return 0
+    if args.phases_only:
+        with tempfile.TemporaryDirectory() as folder:
+            phases_and_peers(args.phases_only, phrase_pool(), Path(folder))
+        return 0
+    print(f"load average at the start: {os.getloadavg()[0]:.2f} on {os.cpu_count()} CPUs", flush=True)
+    if args.phases:
+        subprocess.run([sys.executable, __file__, "--phases-only", str(args.phases)], check=True)
     runs = []
-    pool = phrase_pool()
     with tempfile.TemporaryDirectory() as folder:
-        for size in sorted(args.sizes):
-            source, output = Path(folder) / f"{size}.cnl", Path(folder) / f"{size}.ir.json"
-            write_source(source, size, pool)
-            run = compile_once(source, output)
-            runs.append(run)
-            print(
-                f"{run.lines:>7} lines {run.input_bytes / 1e6:6.2f} MB in: wall {run.wall_s:7.2f} s  "
-                f"cpu {run.cpu_s:7.2f} s  peak RSS {run.peak_rss_kb / 1024:8.1f} MB  "
-                f"out {run.output_bytes / 1e6:7.1f} MB ({run.output_bytes / max(1, run.lines):,.0f} B/line)  "
-                f"exit {run.exit_code}",
-                flush=True,
-            )
-    base = runs[0]
-    for run in runs[1:]:
-        per_line = (run.peak_rss_kb - base.peak_rss_kb) * 1024 / (run.lines - base.lines)
-        print(f"RSS per input line beyond the {base.lines}-line run, at {run.lines}: {per_line:,.0f} B (goal <= 2048)")
-    for before, after in zip(runs, runs[1:], strict=False):
-        print(
-            f"time({after.lines})/time({before.lines}): wall {after.wall_s / before.wall_s:.1f}, "
-            f"cpu {after.cpu_s / before.cpu_s:.1f} (sizes {after.lines / before.lines:.0f}x; linear = the same)"
-        )
+        for kind in args.kinds:
+            for size in sorted(args.sizes):
+                source = Path(folder) / f"{kind}{size}.cnl"
+                write_in_a_process(kind, size, source)
+                for workers in args.workers:
+                    run = compile_once(kind, workers, source, Path(folder) / f"{kind}{size}x{workers}.ir.json")
+                    runs.append(run)
+                    report(run)
+    summarise(runs)
+    print(f"load average at the end: {os.getloadavg()[0]:.2f}")
     return 0 if all(run.exit_code == 0 for run in runs) else 1
 
 
