@@ -21,7 +21,7 @@ from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .base import noun_of
 from .bracket import Move, bracket_move, scaled_steps
-from .refine_colour import refine_colour, refine_saturation
+from .refine_colour import refine_colour, refine_named_colour, refine_saturation
 from .refine_effects import refine_adjective
 from .refine_target import item_words, refine_weight, surface
 from .words import apply_group
@@ -79,7 +79,7 @@ def _is_unknown(target: ast.Word | ast.Colour) -> bool:
 def _refine_named(state: MaterialState, ctx: Context, item: ast.RefineItem, direction: int, weight: float) -> None:
     target = item.target
     if isinstance(target, ast.Colour):
-        refine_saturation(state, ctx, item, direction, weight)
+        refine_named_colour(state, ctx, item, direction, weight)
         return
     assert isinstance(target, ast.Word), item
     if target.category == "properties":

@@ -12,10 +12,11 @@ from __future__ import annotations
 from typing import Any
 
 from .. import ast
-from ..colour import apply_ops, linear_to_oklab, scale_chroma
+from ..colour import apply_ops, linear_to_oklab, oklab_to_linear_in_gamut, scale_chroma, toward_hue
 from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .bracket import Move, Step, bracket_move, scaled_steps
+from .colours import colour_text, resolve_colour
 from .refine_target import item_words, note
 
 COLOUR_LIMITS = (0.0, 1.0)
@@ -81,3 +82,95 @@ def refine_saturation(state: MaterialState, ctx: Context, item: ast.RefineItem, 
     step: Step = (lambda x: scale_chroma(x, factor)) if direction > 0 else (lambda x: scale_chroma(x, 1 / factor))
     new = bracket_move(state.brackets, "base_color.chroma", current, Move(direction, step, weight, COLOUR_LIMITS))
     state.record("base_color", new, f"refinements.{item.word.key}: saturation", item_words(item))
+
+
+HUE_STEP = 0.25  # 'more blue': a quarter of the way to blue's OKLab a, b (as refinements.toml's 'bluer')
+
+
+def refine_named_colour(
+    state: MaterialState, ctx: Context, item: ast.RefineItem, direction: int, weight: float
+) -> None:
+    """'more blue' / 'less red': towards a named colour's hue, or its share taken away; a shade
+    alone ('more vivid', 'less muted') applies the shade's operations at the weight step, or
+    their opposite."""
+    target = item.target
+    assert isinstance(target, ast.Colour), item
+    if _shade_only(target, ctx):
+        _refine_shade(state, ctx, item, target, direction, weight)
+        return
+    param = _colour_param(state, item)
+    holder, name = _colour_holder(state, param)
+    _l, a, b = linear_to_oklab(resolve_colour(target, ctx))
+    amount = 1.0 - (1.0 - HUE_STEP) ** weight
+    if direction < 0 and _share(holder[name], (a, b)) < NEUTRAL_CHROMA:
+        state.diagnostics.append(
+            note(item.span, "N105", f"'{item.word.text} {colour_text(target)}': the colour has none of it to take away")
+        )
+        return
+    towards: Step = lambda x: toward_hue(x, (0.0, a, b), amount)
+    away: Step = lambda x: _less_of(x, (a, b), amount)
+    key = f"{param}.hue:{colour_text(target)}"
+    move = Move(direction, towards if direction > 0 else away, weight, COLOUR_LIMITS)
+    new = bracket_move(state.brackets, key, holder[name], move)
+    holder[name] = new
+    state.note(param, new, f"refinements.{item.word.key} {colour_text(target)}: hue step", item_words(item))
+
+
+def _colour_holder(state: MaterialState, param: str) -> tuple[dict[str, Any], str]:
+    if param == "coat.color" and state.coat is not None:
+        return state.coat, "color"
+    return state.params, "base_color"
+
+
+def _shade_only(target: ast.Colour, ctx: Context) -> bool:
+    """'vivid', 'muted': shades with no colour ('reddish' alone is a colour: resolve_colour)."""
+    if target.base is not None or not target.shades:
+        return False
+    return ctx.lexicon.entry("colours", target.shades[-1].key) is None
+
+
+def _unit(ab: tuple[float, float]) -> tuple[float, float]:
+    norm = (ab[0] ** 2 + ab[1] ** 2) ** 0.5
+    return (ab[0] / norm, ab[1] / norm) if norm > 0 else (0.0, 0.0)
+
+
+def _share(rgb: list[float], ab: tuple[float, float]) -> float:
+    """How much of the hue `ab` the colour has: its OKLab a, b along ab's direction (0 when none)."""
+    _l, a, b = linear_to_oklab(rgb)
+    u = _unit(ab)
+    return max(0.0, a * u[0] + b * u[1])
+
+
+def _less_of(rgb: list[float], ab: tuple[float, float], amount: float) -> list[float]:
+    """The colour with `amount` of its share of the hue `ab` taken away, lightness kept."""
+    L, a, b = linear_to_oklab(rgb)
+    u, share = _unit(ab), _share(rgb, ab)
+    return oklab_to_linear_in_gamut((L, a - amount * share * u[0], b - amount * share * u[1]))
+
+
+def _refine_shade(
+    state: MaterialState, ctx: Context, item: ast.RefineItem, target: ast.Colour, direction: int, weight: float
+) -> None:
+    ops: Ops = []
+    for word in target.shades:
+        ops += ctx.lexicon.require("shades", word.key).get("ops")
+    w = ctx.settings.get("weight_step", 0.5) * weight
+    step_ops = scaled_ops(ops, w) if direction > 0 else _opposite_ops(scaled_ops(ops, w))
+    key = f"base_color.shade:{colour_text(target)}"
+    move = Move(direction, lambda x: apply_ops(x, step_ops), weight, COLOUR_LIMITS)
+    new = bracket_move(state.brackets, key, state.params["base_color"], move)
+    state.record("base_color", new, f"refinements.{item.word.key} {colour_text(target)}: shade step", item_words(item))
+
+
+def _opposite_ops(ops: Ops) -> Ops:
+    """A shade's operations undone, last first: chroma scales inverted, lightness moved the other way
+    (a hue shift 'toward' has no opposite and is left out)."""
+    out: Ops = []
+    for op in reversed(ops):
+        if op["op"] == "chroma" and op["scale"] > 0:
+            out.append({**op, "scale": 1.0 / op["scale"]})
+        elif op["op"] == "lightness":
+            out.append({**op, "toward": 1.0 - op["toward"]})
+        elif op["op"] == "mul" and isinstance(op.get("value"), (int, float)) and op["value"] > 0:
+            out.append({**op, "value": 1.0 / op["value"]})
+    return out

@@ -210,6 +210,33 @@ def test_a_grey_has_no_hue_to_saturate_and_says_so() -> None:
     assert "N105" in notes_of(s) and warnings_of(s) == []
 
 
+def test_more_and_less_of_a_named_colour() -> None:
+    s = Session("grey concrete", LEX)
+    start = lab(s.material)
+    greener = lab(s.refine("more green"))
+    assert greener[1] < start[1] - 0.01  # OKLab a: towards green
+    less = lab(s.refine("less green"))
+    assert greener[1] < less[1]
+    orange = Session("orange plastic", LEX)
+    before = chroma(orange.material)
+    assert chroma(orange.refine("less orange")) < before
+
+
+def test_less_of_a_colour_the_material_lacks_says_so() -> None:
+    s = Session("white porcelain", LEX)
+    before = s.material["params"]["base_color"]
+    assert s.refine("less purple")["params"]["base_color"] == before
+    assert "N105" in notes_of(s)
+
+
+def test_a_shade_as_a_refinement_target() -> None:
+    s = Session("green velvet", LEX)
+    c0 = chroma(s.material)
+    c1 = chroma(s.refine("more muted"))
+    c2 = chroma(s.refine("less muted"))
+    assert c1 < c2 and c1 < c0
+
+
 def test_axes_do_not_pull_each_other_back() -> None:
     """'darker', then 'bluer', then 'lighter': the lightness bracket is forgotten once the colour
     moved on another axis, so 'lighter' is a step up, not back to the old bound's midpoint."""
