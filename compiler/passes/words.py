@@ -122,7 +122,7 @@ def apply_adjective(
     state: MaterialState, ctx: Context, adjective: Entry, group: ast.Group, weight: float, target: str
 ) -> None:
     word = group.adjectives[0]
-    if not _applies(state, adjective, word):
+    if not _applies(state, adjective, word, target):
         return
     if state.applied:
         _check_opposition(state, ctx, adjective, word)
@@ -159,10 +159,16 @@ def effect_source(adjective: Entry, state: MaterialState) -> tuple[str, list[Eff
     return "effects", data.get("effects", [])
 
 
-def _applies(state: MaterialState, adjective: Entry, word: ast.Word) -> bool:
+COAT_CLASS = "plastic"  # a coat is a clear polymer film (coats.toml: PMMA lacquer, polyurethane varnish)
+
+
+def _applies(state: MaterialState, adjective: Entry, word: ast.Word, target: str = "base") -> bool:
+    """Whether the adjective applies to its material; in a coat clause, to the coat ('a clear lacquer')."""
     classes = adjective.data.get("applies_to")
     noun = noun_of(state)
-    if not classes or noun.data.get("class") in classes or noun.key in classes:
+    if not classes or (target == "coat" and COAT_CLASS in classes):
+        return True
+    if target != "coat" and (noun.data.get("class") in classes or noun.key in classes):
         return True
     note = adjective.get("applies_note", f"it applies to {', '.join(classes)}")
     state.diagnostics.append(

@@ -136,3 +136,16 @@ def test_teaching_errors_through_the_cli():
     assert "= 'periwinkle' is a colour here — did you mean 'periwinkle plastic'?" in proc.stderr
     assert "<stdin>:2:7: error[E001]: unknown word 'tinn'" in proc.stderr
     assert "= did you mean 'tin'?" in proc.stderr
+
+
+@pytest.mark.parametrize("text", ["brass with a clear varnish", "zinc with a clear lacquer", "tin with a tinted lacquer"])
+def test_a_coat_word_describes_the_coat_not_the_metal(compile_text, text):
+    result = compile_text(text)
+    assert result.ok
+    assert not [d.code for d in result.diagnostics if d.code == "W102"]
+    assert result.materials[0]["params"]["coat"]["name"] in ("varnish", "lacquer")
+
+
+def test_the_same_word_on_the_metal_itself_still_warns(compile_text):
+    codes = [d.code for d in compile_text("clear zinc").diagnostics]
+    assert codes == ["W102"]
