@@ -18,15 +18,45 @@ def shade(rgb: list[float], ops: list[dict[str, Any]]) -> list[float]:
 def resolve_colour(c: ast.Colour, ctx: Context, start: list[float] | None = None, weight: float = 1.0) -> list[float]:
     """RGB of a colour phrase; shades alone ("dark wood") act on `start`, but a last shade that is
     also a colour ("reddish" in "reddish plastic", "dark reddish oak") is that colour, as "red" would be.
-    An adverb's `weight` goes to the shades: "very dark grey" is grey made dark 1.5 times."""
+    An adverb's `weight` goes to the shades: "very dark grey" is grey made dark 1.5 times (also when
+    the survey names "dark grey" itself); a plain colour at a weight below 1 ("slightly red") is that
+    share of the way from `start` to the colour."""
     shades, base = c.shades, c.base
     if base is None and shades and ctx.lexicon.entry("colours", shades[-1].key) is not None:
         shades, base = shades[:-1], shades[-1]
     rgb = list(ctx.lexicon.require("colours", base.key).get("rgb")) if base else list(start or NEUTRAL)
+    if weight != 1.0 and base is not None and not shades:
+        return _weighted_plain(rgb, base.key, ctx, start, weight)
     for word in reversed(shades):  # the shade nearest the colour applies first
-        ops = ctx.lexicon.require("shades", word.key).get("ops")
-        rgb = shade(rgb, ops if weight == 1.0 else [weighted_shade(op, weight) for op in ops])
+        rgb = shade(rgb, _ops(ctx, word.key, weight))
     return rgb
+
+
+def _ops(ctx: Context, shade_key: str, weight: float) -> list[dict[str, Any]]:
+    ops: list[dict[str, Any]] = ctx.lexicon.require("shades", shade_key).get("ops")
+    return ops if weight == 1.0 else [weighted_shade(op, weight) for op in ops]
+
+
+def _weighted_plain(rgb: list[float], key: str, ctx: Context, start: list[float] | None, weight: float) -> list[float]:
+    """A colour word without separate shades at an adverb weight: a shaded survey name ("dark teal")
+    takes its shade once more or less; any other colour is simply itself, or part of the way to it."""
+    shaded = _shaded_name(key, ctx)
+    if shaded is not None:
+        shade_key, plain_key = shaded
+        if weight > 1.0:
+            return shade(rgb, _ops(ctx, shade_key, weight - 1.0))
+        return shade(list(ctx.lexicon.require("colours", plain_key).get("rgb")), _ops(ctx, shade_key, weight))
+    if weight < 1.0 and start is not None:
+        return [a + weight * (b - a) for a, b in zip(start, rgb)]
+    return rgb
+
+
+def _shaded_name(key: str, ctx: Context) -> tuple[str, str] | None:
+    """('dark', 'teal') for the survey's "dark teal" when both halves are known, else None."""
+    head, _, rest = key.partition(" ")
+    if rest and ctx.lexicon.entry("shades", head) is not None and ctx.lexicon.entry("colours", rest) is not None:
+        return head, rest
+    return None
 
 
 def colour_text(c: ast.Colour) -> str:

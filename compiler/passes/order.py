@@ -26,16 +26,30 @@ def stage_of(adjective: Entry) -> str:
 
 
 def canonical_groups(groups: Sequence[ast.Group], lexicon: Lexicon) -> Sequence[ast.Group]:
-    if len(groups) < 2:
+    if len(groups) < 2 and not (groups and groups[0].colours and groups[0].adjectives):
         return groups
     buckets: dict[tuple[int, int], list[tuple[int, ast.Group]]] = {}
-    for index, group in enumerate(groups):
+    for index, group in enumerate(_colours_apart(groups, lexicon)):
         rank, setting = _rank(group, lexicon)
         buckets.setdefault((rank, setting), []).append((index, group))
     ordered: list[ast.Group] = []
     for place in sorted(buckets):
         ordered += _within_bucket(buckets[place], lexicon)
     return ordered
+
+
+def _colours_apart(groups: Sequence[ast.Group], lexicon: Lexicon) -> list[ast.Group]:
+    """A colour before an adjective that does not take one ("green faded", unlike "blue anodized")
+    is a colour word of its own, applied in the colour stage."""
+    out: list[ast.Group] = []
+    for group in groups:
+        adjective = _adjective(group, lexicon)
+        if adjective is None or not group.colours or adjective.get("colour_target"):
+            out.append(group)
+            continue
+        out.append(ast.Group("colour", (), group.colours, (), group.span))
+        out.append(ast.Group(group.kind, group.adverbs, (), group.adjectives, group.span))
+    return out
 
 
 def _rank(group: ast.Group, lexicon: Lexicon) -> tuple[int, int]:

@@ -8,6 +8,7 @@ formulas saturate inside each parameter's range (compiler/degrees.py).
 
 from __future__ import annotations
 
+from types import MappingProxyType
 from typing import Any
 
 from .. import ast
@@ -27,6 +28,9 @@ Holder = dict[str, Any]  # where a value goes: the material's parameters or its 
 Words = tuple[ast.Word, ...]
 
 PARAM_BOUNDS = ranges(PARAMS)  # param -> (low, high): where a weighted formula saturates
+PARAM_DEFAULTS = MappingProxyType(  # what a formula starts from when the material lacks the parameter (ior 1.5)
+    {s.name: list(s.default) if isinstance(s.default, tuple) else s.default for s in PARAMS}
+)
 COAT_BOUNDS = ranges(COAT_PARAMS)
 DIFFUSE_SIGMA = "diffuse_roughness"  # the Oren-Nayar sigma that roughness words also move
 DEGREE_PARAMS = ("roughness", "anisotropy", DIFFUSE_SIGMA)  # scales whose set levels intensify ("very glossy")
@@ -89,8 +93,6 @@ def apply_colour(state: MaterialState, ctx: Context, c: ast.Colour, adverbs: Wor
     param, holder = _colour_slot(state, target)
     current = holder.get(param)
     rgb = resolve_colour(c, ctx, start=current, weight=weight)
-    if weight < 1.0 and current is not None and not c.shades:  # "slightly red": part of the way
-        rgb = apply_op("set", current, rgb, weight)
     _warn_second_colour(state, param if target == "base" else "coat.color", c)
     holder[param] = rgb
     state.note(param if target == "base" else "coat.color", rgb, f"colours: {colour_text(c)}", (*adverbs, *c.words))
@@ -207,7 +209,7 @@ def _apply_effect(
     if param == "model":
         _switch_kind(state, effect["value"], rule, words)
         return
-    current = holder.get(param, 0.0 if param != "base_color" else [1.0, 1.0, 1.0])
+    current = holder.get(param, PARAM_DEFAULTS.get(param, 0.0))
     bounds = (PARAM_BOUNDS if holder is state.params else COAT_BOUNDS).get(param)
     degree = param in DEGREE_PARAMS
     value = weighted_formula(effect["op"], current, effect.get("value"), weight, effect.get("amount"), bounds, degree)
