@@ -20,6 +20,7 @@ from ..lexicon import Entry, LexiconCaches
 from ..params import COAT_PARAMS, PARAMS, ranges
 from ..state import Context, MaterialState
 from .base import _map_ref, noun_of
+from .colour_compounds import colour_compounds
 from .colours import colour_text, resolve_colour
 from .order import canonical_groups, stage_of
 
@@ -42,7 +43,8 @@ def group_weight(group: ast.Group, ctx: Context) -> float:
 
 
 def apply_groups(state: MaterialState, ctx: Context) -> MaterialState:
-    for group in canonical_groups(state.selection.groups, ctx.lexicon):
+    groups = colour_compounds(state.selection.groups, ctx.lexicon, state.diagnostics)
+    for group in canonical_groups(groups, ctx.lexicon):
         apply_group(state, ctx, group, target="base")
     return state
 

@@ -138,7 +138,9 @@ def test_teaching_errors_through_the_cli():
     assert "= did you mean 'tin'?" in proc.stderr
 
 
-@pytest.mark.parametrize("text", ["brass with a clear varnish", "zinc with a clear lacquer", "tin with a tinted lacquer"])
+@pytest.mark.parametrize(
+    "text", ["brass with a clear varnish", "zinc with a clear lacquer", "tin with a tinted lacquer"]
+)
 def test_a_coat_word_describes_the_coat_not_the_metal(compile_text, text):
     result = compile_text(text)
     assert result.ok
@@ -149,3 +151,21 @@ def test_a_coat_word_describes_the_coat_not_the_metal(compile_text, text):
 def test_the_same_word_on_the_metal_itself_still_warns(compile_text):
     codes = [d.code for d in compile_text("clear zinc").diagnostics]
     assert codes == ["W102"]
+
+
+@pytest.mark.parametrize(
+    "text,kept", [("coffee brown velvet", "coffee"), ("ivory white plaster", "ivory"), ("ruby red acrylic", "ruby")]
+)
+def test_a_particular_colour_before_its_basic_term_is_one_colour(compile_text, stdlib, text, kept):
+    result = compile_text(text)
+    assert result.ok
+    assert not [d for d in result.diagnostics if d.code == "W105"]
+    notes = [d for d in result.diagnostics if d.code == "N131"]
+    assert len(notes) == 1 and notes[0].severity.value == "note"
+    steps = result.materials[0]["provenance"]["base_color"]
+    assert steps[-1]["rule"] == f"colours: {kept}"
+
+
+@pytest.mark.parametrize("text", ["green orange plastic", "black white velvet", "lime purple paint"])
+def test_two_colours_that_disagree_still_warn(compile_text, text):
+    assert "W105" in [d.code for d in compile_text(text).diagnostics]

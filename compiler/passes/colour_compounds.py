@@ -1,0 +1,93 @@
+"""'chestnut brown', 'ruby red', 'ivory white': a particular colour followed by its own basic
+colour term is one colour (the particular one), not a second colour replacing the first (W105).
+
+Two basic terms ('red blue', 'white black') stay two colours: that is a real contradiction.
+The rules are data: stdlib/data/colour_compounds.toml (Berlin and Kay's basic terms, the hue and
+lightness agreement); each reading says so in a note (N131).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from functools import lru_cache
+from importlib import resources
+from types import MappingProxyType
+from typing import Any
+
+from .. import ast
+from ..colour import linear_to_oklab
+from ..diagnostics import Diagnostic, Severity
+from ..lexicon import Lexicon
+
+__all__ = ["NOTE_CODE", "colour_compounds"]
+
+NOTE_CODE = "N131"  # two colour words read as one colour
+
+
+@lru_cache(maxsize=1)
+def rules() -> Mapping[str, Any]:
+    """stdlib/data/colour_compounds.toml, read once per process (immutable package data)."""
+    import tomllib
+
+    text = resources.files("cnlmc.stdlib").joinpath("data").joinpath("colour_compounds.toml").read_text("utf-8")
+    return MappingProxyType(tomllib.loads(text))
+
+
+def colour_compounds(groups: Sequence[ast.Group], lexicon: Lexicon, diags: list[Diagnostic]) -> Sequence[ast.Group]:
+    """The groups with each 'particular colour + its basic term' pair read as the particular colour."""
+    if sum(1 for g in groups if g.kind == "colour") < 2:
+        return groups
+    out: list[ast.Group] = []
+    for group in groups:
+        if out and _is_compound(out[-1], group, lexicon):
+            first = out[-1].colours[0]
+            second = group.colours[0]
+            diags.append(_note(first, second))
+            continue
+        out.append(group)
+    return out
+
+
+def _is_compound(first: ast.Group, second: ast.Group, lexicon: Lexicon) -> bool:
+    if not (_single_colour(first) and _single_colour(second)) or second.adverbs or second.colours[0].shades:
+        return False
+    if second.span.start - first.span.end > 1:  # a comma or 'and' between them
+        return False
+    a, b = first.colours[0].base, second.colours[0].base
+    assert a is not None and b is not None  # _single_colour
+    basic = rules()["basic_terms"]
+    if a.key in basic or b.key not in basic:
+        return False
+    rgb_a, rgb_b = _rgb(lexicon, a.key), _rgb(lexicon, b.key)
+    return rgb_a is not None and rgb_b is not None and _agrees(rgb_a, rgb_b, b.key)
+
+
+def _single_colour(group: ast.Group) -> bool:
+    return group.kind == "colour" and len(group.colours) == 1 and group.colours[0].base is not None
+
+
+def _rgb(lexicon: Lexicon, key: str) -> list[float] | None:
+    entry = lexicon.entry("colours", key)
+    rgb = entry.get("rgb") if entry is not None else None
+    return list(rgb) if rgb else None
+
+
+def _agrees(particular: Sequence[float], basic: Sequence[float], basic_key: str) -> bool:
+    """The particular colour is a kind of the basic one: the same neutral band, or the same hue."""
+    lightness, a, b = linear_to_oklab(particular)
+    chroma = math.hypot(a, b)
+    band = rules()["neutral_lightness"].get(basic_key)
+    if band is not None:
+        return chroma < rules()["neutral_chroma"] and band[0] <= lightness <= band[1]
+    _l, a2, b2 = linear_to_oklab(basic)
+    if chroma < rules()["hue"]["min_chroma"]:
+        return False
+    difference = abs(math.degrees(math.atan2(b, a) - math.atan2(b2, a2))) % 360.0
+    return min(difference, 360.0 - difference) <= rules()["hue"]["max_degrees"]
+
+
+def _note(first: ast.Colour, second: ast.Colour) -> Diagnostic:
+    a, b = first.words[-1].text, second.words[-1].text
+    span = first.span.to(second.span)
+    return Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read '{a} {b}' as the colour '{a}' (a {b}), not two colours")
