@@ -171,13 +171,25 @@ class Refinement:
     items: tuple[RefineItem, ...]
     span: Span
     text: str
+    coat: Coat | None = None  # a line of 'with' clauses: 'with a glossy varnish' adds a coat
+    features: tuple[Feature, ...] = ()  # ... or features: 'with fine scratches'
 
-    def __init__(self, name: Word | None, items: tuple[RefineItem, ...], span: Span, text: str) -> None:
+    def __init__(
+        self,
+        name: Word | None,
+        items: tuple[RefineItem, ...],
+        span: Span,
+        text: str,
+        coat: Coat | None = None,
+        features: tuple[Feature, ...] = (),
+    ) -> None:
         fields = self.__dict__
         fields["name"] = name
         fields["items"] = items
         fields["span"] = span
         fields["text"] = text
+        fields["coat"] = coat
+        fields["features"] = features
 
 
 Item = Material | Refinement

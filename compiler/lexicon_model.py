@@ -32,6 +32,7 @@ CATEGORY_TAGS = {
     "properties": "PROP",
     "coats": "COAT",
     "objects": "OBJECT",  # things made of a material ("planks"): the tagger reads them as their material
+    "features": "FEATURE",  # what a 'with' clause names besides a coat: "with grey veins" (passes/features.py)
 }
 SPECIAL_FILES = ("settings", "inflections", "keywords", "word_formation")
 

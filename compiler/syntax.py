@@ -161,6 +161,8 @@ class RefinementPlan(NamedTuple):
     items: tuple[RefineItemPlan, ...]
     first: int
     last: int
+    coat: CoatPlan | None = None  # a line of 'with' clauses
+    features: tuple[CoatPlan, ...] = ()
 
     def build(self, words: Words, tagged: Sequence[Tagged], text: str) -> ast.Refinement:
         a, last = tagged[self.first].span, self.last  # the span: a word's own, or first to last word
@@ -172,6 +174,8 @@ class RefinementPlan(NamedTuple):
             tuple(items),
             a if last == self.first else Span(a.start, tagged[last].span.end, a.line, a.col),
             text,
+            None if self.coat is None else self.coat.build(words, tagged),
+            tuple([f.build_feature(words, tagged) for f in self.features]),
         )
 
 
@@ -327,6 +331,9 @@ class _Reader:
         return CoatPlan(groups, coat_word, *self.edges(tree))
 
     def refinement(self, tree: Tree[Token], name: int | None) -> RefinementPlan:
+        first = tree.children[0]
+        if isinstance(first, Tree) and first.data == "clauses":
+            return RefinementPlan(name, (), *self.edges(tree), *self.clauses(first))
         items = tuple([self.refine_item(c) for c in tree.children if isinstance(c, Tree)])
         return RefinementPlan(name, items, *self.edges(tree))
 

@@ -1,18 +1,28 @@
-"""The coat clause: "oak with a glossy white varnish" -> a coat layer with its own groups."""
+"""The 'with' clauses: "oak with a glossy white varnish" -> a coat layer with its own groups;
+"marble with grey veins", "steel with a few rust spots" -> features (passes/features.py)."""
 
 from __future__ import annotations
 
+from .. import ast
 from ..state import Context, MaterialState
+from .features import apply_features
 from .words import apply_coat_entry, apply_group, pigment_base
 
 
 def apply_coat_clause(state: MaterialState, ctx: Context) -> MaterialState:
-    clause = state.selection.coat
-    if clause is None or clause.coat.unknown:
-        return state
-    apply_coat_entry(state, ctx, clause.coat.key, f"coats.{clause.coat.key}", (clause.coat,))
-    for group in clause.groups:
-        apply_group(state, ctx, group, target="coat")
-    if any(g.kind == "colour" for g in clause.groups):
-        pigment_base(state, ctx)
+    """The material's coat clause, then its feature clauses (a coat first: a feature may bring its own)."""
+    apply_clauses(state, ctx, state.selection.coat, state.selection.features)
     return state
+
+
+def apply_clauses(state: MaterialState, ctx: Context, coat: ast.Coat | None, features: tuple[ast.Feature, ...]) -> None:
+    """A coat clause and feature clauses, of a material line or of a refinement line
+    ('with a glossy varnish' below 'walnut' adds the coat)."""
+    if coat is not None and not coat.coat.unknown:
+        apply_coat_entry(state, ctx, coat.coat.key, f"coats.{coat.coat.key}", (coat.coat,))
+        for group in coat.groups:
+            apply_group(state, ctx, group, target="coat")
+        if any(g.kind == "colour" for g in coat.groups):
+            pigment_base(state, ctx)
+    if features:
+        apply_features(state, ctx, features)

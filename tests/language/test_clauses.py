@@ -129,3 +129,117 @@ def test_the_coat_clause_span_starts_at_with(stdlib):
     item = parse("walnut with a satin lacquer", stdlib)
     assert item.coat is not None
     assert item.text[item.coat.span.start : item.coat.span.end] == "with a satin lacquer"
+
+
+# ---------------------------------------------------------------- feature clauses (compiled)
+
+
+def compiled(compile_text, text):
+    result = compile_text(text)
+    assert result.ok, [d.message for d in result.diagnostics]
+    (material,) = result.materials
+    return material, result.diagnostics
+
+
+def graphs(material):
+    return {ref["graph"] for ref in (material.get("maps") or {}).values()}
+
+
+def map_params(material, graph):
+    """The params of the material's first map of `graph` (base colour first)."""
+    refs = sorted(material["maps"].items(), key=lambda item: item[0] != "base_color")
+    return next(ref["params"] for _role, ref in refs if ref["graph"] == graph)
+
+
+def test_veins_on_a_stone_without_them_draw_the_marble_graph_in_the_named_colour(compile_text):
+    material, _ = compiled(compile_text, "limestone with dark green veins")
+    assert "marble" in graphs(material)
+    params = map_params(material, "marble")
+    assert params["color_amount"] == 1.0
+    assert params["color_g"] > params["color_r"] and params["color_g"] > params["color_b"]
+
+
+def test_a_material_keeps_its_own_map_and_a_degree_scales_it(compile_text):
+    plain, _ = compiled(compile_text, "oak")
+    strong, _ = compiled(compile_text, "oak with a pronounced grain")
+    subtle, _ = compiled(compile_text, "oak with a faint grain")
+    assert graphs(plain) == graphs(strong) == graphs(subtle)
+    contrast = [map_params(m, "wood").get("contrast", 1.0) for m in (subtle, plain, strong)]
+    assert contrast[0] < contrast[1] < contrast[2]
+
+
+def test_degree_words_multiply(compile_text):
+    few, _ = compiled(compile_text, "cast iron with a few rust spots")
+    many, _ = compiled(compile_text, "cast iron with many rust spots")
+    assert map_params(few, "rust")["coverage"] < map_params(many, "rust")["coverage"]
+
+
+def test_scratches_and_cracks_draw_what_their_adjectives_draw(compile_text):
+    material, _ = compiled(compile_text, "chrome with thin scratches")
+    assert "scratched" in graphs(material)
+    material, _ = compiled(compile_text, "plaster with hairline cracks")
+    assert "cracked" in graphs(material)
+
+
+def test_a_patina_in_a_named_colour(compile_text):
+    verdigris, _ = compiled(compile_text, "bronze with a patina")
+    brown, _ = compiled(compile_text, "bronze with a brown patina")
+    assert "patina" in graphs(verdigris) and "patina" in graphs(brown)
+    assert map_params(verdigris, "patina").get("color_amount", 0.0) == 0.0
+    assert map_params(brown, "patina")["color_r"] > map_params(brown, "patina")["color_b"]
+
+
+def test_a_finish_is_the_surface(compile_text):
+    finish, _ = compiled(compile_text, "brass with a polished finish")
+    polished, _ = compiled(compile_text, "polished brass")
+    assert finish["params"]["roughness"] == polished["params"]["roughness"]
+    assert not finish["model"]["coat"]
+
+
+def test_a_tint_colours_the_glass(compile_text):
+    material, _ = compiled(compile_text, "glass with a yellow tint")
+    r, g, b = material["params"]["base_color"]
+    assert r > b
+
+
+def test_speckles_on_a_plain_material(compile_text):
+    material, _ = compiled(compile_text, "grey rubber with white flecks")
+    assert "granite" in graphs(material)
+    assert map_params(material, "granite")["color_r"] == 1.0
+
+
+def test_a_coat_and_a_feature_together(compile_text):
+    material, diags = compiled(compile_text, "steel with a satin lacquer and some fine scratches")
+    assert material["model"]["coat"]
+    assert "scratched" in graphs(material)
+    assert not [d for d in diags if d.severity.value == "warning"]
+
+
+def test_a_feature_nothing_draws_says_what_is_missing(compile_text):
+    material, diags = compiled(compile_text, "blue paint with pearl flakes")
+    (w,) = [d for d in diags if d.code == "W120"]
+    assert "flakes" in w.message and "issue #15" in w.message
+    assert "features drawn today" in w.hints[0]
+
+
+def test_a_second_coat_is_reported(compile_text):
+    _material, diags = compiled(compile_text, "oak with a varnish and a wax")
+    (w,) = [d for d in diags if d.code == "W121"]
+    assert "'wax'" in w.message and "'varnish' is kept" in w.message
+
+
+def test_a_word_the_feature_cannot_use_is_a_note_not_a_warning(compile_text):
+    _material, diags = compiled(compile_text, "nickel with glossy scratches")
+    assert [d.code for d in diags] == ["N121"]
+    assert diags[0].severity.value == "note"
+
+
+def test_a_clause_without_its_feature_word_still_says_so(compile_text):
+    (d,) = compile_text("slate with a subtle").diagnostics
+    assert d.code == "E002"
+
+
+def test_a_clause_on_a_refinement_line_parses(stdlib):
+    item = parse("with fine scratches", stdlib)
+    assert isinstance(item, ast.Refinement)
+    assert item.items == () and [f.word.key for f in item.features] == ["scratches"]

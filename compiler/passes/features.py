@@ -1,0 +1,227 @@
+"""Feature clauses: "marble with grey veins", "steel with a few rust spots", "ceramic with a matte finish".
+
+A clause is `with [a] [degree] [colour] FEATURE`; the feature's lexicon entry (features.toml)
+says what draws it: an adjective (its effects and maps), maps of its own, a coat, or for a
+finish the clause's own adjectives. Degree words are adverbs: their weights multiply, as for an
+adjective ('a few' 0.4 x the feature). A colour goes where the entry's `colour` says: the
+feature map's named colour (graph params color_r/g/b, color_amount) or the base colour.
+Words the feature cannot use, and features nothing can draw yet, are reported.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .. import ast
+from ..diagnostics import Diagnostic, Severity, warning
+from ..graphs import graph_params
+from ..lexicon import Entry
+from ..lexicon_model import normalise
+from ..state import Context, MaterialState
+from .base import _map_ref
+from .colours import colour_text, resolve_colour
+from .words import apply_adjective, apply_coat_entry, apply_group, group_weight
+
+MISSING = "W120"  # a feature nothing in the stdlib draws yet
+SECOND_COAT = "W121"  # a second coat clause
+UNUSED = "N121"  # a word of a clause the feature has no use for
+COLOUR_PARAMS = ("color_r", "color_g", "color_b")
+
+
+def apply_features(state: MaterialState, ctx: Context, clauses: tuple[ast.Feature, ...]) -> None:
+    for clause in clauses:
+        if clause.word.unknown or _has_unknown(clause):
+            continue  # already reported as an unknown word
+        if clause.word.category == "coats":
+            _warn_second_coat(state, clause)
+            continue
+        apply_feature(state, ctx, ctx.lexicon.require("features", clause.word.key), clause)
+
+
+def apply_feature(state: MaterialState, ctx: Context, entry: Entry, clause: ast.Feature) -> None:
+    if entry.get("missing"):
+        state.diagnostics.append(
+            warning(clause.span, MISSING, f"'{clause.word.text}': {entry.get('missing')}", (_drawable_hint(ctx),))
+        )
+    if entry.get("finish"):
+        _apply_finish(state, ctx, clause)
+        return
+    weight = clause_weight(clause, ctx)
+    colour = _colour_of(clause)
+    used_colour = False
+    if entry.get("adjective"):
+        used_colour = _apply_adjective(state, ctx, entry, clause, weight, colour)
+    if entry.get("maps"):
+        used_colour = _draw_maps(state, ctx, entry, clause, weight, colour) or used_colour
+    if entry.get("coat"):
+        apply_coat_entry(state, ctx, entry.get("coat"), f"features.{entry.key}.coat", (clause.word,))
+    _report_unused(state, entry, clause, colour if not used_colour else None)
+
+
+def clause_weight(clause: ast.Feature, ctx: Context) -> float:
+    """The product of the clause's degree words ('a few fine scratches': 0.4 x 0.6)."""
+    weight = 1.0
+    for group in clause.groups:
+        weight *= group_weight(group, ctx)
+    return weight
+
+
+def _has_unknown(clause: ast.Feature) -> bool:
+    return any(w.unknown for g in clause.groups for w in (*g.adverbs, *g.adjectives, *_colour_words(g)))
+
+
+def _colour_words(group: ast.Group) -> tuple[ast.Word, ...]:
+    return tuple(w for c in group.colours for w in c.words)
+
+
+def _colour_of(clause: ast.Feature) -> ast.Colour | None:
+    for group in clause.groups:
+        if group.colours:
+            return group.colours[0]
+    return None
+
+
+def _adverbs_of(clause: ast.Feature) -> tuple[ast.Word, ...]:
+    return tuple(w for g in clause.groups for w in g.adverbs)
+
+
+# ---------------------------------------------------------------- finish: the clause's words are the surface
+
+
+def _apply_finish(state: MaterialState, ctx: Context, clause: ast.Feature) -> None:
+    """'with a matte finish' = matte; 'with a mirror finish' (one word that is also an adjective) = mirror."""
+    own = _adjective_named_by(ctx, clause.word)
+    if own is not None:
+        word = ast.Word(clause.word.text, own.key, "adjectives", clause.word.span)
+        group = ast.Group("adjective", _adverbs_of(clause), (), (word,), clause.span)
+        apply_adjective(state, ctx, own, group, clause_weight(clause, ctx), "base")
+        return
+    for group in clause.groups:
+        apply_group(state, ctx, group, target="base")
+
+
+def _adjective_named_by(ctx: Context, word: ast.Word) -> Entry | None:
+    for entry in ctx.lexicon.lookup(normalise(word.text)):
+        if entry.category == "adjectives":
+            return entry
+    return None
+
+
+# ---------------------------------------------------------------- a feature an adjective draws
+
+
+def _apply_adjective(
+    state: MaterialState, ctx: Context, entry: Entry, clause: ast.Feature, weight: float, colour: ast.Colour | None
+) -> bool:
+    """Apply the adjective at the clause's weight; a colour qualifies it when the entry says "base"."""
+    adjective = ctx.lexicon.require("adjectives", entry.get("adjective"))
+    qualifier = (colour,) if colour is not None and entry.get("colour") == "base" else ()
+    word = ast.Word(clause.word.text, adjective.key, "adjectives", clause.word.span)
+    group = ast.Group("adjective", _adverbs_of(clause), qualifier, (word,), clause.span)
+    apply_adjective(state, ctx, adjective, group, weight * entry.get("weight", 1.0), "base")
+    return bool(qualifier)
+
+
+# ---------------------------------------------------------------- a feature with maps of its own
+
+
+def _draw_maps(
+    state: MaterialState, ctx: Context, entry: Entry, clause: ast.Feature, weight: float, colour: ast.Colour | None
+) -> bool:
+    """Draw the entry's maps; a graph the material already has keeps its map, scaled by the weight.
+    Returns whether the clause's colour went to the maps."""
+    rule = f"features.{entry.key}.maps (weight {weight:g})"
+    words = (*_adverbs_of(clause), clause.word)
+    for graph in _graphs_of(entry):
+        if not _scale_existing(state, graph, entry, weight):
+            for role, ref in entry.get("maps").items():
+                if ref["graph"] == graph:
+                    state.maps[role] = _map_ref(ref, ctx, weight)
+        for role in _roles_of(state, graph):
+            state.note(f"maps.{role}", graph, rule, words)
+    if colour is None or entry.get("colour") != "map":
+        return False
+    for graph in _graphs_of(entry):
+        _name_colour(state, ctx, graph, colour, clause)
+    return True
+
+
+def _graphs_of(entry: Entry) -> list[str]:
+    return list(dict.fromkeys(ref["graph"] for ref in entry.get("maps").values()))
+
+
+def _roles_of(state: MaterialState, graph: str) -> list[str]:
+    return [role for role, ref in state.maps.items() if ref["graph"] == graph]
+
+
+def _scale_existing(state: MaterialState, graph: str, entry: Entry, weight: float) -> bool:
+    """Scale the weighted parameters of the material's own maps of `graph`; False if it has none."""
+    roles = _roles_of(state, graph)
+    if not roles:
+        return False
+    weighted = {name for ref in entry.get("maps").values() if ref["graph"] == graph for name in ref.get("weighted", [])}
+    ranges = graph_params(graph)
+    for role in roles:
+        params = dict(state.maps[role].get("params", {}))
+        for name in weighted:
+            low, high, default = ranges[name]
+            params[name] = min(high, max(low, params.get(name, default) * weight))
+        state.maps[role] = {**state.maps[role], "params": params}
+    return True
+
+
+def _name_colour(state: MaterialState, ctx: Context, graph: str, colour: ast.Colour, clause: ast.Feature) -> None:
+    """The clause's colour as the graph's named colour: 'grey' veins; 'dark' alone darkens the graph's own."""
+    ranges = graph_params(graph)
+    if not all(name in ranges for name in COLOUR_PARAMS):
+        return
+    start = [ranges[name][2] for name in COLOUR_PARAMS]
+    rgb = [min(1.0, max(0.0, float(v))) for v in resolve_colour(colour, ctx, start=start)]
+    for role in _roles_of(state, graph):
+        params: dict[str, Any] = dict(state.maps[role].get("params", {}))
+        params.update(zip(COLOUR_PARAMS, rgb, strict=True))
+        params["color_amount"] = 1.0
+        state.maps[role] = {**state.maps[role], "params": params}
+        state.note(f"maps.{role}", graph, f"features: {colour_text(colour)} {clause.word.text}", colour.words)
+
+
+# ---------------------------------------------------------------- what the clause said that nothing used
+
+
+def _report_unused(state: MaterialState, entry: Entry, clause: ast.Feature, colour: ast.Colour | None) -> None:
+    unused = [w for g in clause.groups for w in g.adjectives]
+    if colour is not None:
+        unused += list(colour.words)
+    if unused:
+        text = " ".join(w.text for w in unused)
+        state.diagnostics.append(
+            Diagnostic(
+                unused[0].span.to(unused[-1].span),
+                Severity.NOTE,
+                UNUSED,
+                f"'{text}' says nothing the {clause.word.text} can show: left out",
+                (f"features.{entry.key} takes degree words ('a few', 'fine', 'strong'){_colour_hint(entry)}",),
+            )
+        )
+
+
+def _colour_hint(entry: Entry) -> str:
+    return " and a colour" if entry.get("colour") else ""
+
+
+def _drawable_hint(ctx: Context) -> str:
+    drawable = sorted(e.key for e in ctx.lexicon.all_of("features").values() if not e.get("missing"))
+    return "features drawn today: " + ", ".join(drawable)
+
+
+def _warn_second_coat(state: MaterialState, clause: ast.Feature) -> None:
+    first = state.selection.coat
+    kept = f"'{first.coat.text}'" if first is not None else "the first coat"
+    state.diagnostics.append(
+        warning(
+            clause.span,
+            SECOND_COAT,
+            f"a second coat '{clause.word.text}': a material has one coat, {kept} is kept",
+            ("give the other coat its own material line, or use 'or' for alternatives",),
+        )
+    )
