@@ -22,7 +22,7 @@ from ..state import Context, MaterialState
 from .base import noun_of
 from .bracket import Move, bracket_move, scaled_steps
 from .refine_colour import refine_colour, refine_named_colour, refine_saturation
-from .refine_effects import refine_adjective
+from .refine_effects import brings_treatment, refine_adjective
 from .refine_target import item_words, refine_weight, surface
 from .words import apply_group
 
@@ -31,15 +31,27 @@ __all__ = ["apply_inline_refinements", "apply_refinement"]
 
 def apply_inline_refinements(state: MaterialState, ctx: Context) -> MaterialState:
     """'shinier aluminum', 'lighter oak': a comparative written before the material is one
-    refinement of the material the rest of the phrase names. A comparative that names its own
-    target ('brighter', 'darker') and has a word after it ('brighter red plastic') reads that word
-    as part of the material ('red plastic'), then refines it ('brighter' — the red)."""
+    refinement of the material the rest of the phrase names. The word after the comparative is
+    part of the material too where the material needs it: a colour ('brighter red plastic' = red
+    plastic, then brighter; 'deeper blue velvet' = blue velvet, then more blue), any word after a
+    comparative that names its own target, and a treatment ('more brushed steel' = brushed steel,
+    then more brushed). A gloss word after 'more' / 'less' is only the refinement's target: 'less
+    glossy plastic' is plastic, a step less glossy."""
     for item in state.selection.refinements:
-        entry = ctx.lexicon.require("refinements", item.word.key)
-        if entry.get("target") != "any" and item.target is not None:
+        if item.target is not None and _describes_material(ctx, item):
             apply_group(state, ctx, _as_group(item.target), target="base")
         apply_refinement(state, ctx, item)
     return state
+
+
+def _describes_material(ctx: Context, item: ast.RefineItem) -> bool:
+    target = item.target
+    if isinstance(target, ast.Colour):
+        return True
+    assert isinstance(target, ast.Word), item
+    if ctx.lexicon.require("refinements", item.word.key).get("target") != "any":
+        return True
+    return target.category == "adjectives" and brings_treatment(ctx.lexicon.require("adjectives", target.key))
 
 
 def _as_group(target: ast.Word | ast.Colour) -> ast.Group:

@@ -9,10 +9,11 @@ paper §4.2), a hue axis on `<colour>.<axis>` (bluer and yellower share 'blue-ye
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
 
 from .. import ast
-from ..colour import apply_ops, linear_to_oklab, oklab_to_linear_in_gamut, scale_chroma, toward_hue
+from ..colour import apply_ops, linear_to_oklab, oklab_to_linear, oklab_to_linear_in_gamut, scale_chroma
 from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .bracket import Move, Step, bracket_move, scaled_steps
@@ -20,6 +21,7 @@ from .colours import colour_text, resolve_colour
 from .refine_target import item_words, note
 
 COLOUR_LIMITS = (0.0, 1.0)
+MAX_LIGHTNESS_GIVEN = 0.1  # OKLab L a hue step may give up for chroma near white or black (our choice)
 LIGHTNESS_AXIS = "lightness"  # the axis of darker / lighter: its bracket is on the colour's own key
 NEUTRAL_CHROMA = 1e-4  # an OKLCh chroma below this has no hue to saturate
 Ops = list[dict[str, Any]]
@@ -32,7 +34,7 @@ def refine_colour(state: MaterialState, entry: Entry, item: ast.RefineItem, dire
     )
     ops = entry.get("ops")
     if ops:
-        step: Step = lambda x: apply_ops(x, scaled_ops(ops, weight))
+        step: Step = lambda x: colour_step(x, scaled_ops(ops, weight))
         axis = entry.get("axis", entry.key)
         key = param if axis == LIGHTNESS_AXIS else f"{param}.{axis}"
     else:
@@ -41,6 +43,36 @@ def refine_colour(state: MaterialState, entry: Entry, item: ast.RefineItem, dire
     new = bracket_move(state.brackets, key, holder[name], Move(direction, step, weight, COLOUR_LIMITS))
     holder[name] = new
     state.note(param, new, f"refinements.{entry.key}: bracket step", item_words(item))
+
+
+def colour_step(rgb: list[float], ops: Ops) -> list[float]:
+    """A refinement's colour operations (shades.toml's), a hue shift ('toward') by hue_step."""
+    out = list(rgb)
+    for op in ops:
+        out = hue_step(out, op["oklab"][1:], op["amount"]) if op["op"] == "toward" else apply_ops(out, [op])
+    return out
+
+
+def hue_step(rgb: list[float], ab: Sequence[float], amount: float) -> list[float]:
+    """OKLab a, b moved `amount` of the way toward `ab`. Near white or black the gamut has no room
+    for chroma: there the colour gives up a little lightness (at most MAX_LIGHTNESS_GIVEN) before
+    it gives up chroma, so 'warmer' on white paint is a warm white, not white again."""
+    L, a, b = linear_to_oklab(rgb)
+    a, b = a + (ab[0] - a) * amount, b + (ab[1] - b) * amount
+    if _fits((L, a, b)):
+        return oklab_to_linear_in_gamut((L, a, b))
+    low = max(0.0, L - MAX_LIGHTNESS_GIVEN)
+    if not _fits((low, a, b)):
+        return oklab_to_linear_in_gamut((L, a, b))
+    high = L
+    for _ in range(24):  # the lightest L that holds this chroma
+        mid = (low + high) / 2
+        low, high = (mid, high) if _fits((mid, a, b)) else (low, mid)
+    return oklab_to_linear_in_gamut((low, a, b))
+
+
+def _fits(lab: Sequence[float]) -> bool:
+    return all(-1e-7 <= c <= 1 + 1e-7 for c in oklab_to_linear(lab))
 
 
 def _colour_param(state: MaterialState, item: ast.RefineItem) -> str:
@@ -107,7 +139,7 @@ def refine_named_colour(
             note(item.span, "N105", f"'{item.word.text} {colour_text(target)}': the colour has none of it to take away")
         )
         return
-    towards: Step = lambda x: toward_hue(x, (0.0, a, b), amount)
+    towards: Step = lambda x: hue_step(x, (a, b), amount)
     away: Step = lambda x: _less_of(x, (a, b), amount)
     key = f"{param}.hue:{colour_text(target)}"
     move = Move(direction, towards if direction > 0 else away, weight, COLOUR_LIMITS)

@@ -35,7 +35,7 @@ def refine_adjective(
     word = _target(item)
     applied = adjective.key in [k for k, _w in state.applied]
     effects = [e for e in effects_for(adjective, state) if e["param"] != "model"]
-    if not applied and (_brings_treatment(adjective) or not effects):
+    if not applied and (brings_treatment(adjective) or not effects):
         state.diagnostics.append(
             warning(
                 item.span,
@@ -67,7 +67,7 @@ def _target(item: ast.RefineItem) -> ast.Word:
     return item.target
 
 
-def _brings_treatment(adjective: Entry) -> bool:
+def brings_treatment(adjective: Entry) -> bool:
     return any(adjective.get(field) for field in ("maps", "coat", "material"))
 
 

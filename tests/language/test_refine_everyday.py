@@ -192,6 +192,25 @@ def test_warmer_and_cooler() -> None:
     assert cool[2] < warm[2]
 
 
+def test_a_hue_step_on_white_gives_up_a_little_lightness_for_its_hue() -> None:
+    s = Session("white linoleum", LEX)
+    warm = lab(s.refine("warmer"))
+    assert warm[2] > 0.01 and warm[0] > 0.85  # a warm white: some yellow-orange, still light
+
+
+@pytest.mark.parametrize(
+    ("comparative", "plain"),
+    [("more brushed steel", "brushed steel"), ("deeper green velvet", "velvet"), ("cooler white paint", "paint")],
+)
+def test_an_inline_comparative_keeps_the_words_the_material_needs(comparative: str, plain: str) -> None:
+    """'more brushed steel' is brushed steel, more brushed (no W104); 'deeper green velvet' is green."""
+    a = compile_source(comparative, "c.cnl", LEX)
+    assert a.ok and not [d for d in a.diagnostics if d.severity.value == "warning"], a.diagnostics
+    b = compile_source(plain, "p.cnl", LEX).materials[0]
+    assert a.materials[0]["params"] != b["params"]
+    assert bool(a.materials[0]["maps"]) == bool(b["maps"]) or "brushed" in comparative
+
+
 def test_saturation_up_and_down_keeps_the_hue() -> None:
     s = Session("teal velvet", LEX)
     c0, h0 = chroma(s.material), math.atan2(lab(s.material)[2], lab(s.material)[1])
