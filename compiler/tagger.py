@@ -37,9 +37,10 @@ __all__ = [
 
 TOKEN_RE = re.compile(r"[^\W\d_](?:[\w'’\-]*\w)?|\d+(?:\.\d+)?%?|[,;:&]|\S", re.UNICODE)
 OPEN_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "REFINE")
+# a word that is a feature and a coat reads as the feature where both parse ("with a matte finish": the surface)
+_FEATURE_FIRST = tuple(t for tag in OPEN_TAGS for t in (("FEATURE", tag) if tag == "COAT" else (tag,)))
 TAG_PREFERENCE = {
-    t: i
-    for i, t in enumerate(("NAME", "COLON", "ARTICLE", "AND", "OR", "WITH", "COMMA", *OPEN_TAGS, "OBJECT", "FEATURE"))
+    t: i for i, t in enumerate(("NAME", "COLON", "ARTICLE", "AND", "OR", "WITH", "COMMA", *_FEATURE_FIRST, "OBJECT"))
 }
 
 
@@ -118,7 +119,7 @@ class Tagger:
     def tag_line(self, line: str, line_no: int, offset: int) -> tuple[list[Tagged], list[Diagnostic]]:
         """Return (tagged words, diagnostics) for one line of source."""
         raw = raw_tokens(line)
-        if raw and not (raw[-1][0][0].isalnum() and raw[0][0][0].isalnum()):
+        if raw and not (raw[-1][0][0].isalnum() and raw[0][0][0].isalpha()):
             raw = self._undecorated(raw)
         tagged: list[Tagged] = []
         diags: list[Diagnostic] = []
@@ -148,7 +149,8 @@ class Tagger:
 
     def _undecorated(self, raw: list[RawToken]) -> list[RawToken]:
         """The line's words without decorative punctuation: trailing marks ('.', '!', '...'), one
-        leading bullet ('- ', '* ', '•') and quotes around the whole line (word_formation rules)."""
+        leading bullet ('- ', '* ', '•') or list number ('1.', '2)') and quotes around the whole
+        line (word_formation rules)."""
         rules = self.formation().rules
         lo, hi = 0, len(raw)
         for _round in range(2):  # '"Brushed steel".': the mark, then the quotes, then a mark inside
@@ -156,6 +158,8 @@ class Tagger:
                 hi -= 1
             if hi - lo > 1 and raw[lo][0] in rules.leading:
                 lo += 1
+            elif hi - lo > 2 and raw[lo][0].isdigit() and raw[lo + 1][0] in rules.number_marks:  # "1. oak"
+                lo += 2
             if hi - lo > 2 and raw[lo][0] in rules.quotes and raw[hi - 1][0] in rules.quotes:
                 lo, hi = lo + 1, hi - 1
         return raw[lo:hi]
@@ -346,14 +350,20 @@ class Tagger:
 
 
 def _may_join(tagged: list[Tagged]) -> bool:
-    """Whether a line has an object or two nouns side by side (see Tagger._joined_objects); a
-    word's candidates are sorted by TAG_PREFERENCE, so NOUN and OBJECT readings come last."""
+    """Whether a line has an object, two nouns side by side or a head word before another word
+    (see Tagger._joined_objects); a word's candidates are sorted by TAG_PREFERENCE, so NOUN,
+    OBJECT and FEATURE readings come last."""
     noun_before = False
     for word in tagged:
-        if not word.candidates:
+        candidates = word.candidates
+        if not candidates:
             noun_before = False
             continue
-        last = word.candidates[-1].tag
+        last = candidates[-1].tag
+        if last == "FEATURE":  # 'finish', 'grain': a head word, or a noun or object that is a feature too
+            if word is not tagged[-1]:
+                return True
+            last = candidates[-2].tag if len(candidates) > 1 else last
         if (
             last == "OBJECT"
             or (noun_before and last in ("NOUN", "REFINE"))

@@ -68,11 +68,17 @@ class Rules:
         self.trailing = frozenset(joined("punctuation", "trailing"))
         self.leading = frozenset(joined("punctuation", "leading"))
         self.quotes = frozenset(joined("punctuation", "quotes"))
+        self.number_marks = frozenset(joined("punctuation", "number_marks"))
         self.negation_words = frozenset(joined("negation", "words"))
         self.negation_prefixes = joined("negation", "prefixes")
         self.softeners = frozenset(joined("negation", "softeners"))
         self.soft_adverb = next((x["negation"]["soft_adverb"] for x in layers if x["negation"]["soft_adverb"]), "")
-        self.prefixes = {form: p["adverb"] for layer in layers for p in layer["prefix"] for form in p["forms"]}
+        self.prefixes = {
+            form: p["adverb"] for layer in reversed(layers) for p in layer["prefix"] for form in p["forms"]
+        }
+        self.prefix_endings = {
+            form: tuple(p["endings"]) for layer in reversed(layers) for p in layer["prefix"] for form in p["forms"]
+        }
         self.suffixes = [s for layer in layers for s in layer["suffix"]]
         compounds = [layer["compounds"] for layer in layers]
         self.join = any(c["join"] for c in compounds)
@@ -204,7 +210,7 @@ class WordFormation:
                 rest = word[len(form) :]
                 hyphen = rest.startswith("-")
                 rest = rest.lstrip("-")
-                found = self._resolved(rest) if len(rest) >= self.rules.min_part else ()
+                found = self._prefix_target(rest, self.rules.prefix_endings[form])
                 if found:
                     start = len(word) - len(rest)
                     parts = (
@@ -214,6 +220,18 @@ class WordFormation:
                     sep = "-" if hyphen else ""
                     return Reading(parts, 1, f"read '{word}' as '{adverb} {rest}' ({form}{sep}: {adverb})")
         return None
+
+    def _prefix_target(self, rest: str, endings: Sequence[str]) -> tuple[Candidate, ...]:
+        """The adjective a degree prefix qualifies: the rest of the word, plus an ending ("shine" + "y")."""
+        if len(rest) < self.rules.min_part:
+            return ()
+        stems = (rest, rest[:-1]) if rest.endswith("e") else (rest,)  # shine + y: shiny (the e drops)
+        for ending in endings:
+            for stem in stems if ending else (rest,):
+                found = self._kept(self._resolved(stem + ending), ("ADJ",))
+                if found:
+                    return found
+        return ()
 
     def _adverb(self, key: str) -> tuple[Candidate, ...]:
         return (Candidate("ADV", key, "adverbs"),)
@@ -304,7 +322,7 @@ class WordFormation:
         return Reading(tuple(Part(0, 1, 0, None, p.candidates) for p in reading.parts), reading.words, reading.note)
 
     def _prefixed_word(self, first: str, adverb: str, second: str) -> Reading | None:
-        found = self._resolved(second)
+        found = self._prefix_target(second, self.rules.prefix_endings[first])
         if not found:
             return self.read(first)
         parts = (Part(0, 0, 0, None, self._adverb(adverb)), Part(1, 1, 0, None, found))

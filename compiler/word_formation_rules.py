@@ -21,7 +21,7 @@ __all__ = ["RULE_TAGS", "check_rule_names", "check_rules", "empty_rules", "wordn
 RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN")
 
 _LISTS = {
-    "punctuation": ("trailing", "leading", "quotes"),
+    "punctuation": ("trailing", "leading", "quotes", "number_marks"),
     "negation": ("words", "prefixes", "softeners"),
 }
 
@@ -29,7 +29,7 @@ _LISTS = {
 def empty_rules() -> dict[str, Any]:
     """The normal form of a file with no rules at all."""
     return {
-        "punctuation": {"trailing": [], "leading": [], "quotes": []},
+        "punctuation": {"trailing": [], "leading": [], "quotes": [], "number_marks": []},
         "negation": {"words": [], "prefixes": [], "softeners": [], "soft_adverb": ""},
         "prefix": [],
         "suffix": [],
@@ -63,9 +63,10 @@ def _words(c: Checker, value: object, path: tuple[str | int, ...], blank: bool =
 
 def _prefix(c: Checker, raw: object, i: int) -> dict[str, Any]:
     table = c.table(raw, ("prefix", i))
-    c.known_keys(table, ("forms", "adverb", "doc"), ("prefix", i))
+    c.known_keys(table, ("forms", "adverb", "endings", "doc"), ("prefix", i))
     return {
         "forms": _words(c, c.required(table, "forms", ("prefix", i)), ("prefix", i, "forms")),
+        "endings": _words(c, table.get("endings", [""]), ("prefix", i, "endings"), blank=True),
         "adverb": c.string(c.required(table, "adverb", ("prefix", i)), ("prefix", i, "adverb"), blank=False),
         "doc": c.string(c.required(table, "doc", ("prefix", i)), ("prefix", i, "doc"), blank=False),
     }
