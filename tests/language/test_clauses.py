@@ -243,3 +243,35 @@ def test_a_clause_on_a_refinement_line_parses(stdlib):
     item = parse("with fine scratches", stdlib)
     assert isinstance(item, ast.Refinement)
     assert item.items == () and [f.word.key for f in item.features] == ["scratches"]
+
+
+# ---------------------------------------------------------------- German: 'mit' clauses
+
+
+@pytest.fixture(scope="module")
+def german():
+    from cnlmc.api import lexicon_for
+
+    return lexicon_for(("de",))
+
+
+@pytest.mark.parametrize(
+    "text,graph",
+    [
+        ("Granit mit weißen Sprenkeln", "granite"),
+        ("Bronze mit einer Patina", "patina"),
+        ("Eiche mit einer deutlichen Maserung", "wood"),
+        ("Chrom mit zahlreichen Kratzern", "scratched"),
+        ("Putz mit vereinzelten Haarrissen", "cracked"),
+    ],
+)
+def test_german_feature_clauses(compile_text, german, text, graph):
+    result = compile_text(text, german)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert graph in graphs(result.materials[0])
+
+
+def test_german_degree_words_weigh_like_the_english_ones(compile_text, german):
+    few = compile_text("Stahl mit wenigen Rostflecken", german).materials[0]
+    english = compile_text("steel with a few rust spots").materials[0]
+    assert map_params(few, "rust") == map_params(english, "rust")
