@@ -4,8 +4,9 @@ Adjectives apply by their `stage` (stdlib/schema.toml; docs/language.md "Degrees
 shaping (brushed, sandblasted), treatment (anodized, oiled, painted), finish (matte, polished),
 then the colour words, then ageing (rusty, weathered), then coats (varnished). Within a stage an
 adjective that sets a value applies before one that scales or shifts it ("satin shiny" = shiny
-satin); the rest apply by key, so word order never changes the numbers, except between two words
-that contradict each other (or two colours), where the later word applies last and wins.
+satin), the rest by key, so word order never changes the numbers, except where two words of one
+stage contradict each other (or two colours meet): then that stage keeps the phrase order, and the
+later word applies last and wins.
 """
 
 from __future__ import annotations
@@ -18,8 +19,6 @@ from ..lexicon import Entry, Lexicon
 STAGES = ("shaping", "treatment", "finish", "colour", "ageing", "coat")
 DEFAULT_STAGE = "finish"  # an adjective without a declared stage describes the surface's look
 
-SortKey = tuple[int, int, int]
-
 
 def stage_of(adjective: Entry) -> str:
     return str(adjective.get("stage", DEFAULT_STAGE))
@@ -28,13 +27,12 @@ def stage_of(adjective: Entry) -> str:
 def canonical_groups(groups: Sequence[ast.Group], lexicon: Lexicon) -> Sequence[ast.Group]:
     if len(groups) < 2 and not (groups and groups[0].colours and groups[0].adjectives):
         return groups
-    buckets: dict[tuple[int, int], list[tuple[int, ast.Group]]] = {}
+    stages: dict[int, list[tuple[int, ast.Group]]] = {}
     for index, group in enumerate(_colours_apart(groups, lexicon)):
-        rank, setting = _rank(group, lexicon)
-        buckets.setdefault((rank, setting), []).append((index, group))
+        stages.setdefault(_rank(group, lexicon), []).append((index, group))
     ordered: list[ast.Group] = []
-    for place in sorted(buckets):
-        ordered += _within_bucket(buckets[place], lexicon)
+    for rank in sorted(stages):
+        ordered += _within_stage(stages[rank], lexicon)
     return ordered
 
 
@@ -52,15 +50,14 @@ def _colours_apart(groups: Sequence[ast.Group], lexicon: Lexicon) -> list[ast.Gr
     return out
 
 
-def _rank(group: ast.Group, lexicon: Lexicon) -> tuple[int, int]:
-    """(stage rank, 0 for words that set a value / 1 for words that scale or shift one)."""
+def _rank(group: ast.Group, lexicon: Lexicon) -> int:
+    """The stage a group applies in (colour words have their own; unknown words come last)."""
     if group.kind == "colour":
-        named = any(c.base is not None for c in group.colours)
-        return STAGES.index("colour"), 0 if named else 1
+        return STAGES.index("colour")
     adjective = _adjective(group, lexicon)
     if adjective is None:
-        return len(STAGES), 0  # dangling adverbs and unknown words: last, in phrase order
-    return STAGES.index(stage_of(adjective)), 0 if _sets_a_value(adjective) else 1
+        return len(STAGES)  # dangling adverbs and unknown words: last, in phrase order
+    return STAGES.index(stage_of(adjective))
 
 
 def _adjective(group: ast.Group, lexicon: Lexicon) -> Entry | None:
@@ -74,12 +71,14 @@ def _sets_a_value(adjective: Entry) -> bool:
     return bool(adjective.get("material")) or any(e.get("op") == "set" for e in effects)
 
 
-def _within_bucket(members: list[tuple[int, ast.Group]], lexicon: Lexicon) -> list[ast.Group]:
-    """Phrase order where two members contradict each other (or are colours), else by adjective key."""
+def _within_stage(members: list[tuple[int, ast.Group]], lexicon: Lexicon) -> list[ast.Group]:
+    """Phrase order where two members contradict each other (or are colours); else the words that
+    set a value first, then those that scale or shift one, each by adjective key."""
     entries = [_adjective(g, lexicon) for _, g in members]
-    if len(members) < 2 or any(e is None for e in entries) or _any_opposed([e for e in entries if e]):
+    known = [e for e in entries if e is not None]
+    if len(members) < 2 or len(known) < len(entries) or _any_opposed(known):
         return [g for _, g in members]
-    keyed = sorted(zip(entries, members), key=lambda pair: (pair[0].key if pair[0] else "", pair[1][0]))
+    keyed = sorted(zip(known, members), key=lambda pair: (not _sets_a_value(pair[0]), pair[0].key, pair[1][0]))
     return [member[1] for _, member in keyed]
 
 

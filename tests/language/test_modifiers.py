@@ -172,6 +172,20 @@ def test_a_contradiction_says_which_word_won_whatever_the_order():
     assert [d.message for d in same_stage if d.code == "W101"] == ["'shiny' contradicts 'dull': 'shiny' wins"]
 
 
+@pytest.mark.parametrize("first_word,last_word", [("matte", "shiny"), ("shiny", "matte"), ("dull", "glossy")])
+def test_within_a_stage_the_later_of_two_contradicting_words_wins(first_word, last_word):
+    result = compiled(f"{first_word} {last_word} vinyl")
+    (w101,) = [d for d in result.diagnostics if d.code == "W101"]
+    assert w101.message == f"'{last_word}' contradicts '{first_word}': '{last_word}' wins"
+    assert result.materials[0]["provenance"]["roughness"][-1]["words"] == [last_word]  # applied last
+
+
+@pytest.mark.parametrize("word", ["kinda", "sorta", "so", "dead", "well"])
+def test_colloquial_degree_words(word):
+    assert [e.category for e in LEXICON.lookup((word,))] == ["adverbs"]
+    assert compiled(f"{word} matte ceramic").ok
+
+
 def test_every_stdlib_adjective_declares_its_stage():
     from cnlmc.passes.order import STAGES
 
