@@ -21,12 +21,13 @@ from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .base import noun_of
 from .bracket import Move, bracket_move, scaled_steps
+from .coats import apply_clauses
 from .refine_colour import refine_colour, refine_named_colour, refine_saturation
 from .refine_effects import brings_treatment, refine_adjective
 from .refine_target import item_words, refine_weight, surface
 from .words import apply_group
 
-__all__ = ["apply_inline_refinements", "apply_refinement"]
+__all__ = ["apply_inline_refinements", "apply_refinement", "apply_refinement_line"]
 
 
 def apply_inline_refinements(state: MaterialState, ctx: Context) -> MaterialState:
@@ -58,6 +59,15 @@ def _as_group(target: ast.Word | ast.Colour) -> ast.Group:
     if isinstance(target, ast.Colour):
         return ast.Group("colour", (), (target,), (), target.span)
     return ast.Group("adjective", (), (), (target,), target.span)
+
+
+def apply_refinement_line(state: MaterialState, ctx: Context, line: ast.Refinement) -> None:
+    """A refinement line: its items in order ('darker, less glossy'), or its 'with' clauses
+    ('with a glossy varnish' below 'walnut' adds the coat; passes/coats.py)."""
+    for item in line.items:
+        apply_refinement(state, ctx, item)
+    if line.coat is not None or line.features:
+        apply_clauses(state, ctx, line.coat, line.features)
 
 
 def apply_refinement(state: MaterialState, ctx: Context, item: ast.RefineItem) -> None:
