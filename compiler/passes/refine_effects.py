@@ -22,7 +22,7 @@ from ..formulas import apply_op, invert_op
 from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .bracket import Move, Step, bracket_move, scaled_steps
-from .refine_target import item_words, note, surface
+from .refine_target import item_words, move_sigma_too, note, surface
 from .words import Effect, effects_for
 
 MIN_MOVE = 1e-6  # a formula step smaller than this does not move the value
@@ -90,9 +90,12 @@ def _refine_effect(
         return
     param_direction = direction * pole
     step = _step(ctx, effect, current, param_direction, direction, weights)
-    new = bracket_move(state.brackets, key, current, Move(param_direction, step, weights[1], limits))
+    move = Move(param_direction, step, weights[1], limits)
+    new = bracket_move(state.brackets, key, current, move)
     holder[param] = new
-    state.note(key, new, f"refinements.{item.word.key} {_target(item).key}: bracket step", item_words(item))
+    rule = f"refinements.{item.word.key} {_target(item).key}: bracket step"
+    state.note(key, new, rule, item_words(item))
+    move_sigma_too(state, key, move, item_words(item), rule)
 
 
 def _pole(effect: Effect, current: float, limits: tuple[float, float] | None) -> int:

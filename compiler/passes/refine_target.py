@@ -9,6 +9,7 @@ from ..diagnostics import Diagnostic, Severity
 from ..params import COAT_PARAMS, PARAMS, ranges
 from ..spans import Span
 from ..state import Context, MaterialState
+from .bracket import Move, bracket_move
 
 PARAM_RANGES = ranges(PARAMS)  # param -> (low, high), from the parameter table (immutable data)
 COAT_RANGES = ranges(COAT_PARAMS)
@@ -41,3 +42,17 @@ def item_words(item: ast.RefineItem) -> tuple[ast.Word, ...]:
 def note(span: Span | None, code: str, message: str, hints: tuple[str, ...] = ()) -> Diagnostic:
     """A NOTE diagnostic: how a refinement was read (never a warning)."""
     return Diagnostic(span, Severity.NOTE, code, message, hints)
+
+
+DIFFUSE_SIGMA = "diffuse_roughness"  # the Oren-Nayar sigma: roughness words move it too (passes/words.py)
+
+
+def move_sigma_too(state: MaterialState, key: str, move: Move, words: tuple[ast.Word, ...], rule: str) -> None:
+    """A roughness refinement of the base also moves the Oren-Nayar sigma of a surface that has one
+    ('rougher' on concrete or velvet), by the same step read in radians, on its own bracket."""
+    sigma = state.params.get(DIFFUSE_SIGMA, 0.0)
+    if key != "roughness" or not (isinstance(sigma, (int, float)) and sigma > 0):
+        return
+    sigma_move = Move(move.direction, move.step, move.weight, PARAM_RANGES.get(DIFFUSE_SIGMA))
+    new = bracket_move(state.brackets, DIFFUSE_SIGMA, sigma, sigma_move)
+    state.record(DIFFUSE_SIGMA, new, f"{rule}, on the Oren-Nayar sigma too", words)

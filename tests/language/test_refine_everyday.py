@@ -116,6 +116,16 @@ def test_gloss_refines_the_coat_one_sees() -> None:
     assert after["params"]["roughness"] == base
 
 
+def test_rougher_reaches_the_oren_nayar_sigma_of_a_diffuse_material() -> None:
+    s = Session("sandstone", LEX)
+    sigma = s.material["params"].get("diffuse_roughness", 0.0)
+    if s.material["model"]["diffuse"] != "oren_nayar":
+        pytest.skip("sandstone is not an Oren-Nayar surface in this lexicon")
+    rougher = s.refine("rougher")["params"]["diffuse_roughness"]
+    smoother = s.refine("smoother")["params"]["diffuse_roughness"]
+    assert sigma < smoother < rougher
+
+
 def test_the_range_end_is_a_bound_so_nothing_is_clamped_and_it_comes_back() -> None:
     s = Session("polished chrome", LEX)
     values = [visible_roughness(s.material)]
