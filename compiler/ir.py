@@ -137,8 +137,11 @@ def _plain(value: object) -> Any:
     raise TypeError(f"{type(value).__name__} is not JSON")
 
 
-#: what json.dumps(value, ensure_ascii=False, default=_plain) makes anew on every call (it holds no state)
-_ENCODER = json.JSONEncoder(ensure_ascii=False, default=_plain)
+#: what json.dumps(value, ensure_ascii=False, default=_plain) makes anew on every call (it holds no
+#: state), without its check for circular references: an IR is made of fresh containers (or read
+#: from JSON) and has none, and the check costs a dictionary insert and delete per container,
+#: a sixth of the encoding of a material with its provenance
+_ENCODER = json.JSONEncoder(ensure_ascii=False, check_circular=False, default=_plain)
 
 
 class EncodedMaterial(Mapping[str, Any]):

@@ -21,6 +21,8 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import pickle
+import signal
 from collections.abc import Iterator, Mapping
 from multiprocessing.connection import Connection
 from typing import Any
@@ -29,6 +31,7 @@ from . import ast
 from .analyze import base_name, build_states, orphan_refinement, unique_name
 from .diagnostics import Diagnostic
 from .document import parse_line
+from .interrupts import SIGNALS
 from .ir import EncodedMaterial, JSONDict, json_text, material_ir
 from .lines import LINE_END
 from .material import Material
@@ -114,7 +117,9 @@ def _receive(pipe: Connection) -> list[Event]:
     try:
         result = pipe.recv()
     except EOFError:
-        raise RuntimeError("a worker process stopped before it sent its materials") from None
+        raise RuntimeError(
+            f"a worker process stopped before it sent its materials ({WORKERS_VARIABLE}=1 compiles in one process)"
+        ) from None
     if isinstance(result, BaseException):
         raise result  # what the same document raises in one process
     events: list[Event] = result
@@ -167,14 +172,29 @@ class _Replay:
 
 def _work(pipe: Connection, source: str, ctx: Context, chunks: list[tuple[int, int, int, int | None]]) -> None:
     """A worker process: each of its chunks' events down the pipe, in order (an exception instead,
-    and nothing more, where compiling fails)."""
+    and nothing more, where compiling fails). Signals end it at once, as they would a program
+    without handlers: the parent's handlers and clean-up are the parent's (cnlmc.interrupts)."""
+    for signum in SIGNALS:
+        signal.signal(signum, signal.SIG_DFL)
     try:
-        for index, number, offset, end in chunks:
-            pipe.send(chunk_events(source, ctx, number, offset, end, first=index == 0))
-    except BaseException as exc:  # handed to the parent, which raises it
-        pipe.send(exc)
+        try:
+            for index, number, offset, end in chunks:
+                pipe.send(chunk_events(source, ctx, number, offset, end, first=index == 0))
+        except Exception as exc:  # handed to the parent, which raises it
+            pipe.send(_sendable(exc))
+    except OSError:  # the parent has gone or stopped reading: nothing left to tell
+        pass
     finally:
         pipe.close()
+
+
+def _sendable(exc: Exception) -> Exception:
+    """`exc`, or a RuntimeError saying what it was where it cannot be pickled."""
+    try:
+        pickle.dumps(exc)
+    except Exception:  # anything pickling raises
+        return RuntimeError(f"{type(exc).__name__}: {exc}")
+    return exc
 
 
 def chunk_events(source: str, ctx: Context, number: int, offset: int, end: int | None, first: bool) -> list[Event]:

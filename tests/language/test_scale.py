@@ -294,3 +294,34 @@ def test_the_cli_writes_the_same_bytes_with_one_or_two_workers(tmp_path):
         results.append((out.read_bytes(), r.stderr.replace(f"big{workers}.ir.json", "")))
     assert results[0] == results[1]
     assert json.loads(results[0][0])["materials"][-1]["name"].startswith("m")
+
+
+def test_a_signal_during_a_compile_with_workers_leaves_nothing(tmp_path):
+    """SIGTERM to the CLI while two workers compile: exit 143 with the one-line message, no
+    traceback, no file or temp in the output folder, no worker left running."""
+    import signal
+    import time
+
+    from cnlmc.parallel import PARALLEL_MIN_LINES
+
+    source = tmp_path / "big.cnl"
+    source.write_text(mixed_source(PARALLEL_MIN_LINES * 2), encoding="utf-8")
+    folder = tmp_path / "out"
+    folder.mkdir()
+    command = [sys.executable, "-m", "cnlmc", "compile", str(source), "-o", str(folder / "big.ir.json")]
+    env = {**os.environ, "CNLMC_WORKERS": "2"}
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env)
+    deadline = time.monotonic() + 120
+    while not any(folder.iterdir()) and time.monotonic() < deadline:  # until the staged temp exists
+        time.sleep(0.05)
+    time.sleep(0.5)  # the workers are running
+    process.send_signal(signal.SIGTERM)
+    _out, err = process.communicate(timeout=60)
+    assert process.returncode == 128 + signal.SIGTERM, err
+    assert "interrupted by SIGTERM" in err and "Traceback" not in err
+    assert list(folder.iterdir()) == []
+    time.sleep(0.5)
+    workers = subprocess.run(
+        ["pgrep", "-f", str(source)], capture_output=True, text=True
+    )  # forks share the command line
+    assert workers.stdout == "", "a worker outlived the compile"
