@@ -126,16 +126,17 @@ def test_the_er_form_alone_on_a_line_is_still_the_comparative(de):
 
 
 def test_every_comparative_that_is_also_a_declined_positive_reads_both_ways(de):
-    """The rule behind the -er aliases: a German refinement 'Xer' whose 'X' is an adjective, a shade
-    or a colour must also read as that word, else 'Xer Stahl' becomes a refinement."""
-    for refinement in overlay_file("refinements_de.toml").values():
+    """The rule behind the -er aliases: a German refinement 'Xer' whose 'X' is an adjective, a shade,
+    a colour or a degree word must also read as that word, else 'Xer Stahl' becomes a refinement."""
+    for key, refinement in overlay_file("refinements_de.toml").items():
         for form in refinement["aliases"]:
-            if not form.endswith("er"):
+            if not form.endswith("er") or key in ("more", "less"):  # mehr, weniger: quantities, not qualities
                 continue
-            positives = [e for e in de.lookup((form[:-2],)) if e.category in ("adjectives", "shades", "colours")]
-            for positive in positives:
-                readings = {(e.category, e.key) for e in de.lookup((form,))}
-                assert (positive.category, positive.key) in readings, (form, positive.key)
+            kinds = ("adjectives", "shades", "colours", "adverbs")
+            positives = [e for e in de.lookup((form[:-2],)) if e.category in kinds]
+            readings = {(e.category, e.key) for e in de.lookup((form,))}
+            if positives:  # at least one positive reading, so the form before a noun is not a refinement
+                assert readings & {(e.category, e.key) for e in positives}, (form, positives)
 
 
 # ---------------------------------------------------------------- degrees and colours
@@ -205,3 +206,9 @@ def test_viel_is_a_bigger_step_than_etwas(de):
     much = Session("roter Kunststoff", lexicon=de).refine("viel dunkler")["params"]["base_color"]
     little = Session("roter Kunststoff", lexicon=de).refine("etwas dunkler")["params"]["base_color"]
     assert sum(much) < sum(little) < sum(start)
+
+
+def test_the_er_form_of_a_degree_word_in_a_clause(de):
+    """'mit feiner Maserung' (strong dative): fine grain, not the comparative 'finer'."""
+    assert same_look(material("Eiche mit feiner Maserung", de), material("oak with fine grain", de))
+    assert same_look(material("Eiche mit feiner Maserung", de), material("Eiche mit einer feinen Maserung", de))
