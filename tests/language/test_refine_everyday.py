@@ -232,6 +232,32 @@ def test_saturation_up_and_down_keeps_the_hue() -> None:
     assert c3 < c2
 
 
+@pytest.mark.parametrize(
+    ("phrase", "line", "what"),
+    [
+        ("sage plastic", "richer", lambda before, after: chroma(after) > chroma(before)),
+        ("sage plastic", "greyer", lambda before, after: chroma(after) < chroma(before)),
+        ("grey rubber", "browner", lambda before, after: lab(after)[2] > lab(before)[2]),
+        ("grey rubber", "whiter", lambda before, after: lightness(after) > lightness(before)),
+    ],
+)
+def test_one_word_colour_refinements(phrase: str, line: str, what) -> None:
+    s = Session(phrase, LEX)
+    before = s.material
+    assert what(before, s.refine(line))
+
+
+@pytest.mark.parametrize(
+    ("phrase", "line", "what"),
+    [("teak", "grainier", "grain"), ("hammered brass", "bumpier", "strength"), ("rusty iron", "rustier", "coverage")],
+)
+def test_one_word_map_refinements(phrase: str, line: str, what: str) -> None:
+    s = Session(phrase, LEX)
+    before = s.material
+    rows = material_changes(before, s.refine(line))
+    assert any(what in row for row in rows), rows
+
+
 def test_a_grey_has_no_hue_to_saturate_and_says_so() -> None:
     s = Session("white ceramic", LEX)
     before = s.material["params"]["base_color"]
