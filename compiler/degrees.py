@@ -50,6 +50,10 @@ def weighted_formula(
 ) -> Any:
     """One lexicon formula at an adverb weight, kept inside `bounds` (per channel for colours).
     `degree`: the parameter is a degree scale (roughness, anisotropy), whose `set` levels intensify."""
+    if type(x) is float and weight <= 1.0 and bounds is not None and op in _LINEAR:
+        exact = _paper_share(op, x, value, weight, bounds)
+        if exact is not None:
+            return exact
     if op == "set" and (isinstance(value, str) or x is None):
         return value
     if op == "blend" or bounds is None:  # blend never leaves [x, value]; an unbounded value keeps the paper's rule
@@ -60,6 +64,24 @@ def weighted_formula(
         values = value if isinstance(value, list) else [value] * len(x)
         return [_weighted(op, a, b, weight, bounds) for a, b in zip(x, values)]
     return _weighted(op, x, value, weight, bounds)
+
+
+_LINEAR = ("set", "mul", "add")
+
+
+def _paper_share(op: str, x: float, value: Any, weight: float, bounds: Bounds) -> float | None:
+    """The common case, without the knee: the paper's formula when its full effect stays out of the
+    knees (or scales toward a zero bound); None when the saturating path is needed."""
+    if type(value) is not float and type(value) is not int:
+        return None
+    if op == "set":
+        return float(value) if weight == 1.0 else x + weight * (value - x)
+    full = x * value if op == "mul" else x + value
+    lo, hi = bounds
+    width = KNEE * (hi - lo)
+    if lo + width <= full <= hi - width or (op == "mul" and lo == 0.0 and 0.0 <= value <= 1.0):
+        return x + weight * (full - x)
+    return None
 
 
 def _weighted(op: str, x: float, value: float, weight: float, bounds: Bounds) -> float:

@@ -75,6 +75,8 @@ class LexiconCaches:
       of that lexicon effect (passes/words.py)
     - rounded_optics: (noun key, parameter) -> the noun's list value rounded for the IR (ir.py)
     - word_formation: the rules of word_formation*.toml, compiled on first use (cnlmc.word_formation)
+    - stage_orders: the describing groups' (kind, adjective key, has a colour) -> the canonical order
+      they apply in (passes/order.py)
     """
 
     MAX_ENTRIES = 4096  # a memo this full starts over
@@ -90,6 +92,7 @@ class LexiconCaches:
         self.colour_phrases: tuple[tuple[str, tuple[float, float, float]], ...] | None = None
         self.rounded_optics: dict[tuple[str, str], list[float]] = {}
         self.word_formation: WordFormation | None = None
+        self.stage_orders: dict[tuple[tuple[str, str | None, bool], ...], tuple[tuple[int, str], ...]] = {}
 
 
 class Lexicon:

@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from .. import ast
-from ..lexicon import Entry, Lexicon
+from ..lexicon import Entry, Lexicon, LexiconCaches
 
 STAGES = ("shaping", "treatment", "finish", "colour", "ageing", "coat")
 DEFAULT_STAGE = "finish"  # an adjective without a declared stage describes the surface's look
@@ -24,29 +24,65 @@ def stage_of(adjective: Entry) -> str:
     return str(adjective.get("stage", DEFAULT_STAGE))
 
 
+GroupKey = tuple[str, "str | None", bool]  # (kind, adjective key or None, has a colour)
+Step = tuple[int, str]  # (index of the group in the phrase, "all" | "colour" | "adjective" part of it)
+
+
 def canonical_groups(groups: Sequence[ast.Group], lexicon: Lexicon) -> Sequence[ast.Group]:
     if len(groups) < 2 and not (groups and groups[0].colours and groups[0].adjectives):
         return groups
-    stages: dict[int, list[tuple[int, ast.Group]]] = {}
-    for index, group in enumerate(_colours_apart(groups, lexicon)):
-        stages.setdefault(_rank(group, lexicon), []).append((index, group))
-    ordered: list[ast.Group] = []
-    for rank in sorted(stages):
-        ordered += _within_stage(stages[rank], lexicon)
-    return ordered
+    key = tuple([(g.kind, g.adjectives[0].key if g.adjectives else None, bool(g.colours)) for g in groups])
+    memo = lexicon.caches.stage_orders
+    plan = memo.get(key)
+    if plan is None:
+        if len(memo) >= LexiconCaches.MAX_ENTRIES:
+            memo.clear()
+        plan = memo[key] = _plan(groups, lexicon)
+    if not plan:
+        return groups  # already in canonical order
+    return [_part(groups[index], part) for index, part in plan]
 
 
-def _colours_apart(groups: Sequence[ast.Group], lexicon: Lexicon) -> list[ast.Group]:
+def _plan(groups: Sequence[ast.Group], lexicon: Lexicon) -> tuple[Step, ...]:
+    """The order of the groups (and of their colour and adjective parts); () when it is the phrase's."""
+    stages: dict[int, list[tuple[Step, ast.Group]]] = {}
+    for step, group in _colours_apart(groups, lexicon):
+        stages.setdefault(_rank(group, lexicon), []).append((step, group))
+    plan = _rejoin([step for rank in sorted(stages) for step in _within_stage(stages[rank], lexicon)])
+    identity = tuple((i, "all") for i in range(len(groups)))
+    return () if plan == identity else plan
+
+
+def _rejoin(steps: list[Step]) -> tuple[Step, ...]:
+    """An adjective whose own colour applies right after it is the group as written ("dark oiled")."""
+    out: list[Step] = []
+    for step in steps:
+        if step[1] == "colour" and out and out[-1] == (step[0], "adjective"):
+            out[-1] = (step[0], "all")
+        else:
+            out.append(step)
+    return tuple(out)
+
+
+def _part(group: ast.Group, part: str) -> ast.Group:
+    if part == "colour":
+        return ast.Group("colour", (), group.colours, (), group.span)
+    if part == "adjective":
+        return ast.Group(group.kind, group.adverbs, (), group.adjectives, group.span)
+    return group
+
+
+def _colours_apart(groups: Sequence[ast.Group], lexicon: Lexicon) -> list[tuple[Step, ast.Group]]:
     """A colour before an adjective that does not take one ("green faded", unlike "blue anodized")
     is a colour word of its own, applied in the colour stage."""
-    out: list[ast.Group] = []
-    for group in groups:
+    out: list[tuple[Step, ast.Group]] = []
+    for index, group in enumerate(groups):
         adjective = _adjective(group, lexicon)
         if adjective is None or not group.colours or adjective.get("colour_target"):
-            out.append(group)
+            out.append(((index, "all"), group))
             continue
-        out.append(ast.Group("colour", (), group.colours, (), group.span))
-        out.append(ast.Group(group.kind, group.adverbs, (), group.adjectives, group.span))
+        for part in ("colour", "adjective"):
+            out.append(((index, part), _part(group, part)))
     return out
 
 
@@ -71,15 +107,15 @@ def _sets_a_value(adjective: Entry) -> bool:
     return bool(adjective.get("material")) or any(e.get("op") == "set" for e in effects)
 
 
-def _within_stage(members: list[tuple[int, ast.Group]], lexicon: Lexicon) -> list[ast.Group]:
+def _within_stage(members: list[tuple[Step, ast.Group]], lexicon: Lexicon) -> list[Step]:
     """Phrase order where two members contradict each other (or are colours); else the words that
     set a value first, then those that scale or shift one, each by adjective key."""
     entries = [_adjective(g, lexicon) for _, g in members]
     known = [e for e in entries if e is not None]
     if len(members) < 2 or len(known) < len(entries) or _any_opposed(known):
-        return [g for _, g in members]
+        return [step for step, _ in members]
     keyed = sorted(zip(known, members), key=lambda pair: (not _sets_a_value(pair[0]), pair[0].key, pair[1][0]))
-    return [member[1] for _, member in keyed]
+    return [member[0] for _, member in keyed]
 
 
 def _any_opposed(entries: list[Entry]) -> bool:
