@@ -31,7 +31,7 @@ University. All rights reserved."; free use, copy, modify and distribute with th
 https://wordnet.princeton.edu/license-and-commercial-use . English only.
 
 Deterministic: the output depends only on the WordNet files and the stdlib lexicon files; all
-lists are sorted. The data is NOT loaded by the lexicon yet (groundwork for issue #14); CI has no
+lists are sorted. compiler/wordnet.py reads it for unknown words (issue #14); CI has no
 WordNet, so the tests check only the committed file's shape.
 """
 
@@ -319,8 +319,9 @@ HEADER = """\
 # G. A. Miller (1995), CACM 38(11):39-41; C. Fellbaum (ed., 1998), WordNet, MIT Press.
 # Licence: WordNet 3.0 licence (BSD-style), "WordNet 3.0 Copyright 2006 by Princeton University.
 # All rights reserved." https://wordnet.princeton.edu/license-and-commercial-use
-# English only. Not loaded by the lexicon yet (groundwork for issue #14): an inferred reading
-# must say so ("read 'rosewood' as a kind of wood (WordNet)"); the lexicon stays the authority.
+# English only. Read by compiler/wordnet.py for words the lexicon does not know, as the [wordnet]
+# rules of stdlib/lexicon/word_formation.toml say; every reading says so in a note ("read 'gabbro'
+# as a kind of rock (WordNet 3.0: ...)"); the lexicon stays the authority.
 #
 # [nouns]       word -> kind_of (hypernym lemmas, nearest first, ending at the root), root (one of
 #               [meta].roots; absent when the word reaches none), synset (NLTK-style), gloss.
