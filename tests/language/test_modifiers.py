@@ -180,6 +180,19 @@ def test_within_a_stage_the_later_of_two_contradicting_words_wins(first_word, la
     assert result.materials[0]["provenance"]["roughness"][-1]["words"] == [last_word]  # applied last
 
 
+@pytest.mark.parametrize(
+    "pair", [("rough", "shiny"), ("sandblasted", "glossy"), ("mirror", "dull"), ("matte", "polished")]
+)
+def test_finish_words_that_contradict_warn_in_either_order(pair):
+    for words in (pair, pair[::-1]):
+        assert codes(f"{words[0]} {words[1]} titanium") == ["W101"], words
+
+
+@pytest.mark.parametrize("word,like", [("finely", "lightly"), ("coarsely", "heavily"), ("freshly", "fully")])
+def test_manner_adverbs_read_as_degrees(word, like):
+    assert params(f"{word} brushed nickel") == params(f"{like} brushed nickel")
+
+
 @pytest.mark.parametrize("word", ["kinda", "sorta", "so", "dead", "well"])
 def test_colloquial_degree_words(word):
     assert [e.category for e in LEXICON.lookup((word,))] == ["adverbs"]
