@@ -175,12 +175,12 @@ class Tagger:
                 out[-1] = self._join(before, word, nouns, f"'{word.text}' ('{before.text}' names the object)", diags)
             elif before is not None and _of_tag(word, "OBJECT") and _of_tag(before, "NOUN"):
                 made = _of_tag(before, "NOUN")
-                out[-1] = self._join(before, word, made, f"'{before.text}' (the material of the {word.text})", diags)
+                out[-1] = self._join(before, word, made, f"'{made[0].key}' (the material of the {word.text})", diags)
             elif before is not None and k + 1 < len(tagged) and self._is_head(before, word.text):
                 out[-1] = self._with_head(before, word.text, word.span, diags)
             elif before is not None and nouns and self._is_class_of(before, nouns):
                 made = _of_tag(before, "NOUN")
-                out[-1] = self._join(before, word, made, f"'{before.text}' ('{word.text}' is its class)", diags)
+                out[-1] = self._join(before, word, made, f"'{made[0].key}' ('{word.text}' is its class)", diags)
             elif _of_tag(word, "OBJECT"):
                 follows = k + 1 < len(tagged) and _of_tag(tagged[k + 1], "NOUN")
                 out.append(word if follows else self._object_alone(word, diags))

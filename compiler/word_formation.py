@@ -218,7 +218,8 @@ class WordFormation:
                         Part(0, 0, start, None, found),
                     )
                     sep = "-" if hyphen else ""
-                    return Reading(parts, 1, f"read '{word}' as '{adverb} {rest}' ({form}{sep}: {adverb})")
+                    note = f"read '{word}' as '{adverb} {found[0].key}' ({form}{sep}: {adverb})"
+                    return Reading(parts, 1, note)
         return None
 
     def _prefix_target(self, rest: str, endings: Sequence[str]) -> tuple[Candidate, ...]:
@@ -326,7 +327,7 @@ class WordFormation:
         if not found:
             return self.read(first)
         parts = (Part(0, 0, 0, None, self._adverb(adverb)), Part(1, 1, 0, None, found))
-        return Reading(parts, 2, f"read '{first} {second}' as '{adverb} {second}' ({first}: {adverb})")
+        return Reading(parts, 2, f"read '{first} {second}' as '{adverb} {found[0].key}' ({first}: {adverb})")
 
 
 def _merged_wordnet(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:

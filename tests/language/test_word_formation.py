@@ -64,6 +64,7 @@ def assert_reads_as(lexicon, text, meaning, note_has=""):
         ("not too glossy paint", "slightly glossy paint", "'slightly glossy'"),
         ("not overly rough stone", "slightly rough stone", "'slightly rough'"),
         ("non-toxic paint", "paint", "no effect"),
+        ("anti-fog glass", "glass", "no effect"),
     ],
 )
 def test_negation_reads_the_declared_opposite_or_without(lexicon, text, meaning, note_has):
@@ -97,7 +98,9 @@ def test_not_before_a_noun_is_not_a_negation(lexicon):
         ("semiglossy plastic", "slightly glossy plastic", "slightly glossy"),
         ("half glossy ceramic", "slightly glossy ceramic", "slightly glossy"),
         ("ultra-matte rubber", "intensely matte rubber", "intensely matte"),
-        ("high-shine chrome", "very shiny chrome", "very shin"),
+        ("high-shine chrome", "very shiny chrome", "'very shiny'"),
+        ("low-gloss paint", "barely glossy paint", "'barely glossy'"),
+        ("mid-sheen plastic", "somewhat shiny plastic", "'somewhat shiny'"),
         ("mirror-look steel", "mirror steel", "'mirror'"),
         ("matte-finished steel", "matte steel", "'matte'"),
         ("wax-finished oak", "waxed oak", "'wax'"),
