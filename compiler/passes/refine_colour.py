@@ -18,12 +18,13 @@ from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .bracket import Move, Step, bracket_move, scaled_steps
 from .colours import colour_text, resolve_colour
-from .refine_target import item_words, note
+from .refine_target import item_text, item_words, note
 
 COLOUR_LIMITS = (0.0, 1.0)
 MAX_LIGHTNESS_GIVEN = 0.1  # OKLab L a hue step may give up for chroma near white or black (our choice)
 LIGHTNESS_AXIS = "lightness"  # the axis of darker / lighter: its bracket is on the colour's own key
 NEUTRAL_CHROMA = 1e-4  # an OKLCh chroma below this has no hue to saturate
+UNMOVED = 1e-4  # a colour step smaller than this (per linear channel) is no visible change
 Ops = list[dict[str, Any]]
 
 
@@ -34,15 +35,45 @@ def refine_colour(state: MaterialState, entry: Entry, item: ast.RefineItem, dire
     )
     ops = entry.get("ops")
     if ops:
-        step: Step = lambda x: colour_step(x, scaled_ops(ops, weight))
+        step: Step = on_apparent(state, param, lambda x: colour_step(x, scaled_ops(ops, weight)))
         axis = entry.get("axis", entry.key)
         key = param if axis == LIGHTNESS_AXIS else f"{param}.{axis}"
     else:
-        step = scaled_steps(entry.get("step"), weight)[0]  # the entry's own step goes its own way
+        step = scaled_steps(entry.get("step"), weight)[0]  # the paper's step, on the parameter itself
         key = param
-    new = bracket_move(state.brackets, key, holder[name], Move(direction, step, weight, COLOUR_LIMITS))
+    current = holder[name]
+    new = bracket_move(state.brackets, key, current, Move(direction, step, weight, COLOUR_LIMITS))
     holder[name] = new
     state.note(param, new, f"refinements.{entry.key}: bracket step", item_words(item))
+    note_unmoved(state, item, param, current, new)
+
+
+def on_apparent(state: MaterialState, param: str, step: Step) -> Step:
+    """A metal's visible colour is its base colour times its measured reflectance f0: a hue or
+    chroma step acts on that, and the base colour becomes what gives the result (within [0, 1])."""
+    f0 = state.params.get("f0")
+    if param != "base_color" or state.kind != "conductor" or not isinstance(f0, list):
+        return step
+    return lambda base: [
+        min(max(v / f, 0.0), 1.0) if f > 0 else b for v, f, b in zip(step([b * f for b, f in zip(base, f0)]), f0, base)
+    ]
+
+
+def apparent(state: MaterialState, param: str, value: list[float]) -> list[float]:
+    f0 = state.params.get("f0")
+    if param != "base_color" or state.kind != "conductor" or not isinstance(f0, list):
+        return value
+    return [b * f for b, f in zip(value, f0)]
+
+
+def note_unmoved(state: MaterialState, item: ast.RefineItem, param: str, before: Any, after: Any) -> None:
+    """A colour refinement that could not move the colour says why (a note, never a warning)."""
+    if max(abs(a - b) for a, b in zip(before, after)) > UNMOVED:
+        return
+    why = "its end of the colour range"
+    if param == "base_color" and state.kind == "conductor":
+        why = "a metal's colour is its measured reflectance, which a tint can only lower"
+    state.diagnostics.append(note(item.span, "N106", f"'{item_text(item)}' leaves the colour as it is: {why}"))
 
 
 def colour_step(rgb: list[float], ops: Ops) -> list[float]:
@@ -104,16 +135,18 @@ def refine_saturation(state: MaterialState, ctx: Context, item: ast.RefineItem, 
     """'more saturated', 'less colour', 'more blue': the OKLCh chroma of the base colour, hue and
     lightness kept (the step: properties.toml 'colour', a chroma factor)."""
     current = state.params["base_color"]
-    _l, a, b = linear_to_oklab(current)
+    _l, a, b = linear_to_oklab(apparent(state, "base_color", current))
     if (a * a + b * b) ** 0.5 < NEUTRAL_CHROMA:
         state.diagnostics.append(
             note(item.span, "N105", f"'{item.word.text}' has no hue to act on: the colour is a neutral grey")
         )
         return
     factor = ctx.lexicon.require("properties", "colour").get("step")["value"] ** weight
-    step: Step = (lambda x: scale_chroma(x, factor)) if direction > 0 else (lambda x: scale_chroma(x, 1 / factor))
+    scale = factor if direction > 0 else 1 / factor
+    step = on_apparent(state, "base_color", lambda x: scale_chroma(x, scale))
     new = bracket_move(state.brackets, "base_color.chroma", current, Move(direction, step, weight, COLOUR_LIMITS))
     state.record("base_color", new, f"refinements.{item.word.key}: saturation", item_words(item))
+    note_unmoved(state, item, "base_color", current, new)
 
 
 HUE_STEP = 0.25  # 'more blue': a quarter of the way to blue's OKLab a, b (as refinements.toml's 'bluer')
@@ -134,7 +167,7 @@ def refine_named_colour(
     holder, name = _colour_holder(state, param)
     _l, a, b = linear_to_oklab(resolve_colour(target, ctx))
     amount = 1.0 - (1.0 - HUE_STEP) ** weight
-    if direction < 0 and _share(holder[name], (a, b)) < NEUTRAL_CHROMA:
+    if direction < 0 and _share(apparent(state, param, holder[name]), (a, b)) < NEUTRAL_CHROMA:
         state.diagnostics.append(
             note(item.span, "N105", f"'{item.word.text} {colour_text(target)}': the colour has none of it to take away")
         )
@@ -142,9 +175,11 @@ def refine_named_colour(
     towards: Step = lambda x: hue_step(x, (a, b), amount)
     away: Step = lambda x: _less_of(x, (a, b), amount)
     key = f"{param}.hue:{colour_text(target)}"
-    move = Move(direction, towards if direction > 0 else away, weight, COLOUR_LIMITS)
-    new = bracket_move(state.brackets, key, holder[name], move)
+    move = Move(direction, on_apparent(state, param, towards if direction > 0 else away), weight, COLOUR_LIMITS)
+    current = holder[name]
+    new = bracket_move(state.brackets, key, current, move)
     holder[name] = new
+    note_unmoved(state, item, param, current, new)
     state.note(param, new, f"refinements.{item.word.key} {colour_text(target)}: hue step", item_words(item))
 
 

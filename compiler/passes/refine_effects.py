@@ -21,6 +21,7 @@ from ..diagnostics import warning
 from ..formulas import apply_op, invert_op
 from ..lexicon import Entry
 from ..state import Context, MaterialState
+from .base import noun_of
 from .bracket import Move, Step, bracket_move, scaled_steps
 from .refine_target import item_words, move_sigma_too, note, surface
 from .words import Effect, effects_for
@@ -41,7 +42,9 @@ def refine_adjective(
                 item.span,
                 "W104",
                 f"'{word.text}' is not part of this material",
-                ("refine a word the material has, or add it to the phrase",),
+                (
+                    f"add it to the phrase, e.g. 'lightly {adjective.key} {noun_of(state).key}', or refine a word it has",
+                ),
             )
         )
         return

@@ -39,6 +39,11 @@ def item_words(item: ast.RefineItem) -> tuple[ast.Word, ...]:
     return (*item.adverbs, item.word, *extra)
 
 
+def item_text(item: ast.RefineItem) -> str:
+    """The refinement as written: 'slightly less glossy'."""
+    return " ".join(w.text for w in item_words(item))
+
+
 def note(span: Span | None, code: str, message: str, hints: tuple[str, ...] = ()) -> Diagnostic:
     """A NOTE diagnostic: how a refinement was read (never a warning)."""
     return Diagnostic(span, Severity.NOTE, code, message, hints)

@@ -292,6 +292,18 @@ def test_a_shade_as_a_refinement_target() -> None:
     assert c1 < c2 and c1 < c0
 
 
+def test_a_metal_is_tinted_through_its_measured_colour() -> None:
+    """A metal shows base colour x f0: 'redder' gold is a rose gold; 'lighter' cannot pass f0 and says so."""
+    s = Session("gold", LEX)
+    seen = lambda m: [b * f for b, f in zip(m["params"]["base_color"], m["params"]["f0"])]
+    before = linear_to_oklab(seen(s.material))
+    after = linear_to_oklab(seen(s.refine("redder")))
+    assert after[1] > before[1] + 0.01  # OKLab a of what one sees: towards red
+    plain = Session("silver", LEX)
+    plain.refine("lighter")
+    assert "N106" in notes_of(plain) and warnings_of(plain) == []
+
+
 def test_axes_do_not_pull_each_other_back() -> None:
     """'darker', then 'bluer', then 'lighter': the lightness bracket is forgotten once the colour
     moved on another axis, so 'lighter' is a step up, not back to the old bound's midpoint."""
