@@ -212,3 +212,17 @@ def test_the_er_form_of_a_degree_word_in_a_clause(de):
     """'mit feiner Maserung' (strong dative): fine grain, not the comparative 'finer'."""
     assert same_look(material("Eiche mit feiner Maserung", de), material("oak with fine grain", de))
     assert same_look(material("Eiche mit feiner Maserung", de), material("Eiche mit einer feinen Maserung", de))
+
+
+@pytest.mark.parametrize(
+    "german,english",
+    [
+        ("besonders glänzendes Kupfer", "especially glossy copper"),
+        ("recht rauer Sandstein", "reasonably rough sandstone"),
+        ("eher matte Keramik", "rather matte ceramic"),
+        ("total glatter Schiefer", "totally smooth slate"),
+        ("handgehämmertes Kupfer", "hand-hammered copper"),
+    ],
+)
+def test_intensifiers_mean_what_the_english_ones_mean(de, german, english):
+    assert same_look(material(german, de), material(english, de))
