@@ -6,6 +6,7 @@ from collections.abc import Iterable, Iterator
 from typing import Any
 
 from . import ast
+from .default_name import name_words
 from .diagnostics import Diagnostic, warning
 from .document import iter_items
 from .ir import JSONDict, document_ir, material_ir
@@ -52,7 +53,7 @@ def material_name(material: ast.Material, used: dict[str, int]) -> str:
 
 def base_name(material: ast.Material) -> str:
     """The identifier of the name, or of the words, before repeats are numbered."""
-    return identifier(material.name.text if material.name else " ".join(_name_words(material)))
+    return identifier(material.name.text if material.name else " ".join(name_words(material)))
 
 
 def unique_name(name: str, used: dict[str, int]) -> str:
@@ -63,18 +64,6 @@ def unique_name(name: str, used: dict[str, int]) -> str:
         unique = f"{name}_{used[name]}"
     used[unique] = 1
     return unique
-
-
-def _name_words(material: ast.Material) -> list[str]:
-    """The first colour and first adjective of each group, then the first noun."""
-    words = []
-    for group in material.groups:
-        if group.colours:
-            words += [w.text for w in group.colours[0].words]
-        if group.adjectives:
-            words.append(group.adjectives[0].text)
-    words.append(material.nouns[0].text)
-    return words
 
 
 def build_states(

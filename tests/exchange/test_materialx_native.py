@@ -54,10 +54,10 @@ def test_native_maps(phrase, surface, mx_library, glsl):  # noqa: F811
 
 def test_rust_mask_drives_metalness(mx_library, glsl):  # noqa: F811
     doc, _ = check_document(ir_of("heavily rusted iron"), {"maps": "native"}, mx_library, glsl)
-    shader = doc.getChild("SR_rusted_iron")
+    shader = doc.getChild("SR_heavily_rusted_iron")
     metalness = shader.getInput("base_metalness")
-    assert metalness.getNodeName() == "rusted_iron_rust_metallic"
-    assert doc.getNode("rusted_iron_rust_metallic").getCategory() == "subtract"
+    assert metalness.getNodeName() == "heavily_rusted_iron_rust_metallic"
+    assert doc.getNode("heavily_rusted_iron_rust_metallic").getCategory() == "subtract"
     # colour, roughness and metalness share one mask
     assert len([n for n in doc.getNodes() if n.getCategory() == "smoothstep"]) == 1
 

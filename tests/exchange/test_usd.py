@@ -242,7 +242,7 @@ def test_authoring_again_removes_its_old_textures_only(tmp_path):
     chair = sorted(p.name for p in (tmp_path / "tex" / "shot.usda_Looks_Chair").iterdir())
     author_material(stage, "/Looks/Table", "heavily rusted iron", texture_dir="tex", map_size=16)
     names = sorted(p.name for p in table.iterdir() if not p.name.startswith("."))
-    assert names and all(name.startswith("rusted_iron") for name in names)
+    assert names and all(name.startswith("heavily_rusted_iron") for name in names)
     assert sorted(p.name for p in (tmp_path / "tex" / "shot.usda_Looks_Chair").iterdir()) == chair
     author_material(stage, "/Looks/Table", "red plastic", texture_dir="tex", map_size=16)
     assert not table.exists()

@@ -14,7 +14,7 @@ def test_cli_writes_library_standalone_and_sidecar(tmp_path, glslang):
     out = tmp_path / "out"
     done = run_cnlmc("compile", str(source), "--target", "glsl", "-o", str(out), "--option", "fresnel=f82")
     assert done.returncode == 0, done.stderr
-    stem = "brushed_blue_anodized_aluminum"
+    stem = "lightly_brushed_blue_anodized_aluminum"
     assert sorted(p.name for p in out.iterdir()) == sorted(
         f"{stem}{s}" for s in (".glsl", ".frag", ".vert", ".glsl.json")
     )

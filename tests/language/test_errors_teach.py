@@ -169,3 +169,21 @@ def test_a_particular_colour_before_its_basic_term_is_one_colour(compile_text, s
 @pytest.mark.parametrize("text", ["green orange plastic", "black white velvet", "lime purple paint"])
 def test_two_colours_that_disagree_still_warn(compile_text, text):
     assert "W105" in [d.code for d in compile_text(text).diagnostics]
+
+
+@pytest.mark.parametrize(
+    "text,name",
+    [
+        ("walnut with a satin red lacquer", "walnut_with_satin_red_lacquer"),
+        ("gently sandblasted zinc", "gently_sandblasted_zinc"),
+        ("very dark grey felt", "very_dark_grey_felt"),
+    ],
+)
+def test_the_default_name_keeps_every_word(compile_text, text, name):
+    result = compile_text(text)
+    assert result.ok
+    assert result.materials[0]["name"] == name
+
+
+def test_a_written_name_still_wins(compile_text):
+    assert compile_text("deck: walnut with a satin red lacquer").materials[0]["name"] == "deck"

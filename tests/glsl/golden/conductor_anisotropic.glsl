@@ -1,4 +1,4 @@
-// cnlmc GLSL backend -- material "brushed_blue_anodized_aluminum"
+// cnlmc GLSL backend -- material "lightly_brushed_blue_anodized_aluminum"
 // phrase: lightly brushed, blue anodized aluminum
 // model: conductor + ward anisotropic + fresnel exact + maps: normal
 // options: fresnel=exact, multiscatter=off, profile=330, form=both, specialize=on
@@ -114,7 +114,7 @@ vec3 cnlm_perturb_normal(vec3 n, vec3 t, vec2 uv) {
     return len2 > 0.0 ? p * inversesqrt(len2) : n;
 }
 
-// ---- material brushed_blue_anodized_aluminum: conductor + ward anisotropic + fresnel exact + maps: normal ----
+// ---- material lightly_brushed_blue_anodized_aluminum: conductor + ward anisotropic + fresnel exact + maps: normal ----
 
 vec3 cnlm_surface_albedo(vec2 uv) {
     return cnlm_base_color;

@@ -1,0 +1,50 @@
+"""A material's default name: every word the phrase describes it with, in phrase order.
+
+'oak with a glossy white varnish' -> oak_with_glossy_white_varnish (not 'oak');
+'heavily rusted iron' -> heavily_rusted_iron; 'lightly brushed, blue anodized aluminum' ->
+lightly_brushed_blue_anodized_aluminum. Of alternatives ('red or blue') the first is named: the
+variant suffix (__red, __blue) names each choice. Articles and punctuation are not words of it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from . import ast
+
+__all__ = ["name_words"]
+
+
+def name_words(material: ast.Material) -> list[str]:
+    """The words of a material's default name (before cnlmc.passes.variants.identifier)."""
+    words = _refinement_words(material.refinements)
+    words += _group_words(material.groups)
+    words.append(material.nouns[0].text)
+    if material.coat is not None:
+        words += ["with", *_group_words(material.coat.groups), material.coat.coat.text]
+    return words
+
+
+def _group_words(groups: Iterable[ast.Group]) -> list[str]:
+    """Each group's adverbs, its first colour (shades and all) and its first adjective."""
+    words: list[str] = []
+    for group in groups:
+        words += [w.text for w in group.adverbs]
+        if group.colours:
+            words += [w.text for w in group.colours[0].words]
+        if group.adjectives:
+            words.append(group.adjectives[0].text)
+    return words
+
+
+def _refinement_words(items: Iterable[ast.RefineItem]) -> list[str]:
+    """An inline comparative's words ('slightly darker oak' -> slightly, darker; 'more grain oak')."""
+    words: list[str] = []
+    for item in items:
+        words += [w.text for w in item.adverbs]
+        words.append(item.word.text)
+        if isinstance(item.target, ast.Colour):
+            words += [w.text for w in item.target.words]
+        elif item.target is not None:
+            words.append(item.target.text)
+    return words
