@@ -24,7 +24,7 @@ from .bracket import Move, bracket_move, scaled_steps
 from .coats import apply_clauses
 from .refine_colour import refine_colour, refine_named_colour, refine_saturation
 from .refine_effects import brings_treatment, refine_adjective
-from .refine_target import item_words, move_sigma_too, refine_weight, surface
+from .refine_target import item_words, move_sigma_too, note_unmoved_number, refine_weight, surface
 from .words import apply_group
 
 __all__ = ["apply_inline_refinements", "apply_refinement", "apply_refinement_line"]
@@ -125,10 +125,12 @@ def _refine_property(
     holder, key, limits = surface(state, param)
     up, down = scaled_steps(prop.get("step"), weight)
     move = Move(direction, up if direction > 0 else down, weight, limits)
-    new = bracket_move(state.brackets, key, holder.get(param, 0.0), move)
+    current = holder.get(param, 0.0)
+    new = bracket_move(state.brackets, key, current, move)
     holder[param] = new
     rule = f"refinements.{item.word.key} {prop.key}: bracket step"
     state.note(key, new, rule, item_words(item))
+    note_unmoved_number(state, item, key, current, new)
     move_sigma_too(state, key, move, item_words(item), rule)
 
 

@@ -23,7 +23,7 @@ from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .base import noun_of
 from .bracket import Move, Step, bracket_move, scaled_steps
-from .refine_target import item_words, move_sigma_too, note, surface
+from .refine_target import item_words, move_sigma_too, note, note_unmoved_number, surface
 from .words import Effect, effects_for
 
 MIN_MOVE = 1e-6  # a formula step smaller than this does not move the value
@@ -98,6 +98,7 @@ def _refine_effect(
     holder[param] = new
     rule = f"refinements.{item.word.key} {_target(item).key}: bracket step"
     state.note(key, new, rule, item_words(item))
+    note_unmoved_number(state, item, key, current, new)
     move_sigma_too(state, key, move, item_words(item), rule)
 
 

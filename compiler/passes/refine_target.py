@@ -61,3 +61,12 @@ def move_sigma_too(state: MaterialState, key: str, move: Move, words: tuple[ast.
     sigma_move = Move(move.direction, move.step, move.weight, PARAM_RANGES.get(DIFFUSE_SIGMA))
     new = bracket_move(state.brackets, DIFFUSE_SIGMA, sigma, sigma_move)
     state.record(DIFFUSE_SIGMA, new, f"{rule}, on the Oren-Nayar sigma too", words)
+
+
+def note_unmoved_number(state: MaterialState, item: ast.RefineItem, key: str, before: Any, after: Any) -> None:
+    """A parameter a refinement could not move (it is at its range's end) says so in a note."""
+    if not isinstance(before, (int, float)) or not isinstance(after, (int, float)) or abs(after - before) > 1e-6:
+        return
+    state.diagnostics.append(
+        note(item.span, "N106", f"'{item_text(item)}' leaves {key} at {after:g}: the end of its range")
+    )

@@ -136,6 +136,14 @@ def test_the_range_end_is_a_bound_so_nothing_is_clamped_and_it_comes_back() -> N
     assert visible_roughness(s.refine("rougher")) > values[-1]
 
 
+def test_a_value_at_its_range_end_says_so_instead_of_warning() -> None:
+    s = Session("aluminum", lexicon_for(["paper"]))  # the paper's aluminum: m 0.1, one step to 0
+    s.refine("more gloss")
+    assert s.refine("more gloss")["params"]["roughness"] == 0.0
+    assert "N106" in notes_of(s) and warnings_of(s) == []
+    assert s.refine("less gloss")["params"]["roughness"] > 0.0
+
+
 def test_a_user_who_keeps_asking_gets_past_the_old_bound() -> None:
     """'less', 'more', then 'more' again and again: the bracket reopens instead of freezing."""
     s = Session("satin nickel", LEX)
