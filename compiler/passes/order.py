@@ -65,10 +65,10 @@ def _rejoin(steps: list[Step]) -> tuple[Step, ...]:
 
 
 def _part(group: ast.Group, part: str) -> ast.Group:
-    if part == "colour":
-        return ast.Group("colour", (), group.colours, (), group.span)
+    if part == "colour":  # the adverbs stand before the colour and modify it ("very dark")
+        return ast.Group("colour", group.adverbs, group.colours, (), group.span)
     if part == "adjective":
-        return ast.Group(group.kind, group.adverbs, (), group.adjectives, group.span)
+        return ast.Group(group.kind, (), (), group.adjectives, group.span)
     return group
 
 

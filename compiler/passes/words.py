@@ -132,6 +132,10 @@ def apply_adjective(
         _check_opposition(state, ctx, adjective, word)
     state.applied.append((adjective.key, word))
     words = (*group.adverbs, word)
+    colour_weight = 1.0
+    if group.colours:  # "very dark brushed": the adverb stands before, and modifies, the colour
+        weight, colour_weight = 1.0, weight
+        words = (word,)
     holder = state.coat if target == "coat" and state.coat is not None else state.params
     rule, data = f"adjectives.{adjective.key}", adjective.data
     where, effects = effect_source(adjective, state)
@@ -144,7 +148,7 @@ def apply_adjective(
     if data.get("coat"):
         _apply_adjective_coat(state, ctx, adjective, words)
     for c in group.colours:
-        _apply_qualifier(state, ctx, adjective, c, group.adverbs)
+        _apply_qualifier(state, ctx, adjective, c, group.adverbs, colour_weight)
 
 
 def effects_for(adjective: Entry, state: MaterialState) -> list[Effect]:
@@ -310,17 +314,19 @@ def apply_coat_entry(state: MaterialState, ctx: Context, coat_key: str, rule: st
     state.note("coat", coat_key, rule, words)
 
 
-def _apply_qualifier(state: MaterialState, ctx: Context, adjective: Entry, c: ast.Colour, adverbs: Words) -> None:
+def _apply_qualifier(
+    state: MaterialState, ctx: Context, adjective: Entry, c: ast.Colour, adverbs: Words, weight: float = 1.0
+) -> None:
     """Where 'blue' in 'blue anodized' goes: base colour, coat colour, or a plating metal."""
     target = adjective.get("colour_target", "base")
     if target == "material" and c.base is not None and not c.shades:
         if copy_optics(state, ctx, c.base.key, f"adjectives.{adjective.key}: {c.base.text}", (*adverbs, *c.words)):
             return
     if target == "coat" and state.coat is not None:
-        apply_colour(state, ctx, c, adverbs, "coat", 1.0)
+        apply_colour(state, ctx, c, adverbs, "coat", weight)
         pigment_base(state, ctx)
         return
-    apply_colour(state, ctx, c, adverbs, "base", 1.0)
+    apply_colour(state, ctx, c, adverbs, "base", weight)
 
 
 def pigment_base(state: MaterialState, ctx: Context) -> None:

@@ -107,6 +107,15 @@ def test_very_dark_is_darker_than_dark_and_never_black():
     assert steps == sorted(steps) and len(set(steps)) == 4 and steps[0] > 0.0
 
 
+def test_an_adverb_before_a_colour_modifies_the_colour_not_the_adjective():
+    very, plain = params("very dark brushed zinc"), params("dark brushed zinc")
+    assert very["anisotropy"] == plain["anisotropy"] and very["roughness"] == plain["roughness"]
+    assert sum(very["base_color"]) < sum(plain["base_color"])
+    assert sum(params("very dark green anodized titanium")["base_color"]) < sum(
+        params("dark green anodized titanium")["base_color"]
+    )
+
+
 # ---- roughness words reach the Oren-Nayar sigma of a diffuse surface
 
 
