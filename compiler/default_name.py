@@ -20,8 +20,10 @@ def name_words(material: ast.Material) -> list[str]:
     words = _refinement_words(material.refinements)
     words += _group_words(material.groups)
     words.append(material.nouns[0].text)
-    if material.coat is not None:
-        words += ["with", *_group_words(material.coat.groups), material.coat.coat.text]
+    clauses = [(c.span.start, c.groups, c.coat) for c in (material.coat,) if c is not None]
+    clauses += [(f.span.start, f.groups, f.word) for f in material.features]  # 'marble with grey veins'
+    for index, (_start, groups, word) in enumerate(sorted(clauses, key=lambda c: c[0])):
+        words += ["with" if index == 0 else "and", *_group_words(groups), word.text]
     return words
 
 

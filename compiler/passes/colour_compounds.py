@@ -79,12 +79,12 @@ def _agrees(particular: Sequence[float], basic: Sequence[float], basic_key: str)
     chroma = math.hypot(a, b)
     band = rules()["neutral_lightness"].get(basic_key)
     if band is not None:
-        return chroma < rules()["neutral_chroma"] and band[0] <= lightness <= band[1]
+        return chroma < float(rules()["neutral_chroma"]) and float(band[0]) <= lightness <= float(band[1])
     _l, a2, b2 = linear_to_oklab(basic)
-    if chroma < rules()["hue"]["min_chroma"]:
+    if chroma < float(rules()["hue"]["min_chroma"]):
         return False
     difference = abs(math.degrees(math.atan2(b, a) - math.atan2(b2, a2))) % 360.0
-    return min(difference, 360.0 - difference) <= rules()["hue"]["max_degrees"]
+    return min(difference, 360.0 - difference) <= float(rules()["hue"]["max_degrees"])
 
 
 def _note(first: ast.Colour, second: ast.Colour) -> Diagnostic:

@@ -187,3 +187,8 @@ def test_the_default_name_keeps_every_word(compile_text, text, name):
 
 def test_a_written_name_still_wins(compile_text):
     assert compile_text("deck: walnut with a satin red lacquer").materials[0]["name"] == "deck"
+
+
+def test_the_default_name_keeps_the_with_clauses_in_phrase_order(compile_text):
+    result = compile_text("bronze with fine scratches and a wax")
+    assert result.materials[0]["name"] == "bronze_with_fine_scratches_and_wax"
