@@ -29,7 +29,7 @@ def test_the_papers_phrase_in_german_matches_the_english(de):
     german = material("leicht gebürstetes, blau eloxiertes Aluminium", de)
     english = material("lightly brushed, blue anodized aluminum", de)
     assert german["params"] == english["params"] and german["model"] == english["model"]
-    assert german["name"] == "geburstetes_blau_eloxiertes_aluminium"
+    assert german["name"] == "leicht_geburstetes_blau_eloxiertes_aluminium"  # the default name keeps every word (#14)
 
 
 def test_paper_numbers_in_german(paper_de):
