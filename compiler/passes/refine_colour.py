@@ -14,6 +14,7 @@ from typing import Any
 
 from .. import ast
 from ..colour import apply_ops, linear_to_oklab, oklab_to_linear, oklab_to_linear_in_gamut, scale_chroma
+from ..degrees import weighted_shade
 from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .bracket import Move, Step, bracket_move, scaled_steps
@@ -117,18 +118,8 @@ def _colour_param(state: MaterialState, item: ast.RefineItem) -> str:
 
 
 def scaled_ops(ops: Ops, weight: float) -> Ops:
-    """A colour step (shades' ops) taken `weight` times: amounts 1 - (1 - t)^w, scales s^w."""
-    if weight == 1.0:
-        return ops
-    out = []
-    for op in ops:
-        scaled = dict(op)
-        if "amount" in op:
-            scaled["amount"] = 1.0 - (1.0 - op["amount"]) ** weight
-        if "scale" in op:
-            scaled["scale"] = op["scale"] ** weight
-        out.append(scaled)
-    return out
+    """A colour step (shades' ops) taken `weight` times (compiler/degrees.py): amounts 1 - (1 - t)^w, scales s^w."""
+    return ops if weight == 1.0 else [weighted_shade(op, weight) for op in ops]
 
 
 def refine_saturation(state: MaterialState, ctx: Context, item: ast.RefineItem, direction: int, weight: float) -> None:

@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from .. import ast
+from ..degrees import compose_weights
 from ..diagnostics import Diagnostic, Severity
 from ..params import COAT_PARAMS, PARAMS, ranges
 from ..spans import Span
@@ -25,12 +26,10 @@ def surface(state: MaterialState, param: str) -> tuple[dict[str, Any], str, tupl
 
 
 def refine_weight(item: ast.RefineItem, ctx: Context) -> float:
-    """The adverbs' weight on a refinement: 'much rougher' (2) two steps, 'slightly darker' (0.5) half."""
-    weight = 1.0
-    for adverb in item.adverbs:
-        if not adverb.unknown:
-            weight *= ctx.lexicon.require("adverbs", adverb.key).get("weight")
-    return weight
+    """The adverbs' weight on a refinement: 'much rougher' (2) two steps, 'slightly darker' (0.5) half;
+    a chain composes as on adjectives (compiler/degrees.py): 'very slightly' is slighter than 'slightly'."""
+    weights = [ctx.lexicon.require("adverbs", a.key).get("weight") for a in item.adverbs if not a.unknown]
+    return compose_weights(weights)  # as on adjectives: 'very slightly' is slighter than 'slightly
 
 
 def item_words(item: ast.RefineItem) -> tuple[ast.Word, ...]:

@@ -173,7 +173,8 @@ def test_adverbs_scale_a_refinement_step() -> None:
         start = visible_roughness(s.material)
         return visible_roughness(s.refine(line)) - start
 
-    assert 0 < moved("slightly rougher") < moved("rougher") < moved("strongly rougher")
+    assert 0 < moved("very slightly rougher") < moved("slightly rougher") < moved("rougher")
+    assert moved("rougher") < moved("much rougher") < moved("very much rougher")
     assert 0 > moved("a little glossier") > moved("glossier")
 
 
