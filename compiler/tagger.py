@@ -57,6 +57,8 @@ def raw_tokens(line: str) -> list[tuple[str, int]]:
 
 
 RawToken = tuple[str, int]  # a word's text and 0-based column
+#: The readings a head word ("finish", "look") joins: before the noun (False) or at the line's end (True).
+HEAD_HOLDERS = {False: ("ADJ", "COLOR", "NOUN"), True: ("NOUN",)}
 WordKey = tuple[str, ...]  # the lower-case words of a (multi-word) form
 
 #: How many word forms a Tagger remembers (known, inflected and unknown ones alike). An entry is
@@ -170,20 +172,28 @@ class Tagger:
         out: list[Tagged] = []
         for k, word in enumerate(tagged):
             before = out[-1] if out else None
+            if word.unknown or (before is not None and before.unknown):  # its tags are guesses: E001 says so
+                out.append(word)
+                continue
             nouns = _of_tag(word, "NOUN")
             if before is not None and _of_tag(before, "OBJECT") and not _others(before) and nouns:
                 out[-1] = self._join(before, word, nouns, f"'{word.text}' ('{before.text}' names the object)", diags)
             elif before is not None and _of_tag(word, "OBJECT") and _of_tag(before, "NOUN"):
                 made = _of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' (the material of the {word.text})", diags)
-            elif before is not None and k + 1 < len(tagged) and self._is_head(before, word.text):
-                out[-1] = self._with_head(before, word.text, word.span, diags)
+            elif before is not None and self._is_head(before, word.text, k + 1 == len(tagged), out):
+                out[-1] = self._with_head(before, word.text, word.span, k + 1 == len(tagged), diags)
             elif before is not None and nouns and self._is_class_of(before, nouns):
                 made = _of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' ('{word.text}' is its class)", diags)
             elif _of_tag(word, "OBJECT"):
-                follows = k + 1 < len(tagged) and _of_tag(tagged[k + 1], "NOUN")
-                out.append(word if follows else self._object_alone(word, diags))
+                if k + 1 < len(tagged) and _of_tag(tagged[k + 1], "NOUN"):
+                    out.append(word)  # "roof tiles": joined to the noun next
+                elif not _others(word) and any(_of_tag(later, "NOUN") for later in tagged[k + 1 :]):
+                    note = f"read '{word.text}' as saying how, not what: the material is named later"
+                    diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))  # "wire brushed oak"
+                else:
+                    out.append(self._object_alone(word, diags))
             else:
                 out.append(word)
         return out
@@ -196,17 +206,22 @@ class Tagger:
         diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read '{text}' as {reading}"))
         return Tagged(text, span, candidates, a.unknown or b.unknown)
 
-    def _is_head(self, before: Tagged, text: str) -> bool:
-        """'finish' in "satin finish steel": a head word (word_formation rules) after a describing word."""
-        return text.lower() in self.formation().rules.heads and any(
-            c.tag in ("ADJ", "COLOR") for c in before.candidates
-        )
+    def _is_head(self, before: Tagged, text: str, last: bool, line: list[Tagged]) -> bool:
+        """A head word (word_formation rules) that belongs to the word before it: after a
+        describing word before the noun ("satin finish steel"), or after the noun at the end of
+        the line ("brushed steel look") — not in a 'with' clause ("steel with a walnut finish")."""
+        if text.lower() not in self.formation().rules.heads:
+            return False
+        if last and any(c.tag == "WITH" for t in line for c in t.candidates):
+            return False
+        tags = HEAD_HOLDERS[last]
+        return any(c.tag in tags for c in before.candidates)
 
-    def _with_head(self, before: Tagged, text: str, span: Span, diags: list[Diagnostic]) -> Tagged:
+    def _with_head(self, before: Tagged, text: str, span: Span, last: bool, diags: list[Diagnostic]) -> Tagged:
         joined = before.span.to(span)
         note = f"read '{before.text} {text}' as '{before.text}' ('{text}' names what it describes)"
         diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
-        kept = tuple(c for c in before.candidates if c.tag in ("ADJ", "COLOR"))
+        kept = tuple(c for c in before.candidates if c.tag in HEAD_HOLDERS[last])
         return Tagged(f"{before.text} {text}", joined, kept, before.unknown)
 
     def _object_alone(self, word: Tagged, diags: list[Diagnostic]) -> Tagged:
@@ -262,8 +277,9 @@ class Tagger:
             tagged.append(Tagged(text, self._span(raw, i, 1, line_no, offset), candidates))
             return 1
         if text[0].isalpha():
-            if tagged and i + 1 < len(raw) and self._is_head(tagged[-1], text):  # "satin look steel"
-                tagged[-1] = self._with_head(tagged[-1], text, self._span(raw, i, 1, line_no, offset), diags)
+            last = i + 1 == len(raw)
+            if tagged and self._is_head(tagged[-1], text, last, tagged):  # "satin effect steel", "steel effect"
+                tagged[-1] = self._with_head(tagged[-1], text, self._span(raw, i, 1, line_no, offset), last, diags)
                 return 1
             reading = self.formation().read_at([t.lower() for t, _c in raw[i : i + 3]])
             if reading is not None:
@@ -343,34 +359,30 @@ class Tagger:
     def _guess(self, suggestions: list[str]) -> tuple[Candidate, ...]:
         """Tags for an unknown word: those of its best suggestion, else any open tag."""
         for s in suggestions[:1]:
-            found = self._candidates(tuple(s.split()))
+            found = _others_of(self._candidates(tuple(s.split())))  # an object's reading is the tagger's, not a guess
             if found:
                 return tuple(Candidate(c.tag, c.key, c.category) for c in found)
         return tuple(Candidate(t, "", "unknown") for t in OPEN_TAGS)
 
 
 def _may_join(tagged: list[Tagged]) -> bool:
-    """Whether a line has an object, two nouns side by side or a head word before another word
-    (see Tagger._joined_objects); a word's candidates are sorted by TAG_PREFERENCE, so NOUN,
-    OBJECT and FEATURE readings come last."""
+    """Whether a line has an object, two nouns side by side, or a head word ('finish', 'look':
+    a COAT or FEATURE reading) before another word or after a noun (see Tagger._joined_objects)."""
     noun_before = False
+    final = tagged[-1] if tagged else None
     for word in tagged:
-        candidates = word.candidates
-        if not candidates:
-            noun_before = False
-            continue
-        last = candidates[-1].tag
-        if last == "FEATURE":  # 'finish', 'grain': a head word, or a noun or object that is a feature too
-            if word is not tagged[-1]:
+        noun = head = False
+        for candidate in word.candidates:
+            tag = candidate.tag
+            if tag == "OBJECT":
                 return True
-            last = candidates[-2].tag if len(candidates) > 1 else last
-        if (
-            last == "OBJECT"
-            or (noun_before and last in ("NOUN", "REFINE"))
-            or (last == "COAT" and word is not tagged[-1])
-        ):
+            if tag == "NOUN":
+                noun = True
+            elif tag == "COAT" or tag == "FEATURE":
+                head = True
+        if (noun and noun_before) or (head and (word is not final or noun_before)):
             return True
-        noun_before = last in ("NOUN", "REFINE")
+        noun_before = noun
     return False
 
 
@@ -380,7 +392,11 @@ def _of_tag(word: Tagged, tag: str) -> tuple[Candidate, ...]:
 
 def _others(word: Tagged) -> tuple[Candidate, ...]:
     """The readings of a word that are not objects."""
-    return tuple(c for c in word.candidates if c.tag != "OBJECT")
+    return _others_of(word.candidates)
+
+
+def _others_of(candidates: tuple[Candidate, ...]) -> tuple[Candidate, ...]:
+    return tuple(c for c in candidates if c.tag != "OBJECT")
 
 
 def _unknown_message(text: str) -> str:

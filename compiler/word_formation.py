@@ -263,8 +263,10 @@ class WordFormation:
 
     def _split_hyphenated(self, word: str) -> Reading | None:
         parts, start = [], 0
-        for piece in word.split("-"):  # an object is not a part: wire-brushed is brushed (head_last)
-            found = tuple(c for c in self._resolved(piece) if c.tag != "OBJECT") if piece else ()
+        for piece in word.split("-"):  # an object is not a first part: wire-brushed is brushed (head_last)
+            found = self._resolved(piece) if piece else ()
+            if start == 0:
+                found = tuple(c for c in found if c.tag != "OBJECT")
             if piece and not found:
                 return None
             if piece:
@@ -294,14 +296,20 @@ class WordFormation:
         return None
 
     def _head(self, word: str) -> Reading | None:
+        """hand-hammered = hammered (the last part); rough-hewn = rough (the first part, when the
+        rest is unknown): the adjective part of a hyphenated word whose other part says how."""
         if not self.rules.head_last or "-" not in word:
             return None
-        head = word.rsplit("-", 1)[1]
+        first, head = word.split("-", 1)[0], word.rsplit("-", 1)[1]
         found = self._kept(self._known(head), ("ADJ",))
-        if not found:
-            return None
-        part = Part(0, 0, len(word) - len(head), None, found)
-        return Reading((part,), 1, f"read '{word}' as '{head}' (its last part; the rest says how it was done)")
+        if found:
+            part = Part(0, 0, len(word) - len(head), None, found)
+            return Reading((part,), 1, f"read '{word}' as '{head}' (its last part; the rest says how it was done)")
+        found = self._kept(self._known(first), ("ADJ",))
+        if found and not self._known(head):
+            part = Part(0, 0, 0, len(first), found)
+            return Reading((part,), 1, f"read '{word}' as '{first}' (its first part; the rest is not known)")
+        return None
 
     # ------------------------------------------------------------ two or more words
 

@@ -115,6 +115,12 @@ def test_not_before_a_noun_is_not_a_negation(lexicon):
         ("wire-brushed oak", "brushed oak", "'brushed'"),
         ("bead-polished chrome", "polished chrome", "'polished'"),
         ("matte look plastic", "matte plastic", "'look'"),
+        ("brushed brass look", "brushed brass", "'look'"),
+        ("marble effect tiles", "marble", "'effect'"),
+        ("rough-hewn pine", "rough pine", "first part"),
+        ("wire brushed ash", "brushed ash", "saying how"),
+        ("walnut-veneer", "walnut", "material of the veneer"),
+        ("rubber mat", "rubber", "material of the mat"),
         ("gloss finish white paint", "glossy white paint", "'finish'"),
     ],
 )
@@ -123,8 +129,14 @@ def test_derived_and_compound_words(lexicon, text, meaning, note_has):
 
 
 def test_a_head_word_at_the_end_is_left_to_the_clause(lexicon):
-    result, _look = compiled(lexicon, "copper with a matte finish")
-    assert not notes(result)
+    for text in ("copper with a matte finish", "steel with a walnut finish"):
+        result, _look = compiled(lexicon, text)
+        assert not notes(result), text
+
+
+def test_an_unknown_word_is_never_joined_to_an_object(lexicon):
+    result = compile_source("blorf tiles", "wf.cnl", lexicon)
+    assert [d.code for d in result.diagnostics] == ["E001"]
 
 
 # ---------------------------------------------------------------- WordNet (English only)
