@@ -50,9 +50,11 @@ def _describes_material(ctx: Context, item: ast.RefineItem) -> bool:
     if isinstance(target, ast.Colour):
         return True
     assert isinstance(target, ast.Word), item
+    if target.category != "adjectives":
+        return False  # a property ('more grain oak') is only what the comparative changes
     if ctx.lexicon.require("refinements", item.word.key).get("target") != "any":
         return True
-    return target.category == "adjectives" and brings_treatment(ctx.lexicon.require("adjectives", target.key))
+    return brings_treatment(ctx.lexicon.require("adjectives", target.key))
 
 
 def _as_group(target: ast.Word | ast.Colour) -> ast.Group:

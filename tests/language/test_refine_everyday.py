@@ -343,6 +343,12 @@ def test_an_inline_comparative_is_the_material_then_one_step(comparative, plain,
     assert (measure(a.materials[0]) - measure(b.materials[0])) * way > 0
 
 
+@pytest.mark.parametrize("phrase", ["lighter grain oak", "darker colour walnut", "matter black plastic"])
+def test_a_comparative_before_a_property_word_compiles(phrase: str) -> None:
+    result = compile_source(phrase, "x", LEX)
+    assert result.ok and not [d for d in result.diagnostics if d.severity.value == "warning"], result.diagnostics
+
+
 def test_slightly_is_between_the_material_and_its_comparative() -> None:
     base, slight, full = (
         lightness(compile_source(p, "x", LEX).materials[0]) for p in ("cedar", "slightly darker cedar", "darker cedar")
