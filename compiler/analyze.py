@@ -15,7 +15,7 @@ from .passes.base import apply_noun
 from .passes.coats import apply_coat_clause
 from .passes.model import select_model
 from .passes.ranges import check_finite, check_ranges
-from .passes.refine import apply_inline_refinements, apply_refinement
+from .passes.refine import apply_inline_refinements, apply_refinement_line
 from .passes.variants import expand, identifier
 from .passes.words import apply_groups
 from .state import Context, MaterialState
@@ -79,8 +79,7 @@ def build_states(
         for step in BUILD_PASSES:
             state = step(state, ctx)
         for refinement in refinements:
-            for item in refinement.items:
-                apply_refinement(state, ctx, item)
+            apply_refinement_line(state, ctx, refinement)
         for step in FINAL_PASSES:
             state = step(state, ctx)
         states.append(state)
