@@ -6,6 +6,8 @@ from dataclasses import dataclass
 
 from .spans import Span
 
+NOTE_CODE = "N101"  # the note of a word read by a rule (cnlmc.word_formation) or joined by the tagger
+
 
 @dataclass(frozen=True, slots=True)
 class Candidate:

@@ -16,12 +16,15 @@ from __future__ import annotations
 
 import re
 from collections import OrderedDict
+from typing import TYPE_CHECKING
 
 from .diagnostics import Diagnostic, Severity, did_you_mean, error
 from .lexicon import Lexicon
 from .spans import Span, line_span
-from .tagged import Candidate, Tagged
-from .word_formation import NOTE_CODE, Reading, WordFormation
+from .tagged import NOTE_CODE, Candidate, Tagged
+
+if TYPE_CHECKING:  # imported on first use: only a line with an unknown word or punctuation needs it
+    from .word_formation import Reading, WordFormation
 
 __all__ = [
     "MEMO_SIZE",
@@ -147,6 +150,8 @@ class Tagger:
 
     def formation(self) -> WordFormation:
         """The lexicon's word formation engine (made on first use, kept in lexicon.caches)."""
+        from .word_formation import WordFormation
+
         return WordFormation.of(self.lexicon, self._candidates)
 
     def _undecorated(self, raw: list[RawToken]) -> list[RawToken]:

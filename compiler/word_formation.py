@@ -22,15 +22,16 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from .lexicon import Lexicon
-from .tagged import Candidate
-from .wordnet import WordNet
+from .tagged import NOTE_CODE, Candidate
+
+if TYPE_CHECKING:  # imported when first needed: the tagger imports this module only for an unknown word
+    from .lexicon import Lexicon
+    from .wordnet import WordNet
 
 __all__ = ["NOTE_CODE", "Part", "Reading", "Rules", "WordFormation"]
 
-NOTE_CODE = "N101"  # a word read by a word formation rule
 MAX_REMEMBERED = 4096  # readings kept; a full memo starts over
 
 Lookup = Callable[[tuple[str, ...]], tuple[Candidate, ...]]  # the tagger's (memoised) look-up
@@ -161,6 +162,8 @@ class WordFormation:
     def wordnet(self) -> WordNet:
         """The WordNet readings of these rules, read on first use."""
         if self.wordnet_readings is None:
+            from .wordnet import WordNet
+
             self.wordnet_readings = WordNet(self.rules.wordnet, self.lookup)
         return self.wordnet_readings
 
