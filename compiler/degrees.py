@@ -14,8 +14,9 @@ else happens on a saturating scale, so that no ordinary phrase leaves a paramete
   0; for an absolute level (set v on a degree parameter such as roughness) it continues the step
   from an anchor through the level, L(y) = L(a) + w (L(v) - L(a)), where the anchor a is the current
   value when it lies between the range's middle and the level, else the middle: "very glossy" is
-  glossier than "glossy" on every material, chrome included; other set values (an IOR, a colour)
-  are simply set;
+  glossier than "glossy" on every material, chrome included; a level in the middle half of the
+  range is what a process leaves, not a degree ("heavily anodized" = anodized), and other set
+  values (an IOR, a colour) are simply set;
 - adverbs compose by exponents (docs/language.md "Degrees and order"): an adverb before another
   adverb raises that adverb's weight to its own weight, so "very lightly" = 0.5 ** 1.5 (lighter
   than "lightly") and "very heavily" = 2 ** 1.5 (heavier than "heavily").
@@ -33,6 +34,7 @@ Bounds = tuple[float, float]
 
 KNEE = 0.1  # the share of a range next to a bound where a step toward it saturates
 EDGE = 1e-3  # logit positions are taken at least this share of the range inside a bound
+MIDDLE_HALF = 0.25  # a set level closer than this share of the range to its middle is not a degree
 
 
 def compose_weights(weights: Sequence[float]) -> float:
@@ -91,9 +93,12 @@ def _weighted(op: str, x: float, value: float, weight: float, bounds: Bounds) ->
 
 def intensified_level(x: float, level: float, weight: float, bounds: Bounds) -> float:
     """An absolute level intensified: the step from the anchor (x between the middle and the level,
-    else the middle) through the level, continued on the logit scale."""
+    else the middle) through the level, continued on the logit scale. A level in the middle half of
+    the range names what a process leaves (anodized 0.3, sanded 0.55), not a degree: it stays."""
     lo, hi = bounds
     middle = (lo + hi) / 2
+    if abs(level - middle) < MIDDLE_HALF * (hi - lo):
+        return float(level)
     anchor = x if min(middle, level) <= x <= max(middle, level) else middle
     return toward(anchor, level, weight, bounds)
 

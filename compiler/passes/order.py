@@ -15,6 +15,7 @@ from collections.abc import Sequence
 
 from .. import ast
 from ..lexicon import Entry, Lexicon, LexiconCaches
+from ..lexicon_model import normalise
 
 STAGES = ("shaping", "treatment", "finish", "colour", "ageing", "coat")
 DEFAULT_STAGE = "finish"  # an adjective without a declared stage describes the surface's look
@@ -29,6 +30,7 @@ Step = tuple[int, str]  # (index of the group in the phrase, "all" | "colour" | 
 
 
 def canonical_groups(groups: Sequence[ast.Group], lexicon: Lexicon) -> Sequence[ast.Group]:
+    groups = _shade_words_as_adjectives(groups, lexicon)
     if len(groups) < 2 and not (groups and groups[0].colours and groups[0].adjectives):
         return groups
     key = tuple([(g.kind, g.adjectives[0].key if g.adjectives else None, bool(g.colours)) for g in groups])
@@ -51,6 +53,38 @@ def _plan(groups: Sequence[ast.Group], lexicon: Lexicon) -> tuple[Step, ...]:
     plan = _rejoin([step for rank in sorted(stages) for step in _within_stage(stages[rank], lexicon)])
     identity = tuple((i, "all") for i in range(len(groups)))
     return () if plan == identity else plan
+
+
+def _shade_words_as_adjectives(groups: Sequence[ast.Group], lexicon: Lexicon) -> Sequence[ast.Group]:
+    """A shade with no colour after it that is also an adjective ("dusty glass", unlike "dusty pink")
+    is the adjective: dust on the glass, not a muted colour."""
+    out: list[ast.Group] | None = None
+    for index, group in enumerate(groups):
+        adjective = _shade_adjective(group, lexicon)
+        if adjective is None:
+            if out is not None:
+                out.append(group)
+            continue
+        out = list(groups[:index]) if out is None else out
+        colour = group.colours[0]
+        if len(colour.shades) > 1:  # "dark dusty glass": the other shades stay a colour
+            rest = ast.Colour(colour.shades[:-1], None, colour.span)
+            out.append(ast.Group("colour", (), (rest,), (), group.span))
+        out.append(ast.Group("adjective", group.adverbs, (), (adjective,), group.span))
+    return groups if out is None else out
+
+
+def _shade_adjective(group: ast.Group, lexicon: Lexicon) -> ast.Word | None:
+    if group.kind != "colour" or len(group.colours) != 1:
+        return None
+    colour = group.colours[0]
+    if colour.base is not None or not colour.shades or colour.noun is not None:
+        return None
+    word = colour.shades[-1]
+    for entry in lexicon.lookup(normalise(word.text)):
+        if entry.category == "adjectives":
+            return ast.Word(word.text, entry.key, "adjectives", word.span)
+    return None
 
 
 def _rejoin(steps: list[Step]) -> tuple[Step, ...]:

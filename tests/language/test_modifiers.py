@@ -98,6 +98,19 @@ def test_intensifying_a_level_goes_beyond_it_on_every_material():
     assert params("very matte glass")["roughness"] > params("matte glass")["roughness"]
 
 
+def test_a_process_level_is_not_a_degree():
+    # anodizing and galvanizing leave a surface (r 0.3, 0.35): "heavily" does not make it glossier
+    assert params("heavily anodized titanium")["roughness"] == params("anodized titanium")["roughness"]
+    assert params("very galvanized iron")["roughness"] == params("galvanized iron")["roughness"]
+
+
+def test_a_shade_word_alone_that_is_an_adjective_is_the_adjective():
+    dusty = first(compiled("dusty mirror"))
+    assert dusty["params"]["roughness"] > params("mirror")["roughness"]
+    assert dusty["provenance"]["roughness"][-1]["words"] == ["dusty"]
+    assert params("dusty pink mirror")["roughness"] == params("mirror")["roughness"]  # a colour, no dust
+
+
 def test_very_dark_is_darker_than_dark_and_never_black():
     def luminance(text):
         r, g, b = params(text)["base_color"]
