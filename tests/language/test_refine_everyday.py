@@ -126,6 +126,22 @@ def test_rougher_reaches_the_oren_nayar_sigma_of_a_diffuse_material() -> None:
     assert sigma < smoother < rougher
 
 
+def test_a_with_line_adds_a_coat_that_later_lines_refine() -> None:
+    s = Session("ash", LEX)
+    assert not s.material["params"].get("coat")
+    coated = s.refine("with a satin lacquer")
+    assert coated["params"]["coat"]["name"] == "lacquer" and coated["model"]["coat"]
+    before = coated["params"]["coat"]["roughness"]
+    assert s.refine("glossier")["params"]["coat"]["roughness"] < before
+
+
+def test_a_with_line_adds_a_feature() -> None:
+    s = Session("stainless steel", LEX)
+    before = s.material
+    rows = material_changes(before, s.refine("with fine scratches"))
+    assert any(row.strip().startswith("maps.") for row in rows), rows
+
+
 def test_the_range_end_is_a_bound_so_nothing_is_clamped_and_it_comes_back() -> None:
     s = Session("polished chrome", LEX)
     values = [visible_roughness(s.material)]
