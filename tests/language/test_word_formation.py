@@ -65,6 +65,8 @@ def assert_reads_as(lexicon, text, meaning, note_has=""):
         ("not overly rough stone", "slightly rough stone", "'slightly rough'"),
         ("non-toxic paint", "paint", "no effect"),
         ("anti-fog glass", "glass", "no effect"),
+        ("no-gloss ceramic", "matte ceramic", "opposite of 'glossy'"),
+        ("un-lacquered copper", "raw copper", "'raw'"),
     ],
 )
 def test_negation_reads_the_declared_opposite_or_without(lexicon, text, meaning, note_has):
