@@ -195,7 +195,7 @@ class WordFormation:
         if opposite is None:
             return Reading((), last + 1, f"read '{text}' as without '{word}' (no declared opposite): no effect")
         part = Part(0, last, 0, None, (Candidate("ADJ", opposite, "adjectives"),))
-        return Reading((part,), last + 1, f"read '{text}' as '{opposite}' (the declared opposite of '{word}')")
+        return Reading((part,), last + 1, f"read '{text}' as '{opposite}' (the declared opposite of '{adjective.key}')")
 
     def _resolved(self, word: str) -> tuple[Candidate, ...]:
         """The candidates of a known word, or of a one-part reading of it."""
