@@ -14,17 +14,26 @@ that brings a treatment (a map, a coat, a material) must be part of the material
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, NamedTuple
 
 from .. import ast
-from ..diagnostics import warning
+from ..diagnostics import Diagnostic, warning
 from ..formulas import apply_op, invert_op
 from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .base import noun_of
 from .bracket import Move, Step, bracket_move, scaled_steps
-from .refine_target import item_words, move_sigma_too, note, note_unmoved_number, surface
+from .refine_target import item_text, item_words, move_sigma_too, note, note_unmoved_number, surface
 from .words import Effect, effects_for
+
+
+class Strength(NamedTuple):
+    """How strongly a refinement acts: its adjective formula's weight (the weight step times the
+    adverbs') and the adverbs' own weight (for property steps and the bracket)."""
+
+    formula: float
+    adverbs: float
+
 
 MIN_MOVE = 1e-6  # a formula step smaller than this does not move the value
 MIDDLE = 1 / 6  # a 'set' this close to its range's centre (a fraction of the range) has no pole: it is a target
@@ -37,32 +46,33 @@ def refine_adjective(
     applied = adjective.key in [k for k, _w in state.applied]
     effects = [e for e in effects_for(adjective, state) if e["param"] != "model"]
     if not applied and (brings_treatment(adjective) or not effects):
-        state.diagnostics.append(
-            warning(
-                item.span,
-                "W104",
-                f"'{word.text}' is not part of this material",
-                (
-                    f"add it to the phrase, e.g. 'lightly {adjective.key} {noun_of(state).key}', or refine a word it has",
-                ),
-            )
-        )
+        state.diagnostics.append(_absent(state, adjective, item))
         return
     if not applied:
         state.diagnostics.append(
             note(
                 item.span,
                 "N104",
-                f"read '{item.word.text} {word.text}' relative to the current material "
-                f"('{word.text}' is not in its phrase)",
+                f"read '{item_text(item)}' relative to the current material ('{word.text}' is not in its phrase)",
             )
         )
     w = ctx.settings.get("weight_step", 0.5) * weight
     for effect in effects:
-        _refine_effect(state, ctx, effect, item, direction, (w, weight))
+        _refine_effect(state, ctx, effect, item, direction, Strength(w, weight))
     for role in adjective.get("maps", {}):
         for name in adjective.get("maps")[role].get("weighted", []):
-            _refine_weighted_map(state, role, name, item, direction, (w, weight))
+            _refine_weighted_map(state, role, name, item, direction, Strength(w, weight))
+
+
+def _absent(state: MaterialState, adjective: Entry, item: ast.RefineItem) -> Diagnostic:
+    """W104 for a treatment the material lacks, with the phrase that adds it."""
+    phrase = f"lightly {adjective.key} {noun_of(state).key}"
+    return warning(
+        item.span,
+        "W104",
+        f"'{_target(item).text}' is not part of this material",
+        (f"add it to the phrase, e.g. '{phrase}', or refine a word it has",),
+    )
 
 
 def _target(item: ast.RefineItem) -> ast.Word:
@@ -80,20 +90,20 @@ def _refine_effect(
     effect: Effect,
     item: ast.RefineItem,
     direction: int,
-    weights: tuple[float, float],
+    strength: Strength,
 ) -> None:
     param = effect["param"]
     holder, key, limits = surface(state, param)
     current = holder.get(param, 0.0)
     if isinstance(current, list):
-        _refine_list_effect(state, effect, item, direction, weights)
+        _refine_list_effect(state, effect, item, direction, strength)
         return
     pole = _pole(effect, current, limits)
     if pole == 0:
         return
     param_direction = direction * pole
-    step = _step(ctx, effect, current, param_direction, direction, weights)
-    move = Move(param_direction, step, weights[1], limits)
+    step = _step(ctx, effect, current, param_direction, direction, strength)
+    move = Move(param_direction, step, strength.adverbs, limits)
     new = bracket_move(state.brackets, key, current, move)
     holder[param] = new
     rule = f"refinements.{item.word.key} {_target(item).key}: bracket step"
@@ -123,12 +133,12 @@ def _sign(x: float) -> int:
 
 
 def _step(
-    ctx: Context, effect: Effect, current: float, param_direction: int, direction: int, weights: tuple[float, float]
+    ctx: Context, effect: Effect, current: float, param_direction: int, direction: int, strength: Strength
 ) -> Step:
     """The adjective's formula at the weight step when it moves the value the right way; else the
     parameter's own property step (properties.toml)."""
     op, value, amount = effect["op"], effect.get("value"), effect.get("amount")
-    w = weights[0]
+    w = strength.formula
     formula: Step = (
         (lambda x: apply_op(op, x, value, w, amount))
         if direction > 0
@@ -139,7 +149,7 @@ def _step(
     prop = _property_of(ctx, effect["param"])
     if prop is None:
         return formula
-    up, down = scaled_steps(prop.get("step"), weights[1])
+    up, down = scaled_steps(prop.get("step"), strength.adverbs)
     return up if param_direction > 0 else down
 
 
@@ -152,30 +162,32 @@ def _property_of(ctx: Context, param: str) -> Entry | None:
 
 
 def _refine_list_effect(
-    state: MaterialState, effect: Effect, item: ast.RefineItem, direction: int, weights: tuple[float, float]
+    state: MaterialState, effect: Effect, item: ast.RefineItem, direction: int, strength: Strength
 ) -> None:
     """A colour an adjective sets: towards it ("more"), or away from it ("less")."""
     param, op, value, amount = effect["param"], effect["op"], effect.get("value"), effect.get("amount")
-    w = weights[0]
+    w = strength.formula
     step: Step = (
         (lambda x: apply_op(op, x, value, w, amount))
         if direction > 0
         else (lambda x: invert_op(op, x, value, w, amount))
     )
     key = f"{param}:{_target(item).key}"
-    new = bracket_move(state.brackets, key, state.params.get(param), Move(direction, step, weights[1], (0.0, 1.0)))
+    new = bracket_move(
+        state.brackets, key, state.params.get(param), Move(direction, step, strength.adverbs, (0.0, 1.0))
+    )
     state.record(param, new, f"refinements.{item.word.key} {_target(item).key}: bracket step", item_words(item))
 
 
 def _refine_weighted_map(
-    state: MaterialState, role: str, name: str, item: ast.RefineItem, direction: int, weights: tuple[float, float]
+    state: MaterialState, role: str, name: str, item: ast.RefineItem, direction: int, strength: Strength
 ) -> None:
     ref: dict[str, Any] | None = state.maps.get(role)
     if ref is None:
         return
     key = f"maps.{role}.{name}"
-    w = weights[0]
+    w = strength.formula
     step: Step = (lambda x: x * (1 + w)) if direction > 0 else (lambda x: x / (1 + w))
-    new = bracket_move(state.brackets, key, ref["params"].get(name, 1.0), Move(direction, step, weights[1]))
+    new = bracket_move(state.brackets, key, ref["params"].get(name, 1.0), Move(direction, step, strength.adverbs))
     ref["params"][name] = new
     state.note(key, new, f"refinements.{item.word.key} {_target(item).key}: bracket step", item_words(item))
