@@ -192,3 +192,24 @@ def test_a_written_name_still_wins(compile_text):
 def test_the_default_name_keeps_the_with_clauses_in_phrase_order(compile_text):
     result = compile_text("bronze with fine scratches and a wax")
     assert result.materials[0]["name"] == "bronze_with_fine_scratches_and_wax"
+
+
+SPECIES = ["white beech", "black birch", "pin oak", "red alder", "yellow cedar", "silver maple", "white walnut"]
+
+
+@pytest.mark.parametrize("text", SPECIES)
+def test_a_colour_word_in_a_species_name_names_the_species(compile_text, stdlib, text):
+    result = compile_text(text)
+    assert result.ok and not [d for d in result.diagnostics if d.severity.value != "note"]
+    material = result.materials[0]
+    red, green, blue = material["params"]["base_color"]
+    assert 0.005 < blue < green < red < 0.9  # a wood's warm brown, not white, black, red, yellow or silver paint
+    assert "base_color" in material["maps"] and material["maps"]["base_color"]["graph"] == "wood"
+    (step,) = material["provenance"]["base_color"][:1]
+    assert step["rule"].startswith("nouns.") and "dielectrics.json" in step["source"]
+
+
+def test_the_colour_word_still_colours_a_wood_that_is_not_a_species_of_it(compile_text):
+    species = compile_text("white oak").materials[0]["params"]["base_color"]
+    painted = compile_text("white teak").materials[0]["params"]["base_color"]
+    assert min(painted) > max(species)  # 'white teak' is teak made white, 'white oak' is a species
