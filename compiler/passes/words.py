@@ -127,6 +127,8 @@ def apply_adjective(
 ) -> None:
     word = group.adjectives[0]
     if not _applies(state, adjective, word, target):
+        for c in group.colours:  # "pale honed maple": the colour still holds, on the base
+            apply_colour(state, ctx, c, group.adverbs, "base", weight)
         return
     if state.applied:
         _check_opposition(state, ctx, adjective, word)

@@ -98,6 +98,12 @@ def test_intensifying_a_level_goes_beyond_it_on_every_material():
     assert params("very matte glass")["roughness"] > params("matte glass")["roughness"]
 
 
+def test_a_colour_stays_when_its_adjective_does_not_apply():
+    result = compiled("pale honed cherry")  # honing is for stone: W102, but the wood is still pale
+    assert [d.code for d in result.diagnostics] == ["W102"]
+    assert sum(result.materials[0]["params"]["base_color"]) > sum(params("cherry")["base_color"])
+
+
 def test_a_process_level_is_not_a_degree():
     # anodizing and galvanizing leave a surface (r 0.3, 0.35): "heavily" does not make it glossier
     assert params("heavily anodized titanium")["roughness"] == params("anodized titanium")["roughness"]
