@@ -191,6 +191,9 @@ class Tagger:
             elif before is not None and nouns and self._is_class_of(before, nouns):
                 made = _of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' ('{word.text}' is its class)", diags)
+            elif before is not None and nouns and _of_tag(before, "NOUN") and self._is_look(before):
+                look = f"the look of {_of_tag(before, 'NOUN')[0].key} is not drawn on it"
+                out[-1] = self._join(before, word, nouns, f"'{nouns[0].key}' ({look})", diags)
             elif _of_tag(word, "OBJECT"):
                 if k + 1 < len(tagged) and _of_tag(tagged[k + 1], "NOUN"):
                     out.append(word)  # "roof tiles": joined to the noun next
@@ -239,6 +242,13 @@ class Tagger:
         note = f"read '{word.text}' as '{material}' (the usual material of '{word.text}')"
         diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))
         return Tagged(word.text, word.span, (Candidate("NOUN", material, "nouns"),), word.unknown)
+
+    def _is_look(self, before: Tagged) -> bool:
+        """'leather-like' (a noun only) before another noun: a look suffix (word_formation rules,
+        `look = true`); 'mirror-like' is an adjective too, and stays one."""
+        if any(c.tag in ("ADJ", "COLOR") for c in before.candidates):
+            return False
+        return before.text.lower().endswith(self.formation().rules.look_suffixes)
 
     def _is_class_of(self, before: Tagged, nouns: tuple[Candidate, ...]) -> bool:
         """'walnut wood': the second noun is the class of the first."""

@@ -81,6 +81,7 @@ class Rules:
             form: tuple(p["endings"]) for layer in reversed(layers) for p in layer["prefix"] for form in p["forms"]
         }
         self.suffixes = [s for layer in layers for s in layer["suffix"]]
+        self.look_suffixes = tuple(dict.fromkeys(f for s in self.suffixes if s["look"] for f in s["forms"]))
         compounds = [layer["compounds"] for layer in layers]
         self.join = any(c["join"] for c in compounds)
         self.split = any(c["split"] for c in compounds)

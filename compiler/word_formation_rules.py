@@ -75,7 +75,10 @@ def _prefix(c: Checker, raw: object, i: int) -> dict[str, Any]:
 def _suffix(c: Checker, raw: object, i: int) -> dict[str, Any]:
     path = ("suffix", i)
     table = c.table(raw, path)
-    c.known_keys(table, ("forms", "endings", "reads_as", "doc"), path)
+    c.known_keys(table, ("forms", "endings", "reads_as", "look", "doc"), path)
+    look = table.get("look", False)
+    if not isinstance(look, bool):
+        c.fail((*path, "look"), f"expected true or false, got {look!r:.40}")
     reads_as = _words(c, c.required(table, "reads_as", path), (*path, "reads_as"))
     for k, tag in enumerate(reads_as):
         c.choice(tag.upper(), RULE_TAGS, (*path, "reads_as", k), "tag")
@@ -83,6 +86,7 @@ def _suffix(c: Checker, raw: object, i: int) -> dict[str, Any]:
         "forms": _words(c, c.required(table, "forms", path), (*path, "forms")),
         "endings": _words(c, table.get("endings", [""]), (*path, "endings"), blank=True),
         "reads_as": [tag.upper() for tag in reads_as],
+        "look": look,
         "doc": c.string(c.required(table, "doc", path), (*path, "doc"), blank=False),
     }
 

@@ -123,6 +123,9 @@ def test_not_before_a_noun_is_not_a_negation(lexicon):
         ("wire brushed ash", "brushed ash", "saying how"),
         ("walnut-veneer", "walnut", "material of the veneer"),
         ("rubber mat", "rubber", "material of the mat"),
+        ("leather-look vinyl", "vinyl", "look of leather is not drawn"),
+        ("marble-effect porcelain", "porcelain", "look of marble is not drawn"),
+        ("mirror-like chrome", "mirror chrome", "'mirror'"),
         ("gloss finish white paint", "glossy white paint", "'finish'"),
     ],
 )
