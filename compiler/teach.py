@@ -169,16 +169,22 @@ def _after_noun(diag: Diagnostic, main: list[Tagged], lexicon: Lexicon) -> Diagn
 
 
 def _working(phrases: list[str], lexicon: Lexicon) -> list[str]:
-    """The phrases (each once) that this lexicon tags and parses without a diagnostic."""
-    from .document import parse_line  # document calls this module
+    """The phrases (each once) that this lexicon tags and parses without an error (tagged and
+    parsed directly, not through document.parse_line, so no offer is itself taught)."""
+    from .parser import ParseFailure, parse_line_shape
     from .tagger import Tagger
 
     tagger = Tagger.of(lexicon)
     out: list[str] = []
     for phrase in phrases:
-        diags: list[Diagnostic] = []
-        if phrase not in out and parse_line(phrase, 1, 0, tagger, diags) is not None and not diags:
-            out.append(phrase)
+        words, diags = tagger.tag_line(phrase, 1, 0)
+        if phrase in out or any(d.is_error for d in diags) or not words:
+            continue
+        try:
+            parse_line_shape(words, lexicon.caches.shapes)
+        except ParseFailure:
+            continue
+        out.append(phrase)
     return out
 
 
