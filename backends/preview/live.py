@@ -97,9 +97,14 @@ class LiveSession:
             trial = self.session.trial(line)
             source = self.session.text([line])
             return Step(False, "\n".join(render(d, source, SOURCE_NAME) for d in trial.diagnostics if d.is_error))
-        return Step(
-            True, "\n".join(changes_of(before, self.material) or ["  (no parameter changed)"]) + "\n" + self.draw()
-        )
+        rows = changes_of(before, self.material) or ["  (no parameter changed)"]
+        return Step(True, "\n".join([*rows, *self.said_of_last_line()]) + "\n" + self.draw())
+
+    def said_of_last_line(self) -> list[str]:
+        """The notes and warnings of the line just added ('read 'more matte' relative to ...')."""
+        line, source = len(self.session.lines), self.session.text()
+        said = self.session.result.diagnostics
+        return [render(d, source, SOURCE_NAME) for d in said if not d.is_error and d.span and d.span.line == line]
 
     def command(self, line: str) -> Step:
         name, _, arg = line.partition(" ")
