@@ -9,6 +9,7 @@ far-fetched look-alike (pewter -> water, beech -> bleach: 2-3 edits on 5-7 lette
 
 from __future__ import annotations
 
+from bisect import bisect_left
 from collections.abc import Mapping, Sequence
 from functools import lru_cache
 from importlib import resources
@@ -37,42 +38,47 @@ def allowed_edits(word: str) -> int:
 
 
 def closest_forms(word: str, pool: Sequence[str], limit: int) -> list[str]:
-    """The forms of `pool` (lower-case surface forms) that `word` may stand for, best first."""
-    from rapidfuzz.distance import OSA  # only needed when a word is unknown
+    """The forms of `pool` (sorted lower-case surface forms) that `word` may stand for, best first."""
+    from rapidfuzz import process  # only needed when a word is unknown
+    from rapidfuzz.distance import OSA
 
     low = word.lower()
+    typos = process.extract(low, pool, scorer=OSA.distance, score_cutoff=allowed_edits(low), limit=None)
+    scored = [(int(edits), form) for form, edits, _i in typos]
+    scored += [(10, form) for form in _forms_begun_by(low, pool)]
+    scored += [(11, form) for form in _heads(low, pool)]
     negated = _negated_stems(low)
-    budget = allowed_edits(low)
-    scored: list[tuple[int, str]] = []
-    for form in pool:
-        if form in negated or form == low:
+    out: list[str] = []
+    for _rank, form in sorted(scored):
+        if form not in out and form not in negated and form != low:
+            out.append(form)
+    return out[:limit]
+
+
+def _forms_begun_by(word: str, pool: Sequence[str]) -> list[str]:
+    """'stainless' -> 'stainless steel': the multi-word forms whose first word is `word` (pool sorted)."""
+    start = word + " "
+    found = []
+    for form in pool[bisect_left(pool, start) :]:
+        if not form.startswith(start):
+            break
+        found.append(form)
+    return found
+
+
+def _heads(word: str, pool: Sequence[str]) -> list[str]:
+    """'rubberwood' -> 'wood': the known one-word forms (>= 4 letters) the word ends in, after a
+    first part of >= head_min_letters letters that is not a meaning prefix."""
+    rules = teaching()
+    found = []
+    for cut in range(rules["head_min_letters"], len(word) - 3):
+        first, rest = word[:cut].rstrip("-"), word[cut:].lstrip("-")
+        if first in rules["meaning_prefixes"] or len(rest) < 4:
             continue
-        rank = _rank(low, form, budget, OSA.distance)
-        if rank is not None:
-            scored.append((rank, form))
-    scored.sort()
-    return [form for _rank_, form in scored[:limit]]
-
-
-def _rank(word: str, form: str, budget: int, distance: Any) -> int | None:
-    """0-9: a typo (its edit count), 10: the form the word begins, 11: a compound's head; None: unrelated."""
-    if abs(len(form) - len(word)) <= budget:
-        edits = distance(word, form, score_cutoff=budget)
-        if edits <= budget:
-            return int(edits)
-    if " " in form and form.startswith(word + " "):
-        return 10
-    if _is_head(word, form):
-        return 11
-    return None
-
-
-def _is_head(word: str, form: str) -> bool:
-    """'rubberwood' ends in the noun 'wood' after a first part of >= head_min_letters letters."""
-    if " " in form or len(form) < 4 or not word.endswith(form):
-        return False
-    first = word[: -len(form)].rstrip("-")
-    return len(first) >= teaching()["head_min_letters"] and first not in teaching()["meaning_prefixes"]
+        index = bisect_left(pool, rest)
+        if index < len(pool) and pool[index] == rest:
+            found.append(rest)
+    return found
 
 
 def _negated_stems(word: str) -> frozenset[str]:
