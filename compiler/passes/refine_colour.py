@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from .. import ast
-from ..colour import apply_ops, linear_to_oklab, oklab_to_linear, oklab_to_linear_in_gamut, scale_chroma
+from ..colour import apply_ops, linear_to_oklab, oklab_to_linear, oklab_to_linear_in_gamut
 from ..degrees import weighted_shade
 from ..lexicon import Entry
 from ..state import Context, MaterialState
@@ -22,7 +22,8 @@ from .colours import colour_text, resolve_colour
 from .refine_target import item_text, item_words, note
 
 COLOUR_LIMITS = (0.0, 1.0)
-MAX_LIGHTNESS_GIVEN = 0.1  # OKLab L a hue step may give up for chroma near white or black (our choice)
+MAX_LIGHTNESS_GIVEN = 0.1  # OKLab L a hue or chroma step may give up for its chroma (our choice)
+LIGHTNESS_SEARCH_STEP = 0.005
 LIGHTNESS_AXIS = "lightness"  # the axis of darker / lighter: its bracket is on the colour's own key
 NEUTRAL_CHROMA = 1e-4  # an OKLCh chroma below this has no hue to saturate
 UNMOVED = 1e-4  # a colour step smaller than this (per linear channel) is no visible change
@@ -86,21 +87,48 @@ def colour_step(rgb: list[float], ops: Ops) -> list[float]:
 
 
 def hue_step(rgb: list[float], ab: Sequence[float], amount: float) -> list[float]:
-    """OKLab a, b moved `amount` of the way toward `ab`. Near white or black the gamut has no room
-    for chroma: there the colour gives up a little lightness (at most MAX_LIGHTNESS_GIVEN) before
-    it gives up chroma, so 'warmer' on white paint is a warm white, not white again."""
+    """OKLab a, b moved `amount` of the way toward `ab`, lightness kept where the gamut allows."""
     L, a, b = linear_to_oklab(rgb)
-    a, b = a + (ab[0] - a) * amount, b + (ab[1] - b) * amount
+    return fit_in_gamut(L, a + (ab[0] - a) * amount, b + (ab[1] - b) * amount)
+
+
+def chroma_step(rgb: list[float], scale: float) -> list[float]:
+    """OKLCh chroma times `scale`, hue kept, lightness kept where the gamut allows."""
+    L, a, b = linear_to_oklab(rgb)
+    return fit_in_gamut(L, a * scale, b * scale)
+
+
+def fit_in_gamut(L: float, a: float, b: float) -> list[float]:
+    """Linear RGB of an OKLab colour a refinement asked for. Where the sRGB gamut has no room for its
+    chroma at this lightness (near white, near black, at a saturated colour's edge), the colour gives
+    up a little lightness (at most MAX_LIGHTNESS_GIVEN, the nearest that works) before it gives up
+    chroma, so 'warmer' on white paint is a warm white and 'more saturated' red gains some chroma."""
     if _fits((L, a, b)):
-        return oklab_to_linear_in_gamut((L, a, b))
-    low = max(0.0, L - MAX_LIGHTNESS_GIVEN)
-    if not _fits((low, a, b)):
-        return oklab_to_linear_in_gamut((L, a, b))
-    high = L
-    for _ in range(24):  # the lightest L that holds this chroma
+        return oklab_to_linear((L, a, b))
+    window = [L + d for d in _offsets() if 0.0 <= L + d <= 1.0]
+    for lightness in window:
+        if _fits((lightness, a, b)):
+            return oklab_to_linear_in_gamut((lightness, a, b))
+    best = max(window, key=lambda lightness: _chroma_kept(lightness, a, b) - 1e-6 * abs(lightness - L))
+    return oklab_to_linear_in_gamut((best, a, b))
+
+
+def _offsets() -> list[float]:
+    """0, then +-0.005, +-0.01, ... up to MAX_LIGHTNESS_GIVEN: the nearest lightness first."""
+    n = round(MAX_LIGHTNESS_GIVEN / LIGHTNESS_SEARCH_STEP)
+    out = [0.0]
+    for i in range(1, n + 1):
+        out += [-i * LIGHTNESS_SEARCH_STEP, i * LIGHTNESS_SEARCH_STEP]
+    return out
+
+
+def _chroma_kept(L: float, a: float, b: float) -> float:
+    """The largest share of the chroma (a, b) that fits the gamut at lightness L (bisection)."""
+    low, high = 0.0, 1.0
+    for _ in range(20):
         mid = (low + high) / 2
-        low, high = (mid, high) if _fits((mid, a, b)) else (low, mid)
-    return oklab_to_linear_in_gamut((low, a, b))
+        low, high = (mid, high) if _fits((L, a * mid, b * mid)) else (low, mid)
+    return low
 
 
 def _fits(lab: Sequence[float]) -> bool:
@@ -134,7 +162,7 @@ def refine_saturation(state: MaterialState, ctx: Context, item: ast.RefineItem, 
         return
     factor = ctx.lexicon.require("properties", "colour").get("step")["value"] ** weight
     scale = factor if direction > 0 else 1 / factor
-    step = on_apparent(state, "base_color", lambda x: scale_chroma(x, scale))
+    step = on_apparent(state, "base_color", lambda x: chroma_step(x, scale))
     new = bracket_move(state.brackets, "base_color.chroma", current, Move(direction, step, weight, COLOUR_LIMITS))
     state.record("base_color", new, f"refinements.{item.word.key}: saturation", item_words(item))
     note_unmoved(state, item, "base_color", current, new)

@@ -283,6 +283,13 @@ def test_one_word_map_refinements(phrase: str, line: str, what: str) -> None:
     assert any(what in row for row in rows), rows
 
 
+def test_a_saturated_colour_gives_up_a_little_lightness_to_be_more_saturated() -> None:
+    s = Session("scarlet velvet", LEX)
+    before = s.material
+    after = s.refine("more saturated")
+    assert chroma(after) > chroma(before) and abs(lightness(after) - lightness(before)) <= 0.1 + 1e-9
+
+
 def test_a_grey_has_no_hue_to_saturate_and_says_so() -> None:
     s = Session("white ceramic", LEX)
     before = s.material["params"]["base_color"]
