@@ -19,6 +19,7 @@ from ..lexicon_model import normalise
 
 STAGES = ("shaping", "treatment", "finish", "colour", "ageing", "coat")
 DEFAULT_STAGE = "finish"  # an adjective without a declared stage describes the surface's look
+ATTACHED_COLOURS = ("coat", "material")  # colour targets that keep the colour with its adjective
 
 
 def stage_of(adjective: Entry) -> str:
@@ -56,8 +57,8 @@ def _plan(groups: Sequence[ast.Group], lexicon: Lexicon) -> tuple[Step, ...]:
 
 
 def _shade_words_as_adjectives(groups: Sequence[ast.Group], lexicon: Lexicon) -> Sequence[ast.Group]:
-    """A shade with no colour after it that is also an adjective ("dusty glass", unlike "dusty pink")
-    is the adjective: dust on the glass, not a muted colour."""
+    """A shade with no colour after it that is also an adjective ("dusty glass", "dusty dull brass",
+    unlike "dusty pink") is the adjective: dust on the glass, not a muted colour."""
     out: list[ast.Group] | None = None
     for index, group in enumerate(groups):
         adjective = _shade_adjective(group, lexicon)
@@ -66,16 +67,24 @@ def _shade_words_as_adjectives(groups: Sequence[ast.Group], lexicon: Lexicon) ->
                 out.append(group)
             continue
         out = list(groups[:index]) if out is None else out
-        colour = group.colours[0]
-        if len(colour.shades) > 1:  # "dark dusty glass": the other shades stay a colour
-            rest = ast.Colour(colour.shades[:-1], None, colour.span)
-            out.append(ast.Group("colour", (), (rest,), (), group.span))
-        out.append(ast.Group("adjective", group.adverbs, (), (adjective,), group.span))
+        out += _as_adjective(group, adjective)
     return groups if out is None else out
 
 
+def _as_adjective(group: ast.Group, adjective: ast.Word) -> list[ast.Group]:
+    colour = group.colours[0]
+    out = []
+    if len(colour.shades) > 1:  # "dark dusty glass": the other shades stay a colour
+        rest = ast.Colour(colour.shades[:-1], None, colour.span)
+        out.append(ast.Group("colour", (), (rest,), (), group.span))
+    out.append(ast.Group("adjective", group.adverbs, (), (adjective,), group.span))
+    if group.adjectives:  # "dusty dull": the adjective that followed keeps its place
+        out.append(ast.Group(group.kind, (), (), group.adjectives, group.span))
+    return out
+
+
 def _shade_adjective(group: ast.Group, lexicon: Lexicon) -> ast.Word | None:
-    if group.kind != "colour" or len(group.colours) != 1:
+    if len(group.colours) != 1 or group.kind not in ("colour", "adjective"):
         return None
     colour = group.colours[0]
     if colour.base is not None or not colour.shades or colour.noun is not None:
@@ -107,12 +116,13 @@ def _part(group: ast.Group, part: str) -> ast.Group:
 
 
 def _colours_apart(groups: Sequence[ast.Group], lexicon: Lexicon) -> list[tuple[Step, ast.Group]]:
-    """A colour before an adjective that does not take one ("green faded", unlike "blue anodized")
-    is a colour word of its own, applied in the colour stage."""
+    """A colour before an adjective that puts it on the base ("green faded", "blue anodized") is a
+    colour word of its own, applied in the colour stage; one that goes to a coat or names a plating
+    metal ("white varnished", "gold plated") stays with its adjective."""
     out: list[tuple[Step, ast.Group]] = []
     for index, group in enumerate(groups):
         adjective = _adjective(group, lexicon)
-        if adjective is None or not group.colours or adjective.get("colour_target"):
+        if adjective is None or not group.colours or adjective.get("colour_target") in ATTACHED_COLOURS:
             out.append(((index, "all"), group))
             continue
         for part in ("colour", "adjective"):
