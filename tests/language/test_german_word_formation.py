@@ -78,6 +78,9 @@ def lightness(m):
         ("Glasflasche", "glass bottle"),
         ("Terrakottafliesen", "terracotta tiles"),
         ("Lederjacke", "leather jacket"),
+        ("Gummimatte", "rubber rug"),
+        ("eiserne Geländer", "iron railings"),
+        ("hölzerne Dielen", "wooden floorboards"),
     ],
 )
 def test_a_glued_material_and_object_is_the_material(de, german, english):
