@@ -33,11 +33,12 @@ __all__ = ["apply_inline_refinements", "apply_refinement", "apply_refinement_lin
 def apply_inline_refinements(state: MaterialState, ctx: Context) -> MaterialState:
     """'shinier aluminum', 'lighter oak': a comparative written before the material is one
     refinement of the material the rest of the phrase names. The word after the comparative is
-    part of the material too where the material needs it: a colour ('brighter red plastic' = red
-    plastic, then brighter; 'deeper blue velvet' = blue velvet, then more blue), any word after a
-    comparative that names its own target, and a treatment ('more brushed steel' = brushed steel,
-    then more brushed). A gloss word after 'more' / 'less' is only the refinement's target: 'less
-    glossy plastic' is plastic, a step less glossy."""
+    part of the material too where the material needs it: any word after a comparative that names
+    its own target ('brighter red plastic' = red plastic, then brighter), a colour after 'more'
+    ('deeper blue velvet' = blue velvet, then more blue) and a treatment ('more brushed steel' =
+    brushed steel, then more brushed). A colour after 'less' is what is taken from the material
+    ('less yellow gold' is gold, less yellow) and a gloss word after 'more' / 'less' is only the
+    refinement's target ('less glossy plastic' is plastic, a step less glossy)."""
     for item in state.selection.refinements:
         if item.target is not None and _describes_material(ctx, item):
             apply_group(state, ctx, _as_group(item.target), target="base")
@@ -47,12 +48,13 @@ def apply_inline_refinements(state: MaterialState, ctx: Context) -> MaterialStat
 
 def _describes_material(ctx: Context, item: ast.RefineItem) -> bool:
     target = item.target
-    if isinstance(target, ast.Colour):
-        return True
+    entry = ctx.lexicon.require("refinements", item.word.key)
+    if isinstance(target, ast.Colour):  # 'deeper blue velvet' is blue velvet; 'less yellow gold' is gold
+        return entry.get("target") != "any" or entry.get("direction") > 0
     assert isinstance(target, ast.Word), item
     if target.category != "adjectives":
         return False  # a property ('more grain oak') is only what the comparative changes
-    if ctx.lexicon.require("refinements", item.word.key).get("target") != "any":
+    if entry.get("target") != "any":
         return True
     return brings_treatment(ctx.lexicon.require("adjectives", target.key))
 

@@ -372,6 +372,16 @@ def test_a_comparative_before_a_property_word_compiles(phrase: str) -> None:
     assert result.ok and not [d for d in result.diagnostics if d.severity.value == "warning"], result.diagnostics
 
 
+def test_less_of_a_colour_before_a_material_takes_it_from_the_material() -> None:
+    """'less red brick' is brick with less red, not red brick; 'deeper blue velvet' is blue velvet."""
+    brick = compile_source("brick", "x", LEX).materials[0]
+    less_red = compile_source("less red brick", "x", LEX).materials[0]
+    assert lab(less_red)[1] < lab(brick)[1]
+    velvet = compile_source("velvet", "x", LEX).materials[0]
+    deeper_blue = compile_source("deeper blue velvet", "x", LEX).materials[0]
+    assert lab(deeper_blue)[2] < lab(velvet)[2] - 0.05
+
+
 def test_slightly_is_between_the_material_and_its_comparative() -> None:
     base, slight, full = (
         lightness(compile_source(p, "x", LEX).materials[0]) for p in ("cedar", "slightly darker cedar", "darker cedar")
