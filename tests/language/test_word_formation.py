@@ -297,3 +297,40 @@ def test_every_object_and_rule_reading_is_a_note_never_a_warning(lexicon):
     for key, entry in lexicon.all_of("objects").items():
         result, _look = compiled(lexicon, entry.get("example"))
         assert notes(result), key
+
+
+# ---------------------------------------------------------------- everyday adjectives (adjectives_everyday.toml)
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning"),
+    [
+        ("chromed brass", "chrome"),  # plating words take the plated metal's optics
+        ("gilded plaster", "gold"),
+        ("tinned copper", "tin"),
+    ],
+)
+def test_plating_words_show_the_plated_metal(lexicon, text, meaning):
+    _r, look = compiled(lexicon, text)
+    _r, metal = compiled(lexicon, meaning)
+    assert look["model"]["base"] == "conductor"
+    assert look["params"]["f0"] == metal["params"]["f0"]
+
+
+def test_shape_words_are_accepted_and_change_no_value(lexicon):
+    for word in ("embossed", "perforated", "quilted", "corrugated"):
+        assert compiled(lexicon, f"{word} leather")[1] == compiled(lexicon, "leather")[1], word
+
+
+def test_stone_finishes_are_ordered_by_roughness(lexicon):
+    r = {
+        w: compiled(lexicon, f"{w} granite")[1]["params"]["roughness"]
+        for w in ("polished", "honed", "tumbled", "flamed")
+    }
+    assert r["polished"] < r["honed"] < r["tumbled"] < r["flamed"]
+
+
+def test_everyday_colour_names_the_survey_lacks(lexicon):
+    for text in ("cognac suede", "oxblood leather", "off-black rubber", "jet black plastic"):
+        result, _look = compiled(lexicon, text)
+        assert result.ok, text
