@@ -477,3 +477,29 @@ def test_the_cli_compiles_a_refinement_file_with_a_note_and_no_warning(tmp_path)
     plain = compile_source("sage plastic", "x", LEX).materials[0]
     assert material["params"]["roughness"] > plain["params"]["roughness"]
     assert lightness(material) > lightness(plain)
+
+
+COLOUR_LINES = {
+    "darker": (lightness, -1),
+    "lighter": (lightness, 1),
+    "brighter": (lightness, 1),
+    "slightly darker": (lightness, -1),
+    "more saturated": (chroma, 1),
+    "less saturated": (chroma, -1),
+    "richer": (chroma, 1),
+    "greyer": (chroma, -1),
+}
+COLOURED = ["sage ceramic", "tan leather", "teal velvet", "brick red paint", "navy wool", "mustard plastic"]
+
+
+@settings(max_examples=25, deadline=None, derandomize=True)
+@given(st.sampled_from(COLOURED), st.lists(st.sampled_from(sorted(COLOUR_LINES)), min_size=1, max_size=6))
+def test_every_colour_line_moves_its_quantity_its_way_or_says_why(material: str, lines: list[str]) -> None:
+    s = Session(material, LEX)
+    for line in lines:
+        measure, way = COLOUR_LINES[line]
+        before = measure(s.material)
+        after = measure(s.refine(line))
+        said = [d.code for d in s.result.diagnostics if d.span and d.span.line == len(s.lines)]
+        assert (after - before) * way > 1e-6 or "N106" in said or "N105" in said, (material, lines, line)
+    assert "W107" not in warnings_of(s)
