@@ -213,3 +213,8 @@ def test_the_colour_word_still_colours_a_wood_that_is_not_a_species_of_it(compil
     species = compile_text("white oak").materials[0]["params"]["base_color"]
     painted = compile_text("white teak").materials[0]["params"]["base_color"]
     assert min(painted) > max(species)  # 'white teak' is teak made white, 'white oak' is a species
+
+
+def test_a_refinement_line_typo_gets_its_refinement(compile_text):
+    (e,) = errors(compile_text, "copper\nroughr\n")
+    assert e.code == "E001" and e.suggestions[0] == "rougher"
