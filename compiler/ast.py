@@ -34,21 +34,26 @@ class Word:
 
 @dataclass(frozen=True, init=False)
 class Colour:
-    """Shade words then a colour word ("dark slate blue"), or shades alone ("dark")."""
+    """Shade words then a colour word ("dark slate blue"), or shades alone ("dark"); or a colour
+    named after a noun ("walnut brown": noun walnut, base brown) or a noun alone before an
+    adjective ("chrome plated": noun chrome, no base)."""
 
     shades: tuple[Word, ...]
     base: Word | None
     span: Span
+    noun: Word | None = None
 
-    def __init__(self, shades: tuple[Word, ...], base: Word | None, span: Span) -> None:
+    def __init__(self, shades: tuple[Word, ...], base: Word | None, span: Span, noun: Word | None = None) -> None:
         fields = self.__dict__
         fields["shades"] = shades
         fields["base"] = base
         fields["span"] = span
+        fields["noun"] = noun
 
     @property
     def words(self) -> tuple[Word, ...]:
-        return self.shades + ((self.base,) if self.base else ())
+        words = self.shades + ((self.base,) if self.base else ())
+        return words if self.noun is None else (self.noun, *words)
 
 
 @dataclass(frozen=True, init=False)

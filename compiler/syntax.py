@@ -57,11 +57,14 @@ class ColourPlan(NamedTuple):
     may_have_base: bool
     first: int  # positions in the line's tagged words, for the span
     last: int
+    named: bool = False  # the first word is a noun the colour is named after ('walnut brown', 'chrome plated')
 
     def build(self, words: Words, tagged: Sequence[Tagged]) -> ast.Colour:
         found = words[self.words]
         a, last = tagged[self.first].span, self.last
         span = a if last == self.first else Span(a.start, tagged[last].span.end, a.line, a.col)
+        if self.named:
+            return ast.Colour((), found[1] if len(found) > 1 else None, span, found[0])
         base = found[-1]
         if self.may_have_base and base.category in COLOUR_CATEGORIES:
             return ast.Colour(found[:-1], base, span)
@@ -308,13 +311,16 @@ class _Reader:
                 adverbs = self.words(child.children)
             elif child.data == "colours":
                 colours = tuple([self.colour(c) for c in child.children if isinstance(c, Tree)])
+            elif child.data == "noun_colour":
+                colours = (self.colour(child),)
             elif child.data == "adjs":
                 adjectives = self.alternatives(child)
         kind = str(tree.data).replace("_group", "")
         return GroupPlan(kind, adverbs, colours, adjectives, *self.edges(tree))
 
     def colour(self, tree: Tree[Token]) -> ColourPlan:
-        return ColourPlan(self.words(tree.children), tree.data == "colour", *self.edges(tree))
+        named = tree.data == "noun_colour"
+        return ColourPlan(self.words(tree.children), tree.data == "colour", *self.edges(tree), named)
 
     def alternatives(self, tree: Tree[Token]) -> slice:
         return self.words(t for t in tree.children if _token(t).type != "OR")
@@ -324,7 +330,7 @@ class _Reader:
         coat_word = None
         for child in tree.children:
             if isinstance(child, Tree):
-                groups = self.groups(child)
+                groups = (self.group(child),) if child.data in GROUP_RULES else self.groups(child)
             elif child.type in ("COAT", "FEATURE"):
                 coat_word = self.word(child)
         assert coat_word is not None, "the grammar's clause rules end with a COAT or FEATURE word"

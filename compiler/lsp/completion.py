@@ -28,10 +28,20 @@ PARTIAL_RE = re.compile(r"[^\W\d_][\w'’\-]*$")
 MAX_BRANCHES = 256
 CATEGORY_OF_TAG = {tag: category for category, tag in CATEGORY_TAGS.items()}
 KEYWORDS = {"WITH": "with", "OR": "or", "AND": "and"}
-DEFAULT_ORDER = ("nouns", "adjectives", "colours", "shades", "adverbs", "coats", "refinements", "properties")
+DEFAULT_ORDER = (
+    "nouns",
+    "adjectives",
+    "colours",
+    "shades",
+    "adverbs",
+    "coats",
+    "features",
+    "refinements",
+    "properties",
+)
 ORDER_AFTER = {  # what to list first after the word before the cursor
     "ADV": ("adjectives", "adverbs", "colours", "shades"),
-    "WITH": ("coats", "adjectives", "colours", "shades", "adverbs"),
+    "WITH": ("coats", "features", "adjectives", "colours", "shades", "adverbs"),
     "SHADE": ("colours", "shades"),
     "COLOR": ("adjectives", "nouns"),
     "REFINE": ("colours", "properties", "adjectives"),
@@ -45,6 +55,7 @@ KINDS = {
     "refinements": types.CompletionItemKind.Event,
     "properties": types.CompletionItemKind.Property,
     "coats": types.CompletionItemKind.Struct,
+    "features": types.CompletionItemKind.Struct,
 }
 
 

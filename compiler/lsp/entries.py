@@ -19,6 +19,7 @@ CATEGORY_NAMES = {
     "refinements": "refinement",
     "properties": "property",
     "coats": "coat",
+    "features": "feature of a 'with' clause",
 }
 
 
@@ -33,6 +34,7 @@ def effect_lines(entry: Entry) -> list[str]:
         "refinements": _refinement_effects,
         "properties": _property_effects,
         "coats": _coat_effects,
+        "features": _feature_effects,
     }
     return describe_by_category[entry.category](entry)
 
@@ -102,6 +104,22 @@ def _refinement_effects(entry: Entry) -> list[str]:
 def _property_effects(entry: Entry) -> list[str]:
     target = entry.get("param") or entry.get("map_param")
     return [f"names {target}" + (" (inverted)" if entry.get("invert") else "")]
+
+
+def _feature_effects(entry: Entry) -> list[str]:
+    """'with fine scratches': what draws the feature (passes/features.py)."""
+    lines = []
+    if entry.get("adjective"):
+        lines.append(f"drawn as '{entry.get('adjective')}' (weight {entry.get('weight', 1.0):g})")
+    for role, ref in entry.get("maps", {}).items():
+        lines.append(f"{role}: map {ref['graph']}")
+    if entry.get("finish"):
+        lines.append("its adjectives describe the surface ('with a matte finish' = matte)")
+    if entry.get("coat"):
+        lines.append(f"coat {entry.get('coat')}")
+    if entry.get("missing"):
+        lines.append(entry.get("missing"))
+    return lines
 
 
 def _coat_effects(entry: Entry) -> list[str]:

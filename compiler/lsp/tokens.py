@@ -34,6 +34,7 @@ TYPE_OF_CATEGORY = {
     "refinements": "refinement",
     "properties": "property",
     "coats": "coat",
+    "features": "coat",  # a feature stands where a coat stands ('with grey veins')
     "name": "name",
     "keyword": "keyword",
 }

@@ -1,16 +1,20 @@
 """The 'with' clauses: "oak with a glossy white varnish" -> a coat layer with its own groups;
-"marble with grey veins", "steel with a few rust spots" -> features (passes/features.py)."""
+"marble with grey veins", "steel with a few rust spots" -> features (passes/features.py); and,
+first, the nouns used as describing words ("chrome plated steel", passes/noun_words.py)."""
 
 from __future__ import annotations
 
 from .. import ast
 from ..state import Context, MaterialState
 from .features import apply_features
+from .noun_words import apply_noun_qualifiers
 from .words import apply_coat_entry, apply_group, pigment_base
 
 
 def apply_coat_clause(state: MaterialState, ctx: Context) -> MaterialState:
-    """The material's coat clause, then its feature clauses (a coat first: a feature may bring its own)."""
+    """After the describing groups: the nouns among them ('chrome plated', passes/noun_words.py),
+    then the coat clause and the feature clauses (a coat first: a feature may bring its own)."""
+    apply_noun_qualifiers(state, ctx)
     apply_clauses(state, ctx, state.selection.coat, state.selection.features)
     return state
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 from typing import Any
 
 from .. import ast
+from ..degrees import weighted_map_value
 from ..diagnostics import Diagnostic, Severity, warning
 from ..graphs import graph_params
 from ..lexicon import Entry
@@ -20,7 +21,8 @@ from ..lexicon_model import normalise
 from ..state import Context, MaterialState
 from .base import _map_ref
 from .colours import colour_text, resolve_colour
-from .words import apply_adjective, apply_coat_entry, apply_group, group_weight
+from .noun_words import apply_noun_colour, noun_colour
+from .words import apply_adjective, apply_coat_entry, apply_group, group_weight, weighted_map
 
 MISSING = "W120"  # a feature nothing in the stdlib draws yet
 SECOND_COAT = "W121"  # a second coat clause
@@ -118,7 +120,12 @@ def _apply_adjective(
     qualifier = (colour,) if colour is not None and entry.get("colour") == "base" else ()
     word = ast.Word(clause.word.text, adjective.key, "adjectives", clause.word.span)
     group = ast.Group("adjective", _adverbs_of(clause), qualifier, (word,), clause.span)
+    applied = len(state.applied)
     apply_adjective(state, ctx, adjective, group, weight * entry.get("weight", 1.0), "base")
+    if len(state.applied) == applied:  # it does not apply to this material (W102 says so)
+        return bool(qualifier)
+    if qualifier and colour is not None and colour.noun is not None and colour.base is None:
+        apply_noun_colour(state, ctx, colour, "base_color")  # 'an amber tint': amber's own colour
     return bool(qualifier)
 
 
@@ -136,7 +143,7 @@ def _draw_maps(
         if not _scale_existing(state, graph, entry, weight):
             for role, ref in entry.get("maps").items():
                 if ref["graph"] == graph:
-                    state.maps[role] = _map_ref(ref, ctx, weight)
+                    state.maps[role] = _map_ref(weighted_map(ref, weight), ctx)
         for role in _roles_of(state, graph):
             state.note(f"maps.{role}", graph, rule, words)
     if colour is None or entry.get("colour") != "map":
@@ -165,7 +172,7 @@ def _scale_existing(state: MaterialState, graph: str, entry: Entry, weight: floa
         params = dict(state.maps[role].get("params", {}))
         for name in weighted:
             low, high, default = ranges[name]
-            params[name] = min(high, max(low, params.get(name, default) * weight))
+            params[name] = min(high, max(low, weighted_map_value(params.get(name, default), weight, (low, high))))
         state.maps[role] = {**state.maps[role], "params": params}
     return True
 
@@ -176,7 +183,8 @@ def _name_colour(state: MaterialState, ctx: Context, graph: str, colour: ast.Col
     if not all(name in ranges for name in COLOUR_PARAMS):
         return
     start = [ranges[name][2] for name in COLOUR_PARAMS]
-    rgb = [min(1.0, max(0.0, float(v))) for v in resolve_colour(colour, ctx, start=start)]
+    named = noun_colour(ctx, colour) or resolve_colour(colour, ctx, start=start)
+    rgb = [min(1.0, max(0.0, float(v))) for v in named]
     for role in _roles_of(state, graph):
         params: dict[str, Any] = dict(state.maps[role].get("params", {}))
         params.update(zip(COLOUR_PARAMS, rgb, strict=True))

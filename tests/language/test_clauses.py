@@ -275,3 +275,46 @@ def test_german_degree_words_weigh_like_the_english_ones(compile_text, german):
     few = compile_text("Stahl mit wenigen Rostflecken", german).materials[0]
     english = compile_text("steel with a few rust spots").materials[0]
     assert map_params(few, "rust") == map_params(english, "rust")
+
+
+# ---------------------------------------------------------------- nouns as describing words
+
+
+def notes(diags, code):
+    return [d.message for d in diags if d.code == code]
+
+
+def test_a_metal_noun_before_plated_is_the_plating(compile_text):
+    plated, diags = compiled(compile_text, "silver plated copper")
+    silver, _ = compiled(compile_text, "silver")
+    assert plated["params"]["f0"] == silver["params"]["f0"]
+    plated, diags = compiled(compile_text, "titanium plated steel")
+    titanium, _ = compiled(compile_text, "titanium")
+    assert plated["params"]["f0"] == titanium["params"]["f0"]
+    assert notes(diags, "N122") == ["read 'titanium plated' as plated with titanium"]
+
+
+def test_a_colour_named_after_a_noun_is_the_colour_with_a_note(compile_text):
+    named, diags = compiled(compile_text, "oak green velvet")
+    green, _ = compiled(compile_text, "green velvet")
+    assert named["params"]["base_color"] == green["params"]["base_color"]
+    assert notes(diags, "N122") == ["read 'oak green' as the colour 'green', named after oak"]
+
+
+def test_a_noun_alone_tints_with_its_own_colour(compile_text):
+    tinted, diags = compiled(compile_text, "glass with a walnut tint")
+    walnut, _ = compiled(compile_text, "walnut")
+    assert tinted["params"]["base_color"] == walnut["params"]["base_color"]
+    assert notes(diags, "N122") == ["read 'walnut' as the colour of walnut"]
+
+
+def test_a_noun_after_a_comma_is_still_the_material(compile_text):
+    (d,) = compile_text("polished, steel aluminum").diagnostics
+    assert d.code == "E002"
+
+
+def test_a_noun_then_an_adjective_alone_still_says_the_order(compile_text):
+    (d,) = compile_text("chrome hammered").diagnostics
+    assert d.message == "'hammered' comes after the noun: describing words come before it"
+    (d,) = compile_text("heavily hammered").diagnostics
+    assert d.code == "E003"
