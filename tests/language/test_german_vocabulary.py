@@ -226,3 +226,13 @@ def test_the_er_form_of_a_degree_word_in_a_clause(de):
 )
 def test_intensifiers_mean_what_the_english_ones_mean(de, german, english):
     assert same_look(material(german, de), material(english, de))
+
+
+@pytest.mark.parametrize(
+    "german,english",
+    [("weniger Adern", "fewer veins"), ("mehr Glanz", "more gloss"), ("höherer Kontrast", "higher contrast")],
+)
+def test_german_map_refinements_are_the_english_ones(de, german, english):
+    ours, theirs = german_and_english_sessions(de, "weißer Marmor", "white marble")
+    a, b = ours.refine(german), theirs.refine(english)
+    assert a["params"] == b["params"] and a["maps"] == b["maps"]
