@@ -214,6 +214,8 @@ def test_objects_read_as_their_material(lexicon, text, meaning, note_has):
         ("white ceramic\u2026", "white ceramic"),
         ("1. brushed steel", "brushed steel"),
         ("12) glossy red plastic", "glossy red plastic"),
+        ("(brushed steel)", "brushed steel"),
+        ("walnut \u2014", "walnut"),
     ],
 )
 def test_decorative_punctuation_is_dropped_silently(lexicon, text, meaning):
