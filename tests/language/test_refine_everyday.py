@@ -414,6 +414,9 @@ def test_brighter_keeps_the_hue() -> None:
         ("cherry", "lower contrast", "maps.base_color.contrast"),
         ("rusty steel", "less rust", "coverage"),
         ("green marble", "more veins", "maps.base_color.scale"),
+        ("grey granite", "fewer speckles", "maps.base_color.contrast"),
+        ("steel with fine scratches", "more scratches", "coverage"),
+        ("walnut", "bolder grain", "grain"),
     ],
 )
 def test_a_map_refinement_is_reported_as_a_change(phrase: str, line: str, what: str) -> None:
