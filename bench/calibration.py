@@ -276,6 +276,8 @@ def merl(data: Path, verbose: bool) -> dict[str, Any]:
     for key, label in (("low", "Löw CT Beckmann m"), ("ngan_ct", "Ngan CT Beckmann m"), ("ngan_ward", "Ngan Ward α")):
         print(f"  Spearman(our α, {label:<20}) = {fmt(summary[f'spearman_{key}'])}  (n = {summary[f'n_{key}']})")
     print(f"  Spearman(our α, Bagher SGD mean α   ) = {fmt(summary['spearman_bagher'])}  (n = {summary['n_bagher']})")
+    summary["goals_met"] = merl_goals_met(summary)
+    print(f"  goals (issue #14: all accepted, metal class 100 %, Spearman(Löw) >= 0.75): {summary['goals_met']}")
     if verbose:
         print(f"\n  {'MERL name':<26}{'phrase':<32}{'metal':>6}{'ours':>6}{'our α':>8}{'Löw m':>8}  hue (fit / ours)")
         for r in rows:
@@ -288,6 +290,17 @@ def merl(data: Path, verbose: bool) -> dict[str, Any]:
                 f"{'yes' if r['ours_metal'] else 'no':>6}{fmt(r['alpha']):>8}{fmt(r['low']):>8}  {hue}"
             )
     return {"summary": summary, "rows": rows}
+
+
+def merl_goals_met(summary: dict[str, Any]) -> bool:
+    """Issue #14's calibration goals: every MERL phrase accepted, the metal class right for every
+    one, and Spearman(our alpha, Löw's Beckmann m) >= 0.75."""
+    every = summary["accepted"] == summary["materials"]
+    metals = summary["metal_agreement"] == summary["accepted"]
+    return bool(every and metals and summary["spearman_low"] >= MERL_SPEARMAN_GOAL)
+
+
+MERL_SPEARMAN_GOAL = 0.75
 
 
 # --------------------------------------------------------------------------- physicallybased
