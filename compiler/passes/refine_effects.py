@@ -53,7 +53,7 @@ def refine_adjective(
             note(
                 item.span,
                 "N104",
-                f"read '{item_text(item)}' relative to the current material ('{word.text}' is not in its phrase)",
+                f"read '{item_text(item)}' relative to the current material ('{word.text}' is not among its describing words)",
             )
         )
     w = ctx.settings.get("weight_step", 0.5) * weight

@@ -97,7 +97,7 @@ def test_a_refinement_read_relative_to_the_material_says_so_in_a_note() -> None:
     s = Session("green plastic", LEX)
     s.refine("more matte")
     (note,) = [d for d in s.result.diagnostics if d.code == "N104"]
-    assert note.severity.value == "note" and "'matte' is not in its phrase" in note.message
+    assert note.severity.value == "note" and "'matte' is not among its describing words" in note.message
     assert warnings_of(s) == []
 
 
