@@ -197,8 +197,8 @@ class Tagger:
             elif _of_tag(word, "OBJECT"):
                 if k + 1 < len(tagged) and _of_tag(tagged[k + 1], "NOUN"):
                     out.append(word)  # "roof tiles": joined to the noun next
-                elif not _others(word) and any(_of_tag(later, "NOUN") for later in tagged[k + 1 :]):
-                    note = f"read '{word.text}' as saying how, not what: the material is named later"
+                elif not _others(word) and any(_of_tag(t, "NOUN") or _of_tag(t, "OBJECT") for t in tagged[k + 1 :]):
+                    note = f"read '{word.text}' as saying how or what for, not what: the material is named later"
                     diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))  # "wire brushed oak"
                 else:
                     out.append(self._object_alone(word, diags))

@@ -89,6 +89,7 @@ class Rules:
         self.linkers = ("", *dict.fromkeys(k for c in compounds for k in c["linkers"]))
         self.min_part = min((c["min_part"] for c in compounds), default=3)
         self.heads = frozenset(h for c in compounds for h in c["heads"])
+        self.qualifiers = frozenset(joined("qualifiers", "words"))
         self.wordnet = _merged_wordnet([layer["wordnet"] for layer in layers])
 
 
@@ -116,6 +117,8 @@ class WordFormation:
         """A reading of the unknown word words[0] (lower case), which may take the words after it."""
         first = words[0]
         rules = self.rules
+        if first in rules.qualifiers and len(words) > 1:  # "kitchen cabinets", "exterior paint"
+            return Reading((), 1, f"read '{first}' as saying where or what for: no effect on the look")
         if len(words) > 1:
             if first in rules.negation_words:
                 return self._negated_words(words)

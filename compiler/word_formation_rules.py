@@ -23,6 +23,7 @@ RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN")
 _LISTS = {
     "punctuation": ("trailing", "leading", "quotes", "number_marks"),
     "negation": ("words", "prefixes", "softeners"),
+    "qualifiers": ("words",),
 }
 
 
@@ -31,6 +32,7 @@ def empty_rules() -> dict[str, Any]:
     return {
         "punctuation": {"trailing": [], "leading": [], "quotes": [], "number_marks": []},
         "negation": {"words": [], "prefixes": [], "softeners": [], "soft_adverb": ""},
+        "qualifiers": {"words": []},
         "prefix": [],
         "suffix": [],
         "compounds": {"join": False, "split": False, "linkers": [], "min_part": 3, "head_last": False, "heads": []},

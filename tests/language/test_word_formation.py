@@ -123,6 +123,10 @@ def test_not_before_a_noun_is_not_a_negation(lexicon):
         ("wire brushed ash", "brushed ash", "saying how"),
         ("walnut-veneer", "walnut", "material of the veneer"),
         ("rubber mat", "rubber", "material of the mat"),
+        ("walnut kitchen table", "walnut", "where or what for"),
+        ("exterior oak", "oak", "where or what for"),
+        ("car window", "glass", "what for"),
+        ("steel door handle", "steel", "material of the"),
         ("leather-look vinyl", "vinyl", "look of leather is not drawn"),
         ("marble-effect porcelain", "porcelain", "look of marble is not drawn"),
         ("mirror-like chrome", "mirror chrome", "'mirror'"),
@@ -142,6 +146,11 @@ def test_a_head_word_at_the_end_is_left_to_the_clause(lexicon):
 def test_an_unknown_word_is_never_joined_to_an_object(lexicon):
     result = compile_source("blorf tiles", "wf.cnl", lexicon)
     assert [d.code for d in result.diagnostics] == ["E001"]
+
+
+def test_a_qualifier_alone_names_no_material(lexicon):
+    result = compile_source("kitchen", "wf.cnl", lexicon)
+    assert [d.code for d in result.diagnostics if d.is_error] == ["E001"]
 
 
 # ---------------------------------------------------------------- WordNet (English only)
