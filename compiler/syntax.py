@@ -274,6 +274,8 @@ class _Reader:
                 continue  # the article
             if child.data == "groups":
                 groups = self.groups(child)
+            elif child.data == "postfix":  # "Oak, oiled": after the groups before the noun
+                groups = groups + self.groups(_tree(child.children[1]))
             elif child.data == "nouns":
                 nouns = self.alternatives(child)
             elif child.data == "clauses":

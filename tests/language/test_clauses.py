@@ -318,3 +318,32 @@ def test_a_noun_then_an_adjective_alone_still_says_the_order(compile_text):
     assert d.message == "'hammered' comes after the noun: describing words come before it"
     (d,) = compile_text("heavily hammered").diagnostics
     assert d.code == "E003"
+
+
+# ---------------------------------------------------------------- describing words after the noun
+
+
+@pytest.mark.parametrize(
+    "postfix,prefix",
+    [
+        ("Walnut, waxed.", "waxed walnut"),
+        ("brass (brushed)", "brushed brass"),
+        ("granite, honed, dark", "honed dark granite"),
+        ("aluminium (lightly sandblasted)", "lightly sandblasted aluminium"),
+    ],
+)
+def test_describing_words_after_a_comma_or_in_brackets(compile_text, postfix, prefix):
+    after, _ = compiled(compile_text, postfix)
+    before, _ = compiled(compile_text, prefix)
+    assert after["params"] == before["params"] and after["model"] == before["model"]
+
+
+def test_german_describing_words_after_a_comma(compile_text, german):
+    after = compile_text("Stahl, gebürstet.", german).materials[0]
+    before = compile_text("gebürsteter Stahl", german).materials[0]
+    assert after["params"] == before["params"]
+
+
+def test_a_postfix_before_a_clause(compile_text):
+    material, _ = compiled(compile_text, "maple, stained, with a satin lacquer")
+    assert material["model"]["coat"]
