@@ -236,3 +236,20 @@ def test_german_map_refinements_are_the_english_ones(de, german, english):
     ours, theirs = german_and_english_sessions(de, "weißer Marmor", "white marble")
     a, b = ours.refine(german), theirs.refine(english)
     assert a["params"] == b["params"] and a["maps"] == b["maps"]
+
+
+@pytest.mark.parametrize(
+    "german,english",
+    [
+        ("verchromter Stahl", "chromed steel"),
+        ("vergoldetes Silber", "gilded silver"),
+        ("geräucherte Eiche", "smoked oak"),
+        ("geprägtes Leder", "embossed leather"),
+        ("gelochtes Aluminium", "perforated aluminum"),
+        ("spaltrauer Schiefer", "riven slate"),
+        ("versiegelter Beton", "sealed concrete"),
+        ("gewellter Stahl", "corrugated steel"),
+    ],
+)
+def test_german_participles_are_the_english_adjectives(de, german, english):
+    assert same_look(material(german, de), material(english, de))
