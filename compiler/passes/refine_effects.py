@@ -106,7 +106,8 @@ def _refine_effect(
     move = Move(param_direction, step, strength.adverbs, limits)
     new = bracket_move(state.brackets, key, current, move)
     holder[param] = new
-    rule = f"refinements.{item.word.key} {_target(item).key}: bracket step"
+    way = "up" if param_direction > 0 else "down"
+    rule = f"refinements.{item.word.key} {_target(item).key}: {param} {way} (bracket step)"
     state.note(key, new, rule, item_words(item))
     note_unmoved_number(state, item, key, current, new)
     move_sigma_too(state, key, move, item_words(item), rule)
