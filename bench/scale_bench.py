@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import argparse
 import io
+import json
 import os
 import random
 import re
@@ -263,11 +264,12 @@ def phase_times(text: str) -> tuple[dict[str, float], int, list[dict[str, object
     return spent, len(materials), materials
 
 
-def previous_json_text(value: object) -> str:
-    """The IR's JSON text function before this change (a regular expression over every text)."""
-    from cnlmc.ir import _ENCODER, _UNSAFE_ON_TERMINAL, _escaped
+def previous_json_text(value: object, encoder: json.JSONEncoder) -> str:
+    """The IR's JSON text function before this change: `encoder` with its circular-reference check
+    (made once by the caller), a regular expression over every text."""
+    from cnlmc.ir import _UNSAFE_ON_TERMINAL, _escaped
 
-    text = _ENCODER.encode(value)
+    text = encoder.encode(value)
     if _UNSAFE_ON_TERMINAL.search(text) is None:
         return text
     return _UNSAFE_ON_TERMINAL.sub(_escaped, text)
@@ -296,7 +298,7 @@ def peer_run(text: str, workers: int) -> tuple[float, float, bytes]:
 
 
 def phases_and_peers(lines: int, pool: list[str], folder: Path) -> None:
-    from cnlmc.ir import json_text
+    from cnlmc.ir import _plain, json_text
 
     source = folder / "phases.cnl"
     for kind in ("cycled", "distinct"):
@@ -307,7 +309,8 @@ def phases_and_peers(lines: int, pool: list[str], folder: Path) -> None:
         cells = "  ".join(f"{phase} {spent[phase] / lines * 1e6:4.0f}" for phase in PHASES)
         print(f"{kind} {lines} lines, CPU us per line: {cells}  (total {sum(spent.values()):.2f} s, {count} materials)")
         start = time.process_time()
-        old = [previous_json_text(m) for m in materials]
+        encoder = json.JSONEncoder(ensure_ascii=False, default=_plain)  # as the previous code had it
+        old = [previous_json_text(m, encoder) for m in materials]
         middle = time.process_time()
         start_new = time.process_time()
         same = [json_text(m) for m in materials] == old
