@@ -41,7 +41,7 @@ def render_materials(renderer: Renderer, document: Document, opts: PreviewOption
 def preview_scene(renderer: Renderer, opts: PreviewOptions) -> Scene:
     """The scene the options describe (mesh, environment, background, exposure)."""
     scene = renderer.scene(opts.mesh, opts.env)
-    scene.background, scene.exposure = opts.background, opts.exposure
+    scene.background, scene.exposure, scene.glass = opts.background, opts.exposure, opts.glass
     return scene
 
 

@@ -12,6 +12,7 @@ from cnlmc.material import Material
 from ..glsl.options import GlslOptions
 from . import gl
 from .environment_pass import EnvResources, bind_environment
+from .glass import glass_uniforms
 from .material_textures import map_textures, split_textures
 from .mesh import Mesh
 from .resources import Resources, source_key
@@ -95,6 +96,9 @@ def draw_object(
     gl.set_uniform(prog, "pv_camera_position", cam.position)
     gl.set_uniform(prog, "pv_key_direction", scene.env.key.unit)
     gl.set_uniform(prog, "pv_key_irradiance", [scene.env.key.irradiance * scene.env_intensity] * 3)
+    if material.model.base == "glass":
+        for name, value in glass_uniforms(scene.mesh, model, scene.glass).items():
+            gl.set_uniform(prog, name, value)
     ctx.enable(moderngl.DEPTH_TEST)
     if scene.mesh.closed:
         ctx.enable(moderngl.CULL_FACE)

@@ -11,6 +11,7 @@ from typing import Any
 from ..base import Option, OptionError, Options
 from ..base import parse_options as parse_declared
 from ..glsl.options import OPTIONS as GLSL_OPTIONS
+from .glass import GLASS_FORMS
 from .tiers import DEFAULT_TIER, TIERS, Tier, TierError, parse_tier, select_tier
 
 #: the GLSL backend's options the preview passes on (they change the BSDF it renders)
@@ -38,6 +39,13 @@ OPTIONS: tuple[Option, ...] = (
         choices=(0, 1, 2, 4, 8),
         doc="samples per pixel; 0: off, an edge filter in the tone map (2 or 4 cost 3-4x)",
     ),
+    Option(
+        "glass",
+        str,
+        "solid",
+        choices=GLASS_FORMS,
+        doc="how a glass material transmits: a solid (refracted at both interfaces) or a thin-walled sheet",
+    ),
     *(option for option in GLSL_OPTIONS if option.name in GLSL_PASSED),
 )
 
@@ -63,6 +71,7 @@ class PreviewOptions:
     exposure: float = 1.0
     msaa: int = 0
     glsl: dict = field(default_factory=dict)
+    glass: str = "solid"
 
 
 def parse_options(pairs: Mapping[str, object] | None) -> PreviewOptions:
@@ -104,6 +113,7 @@ def preview_options(options: Options) -> PreviewOptions:
         options.exposure,
         options.msaa,
         glsl_pairs(options),
+        options.glass,
     )
 
 

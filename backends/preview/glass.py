@@ -1,0 +1,39 @@
+"""What the preview's glass shader (shaders/transmission.glsl.j2) needs to know about the scene:
+the object's bounding sphere (its second interface, exact for the sphere mesh), the reference
+thickness of the absorption, and whether the object is a solid or a thin-walled sheet."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .mesh import Mesh
+
+#: `glass=` option values: a solid refracts at both interfaces; a thin sheet lets the view
+#: through undeflected (docs/preview.md, "Transparent materials").
+GLASS_FORMS = ("solid", "thin")
+
+
+def bounding_sphere(mesh: Mesh) -> tuple[np.ndarray, float]:
+    """(centre, radius) around the box centre, as meshes.fit scales a mesh (radius 1 there)."""
+    lo, hi = mesh.bounds
+    centre = (np.asarray(lo, np.float64) + np.asarray(hi, np.float64)) / 2.0
+    radius = float(np.linalg.norm(np.asarray(mesh.positions, np.float64) - centre, axis=1).max()) or 1.0
+    return centre, radius
+
+
+def glass_uniforms(mesh: Mesh, model: np.ndarray, form: str = "solid") -> dict[str, object]:
+    """The transmission uniforms for the object drawn with `model` (world = model @ object).
+
+    The reference thickness is the bounding radius: the base colour is the transmittance of
+    one radius of material, so a ray through the sphere's centre (two radii) gets colour²,
+    what cnlmc.bsdf's two tinted crossings (and the Mitsuba export) give there."""
+    centre, radius = bounding_sphere(mesh)
+    model = np.asarray(model, np.float64)
+    scale = abs(float(np.linalg.det(model[:3, :3]))) ** (1.0 / 3.0) or 1.0
+    world_centre = model[:3, :3] @ centre + model[:3, 3]
+    return {
+        "pv_glass_centre": world_centre,
+        "pv_glass_radius": radius * scale,
+        "pv_glass_reference": radius * scale,
+        "pv_glass_thin": int(form == "thin"),
+    }
