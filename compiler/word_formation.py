@@ -253,9 +253,21 @@ class WordFormation:
                 for ending in rule["endings"]:
                     found = self._kept(self._known(stem + ending), rule["reads_as"])
                     if found:
-                        base = stem.rstrip("-") + ending
-                        return _whole(found, f"read '{word}' as '{base}' ({rule['doc']})")
+                        return self._derived_reading(word, stem, stem.rstrip("-") + ending, found, rule)
         return None
+
+    def _derived_reading(
+        self, word: str, stem: str, base: str, found: tuple[Candidate, ...], rule: dict[str, Any]
+    ) -> Reading:
+        """The stem's reading; an adjective under a suffix with an adverb ('roughish') is qualified by it."""
+        adverb = rule["adverb"]
+        if not adverb or found[0].tag != "ADJ":
+            return _whole(found, f"read '{word}' as '{base}' ({rule['doc']})")
+        parts = (  # the adverb first for the grammar; each part keeps its own place in the word
+            Part(0, 0, len(stem), None, self._adverb(adverb)),
+            Part(0, 0, 0, len(stem), self._kept(found, ("ADJ",))),
+        )
+        return Reading(parts, 1, f"read '{word}' as '{adverb} {found[0].key}' ({rule['doc']})")
 
     @staticmethod
     def _kept(found: tuple[Candidate, ...], tags: Sequence[str]) -> tuple[Candidate, ...]:

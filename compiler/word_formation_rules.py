@@ -77,7 +77,7 @@ def _prefix(c: Checker, raw: object, i: int) -> dict[str, Any]:
 def _suffix(c: Checker, raw: object, i: int) -> dict[str, Any]:
     path = ("suffix", i)
     table = c.table(raw, path)
-    c.known_keys(table, ("forms", "endings", "reads_as", "look", "doc"), path)
+    c.known_keys(table, ("forms", "endings", "reads_as", "look", "adverb", "doc"), path)
     look = table.get("look", False)
     if not isinstance(look, bool):
         c.fail((*path, "look"), f"expected true or false, got {look!r:.40}")
@@ -89,6 +89,7 @@ def _suffix(c: Checker, raw: object, i: int) -> dict[str, Any]:
         "endings": _words(c, table.get("endings", [""]), (*path, "endings"), blank=True),
         "reads_as": [tag.upper() for tag in reads_as],
         "look": look,
+        "adverb": c.string(table.get("adverb", ""), (*path, "adverb")),
         "doc": c.string(c.required(table, "doc", path), (*path, "doc"), blank=False),
     }
 
@@ -141,6 +142,7 @@ def check_rule_names(c: Checker, rules: Mapping[str, Any], raw: Mapping[str, Map
     named: list[tuple[tuple[str | int, ...], str]] = [
         (("prefix", i, "adverb"), p["adverb"]) for i, p in enumerate(rules["prefix"])
     ]
+    named += [(("suffix", i, "adverb"), s["adverb"]) for i, s in enumerate(rules["suffix"]) if s["adverb"]]
     if rules["negation"]["soft_adverb"]:
         named.append((("negation", "soft_adverb"), rules["negation"]["soft_adverb"]))
     for path, name in named:

@@ -110,6 +110,8 @@ def test_not_before_a_noun_is_not_a_negation(lexicon):
         ("terracotta-toned paint", "terracotta paint", "'terracotta'"),
         ("oaken", "oak", "'oak'"),
         ("coppery plastic", "copper plastic", "'copper'"),
+        ("roughish slate", "slightly rough slate", "'slightly rough'"),
+        ("matte-ish rubber", "slightly matte rubber", "'slightly matte'"),
         ("waxy pine", "waxed pine", "'wax'"),
         ("glossy-white ceramic", "glossy white ceramic", "'glossy white'"),
         ("brushed-steel", "brushed steel", "'brushed steel'"),
