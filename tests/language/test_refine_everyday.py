@@ -506,3 +506,17 @@ def test_every_colour_line_moves_its_quantity_its_way_or_says_why(material: str,
         said = [d.code for d in s.result.diagnostics if d.span and d.span.line == len(s.lines)]
         assert (after - before) * way > 1e-6 or "N106" in said or "N105" in said, (material, lines, line)
     assert "W107" not in warnings_of(s)
+
+
+def test_the_live_session_reports_map_changes_and_its_notes(gl_available, tmp_path) -> None:
+    """`cnlmc preview FILE --interactive`: a map refinement prints the map's change; a reading
+    relative to the material prints its note; nothing says 'no parameter changed'."""
+    material = tmp_path / "oak.cnl"
+    material.write_text("oak\n")
+    out = tmp_path / "oak.png"
+    proc = run_cnlmc(
+        "preview", str(material), "-o", str(out), "--size", "32", "--interactive", stdin="more grain\nmore matte\n"
+    )
+    assert proc.returncode == 0, proc.stderr
+    assert "maps.base_color.grain" in proc.stdout and "note[N104]" in proc.stdout
+    assert "no parameter changed" not in proc.stdout and "Traceback" not in proc.stderr
