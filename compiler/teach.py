@@ -101,7 +101,7 @@ def teach_syntax_error(diag: Diagnostic, words: Sequence[Tagged], lexicon: Lexic
         return diag
     main = _main_clause(words)
     if diag.code == "E003" or not any(_is_tag(w, "NOUN") for w in main):
-        return _no_noun(diag, main, lexicon) or diag
+        return _no_noun(diag, words, main, lexicon) or diag
     return _after_noun(diag, main, lexicon) or diag
 
 
@@ -111,16 +111,19 @@ def _main_clause(words: Sequence[Tagged]) -> list[Tagged]:
     return [w for w in words[start:end] if w.text[:1].isalpha()]
 
 
-def _no_noun(diag: Diagnostic, main: list[Tagged], lexicon: Lexicon) -> Diagnostic | None:
-    """'burgundy' alone: a colour here — did you mean 'burgundy plastic'? (its entry's example; a WordNet kind first)."""
+def _no_noun(diag: Diagnostic, words: Sequence[Tagged], main: list[Tagged], lexicon: Lexicon) -> Diagnostic | None:
+    """'burgundy' alone: a colour here — did you mean 'burgundy plastic'? (its entry's example; for
+    a colour, its WordNet kind first). A 'with' clause after it stays in the offer."""
     if not main:
         return None
     last, written = main[-1], " ".join(w.text for w in main)
+    tail = "".join(f" {w.text}" for w in words[words.index(main[-1]) + 1 :])
     for reading in sorted(last.candidates, key=lambda c: ROLE_ORDER.get(c.tag, len(ROLE_ORDER))):
         role = teaching()["roles"].get(reading.category)
         if role is None:
             continue
-        offered = [*_kind_phrases(written, last.text, lexicon), *_example_phrases(written, reading, lexicon)]
+        kinds = _kind_phrases(written, last.text, lexicon) if reading.category == "colours" else []
+        offered = [p + tail for p in (*kinds, *_example_phrases(written, last.text, reading, lexicon))]
         phrases = _working(offered, lexicon)
         hint = f"'{last.text}' is {role} here" + (f" — {did_you_mean(phrases)[0]}" if phrases else "")
         return replace(diag, hints=(hint, *diag.hints[len(phrases) > 0 :]), suggestions=tuple(phrases))
@@ -128,31 +131,35 @@ def _no_noun(diag: Diagnostic, main: list[Tagged], lexicon: Lexicon) -> Diagnost
 
 
 def _kind_phrases(written: str, word: str, lexicon: Lexicon) -> list[str]:
-    """'gunmetal' -> 'gunmetal bronze': the nearest WordNet kind of the word that is a lexicon noun."""
+    """'khaki' -> 'khaki fabric': the nearest WordNet kind of the word that is a lexicon noun."""
     for kind in wordnet_kinds().get(word.lower(), ()):
         if any(e.category == "nouns" for e in lexicon.lookup(tuple(kind.split()))):
             return [f"{written} {kind}"]
     return []
 
 
-def _example_phrases(written: str, reading: Candidate, lexicon: Lexicon) -> list[str]:
-    """The phrase the word's own entry gives as its example, finished with that example's noun."""
-    category = reading.category
-    entry = lexicon.entry(category, reading.key)
+def _example_phrases(written: str, word: str, reading: Candidate, lexicon: Lexicon) -> list[str]:
+    """The written words finished as the word's own entry's example finishes it ('lightly' with
+    'lightly brushed brass' -> 'lightly brushed brass'; 'dark glossy' with 'glossy red plastic' ->
+    'dark glossy red plastic'); a coat goes on its example's material ('oak with a varnish')."""
+    entry = lexicon.entry(reading.category, reading.key)
     example = str(entry.get("example", "")) if entry is not None else ""
     if not example:
         return []
-    if category == "coats":
-        noun = example.split(" with ", 1)[0]
-        return [f"{noun} with a {written}"]
-    noun = example.split()[-1]
-    return [f"{written} {noun}"]
+    if reading.category == "coats":
+        return [f"{example.split(' with ', 1)[0]} with a {written}"]
+    example_words = example.split()
+    lowered = [w.lower() for w in example_words]
+    spellings = (word.lower().split()[-1], reading.key.lower().split()[-1])  # 'gently' is written 'lightly' there
+    own = next((s for s in spellings if s in lowered), None)
+    rest = example_words[lowered.index(own) + 1 :] if own is not None else []
+    return [f"{written} {' '.join(rest)}"] if rest else []
 
 
 def _after_noun(diag: Diagnostic, main: list[Tagged], lexicon: Lexicon) -> Diagnostic | None:
     """'steel teal': the colour comes before the noun — did you mean 'teal steel'?"""
-    nouns = [i for i, w in enumerate(main) if _is_tag(w, "NOUN")]
-    first_noun = nouns[0]
+    only_nouns = [i for i, w in enumerate(main) if _only_noun(w)]  # 'satin nickel brushed': 'nickel'
+    first_noun = only_nouns[-1] if only_nouns else next(i for i, w in enumerate(main) if _is_tag(w, "NOUN"))
     tail = main[first_noun + 1 :]
     if not tail or any(_only_noun(w) for w in tail):
         return None

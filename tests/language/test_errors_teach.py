@@ -218,3 +218,22 @@ def test_the_colour_word_still_colours_a_wood_that_is_not_a_species_of_it(compil
 def test_a_refinement_line_typo_gets_its_refinement(compile_text):
     (e,) = errors(compile_text, "copper\nroughr\n")
     assert e.code == "E001" and e.suggestions[0] == "rougher"
+
+
+@pytest.mark.parametrize(
+    "text,phrase",
+    [
+        ("gently", "gently brushed brass"),  # an adverb's alias finishes as its entry's example does
+        ("glossy with a wax", "glossy red plastic with a wax"),  # the 'with' clause stays in the offer
+    ],
+)
+def test_the_offer_finishes_the_phrase_as_written(compile_text, text, phrase):
+    (e,) = errors(compile_text, text)
+    assert e.suggestions[0] == phrase
+    assert compile_text(phrase).ok
+
+
+def test_a_describing_word_after_the_noun_moves_before_it(compile_text):
+    (e,) = errors(compile_text, "bronze satin hammered")
+    assert e.suggestions == ("satin hammered bronze",)
+    assert compile_text("satin hammered bronze").ok
