@@ -6,9 +6,9 @@ from __future__ import annotations
 
 from .. import ast
 from ..state import Context, MaterialState
+from .coat_layer import apply_coat
 from .features import apply_features
 from .noun_words import apply_noun_qualifiers
-from .words import apply_coat_entry, apply_group, pigment_base
 
 
 def apply_coat_clause(state: MaterialState, ctx: Context) -> MaterialState:
@@ -22,11 +22,7 @@ def apply_coat_clause(state: MaterialState, ctx: Context) -> MaterialState:
 def apply_clauses(state: MaterialState, ctx: Context, coat: ast.Coat | None, features: tuple[ast.Feature, ...]) -> None:
     """A coat clause and feature clauses, of a material line or of a refinement line
     ('with a glossy varnish' below 'walnut' adds the coat)."""
-    if coat is not None and not coat.coat.unknown:
-        apply_coat_entry(state, ctx, coat.coat.key, f"coats.{coat.coat.key}", (coat.coat,))
-        for group in coat.groups:
-            apply_group(state, ctx, group, target="coat")
-        if any(g.kind == "colour" for g in coat.groups):
-            pigment_base(state, ctx)
+    if coat is not None:
+        apply_coat(state, ctx, coat)
     if features:
         apply_features(state, ctx, features)

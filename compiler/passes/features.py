@@ -19,14 +19,16 @@ from ..graphs import graph_params
 from ..lexicon import Entry
 from ..lexicon_model import normalise
 from ..state import Context, MaterialState
-from .base import _map_ref
+from .base import _map_ref, noun_of
+from .coat_layer import apply_coat
 from .colours import colour_text, resolve_colour
 from .noun_words import apply_noun_colour, noun_colour
-from .words import apply_adjective, apply_coat_entry, apply_group, group_weight, weighted_map
+from .words import COAT_CLASS, apply_adjective, apply_coat_entry, apply_group, group_weight, weighted_map
 
 MISSING = "W120"  # a feature nothing in the stdlib draws yet
 SECOND_COAT = "W121"  # a second coat clause
 UNUSED = "N121"  # a word of a clause the feature has no use for
+AS_COAT = "N123"  # a finish read as a coat
 COLOUR_PARAMS = ("color_r", "color_g", "color_b")
 
 
@@ -91,7 +93,12 @@ def _adverbs_of(clause: ast.Feature) -> tuple[ast.Word, ...]:
 
 
 def _apply_finish(state: MaterialState, ctx: Context, clause: ast.Feature) -> None:
-    """'with a matte finish' = matte; 'with a mirror finish' (one word that is also an adjective) = mirror."""
+    """'with a matte finish' = matte; 'with a mirror finish' (one word that is also an adjective) = mirror;
+    'with a clear finish' on oak = a clear coat ('clear' is said of a coat, not of oak)."""
+    coat = _as_coat(state, ctx, clause)
+    if coat is not None:
+        apply_coat(state, ctx, coat)
+        return
     own = _adjective_named_by(ctx, clause.word)
     if own is not None:
         word = ast.Word(clause.word.text, own.key, "adjectives", clause.word.span)
@@ -102,11 +109,44 @@ def _apply_finish(state: MaterialState, ctx: Context, clause: ast.Feature) -> No
         apply_group(state, ctx, group, target="base")
 
 
-def _adjective_named_by(ctx: Context, word: ast.Word) -> Entry | None:
+def _as_coat(state: MaterialState, ctx: Context, clause: ast.Feature) -> ast.Coat | None:
+    """The clause as a coat clause when its finish word is also a coat and an adjective of it is
+    said of a coat but not of this material ('a clear finish' on oak), with a note."""
+    coat_entry = _entry_named_by(ctx, clause.word, "coats")
+    if coat_entry is None:
+        return None
+    material = noun_of(state)
+    for word in (w for g in clause.groups for w in g.adjectives):
+        classes = ctx.lexicon.require("adjectives", word.key).get("applies_to") or []
+        if COAT_CLASS in classes and material.get("class") not in classes and material.key not in classes:
+            state.diagnostics.append(
+                Diagnostic(
+                    clause.span,
+                    Severity.NOTE,
+                    AS_COAT,
+                    f"read '{_clause_text(clause)}' as a coat: '{word.text}' is said of a coat, not of {material.key}",
+                )
+            )
+            return ast.Coat(
+                clause.groups, ast.Word(clause.word.text, coat_entry.key, "coats", clause.word.span), clause.span
+            )
+    return None
+
+
+def _clause_text(clause: ast.Feature) -> str:
+    words = [w for g in clause.groups for w in (*g.adverbs, *_colour_words(g), *g.adjectives)]
+    return " ".join(w.text for w in (*words, clause.word))
+
+
+def _entry_named_by(ctx: Context, word: ast.Word, category: str) -> Entry | None:
     for entry in ctx.lexicon.lookup(normalise(word.text)):
-        if entry.category == "adjectives":
+        if entry.category == category:
             return entry
     return None
+
+
+def _adjective_named_by(ctx: Context, word: ast.Word) -> Entry | None:
+    return _entry_named_by(ctx, word, "adjectives")
 
 
 # ---------------------------------------------------------------- a feature an adjective draws

@@ -347,3 +347,21 @@ def test_german_describing_words_after_a_comma(compile_text, german):
 def test_a_postfix_before_a_clause(compile_text):
     material, _ = compiled(compile_text, "maple, stained, with a satin lacquer")
     assert material["model"]["coat"]
+
+
+def test_a_finish_said_of_a_coat_is_the_coat(compile_text):
+    material, diags = compiled(compile_text, "maple with a transparent finish")
+    assert material["model"]["coat"]
+    assert [d.code for d in diags] == ["N123"]
+
+
+def test_a_glaze_in_a_colour(compile_text):
+    material, _ = compiled(compile_text, "stoneware with a green glaze")
+    r, g, b = material["params"]["base_color"]
+    assert g > r and g > b
+
+
+def test_knots_say_what_is_missing_and_draw_the_grain(compile_text):
+    material, diags = compiled(compile_text, "cedar with knots")
+    assert "wood" in graphs(material)
+    assert [d.code for d in diags] == ["W120"]
