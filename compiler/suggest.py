@@ -38,7 +38,8 @@ def allowed_edits(word: str) -> int:
 
 
 def closest_forms(word: str, pool: Sequence[str], limit: int) -> list[str]:
-    """The forms of `pool` (sorted lower-case surface forms) that `word` may stand for, best first."""
+    """The forms of `pool` (sorted lower-case surface forms) that `word` may stand for, best first:
+    fewest edits, then those that begin with the word's first letter."""
     from rapidfuzz import process  # only needed when a word is unknown
     from rapidfuzz.distance import OSA
 
@@ -48,9 +49,10 @@ def closest_forms(word: str, pool: Sequence[str], limit: int) -> list[str]:
     scored += [(10, form) for form in _forms_begun_by(low, pool)]
     scored += [(11, form) for form in _heads(low, pool)]
     negated = _negated_stems(low)
+    never = frozenset(teaching()["never_suggest"])
     out: list[str] = []
-    for _rank, form in sorted(scored):
-        if form not in out and form not in negated and form != low:
+    for _rank, _other_start, form in sorted((rank, form[:1] != low[:1], form) for rank, form in scored):
+        if form not in out and form not in negated and form != low and never.isdisjoint(form.split()):
             out.append(form)
     return out[:limit]
 

@@ -17,7 +17,7 @@ from types import MappingProxyType
 
 from .diagnostics import Diagnostic, did_you_mean
 from .lexicon import CATEGORY_TAGS, Lexicon
-from .suggest import teaching
+from .suggest import allowed_edits, teaching
 from .tagged import Candidate, Tagged
 
 __all__ = ["fit_unknown_words", "teach_syntax_error", "wordnet_kinds"]
@@ -42,10 +42,26 @@ def fit_unknown_words(
             out.append(diag)
             continue
         categories = teaching()["slots"][slot_of(words, index)]
-        suggestions = lexicon.suggest(words[index].text, categories)
+        suggestions = _form_typos(words, index, lexicon) + lexicon.suggest(words[index].text, categories)
         out.append(replace(diag, hints=did_you_mean(suggestions), suggestions=tuple(suggestions)))
         fitted[index] = _guessed(words[index], categories)
     return out, fitted
+
+
+def _form_typos(words: Sequence[Tagged], index: int, lexicon: Lexicon) -> list[str]:
+    """'stainles steel' -> 'stainless steel': two-word forms whose second word follows the unknown
+    word and whose first word it is a typo of."""
+    if index + 1 >= len(words) or words[index + 1].unknown:
+        return []
+    from rapidfuzz.distance import OSA
+
+    low, following = words[index].text.lower(), words[index + 1].text.lower()
+    budget = allowed_edits(low)
+    return [
+        " ".join(form)
+        for form in lexicon.forms
+        if len(form) == 2 and form[1] == following and OSA.distance(low, form[0], score_cutoff=budget) <= budget
+    ][:1]
 
 
 def _guessed(tagged: Tagged, categories: Sequence[str]) -> Tagged:
@@ -123,7 +139,8 @@ def _no_noun(diag: Diagnostic, words: Sequence[Tagged], main: list[Tagged], lexi
         if role is None:
             continue
         kinds = _kind_phrases(written, last.text, lexicon) if reading.category == "colours" else []
-        offered = [p + tail for p in (*kinds, *_example_phrases(written, last.text, reading, lexicon))]
+        typos = [" ".join([*written.split()[:-1], noun]) for noun in lexicon.suggest(last.text, ("nouns",))]
+        offered = [p + tail for p in (*typos, *kinds, *_example_phrases(written, last.text, reading, lexicon))]
         phrases = _working(offered, lexicon)
         hint = f"'{last.text}' is {role} here" + (f" — {did_you_mean(phrases)[0]}" if phrases else "")
         return replace(diag, hints=(hint, *diag.hints[len(phrases) > 0 :]), suggestions=tuple(phrases))

@@ -237,3 +237,19 @@ def test_a_describing_word_after_the_noun_moves_before_it(compile_text):
     (e,) = errors(compile_text, "bronze satin hammered")
     assert e.suggestions == ("satin hammered bronze",)
     assert compile_text("satin hammered bronze").ok
+
+
+def test_a_typo_in_the_first_word_of_a_two_word_noun_offers_the_noun(compile_text):
+    (e,) = errors(compile_text, "stainles steel")
+    assert e.suggestions[0] == "stainless steel"
+
+
+def test_crude_survey_names_are_never_offered(compile_text, stdlib):
+    (e,) = errors(compile_text, "whit oak")
+    assert e.suggestions[0] == "white oak" and "shit" not in e.suggestions
+    assert "shit" not in stdlib.suggest("whit") and "snot" not in stdlib.suggest("snott")
+
+
+def test_a_known_colour_in_the_noun_slot_offers_the_noun_it_is_a_typo_of(compile_text):
+    (e,) = errors(compile_text, "terracota")
+    assert e.suggestions[0] == "terracotta"
