@@ -9,32 +9,26 @@ paper §4.2), a hue axis on `<colour>.<axis>` (bluer and yellower share 'blue-ye
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from typing import Any
 
 from .. import ast
-from ..colour import apply_ops, linear_to_oklab, oklab_to_linear, oklab_to_linear_in_gamut
-from ..degrees import weighted_shade
+from ..colour import apply_ops, linear_to_oklab
 from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .bracket import Move, Step, bracket_move, scaled_steps
+from .colour_steps import Ops, chroma_step, colour_step, hue_share, hue_step, less_of, opposite_ops, scaled_ops
 from .colours import colour_text, resolve_colour
 from .refine_target import item_text, item_words, note
 
 COLOUR_LIMITS = (0.0, 1.0)
-MAX_LIGHTNESS_GIVEN = 0.1  # OKLab L a hue or chroma step may give up for its chroma (our choice)
-LIGHTNESS_SEARCH_STEP = 0.005
 LIGHTNESS_AXIS = "lightness"  # the axis of darker / lighter: its bracket is on the colour's own key
 NEUTRAL_CHROMA = 1e-4  # an OKLCh chroma below this has no hue to saturate
 UNMOVED = 1e-4  # a colour step smaller than this (per linear channel) is no visible change
-Ops = list[dict[str, Any]]
 
 
 def refine_colour(state: MaterialState, entry: Entry, item: ast.RefineItem, direction: int, weight: float) -> None:
     param = _colour_param(state, item)
-    holder, name = (
-        (state.coat, "color") if param == "coat.color" and state.coat is not None else (state.params, "base_color")
-    )
+    holder, name = _colour_holder(state, param)
     ops = entry.get("ops")
     if ops:
         step: Step = on_apparent(state, param, lambda x: colour_step(x, scaled_ops(ops, weight)))
@@ -78,63 +72,6 @@ def note_unmoved(state: MaterialState, item: ast.RefineItem, param: str, before:
     state.diagnostics.append(note(item.span, "N106", f"'{item_text(item)}' leaves the colour as it is: {why}"))
 
 
-def colour_step(rgb: list[float], ops: Ops) -> list[float]:
-    """A refinement's colour operations (shades.toml's), a hue shift ('toward') by hue_step."""
-    out = list(rgb)
-    for op in ops:
-        out = hue_step(out, op["oklab"][1:], op["amount"]) if op["op"] == "toward" else apply_ops(out, [op])
-    return out
-
-
-def hue_step(rgb: list[float], ab: Sequence[float], amount: float) -> list[float]:
-    """OKLab a, b moved `amount` of the way toward `ab`, lightness kept where the gamut allows."""
-    L, a, b = linear_to_oklab(rgb)
-    return fit_in_gamut(L, a + (ab[0] - a) * amount, b + (ab[1] - b) * amount)
-
-
-def chroma_step(rgb: list[float], scale: float) -> list[float]:
-    """OKLCh chroma times `scale`, hue kept, lightness kept where the gamut allows."""
-    L, a, b = linear_to_oklab(rgb)
-    return fit_in_gamut(L, a * scale, b * scale)
-
-
-def fit_in_gamut(L: float, a: float, b: float) -> list[float]:
-    """Linear RGB of an OKLab colour a refinement asked for. Where the sRGB gamut has no room for its
-    chroma at this lightness (near white, near black, at a saturated colour's edge), the colour gives
-    up a little lightness (at most MAX_LIGHTNESS_GIVEN, the nearest that works) before it gives up
-    chroma, so 'warmer' on white paint is a warm white and 'more saturated' red gains some chroma."""
-    if _fits((L, a, b)):
-        return oklab_to_linear((L, a, b))
-    window = [L + d for d in _offsets() if 0.0 <= L + d <= 1.0]
-    for lightness in window:
-        if _fits((lightness, a, b)):
-            return oklab_to_linear_in_gamut((lightness, a, b))
-    best = max(window, key=lambda lightness: _chroma_kept(lightness, a, b) - 1e-6 * abs(lightness - L))
-    return oklab_to_linear_in_gamut((best, a, b))
-
-
-def _offsets() -> list[float]:
-    """0, then +-0.005, +-0.01, ... up to MAX_LIGHTNESS_GIVEN: the nearest lightness first."""
-    n = round(MAX_LIGHTNESS_GIVEN / LIGHTNESS_SEARCH_STEP)
-    out = [0.0]
-    for i in range(1, n + 1):
-        out += [-i * LIGHTNESS_SEARCH_STEP, i * LIGHTNESS_SEARCH_STEP]
-    return out
-
-
-def _chroma_kept(L: float, a: float, b: float) -> float:
-    """The largest share of the chroma (a, b) that fits the gamut at lightness L (bisection)."""
-    low, high = 0.0, 1.0
-    for _ in range(20):
-        mid = (low + high) / 2
-        low, high = (mid, high) if _fits((L, a * mid, b * mid)) else (low, mid)
-    return low
-
-
-def _fits(lab: Sequence[float]) -> bool:
-    return all(-1e-7 <= c <= 1 + 1e-7 for c in oklab_to_linear(lab))
-
-
 def _colour_param(state: MaterialState, item: ast.RefineItem) -> str:
     """'darker blue' acts on the colour that 'blue' set; plain 'darker' on the base colour."""
     if isinstance(item.target, ast.Colour) and item.target.base is not None:
@@ -143,11 +80,6 @@ def _colour_param(state: MaterialState, item: ast.RefineItem) -> str:
             if key in state.words_of(param):
                 return param
     return "base_color"
-
-
-def scaled_ops(ops: Ops, weight: float) -> Ops:
-    """A colour step (shades' ops) taken `weight` times (compiler/degrees.py): amounts 1 - (1 - t)^w, scales s^w."""
-    return ops if weight == 1.0 else [weighted_shade(op, weight) for op in ops]
 
 
 def refine_saturation(state: MaterialState, ctx: Context, item: ast.RefineItem, direction: int, weight: float) -> None:
@@ -186,13 +118,13 @@ def refine_named_colour(
     holder, name = _colour_holder(state, param)
     _l, a, b = linear_to_oklab(resolve_colour(target, ctx))
     amount = 1.0 - (1.0 - HUE_STEP) ** weight
-    if direction < 0 and _share(apparent(state, param, holder[name]), (a, b)) < NEUTRAL_CHROMA:
+    if direction < 0 and hue_share(apparent(state, param, holder[name]), (a, b)) < NEUTRAL_CHROMA:
         state.diagnostics.append(
             note(item.span, "N105", f"'{item.word.text} {colour_text(target)}': the colour has none of it to take away")
         )
         return
     towards: Step = lambda x: hue_step(x, (a, b), amount)
-    away: Step = lambda x: _less_of(x, (a, b), amount)
+    away: Step = lambda x: less_of(x, (a, b), amount)
     key = f"{param}.hue:{colour_text(target)}"
     move = Move(direction, on_apparent(state, param, towards if direction > 0 else away), weight, COLOUR_LIMITS)
     current = holder[name]
@@ -215,25 +147,6 @@ def _shade_only(target: ast.Colour, ctx: Context) -> bool:
     return ctx.lexicon.entry("colours", target.shades[-1].key) is None
 
 
-def _unit(ab: tuple[float, float]) -> tuple[float, float]:
-    norm = (ab[0] ** 2 + ab[1] ** 2) ** 0.5
-    return (ab[0] / norm, ab[1] / norm) if norm > 0 else (0.0, 0.0)
-
-
-def _share(rgb: list[float], ab: tuple[float, float]) -> float:
-    """How much of the hue `ab` the colour has: its OKLab a, b along ab's direction (0 when none)."""
-    _l, a, b = linear_to_oklab(rgb)
-    u = _unit(ab)
-    return max(0.0, a * u[0] + b * u[1])
-
-
-def _less_of(rgb: list[float], ab: tuple[float, float], amount: float) -> list[float]:
-    """The colour with `amount` of its share of the hue `ab` taken away, lightness kept."""
-    L, a, b = linear_to_oklab(rgb)
-    u, share = _unit(ab), _share(rgb, ab)
-    return oklab_to_linear_in_gamut((L, a - amount * share * u[0], b - amount * share * u[1]))
-
-
 def _refine_shade(
     state: MaterialState, ctx: Context, item: ast.RefineItem, target: ast.Colour, direction: int, weight: float
 ) -> None:
@@ -241,22 +154,8 @@ def _refine_shade(
     for word in target.shades:
         ops += ctx.lexicon.require("shades", word.key).get("ops")
     w = ctx.settings.get("weight_step", 0.5) * weight
-    step_ops = scaled_ops(ops, w) if direction > 0 else _opposite_ops(scaled_ops(ops, w))
+    step_ops = scaled_ops(ops, w) if direction > 0 else opposite_ops(scaled_ops(ops, w))
     key = f"base_color.shade:{colour_text(target)}"
     move = Move(direction, lambda x: apply_ops(x, step_ops), weight, COLOUR_LIMITS)
     new = bracket_move(state.brackets, key, state.params["base_color"], move)
     state.record("base_color", new, f"refinements.{item.word.key} {colour_text(target)}: shade step", item_words(item))
-
-
-def _opposite_ops(ops: Ops) -> Ops:
-    """A shade's operations undone, last first: chroma scales inverted, lightness moved the other way
-    (a hue shift 'toward' has no opposite and is left out)."""
-    out: Ops = []
-    for op in reversed(ops):
-        if op["op"] == "chroma" and op["scale"] > 0:
-            out.append({**op, "scale": 1.0 / op["scale"]})
-        elif op["op"] == "lightness":
-            out.append({**op, "toward": 1.0 - op["toward"]})
-        elif op["op"] == "mul" and isinstance(op.get("value"), (int, float)) and op["value"] > 0:
-            out.append({**op, "value": 1.0 / op["value"]})
-    return out
