@@ -165,6 +165,7 @@ def test_the_generated_colour_compounds_are_up_to_date():
         ("unbeschichtetes Aluminium", "uncoated aluminum"),
         ("nicht zu glänzendes Kupfer", "not too glossy copper"),
         ("nicht sehr rauer Sandstein", "not very rough sandstone"),
+        ("nicht ganz glatter Beton", "slightly smooth concrete"),
         ("halbmatte Keramik", "semi-matte ceramic"),
         ("halb matte Keramik", "semi matte ceramic"),
     ],
