@@ -138,8 +138,10 @@ def _no_noun(diag: Diagnostic, words: Sequence[Tagged], main: list[Tagged], lexi
         role = teaching()["roles"].get(reading.category)
         if role is None:
             continue
-        kinds = _kind_phrases(written, last.text, lexicon) if reading.category == "colours" else []
-        typos = [" ".join([*written.split()[:-1], noun]) for noun in lexicon.suggest(last.text, ("nouns",))]
+        colour = reading.category == "colours"  # a colour alone may be a noun misspelt ('terracota')
+        kinds = _kind_phrases(written, last.text, lexicon) if colour else []
+        nouns = lexicon.suggest(last.text, ("nouns",)) if colour else []
+        typos = [" ".join([*written.split()[:-1], noun]) for noun in nouns]
         offered = [p + tail for p in (*typos, *kinds, *_example_phrases(written, last.text, reading, lexicon))]
         phrases = _working(offered, lexicon)
         hint = f"'{last.text}' is {role} here" + (f" — {did_you_mean(phrases)[0]}" if phrases else "")
