@@ -365,3 +365,10 @@ def test_knots_say_what_is_missing_and_draw_the_grain(compile_text):
     material, diags = compiled(compile_text, "cedar with knots")
     assert "wood" in graphs(material)
     assert [d.code for d in diags] == ["W120"]
+
+
+def test_a_comma_before_with(compile_text):
+    material, _ = compiled(compile_text, "satin nickel, with light scuffs")
+    assert "scratched" in graphs(material)
+    material, _ = compiled(compile_text, "pine (waxed), with a clear lacquer")
+    assert material["model"]["coat"]
