@@ -81,6 +81,9 @@ def lightness(m):
         ("Gummimatte", "rubber rug"),
         ("eiserne Geländer", "iron railings"),
         ("hölzerne Dielen", "wooden floorboards"),
+        ("bronzene Statue", "bronze statue"),
+        ("seidener Schal", "silk scarf"),
+        ("marmorner Boden", "marble floor"),
     ],
 )
 def test_a_glued_material_and_object_is_the_material(de, german, english):
