@@ -54,7 +54,7 @@ def worker_count(source: str, requested: int | None = None) -> int:
     """How many processes compile `source`: `requested`, else $CNLMC_WORKERS (a positive integer),
     else the CPUs this process may use; 1 below PARALLEL_MIN_LINES lines or where fork is missing."""
     wanted = requested if requested is not None else _workers_from_environment()
-    if wanted <= 1 or source.count("\n") + 1 < PARALLEL_MIN_LINES:
+    if wanted <= 1 or max(source.count("\n"), source.count("\r")) + 1 < PARALLEL_MIN_LINES:
         return 1
     if "fork" not in multiprocessing.get_all_start_methods():
         return 1
