@@ -48,7 +48,7 @@ def test_very_heavily_is_heavier_than_heavily_and_very_very_than_very():
 
 
 def test_the_degree_words_form_one_ordered_scale():
-    scale = ["barely", "slightly", "somewhat", "", "quite", "very", "extra", "extremely"]
+    scale = ["barely", "slightly", "somewhat", "almost", "", "quite", "very", "extra", "extremely"]
     rough = [params(f"{a} shiny titanium".strip())["roughness"] for a in scale]
     assert rough == sorted(rough, reverse=True) and len(set(rough)) == len(scale)
     assert rough[-1] > 0.0  # never a perfect mirror
