@@ -23,6 +23,7 @@ import multiprocessing
 import os
 import pickle
 import signal
+import sys
 from collections.abc import Iterator, Mapping
 from multiprocessing.connection import Connection
 from typing import Any
@@ -90,18 +91,21 @@ def parallel_material_irs(
     starts = chunk_starts(source, lines_per_chunk)
     chunks = [(i, *start, starts[i + 1][0] if i + 1 < len(starts) else None) for i, start in enumerate(starts)]
     fork = multiprocessing.get_context("fork")
+    count = min(workers, len(chunks))
     pipes, processes = [], []
+    sys.stdout.flush()  # a fork flushes its copy of the standard streams when it ends: nothing may be left in them
+    sys.stderr.flush()
     try:
-        for k in range(min(workers, len(chunks))):
+        for k in range(count):
             receiver, sender = fork.Pipe(duplex=False)
-            process = fork.Process(target=_work, args=(sender, source, ctx, chunks[k::workers]), daemon=True)
+            process = fork.Process(target=_work, args=(sender, source, ctx, chunks[k::count]), daemon=True)
             process.start()
             sender.close()
             pipes.append(receiver)
             processes.append(process)
         replay = _Replay(diags)
         for j in range(len(chunks)):
-            yield from replay.events(_receive(pipes[j % len(pipes)]))
+            yield from replay.events(_receive(pipes[j % count]))
         for process in processes:
             process.join()
     finally:
