@@ -52,8 +52,9 @@ class Colour:
 
     @property
     def words(self) -> tuple[Word, ...]:
-        words = self.shades + ((self.base,) if self.base else ())
-        return words if self.noun is None else (self.noun, *words)
+        if self.noun is not None:  # "dark walnut", "walnut brown": shades, the noun, the colour word
+            return (*self.shades, self.noun, *((self.base,) if self.base else ()))
+        return self.shades + ((self.base,) if self.base else ())
 
 
 @dataclass(frozen=True, init=False)

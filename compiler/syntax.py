@@ -63,8 +63,9 @@ class ColourPlan(NamedTuple):
         found = words[self.words]
         a, last = tagged[self.first].span, self.last
         span = a if last == self.first else Span(a.start, tagged[last].span.end, a.line, a.col)
-        if self.named:
-            return ast.Colour((), found[1] if len(found) > 1 else None, span, found[0])
+        if self.named:  # shades, the noun, a colour word: "dark walnut", "walnut brown"
+            at = next(i for i, w in enumerate(found) if w.category == "nouns")
+            return ast.Colour(found[:at], found[at + 1] if len(found) > at + 1 else None, span, found[at])
         base = found[-1]
         if self.may_have_base and base.category in COLOUR_CATEGORIES:
             return ast.Colour(found[:-1], base, span)
@@ -331,7 +332,10 @@ class _Reader:
         groups: tuple[GroupPlan, ...] = ()
         coat_word = None
         for child in tree.children:
-            if isinstance(child, Tree):
+            if isinstance(child, Tree) and child.data == "shaded_noun_tint":  # SHADE+ NOUN: one named colour
+                colour = ColourPlan(self.words(child.children), False, *self.edges(child), True)
+                groups = (GroupPlan("colour", NONE, (colour,), NONE, *self.edges(child)),)
+            elif isinstance(child, Tree):
                 groups = (self.group(child),) if child.data in GROUP_RULES else self.groups(child)
             elif child.type in ("COAT", "FEATURE"):
                 coat_word = self.word(child)

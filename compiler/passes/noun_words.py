@@ -10,6 +10,7 @@ from __future__ import annotations
 from .. import ast
 from ..diagnostics import Diagnostic, Severity
 from ..state import Context, MaterialState
+from .colours import shade
 from .words import copy_optics
 
 READING = "N122"  # a noun read as a describing word
@@ -43,7 +44,12 @@ def noun_colour(ctx: Context, colour: ast.Colour) -> list[float] | None:
     if colour.noun is None or colour.base is not None or colour.noun.unknown:
         return None
     entry = ctx.lexicon.entry("nouns", colour.noun.key)
-    return None if entry is None else list(entry.get("base_color"))
+    if entry is None:
+        return None
+    rgb = list(entry.get("base_color"))
+    for word in reversed(colour.shades):  # 'a dark walnut stain': the shade nearest the noun first
+        rgb = shade(rgb, ctx.lexicon.require("shades", word.key).get("ops"))
+    return rgb
 
 
 def apply_noun_colour(state: MaterialState, ctx: Context, colour: ast.Colour, param: str) -> None:
@@ -56,7 +62,7 @@ def apply_noun_colour(state: MaterialState, ctx: Context, colour: ast.Colour, pa
         state.note(param, rgb, f"nouns.{colour.noun.key}: the colour of {colour.noun.text}", (colour.noun,))
     else:
         state.record("base_color", rgb, f"nouns.{colour.noun.key}: the colour of {colour.noun.text}", (colour.noun,))
-    _note(state, colour, f"read '{colour.noun.text}' as the colour of {colour.noun.text}")
+    _note(state, colour, f"read '{_text(colour)}' as the colour of {colour.noun.text}")
 
 
 def _text(colour: ast.Colour) -> str:

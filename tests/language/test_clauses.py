@@ -372,3 +372,30 @@ def test_a_comma_before_with(compile_text):
     assert "scratched" in graphs(material)
     material, _ = compiled(compile_text, "pine (waxed), with a clear lacquer")
     assert material["model"]["coat"]
+
+
+@pytest.mark.parametrize(
+    "text,graph_or_param",
+    [
+        ("sterling silver with a little tarnish", "tarnished"),
+        ("zinc with some oxidation", "oxidized"),
+        ("cast iron with light pitting", "sandblasted"),
+        ("suede with signs of wear", "scratched"),
+        ("brass with a few dents", "hammered"),
+        ("titanium with fine brush marks", "brushed"),
+        ("canvas with a coarse weave", "fabric"),
+    ],
+)
+def test_more_features_draw_what_their_words_say(compile_text, text, graph_or_param):
+    result = compile_text(text)
+    assert result.ok, [d.message for d in result.diagnostics]
+    material = result.materials[0]
+    rules = {step["rule"] for steps in result.ir["materials"][0].get("provenance", {}).values() for step in steps}
+    assert graph_or_param in graphs(material) or any(graph_or_param in r for r in rules)
+
+
+def test_a_stain_named_after_a_wood_with_a_shade(compile_text):
+    dark, diags = compiled(compile_text, "maple with a dark walnut stain")
+    plain, _ = compiled(compile_text, "maple with a walnut stain")
+    assert sum(dark["params"]["base_color"]) < sum(plain["params"]["base_color"])
+    assert notes(diags, "N122") == ["read 'dark walnut' as the colour of walnut"]
