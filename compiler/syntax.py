@@ -57,14 +57,14 @@ class ColourPlan(NamedTuple):
     may_have_base: bool
     first: int  # positions in the line's tagged words, for the span
     last: int
-    named: bool = False  # the first word is a noun the colour is named after ('walnut brown', 'chrome plated')
+    noun_at: int = -1  # where the noun a colour is named after stands in its words ('walnut brown': 0), or -1
 
     def build(self, words: Words, tagged: Sequence[Tagged]) -> ast.Colour:
         found = words[self.words]
         a, last = tagged[self.first].span, self.last
         span = a if last == self.first else Span(a.start, tagged[last].span.end, a.line, a.col)
-        if self.named:  # shades, the noun, a colour word: "dark walnut", "walnut brown"
-            at = next(i for i, w in enumerate(found) if w.category == "nouns")
+        at = self.noun_at
+        if at >= 0:  # shades, the noun, a colour word: "dark walnut", "walnut brown"
             return ast.Colour(found[:at], found[at + 1] if len(found) > at + 1 else None, span, found[at])
         base = found[-1]
         if self.may_have_base and base.category in COLOUR_CATEGORIES:
@@ -322,8 +322,8 @@ class _Reader:
         return GroupPlan(kind, adverbs, colours, adjectives, *self.edges(tree))
 
     def colour(self, tree: Tree[Token]) -> ColourPlan:
-        named = tree.data == "noun_colour"
-        return ColourPlan(self.words(tree.children), tree.data == "colour", *self.edges(tree), named)
+        noun_at = 0 if tree.data == "noun_colour" else -1  # NOUN [COLOR]
+        return ColourPlan(self.words(tree.children), tree.data == "colour", *self.edges(tree), noun_at)
 
     def alternatives(self, tree: Tree[Token]) -> slice:
         return self.words(t for t in tree.children if _token(t).type != "OR")
@@ -333,7 +333,7 @@ class _Reader:
         coat_word = None
         for child in tree.children:
             if isinstance(child, Tree) and child.data == "shaded_noun_tint":  # SHADE+ NOUN: one named colour
-                colour = ColourPlan(self.words(child.children), False, *self.edges(child), True)
+                colour = ColourPlan(self.words(child.children), False, *self.edges(child), len(child.children) - 1)
                 groups = (GroupPlan("colour", NONE, (colour,), NONE, *self.edges(child)),)
             elif isinstance(child, Tree):
                 groups = (self.group(child),) if child.data in GROUP_RULES else self.groups(child)

@@ -4,6 +4,8 @@ Phrases here are deliberately not the ones of tests/language/everyday.toml.
 """
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from cnlmc import ast
 from cnlmc.document import parse_document
@@ -399,3 +401,54 @@ def test_a_stain_named_after_a_wood_with_a_shade(compile_text):
     plain, _ = compiled(compile_text, "maple with a walnut stain")
     assert sum(dark["params"]["base_color"]) < sum(plain["params"]["base_color"])
     assert notes(diags, "N122") == ["read 'dark walnut' as the colour of walnut"]
+
+
+def test_an_unknown_word_in_a_clause_is_an_error_not_a_crash(compile_text, german):
+    result = compile_text("Leinen mit grober Webstruktur", german)
+    assert [d.code for d in result.diagnostics if d.is_error] == ["E001"]
+
+
+CLAUSE_WORDS = [
+    "oak",
+    "walnut",
+    "chrome",
+    "steel",
+    "gold",
+    "with",
+    "a",
+    "and",
+    "or",
+    ",",
+    "(",
+    ")",
+    "dark",
+    "brown",
+    "plated",
+    "brushed",
+    "slightly",
+    "darker",
+    "less",
+    "glossy",
+    "veins",
+    "patina",
+    "finish",
+    "tint",
+    "scratches",
+    "a few",
+    "fine",
+    "varnish",
+    "xyzzy",
+    "stain",
+    "amber",
+    "mirror finish",
+    "rust spots",
+]
+
+
+@settings(max_examples=300, deadline=None, derandomize=True)
+@given(st.lists(st.sampled_from(CLAUSE_WORDS), min_size=1, max_size=8))
+def test_any_sequence_of_clause_words_compiles_or_says_why(stdlib, words):
+    from cnlmc.api import compile_source
+
+    result = compile_source(" ".join(words), "fuzz.cnl", stdlib)
+    assert result.ok or any(d.is_error and d.span is not None for d in result.diagnostics)
