@@ -325,3 +325,16 @@ def test_a_signal_during_a_compile_with_workers_leaves_nothing(tmp_path):
         ["pgrep", "-f", str(source)], capture_output=True, text=True
     )  # forks share the command line
     assert workers.stdout == "", "a worker outlived the compile"
+
+
+def test_materials_from_workers_read_as_the_ir_objects():
+    """An EncodedMaterial read as a mapping is the material's IR object (what the language server
+    or a pipeline would read), equal to one process's."""
+    from cnlmc.ir import EncodedMaterial
+    from cnlmc.parallel import parallel_material_irs
+
+    source = tricky_source(60, 3)
+    with cyclic_gc_paused():
+        materials = list(parallel_material_irs(source, Context(lexicon_for(), filename="big.cnl"), [], 2, 7))
+    assert all(isinstance(m, EncodedMaterial) for m in materials)
+    assert [dict(m) for m in materials] == compile_source(source, "big.cnl").ir["materials"]
