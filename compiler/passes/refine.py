@@ -50,7 +50,7 @@ def _describes_material(ctx: Context, item: ast.RefineItem) -> bool:
     target = item.target
     entry = ctx.lexicon.require("refinements", item.word.key)
     if isinstance(target, ast.Colour):  # 'deeper blue velvet' is blue velvet; 'less yellow gold' is gold
-        return entry.get("target") != "any" or entry.get("direction") > 0
+        return bool(entry.get("target") != "any" or entry.get("direction") > 0)
     assert isinstance(target, ast.Word), item
     if target.category != "adjectives":
         return False  # a property ('more grain oak') is only what the comparative changes
