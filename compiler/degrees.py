@@ -14,8 +14,9 @@ else happens on a saturating scale, so that no ordinary phrase leaves a paramete
   0; for an absolute level (set v on a degree parameter such as roughness) it continues the step
   from an anchor through the level, L(y) = L(a) + w (L(v) - L(a)), where the anchor a is the current
   value when it lies between the range's middle and the level, else the middle: "very glossy" is
-  glossier than "glossy" on every material, chrome included; a level in the middle half of the
-  range is what a process leaves, not a degree ("heavily anodized" = anodized), and other set
+  glossier than "glossy" on every material, chrome included; a degree level is "at least" that
+  degree (a material already glossier than "glossy" keeps its gloss); a level in the middle half of
+  the range is what a process leaves, not a degree ("heavily anodized" = anodized), and other set
   values (an IOR, a colour) are simply set;
 - adverbs compose by exponents (docs/language.md "Degrees and order"): an adverb before another
   adverb raises that adverb's weight to its own weight, so "very lightly" = 0.5 ** 1.5 (lighter
@@ -52,6 +53,8 @@ def weighted_formula(
 ) -> Any:
     """One lexicon formula at an adverb weight, kept inside `bounds` (per channel for colours).
     `degree`: the parameter is a degree scale (roughness, anisotropy), whose `set` levels intensify."""
+    if degree and op == "set" and type(x) is float and bounds is not None and type(value) in (float, int):
+        return degree_level(x, float(value), weight, bounds)
     if type(x) is float and weight <= 1.0 and bounds is not None and op in _LINEAR:
         exact = _paper_share(op, x, value, weight, bounds)
         if exact is not None:
@@ -89,6 +92,19 @@ def _paper_share(op: str, x: float, value: Any, weight: float, bounds: Bounds) -
 def _weighted(op: str, x: float, value: float, weight: float, bounds: Bounds) -> float:
     full = full_effect(op, x, value, bounds)
     return toward(x, full, weight, bounds)
+
+
+def degree_level(x: float, level: float, weight: float, bounds: Bounds) -> float:
+    """`set level` on a degree scale. A level near the middle (a process's result) is set as the
+    paper does; a degree level ("glossy" 0.08, "matte" 0.8) is at least that degree: a material
+    already beyond it keeps its value ("glossy chrome" stays as glossy as chrome)."""
+    lo, hi = bounds
+    middle = (lo + hi) / 2
+    if abs(level - middle) < MIDDLE_HALF * (hi - lo):
+        return x + weight * (level - x) if weight <= 1.0 else level
+    target = x + weight * (level - x) if weight <= 1.0 else intensified_level(x, level, weight, bounds)
+    side = 1.0 if level > middle else -1.0
+    return target if side * (target - x) >= 0.0 else x
 
 
 def intensified_level(x: float, level: float, weight: float, bounds: Bounds) -> float:

@@ -56,6 +56,27 @@ def _plan(groups: Sequence[ast.Group], lexicon: Lexicon) -> tuple[Step, ...]:
     return () if plan == identity else plan
 
 
+def gloss_on_coat(groups: Sequence[ast.Group], lexicon: Lexicon, coated: bool) -> tuple[ast.Group, ...]:
+    """The finish words that only set how glossy the surface is ("matte", "polished"), when the
+    material has a coat (its noun's, or a coat word of the phrase): they describe the coat, which is
+    what one sees, so they apply to it after it is laid ("matte varnished oak" is a matte varnish)."""
+    if not coated and not any(_stage_is(g, lexicon, "coat") for g in groups):
+        return ()
+    return tuple(g for g in groups if _stage_is(g, lexicon, "finish") and _gloss_only(_adjective(g, lexicon)))
+
+
+def _stage_is(group: ast.Group, lexicon: Lexicon, stage: str) -> bool:
+    adjective = _adjective(group, lexicon)
+    return adjective is not None and stage_of(adjective) == stage
+
+
+def _gloss_only(adjective: Entry | None) -> bool:
+    if adjective is None or adjective.get("maps") or adjective.get("material") or adjective.get("coat"):
+        return False
+    effects = adjective.get("effects", [])
+    return bool(effects) and all(e.get("param") == "roughness" for e in effects) and not adjective.get("on")
+
+
 def _shade_words_as_adjectives(groups: Sequence[ast.Group], lexicon: Lexicon) -> Sequence[ast.Group]:
     """A shade with no colour after it that is also an adjective ("dusty glass", "dusty dull brass",
     unlike "dusty pink") is the adjective: dust on the glass, not a muted colour."""

@@ -12,7 +12,7 @@ from types import MappingProxyType
 from typing import Any
 
 from .. import ast
-from ..degrees import compose_weights, weighted_formula, weighted_map_value
+from ..degrees import compose_weights, knee_step, weighted_formula, weighted_map_value
 from ..diagnostics import warning
 from ..formulas import apply_op, describe
 from ..graphs import graph_params
@@ -22,7 +22,7 @@ from ..state import Context, MaterialState
 from .base import _map_ref, noun_of
 from .colour_compounds import colour_compounds
 from .colours import colour_text, resolve_colour
-from .order import canonical_groups, stage_of
+from .order import canonical_groups, gloss_on_coat, stage_of
 
 Effect = dict[str, Any]  # one formula of a lexicon entry: {"param": ..., "op": ..., "value": ...}
 Holder = dict[str, Any]  # where a value goes: the material's parameters or its coat's
@@ -44,8 +44,13 @@ def group_weight(group: ast.Group, ctx: Context) -> float:
 
 def apply_groups(state: MaterialState, ctx: Context) -> MaterialState:
     groups = colour_compounds(state.selection.groups, ctx.lexicon, state.diagnostics)
-    for group in canonical_groups(groups, ctx.lexicon):
-        apply_group(state, ctx, group, target="base")
+    ordered = canonical_groups(groups, ctx.lexicon)
+    on_coat = gloss_on_coat(ordered, ctx.lexicon, state.coat is not None)
+    for group in ordered:
+        if group not in on_coat:
+            apply_group(state, ctx, group, target="base")
+    for group in on_coat:  # "matte varnished oak": the gloss one sees is the varnish's
+        apply_group(state, ctx, group, target="coat")
     return state
 
 
@@ -226,17 +231,26 @@ def _apply_effect(
     rule = _effect_rule(ctx.lexicon.caches, place, effect, weight)
     state.note(name, value, rule, words)
     if param == "roughness" and holder is state.params:
-        _move_sigma(state, effect, weight, rule, words)
+        _move_sigma(state, effect, weight, rule, words, (current, value))
 
 
-def _move_sigma(state: MaterialState, effect: Effect, weight: float, rule: str, words: Words) -> None:
+def _move_sigma(
+    state: MaterialState, effect: Effect, weight: float, rule: str, words: Words, roughness: tuple[float, float]
+) -> None:
     """A roughness word also acts on the Oren-Nayar sigma of a surface that has one (rough concrete):
-    the same formula, its numbers read as radians of facet-slope spread, saturating in sigma's range."""
+    a relative formula (mul, add) with its numbers read as radians of facet-slope spread; a level
+    (set) by the ratio it moved the roughness ('glossy concrete'); saturating in sigma's range."""
     sigma = state.params.get(DIFFUSE_SIGMA, 0.0)
     if not sigma > 0:
         return
     bounds = PARAM_BOUNDS[DIFFUSE_SIGMA]
-    value = weighted_formula(effect["op"], sigma, effect.get("value"), weight, effect.get("amount"), bounds, True)
+    if effect["op"] == "set":
+        before, after = roughness
+        if not before > 0 or after == before:
+            return
+        value = knee_step(sigma, sigma * (after / before - 1.0), bounds)
+    else:
+        value = weighted_formula(effect["op"], sigma, effect.get("value"), weight, effect.get("amount"), bounds)
     state.params[DIFFUSE_SIGMA] = value
     state.note(DIFFUSE_SIGMA, value, f"{rule}, on the Oren-Nayar sigma too", words)
 

@@ -149,6 +149,30 @@ def test_sigma_provenance_names_the_word():
     assert steps[-1]["words"] == ["rough"] and "Oren-Nayar" in steps[-1]["rule"]
 
 
+def test_a_level_word_on_a_diffuse_surface_moves_sigma_by_the_roughness_ratio():
+    assert params("glossy mortar")["diffuse_roughness"] < params("mortar")["diffuse_roughness"]
+
+
+# ---- a gloss word is at least that gloss, and describes the coat one sees
+
+
+def test_a_degree_level_never_goes_the_wrong_way():
+    assert params("glossy rhodium")["roughness"] <= params("rhodium")["roughness"]  # already glossier
+    assert params("matte felt")["diffuse_roughness"] == params("felt")["diffuse_roughness"]  # already matte
+    assert first(compiled("matte felt"))["model"]["base"] == "diffuse"
+
+
+@pytest.mark.parametrize("gloss,coat", [("matte", "varnished"), ("satin", "lacquered"), ("dull", "waxed")])
+def test_a_gloss_word_with_a_coat_describes_the_coat(gloss, coat):
+    for text in (f"{gloss} {coat} ash", f"{coat} {gloss} ash"):
+        m = first(compiled(text))
+        assert m["params"]["coat"]["roughness"] > params(f"{coat} ash")["coat"]["roughness"], text
+
+
+def test_a_gloss_word_on_a_noun_with_its_own_coat():
+    assert params("matte car paint")["coat"]["roughness"] > params("car paint")["coat"]["roughness"]
+
+
 # ---- dark finishes
 
 
