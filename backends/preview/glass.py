@@ -9,8 +9,16 @@ import numpy as np
 from .mesh import Mesh
 
 #: `glass=` option values: a solid refracts at both interfaces; a thin sheet lets the view
-#: through undeflected (docs/preview.md, "Transparent materials").
-GLASS_FORMS = ("solid", "thin")
+#: through undeflected; auto: a closed mesh is a solid, an open one (a pane, a leaf) a sheet
+#: (docs/preview.md, "Transparent materials").
+GLASS_FORMS = ("auto", "solid", "thin")
+
+
+def glass_form(mesh: Mesh, form: str = "auto") -> str:
+    """ "solid" or "thin" for this mesh: the option's choice, or by whether the mesh is closed."""
+    if form == "auto":
+        return "solid" if mesh.closed else "thin"
+    return form
 
 
 def bounding_sphere(mesh: Mesh) -> tuple[np.ndarray, float]:
@@ -21,7 +29,7 @@ def bounding_sphere(mesh: Mesh) -> tuple[np.ndarray, float]:
     return centre, radius
 
 
-def glass_uniforms(mesh: Mesh, model: np.ndarray, form: str = "solid") -> dict[str, object]:
+def glass_uniforms(mesh: Mesh, model: np.ndarray, form: str = "auto") -> dict[str, object]:
     """The transmission uniforms for the object drawn with `model` (world = model @ object).
 
     The reference thickness is the bounding radius: the base colour is the transmittance of
@@ -35,5 +43,5 @@ def glass_uniforms(mesh: Mesh, model: np.ndarray, form: str = "solid") -> dict[s
         "pv_glass_centre": world_centre,
         "pv_glass_radius": radius * scale,
         "pv_glass_reference": radius * scale,
-        "pv_glass_thin": int(form == "thin"),
+        "pv_glass_thin": int(glass_form(mesh, form) == "thin"),
     }

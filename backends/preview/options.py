@@ -42,9 +42,10 @@ OPTIONS: tuple[Option, ...] = (
     Option(
         "glass",
         str,
-        "solid",
+        "auto",
         choices=GLASS_FORMS,
-        doc="how a glass material transmits: a solid (refracted at both interfaces) or a thin-walled sheet",
+        doc="how a glass material transmits: a solid (refracted at both interfaces), a thin-walled sheet, "
+        "or auto (a closed mesh is a solid, an open one a sheet)",
     ),
     *(option for option in GLSL_OPTIONS if option.name in GLSL_PASSED),
 )
@@ -71,7 +72,7 @@ class PreviewOptions:
     exposure: float = 1.0
     msaa: int = 0
     glsl: dict = field(default_factory=dict)
-    glass: str = "solid"
+    glass: str = "auto"
 
 
 def parse_options(pairs: Mapping[str, object] | None) -> PreviewOptions:

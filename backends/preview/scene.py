@@ -19,7 +19,7 @@ class Scene:
     background_lod: float = 3.0
     exposure: float = 1.0
     env_intensity: float = 1.0
-    glass: str = "solid"  # "solid" or "thin" (a sheet): how transmission passes (glass.py)
+    glass: str = "auto"  # "solid", "thin" (a sheet) or "auto" (by mesh.closed): how glass transmits (glass.py)
 
 
 def scene_mesh(name: str, size: tuple[int, int]) -> Mesh:

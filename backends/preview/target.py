@@ -22,7 +22,13 @@ CAPABILITIES = {
     "model.diffuse": ("exact", ""),
     "model.dielectric": ("exact", ""),
     "model.conductor": ("exact", ""),
-    "model.glass": ("approximate", "reflection only (the GLSL backend renders no transmission)"),
+    "model.glass": (
+        "approximate",
+        "the environment refracted through the object (a solid's second interface is its bounding "
+        "sphere: exact for the sphere mesh; glass=thin: a sheet), Beer-Lambert tint per bounding "
+        "radius, rough transmission prefiltered or sampled by tier; the key light is not transmitted "
+        "(no caustics, no shadows); docs/preview.md 'Transparent materials'",
+    ),
     "distribution.ggx": ("exact", ""),
     "distribution.ward": ("exact", ""),
     "anisotropic": ("exact", "exact in the key light and the mc/fis tiers; split-sum uses sqrt(ax ay)"),

@@ -11,6 +11,21 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
+#: What each kind of tier does for a glass's transmission (shaders/transmission.glsl.j2,
+#: docs/preview.md "Transparent materials"); the key light is never transmitted (through
+#: smooth glass a directional light is a delta: no caustics, no shadows).
+TRANSMISSION = {
+    "ambient": "as splitsum: the refracted path, one prefiltered lookup (the constant ambient is "
+    "the reflection's only)",
+    "splitsum": "the view refracted in and out along the macro normals (solid: the bounding sphere "
+    "as the exit, up to 4 exits with internal and total internal reflection; thin: undeflected), "
+    "exact Fresnel at each interface, Beer-Lambert tint; rough: one lookup in the environment "
+    "prefiltered at the transmitted lobe's width (fitted to mc256)",
+    "sampled": "per sample a GGX visible-normal facet at the entry and at every exit (rough "
+    "transmission sampled, not prefiltered), the same paths, Fresnel and tint; fis: the "
+    "environment's mip level from the lobe's solid angle per sample",
+}
+
 
 @dataclass(frozen=True)
 class Tier:
@@ -19,6 +34,11 @@ class Tier:
     samples: int = 0
     filtered: bool = False
     doc: str = ""
+
+    @property
+    def transmission(self) -> str:
+        """What this tier does for a glass's transmission."""
+        return TRANSMISSION[self.ibl]
 
 
 TIERS = {

@@ -41,7 +41,7 @@ def glass_renderer(gl_available):
         yield made
 
 
-def render(renderer, phrase: str, env: Environment, tier: str = "splitsum", glass: str = "solid"):
+def render(renderer, phrase: str, env: Environment, tier: str = "splitsum", glass: str = "auto"):
     scene = renderer.scene("sphere", env)
     scene.background, scene.glass = "transparent", glass
     return renderer.render(material_of(phrase), tier=tier, scene=scene, hdr=True)
@@ -116,6 +116,23 @@ def test_no_glass_pixel_is_nan_in_any_tier(glass_renderer, tier, glass):
 
 def test_glass_option_is_declared_and_checked():
     assert parse_options({"glass": "thin"}).glass == "thin"
-    assert parse_options({}).glass == "solid"
+    assert parse_options({}).glass == "auto"
     with pytest.raises(PreviewOptionError):
         parse_options({"glass": "hollow"})
+
+
+def test_every_tier_says_what_it_does_for_glass():
+    from cnlmc.backends.preview.tiers import QUALITY_ORDER, parse_tier
+
+    for name in (*QUALITY_ORDER, "fis3"):
+        text = parse_tier(name).transmission
+        assert "tint" in text or text.startswith("as splitsum"), (name, text)
+
+
+def test_auto_glass_is_a_solid_for_a_closed_mesh_and_a_sheet_for_an_open_one():
+    from cnlmc.backends.preview.glass import glass_form
+    from cnlmc.backends.preview.scene import scene_mesh
+
+    assert glass_form(scene_mesh("sphere", (64, 64))) == "solid"
+    assert glass_form(scene_mesh("teapot", (64, 64))) == "thin"  # Newell's teapot has open rims
+    assert glass_form(scene_mesh("teapot", (64, 64)), "solid") == "solid"
