@@ -7,9 +7,8 @@ read by the lexicon's word formation rules (cnlmc.word_formation: unpolished, se
 wooden, not glossy; each reading is a NOTE), then reported with "did you mean". A word may
 carry several candidate tags ("gold": colour or noun); the parser picks the one the grammar
 accepts. Decorative punctuation (a trailing '.', a leading bullet, enclosing quotes) is dropped.
-Object nouns (objects.toml) never reach the parser: after a material noun they join it ("oak
-planks" = oak), alone they read as their material ("planks" = wood); a noun followed by its own
-class ("walnut wood") is the noun.
+Objects, class nouns and head words are then joined to the word they belong to (cnlmc.joins:
+"oak planks" = oak, "walnut wood" = walnut, "satin finish steel" = satin steel).
 """
 
 from __future__ import annotations
@@ -19,6 +18,7 @@ from collections import OrderedDict
 from typing import TYPE_CHECKING
 
 from .diagnostics import Diagnostic, Severity, did_you_mean, error
+from .joins import Joiner, may_join, others_of
 from .lexicon import Lexicon
 from .spans import Span, line_span
 from .tagged import NOTE_CODE, Candidate, Tagged
@@ -60,8 +60,6 @@ def raw_tokens(line: str) -> list[tuple[str, int]]:
 
 
 RawToken = tuple[str, int]  # a word's text and 0-based column
-#: The readings a head word ("finish", "look") joins: before the noun (False) or at the line's end (True).
-HEAD_HOLDERS = {False: ("ADJ", "COLOR", "NOUN"), True: ("NOUN",)}
 WordKey = tuple[str, ...]  # the lower-case words of a (multi-word) form
 
 #: How many word forms a Tagger remembers (known, inflected and unknown ones alike). An entry is
@@ -103,7 +101,7 @@ class Tagger:
     """Tags lines against one lexicon; what it learns about words is kept in its own bounded memo
     (`memo`, a WordMemo of MEMO_SIZE entries). `Tagger.of(lexicon)` is the lexicon's shared one."""
 
-    __slots__ = ("lexicon", "keywords", "followers", "lengths_from", "memo")  # made for every document
+    __slots__ = ("lexicon", "keywords", "followers", "lengths_from", "memo", "joiner")  # made for every document
 
     def __init__(self, lexicon: Lexicon, memo_size: int = MEMO_SIZE) -> None:
         self.lexicon = lexicon
@@ -111,6 +109,7 @@ class Tagger:
         self.followers = lexicon.followers
         self.lengths_from = lexicon.lengths_from
         self.memo = WordMemo(memo_size)
+        self.joiner = Joiner(lexicon, lambda: self.formation().rules)
 
     @classmethod
     def of(cls, lexicon: Lexicon) -> Tagger:
@@ -144,8 +143,8 @@ class Tagger:
                     i += 1
                     continue
             i += self._tag_at(raw, i, line_no, offset, tagged, diags)
-        if _may_join(tagged):
-            tagged = self._joined_objects(tagged, diags)
+        if may_join(tagged):
+            tagged = self.joiner.joined(tagged, diags)
         return tagged, diags
 
     def formation(self) -> WordFormation:
@@ -170,91 +169,6 @@ class Tagger:
             if hi - lo > 2 and raw[lo][0] in rules.quotes and raw[hi - 1][0] in rules.quotes:
                 lo, hi = lo + 1, hi - 1
         return raw[lo:hi]
-
-    def _joined_objects(self, tagged: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
-        """Objects and class nouns joined to their material: "oak planks" = oak, "roof tiles" =
-        tiles, "planks" = wood, "walnut wood" = walnut; each with a note."""
-        out: list[Tagged] = []
-        for k, word in enumerate(tagged):
-            before = out[-1] if out else None
-            if word.unknown or (before is not None and before.unknown):  # its tags are guesses: E001 says so
-                out.append(word)
-                continue
-            nouns = _of_tag(word, "NOUN")
-            if before is not None and _of_tag(before, "OBJECT") and not _others(before) and nouns:
-                out[-1] = self._join(before, word, nouns, f"'{word.text}' ('{before.text}' names the object)", diags)
-            elif before is not None and _of_tag(word, "OBJECT") and _of_tag(before, "NOUN"):
-                made = _of_tag(before, "NOUN")
-                out[-1] = self._join(before, word, made, f"'{made[0].key}' (the material of the {word.text})", diags)
-            elif before is not None and self._is_head(before, word.text, k + 1 == len(tagged), out):
-                out[-1] = self._with_head(before, word.text, word.span, k + 1 == len(tagged), diags)
-            elif before is not None and nouns and self._is_class_of(before, nouns):
-                made = _of_tag(before, "NOUN")
-                out[-1] = self._join(before, word, made, f"'{made[0].key}' ('{word.text}' is its class)", diags)
-            elif before is not None and nouns and _of_tag(before, "NOUN") and self._is_look(before):
-                look = f"the look of {_of_tag(before, 'NOUN')[0].key} is not drawn on it"
-                out[-1] = self._join(before, word, nouns, f"'{nouns[0].key}' ({look})", diags)
-            elif _of_tag(word, "OBJECT"):
-                if k + 1 < len(tagged) and _of_tag(tagged[k + 1], "NOUN"):
-                    out.append(word)  # "roof tiles": joined to the noun next
-                elif not _others(word) and any(_of_tag(t, "NOUN") or _of_tag(t, "OBJECT") for t in tagged[k + 1 :]):
-                    note = f"read '{word.text}' as saying how or what for, not what: the material is named later"
-                    diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))  # "wire brushed oak"
-                else:
-                    out.append(self._object_alone(word, diags))
-            else:
-                out.append(word)
-        return out
-
-    def _join(
-        self, a: Tagged, b: Tagged, candidates: tuple[Candidate, ...], reading: str, diags: list[Diagnostic]
-    ) -> Tagged:
-        span = a.span.to(b.span)
-        text = f"{a.text} {b.text}"
-        diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read '{text}' as {reading}"))
-        return Tagged(text, span, candidates, a.unknown or b.unknown)
-
-    def _is_head(self, before: Tagged, text: str, last: bool, line: list[Tagged]) -> bool:
-        """A head word (word_formation rules) that belongs to the word before it: after a
-        describing word before the noun ("satin finish steel"), or after the noun at the end of
-        the line ("brushed steel look") — not in a 'with' clause ("steel with a walnut finish")."""
-        if text.lower() not in self.formation().rules.heads:
-            return False
-        if last and any(c.tag == "WITH" for t in line for c in t.candidates):
-            return False
-        tags = HEAD_HOLDERS[last]
-        return any(c.tag in tags for c in before.candidates)
-
-    def _with_head(self, before: Tagged, text: str, span: Span, last: bool, diags: list[Diagnostic]) -> Tagged:
-        joined = before.span.to(span)
-        note = f"read '{before.text} {text}' as '{before.text}' ('{text}' names what it describes)"
-        diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
-        kept = tuple(c for c in before.candidates if c.tag in HEAD_HOLDERS[last])
-        return Tagged(f"{before.text} {text}", joined, kept, before.unknown)
-
-    def _object_alone(self, word: Tagged, diags: list[Diagnostic]) -> Tagged:
-        """An object with no material noun beside it: its other readings, else its material."""
-        others = _others(word)
-        if others:
-            return Tagged(word.text, word.span, others, word.unknown)
-        key = _of_tag(word, "OBJECT")[0].key
-        material = self.lexicon.require("objects", key).data["material"]
-        note = f"read '{word.text}' as '{material}' (the usual material of '{word.text}')"
-        diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))
-        return Tagged(word.text, word.span, (Candidate("NOUN", material, "nouns"),), word.unknown)
-
-    def _is_look(self, before: Tagged) -> bool:
-        """'leather-like' (a noun only) before another noun: a look suffix (word_formation rules,
-        `look = true`); 'mirror-like' is an adjective too, and stays one."""
-        if any(c.tag in ("ADJ", "COLOR") for c in before.candidates):
-            return False
-        return before.text.lower().endswith(self.formation().rules.look_suffixes)
-
-    def _is_class_of(self, before: Tagged, nouns: tuple[Candidate, ...]) -> bool:
-        """'walnut wood': the second noun is the class of the first."""
-        entries = [self.lexicon.entry("nouns", c.key) for c in _of_tag(before, "NOUN")]
-        classes = {e.get("class") for e in entries if e is not None}
-        return any(c.key in classes for c in nouns)
 
     def _name_prefix(self, line: str, raw: list[RawToken], line_no: int, offset: int, tagged: list[Tagged]) -> int:
         """'hull: ...' -> NAME COLON; the name may be several words."""
@@ -293,8 +207,10 @@ class Tagger:
             return 1
         if text[0].isalpha():
             last = i + 1 == len(raw)
-            if tagged and self._is_head(tagged[-1], text, last, tagged):  # "satin effect steel", "steel effect"
-                tagged[-1] = self._with_head(tagged[-1], text, self._span(raw, i, 1, line_no, offset), last, diags)
+            if tagged and self.joiner.is_head(tagged[-1], text, last, tagged):  # "satin effect steel", "steel effect"
+                tagged[-1] = self.joiner.with_head(
+                    tagged[-1], text, self._span(raw, i, 1, line_no, offset), last, diags
+                )
                 return 1
             reading = self.formation().read_at([t.lower() for t, _c in raw[i : i + 3]])
             if reading is not None:
@@ -374,44 +290,10 @@ class Tagger:
     def _guess(self, suggestions: list[str]) -> tuple[Candidate, ...]:
         """Tags for an unknown word: those of its best suggestion, else any open tag."""
         for s in suggestions[:1]:
-            found = _others_of(self._candidates(tuple(s.split())))  # an object's reading is the tagger's, not a guess
+            found = others_of(self._candidates(tuple(s.split())))  # an object's reading is the tagger's, not a guess
             if found:
                 return tuple(Candidate(c.tag, c.key, c.category) for c in found)
         return tuple(Candidate(t, "", "unknown") for t in OPEN_TAGS)
-
-
-def _may_join(tagged: list[Tagged]) -> bool:
-    """Whether a line has an object, two nouns side by side, or a head word ('finish', 'look':
-    a COAT or FEATURE reading) before another word or after a noun (see Tagger._joined_objects)."""
-    noun_before = False
-    final = tagged[-1] if tagged else None
-    for word in tagged:
-        noun = head = False
-        for candidate in word.candidates:
-            tag = candidate.tag
-            if tag == "OBJECT":
-                return True
-            if tag == "NOUN":
-                noun = True
-            elif tag == "COAT" or tag == "FEATURE":
-                head = True
-        if (noun and noun_before) or (head and (word is not final or noun_before)):
-            return True
-        noun_before = noun
-    return False
-
-
-def _of_tag(word: Tagged, tag: str) -> tuple[Candidate, ...]:
-    return tuple(c for c in word.candidates if c.tag == tag)
-
-
-def _others(word: Tagged) -> tuple[Candidate, ...]:
-    """The readings of a word that are not objects."""
-    return _others_of(word.candidates)
-
-
-def _others_of(candidates: tuple[Candidate, ...]) -> tuple[Candidate, ...]:
-    return tuple(c for c in candidates if c.tag != "OBJECT")
 
 
 def _unknown_message(text: str) -> str:

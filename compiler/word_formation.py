@@ -6,13 +6,15 @@ cnlmc.word_formation_rules; the overlay's rules first). A word is tried, in orde
 1. its hyphen dropped (sand-blasted -> sandblasted);
 2. a negation prefix and an adjective (unpolished, non-glossy): the adjective's declared
    `opposite`, else "without X" (no effect);
-3. a degree prefix and a word (semi-matte = slightly matte);
-4. a derivational suffix (wooden -> wood, mirror-like -> mirror, gold-coloured -> gold);
-   a WordNet noun under a lexicon noun, or a WordNet synonym of an adjective (cnlmc.wordnet);
-5. its known parts (matte-black = matte black; glued parts with linkers: eichen|dielen);
-6. its last part alone when that is an adjective and the rest unknown (hand-hammered).
+3. a degree prefix and an adjective (semi-matte = slightly matte, high-shine = very shiny);
+4. a derivational suffix (wooden -> wood, mirror-like -> mirror, gold-coloured -> gold,
+   roughish -> slightly rough);
+5. a WordNet noun under a lexicon noun, or a WordNet synonym of an adjective (cnlmc.wordnet);
+6. its known parts (matte-black = matte black; glued parts with linkers: eichen|dielen);
+7. its adjective part when the other part says how (hand-hammered = hammered, rough-hewn = rough).
 
-Two-word forms start at an unknown word: "not X", "not too X" (slightly X), "semi matte".
+Forms of two or three words start at an unknown word: "not X", "not too X" (slightly X),
+"semi matte", and a qualifier before another word ("kitchen cabinets": no effect).
 Every reading carries a note saying how it was made; the tagger turns it into a NOTE.
 Only unknown words come here, so the hot path of known words never does; a WordFormation
 remembers what it read (bounded), and lives in lexicon.caches.word_formation.

@@ -1,0 +1,159 @@
+"""Joining tagged words into the entry they mean (issue #14), after a line is tagged.
+
+Object nouns (objects.toml) never reach the parser: after a material noun they join it ("oak
+planks" = oak), before a noun they say what the thing is ("roof tiles" = tiles), before other
+words they say how or what for ("wire brushed oak", "car window"), alone they read as their
+material ("planks" = wood). A noun followed by its own class is the noun ("walnut wood"); a head
+word ('finish', 'look': word_formation rules) belongs to the word before it ("satin finish
+steel", "brushed steel look"); a noun read by a look suffix before another noun only describes
+its look ("leather-look vinyl"). Each join is a NOTE. `may_join` is the cheap test the tagger
+runs on every line; only lines it accepts are looked at further.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+from .diagnostics import Diagnostic, Severity
+from .spans import Span
+from .tagged import NOTE_CODE, Candidate, Tagged
+
+if TYPE_CHECKING:
+    from .lexicon import Lexicon
+    from .word_formation import Rules
+
+__all__ = ["HEAD_HOLDERS", "Joiner", "may_join", "of_tag", "others", "others_of"]
+
+#: The readings a head word ("finish", "look") joins: before the noun (False) or at the line's end (True).
+HEAD_HOLDERS = {False: ("ADJ", "COLOR", "NOUN"), True: ("NOUN",)}
+
+
+class Joiner:
+    """Joins the tagged words of a line by the lexicon's objects, noun classes and word formation
+    rules (`rules` gives them; they are made on first use)."""
+
+    __slots__ = ("lexicon", "rules")
+
+    def __init__(self, lexicon: Lexicon, rules: Callable[[], Rules]) -> None:
+        self.lexicon = lexicon
+        self.rules = rules
+
+    def joined(self, tagged: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
+        """Objects and class nouns joined to their material: "oak planks" = oak, "roof tiles" =
+        tiles, "planks" = wood, "walnut wood" = walnut; each with a note."""
+        out: list[Tagged] = []
+        for k, word in enumerate(tagged):
+            before = out[-1] if out else None
+            if word.unknown or (before is not None and before.unknown):  # its tags are guesses: E001 says so
+                out.append(word)
+                continue
+            nouns = of_tag(word, "NOUN")
+            if before is not None and of_tag(before, "OBJECT") and not others(before) and nouns:
+                out[-1] = self._join(before, word, nouns, f"'{word.text}' ('{before.text}' names the object)", diags)
+            elif before is not None and of_tag(word, "OBJECT") and of_tag(before, "NOUN"):
+                made = of_tag(before, "NOUN")
+                out[-1] = self._join(before, word, made, f"'{made[0].key}' (the material of the {word.text})", diags)
+            elif before is not None and self.is_head(before, word.text, k + 1 == len(tagged), out):
+                out[-1] = self.with_head(before, word.text, word.span, k + 1 == len(tagged), diags)
+            elif before is not None and nouns and self._is_class_of(before, nouns):
+                made = of_tag(before, "NOUN")
+                out[-1] = self._join(before, word, made, f"'{made[0].key}' ('{word.text}' is its class)", diags)
+            elif before is not None and nouns and of_tag(before, "NOUN") and self._is_look(before):
+                look = f"the look of {of_tag(before, 'NOUN')[0].key} is not drawn on it"
+                out[-1] = self._join(before, word, nouns, f"'{nouns[0].key}' ({look})", diags)
+            elif of_tag(word, "OBJECT"):
+                if k + 1 < len(tagged) and of_tag(tagged[k + 1], "NOUN"):
+                    out.append(word)  # "roof tiles": joined to the noun next
+                elif not others(word) and any(of_tag(t, "NOUN") or of_tag(t, "OBJECT") for t in tagged[k + 1 :]):
+                    note = f"read '{word.text}' as saying how or what for, not what: the material is named later"
+                    diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))  # "wire brushed oak"
+                else:
+                    out.append(self._object_alone(word, diags))
+            else:
+                out.append(word)
+        return out
+
+    def _join(
+        self, a: Tagged, b: Tagged, candidates: tuple[Candidate, ...], reading: str, diags: list[Diagnostic]
+    ) -> Tagged:
+        span = a.span.to(b.span)
+        text = f"{a.text} {b.text}"
+        diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read '{text}' as {reading}"))
+        return Tagged(text, span, candidates, a.unknown or b.unknown)
+
+    def is_head(self, before: Tagged, text: str, last: bool, line: list[Tagged]) -> bool:
+        """A head word (word_formation rules) that belongs to the word before it: after a
+        describing word before the noun ("satin finish steel"), or after the noun at the end of
+        the line ("brushed steel look") — not in a 'with' clause ("steel with a walnut finish")."""
+        if text.lower() not in self.rules().heads:
+            return False
+        if last and any(c.tag == "WITH" for t in line for c in t.candidates):
+            return False
+        tags = HEAD_HOLDERS[last]
+        return any(c.tag in tags for c in before.candidates)
+
+    def with_head(self, before: Tagged, text: str, span: Span, last: bool, diags: list[Diagnostic]) -> Tagged:
+        joined = before.span.to(span)
+        note = f"read '{before.text} {text}' as '{before.text}' ('{text}' names what it describes)"
+        diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
+        kept = tuple(c for c in before.candidates if c.tag in HEAD_HOLDERS[last])
+        return Tagged(f"{before.text} {text}", joined, kept, before.unknown)
+
+    def _object_alone(self, word: Tagged, diags: list[Diagnostic]) -> Tagged:
+        """An object with no material noun beside it: its other readings, else its material."""
+        kept = others(word)
+        if kept:
+            return Tagged(word.text, word.span, kept, word.unknown)
+        key = of_tag(word, "OBJECT")[0].key
+        material = self.lexicon.require("objects", key).data["material"]
+        note = f"read '{word.text}' as '{material}' (the usual material of '{word.text}')"
+        diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))
+        return Tagged(word.text, word.span, (Candidate("NOUN", material, "nouns"),), word.unknown)
+
+    def _is_look(self, before: Tagged) -> bool:
+        """'leather-like' (a noun only) before another noun: a look suffix (word_formation rules,
+        `look = true`); 'mirror-like' is an adjective too, and stays one."""
+        if any(c.tag in ("ADJ", "COLOR") for c in before.candidates):
+            return False
+        return before.text.lower().endswith(self.rules().look_suffixes)
+
+    def _is_class_of(self, before: Tagged, nouns: tuple[Candidate, ...]) -> bool:
+        """'walnut wood': the second noun is the class of the first."""
+        entries = [self.lexicon.entry("nouns", c.key) for c in of_tag(before, "NOUN")]
+        classes = {e.get("class") for e in entries if e is not None}
+        return any(c.key in classes for c in nouns)
+
+
+def may_join(tagged: list[Tagged]) -> bool:
+    """Whether a line has an object, two nouns side by side, or a head word ('finish', 'look':
+    a COAT or FEATURE reading) before another word or after a noun (see Joiner.joined)."""
+    noun_before = False
+    final = tagged[-1] if tagged else None
+    for word in tagged:
+        noun = head = False
+        for candidate in word.candidates:
+            tag = candidate.tag
+            if tag == "OBJECT":
+                return True
+            if tag == "NOUN":
+                noun = True
+            elif tag == "COAT" or tag == "FEATURE":
+                head = True
+        if (noun and noun_before) or (head and (word is not final or noun_before)):
+            return True
+        noun_before = noun
+    return False
+
+
+def of_tag(word: Tagged, tag: str) -> tuple[Candidate, ...]:
+    return tuple(c for c in word.candidates if c.tag == tag)
+
+
+def others(word: Tagged) -> tuple[Candidate, ...]:
+    """The readings of a word that are not objects."""
+    return others_of(word.candidates)
+
+
+def others_of(candidates: tuple[Candidate, ...]) -> tuple[Candidate, ...]:
+    return tuple(c for c in candidates if c.tag != "OBJECT")
