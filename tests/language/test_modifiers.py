@@ -290,15 +290,19 @@ def _opposed(adjectives):
     return len(keys) < len(entries) or any(keys & set(e.get("opposes", [])) for e in entries)
 
 
+COLOURS = ["", "red", "dark", "pale blue", "very dark grey", "extremely light", "deep green", "slightly reddish"]
+
+
 @PROPERTY
 @given(
     noun=st.sampled_from(NOUNS),
     groups=st.lists(
         st.tuples(st.lists(st.sampled_from(ADVERBS), max_size=2), st.sampled_from(ADJECTIVES)), min_size=1, max_size=3
     ),
+    colour=st.sampled_from(COLOURS),
 )
-def test_no_clamp_warning_for_any_adverbs_and_adjectives(noun, groups):
-    text = " ".join(" ".join((*adverbs, adjective)) for adverbs, adjective in groups) + " " + noun
+def test_no_clamp_warning_for_any_adverbs_and_adjectives(noun, groups, colour):
+    text = " ".join(" ".join((*adverbs, adjective)) for adverbs, adjective in groups) + f" {colour} {noun}"
     result = compiled(text)
     assume(result.ok)
     assert "W107" not in [d.code for d in result.diagnostics], text
