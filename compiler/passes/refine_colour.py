@@ -46,13 +46,35 @@ def refine_colour(state: MaterialState, entry: Entry, item: ast.RefineItem, dire
 
 def on_apparent(state: MaterialState, param: str, step: Step) -> Step:
     """A metal's visible colour is its base colour times its measured reflectance f0: a hue or
-    chroma step acts on that, and the base colour becomes what gives the result (within [0, 1])."""
+    chroma step acts on that, and the base colour becomes what gives the result; where that would
+    need a channel above 1 (more than the metal reflects), the base colour is the one of two that
+    shows the colour nearest (in OKLab) to the one asked for: that channel held at 1, or the whole
+    tint scaled down (hue and saturation kept, brightness given up)."""
     f0 = state.params.get("f0")
     if param != "base_color" or state.kind != "conductor" or not isinstance(f0, list):
         return step
-    return lambda base: [
-        min(max(v / f, 0.0), 1.0) if f > 0 else b for v, f, b in zip(step([b * f for b, f in zip(base, f0)]), f0, base)
-    ]
+    return lambda base: _base_for(step(_shown(base, f0)), f0, base)
+
+
+def _shown(base: list[float], f0: list[float]) -> list[float]:
+    return [b * f for b, f in zip(base, f0)]
+
+
+def _base_for(seen: list[float], f0: list[float], base: list[float]) -> list[float]:
+    """The base colour in [0, 1] that shows (nearest to) `seen` on a metal of reflectance f0."""
+    wanted = [max(v, 0.0) / f if f > 0 else b for v, f, b in zip(seen, f0, base)]
+    top = max(wanted, default=0.0)
+    if top <= 1.0:
+        return wanted
+    held = [min(w, 1.0) for w in wanted]
+    scaled = [w / top for w in wanted]
+    goal = linear_to_oklab(seen)
+    # the nearest of the two, or the base as it is when neither comes nearer to what was asked
+    return min((base, held, scaled), key=lambda b: _lab_distance(linear_to_oklab(_shown(b, f0)), goal))
+
+
+def _lab_distance(p: list[float], q: list[float]) -> float:
+    return sum((x - y) ** 2 for x, y in zip(p, q))
 
 
 def apparent(state: MaterialState, param: str, value: list[float]) -> list[float]:
