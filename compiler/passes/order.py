@@ -60,7 +60,7 @@ def gloss_on_coat(groups: Sequence[ast.Group], lexicon: Lexicon, coated: bool) -
     """The finish words that only set how glossy the surface is ("matte", "polished"), when the
     material has a coat (its noun's, or a coat word of the phrase): they describe the coat, which is
     what one sees, so they apply to it after it is laid ("matte varnished oak" is a matte varnish)."""
-    if not coated and not any(_stage_is(g, lexicon, "coat") for g in groups):
+    if not groups or (not coated and not any(_stage_is(g, lexicon, "coat") for g in groups)):
         return ()
     return tuple(g for g in groups if _stage_is(g, lexicon, "finish") and _gloss_only(_adjective(g, lexicon)))
 

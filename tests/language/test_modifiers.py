@@ -255,12 +255,7 @@ def test_every_stdlib_adjective_declares_its_stage():
     from cnlmc.passes.order import STAGES
 
     stages = {key: entry.get("stage") for key, entry in LEXICON.all_of("adjectives").items()}
-    assert all(stage in STAGES for stage in stages.values() if stage is not None)
-    import tomllib
-    from pathlib import Path
-
-    own = tomllib.loads((Path(__file__).parents[2] / "stdlib" / "lexicon" / "adjectives.toml").read_text("utf-8"))
-    assert all("stage" in entry for entry in own.values())
+    assert [key for key, stage in stages.items() if stage not in STAGES] == []
 
 
 # ---- properties over random adjective and adverb sets
