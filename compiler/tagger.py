@@ -283,6 +283,11 @@ class Tagger:
         text, col = token
         span = line_span(line_no, col + 1, len(text), offset)
         is_word = text[0].isalpha()
+        misplaced = self.formation().misplaced(text.lower()) if is_word else None
+        if misplaced is not None:  # 'not' before a noun: a rule's word with nothing to apply to
+            message, hint = misplaced
+            diags.append(error(span, "E002", message, (hint,)))
+            return Tagged(text, span, (), unknown=True)
         suggestions = self.lexicon.suggest(text) if is_word else []
         diags.append(error(span, "E001", _unknown_message(text), did_you_mean(suggestions), suggestions))
         return Tagged(text, span, self._guess(suggestions) if is_word else (), unknown=True)

@@ -129,6 +129,18 @@ class WordFormation:
                 return self._prefixed_word(first, adverb, words[1])
         return self.read(first)
 
+    def misplaced(self, word: str) -> tuple[str, str] | None:
+        """(message, hint) for a word of the rules that found nothing to apply to ('not steel')."""
+        rules = self.rules
+        if word in rules.negation_words:
+            message = f"'{word}' negates a finish or treatment word after it (glossy, polished, varnished)"
+            return message, f"e.g. '{word} glossy plastic'; a colour or a material cannot be negated"
+        if word in rules.prefixes:
+            return f"'{word}' has no describing word after it", f"e.g. '{word} matte plastic'"
+        if word in rules.qualifiers:
+            return f"'{word}' says where or what for, not what it is made of", f"name the material: 'oak {word} table'"
+        return None
+
     def read(self, word: str) -> Reading | None:
         """A reading of one unknown word, remembered."""
         memo = self.memo

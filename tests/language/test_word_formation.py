@@ -84,12 +84,6 @@ def test_un_before_an_unknown_word_stays_unknown(lexicon):
     assert [d.code for d in result.diagnostics if d.is_error] == ["E001"]
 
 
-def test_not_before_a_noun_is_not_a_negation(lexicon):
-    result = compile_source("not steel", "wf.cnl", lexicon)
-    assert not result.ok  # 'not' has nothing to negate: the word stays unknown, no traceback
-    assert any("'not'" in d.message for d in result.diagnostics if d.is_error)
-
-
 # ---------------------------------------------------------------- prefixes, suffixes, compounds
 
 
@@ -150,9 +144,19 @@ def test_an_unknown_word_is_never_joined_to_an_object(lexicon):
     assert [d.code for d in result.diagnostics] == ["E001"]
 
 
-def test_a_qualifier_alone_names_no_material(lexicon):
-    result = compile_source("kitchen", "wf.cnl", lexicon)
-    assert [d.code for d in result.diagnostics if d.is_error] == ["E001"]
+@pytest.mark.parametrize(
+    ("text", "says"),
+    [
+        ("kitchen", "says where or what for"),
+        ("not steel", "negates a finish or treatment word"),
+        ("not white plastic", "negates a finish or treatment word"),
+        ("semi steel", "no describing word after it"),
+    ],
+)
+def test_a_rule_word_with_nothing_to_apply_to_says_so(lexicon, text, says):
+    result = compile_source(text, "wf.cnl", lexicon)
+    errors = [d for d in result.diagnostics if d.is_error]
+    assert [d.code for d in errors] == ["E002"] and says in errors[0].message and errors[0].hints
 
 
 # ---------------------------------------------------------------- WordNet (English only)
