@@ -17,17 +17,26 @@ Ops = list[dict[str, Any]]
 
 
 def colour_step(rgb: list[float], ops: Ops) -> list[float]:
-    """A refinement's colour operations (shades.toml's), a hue shift ('toward') by hue_step."""
+    """A refinement's colour operations (shades.toml's): a hue shift ('toward') by hue_step; a
+    chroma factor fitted to the gamut when it is the step's only operation (a step that also sets
+    the lightness, 'brighter', keeps that lightness); the others as the shades apply them."""
     out = list(rgb)
     for op in ops:
-        out = hue_step(out, op["oklab"][1:], op["amount"]) if op["op"] == "toward" else apply_ops(out, [op])
+        if op["op"] == "toward":
+            out = hue_step(out, op["oklab"][1:], op["amount"])
+        elif op["op"] == "chroma" and len(ops) == 1:
+            out = chroma_step(out, op["scale"])
+        else:
+            out = apply_ops(out, [op])
     return out
 
 
 def hue_step(rgb: list[float], ab: Sequence[float], amount: float) -> list[float]:
-    """OKLab a, b moved `amount` of the way toward `ab`, lightness kept where the gamut allows."""
+    """One step towards a hue: OKLab a, b plus `amount` of the target's own a, b vector (its hue
+    direction at its chroma), lightness kept where the gamut allows. A colour already past the
+    target's chroma still moves further its way ('greener' on bright green is greener still)."""
     L, a, b = linear_to_oklab(rgb)
-    return fit_in_gamut(L, a + (ab[0] - a) * amount, b + (ab[1] - b) * amount)
+    return fit_in_gamut(L, a + ab[0] * amount, b + ab[1] * amount)
 
 
 def chroma_step(rgb: list[float], scale: float) -> list[float]:
@@ -94,7 +103,7 @@ def less_of(rgb: list[float], ab: tuple[float, float], amount: float) -> list[fl
     """The colour with `amount` of its share of the hue `ab` taken away, lightness kept."""
     L, a, b = linear_to_oklab(rgb)
     u, share = _unit(ab), hue_share(rgb, ab)
-    return oklab_to_linear_in_gamut((L, a - amount * share * u[0], b - amount * share * u[1]))
+    return fit_in_gamut(L, a - amount * share * u[0], b - amount * share * u[1])
 
 
 def opposite_ops(ops: Ops) -> Ops:
