@@ -101,7 +101,10 @@ def document_head(source_name: str, lexicon_sources: Iterable[str]) -> JSONDict:
 
 
 def document_ir(
-    materials: Sequence[Mapping[str, Any]], diagnostics: list[Diagnostic], source_name: str, lexicon_sources: Iterable[str]
+    materials: Sequence[Mapping[str, Any]],
+    diagnostics: list[Diagnostic],
+    source_name: str,
+    lexicon_sources: Iterable[str],
 ) -> JSONDict:
     return {
         **document_head(source_name, lexicon_sources),
