@@ -12,6 +12,7 @@ from typing import Any
 from .diagnostics import FailureKey, Mistake
 from .lexicon import Lexicon
 from .parser import ParseFailure, parse_tagged
+from .tagged import Tagged
 from .tagger import Tagger
 
 __all__ = ["Mistake", "known_mistake", "learn"]
@@ -41,10 +42,18 @@ def learn(lexicon: Lexicon) -> dict[FailureKey, Mistake]:
 def _failure_key(tagger: Tagger, phrase: str) -> FailureKey | None:
     tagged, _diags = tagger.tag_line(phrase, 1, 0)
     try:
-        parse_tagged([t for t in tagged if t.candidates])
+        parse_tagged([_as_written(t) for t in tagged if t.candidates])
     except ParseFailure as failure:
         return failure.key
     return None
+
+
+def _as_written(word: Tagged) -> Tagged:
+    """An example's word that can be a material noun is that noun: "oak blue" shows a colour after
+    the material, whether or not 'oak' also names a colour (colours.toml), so the key it teaches is
+    the failure at 'blue', not the one of a line of two colours."""
+    nouns = tuple(c for c in word.candidates if c.tag == "NOUN")
+    return Tagged(word.text, word.span, nouns, word.unknown) if nouns else word
 
 
 def known_mistake(lexicon: Lexicon, failure: ParseFailure) -> Mistake | None:

