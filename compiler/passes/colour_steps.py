@@ -36,13 +36,16 @@ def hue_step(rgb: list[float], ab: Sequence[float], amount: float) -> list[float
     direction at its chroma), lightness kept where the gamut allows. A colour already past the
     target's chroma still moves further its way ('greener' on bright green is greener still)."""
     L, a, b = linear_to_oklab(rgb)
-    return fit_in_gamut(L, a + ab[0] * amount, b + ab[1] * amount)
+    out = fit_in_gamut(L, a + ab[0] * amount, b + ab[1] * amount)
+    return out if _along(out, ab) > _along(rgb, ab) else list(rgb)  # the gamut's edge: no step back
 
 
 def chroma_step(rgb: list[float], scale: float) -> list[float]:
     """OKLCh chroma times `scale`, hue kept, lightness kept where the gamut allows."""
     L, a, b = linear_to_oklab(rgb)
-    return fit_in_gamut(L, a * scale, b * scale)
+    out = fit_in_gamut(L, a * scale, b * scale)
+    grew = _chroma(out) - (a * a + b * b) ** 0.5
+    return out if grew * (scale - 1.0) > 0 else list(rgb)  # the gamut's edge: no step back
 
 
 def fit_in_gamut(L: float, a: float, b: float) -> list[float]:
@@ -85,6 +88,18 @@ def _fits(lab: Sequence[float]) -> bool:
 def scaled_ops(ops: Ops, weight: float) -> Ops:
     """A colour step (shades' ops) taken `weight` times (compiler/degrees.py): amounts 1 - (1 - t)^w, scales s^w."""
     return ops if weight == 1.0 else [weighted_shade(op, weight) for op in ops]
+
+
+def _along(rgb: Sequence[float], ab: Sequence[float]) -> float:
+    """The colour's OKLab a, b along the direction of `ab`."""
+    _l, a, b = linear_to_oklab(rgb)
+    u = _unit((ab[0], ab[1]))
+    return a * u[0] + b * u[1]
+
+
+def _chroma(rgb: Sequence[float]) -> float:
+    _l, a, b = linear_to_oklab(rgb)
+    return float((a * a + b * b) ** 0.5)
 
 
 def _unit(ab: tuple[float, float]) -> tuple[float, float]:

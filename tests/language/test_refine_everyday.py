@@ -520,3 +520,24 @@ def test_the_live_session_reports_map_changes_and_its_notes(gl_available, tmp_pa
     assert proc.returncode == 0, proc.stderr
     assert "maps.base_color.grain" in proc.stdout and "note[N104]" in proc.stdout
     assert "no parameter changed" not in proc.stdout and "Traceback" not in proc.stderr
+
+
+HUE_LINES = {"bluer": "blue", "yellower": "yellow", "redder": "red", "greener": "green", "pinker": "pink"}
+
+
+@pytest.mark.parametrize("colour", ["bright green", "red", "sky blue", "mustard", "grey", "lavender"])
+@pytest.mark.parametrize("line", sorted(HUE_LINES))
+def test_a_hue_step_moves_towards_its_hue_from_any_colour(colour: str, line: str) -> None:
+    """The colour's OKLab a, b along the named hue grows, even past that colour's own chroma."""
+    s = Session(f"{colour} plastic", LEX)
+    target = linear_to_oklab(LEX.require("colours", HUE_LINES[line]).get("rgb"))
+    norm = math.hypot(target[1], target[2])
+
+    def along() -> float:
+        _l, a, b = lab(s.material)
+        return (a * target[1] + b * target[2]) / norm
+
+    before = along()
+    s.refine(line)
+    said = [d.code for d in s.result.diagnostics if d.span and d.span.line == 2]
+    assert along() > before + 1e-4 or "N106" in said
