@@ -5,8 +5,11 @@ must compile to exactly what its English translation compiles to: these tests co
 through the real compiler. None of the phrases here is in tests/language/everyday.toml.
 """
 
+import importlib.util
+import sys
 import tomllib
 from importlib import resources
+from pathlib import Path
 
 import pytest
 
@@ -15,6 +18,19 @@ from cnlmc.api import Session, compile_source, lexicon_for
 from .conftest import first
 
 ADJECTIVE_ENDINGS = ("e", "en", "er", "es", "em")  # strong, weak and mixed declension
+ROOT = Path(__file__).resolve().parents[2]
+COMPARATIVES = ROOT / "stdlib" / "overlays" / "de" / "refinements_declined_de.toml"
+
+
+def load_module(name, path):
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+gen_comparatives = load_module("gen_de_comparatives", ROOT / "scripts" / "gen_de_comparatives.py")
 
 
 @pytest.fixture(scope="module")
@@ -137,6 +153,25 @@ def test_every_comparative_that_is_also_a_declined_positive_reads_both_ways(de):
             readings = {(e.category, e.key) for e in de.lookup((form,))}
             if positives:  # at least one positive reading, so the form before a noun is not a refinement
                 assert readings & {(e.category, e.key) for e in positives}, (form, positives)
+
+
+@pytest.mark.parametrize(
+    "german,english",
+    [
+        ("dunkleres Holz", "darker wood"),
+        ("etwas helleres Holz", "slightly lighter wood"),
+        ("glänzenderes Aluminium", "shinier aluminum"),
+        ("rauere Keramik", "rougher ceramic"),
+    ],
+)
+def test_a_comparative_with_an_ending_is_the_comparative(de, german, english):
+    """dunkleres Holz = darker wood (not 'dark wood', which 'dunkles Holz' is)."""
+    assert same_look(material(german, de), material(english, de))
+    assert not same_look(material(german, de), material(german.replace("eres ", "es ").replace("ere ", "e "), de))
+
+
+def test_the_generated_comparatives_are_up_to_date():
+    assert COMPARATIVES.read_text("utf-8") == gen_comparatives.generate(), "rerun scripts/gen_de_comparatives.py"
 
 
 # ---------------------------------------------------------------- degrees and colours
