@@ -59,6 +59,9 @@ class Joiner:
             elif before is not None and nouns and self._is_class_of(before, nouns):
                 made = of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' ('{word.text}' is its class)", diags)
+            elif before is not None and nouns and self._is_kind_of(before, nouns):
+                made = f"'{nouns[0].key}' (made of {before.text}: the first noun says what the second is made of)"
+                out[-1] = self._join(before, word, nouns, made, diags)
             elif before is not None and nouns and of_tag(before, "NOUN") and self._is_look(before):
                 look = f"the look of {of_tag(before, 'NOUN')[0].key} is not drawn on it"
                 out[-1] = self._join(before, word, nouns, f"'{nouns[0].key}' ({look})", diags)
@@ -123,6 +126,23 @@ class Joiner:
         entries = [self.lexicon.entry("nouns", c.key) for c in of_tag(before, "NOUN")]
         classes = {e.get("class") for e in entries if e is not None}
         return any(c.key in classes for c in nouns)
+
+    def _is_kind_of(self, before: Tagged, nouns: tuple[Candidate, ...]) -> bool:
+        """'cotton canvas', 'pine plywood': a noun before a noun of a class the lexicon's setting
+        `compound_classes` pairs it with (settings.toml) says what the second is made of; a word
+        that is a describing word too ('satin') keeps that reading."""
+        if any(c.tag == "ADJ" for c in before.candidates):
+            return False
+        pairs = set(self.lexicon.settings.get("compound_classes", ()))
+        firsts = [self.lexicon.entry("nouns", c.key) for c in of_tag(before, "NOUN")]
+        seconds = [self.lexicon.entry("nouns", c.key) for c in nouns]
+        return any(
+            a.get("class") == b.get("class") in pairs or f"{a.get('class')}>{b.get('class')}" in pairs
+            for a in firsts
+            if a is not None
+            for b in seconds
+            if b is not None
+        )
 
 
 def may_join(tagged: list[Tagged]) -> bool:

@@ -66,3 +66,17 @@ def test_espresso_is_darker_than_latte():
 def test_a_wood_alone_or_before_its_class_stays_the_wood():
     assert material("walnut")["model"]["base"] == "dielectric"
     assert material("ebony")["params"]["base_color"] == material("ebony wood")["params"]["base_color"]
+
+
+@pytest.mark.parametrize(
+    ("text", "head"),
+    [("cotton canvas", "canvas"), ("wool tweed", "tweed"), ("polyester fleece", "fleece"), ("pine plywood", "plywood")],
+)
+def test_a_fibre_or_species_before_a_noun_of_its_class_is_the_second_noun(text, head):
+    assert material(text)["params"] == material(head)["params"]
+    assert any("made of" in n for n in notes(text))
+
+
+@pytest.mark.parametrize("text", ["steel aluminum", "marble granite"])
+def test_two_metals_or_two_stones_stay_two_materials(text):
+    assert not compiled(text).ok
