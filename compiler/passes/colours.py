@@ -59,5 +59,29 @@ def _shaded_name(key: str, ctx: Context) -> tuple[str, str] | None:
     return None
 
 
+def opposed_shades(c: ast.Colour, ctx: Context) -> tuple[str, str] | None:
+    """The first two shade words of a colour that pull opposite ways (lighter and darker, or more and
+    less chroma: "light dark grey", "pale deep red"), inner one first; else None. A colour's own
+    name is a name ("pale dark slate grey" is a pale version of that colour)."""
+    words = [(w.text, w.key) for w in reversed(c.shades)]  # nearest the colour first, as applied
+    pulls = [(text, _pull(ctx, key)) for text, key in words if ctx.lexicon.entry("shades", key) is not None]
+    for i, (inner, a) in enumerate(pulls):
+        for outer, b in pulls[i + 1 :]:
+            if any(x * y < 0 for x, y in zip(a, b)):
+                return inner, outer
+    return None
+
+
+def _pull(ctx: Context, shade_key: str) -> tuple[float, float]:
+    """Which way a shade moves lightness and chroma (+1, -1 or 0 each), from its operations."""
+    light = chroma = 0.0
+    for op in _ops(ctx, shade_key, 1.0):
+        if op["op"] == "lightness":
+            light = 1.0 if op["toward"] > 0.5 else -1.0
+        elif op["op"] == "chroma":
+            chroma = 0.0 if op["scale"] == 1 else (1.0 if op["scale"] > 1 else -1.0)
+    return light, chroma
+
+
 def colour_text(c: ast.Colour) -> str:
     return " ".join(w.text for w in c.words)

@@ -21,7 +21,7 @@ from ..params import COAT_PARAMS, PARAMS, ranges
 from ..state import Context, MaterialState
 from .base import _map_ref, noun_of
 from .colour_compounds import colour_compounds
-from .colours import colour_text, resolve_colour
+from .colours import colour_text, opposed_shades, resolve_colour
 from .order import canonical_groups, gloss_on_coat, stage_of
 
 Effect = dict[str, Any]  # one formula of a lexicon entry: {"param": ..., "op": ..., "value": ...}
@@ -100,9 +100,24 @@ def apply_colour(state: MaterialState, ctx: Context, c: ast.Colour, adverbs: Wor
     param, holder = _colour_slot(state, target)
     current = holder.get(param)
     rgb = resolve_colour(c, ctx, start=current, weight=weight)
+    _warn_opposed_shades(state, ctx, c)
     _warn_second_colour(state, param if target == "base" else "coat.color", c)
     holder[param] = rgb
     state.note(param if target == "base" else "coat.color", rgb, f"colours: {colour_text(c)}", (*adverbs, *c.words))
+
+
+def _warn_opposed_shades(state: MaterialState, ctx: Context, c: ast.Colour) -> None:
+    pair = opposed_shades(c, ctx) if len(c.shades) > 1 else None
+    if pair is not None:
+        inner, outer = pair
+        state.diagnostics.append(
+            warning(
+                c.span,
+                "W101",
+                f"'{outer}' contradicts '{inner}': '{outer}' wins",
+                (f"shades apply from the colour outwards, '{inner}' first; drop the one you do not mean",),
+            )
+        )
 
 
 def _colour_slot(state: MaterialState, target: str) -> tuple[str, Holder]:

@@ -240,6 +240,15 @@ def test_finish_words_that_contradict_warn_in_either_order(pair):
         assert codes(f"{words[0]} {words[1]} titanium") == ["W101"], words
 
 
+@pytest.mark.parametrize(
+    "text,outer,inner", [("light dark beech", "light", "dark"), ("pale deep cherry", "pale", "deep")]
+)
+def test_shades_that_pull_opposite_ways_warn_and_the_outer_one_wins(text, outer, inner):
+    (w101,) = [d for d in compiled(text).diagnostics if d.code == "W101"]
+    assert w101.message == f"'{outer}' contradicts '{inner}': '{outer}' wins"
+    assert codes("light pale beech") == []  # both lighter: no contradiction
+
+
 @pytest.mark.parametrize("word,like", [("finely", "lightly"), ("coarsely", "heavily"), ("freshly", "fully")])
 def test_manner_adverbs_read_as_degrees(word, like):
     assert params(f"{word} brushed nickel") == params(f"{like} brushed nickel")
