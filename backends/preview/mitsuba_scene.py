@@ -26,8 +26,8 @@ SCENE_TEMPLATE = """<?xml version="1.0" encoding="utf-8"?>
     <default name="resx" value="{width}"/>
     <default name="resy" value="{height}"/>
     <include filename="materials.xml"/>
-    <integrator type="direct">
-        <boolean name="hide_emitters" value="{hide}"/>
+    <integrator type="{integrator}">
+        <boolean name="hide_emitters" value="{hide}"/>{max_depth}
     </integrator>
     <sensor type="perspective">
         <float name="fov" value="{fov:.9g}"/>
@@ -62,6 +62,19 @@ SCENE_TEMPLATE = """<?xml version="1.0" encoding="utf-8"?>
     </shape>
 </scene>
 """
+
+
+#: Glass is rendered with the `path` integrator (`direct` stops at the first surface: a glass
+#: would show its reflection only, and the preview's transmission would not be measured);
+#: depth 8 follows a view ray in, through up to five internal reflections, and out.
+GLASS_MAX_DEPTH = 8
+
+
+def integrator_for(material: MaterialLike) -> tuple[str, str]:
+    """(integrator type, its extra properties) for the material: `path` for glass, else `direct`."""
+    if as_material(material).model.base == "glass":
+        return "path", f'\n        <integer name="max_depth" value="{GLASS_MAX_DEPTH}"/>'
+    return "direct", ""
 
 
 #: Mitsuba's sampler: low-discrepancy over each pixel's samples ("ldsampler"). With
@@ -112,7 +125,10 @@ def export_scene(
     write_exr(out / "environment.exr", mitsuba_rows(scene.env.image))  # Mitsuba's row positions
     cam = scene.camera
     distance = float(np.linalg.norm(np.subtract(cam.eye, cam.target)))
+    integrator, max_depth = integrator_for(material)
     xml = SCENE_TEMPLATE.format(
+        integrator=integrator,
+        max_depth=max_depth,
         spp=int(spp),
         width=int(width),
         height=int(height),
