@@ -80,3 +80,40 @@ def test_a_fibre_or_species_before_a_noun_of_its_class_is_the_second_noun(text, 
 @pytest.mark.parametrize("text", ["steel aluminum", "marble granite"])
 def test_two_metals_or_two_stones_stay_two_materials(text):
     assert not compiled(text).ok
+
+
+@pytest.mark.parametrize(
+    ("text", "fabric"),
+    [("jeans", "denim"), ("khakis", "twill"), ("grey hoodie", "grey fleece"), ("white t-shirt", "white jersey")],
+)
+def test_a_garment_reads_as_the_fabric_it_is_made_of(text, fabric):
+    assert material(text)["params"] == material(fabric)["params"]
+    assert any("usual material" in n for n in notes(text))
+
+
+def test_a_fabric_before_a_garment_is_that_fabric():
+    assert material("wool hoodie")["params"] == material("wool")["params"]
+
+
+@pytest.mark.parametrize("text", ["tempered glass", "safety glass", "laminated glass", "wired glass", "low-e glass"])
+def test_a_glass_process_that_does_not_change_the_look_reads_as_glass_with_no_warning(text):
+    result = compiled(text)
+    assert result.ok
+    assert not [d for d in result.diagnostics if d.severity.value == "warning"]
+    assert result.materials[0]["params"] == material("glass")["params"]
+
+
+def test_patterned_glass_is_rougher_than_clear_and_smoother_than_frosted():
+    rough = [material(t)["params"]["roughness"] for t in ("glass", "reeded glass", "frosted glass")]
+    assert rough == sorted(rough) and len(set(rough)) == 3
+
+
+@pytest.mark.parametrize("text", ["knitted wool", "hand-knitted cashmere", "woven cotton", "stretch denim"])
+def test_a_fabric_construction_keeps_the_fabric(text):
+    noun = text.split()[-1]
+    assert material(text)["params"] == material(noun)["params"]
+
+
+@pytest.mark.parametrize(("text", "noun"), [("expanded metal", "zinc"), ("beadboard", "pine"), ("glulam", "spruce")])
+def test_a_building_product_alone_is_its_usual_material(text, noun):
+    assert material(text)["params"] == material(noun)["params"]
