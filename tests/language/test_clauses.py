@@ -472,3 +472,8 @@ def test_a_noun_that_is_no_colour_tints_with_its_own_colour(compile_text, stdlib
     tinted, diags = compiled(compile_text, f"glass with a {noun} tint")
     assert tinted["params"]["base_color"] == stdlib.require("nouns", noun).get("base_color")
     assert notes(diags, "N122") == [f"read '{noun}' as the colour of {noun}"]
+
+
+def test_a_clause_in_brackets(compile_text):
+    material, _ = compiled(compile_text, "pewter (with light scuffs)")
+    assert "scratched" in graphs(material)
