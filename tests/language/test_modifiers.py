@@ -260,6 +260,29 @@ def test_colloquial_degree_words(word):
     assert compiled(f"{word} matte ceramic").ok
 
 
+# the everyday register sits on the same scale: each word as strong as its class's anchor
+REGISTER = {
+    "barely": ["marginally", "fractionally", "a hair", "vaguely"],
+    "slightly": ["a tad", "a touch", "a smidge", "a wee bit", "mildly", "faintly"],
+    "somewhat": ["fairly", "rather", "moderately", "pretty"],
+    "quite": ["notably", "distinctly", "unusually"],
+    "very": ["awfully", "terribly", "hella", "mighty"],
+    "extra": ["exceedingly", "hugely", "tremendously", "seriously"],
+    "extremely": ["mega", "crazy", "ridiculously", "insanely", "hyper", "uber"],
+}
+
+
+@pytest.mark.parametrize("anchor,word", [(a, w) for a, words in REGISTER.items() for w in words])
+def test_everyday_degree_words_sit_with_their_class(anchor, word):
+    assert params(f"{word} rough sandstone") == params(f"{anchor} rough sandstone")
+    assert codes(f"{word} glossy enamel paint") == []
+
+
+def test_the_everyday_register_keeps_the_scale_order():
+    rough = [params(f"{words[0]} shiny pewter")["roughness"] for words in REGISTER.values()]
+    assert rough == sorted(rough, reverse=True) and len(set(rough)) == len(rough)
+
+
 def test_every_stdlib_adjective_declares_its_stage():
     from cnlmc.passes.order import STAGES
 
