@@ -40,8 +40,9 @@ __all__ = [
 
 TOKEN_RE = re.compile(r"[^\W\d_](?:[\w'’\-]*\w)?|\d+(?:\.\d+)?%?|[,;:&]|\S", re.UNICODE)
 OPEN_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "REFINE")
-# a word that is a feature and a coat reads as the feature where both parse ("with a matte finish": the surface)
-_FEATURE_FIRST = tuple(t for tag in OPEN_TAGS for t in (("FEATURE", tag) if tag == "COAT" else (tag,)))
+# a word that is a feature and an adjective or coat reads as the feature where both parse: only a 'with'
+# clause takes a feature ("with a matte finish": the surface; "with a blue glaze and fine cracks": two clauses)
+_FEATURE_FIRST = tuple(t for tag in OPEN_TAGS for t in (("FEATURE", tag) if tag == "ADJ" else (tag,)))
 TAG_PREFERENCE = {
     t: i for i, t in enumerate(("NAME", "COLON", "ARTICLE", "AND", "OR", "WITH", "COMMA", *_FEATURE_FIRST, "OBJECT"))
 }

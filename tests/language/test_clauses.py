@@ -477,3 +477,10 @@ def test_a_noun_that_is_no_colour_tints_with_its_own_colour(compile_text, stdlib
 def test_a_clause_in_brackets(compile_text):
     material, _ = compiled(compile_text, "pewter (with light scuffs)")
     assert "scratched" in graphs(material)
+
+
+def test_a_feature_that_is_an_adjective_too_ends_its_clause_at_and(compile_text):
+    """'glaze' is an adjective (glazed) and a feature: in a clause the feature, so 'and' starts a second clause."""
+    material, diags = compiled(compile_text, "stoneware with a white glaze and hairline cracks")
+    assert "cracked" in graphs(material)
+    assert not [d for d in diags if d.code == "N121"]
