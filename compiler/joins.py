@@ -60,8 +60,8 @@ class Joiner:
                 made = of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' ('{word.text}' is its class)", diags)
             elif before is not None and nouns and self._is_kind_of(before, nouns):
-                made = f"'{nouns[0].key}' (made of {before.text}: the first noun says what the second is made of)"
-                out[-1] = self._join(before, word, nouns, made, diags)
+                reading = f"'{nouns[0].key}' (made of {before.text}: the first noun says what the second is made of)"
+                out[-1] = self._join(before, word, nouns, reading, diags)
             elif before is not None and nouns and of_tag(before, "NOUN") and self._is_look(before):
                 look = f"the look of {of_tag(before, 'NOUN')[0].key} is not drawn on it"
                 out[-1] = self._join(before, word, nouns, f"'{nouns[0].key}' ({look})", diags)
