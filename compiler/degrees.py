@@ -18,6 +18,8 @@ else happens on a saturating scale, so that no ordinary phrase leaves a paramete
   degree (a material already glossier than "glossy" keeps its gloss); a level in the middle half of
   the range is what a process leaves, not a degree ("heavily anodized" = anodized), and other set
   values (an IOR, a colour) are simply set;
+- a colour factor below 1 (`mul` on a colour: smoked glass, oiled wood) intensified is applied
+  `w` times, f ** w (Beer-Lambert for w times the thickness), so it keeps a neutral hue;
 - adverbs compose by exponents (docs/language.md "Degrees and order"): an adverb before another
   adverb raises that adverb's weight to its own weight, so "very lightly" = 0.5 ** 1.5 (lighter
   than "lightly") and "very heavily" = 2 ** 1.5 (heavier than "heavily").
@@ -65,6 +67,8 @@ def weighted_formula(
         return apply_op(op, x, value, weight, amount)
     if op == "set" and weight > 1.0:
         return intensified_level(x, value, weight, bounds) if degree and not isinstance(value, list) else value
+    if op == "mul" and isinstance(x, list) and weight > 1.0 and _attenuating(value):
+        return repeated_factor(x, value, weight)
     if isinstance(x, list):
         values = value if isinstance(value, list) else [value] * len(x)
         return [_weighted(op, a, b, weight, bounds) for a, b in zip(x, values)]
@@ -87,6 +91,19 @@ def _paper_share(op: str, x: float, value: Any, weight: float, bounds: Bounds) -
     if lo + width <= full <= hi - width or (op == "mul" and lo == 0.0 and 0.0 <= value <= 1.0):
         return x + weight * (full - x)
     return None
+
+
+def _attenuating(value: Any) -> bool:
+    factors = value if isinstance(value, list) else [value]
+    return all(type(f) in (float, int) and 0.0 < f <= 1.0 for f in factors)
+
+
+def repeated_factor(x: list[float], value: Any, weight: float) -> list[float]:
+    """A colour factor below 1 (an absorber: smoked glass, oil, stain) intensified: applied `weight`
+    times, f ** w, as Beer-Lambert gives for w times the thickness; it keeps the hue of a neutral
+    factor (a logit step would darken each channel by a different ratio) and never reaches black."""
+    factors = value if isinstance(value, list) else [value] * len(x)
+    return [a * float(f) ** weight for a, f in zip(x, factors)]
 
 
 def _weighted(op: str, x: float, value: float, weight: float, bounds: Bounds) -> float:
