@@ -66,6 +66,8 @@ def assert_reads_as(lexicon, text, meaning, note_has=""):
         ("non-toxic paint", "paint", "no effect"),
         ("anti-fog glass", "glass", "no effect"),
         ("no-gloss ceramic", "matte ceramic", "opposite of 'glossy'"),
+        ("untinted glass", "clear glass", "opposite of 'tinted'"),
+        ("not clear acrylic", "frosted acrylic", "opposite of 'clear'"),
         ("un-lacquered copper", "raw copper", "'raw'"),
     ],
 )
