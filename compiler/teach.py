@@ -23,6 +23,7 @@ from .tagged import Candidate, Tagged
 __all__ = ["fit_unknown_words", "teach_syntax_error", "wordnet_kinds"]
 
 CLAUSE_BREAKS = frozenset({"WITH", "COMMA", "AND", "OR", "COLON"})
+FINISHED_BY_A_NOUN = frozenset({"colours", "adjectives", "shades"})  # offered everyday nouns when alone
 ROLE_ORDER = {tag: i for i, tag in enumerate(("COAT", "COLOR", "ADJ", "SHADE", "PROP", "ADV", "REFINE"))}  # said first
 
 
@@ -140,13 +141,47 @@ def _no_noun(diag: Diagnostic, words: Sequence[Tagged], main: list[Tagged], lexi
             continue
         colour = reading.category == "colours"  # a colour alone may be a noun misspelt ('terracota')
         kinds = _kind_phrases(written, last.text, lexicon) if colour else []
-        nouns = lexicon.suggest(last.text, ("nouns",)) if colour else []
-        typos = [" ".join([*written.split()[:-1], noun]) for noun in nouns]
-        offered = [p + tail for p in (*typos, *kinds, *_example_phrases(written, last.text, reading, lexicon))]
+        typos = [" ".join([*written.split()[:-1], noun]) for noun in _misspelt_nouns(last.text, lexicon, colour)]
+        example = _example_phrases(written, last.text, reading, lexicon)
+        everyday = _everyday_phrases(written, main, lexicon) if reading.category in FINISHED_BY_A_NOUN else []
+        ordered = (*typos, *kinds, *everyday, *example) if colour else (*example, *everyday)
+        offered = [p + tail for p in ordered]
         phrases = _working(offered, lexicon)
         hint = f"'{last.text}' is {role} here" + (f" — {did_you_mean(phrases)[0]}" if phrases else "")
         return replace(diag, hints=(hint, *diag.hints[len(phrases) > 0 :]), suggestions=tuple(phrases))
     return None
+
+
+def _misspelt_nouns(word: str, lexicon: Lexicon, colour: bool) -> list[str]:
+    """The nouns a colour alone may be a typo of ('terracota' -> 'terracotta'); not a longer noun
+    that starts with the very word ('black' is not a typo of 'black ash')."""
+    if not colour:
+        return []
+    return [n for n in lexicon.suggest(word, ("nouns",)) if n.lower().split()[0] != word.lower()]
+
+
+def _everyday_phrases(written: str, main: Sequence[Tagged], lexicon: Lexicon) -> list[str]:
+    """'matte black' -> 'matte black paint', 'matte black plastic': the everyday nouns
+    (teaching.toml [completions], most common first) that every describing word applies to."""
+    table = teaching()["completions"]
+    fitting = [noun for noun in table["nouns"] if _applies_to_all(noun, main, lexicon)]
+    return [f"{written} {noun}" for noun in fitting[: table["offered"]]]
+
+
+def _applies_to_all(noun: str, main: Sequence[Tagged], lexicon: Lexicon) -> bool:
+    """Whether each word that is only a describing word allows the noun (its `applies_to`: the
+    noun's class or key); colours and shades allow any noun."""
+    entry = lexicon.entry("nouns", noun)
+    if entry is None:
+        return False
+    allowed_by = {noun, str(entry.get("class", ""))}
+    for word in main:
+        if word.candidates and all(c.tag == "ADJ" for c in word.candidates):
+            adjectives = [lexicon.entry("adjectives", c.key) for c in word.candidates]
+            limits = [set(a.get("applies_to") or ()) for a in adjectives if a is not None]
+            if limits and all(limit and not limit & allowed_by for limit in limits):
+                return False
+    return True
 
 
 def _kind_phrases(written: str, word: str, lexicon: Lexicon) -> list[str]:

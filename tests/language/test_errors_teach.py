@@ -92,7 +92,7 @@ def test_the_first_word_of_a_known_form_offers_the_form(stdlib):
 @pytest.mark.parametrize(
     "text,role,phrase",
     [
-        ("periwinkle", "a colour", "periwinkle plastic"),
+        ("periwinkle", "a colour", "periwinkle paint"),
         ("very hammered", "a describing word", "very hammered copper"),
         ("khaki", "a colour", "khaki fabric"),  # WordNet: khaki is a kind of fabric
     ],
@@ -133,7 +133,7 @@ def test_teaching_errors_through_the_cli():
     proc = run_cnlmc("compile", "-", stdin="periwinkle\nclear tinn\n")
     assert proc.returncode != 0
     assert "<stdin>:1:1: error[E003]: this phrase names no material: end it with a noun" in proc.stderr
-    assert "= 'periwinkle' is a colour here — did you mean 'periwinkle plastic'?" in proc.stderr
+    assert "= 'periwinkle' is a colour here — did you mean 'periwinkle paint'" in proc.stderr
     assert "<stdin>:2:7: error[E001]: unknown word 'tinn'" in proc.stderr
     assert "= did you mean 'tin'?" in proc.stderr
 

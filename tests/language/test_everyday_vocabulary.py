@@ -117,3 +117,19 @@ def test_a_fabric_construction_keeps_the_fabric(text):
 @pytest.mark.parametrize(("text", "noun"), [("expanded metal", "zinc"), ("beadboard", "pine"), ("glulam", "spruce")])
 def test_a_building_product_alone_is_its_usual_material(text, noun):
     assert material(text)["params"] == material(noun)["params"]
+
+
+@pytest.mark.parametrize("text", ["glossy magenta", "glossy cream", "shiny navy", "pale sage"])
+def test_a_phrase_with_no_noun_is_offered_everyday_nouns_not_nouns_that_start_with_its_colour(text):
+    (error,) = [d for d in compiled(text).diagnostics if d.is_error]
+    assert error.code == "E003"
+    offered = list(error.suggestions)
+    assert offered[:2] == [f"{text} paint", f"{text} plastic"]
+    assert all(compiled(phrase).ok for phrase in offered)
+
+
+def test_the_everyday_nouns_offered_fit_the_describing_words():
+    (error,) = [d for d in compiled("lightly frosted").diagnostics if d.is_error]
+    offered = list(error.suggestions)
+    assert "lightly frosted glass" in offered
+    assert not [p for p in offered if p.endswith(("paint", "leather", "fabric"))]
