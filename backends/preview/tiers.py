@@ -18,7 +18,7 @@ TRANSMISSION = {
     "ambient": "as splitsum: the refracted path, one prefiltered lookup (the constant ambient is "
     "the reflection's only)",
     "splitsum": "the view refracted in and out along the macro normals (solid: the bounding sphere "
-    "as the exit, up to 4 exits with internal and total internal reflection; thin: undeflected), "
+    "as the exit, two exits with internal and total internal reflection; thin: undeflected), "
     "exact Fresnel at each interface, Beer-Lambert tint; rough: one lookup in the environment "
     "prefiltered at the transmitted lobe's width (fitted to mc256)",
     "sampled": "per sample a GGX visible-normal facet at the entry and at every exit (rough "
