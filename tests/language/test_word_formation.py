@@ -353,3 +353,33 @@ def test_everyday_colour_names_the_survey_lacks(lexicon):
     for text in ("cognac suede", "oxblood leather", "off-black rubber", "jet black plastic"):
         result, _look = compiled(lexicon, text)
         assert result.ok, text
+
+
+# ---------------------------------------------------------------- over the data: every opposite, every object
+
+
+def look_of(lexicon, text):
+    result = compile_source(text, "wf.cnl", lexicon)
+    assert result.ok, (text, [d.message for d in result.diagnostics])
+    (material,) = result.ir["materials"]
+    warnings = sorted(d.code for d in result.diagnostics if d.severity is Severity.WARNING)
+    return {k: material[k] for k in ("model", "params", "maps")}, warnings
+
+
+def test_every_declared_opposite_is_what_not_and_un_read(lexicon):
+    for key, entry in lexicon.all_of("adjectives").items():
+        opposite = entry.get("opposite")
+        if opposite is None or " " in key:
+            continue
+        expected = look_of(lexicon, f"{opposite} plastic")
+        for text in (f"not {key} plastic", f"non-{key} plastic"):
+            assert look_of(lexicon, text) == expected, (text, opposite)
+
+
+def test_every_object_after_a_noun_is_that_noun_and_alone_its_material(lexicon):
+    for key, entry in lexicon.all_of("objects").items():
+        for form in (key, *entry.get("aliases", ())):
+            if " " in form or lexicon.lookup((form,)) != [entry]:
+                continue  # multi-word forms and words with other readings are tested above
+            assert look_of(lexicon, f"copper {form}") == look_of(lexicon, "copper"), form
+            assert look_of(lexicon, form) == look_of(lexicon, entry.get("material")), form
