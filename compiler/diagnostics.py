@@ -10,7 +10,7 @@ from typing import Any
 from .lines import LineTable
 from .spans import Span
 
-FailureKey = tuple[int, int, str]  # (parser stack depth, LALR state, token type) where a line failed to parse
+FailureKey = tuple[int, int, str]  # (state under the top, top state, token type): parser.failure_key
 
 
 @dataclass(frozen=True)
