@@ -25,6 +25,14 @@ COLOUR_BEFORE_MATERIAL = [
     ("honey velvet", "velvet", "honey"),
 ]
 
+OTHER_PHRASES = [
+    "cotton canvas", "wool tweed", "polyester fleece", "pine plywood", "jeans", "khakis", "grey hoodie",
+    "white t-shirt", "wool hoodie", "tempered glass", "safety glass", "laminated glass", "wired glass",
+    "low-e glass", "reeded glass", "knitted wool", "hand-knitted cashmere", "woven cotton", "stretch denim",
+    "expanded metal", "beadboard", "glulam", "glossy magenta", "glossy cream", "shiny navy", "pale sage",
+    "lightly frosted", "please polished copper", "polished copper please", "I'd like polished copper",
+]  # fmt: skip
+
 
 def compiled(text, lexicon=None):
     return api.compile_source(text, "<test>", lexicon or api.lexicon_for([]))
@@ -47,7 +55,7 @@ def luminance(rgb):
 def test_the_phrases_here_are_not_in_the_everyday_set():
     data = tomllib.loads(EVERYDAY.read_text("utf-8"))
     listed = {row["text"].lower() for row in data["phrase"]}
-    mine = {p for p, _n, _c in COLOUR_BEFORE_MATERIAL}
+    mine = {p for p, _n, _c in COLOUR_BEFORE_MATERIAL} | set(OTHER_PHRASES)
     assert not listed & mine
 
 
@@ -133,3 +141,29 @@ def test_the_everyday_nouns_offered_fit_the_describing_words():
     offered = list(error.suggestions)
     assert "lightly frosted glass" in offered
     assert not [p for p in offered if p.endswith(("paint", "leather", "fabric"))]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "please polished copper",
+        "polished copper please",
+        "polished copper, thank you",
+        "I'd like polished copper",
+        "make it polished copper",
+        "something like polished copper",
+        "Hi, I want polished copper, thanks",
+    ],
+)
+def test_politeness_at_the_edges_is_read_past_with_a_note(text):
+    result = compiled(text)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert result.materials[0]["params"] == material("polished copper")["params"]
+    assert any(n.startswith("read past") for n in notes(text))
+    assert not [d for d in result.diagnostics if d.severity.value == "warning"]
+
+
+@pytest.mark.parametrize("text", ["polished please copper", "thanks"])
+def test_politeness_inside_a_phrase_or_alone_is_still_an_unknown_word(text):
+    codes = [d.code for d in compiled(text).diagnostics if d.is_error]
+    assert "E001" in codes

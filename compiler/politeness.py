@@ -1,0 +1,59 @@
+"""Politeness and filler at the edges of a phrase (issue #14): "please", "thanks", "I want",
+"make it", "something like" are read past, with a note, as decoration.
+
+A designer who types "brushed steel, please" or "I want matte black plastic" means the material;
+rejecting the line over a courtesy teaches nothing useful, and the note still tells them the words
+are not part of the language. Only whole phrases listed in stdlib/data/teaching.toml [politeness]
+are dropped, and only at the start (`leading`) or the end (`trailing`) of a line, with a comma
+beside them; a word inside the phrase is never dropped. Runs only for a line with an unknown word
+(the unknown-word path of cnlmc.document), so ordinary lines pay nothing.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from .diagnostics import Diagnostic, Severity
+from .suggest import teaching
+from .tagged import NOTE_CODE, Tagged
+
+__all__ = ["without_politeness"]
+
+
+def without_politeness(diags: list[Diagnostic], words: Sequence[Tagged]) -> tuple[list[Diagnostic], list[Tagged]]:
+    """The line's words without the politeness at its edges, and its diagnostics without the
+    unknown-word errors of the dropped words plus one note per dropped phrase."""
+    table = teaching()["politeness"]
+    kept = list(words)
+    dropped: list[list[Tagged]] = []
+    for at_start, phrases in ((True, table["leading"]), (False, table["trailing"])):
+        while len(kept) > 1:
+            taken = _edge_phrase(kept, phrases, at_start)
+            if not taken:
+                break
+            dropped.append(kept[:taken] if at_start else kept[-taken:])
+            kept = kept[taken:] if at_start else kept[:-taken]
+    if not dropped:
+        return diags, kept
+    spans = {w.span for run in dropped for w in run}
+    out = [d for d in diags if not (d.code == "E001" and d.span in spans)]
+    for run in dropped:
+        text = " ".join(w.text for w in run if w.text[:1].isalnum())
+        note = f"read past '{text}': a phrase names the material only, so politeness is left out"
+        out.append(Diagnostic(run[0].span.to(run[-1].span), Severity.NOTE, NOTE_CODE, note))
+    return out, kept
+
+
+def _edge_phrase(words: Sequence[Tagged], phrases: Sequence[str], at_start: bool) -> int:
+    """How many words at this edge are a listed phrase (the longest), with the comma beside it."""
+    lowered = [w.text.lower() for w in words]
+    for phrase in sorted(phrases, key=lambda p: -len(p.split())):
+        parts = phrase.split()
+        n = len(parts)
+        if n >= len(words):
+            continue
+        edge = lowered[:n] if at_start else lowered[-n:]
+        if edge == parts:
+            beside = lowered[n] if at_start else lowered[-n - 1]
+            return n + 1 if beside == "," and n + 1 < len(words) else n
+    return 0
