@@ -58,11 +58,18 @@ def _plan(groups: Sequence[ast.Group], lexicon: Lexicon) -> tuple[Step, ...]:
 
 def gloss_on_coat(groups: Sequence[ast.Group], lexicon: Lexicon, coated: bool) -> tuple[ast.Group, ...]:
     """The finish words that only set how glossy the surface is ("matte", "polished"), when the
-    material has a coat (its noun's, or a coat word of the phrase): they describe the coat, which is
-    what one sees, so they apply to it after it is laid ("matte varnished oak" is a matte varnish)."""
-    if not groups or (not coated and not any(_stage_is(g, lexicon, "coat") for g in groups)):
+    material has a coat (its noun's, or a word of the phrase that lays one): they describe the coat,
+    which is what one sees, so they apply to it after it is laid ("matte varnished oak" is a matte
+    varnish, "glossy powder-coated steel" a glossy powder coat)."""
+    if not groups or (not coated and not any(_lays_coat(g, lexicon) for g in groups)):
         return ()
     return tuple(g for g in groups if _stage_is(g, lexicon, "finish") and _gloss_only(_adjective(g, lexicon)))
+
+
+def _lays_coat(group: ast.Group, lexicon: Lexicon) -> bool:
+    """A coat word ('varnished'), or a treatment that lays a layer on top ('powder-coated')."""
+    adjective = _adjective(group, lexicon)
+    return adjective is not None and (stage_of(adjective) == "coat" or bool(adjective.get("coat")))
 
 
 def _stage_is(group: ast.Group, lexicon: Lexicon, stage: str) -> bool:

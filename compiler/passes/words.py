@@ -165,6 +165,8 @@ def apply_adjective(
         _apply_effect(state, ctx, holder, effect, weight, (rule, where, index), words)
     if data.get("material"):
         _apply_material(state, ctx, adjective, words)
+    if data.get("hides"):
+        _hide_maps(state, adjective, words)
     if data.get("maps"):
         _apply_maps(state, ctx, adjective, weight, words)
     if data.get("coat"):
@@ -313,6 +315,13 @@ def copy_optics(state: MaterialState, ctx: Context, noun_key: str, rule: str, wo
     for param in ("eta", "k", "f0", "f82", "base_color"):
         state.record(param, metal.get(param), f"{rule}: optics of {metal.key}", words, source=metal.get("source"))
     return True
+
+
+def _hide_maps(state: MaterialState, adjective: Entry, words: Words) -> None:
+    """An opaque layer (paint, powder coat, enamel) covers the material's own maps of these roles."""
+    for role in adjective.get("hides", []):
+        if state.maps.pop(role, None) is not None:
+            state.note(f"maps.{role}", None, f"adjectives.{adjective.key}.hides: covered by the layer", words)
 
 
 def _apply_maps(state: MaterialState, ctx: Context, adjective: Entry, weight: float, words: Words) -> None:

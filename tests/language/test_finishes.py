@@ -71,3 +71,49 @@ def test_etched_metal_is_matted_not_refused():
 def test_polished_cloth_has_a_sheen_not_a_gloss():
     rough = params("polished linen")["roughness"]
     assert 0.4 <= rough <= 0.7
+
+
+# ---- coats: each finish lays the layer it really has
+
+
+@pytest.mark.parametrize("word,coat", [("powder-coated", "powder coat"), ("enamelled", "enamel coat")])
+def test_an_opaque_finish_hides_the_metal_under_a_clear_layer(word, coat):
+    m = material(f"green {word} copper")
+    assert m["model"]["base"] == "dielectric" and m["model"]["coat"] is True
+    assert m["params"]["coat"]["name"] == coat and "eta" not in m["params"]
+    r, g, b = m["params"]["base_color"]
+    assert g > r and g > b  # the pigment is the base
+
+
+def test_powder_coat_is_satin_and_enamel_glossy():
+    powder = params("powder-coated zinc")["coat"]["roughness"]
+    enamel = params("enamelled zinc")["coat"]["roughness"]
+    assert 0.25 <= powder < 0.5 and enamel < 0.25
+
+
+@pytest.mark.parametrize("gloss,direction", [("glossy", -1), ("matte", 1)])
+def test_a_gloss_word_describes_the_powder_coat(gloss, direction):
+    plain = params("powder-coated iron")
+    said = params(f"{gloss} powder-coated iron")
+    assert direction * (said["coat"]["roughness"] - plain["coat"]["roughness"]) > 0
+    assert said["roughness"] == plain["roughness"]  # the pigment under it is unchanged
+
+
+def test_opaque_layers_cover_the_substrates_colour_pattern():
+    assert "base_color" in material("walnut")["maps"]
+    for text in ("yellow painted walnut", "enamelled walnut"):
+        assert "base_color" not in material(text)["maps"], text
+    assert "base_color" in material("varnished walnut")["maps"]  # a clear coat shows the grain
+
+
+def test_a_layer_follows_the_shape_under_it():
+    assert "normal" in material("hammered powder-coated iron")["maps"]
+
+
+@pytest.mark.parametrize("text", ["galvanized iron", "gold plated pewter", "anodized titanium"])
+def test_metal_finishes_stay_metal(text):
+    assert material(text)["model"]["base"] == "conductor"
+
+
+def test_plated_takes_the_plating_metals_optics():
+    assert params("copper plated zinc")["f0"] == params("copper")["f0"]
