@@ -13,6 +13,7 @@ from __future__ import annotations
 from typing import Any
 
 from .. import ast
+from ..colour import linear_to_oklab
 from ..degrees import weighted_map_value
 from ..diagnostics import Diagnostic, Severity, warning
 from ..graphs import graph_params
@@ -29,6 +30,7 @@ MISSING = "W120"  # a feature nothing in the stdlib draws yet
 SECOND_COAT = "W121"  # a second coat clause
 UNUSED = "N121"  # a word of a clause the feature has no use for
 AS_COAT = "N123"  # a finish read as a coat
+SHADE_DEGREE = "N124"  # a shade before a feature without a colour, read as a degree
 COLOUR_PARAMS = ("color_r", "color_g", "color_b")
 
 
@@ -52,6 +54,10 @@ def apply_feature(state: MaterialState, ctx: Context, entry: Entry, clause: ast.
         return
     weight = clause_weight(clause, ctx)
     colour = _colour_of(clause)
+    if colour is not None and not entry.get("colour"):
+        degree = _shade_degree(state, ctx, colour, clause)
+        if degree is not None:  # 'light scratches', 'a deep grain': a shade is how strong, not a colour
+            weight, colour = weight * degree, None
     used_colour = False
     if entry.get("adjective"):
         used_colour = _apply_adjective(state, ctx, entry, clause, weight, colour)
@@ -68,6 +74,28 @@ def clause_weight(clause: ast.Feature, ctx: Context) -> float:
     for group in clause.groups:
         weight *= group_weight(group, ctx)
     return weight
+
+
+def _shade_degree(state: MaterialState, ctx: Context, colour: ast.Colour, clause: ast.Feature) -> float | None:
+    """A shade alone before a feature without a colour is a degree: lighter reads as the adverb
+    'slightly', darker as 'very' (their adverbs.toml weights), with a note."""
+    if colour.base is not None or colour.noun is not None or not colour.shades:
+        return None
+    grey = [0.18, 0.18, 0.18]
+    lightness = linear_to_oklab(resolve_colour(colour, ctx, start=grey))[0] - linear_to_oklab(grey)[0]
+    if abs(lightness) < 1e-6:
+        return None
+    adverb = "slightly" if lightness > 0 else "very"
+    text = colour_text(colour)
+    state.diagnostics.append(
+        Diagnostic(
+            colour.span,
+            Severity.NOTE,
+            SHADE_DEGREE,
+            f"read '{text}' in '{text} {clause.word.text}' as '{adverb}': how strong, not a colour",
+        )
+    )
+    return float(ctx.lexicon.require("adverbs", adverb).get("weight"))
 
 
 def _has_unknown(clause: ast.Feature) -> bool:

@@ -484,3 +484,12 @@ def test_a_feature_that_is_an_adjective_too_ends_its_clause_at_and(compile_text)
     material, diags = compiled(compile_text, "stoneware with a white glaze and hairline cracks")
     assert "cracked" in graphs(material)
     assert not [d for d in diags if d.code == "N121"]
+
+
+def test_a_shade_before_a_feature_without_a_colour_is_a_degree(compile_text):
+    light, diags = compiled(compile_text, "pewter with light scratches")
+    deep, _ = compiled(compile_text, "pewter with deep scratches")
+    plain, _ = compiled(compile_text, "pewter with scratches")
+    strength = [map_params(m, "scratched")["strength"] for m in (light, plain, deep)]
+    assert strength[0] < strength[1] < strength[2]
+    assert [d.code for d in diags] == ["N124"]
