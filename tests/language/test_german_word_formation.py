@@ -190,3 +190,20 @@ def test_a_word_no_rule_reads_is_still_an_error_with_its_position(de):
     assert not result.ok
     error = next(d for d in result.diagnostics if d.severity == Severity.ERROR)
     assert error.code == "E001" and "Quxdielen" in error.message and error.span.col == 1
+
+
+@pytest.mark.parametrize(
+    "german,english",
+    [("Lehmputz", "plaster"), ("Zementputz", "plaster"), ("Acrylfarbe", "paint"), ("Glaskeramik", "ceramic")],
+)
+def test_two_glued_materials_are_the_last_one(de, german, english):
+    """German compounds are right-headed: Lehmputz is a plaster (made of clay), noted."""
+    result = compiled(german, de)
+    assert same_look(first(result), material(english, de))
+    assert any("made of" in n for n in notes(result)) and not warnings(result)
+
+
+def test_the_german_compound_classes_keep_the_english_ones(de):
+    """settings_de.toml replaces the stdlib's list: it must still hold every English pair."""
+    english = lexicon_for().settings["compound_classes"]
+    assert set(english) <= set(de.settings["compound_classes"])
