@@ -66,7 +66,8 @@ ChoicePoint = tuple[ast.Colour, ...] | tuple[ast.Word, ...]
 def choice_points(material: ast.Material) -> list[ChoicePoint]:
     """The alternatives of a phrase in phrase order: each group's colours then adjectives, then nouns."""
     points: list[ChoicePoint] = []
-    for group in material.groups + (material.coat.groups if material.coat else ()):
+    clauses = tuple(g for f in material.features for g in f.groups)  # 'with grey or white veins'
+    for group in material.groups + (material.coat.groups if material.coat else ()) + clauses:
         for options in (group.colours, group.adjectives):
             if len(options) > 1:
                 points.append(options)
@@ -107,9 +108,12 @@ def _select(material: ast.Material, combo: tuple[Choice, ...]) -> ast.Material:
     coat = material.coat
     if coat:
         coat = ast.Coat(tuple([picks.group(g) for g in coat.groups]), coat.coat, coat.span)
+    features = tuple(
+        [ast.Feature(tuple([picks.group(g) for g in f.groups]), f.word, f.span) for f in material.features]
+    )
     nouns = picks.words(material.nouns)
     return ast.Material(
-        material.name, groups, nouns, coat, material.span, material.text, material.refinements, material.features
+        material.name, groups, nouns, coat, material.span, material.text, material.refinements, features
     )
 
 

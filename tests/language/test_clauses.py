@@ -493,3 +493,10 @@ def test_a_shade_before_a_feature_without_a_colour_is_a_degree(compile_text):
     strength = [map_params(m, "scratched")["strength"] for m in (light, plain, deep)]
     assert strength[0] < strength[1] < strength[2]
     assert [d.code for d in diags] == ["N124"]
+
+
+def test_alternatives_in_a_clause_are_variants(compile_text):
+    result = compile_text("travertine with beige or brown veins")
+    assert result.ok and len(result.materials) == 2
+    reds = sorted(map_params(m, "marble")["color_r"] for m in result.materials)
+    assert reds[0] < reds[1]
