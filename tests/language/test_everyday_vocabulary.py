@@ -167,3 +167,14 @@ def test_politeness_at_the_edges_is_read_past_with_a_note(text):
 def test_politeness_inside_a_phrase_or_alone_is_still_an_unknown_word(text):
     codes = [d.code for d in compiled(text).diagnostics if d.is_error]
     assert "E001" in codes
+
+
+@pytest.mark.parametrize(("text", "noun"), [("solid walnut", "walnut"), ("exposed brick", "brick")])
+def test_solid_and_exposed_say_the_material_is_itself(text, noun):
+    result = compiled(text)
+    assert result.ok and not [d for d in result.diagnostics if d.severity.value == "warning"]
+    assert result.materials[0]["params"] == material(noun)["params"]
+
+
+def test_a_hide_word_before_leather_is_that_leather():
+    assert material("lambskin leather")["params"] == material("nappa leather")["params"]
