@@ -136,6 +136,24 @@ def intensified_level(x: float, level: float, weight: float, bounds: Bounds) -> 
     return toward(anchor, level, weight, bounds)
 
 
+def word_level(level: float, weight: float, bounds: Bounds) -> float | None:
+    """What a rough-side degree level says by itself, whatever the material: 'matte' 0.8, 'very
+    matte' beyond it, 'slightly matte' between the middle and it. None for a glossy level or a
+    process level (the middle half of the range)."""
+    lo, hi = bounds
+    middle = (lo + hi) / 2
+    if level - middle < MIDDLE_HALF * (hi - lo):
+        return None
+    return degree_level(middle, level, weight, bounds)
+
+
+def sigma_of_roughness(roughness: float) -> float:
+    """The Oren-Nayar sigma (radians, the spread of facet angles) of a surface with this perceptual
+    roughness: alpha = roughness ** 2 is the RMS facet slope (Beckmann; GGX alike), and a slope s
+    is a facet angle atan(s), so sigma = atan(roughness ** 2): 'matte' 0.8 -> 0.57, 1.0 -> 0.79."""
+    return math.atan(roughness * roughness)
+
+
 def full_effect(op: str, x: float, value: float, bounds: Bounds) -> float:
     """The formula at weight 1, saturating near the bound it moves toward."""
     if op == "set":

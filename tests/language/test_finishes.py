@@ -117,3 +117,31 @@ def test_metal_finishes_stay_metal(text):
 
 def test_plated_takes_the_plating_metals_optics():
     assert params("copper plated zinc")["f0"] == params("copper")["f0"]
+
+
+# ---- a surface the words make diffuse gets its Oren-Nayar sigma from them
+
+
+def sigma(text):
+    m = material(text)
+    return m["model"]["diffuse"], m["params"].get("diffuse_roughness", 0.0)
+
+
+def test_words_that_make_a_plastic_diffuse_give_it_a_sigma():
+    lobe, value = sigma("extremely matte polypropylene")
+    assert lobe == "oren_nayar" and 0.5 < value < 0.8
+
+
+def test_a_stronger_matte_word_means_a_larger_sigma():
+    values = [sigma(f"{a}matte linen")[1] for a in ("", "very ", "extremely ")]
+    assert values == sorted(values) and len(set(values)) == 3
+
+
+def test_matte_raises_a_smoother_cloth_to_matte_and_keeps_a_rougher_one():
+    assert sigma("matte silk")[1] >= sigma("silk")[1]
+    assert sigma("matte velvet") == sigma("velvet")  # velvet is already beyond 'matte'
+    assert sigma("very matte velvet")[1] > sigma("velvet")[1]
+
+
+def test_a_matte_plastic_that_stays_specular_keeps_its_lambert_lobe():
+    assert sigma("matte nylon")[0] == "lambert"
