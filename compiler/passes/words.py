@@ -293,7 +293,7 @@ def _sigma_for_level(sigma: float, effect: Effect, weight: float, roughness: tup
     if before > 0 and after != before:
         return knee_step(sigma, sigma * (after / before - 1.0), PARAM_BOUNDS[DIFFUSE_SIGMA])
     level = effect.get("value")
-    if type(level) not in (float, int) or after != before:
+    if not isinstance(level, (float, int)) or after != before:
         return None
     own = word_level(float(level), weight, PARAM_BOUNDS["roughness"])
     if own is None:
