@@ -133,6 +133,16 @@ def test_declined_shades_including_the_dropped_e(de, stem, shade):
         assert same_look(material(f"{stem}{ending} Eiche", de), want), f"{stem}{ending} Eiche"
 
 
+@pytest.mark.parametrize("stem,english", [("beige", "beige"), ("orange", "orange"), ("rosa", "pink")])
+def test_colours_ending_in_a_vowel_decline_too(de, stem, english):
+    """beiger, beigem (the ending's consonant only), orangene, rosaner (an -n- before the ending)."""
+    want = material(f"{english} velvet", de)
+    forms = [stem + e for e in ("r", "s", "n", "m")] if stem.endswith("e") else []
+    forms += [stem + "n" + e for e in ADJECTIVE_ENDINGS]
+    for form in forms:
+        assert same_look(material(f"{form} Samt", de), want), form
+
+
 def test_the_er_form_alone_on_a_line_is_still_the_comparative(de):
     s = Session("roter Kunststoff", lexicon=de)
     before = s.material["params"]
