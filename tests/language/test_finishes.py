@@ -145,3 +145,24 @@ def test_matte_raises_a_smoother_cloth_to_matte_and_keeps_a_rougher_one():
 
 def test_a_matte_plastic_that_stays_specular_keeps_its_lambert_lobe():
     assert sigma("matte nylon")[0] == "lambert"
+
+
+# ---- treatment words by class: the same word, the physics of each class
+
+
+@pytest.mark.parametrize("noun", ["borosilicate glass", "titanium", "polycarbonate"])
+def test_water_on_a_sealed_surface_glosses_it_without_darkening(noun):
+    dry, wet = params(noun), params(f"wet {noun}")
+    assert luminance(wet["base_color"]) == pytest.approx(luminance(dry["base_color"]))
+    assert wet["roughness"] <= dry["roughness"]
+
+
+@pytest.mark.parametrize("noun", ["sandstone", "pine", "terracotta"])
+def test_water_in_a_porous_surface_darkens_it(noun):
+    assert luminance(params(f"wet {noun}")["base_color"]) < luminance(params(noun)["base_color"])
+
+
+@pytest.mark.parametrize("noun", ["cedar", "acrylic", "porcelain"])
+def test_blasting_roughens_wood_plastic_and_ceramic_too(noun):
+    assert warnings(f"bead-blasted {noun}") == []
+    assert params(f"bead-blasted {noun}")["roughness"] > params(noun)["roughness"]
