@@ -23,6 +23,12 @@ COLOUR_BEFORE_MATERIAL = [
     ("graphite wool", "wool", "graphite"),
     ("walnut paint", "paint", "walnut"),
     ("honey velvet", "velvet", "honey"),
+    ("brick linen", "linen", "brick"),
+    ("cobalt velvet", "velvet", "cobalt"),
+    ("granite leather", "leather", "granite"),
+    ("onyx suede", "suede", "onyx"),
+    ("pewter velvet", "velvet", "pewter"),
+    ("greige paint", "paint", "greige"),
 ]
 
 OTHER_PHRASES = [
