@@ -20,7 +20,7 @@ from ..degrees import (
     weighted_map_value,
     word_level,
 )
-from ..diagnostics import warning
+from ..diagnostics import Diagnostic, Severity, warning
 from ..formulas import apply_op, describe
 from ..graphs import graph_params
 from ..lexicon import Entry, LexiconCaches
@@ -168,6 +168,8 @@ def apply_adjective(
     holder = state.coat if target == "coat" and state.coat is not None else state.params
     rule, data = f"adjectives.{adjective.key}", adjective.data
     where, effects = effect_source(adjective, state)
+    if not effects and not group.colours and not any(data.get(k) for k in ("maps", "coat", "material", "hides")):
+        _note_unchanged_look(state, word)
     for index, effect in enumerate(effects):
         _apply_effect(state, ctx, holder, effect, weight, (rule, where, index), words)
     if data.get("material"):
@@ -180,6 +182,15 @@ def apply_adjective(
         _apply_adjective_coat(state, ctx, adjective, words)
     for c in group.colours:
         _apply_qualifier(state, ctx, adjective, c, group.adverbs, colour_weight)
+
+
+def _note_unchanged_look(state: MaterialState, word: ast.Word) -> None:
+    """A word of how a thing is made ('tempered', 'laminated', 'raw') that changes no surface parameter."""
+    message = f"'{word.text}' does not change how {noun_of(state).key} looks: no surface parameter changes"
+    state.diagnostics.append(Diagnostic(word.span, Severity.NOTE, UNCHANGED_LOOK, message, ()))
+
+
+UNCHANGED_LOOK = "N141"  # a describing word with no effect on the look
 
 
 def effects_for(adjective: Entry, state: MaterialState) -> list[Effect]:

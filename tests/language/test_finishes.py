@@ -166,3 +166,26 @@ def test_water_in_a_porous_surface_darkens_it(noun):
 def test_blasting_roughens_wood_plastic_and_ceramic_too(noun):
     assert warnings(f"bead-blasted {noun}") == []
     assert params(f"bead-blasted {noun}")["roughness"] > params(noun)["roughness"]
+
+
+def test_reclaimed_ages_brick_and_stone_and_is_rough_sawn_on_wood():
+    assert warnings("reclaimed limestone") == []
+    assert params("reclaimed limestone").get("roughness", 1.0) > params("limestone")["roughness"]  # 1.0: diffuse
+    assert luminance(params("reclaimed ash")["base_color"]) != luminance(params("ash")["base_color"])
+
+
+# ---- a word of how a thing is made that changes nothing on its surface says so (a note)
+
+
+def notes(text):
+    return [d.code for d in compile_source(text, "finishes.cnl", LEXICON).diagnostics if d.severity == "note"]
+
+
+@pytest.mark.parametrize("text,plain", [("toughened glass", "glass"), ("laminated quartz", "quartz")])
+def test_a_process_that_leaves_the_look_says_so_in_a_note(text, plain):
+    assert material(text)["params"] == material(plain)["params"]
+    assert "N141" in notes(text) and warnings(text) == []
+
+
+def test_a_word_that_changes_the_look_has_no_such_note():
+    assert "N141" not in notes("frosted glass")
