@@ -4,8 +4,8 @@
 A designer who types "brushed steel, please" or "I want matte black plastic" means the material;
 rejecting the line over a courtesy teaches nothing useful, and the note still tells them the words
 are not part of the language. Only whole phrases listed in stdlib/data/teaching.toml [politeness]
-are dropped, and only at the start (`leading`) or the end (`trailing`) of a line, with a comma
-beside them; a word inside the phrase is never dropped. Runs only for a line with an unknown word
+are dropped, and only at the start (`leading`) or the end (`trailing`) of a line, with a mark
+beside them (`marks`: "Hi! brushed steel"); a word inside the phrase is never dropped. Runs only for a line with an unknown word
 (the unknown-word path of cnlmc.document), so ordinary lines pay nothing.
 """
 
@@ -24,11 +24,12 @@ def without_politeness(diags: list[Diagnostic], words: Sequence[Tagged]) -> tupl
     """The line's words without the politeness at its edges, and its diagnostics without the
     unknown-word errors of the dropped words plus one note per dropped phrase."""
     table = teaching()["politeness"]
+    marks = frozenset(table["marks"])
     kept = list(words)
     dropped: list[list[Tagged]] = []
     for at_start, phrases in ((True, table["leading"]), (False, table["trailing"])):
         while len(kept) > 1:
-            taken = _edge_phrase(kept, phrases, at_start)
+            taken = _edge_phrase(kept, phrases, marks, at_start)
             if not taken:
                 break
             dropped.append(kept[:taken] if at_start else kept[-taken:])
@@ -36,7 +37,7 @@ def without_politeness(diags: list[Diagnostic], words: Sequence[Tagged]) -> tupl
     if not dropped:
         return diags, kept
     spans = {w.span for run in dropped for w in run}
-    out = [d for d in diags if not (d.code == "E001" and d.span in spans)]
+    out = [d for d in diags if not (d.code == "E001" and d.span in spans)]  # unknown words, stray marks
     for run in dropped:
         text = " ".join(w.text for w in run if w.text[:1].isalnum())
         note = f"read past '{text}': a phrase names the material only, so politeness is left out"
@@ -44,8 +45,8 @@ def without_politeness(diags: list[Diagnostic], words: Sequence[Tagged]) -> tupl
     return out, kept
 
 
-def _edge_phrase(words: Sequence[Tagged], phrases: Sequence[str], at_start: bool) -> int:
-    """How many words at this edge are a listed phrase (the longest), with the comma beside it."""
+def _edge_phrase(words: Sequence[Tagged], phrases: Sequence[str], marks: frozenset[str], at_start: bool) -> int:
+    """How many words at this edge are a listed phrase (the longest), with the mark beside it."""
     lowered = [w.text.lower() for w in words]
     for phrase in sorted(phrases, key=lambda p: -len(p.split())):
         parts = phrase.split()
@@ -55,5 +56,5 @@ def _edge_phrase(words: Sequence[Tagged], phrases: Sequence[str], at_start: bool
         edge = lowered[:n] if at_start else lowered[-n:]
         if edge == parts:
             beside = lowered[n] if at_start else lowered[-n - 1]
-            return n + 1 if beside == "," and n + 1 < len(words) else n
+            return n + 1 if beside in marks and n + 1 < len(words) else n
     return 0

@@ -159,6 +159,8 @@ def test_the_everyday_nouns_offered_fit_the_describing_words():
         "make it polished copper",
         "something like polished copper",
         "Hi, I want polished copper, thanks",
+        "Hello! could you do polished copper",
+        "polished copper would be nice",
     ],
 )
 def test_politeness_at_the_edges_is_read_past_with_a_note(text):
