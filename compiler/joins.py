@@ -21,6 +21,7 @@ from .tagged import NOTE_CODE, Candidate, Tagged
 
 if TYPE_CHECKING:
     from .lexicon import Lexicon
+    from .resemblance import Resemblance
     from .word_formation import Rules
 
 __all__ = ["HEAD_HOLDERS", "Joiner", "may_join", "of_tag", "others", "others_of"]
@@ -33,11 +34,20 @@ class Joiner:
     """Joins the tagged words of a line by the lexicon's objects, noun classes and word formation
     rules (`rules` gives them; they are made on first use)."""
 
-    __slots__ = ("lexicon", "rules")
+    __slots__ = ("lexicon", "resembling", "rules")
 
     def __init__(self, lexicon: Lexicon, rules: Callable[[], Rules]) -> None:
         self.lexicon = lexicon
         self.rules = rules
+        self.resembling: Resemblance | None = None  # made on first use
+
+    def resemblance(self) -> Resemblance:
+        """What a noun lends when it describes another material (cnlmc.resemblance)."""
+        if self.resembling is None:
+            from .resemblance import Resemblance
+
+            self.resembling = Resemblance(self.lexicon, self.rules().resemblance)
+        return self.resembling
 
     def joined(self, tagged: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
         """Objects and class nouns joined to their material: "oak planks" = oak, "roof tiles" =
@@ -56,6 +66,8 @@ class Joiner:
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' (the material of the {word.text})", diags)
             elif before is not None and self.is_head(before, word.text, k + 1 == len(tagged), out):
                 out[-1] = self.with_head(before, word.text, word.span, k + 1 == len(tagged), diags)
+            elif before is not None and nouns and self._finish_noun(before) is not None:
+                out[-1:] = self._finish_of(before, word, diags)
             elif before is not None and nouns and self._is_class_of(before, nouns):
                 made = of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' ('{word.text}' is its class)", diags)
@@ -89,7 +101,10 @@ class Joiner:
         """A head word (word_formation rules) that belongs to the word before it: after a
         describing word before the noun ("satin finish steel"), or after the noun at the end of
         the line ("brushed steel look") — not in a 'with' clause ("steel with a walnut finish")."""
-        if text.lower() not in self.rules().heads:
+        low = text.lower()
+        if low in self.rules().colour_heads:  # "sand coloured", "cream colored": before a noun or at the end
+            return any(c.tag in ("COLOR", "NOUN") for c in before.candidates)
+        if low not in self.rules().heads:
             return False
         if last and any(c.tag == "WITH" for t in line for c in t.candidates):
             return False
@@ -98,10 +113,57 @@ class Joiner:
 
     def with_head(self, before: Tagged, text: str, span: Span, last: bool, diags: list[Diagnostic]) -> Tagged:
         joined = before.span.to(span)
+        if text.lower() in self.rules().colour_heads:
+            return self._coloured(before, text, joined, diags)
         note = f"read '{before.text} {text}' as '{before.text}' ('{text}' names what it describes)"
         diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
         kept = tuple(c for c in before.candidates if c.tag in HEAD_HOLDERS[last])
         return Tagged(f"{before.text} {text}", joined, kept, before.unknown)
+
+    def _coloured(self, before: Tagged, text: str, joined: Span, diags: list[Diagnostic]) -> Tagged:
+        """'cream colored' = the colour cream; 'brass coloured' = the named colour nearest to brass's."""
+        colours = of_tag(before, "COLOR")
+        found = None if colours else self.resemblance().colour(of_tag(before, "NOUN")[0].key)
+        if found is not None:
+            colours = (found[0],)
+            note = f"read '{before.text} {text}' as '{found[0].key}' (the colour of {before.text}: {found[1]})"
+        else:
+            note = f"read '{before.text} {text}' as the colour '{colours[0].key}'"
+        diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
+        return Tagged(f"{before.text} {text}", joined, colours, before.unknown)
+
+    def _finish_noun(self, before: Tagged) -> Candidate | None:
+        """The noun of 'chrome finish' (a noun, not a describing word, joined to a finish head)."""
+        head = before.text.rsplit(" ", 1)[-1].lower()
+        if " " not in before.text or head not in self.rules().finish_heads:
+            return None
+        if any(c.tag == "ADJ" for c in before.candidates):
+            return None
+        return next(iter(of_tag(before, "NOUN")), None)
+
+    def _finish_of(self, before: Tagged, word: Tagged, diags: list[Diagnostic]) -> list[Tagged]:
+        """'chrome finish steel' = chrome plated steel (a metal finish is a plating), 'walnut
+        finish MDF' = MDF in walnut's colour: the finish, not a second material (cnlmc.resemblance)."""
+        noun = self._finish_noun(before)
+        colours = of_tag(before, "COLOR")
+        if colours:  # 'walnut finish MDF', 'gold finish aluminum': a colour word keeps its colour
+            found: tuple[Candidate, str] | None = (colours[0], f"the colour '{colours[0].key}' on {word.text}")
+        else:
+            found = None if noun is None else self.resemblance().finish(noun.key)
+        if noun is None or found is None:
+            return [before, word]
+        diags[:] = [d for d in diags if not (d.span == before.span and d.code == NOTE_CODE)]  # the head's own note
+        candidate, why = found
+        noun_text, head_text = before.text.rsplit(" ", 1)
+        text = f"{before.text} {word.text}"
+        diags.append(Diagnostic(before.span.to(word.span), Severity.NOTE, NOTE_CODE, f"read '{text}' as {why}"))
+        if candidate.tag == "COLOR":
+            return [Tagged(before.text, before.span, (candidate,), before.unknown), word]
+        s = before.span
+        head_start = s.end - len(head_text)
+        noun_span = Span(s.start, s.start + len(noun_text), s.line, s.col)
+        head_span = Span(head_start, s.end, s.line, s.col + head_start - s.start)
+        return [Tagged(noun_text, noun_span, (noun,)), Tagged(head_text, head_span, (candidate,)), word]
 
     def _object_alone(self, word: Tagged, diags: list[Diagnostic]) -> Tagged:
         """An object with no material noun beside it: its other readings, else its material."""
@@ -158,7 +220,7 @@ def may_join(tagged: list[Tagged]) -> bool:
                 return True
             if tag == "NOUN":
                 noun = True
-            elif tag == "COAT" or tag == "FEATURE":
+            elif tag == "COAT" or tag == "FEATURE" or tag == "PROP":  # PROP: 'coloured' (colour + -ed)
                 head = True
         if (noun and noun_before) or (head and (word is not final or noun_before)):
             return True

@@ -26,6 +26,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from .resemblance import Resemblance
 from .tagged import NOTE_CODE, Candidate
 
 if TYPE_CHECKING:  # imported when first needed: the tagger imports this module only for an unknown word
@@ -93,6 +94,9 @@ class Rules:
         self.heads = frozenset(h for c in compounds for h in c["heads"])
         self.qualifiers = frozenset(joined("qualifiers", "words"))
         self.wordnet = _merged_wordnet([layer["wordnet"] for layer in layers])
+        self.resemblance = _merged_resemblance([layer["resemblance"] for layer in layers])
+        self.colour_heads = frozenset(self.resemblance["colour_heads"])
+        self.finish_heads = frozenset(self.resemblance["finish_heads"])
 
 
 class WordFormation:
@@ -104,6 +108,7 @@ class WordFormation:
         self.lookup = lookup
         self.memo: dict[str, Reading | None] = {}
         self.wordnet_readings: WordNet | None = None  # read on first use
+        self.resemblance = Resemblance(lexicon, self.rules.resemblance)
 
     @classmethod
     def of(cls, lexicon: Lexicon, lookup: Lookup) -> WordFormation:
@@ -154,7 +159,16 @@ class WordFormation:
     # ------------------------------------------------------------ one word
 
     def _read(self, word: str) -> Reading | None:
-        rules = (self._joined, self._negated, self._prefixed, self._derived, self._wordnet, self._split, self._head)
+        rules = (
+            self._joined,
+            self._negated,
+            self._prefixed,
+            self._resembling,
+            self._derived,
+            self._wordnet,
+            self._split,
+            self._head,
+        )
         for rule in rules:
             found = rule(word)
             if found is not None:
@@ -202,7 +216,7 @@ class WordFormation:
         if adjective is not None:
             return self._opposite_reading(word, 0, adjective, rest)
         if found:
-            return Reading((), 1, f"read '{word}' as without '{rest}': the material as it is")
+            return Reading((), 1, f"read '{word}' as without '{rest}': the material as it is, no effect")
         if explicit:
             return Reading((), 1, f"read '{word}' as a property with no visual parameter here; it has no effect")
         return None
@@ -257,6 +271,36 @@ class WordFormation:
 
     def _adverb(self, key: str) -> tuple[Candidate, ...]:
         return (Candidate("ADV", key, "adverbs"),)
+
+    def _resembling(self, word: str) -> Reading | None:
+        """X-y, X-ish, X-like, X-coloured on a noun X: resembling X (cnlmc.resemblance: its colour, or
+        its surface for a surface class). A stem that is also a colour or a describing word keeps
+        that reading (coppery: the colour 'copper', waxy: waxed; the suffix rules)."""
+        rules = self.rules.resemblance
+        for colour_only, forms in ((True, rules["colour_forms"]), (False, rules["forms"])):
+            for form in forms:
+                if word.endswith(form) and len(word) - len(form) >= self.rules.min_part:
+                    found = self._resembled(word, word[: len(word) - len(form)].rstrip("-"), colour_only)
+                    if found is not None:
+                        return found
+        return None
+
+    def _resembled(self, word: str, stem: str, colour_only: bool) -> Reading | None:
+        resemblance = self.resemblance
+        for ending in self.rules.resemblance["endings"] or ("",):
+            found = self._known(stem + ending)
+            noun = next((c for c in found if c.tag == "NOUN"), None)
+            if noun is None:
+                continue
+            deferred = ("COLOR",) if colour_only else ("COLOR", "ADJ")
+            if any(c.tag in deferred for c in found):
+                return None  # the suffix rules read it as that colour or describing word
+            like = resemblance.colour(noun.key) if colour_only else resemblance.like(noun.key)
+            if like is None:
+                return None
+            candidate, why = like
+            return _whole((candidate,), f"read '{word}' as '{candidate.key}' (resembling {stem + ending}: {why})")
+        return None
 
     def _derived(self, word: str) -> Reading | None:
         for rule in self.rules.suffixes:
@@ -381,6 +425,21 @@ def _merged_wordnet(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:
         "noun_roots": roots,
         "adjectives": list(dict.fromkeys(a for layer in layers for a in layer["adjectives"])),
     }
+
+
+def _merged_resemblance(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:
+    """The [resemblance] rules of all layers: lists joined, the most specific layer's ladder and
+    finish adjectives first."""
+    merged: dict[str, Any] = {
+        name: list(dict.fromkeys(w for layer in layers for w in layer[name]))
+        for name in ("forms", "endings", "colour_forms", "colour_heads", "finish_heads", "surface_classes")
+    }
+    merged["surface"] = next((layer["surface"] for layer in layers if layer["surface"]), [])
+    finish: dict[str, str] = {}
+    for layer in reversed(layers):
+        finish.update(layer["finish_adjectives"])
+    merged["finish_adjectives"] = finish
+    return merged
 
 
 def _whole(found: tuple[Candidate, ...], note: str) -> Reading:

@@ -37,6 +37,16 @@ def empty_rules() -> dict[str, Any]:
         "suffix": [],
         "compounds": {"join": False, "split": False, "linkers": [], "min_part": 3, "head_last": False, "heads": []},
         "wordnet": {"file": "", "noun_roots": {}, "adjectives": []},
+        "resemblance": {
+            "forms": [],
+            "endings": [],
+            "colour_forms": [],
+            "colour_heads": [],
+            "finish_heads": [],
+            "surface_classes": [],
+            "surface": [],
+            "finish_adjectives": {},
+        },
     }
 
 
@@ -56,6 +66,7 @@ def check_rules(c: Checker, data: dict[str, Any]) -> dict[str, Any]:
     rules["suffix"] = [_suffix(c, raw, i) for i, raw in enumerate(c.array(data.get("suffix", []), ("suffix",)))]
     rules["compounds"] = _compounds(c, data.get("compounds", {}))
     rules["wordnet"] = _wordnet(c, data.get("wordnet", {}))
+    rules["resemblance"] = _resemblance(c, data.get("resemblance", {}))
     return rules
 
 
@@ -124,6 +135,33 @@ def _wordnet(c: Checker, raw: object) -> dict[str, Any]:
     }
 
 
+def _resemblance(c: Checker, raw: object) -> dict[str, Any]:
+    """[resemblance]: what "like X" means for a noun X, by its class (cnlmc.resemblance)."""
+    path: tuple[str | int, ...] = ("resemblance",)
+    table = c.table(raw, path)
+    out: dict[str, Any] = dict(empty_rules()["resemblance"])
+    c.known_keys(table, tuple(out), path)
+    for name in ("forms", "colour_forms", "colour_heads", "finish_heads", "surface_classes"):
+        out[name] = _words(c, table.get(name, []), (*path, name))
+    out["endings"] = _words(c, table.get("endings", []), (*path, "endings"), blank=True)
+    ladder = []
+    for i, step in enumerate(c.array(table.get("surface", []), (*path, "surface"), "a list of [roughness, adjective]")):
+        pair = c.array(step, (*path, "surface", i), "[roughness, adjective]")
+        if len(pair) != 2:
+            c.fail((*path, "surface", i), 'expected [roughness, adjective], e.g. [0.5, "satin"]')
+        ladder.append(
+            (c.number(pair[0], (*path, "surface", i, 0), 0.0, 1.0), c.string(pair[1], (*path, "surface", i, 1)))
+        )
+    if [r for r, _a in ladder] != sorted(r for r, _a in ladder):
+        c.fail((*path, "surface"), "the steps must be in rising roughness")
+    out["surface"] = ladder
+    adjectives = c.table(table.get("finish_adjectives", {}), (*path, "finish_adjectives"))
+    out["finish_adjectives"] = {
+        k: c.string(v, (*path, "finish_adjectives", k), blank=False) for k, v in adjectives.items()
+    }
+    return out
+
+
 def wordnet_file(name: str) -> Traversable:
     """A WordNet alias file of the package's stdlib/data folder."""
     return resources.files("cnlmc.stdlib").joinpath("data").joinpath(name)
@@ -136,6 +174,16 @@ def check_rule_names(c: Checker, rules: Mapping[str, Any], raw: Mapping[str, Map
         if noun not in raw["nouns"]:
             c.fail(("wordnet", "noun_roots", root), f"no noun named '{noun}'{did_you_mean(noun, raw['nouns'])}")
     adjective_forms = {f.lower() for k, e in raw["adjectives"].items() for f in (k, *e.data.get("aliases", ()))}
+    resemblance = rules["resemblance"]
+    named_adjectives: list[tuple[tuple[str | int, ...], str]] = [
+        (("resemblance", "surface", i, 1), a) for i, (_r, a) in enumerate(resemblance["surface"])
+    ]
+    named_adjectives += [
+        (("resemblance", "finish_adjectives", k), a) for k, a in resemblance["finish_adjectives"].items()
+    ]
+    for apath, adjective in named_adjectives:
+        if adjective not in raw["adjectives"]:
+            c.fail(apath, f"no adjective named '{adjective}'{did_you_mean(adjective, raw['adjectives'])}")
     for i, word in enumerate(rules["wordnet"]["adjectives"]):
         if word not in adjective_forms:
             c.fail(("wordnet", "adjectives", i), f"no adjective named '{word}'")

@@ -383,3 +383,101 @@ def test_every_object_after_a_noun_is_that_noun_and_alone_its_material(lexicon):
                 continue  # multi-word forms and words with other readings are tested above
             assert look_of(lexicon, f"copper {form}") == look_of(lexicon, "copper"), form
             assert look_of(lexicon, form) == look_of(lexicon, entry.get("material")), form
+
+
+# ---------------------------------------------------------------- resemblance ([resemblance], cnlmc.resemblance)
+
+
+def apparent_colour(lexicon, noun):
+    """A noun's apparent colour by the rule the notes state: base colour, for a metal x f0."""
+    entry = lexicon.entry("nouns", noun)
+    f0 = entry.get("f0") or [1.0, 1.0, 1.0]
+    return [min(1.0, b * f) for b, f in zip(entry.get("base_color"), f0)]
+
+
+def oklab_distance(x, y):
+    from cnlmc.colour import linear_to_oklab
+
+    return sum((p - q) ** 2 for p, q in zip(linear_to_oklab(x), linear_to_oklab(y))) ** 0.5
+
+
+def ladder_word(lexicon, noun):
+    """The adjective the surface ladder of the rules gives the noun's roughness."""
+    ladder = next(
+        layer["resemblance"]["surface"] for layer in lexicon.word_formation if layer["resemblance"]["surface"]
+    )
+    roughness = lexicon.entry("nouns", noun).get("roughness")
+    return next(a for top, a in ladder if roughness <= top)
+
+
+@pytest.mark.parametrize(
+    ("text", "noun", "material"),
+    [
+        ("zincy rubber", "zinc", "rubber"),  # a metal lends its colour (base x f0), not its metal-ness
+        ("titaniumish rubber", "titanium", "rubber"),
+        ("nickel-like velvet", "nickel", "velvet"),
+        ("chromish rubber", "chrome", "rubber"),
+        ("titanium-colored velvet", "titanium", "velvet"),  # a colour form: the colour, whatever the class
+        ("titanium colored velvet", "titanium", "velvet"),  # spaced
+        ("zinc coloured rubber", "zinc", "rubber"),
+        ("zinc toned rubber", "zinc", "rubber"),
+        ("milk-coloured rubber", "milk", "rubber"),
+    ],
+)
+def test_a_noun_as_a_describing_word_lends_its_apparent_colour(lexicon, text, noun, material):
+    result, look = compiled(lexicon, text)
+    _plain, plain = compiled(lexicon, material)
+    assert look["model"] == plain["model"], text  # the material stays itself: no metal paint
+    assert oklab_distance(look["params"]["base_color"], apparent_colour(lexicon, noun)) < 0.06, text
+    assert oklab_distance(plain["params"]["base_color"], apparent_colour(lexicon, noun)) > 0.06, text  # it changed
+    assert any(noun in n for n in notes(result)), notes(result)
+
+
+@pytest.mark.parametrize(
+    ("word", "noun"),
+    [("leathery", "leather"), ("rubbery", "rubber"), ("glassy", "glass"), ("feltish", "felt"), ("suede-like", "suede")],
+)
+def test_a_surface_class_noun_lends_its_surface(lexicon, word, noun):
+    """A fabric, leather, glass, rubber or plastic is known by its surface: the ladder's word for its roughness."""
+    assert_reads_as(lexicon, f"{word} ceramic", f"{ladder_word(lexicon, noun)} ceramic", noun)
+
+
+def test_surface_resemblance_follows_roughness(lexicon):
+    _r, glassy = compiled(lexicon, "glassy ceramic")
+    _r, leathery = compiled(lexicon, "leathery ceramic")
+    assert glassy["params"]["roughness"] < leathery["params"]["roughness"]
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning"),
+    [
+        ("nickel finish brass", "nickel plated brass"),  # a metal finish is a plating
+        ("chrome finished aluminum", "chrome plated aluminum"),
+        ("cherry finish pine", "cherry-coloured pine"),  # a noun that is a colour too: its colour
+        ("cream coloured ceramic", "cream ceramic"),  # a colour word before 'coloured': the colour
+    ],
+)
+def test_a_finish_or_colour_head_after_a_noun_is_not_a_second_material(lexicon, text, meaning):
+    assert_reads_as(lexicon, text, meaning)
+
+
+def test_a_non_metal_finish_is_its_colour(lexicon):
+    result, look = compiled(lexicon, "limestone finish plywood")
+    assert oklab_distance(look["params"]["base_color"], apparent_colour(lexicon, "limestone")) < 0.06
+    assert any("limestone" in n for n in notes(result))
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ('[resemblance]\nsurface = [[0.5, "shinyish"]]\n', "no adjective named 'shinyish'"),
+        ('[resemblance]\nsurface = [[0.8, "matte"], [0.2, "glossy"]]\n', "rising roughness"),
+        ('[resemblance]\nfinish_adjectives = { metal = "platted" }\n', "no adjective named 'platted'"),
+        ("[resemblance]\nform = []\n", "unknown field 'form'"),
+    ],
+)
+def test_bad_resemblance_rules_name_file_line_and_column(tmp_path: Path, text, message):
+    (tmp_path / "word_formation.toml").write_text(text, encoding="utf-8")
+    with pytest.raises(LexiconError) as caught:
+        load_lexicon([tmp_path])
+    assert "word_formation.toml:" in str(caught.value) and message in str(caught.value)
