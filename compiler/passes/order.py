@@ -81,7 +81,8 @@ def _gloss_only(adjective: Entry | None) -> bool:
     if adjective is None or adjective.get("maps") or adjective.get("material") or adjective.get("coat"):
         return False
     effects = adjective.get("effects", [])
-    return bool(effects) and all(e.get("param") == "roughness" for e in effects) and not adjective.get("on")
+    per_class = [e for formulas in adjective.get("on", {}).values() for e in formulas]
+    return bool(effects) and all(e.get("param") == "roughness" for e in (*effects, *per_class))
 
 
 def _shade_words_as_adjectives(groups: Sequence[ast.Group], lexicon: Lexicon) -> Sequence[ast.Group]:

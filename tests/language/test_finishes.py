@@ -189,3 +189,13 @@ def test_a_process_that_leaves_the_look_says_so_in_a_note(text, plain):
 
 def test_a_word_that_changes_the_look_has_no_such_note():
     assert "N141" not in notes("frosted glass")
+
+
+def test_a_wet_cloth_darkens_and_stays_diffuse():
+    m = material("wet flannel")
+    assert m["model"]["base"] == "diffuse"
+    assert luminance(m["params"]["base_color"]) < luminance(params("flannel")["base_color"])
+
+
+def test_dull_glass_is_hazed():
+    assert params("dull quartz")["roughness"] > params("quartz")["roughness"]
