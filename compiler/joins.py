@@ -68,6 +68,7 @@ class Joiner:
                 out[-1] = self.with_head(before, word.text, word.span, k + 1 == len(tagged), diags)
             elif before is not None and nouns and self._finish_noun(before) is not None:
                 out[-1:] = self._finish_of(before, word, diags)
+                _plating_first(out)
             elif before is not None and nouns and self._is_class_of(before, nouns):
                 made = of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' ('{word.text}' is its class)", diags)
@@ -156,7 +157,9 @@ class Joiner:
         candidate, why = found
         noun_text, head_text = before.text.rsplit(" ", 1)
         text = f"{before.text} {word.text}"
-        diags.append(Diagnostic(before.span.to(word.span), Severity.NOTE, NOTE_CODE, f"read '{text}' as {why}"))
+        meaning = f"{noun_text} {candidate.key}" if candidate.tag == "ADJ" else candidate.key
+        note = f"read '{text}' as '{meaning} {word.text}' ({why})"
+        diags.append(Diagnostic(before.span.to(word.span), Severity.NOTE, NOTE_CODE, note))
         if candidate.tag == "COLOR":
             return [Tagged(before.text, before.span, (candidate,), before.unknown), word]
         s = before.span
@@ -205,6 +208,24 @@ class Joiner:
             for b in seconds
             if b is not None
         )
+
+
+#: The readings of describing words a plating ('nickel plated', from 'nickel finish') may move before.
+DESCRIBING = frozenset(("ADV", "ADJ", "COLOR", "SHADE"))
+
+
+def _plating_first(out: list[Tagged]) -> None:
+    """'brushed nickel finish steel': the plating pair (noun + plated, the last three entries
+    with the material) moves before the describing words ahead of it, where the grammar takes a
+    noun that says what a word is made of ("nickel plated brushed steel"; the order of describing
+    words does not change the numbers)."""
+    if len(out) < 4 or not of_tag(out[-2], "ADJ") or not of_tag(out[-3], "NOUN") or of_tag(out[-3], "COLOR"):
+        return
+    start = len(out) - 3
+    while start > 0 and any(c.tag in DESCRIBING for c in out[start - 1].candidates):
+        start -= 1
+    if start < len(out) - 3:
+        out[start:] = [out[-3], out[-2], *out[start:-3], out[-1]]
 
 
 def may_join(tagged: list[Tagged]) -> bool:

@@ -90,7 +90,9 @@ class Resemblance:
         adjective = self.rules["finish_adjectives"].get(entry.get("class"))
         if adjective is None:
             return self.colour(key)
-        return Candidate("ADJ", adjective, "adjectives"), f"a {entry.get('class')} finish: {adjective} with {key}"
+        return Candidate(
+            "ADJ", adjective, "adjectives"
+        ), f"a {entry.get('class')} finish is a plating" if adjective == "plated" else f"a {entry.get('class')} finish"
 
     def apparent(self, key: str) -> list[float] | None:
         entry = self.noun_entry(key)

@@ -127,6 +127,9 @@ class WordFormation:
         if first in rules.qualifiers and len(words) > 1:  # "kitchen cabinets", "exterior paint"
             return Reading((), 1, f"read '{first}' as saying where or what for: no effect on the look")
         if len(words) > 1:
+            named = self._resembling_colour_name(first, words[1])
+            if named is not None:
+                return named
             if first in rules.negation_words:
                 return self._negated_words(words)
             adverb = rules.prefixes.get(first)
@@ -283,6 +286,21 @@ class WordFormation:
                     found = self._resembled(word, word[: len(word) - len(form)].rstrip("-"), colour_only)
                     if found is not None:
                         return found
+        return None
+
+    def _resembling_colour_name(self, first: str, second: str) -> Reading | None:
+        """'steely blue' = the named colour 'steel blue', 'steely grey' = 'steel grey': a resembling
+        word before a colour word that, with the noun, names a colour."""
+        rules = self.rules.resemblance
+        for form in (*rules["colour_forms"], *rules["forms"]):
+            if first.endswith(form) and len(first) - len(form) >= self.rules.min_part:
+                stem = first[: len(first) - len(form)].rstrip("-")
+                for ending in rules["endings"] or ("",):
+                    found = self._kept(self.lookup((stem + ending, second)), ("COLOR",))
+                    if found:
+                        name = f"{stem + ending} {second}"
+                        part = Part(0, 1, 0, None, found)
+                        return Reading((part,), 2, f"read '{first} {second}' as the colour '{name}'")
         return None
 
     def _resembled(self, word: str, stem: str, colour_only: bool) -> Reading | None:

@@ -481,3 +481,25 @@ def test_bad_resemblance_rules_name_file_line_and_column(tmp_path: Path, text, m
     with pytest.raises(LexiconError) as caught:
         load_lexicon([tmp_path])
     assert "word_formation.toml:" in str(caught.value) and message in str(caught.value)
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning"),
+    [
+        ("steely grey ceramic", "steel grey ceramic"),  # resembling word + colour word = a named colour
+        ("steely blue plastic", "steel blue plastic"),
+        ("tan colour leather", "tan leather"),  # spaced colour heads
+        ("sand tone fabric", "sand fabric"),
+        ("satin chrome finish brass", "chrome plated satin brass"),  # the plating moves before the describing words
+        ("lightly brushed nickel finish steel", "nickel plated lightly brushed steel"),
+    ],
+)
+def test_resembling_words_with_colour_words_and_finishes_after_describing_words(lexicon, text, meaning):
+    assert_reads_as(lexicon, text, meaning)
+
+
+def test_a_metal_tone_is_its_colour_not_a_metal(lexicon):
+    result, look = compiled(lexicon, "titanium tone plastic")
+    _plain, plastic = compiled(lexicon, "plastic")
+    assert look["model"] == plastic["model"]
+    assert oklab_distance(look["params"]["base_color"], apparent_colour(lexicon, "titanium")) < 0.06
