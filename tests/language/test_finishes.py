@@ -199,3 +199,11 @@ def test_a_wet_cloth_darkens_and_stays_diffuse():
 
 def test_dull_glass_is_hazed():
     assert params("dull quartz")["roughness"] > params("quartz")["roughness"]
+
+
+def test_a_clear_plastic_takes_what_a_process_does_to_glass():
+    """Plexiglass is a plastic whose model is glass: smoke and tint absorb in it as in glass."""
+    assert params("smoked plexiglass")["base_color"] == pytest.approx(
+        [c * 0.35 for c in params("plexiglass")["base_color"]]
+    )
+    assert params("brushed plexiglass")["roughness"] > 0.0
