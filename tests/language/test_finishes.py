@@ -207,3 +207,9 @@ def test_a_clear_plastic_takes_what_a_process_does_to_glass():
         [c * 0.35 for c in params("plexiglass")["base_color"]]
     )
     assert params("brushed plexiglass")["roughness"] > 0.0
+
+
+def test_painted_glass_is_opaque_colour_behind_the_glass_face():
+    m = material("green painted borosilicate glass")
+    assert m["model"]["base"] == "dielectric"  # no longer transmissive
+    assert m["params"]["roughness"] == params("borosilicate glass")["roughness"]  # the pane's face
