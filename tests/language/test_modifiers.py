@@ -268,7 +268,7 @@ REGISTER = {
     "quite": ["notably", "distinctly", "unusually"],
     "very": ["awfully", "terribly", "hella", "mighty"],
     "extra": ["exceedingly", "hugely", "tremendously", "seriously"],
-    "extremely": ["mega", "crazy", "ridiculously", "insanely", "hyper", "uber"],
+    "extremely": ["mega", "crazy", "ridiculously", "insanely", "hyper", "uber", "super duper"],
 }
 
 
