@@ -184,7 +184,7 @@ class Joiner:
         `look = true`); 'mirror-like' is an adjective too, and stays one."""
         if any(c.tag in ("ADJ", "COLOR") for c in before.candidates):
             return False
-        return before.text.lower().endswith(self.rules().look_suffixes)
+        return before.text.lower().replace(" ", "-").endswith(self.rules().look_suffixes)  # 'stainless look' too
 
     def _is_class_of(self, before: Tagged, nouns: tuple[Candidate, ...]) -> bool:
         """'walnut wood': the second noun is the class of the first."""

@@ -305,9 +305,12 @@ class WordFormation:
 
     def _resembled(self, word: str, stem: str, colour_only: bool) -> Reading | None:
         resemblance = self.resemblance
-        for ending in self.rules.resemblance["endings"] or ("",):
-            found = self._known(stem + ending)
+        for base in _stems(stem, self.rules.resemblance["endings"] or ("",)):
+            found = self._known(base)
             noun = next((c for c in found if c.tag == "NOUN"), None)
+            if noun is None and not found:  # 'stainless-like': a WordNet noun ("a kind of steel")
+                kind = self.wordnet().noun(base)
+                noun = None if kind is None else kind[0]
             if noun is None:
                 continue
             deferred = ("COLOR",) if colour_only else ("COLOR", "ADJ")
@@ -317,7 +320,8 @@ class WordFormation:
             if like is None:
                 return None
             candidate, why = like
-            return _whole((candidate,), f"read '{word}' as '{candidate.key}' (resembling {stem + ending}: {why})")
+            like_what = base if noun.key == base else f"{base}, {noun.key}"
+            return _whole((candidate,), f"read '{word}' as '{candidate.key}' (resembling {like_what}: {why})")
         return None
 
     def _derived(self, word: str) -> Reading | None:
@@ -443,6 +447,14 @@ def _merged_wordnet(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:
         "noun_roots": roots,
         "adjectives": list(dict.fromkeys(a for layer in layers for a in layer["adjectives"])),
     }
+
+
+def _stems(stem: str, endings: Sequence[str]) -> list[str]:
+    """The stem plus each ending, then undoubled ('plasticky': plastic, 'nutty': nut)."""
+    out = [stem + ending for ending in endings]
+    if len(stem) > 3 and (stem.endswith("ck") or (stem[-1] == stem[-2] and stem[-1] not in "aeiou")):
+        out.append(stem[:-1])
+    return out
 
 
 def _merged_resemblance(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:

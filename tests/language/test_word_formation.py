@@ -422,6 +422,7 @@ def ladder_word(lexicon, noun):
         ("zinc coloured rubber", "zinc", "rubber"),
         ("zinc toned rubber", "zinc", "rubber"),
         ("milk-coloured rubber", "milk", "rubber"),
+        ("stainless-like rubber", "steel", "rubber"),  # a WordNet noun: stainless is a kind of steel
     ],
 )
 def test_a_noun_as_a_describing_word_lends_its_apparent_colour(lexicon, text, noun, material):
@@ -435,7 +436,14 @@ def test_a_noun_as_a_describing_word_lends_its_apparent_colour(lexicon, text, no
 
 @pytest.mark.parametrize(
     ("word", "noun"),
-    [("leathery", "leather"), ("rubbery", "rubber"), ("glassy", "glass"), ("feltish", "felt"), ("suede-like", "suede")],
+    [
+        ("leathery", "leather"),
+        ("rubbery", "rubber"),
+        ("glassy", "glass"),
+        ("feltish", "felt"),
+        ("suede-like", "suede"),
+        ("plasticky", "plastic"),  # a doubled final consonant is undone (plastic + k + y)
+    ],
 )
 def test_a_surface_class_noun_lends_its_surface(lexicon, word, noun):
     """A fabric, leather, glass, rubber or plastic is known by its surface: the ladder's word for its roughness."""
