@@ -213,3 +213,9 @@ def test_painted_glass_is_opaque_colour_behind_the_glass_face():
     m = material("green painted borosilicate glass")
     assert m["model"]["base"] == "dielectric"  # no longer transmissive
     assert m["params"]["roughness"] == params("borosilicate glass")["roughness"]  # the pane's face
+
+
+def test_tinted_concrete_takes_its_pigment():
+    assert warnings("ochre tinted stucco") == []
+    r, g, b = params("ochre tinted stucco")["base_color"]
+    assert r > b
