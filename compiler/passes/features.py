@@ -23,6 +23,7 @@ from ..state import Context, MaterialState
 from .base import _map_ref, noun_of
 from .coat_layer import apply_coat
 from .colours import colour_text, resolve_colour
+from .feature_colour import meet, plain_colour, with_shades
 from .noun_words import apply_noun_colour, noun_colour
 from .words import COAT_CLASS, apply_adjective, apply_coat_entry, apply_group, group_weight, weighted_map
 
@@ -31,6 +32,7 @@ SECOND_COAT = "W121"  # a second coat clause
 UNUSED = "N121"  # a word of a clause the feature has no use for
 AS_COAT = "N123"  # a finish read as a coat
 SHADE_DEGREE = "N124"  # a shade before a feature without a colour, read as a degree
+OWN_COLOUR = "N125"  # a named colour met the feature's own colour
 COLOUR_PARAMS = ("color_r", "color_g", "color_b")
 
 
@@ -217,7 +219,7 @@ def _draw_maps(
     if colour is None or entry.get("colour") != "map":
         return False
     for graph in _graphs_of(entry):
-        _name_colour(state, ctx, graph, colour, clause)
+        _name_colour(state, ctx, entry, graph, colour, clause)
     return True
 
 
@@ -245,20 +247,55 @@ def _scale_existing(state: MaterialState, graph: str, entry: Entry, weight: floa
     return True
 
 
-def _name_colour(state: MaterialState, ctx: Context, graph: str, colour: ast.Colour, clause: ast.Feature) -> None:
-    """The clause's colour as the graph's named colour: 'grey' veins; 'dark' alone darkens the graph's own."""
+def _name_colour(
+    state: MaterialState, ctx: Context, entry: Entry, graph: str, colour: ast.Colour, clause: ast.Feature
+) -> None:
+    """The clause's colour as the graph's named colour: 'grey' veins; 'dark' alone darkens the graph's
+    own; a colour of the own colour's hue family keeps the own ('a green patina' is verdigris) and one
+    of another hue keeps a share of its lightness and chroma ('gold veins'): passes/feature_colour.py."""
     ranges = graph_params(graph)
     if not all(name in ranges for name in COLOUR_PARAMS):
         return
-    start = [ranges[name][2] for name in COLOUR_PARAMS]
-    named = noun_colour(ctx, colour) or resolve_colour(colour, ctx, start=start)
+    own = [ranges[name][2] for name in COLOUR_PARAMS]
+    rule = f"features: {colour_text(colour)} {clause.word.text}"
+    named = _met_colour(state, ctx, entry, own, colour, clause)
+    if named is None:
+        return  # the own colour as it is: the map keeps its texture
     rgb = [min(1.0, max(0.0, float(v))) for v in named]
     for role in _roles_of(state, graph):
         params: dict[str, Any] = dict(state.maps[role].get("params", {}))
         params.update(zip(COLOUR_PARAMS, rgb, strict=True))
         params["color_amount"] = 1.0
         state.maps[role] = {**state.maps[role], "params": params}
-        state.note(f"maps.{role}", graph, f"features: {colour_text(colour)} {clause.word.text}", colour.words)
+        state.note(f"maps.{role}", graph, rule, colour.words)
+
+
+def _met_colour(
+    state: MaterialState, ctx: Context, entry: Entry, own: list[float], colour: ast.Colour, clause: ast.Feature
+) -> list[float] | None:
+    """The clause's colour after its colour word met the map's own colour, then its shades; None when
+    the own colour stays as it is."""
+    named = noun_colour(ctx, colour) or resolve_colour(colour, ctx, start=own)
+    hue_family, keep_own = entry.get("hue_family"), entry.get("keep_own")
+    plain = plain_colour(ctx, colour)
+    if hue_family is None or keep_own is None or plain is None:
+        return named  # no colour word ('a dark patina'), or a feature without the rule
+    meeting = meet(own, plain.rgb, float(hue_family), float(keep_own))
+    if meeting.how == "named":
+        return named
+    text, feature = colour_text(colour), clause.word.text
+    made = f", made {' '.join(plain.shades)}" if plain.shades else ""
+    if meeting.how == "mixed":
+        message = (
+            f"read '{text} {feature}' as {plain.word}'s hue, keeping {keep_own:g} of the {feature}'s own "
+            f"lightness and chroma{made}"
+        )
+    else:
+        message = f"read '{text} {feature}' as the {feature}'s own colour ({plain.word} is its hue family){made}"
+    state.diagnostics.append(Diagnostic(colour.span, Severity.NOTE, OWN_COLOUR, message))
+    if meeting.how == "own" and not plain.shades:
+        return None
+    return with_shades(ctx, meeting.rgb, plain.shades)
 
 
 # ---------------------------------------------------------------- what the clause said that nothing used

@@ -9,6 +9,7 @@ from hypothesis import strategies as st
 
 from cnlmc import ast
 from cnlmc.document import parse_document
+from cnlmc.passes.feature_colour import lch
 
 
 def parse(text, lexicon):
@@ -500,3 +501,67 @@ def test_alternatives_in_a_clause_are_variants(compile_text):
     assert result.ok and len(result.materials) == 2
     reds = sorted(map_params(m, "marble")["color_r"] for m in result.materials)
     assert reds[0] < reds[1]
+
+
+# ---------------------------------------------------------------- a colour word meets a feature's own colour
+
+
+def named_rgb(material, graph):
+    params = map_params(material, graph)
+    return [params["color_r"], params["color_g"], params["color_b"]]
+
+
+@pytest.mark.parametrize("colour", ["teal", "jade", "sea green", "greenish"])
+def test_a_colour_of_the_patinas_own_hue_keeps_the_verdigris(compile_text, colour):
+    plain, _ = compiled(compile_text, "brass with a patina")
+    named, diags = compiled(compile_text, f"brass with a {colour} patina")
+    assert map_params(named, "patina") == map_params(plain, "patina")  # the texture untouched
+    (note,) = notes(diags, "N125")
+    assert "own colour" in note and "hue family" in note
+
+
+def test_a_shade_on_the_own_hue_shades_the_verdigris(compile_text):
+    dark, diags = compiled(compile_text, "brass with a dark teal patina")
+    shade_only, _ = compiled(compile_text, "brass with a dark patina")
+    assert named_rgb(dark, "patina") == pytest.approx(named_rgb(shade_only, "patina"))
+    assert "made dark" in notes(diags, "N125")[0]
+
+
+def test_a_colour_of_another_hue_keeps_the_patinas_lightness_character(compile_text, stdlib):
+    material, diags = compiled(compile_text, "brass with a red patina")
+    L, C, h = lch(named_rgb(material, "patina"))
+    red_L, red_C, red_h = lch(stdlib.require("colours", "red").get("rgb"))
+    own_L, own_C, _ = lch([0.16, 0.42, 0.33])  # stdlib/graphs/patina.toml
+    assert abs(h - red_h) < 3  # the named hue
+    assert min(own_L, red_L) < L < max(own_L, red_L) and own_C < C < red_C  # between the two
+    assert "keeping 0.4" in notes(diags, "N125")[0]
+
+
+def test_a_survey_name_with_a_shade_is_the_shade_on_the_met_colour(compile_text):
+    dark, _ = compiled(compile_text, "pewter with a dark blue patina")
+    plain, _ = compiled(compile_text, "pewter with a blue patina")
+    dark_L, _, dark_h = lch(named_rgb(dark, "patina"))
+    plain_L, _, plain_h = lch(named_rgb(plain, "patina"))
+    assert dark_L < plain_L and abs(dark_h - plain_h) < 10
+
+
+@pytest.mark.parametrize("colour", ["black", "white", "charcoal grey"])
+def test_a_colourless_word_is_used_as_it_is(compile_text, stdlib, colour):
+    material, diags = compiled(compile_text, f"slate with {colour} veins")
+    L, C, _ = lch(named_rgb(material, "marble"))
+    assert C < 0.04
+    assert not notes(diags, "N125")
+
+
+def test_gold_veins_are_a_muted_gold(compile_text, stdlib):
+    material, _ = compiled(compile_text, "travertine with gold veins")
+    _, C, h = lch(named_rgb(material, "marble"))
+    _, gold_C, gold_h = lch(stdlib.require("colours", "gold").get("rgb"))
+    assert abs(h - gold_h) < 3 and 0.3 * gold_C < C < 0.7 * gold_C
+
+
+def test_german_patina_in_its_own_colour_is_the_verdigris(compile_text, german):
+    result = compile_text("Messing mit grüner Patina", german)
+    assert result.ok, [d.message for d in result.diagnostics]
+    plain, _ = compiled(compile_text, "brass with a patina")
+    assert map_params(result.materials[0], "patina") == map_params(plain, "patina")
