@@ -25,7 +25,7 @@ COLOUR_BEFORE_MATERIAL = [
     ("honey velvet", "velvet", "honey"),
     ("brick linen", "linen", "brick"),
     ("cobalt velvet", "velvet", "cobalt"),
-    ("granite leather", "leather", "granite"),
+    ("granite grey leather", "leather", "granite grey"),
     ("onyx suede", "suede", "onyx"),
     ("pewter velvet", "velvet", "pewter"),
     ("greige paint", "paint", "greige"),
@@ -186,3 +186,13 @@ def test_solid_and_exposed_say_the_material_is_itself(text, noun):
 
 def test_a_hide_word_before_leather_is_that_leather():
     assert material("lambskin leather")["params"] == material("nappa leather")["params"]
+
+
+def test_a_wool_coat_is_wool_and_a_clear_coat_is_still_a_coat():
+    assert material("camel wool coat")["params"]["base_color"] == material("camel wool")["params"]["base_color"]
+    assert material("walnut with a clear coat")["model"]["coat"] is True
+
+
+def test_petrol_blue_is_one_colour():
+    result = compiled("petrol blue linen")
+    assert result.ok and not [d for d in result.diagnostics if d.severity.value == "warning"]
