@@ -361,13 +361,34 @@ def _apply_material(state: MaterialState, ctx: Context, adjective: Entry, words:
 
 
 def copy_optics(state: MaterialState, ctx: Context, noun_key: str, rule: str, words: Words) -> bool:
-    metal = ctx.lexicon.entry("nouns", noun_key)
-    if metal is None or metal.get("model") != "conductor":
+    """The surface of the material named by a plating or coating word: a metal's measured optics
+    ('gold plated', 'zinc coated'); a non-metal's own surface, opaque ('rubber coated')."""
+    entry = ctx.lexicon.entry("nouns", noun_key)
+    if entry is None:
         return False
+    if entry.get("model") != "conductor":
+        _copy_dielectric_surface(state, entry, rule, words)
+        return True
     state.kind = "conductor"
     for param in ("eta", "k", "f0", "f82", "base_color"):
-        state.record(param, metal.get(param), f"{rule}: optics of {metal.key}", words, source=metal.get("source"))
+        state.record(param, entry.get(param), f"{rule}: optics of {entry.key}", words, source=entry.get("source"))
     return True
+
+
+SURFACE_PARAMS = ("base_color", "roughness", "ior", DIFFUSE_SIGMA)  # what a non-metal coating brings
+
+
+def _copy_dielectric_surface(state: MaterialState, entry: Entry, rule: str, words: Words) -> None:
+    """A coating of a non-metal is opaque: the surface is that material's (a glass becomes an opaque
+    glassy layer), whatever was under it, except what a describing word of the phrase set."""
+    state.kind = "dielectric"
+    for param in ("eta", "k", "f0", "f82"):
+        state.params.pop(param, None)
+    for param in SURFACE_PARAMS:
+        if any(step.rule.startswith("adjectives.") for step in state.provenance.get(param, ())):
+            continue  # a describing word said it ('rubber coated matte steel' is a matte coating)
+        value = entry.get(param, PARAM_DEFAULTS.get(param))
+        state.record(param, value, f"{rule}: surface of {entry.key}", words, source=entry.get("source"))
 
 
 def _hide_maps(state: MaterialState, adjective: Entry, words: Words) -> None:

@@ -219,3 +219,22 @@ def test_tinted_concrete_takes_its_pigment():
     assert warnings("ochre tinted stucco") == []
     r, g, b = params("ochre tinted stucco")["base_color"]
     assert r > b
+
+
+# ---- '<material> coated': the coating material is the surface
+
+
+def test_a_metal_coating_lends_its_optics():
+    m = material("zinc coated iron")
+    assert m["model"]["base"] == "conductor" and m["params"]["f0"] == params("zinc")["f0"]
+
+
+@pytest.mark.parametrize("coating", ["rubber", "vinyl", "epoxy"])
+def test_a_non_metal_coating_is_the_surface_and_hides_the_metal(coating):
+    m = material(f"{coating} coated aluminum")
+    assert m["model"]["base"] != "conductor" and "eta" not in m["params"]
+    assert m["params"]["base_color"] == params(coating)["base_color"]
+
+
+def test_a_finish_word_describes_the_coating():
+    assert params("rubber coated glossy iron")["roughness"] < params("rubber coated iron")["roughness"]
