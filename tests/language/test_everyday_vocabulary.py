@@ -196,3 +196,8 @@ def test_a_wool_coat_is_wool_and_a_clear_coat_is_still_a_coat():
 def test_petrol_blue_is_one_colour():
     result = compiled("petrol blue linen")
     assert result.ok and not [d for d in result.diagnostics if d.severity.value == "warning"]
+
+
+@pytest.mark.parametrize(("text", "noun"), [("basket", "rattan"), ("teapot", "porcelain"), ("lampshade", "linen")])
+def test_a_household_thing_alone_is_its_usual_material(text, noun):
+    assert material(text)["params"] == material(noun)["params"]
