@@ -12,14 +12,7 @@ from types import MappingProxyType
 from typing import Any
 
 from .. import ast
-from ..degrees import (
-    compose_weights,
-    knee_step,
-    sigma_of_roughness,
-    weighted_formula,
-    weighted_map_value,
-    word_level,
-)
+from ..degrees import compose_weights, weighted_formula, weighted_map_value
 from ..diagnostics import Diagnostic, Severity, warning
 from ..formulas import apply_op, describe
 from ..graphs import graph_params
@@ -29,18 +22,17 @@ from ..state import Context, MaterialState
 from .base import _map_ref, noun_of
 from .colour_compounds import colour_compounds
 from .colours import colour_text, opposed_shades, resolve_colour
+from .diffuse_sigma import DIFFUSE_SIGMA, PARAM_BOUNDS, move_sigma
 from .order import canonical_groups, gloss_on_coat, stage_of
 
 Effect = dict[str, Any]  # one formula of a lexicon entry: {"param": ..., "op": ..., "value": ...}
 Holder = dict[str, Any]  # where a value goes: the material's parameters or its coat's
 Words = tuple[ast.Word, ...]
 
-PARAM_BOUNDS = ranges(PARAMS)  # param -> (low, high): where a weighted formula saturates
 PARAM_DEFAULTS = MappingProxyType(  # what a formula starts from when the material lacks the parameter (ior 1.5)
     {s.name: list(s.default) if isinstance(s.default, tuple) else s.default for s in PARAMS}
 )
 COAT_BOUNDS = ranges(COAT_PARAMS)
-DIFFUSE_SIGMA = "diffuse_roughness"  # the Oren-Nayar sigma that roughness words also move
 DEGREE_PARAMS = ("roughness", "anisotropy", DIFFUSE_SIGMA)  # scales whose set levels intensify ("very glossy")
 
 
@@ -267,62 +259,7 @@ def _apply_effect(
     rule = _effect_rule(ctx.lexicon.caches, place, effect, weight)
     state.note(name, value, rule, words)
     if param == "roughness" and holder is state.params:
-        _move_sigma(state, ctx, effect, weight, rule, words, (current, value))
-
-
-def _move_sigma(
-    state: MaterialState,
-    ctx: Context,
-    effect: Effect,
-    weight: float,
-    rule: str,
-    words: Words,
-    roughness: tuple[float, float],
-) -> None:
-    """A roughness word also acts on the Oren-Nayar sigma of a surface that has one (rough concrete):
-    a relative formula (mul, add) with its numbers read as radians of facet-slope spread; a level
-    (set) by the ratio it moved the roughness ('glossy concrete'), or, where the roughness did not
-    move (a cloth is already beyond 'matte'), as at least the level's own sigma ('very matte
-    cotton'); saturating in sigma's range. A surface the words make diffuse gets its sigma from
-    the roughness they reached ('very matte plastic')."""
-    sigma = state.params.get(DIFFUSE_SIGMA, 0.0)
-    if not sigma > 0:
-        _sigma_from_words(state, ctx, roughness[1], rule, words)
-        return
-    bounds = PARAM_BOUNDS[DIFFUSE_SIGMA]
-    if effect["op"] == "set":
-        value = _sigma_for_level(sigma, effect, weight, roughness)
-        if value is None:
-            return
-    else:
-        value = weighted_formula(effect["op"], sigma, effect.get("value"), weight, effect.get("amount"), bounds)
-    state.params[DIFFUSE_SIGMA] = value
-    state.note(DIFFUSE_SIGMA, value, f"{rule}, on the Oren-Nayar sigma too", words)
-
-
-def _sigma_for_level(sigma: float, effect: Effect, weight: float, roughness: tuple[float, float]) -> float | None:
-    before, after = roughness
-    if before > 0 and after != before:
-        return knee_step(sigma, sigma * (after / before - 1.0), PARAM_BOUNDS[DIFFUSE_SIGMA])
-    level = effect.get("value")
-    if not isinstance(level, (float, int)) or after != before:
-        return None
-    own = word_level(float(level), weight, PARAM_BOUNDS["roughness"])
-    if own is None:
-        return None
-    target = sigma_of_roughness(own)
-    return target if target > sigma else None
-
-
-def _sigma_from_words(state: MaterialState, ctx: Context, roughness: float, rule: str, words: Words) -> None:
-    """The words made a dielectric diffuse (past the settings' diffuse threshold): its sigma follows."""
-    if state.kind in ("conductor", "glass") or state.coat is not None:
-        return
-    if roughness < ctx.settings.get("diffuse_threshold", 0.85):
-        return
-    value = sigma_of_roughness(roughness)
-    state.params[DIFFUSE_SIGMA] = value
-    state.note(DIFFUSE_SIGMA, value, f"{rule}, made diffuse: Oren-Nayar sigma = atan(roughness^2)", words)
+        move_sigma(state, ctx, effect, weight, rule, words, (current, value))
 
 
 EffectPlace = tuple[str, str, int]  # (rule, where the effect list is in the entry, index in it)
