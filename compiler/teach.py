@@ -166,8 +166,19 @@ def _everyday_phrases(written: str, main: Sequence[Tagged], lexicon: Lexicon) ->
     """'matte black' -> 'matte black paint', 'matte black plastic': the everyday nouns
     (teaching.toml [completions], most common first) that every describing word applies to."""
     table = teaching()["completions"]
-    fitting = [noun for noun in table["nouns"] if _applies_to_all(noun, main, lexicon)]
-    return [f"{written} {noun}" for noun in fitting[: table["offered"]]]
+    fitting = (f"{written} {noun}" for noun in table["nouns"] if _applies_to_all(noun, main, lexicon))
+    clean = [phrase for phrase in fitting if _compiles_cleanly(phrase, lexicon)]
+    return clean[: table["offered"]]
+
+
+def _compiles_cleanly(phrase: str, lexicon: Lexicon) -> bool:
+    """Whether the phrase compiles with no error and no warning (a word that does not apply to
+    the noun warns: W102), so an offer is one the compiler itself accepts as it is."""
+    from .api import compile_source  # the teaching runs inside a compilation: imported when needed
+
+    return not any(
+        d.severity.value in ("error", "warning") for d in compile_source(phrase, "<offer>", lexicon).diagnostics
+    )
 
 
 def _applies_to_all(noun: str, main: Sequence[Tagged], lexicon: Lexicon) -> bool:
