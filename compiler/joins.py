@@ -101,13 +101,14 @@ class Joiner:
     def is_head(self, before: Tagged, text: str, last: bool, line: list[Tagged]) -> bool:
         """A head word (word_formation rules) that belongs to the word before it: after a
         describing word before the noun ("satin finish steel"), or after the noun at the end of
-        the line ("brushed steel look") — not in a 'with' clause ("steel with a walnut finish")."""
+        the line ("brushed steel look") — never after a 'with': there the clause's feature reads it
+        ("steel with a walnut finish", "oak with a glossy finish and fine scratches")."""
         low = text.lower()
         if low in self.rules().colour_heads:  # "sand coloured", "cream colored": before a noun or at the end
             return any(c.tag in ("COLOR", "NOUN") for c in before.candidates)
         if low not in self.rules().heads:
             return False
-        if last and any(c.tag == "WITH" for t in line for c in t.candidates):
+        if any(c.tag == "WITH" for t in line for c in t.candidates):
             return False
         tags = HEAD_HOLDERS[last]
         return any(c.tag in tags for c in before.candidates)

@@ -565,3 +565,23 @@ def test_german_patina_in_its_own_colour_is_the_verdigris(compile_text, german):
     assert result.ok, [d.message for d in result.diagnostics]
     plain, _ = compiled(compile_text, "brass with a patina")
     assert map_params(result.materials[0], "patina") == map_params(plain, "patina")
+
+
+# ---------------------------------------------------------------- a head word inside a clause
+
+
+@pytest.mark.parametrize(
+    "text,same",
+    [
+        ("walnut with a matte finish and a few cracks", "matte walnut with a few cracks"),
+        ("pewter with a satin texture and light scuffs", "satin pewter with light scuffs"),
+        ("zinc with a hammered effect and a patina", "hammered zinc with a patina"),
+    ],
+)
+def test_a_finish_before_and_keeps_its_describing_word(compile_text, text, same):
+    """'finish', 'texture', 'effect' are head words ('satin finish steel'); after a 'with' the
+    clause's feature reads them, also when another clause follows."""
+    material, diags = compiled(compile_text, text)
+    expected, _ = compiled(compile_text, same)
+    assert material["params"] == expected["params"] and material.get("maps") == expected.get("maps")
+    assert not notes(diags, "N121") and not notes(diags, "N101")
