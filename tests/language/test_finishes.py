@@ -238,3 +238,16 @@ def test_a_non_metal_coating_is_the_surface_and_hides_the_metal(coating):
 
 def test_a_finish_word_describes_the_coating():
     assert params("rubber coated glossy iron")["roughness"] < params("rubber coated iron")["roughness"]
+
+
+def test_hard_anodizing_is_darker_and_matter_than_anodizing():
+    hard, plain = params("hard anodized titanium"), params("anodized titanium")
+    assert luminance(hard["base_color"]) < 0.5 * luminance(plain["base_color"])
+    assert hard["roughness"] > plain["roughness"]
+
+
+@pytest.mark.parametrize(
+    "text,same", [("clear anodized aluminium", "anodized aluminium"), ("hot-dip galvanized iron", "galvanized iron")]
+)
+def test_trade_names_of_finishes(text, same):
+    assert params(text) == params(same) and warnings(text) == []
