@@ -251,3 +251,16 @@ def test_hard_anodizing_is_darker_and_matter_than_anodizing():
 )
 def test_trade_names_of_finishes(text, same):
     assert params(text) == params(same) and warnings(text) == []
+
+
+def test_oil_on_metal_is_a_film_not_a_stain():
+    assert warnings("oiled iron") == []
+    oiled, plain = params("oiled iron"), params("iron")
+    assert oiled["roughness"] < plain["roughness"]
+    r, g, b = oiled["base_color"]
+    assert r == g == b  # no warm stain, as oil gives wood
+
+
+@pytest.mark.parametrize("text", ["waxed cotton twill", "oiled denim"])
+def test_wax_and_oil_dress_cloth(text):
+    assert warnings(text) == []
