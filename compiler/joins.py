@@ -106,6 +106,8 @@ class Joiner:
         low = text.lower()
         if low in self.rules().colour_heads:  # "sand coloured", "cream colored": before a noun or at the end
             return any(c.tag in ("COLOR", "NOUN") for c in before.candidates)
+        if low in self.rules().like_heads:  # "leather like vinyl", "mirror like steel"
+            return not last and any(c.tag in HEAD_HOLDERS[False] for c in before.candidates)
         if low not in self.rules().heads:
             return False
         if any(c.tag == "WITH" for t in line for c in t.candidates):
@@ -117,6 +119,8 @@ class Joiner:
         joined = before.span.to(span)
         if text.lower() in self.rules().colour_heads:
             return self._coloured(before, text, joined, diags)
+        if text.lower() in self.rules().like_heads and not any(c.tag in ("ADJ", "COLOR") for c in before.candidates):
+            return self._resembling(before, text, joined, diags)
         note = f"read '{before.text} {text}' as '{before.text}' ('{text}' names what it describes)"
         diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
         kept = tuple(c for c in before.candidates if c.tag in HEAD_HOLDERS[last])
@@ -133,6 +137,16 @@ class Joiner:
             note = f"read '{before.text} {text}' as the colour '{colours[0].key}'"
         diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
         return Tagged(f"{before.text} {text}", joined, colours, before.unknown)
+
+    def _resembling(self, before: Tagged, text: str, joined: Span, diags: list[Diagnostic]) -> Tagged:
+        """'leather like vinyl' = matte vinyl: what the noun lends (cnlmc.resemblance), spaced."""
+        found = self.resemblance().like(of_tag(before, "NOUN")[0].key)
+        if found is None:  # a noun with nothing to lend: the noun, as before
+            return Tagged(f"{before.text} {text}", joined, of_tag(before, "NOUN"), before.unknown)
+        candidate, why = found
+        note = f"read '{before.text} {text}' as '{candidate.key}' (resembling {before.text}: {why})"
+        diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
+        return Tagged(f"{before.text} {text}", joined, (candidate,), before.unknown)
 
     def _finish_noun(self, before: Tagged) -> Candidate | None:
         """The noun of 'chrome finish' (a noun, not a describing word, joined to a finish head)."""

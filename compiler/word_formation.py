@@ -96,6 +96,7 @@ class Rules:
         self.wordnet = _merged_wordnet([layer["wordnet"] for layer in layers])
         self.resemblance = _merged_resemblance([layer["resemblance"] for layer in layers])
         self.colour_heads = frozenset(self.resemblance["colour_heads"])
+        self.like_heads = frozenset(self.resemblance["like_heads"])
         self.finish_heads = frozenset(self.resemblance["finish_heads"])
 
 
@@ -462,7 +463,15 @@ def _merged_resemblance(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:
     finish adjectives first."""
     merged: dict[str, Any] = {
         name: list(dict.fromkeys(w for layer in layers for w in layer[name]))
-        for name in ("forms", "endings", "colour_forms", "colour_heads", "finish_heads", "surface_classes")
+        for name in (
+            "forms",
+            "endings",
+            "colour_forms",
+            "colour_heads",
+            "like_heads",
+            "finish_heads",
+            "surface_classes",
+        )
     }
     merged["surface"] = next((layer["surface"] for layer in layers if layer["surface"]), [])
     finish: dict[str, str] = {}

@@ -42,6 +42,7 @@ def empty_rules() -> dict[str, Any]:
             "endings": [],
             "colour_forms": [],
             "colour_heads": [],
+            "like_heads": [],
             "finish_heads": [],
             "surface_classes": [],
             "surface": [],
@@ -141,7 +142,7 @@ def _resemblance(c: Checker, raw: object) -> dict[str, Any]:
     table = c.table(raw, path)
     out: dict[str, Any] = dict(empty_rules()["resemblance"])
     c.known_keys(table, tuple(out), path)
-    for name in ("forms", "colour_forms", "colour_heads", "finish_heads", "surface_classes"):
+    for name in ("forms", "colour_forms", "colour_heads", "like_heads", "finish_heads", "surface_classes"):
         out[name] = _words(c, table.get(name, []), (*path, name))
     out["endings"] = _words(c, table.get("endings", []), (*path, "endings"), blank=True)
     ladder = []

@@ -422,7 +422,8 @@ def ladder_word(lexicon, noun):
         ("zinc coloured rubber", "zinc", "rubber"),
         ("zinc toned rubber", "zinc", "rubber"),
         ("milk-coloured rubber", "milk", "rubber"),
-        ("stainless-like rubber", "steel", "rubber"),  # a WordNet noun: stainless is a kind of steel
+        ("stainless-like rubber", "steel", "rubber"),
+        ("titanium like velvet", "titanium", "velvet"),  # spaced  # a WordNet noun: stainless is a kind of steel
     ],
 )
 def test_a_noun_as_a_describing_word_lends_its_apparent_colour(lexicon, text, noun, material):
@@ -443,6 +444,7 @@ def test_a_noun_as_a_describing_word_lends_its_apparent_colour(lexicon, text, no
         ("feltish", "felt"),
         ("suede-like", "suede"),
         ("plasticky", "plastic"),  # a doubled final consonant is undone (plastic + k + y)
+        ("rubber like", "rubber"),  # spaced
     ],
 )
 def test_a_surface_class_noun_lends_its_surface(lexicon, word, noun):
