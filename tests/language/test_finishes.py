@@ -261,6 +261,7 @@ def test_oil_on_metal_is_a_film_not_a_stain():
     assert r == g == b  # no warm stain, as oil gives wood
 
 
-@pytest.mark.parametrize("text", ["waxed cotton twill", "oiled denim"])
-def test_wax_and_oil_dress_cloth(text):
-    assert warnings(text) == []
+def test_wax_and_oil_dress_cloth():
+    assert warnings("waxed twill") == [] and material("waxed twill")["model"]["coat"] is True
+    assert warnings("oiled denim") == []
+    assert luminance(params("oiled denim")["base_color"]) < luminance(params("denim")["base_color"])
