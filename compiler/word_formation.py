@@ -283,7 +283,7 @@ class WordFormation:
         rules = self.rules.resemblance
         for colour_only, forms in ((True, rules["colour_forms"]), (False, rules["forms"])):
             for form in forms:
-                if word.endswith(form) and len(word) - len(form) >= self.rules.min_part:
+                if word.endswith(form) and len(word) - len(form) >= self.rules.min_part - 1:  # ic(e)-y
                     found = self._resembled(word, word[: len(word) - len(form)].rstrip("-"), colour_only)
                     if found is not None:
                         return found
@@ -294,9 +294,11 @@ class WordFormation:
         word before a colour word that, with the noun, names a colour."""
         rules = self.rules.resemblance
         for form in (*rules["colour_forms"], *rules["forms"]):
-            if first.endswith(form) and len(first) - len(form) >= self.rules.min_part:
+            if first.endswith(form) and len(first) - len(form) >= self.rules.min_part - 1:
                 stem = first[: len(first) - len(form)].rstrip("-")
                 for ending in rules["endings"] or ("",):
+                    if len(stem + ending) < self.rules.min_part:
+                        continue
                     found = self._kept(self.lookup((stem + ending, second)), ("COLOR",))
                     if found:
                         name = f"{stem + ending} {second}"
@@ -307,6 +309,8 @@ class WordFormation:
     def _resembled(self, word: str, stem: str, colour_only: bool) -> Reading | None:
         resemblance = self.resemblance
         for base in _stems(stem, self.rules.resemblance["endings"] or ("",)):
+            if len(base) < self.rules.min_part:
+                continue
             found = self._known(base)
             noun = next((c for c in found if c.tag == "NOUN"), None)
             if noun is None and not found:  # 'stainless-like': a WordNet noun ("a kind of steel")
@@ -328,10 +332,12 @@ class WordFormation:
     def _derived(self, word: str) -> Reading | None:
         for rule in self.rules.suffixes:
             for form in rule["forms"]:
-                if not word.endswith(form) or len(word) - len(form) < self.rules.min_part:
+                if not word.endswith(form) or len(word) - len(form) < self.rules.min_part - 1:
                     continue
                 stem = word[: len(word) - len(form)]
                 for ending in rule["endings"]:
+                    if len(stem.rstrip("-") + ending) < self.rules.min_part:  # icy: ic + e = ice
+                        continue
                     found = self._kept(self._known(stem + ending), rule["reads_as"])
                     if found:
                         return self._derived_reading(word, stem, stem.rstrip("-") + ending, found, rule)

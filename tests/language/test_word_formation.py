@@ -498,6 +498,7 @@ def test_bad_resemblance_rules_name_file_line_and_column(tmp_path: Path, text, m
     [
         ("steely grey ceramic", "steel grey ceramic"),  # resembling word + colour word = a named colour
         ("steely blue plastic", "steel blue plastic"),
+        ("icy blue plastic", "ice blue plastic"),  # ic + e: a two-letter stem plus its ending
         ("tan colour leather", "tan leather"),  # spaced colour heads
         ("sand tone fabric", "sand fabric"),
         ("satin chrome finish brass", "chrome plated satin brass"),  # the plating moves before the describing words
