@@ -14,6 +14,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from .diagnostics import Diagnostic, Severity
+from .spans import Span
 from .suggest import teaching
 from .tagged import NOTE_CODE, Tagged
 
@@ -36,8 +37,8 @@ def without_politeness(diags: list[Diagnostic], words: Sequence[Tagged]) -> tupl
             kept = kept[taken:] if at_start else kept[:-taken]
     if not dropped:
         return diags, kept
-    spans = {w.span for run in dropped for w in run}
-    out = [d for d in diags if not (d.code == "E001" and d.span in spans)]  # unknown words, stray marks
+    spans = [w.span for run in dropped for w in run]
+    out = [d for d in diags if not _inside(d, spans)]  # their unknown words, stray marks, readings
     for run in dropped:
         text = " ".join(w.text for w in run if w.text[:1].isalnum())
         note = f"read past '{text}': a phrase names the material only, so politeness is left out"
@@ -45,16 +46,25 @@ def without_politeness(diags: list[Diagnostic], words: Sequence[Tagged]) -> tupl
     return out, kept
 
 
+def _inside(diag: Diagnostic, spans: Sequence[Span]) -> bool:
+    """Whether a diagnostic is about dropped words only (its span within one of theirs)."""
+    at = diag.span
+    if at is None or (diag.is_error and diag.code != "E001"):
+        return False
+    return any(s.start <= at.start and at.end <= s.end for s in spans)
+
+
 def _edge_phrase(words: Sequence[Tagged], phrases: Sequence[str], marks: frozenset[str], at_start: bool) -> int:
-    """How many words at this edge are a listed phrase (the longest), with the mark beside it."""
+    """How many words at this edge are a listed phrase (the longest), with the mark beside it. A
+    word may hold several ('I'd like' joined by a head-word rule), so the texts are compared joined."""
     lowered = [w.text.lower() for w in words]
-    for phrase in sorted(phrases, key=lambda p: -len(p.split())):
-        parts = phrase.split()
-        n = len(parts)
-        if n >= len(words):
-            continue
+    listed = set(phrases)
+    taken = 0
+    for n in range(1, len(words)):
         edge = lowered[:n] if at_start else lowered[-n:]
-        if edge == parts:
-            beside = lowered[n] if at_start else lowered[-n - 1]
-            return n + 1 if beside in marks and n + 1 < len(words) else n
-    return 0
+        if " ".join(edge) in listed:
+            taken = n
+    if not taken:
+        return 0
+    beside = lowered[taken] if at_start else lowered[-taken - 1]
+    return taken + 1 if beside in marks and taken + 1 < len(words) else taken
