@@ -158,14 +158,15 @@ class Joiner:
         return next(iter(of_tag(before, "NOUN")), None)
 
     def _finish_of(self, before: Tagged, word: Tagged, diags: list[Diagnostic]) -> list[Tagged]:
-        """'chrome finish steel' = chrome plated steel (a metal finish is a plating), 'walnut
-        finish MDF' = MDF in walnut's colour: the finish, not a second material (cnlmc.resemblance)."""
+        """'chrome finish steel' = chrome plated steel, 'gold finish plastic' = gold plated plastic
+        (a metal finish is a plating, also when the metal names a colour), 'walnut finish MDF' = MDF
+        in walnut's colour: the finish, not a second material (cnlmc.resemblance)."""
         noun = self._finish_noun(before)
         colours = of_tag(before, "COLOR")
-        if colours:  # 'walnut finish MDF', 'gold finish aluminum': a colour word keeps its colour
-            found: tuple[Candidate, str] | None = (colours[0], f"the colour '{colours[0].key}' on {word.text}")
-        else:
-            found = None if noun is None else self.resemblance().finish(noun.key)
+        material = of_tag(word, "NOUN")[0].key
+        found = None if noun is None else self.resemblance().finish(noun.key, material, plating_only=bool(colours))
+        if found is None and colours:  # 'walnut finish MDF': a colour word of another class keeps its colour
+            found = (colours[0], f"the colour '{colours[0].key}' on {word.text}")
         if noun is None or found is None:
             return [before, word]
         diags[:] = [d for d in diags if not (d.span == before.span and d.code == NOTE_CODE)]  # the head's own note

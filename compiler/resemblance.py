@@ -82,17 +82,26 @@ class Resemblance:
         how = "a metal's colour at normal incidence, base colour x f0" if metal else "its base colour"
         return Candidate("COLOR", name, "colours"), f"the named colour nearest to its colour, {how}"
 
-    def finish(self, key: str) -> Found | None:
-        """'X finish' before a material: the class's finish adjective (metal: plated), else X's colour."""
+    def finish(self, key: str, material: str, plating_only: bool = False) -> Found | None:
+        """'X finish' before `material`: the class's finish adjective (metal: plated) where it
+        applies to the material, else X's colour (none with `plating_only`: the caller has a
+        colour word of its own)."""
         entry = self.noun_entry(key)
         if entry is None:
             return None
         adjective = self.rules["finish_adjectives"].get(entry.get("class"))
-        if adjective is None:
-            return self.colour(key)
+        if adjective is None or not self._applies(adjective, material):  # gold finish ceramic: its colour
+            return None if plating_only else self.colour(key)
         return Candidate(
             "ADJ", adjective, "adjectives"
         ), f"a {entry.get('class')} finish is a plating" if adjective == "plated" else f"a {entry.get('class')} finish"
+
+    def _applies(self, adjective: str, material: str) -> bool:
+        """Whether the adjective applies to the material noun's class (its `applies_to`, if any)."""
+        entry = self.lexicon.entry("adjectives", adjective)
+        target = self.noun_entry(material)
+        classes = entry.get("applies_to") if entry is not None else None
+        return not classes or target is None or target.get("class") in classes
 
     def apparent(self, key: str) -> list[float] | None:
         entry = self.noun_entry(key)

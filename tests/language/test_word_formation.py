@@ -463,6 +463,8 @@ def test_surface_resemblance_follows_roughness(lexicon):
     [
         ("nickel finish brass", "nickel plated brass"),  # a metal finish is a plating
         ("chrome finished aluminum", "chrome plated aluminum"),
+        ("gold finish plastic", "gold plated plastic"),  # a metal that names a colour too: still a plating
+        ("gold finish ceramic", "gold ceramic"),  # where plating does not apply: its colour
         ("cherry finish pine", "cherry-coloured pine"),  # a noun that is a colour too: its colour
         ("cream coloured ceramic", "cream ceramic"),  # a colour word before 'coloured': the colour
     ],
