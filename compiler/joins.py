@@ -88,7 +88,34 @@ class Joiner:
                     out.append(self._object_alone(word, diags))
             else:
                 out.append(word)
+        if len(out) > 2 and self._is_coat_finish(out):
+            self._coat_after(out, diags)
         return out
+
+    def _is_coat_finish(self, out: list[Tagged]) -> bool:
+        """'powder coat finish steel', 'clear coat finish steel': a coat, a finish head, the material last."""
+        coat, head, noun = out[-3:]
+        return (
+            head.text.lower() in self.rules().finish_heads
+            and bool(of_tag(noun, "NOUN"))
+            and all(c.tag == "COAT" for c in coat.candidates)
+            and not any(c.tag == "WITH" for t in out for c in t.candidates)
+        )
+
+    def _coat_after(self, out: list[Tagged], diags: list[Diagnostic]) -> None:
+        """The coat named as a finish goes after the material in a 'with' clause (the head word stands
+        for the 'with'), with the describing words right before it: 'glossy powder coat finish
+        steel' = steel with a glossy powder coat."""
+        coat, head, noun = out[-3:]
+        start = len(out) - 3
+        while start > 0 and all(c.tag in DESCRIBING for c in out[start - 1].candidates):
+            start -= 1
+        coat_words = out[start:-2]
+        with_word = Tagged(head.text, head.span, (Candidate("WITH", "with", "keyword"),))
+        coat_text = " ".join(t.text for t in coat_words)
+        note = f"read '{coat_text} {head.text} {noun.text}' as '{noun.text} with {coat_text}' (the coat is the finish)"
+        diags.append(Diagnostic(coat_words[0].span.to(noun.span), Severity.NOTE, NOTE_CODE, note))
+        out[start:] = [noun, with_word, *coat_words]
 
     def _join(
         self, a: Tagged, b: Tagged, candidates: tuple[Candidate, ...], reading: str, diags: list[Diagnostic]

@@ -465,6 +465,8 @@ def test_surface_resemblance_follows_roughness(lexicon):
         ("chrome finished aluminum", "chrome plated aluminum"),
         ("gold finish plastic", "gold plated plastic"),  # a metal that names a colour too: still a plating
         ("gold finish ceramic", "gold ceramic"),  # where plating does not apply: its colour
+        ("enamel coat finish copper", "copper with an enamel coat"),  # a coat named as the finish
+        ("glossy red powder coat finish aluminum", "aluminum with a glossy red powder coat"),
         ("cherry finish pine", "cherry-coloured pine"),  # a noun that is a colour too: its colour
         ("cream coloured ceramic", "cream ceramic"),  # a colour word before 'coloured': the colour
     ],
