@@ -41,7 +41,7 @@ ShapeKey = tuple[str | tuple[str, ...], ...]  # the candidate tags of each word
 # dataclass generates and compiles its methods at every import). This module has no
 # `from __future__ import annotations`: NamedTuple would compile every string annotation at
 # import. Together ~10 ms of a cold CLI start.
-SEPARATORS = frozenset({"ARTICLE", "COMMA", "AND", "OR", "WITH", "COLON"})  # terminals that make no AST word
+SEPARATORS = frozenset({"ARTICLE", "COMMA", "AND", "OR", "WITH", "OF", "COLON"})  # terminals that make no AST word
 
 
 def span_of(tagged: Sequence[Tagged], first: int, last: int) -> Span:
@@ -329,14 +329,14 @@ class _Reader:
         return self.words(t for t in tree.children if _token(t).type != "OR")
 
     def coat(self, tree: Tree[Token]) -> CoatPlan:
-        groups: tuple[GroupPlan, ...] = ()
+        groups: tuple[GroupPlan, ...] = ()  # the words before the coat or feature, then a colour after 'of'
         coat_word = None
         for child in tree.children:
             if isinstance(child, Tree) and child.data == "shaded_noun_tint":  # SHADE+ NOUN: one named colour
                 colour = ColourPlan(self.words(child.children), False, *self.edges(child), len(child.children) - 1)
-                groups = (GroupPlan("colour", NONE, (colour,), NONE, *self.edges(child)),)
+                groups += (GroupPlan("colour", NONE, (colour,), NONE, *self.edges(child)),)
             elif isinstance(child, Tree):
-                groups = (self.group(child),) if child.data in GROUP_RULES else self.groups(child)
+                groups += (self.group(child),) if child.data in GROUP_RULES else self.groups(child)
             elif child.type in ("COAT", "FEATURE"):
                 coat_word = self.word(child)
         assert coat_word is not None, "the grammar's clause rules end with a COAT or FEATURE word"

@@ -283,19 +283,27 @@ def _met_colour(
     meeting = meet(own, plain.rgb, float(hue_family), float(keep_own))
     if meeting.how == "named":
         return named
-    text, feature = colour_text(colour), clause.word.text
+    said, feature = _said(colour, clause), clause.word.text
     made = f", made {' '.join(plain.shades)}" if plain.shades else ""
     if meeting.how == "mixed":
         message = (
-            f"read '{text} {feature}' as {plain.word}'s hue, keeping {keep_own:g} of the {feature}'s own "
-            f"lightness and chroma{made}"
+            f"read '{said}' as {plain.word}'s hue, keeping {keep_own:g} of the own lightness and chroma "
+            f"of the {feature}{made}"
         )
     else:
-        message = f"read '{text} {feature}' as the {feature}'s own colour ({plain.word} is its hue family){made}"
+        message = f"read '{said}' as the own colour of the {feature} ({plain.word} is its hue family){made}"
     state.diagnostics.append(Diagnostic(colour.span, Severity.NOTE, OWN_COLOUR, message))
     if meeting.how == "own" and not plain.shades:
         return None
     return with_shades(ctx, meeting.rgb, plain.shades)
+
+
+def _said(colour: ast.Colour, clause: ast.Feature) -> str:
+    """The colour and the feature as written: 'gold veins', 'veins of gold'."""
+    text = colour_text(colour)
+    if colour.span.start > clause.word.span.start:
+        return f"{clause.word.text} of {text}"
+    return f"{text} {clause.word.text}"
 
 
 # ---------------------------------------------------------------- what the clause said that nothing used

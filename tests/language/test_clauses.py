@@ -517,7 +517,7 @@ def test_a_colour_of_the_patinas_own_hue_keeps_the_verdigris(compile_text, colou
     named, diags = compiled(compile_text, f"brass with a {colour} patina")
     assert map_params(named, "patina") == map_params(plain, "patina")  # the texture untouched
     (note,) = notes(diags, "N125")
-    assert "own colour" in note and "hue family" in note
+    assert "own colour of the patina" in note and "hue family" in note
 
 
 def test_a_shade_on_the_own_hue_shades_the_verdigris(compile_text):
@@ -585,3 +585,38 @@ def test_a_finish_before_and_keeps_its_describing_word(compile_text, text, same)
     expected, _ = compiled(compile_text, same)
     assert material["params"] == expected["params"] and material.get("maps") == expected.get("maps")
     assert not notes(diags, "N121") and not notes(diags, "N101")
+
+
+# ---------------------------------------------------------------- 'of' and the feature's colour
+
+
+@pytest.mark.parametrize(
+    "text,same",
+    [
+        ("travertine with veins of ochre", "travertine with ochre veins"),
+        ("white tile with flecks of black", "white tile with black flecks"),
+        ("onyx with streaks of dark red", "onyx with dark red streaks"),
+        ("acrylic with a tinge of amber", "acrylic with an amber tinge"),
+    ],
+)
+def test_the_colour_after_of_is_the_features_colour(compile_text, text, same):
+    material, _ = compiled(compile_text, text)
+    expected, _ = compiled(compile_text, same)
+    assert material["params"] == expected["params"] and material.get("maps") == expected.get("maps")
+
+
+def test_a_hint_of_a_colour_is_half_a_tint(compile_text):
+    plain, _ = compiled(compile_text, "frosted glass")
+    hint, _ = compiled(compile_text, "frosted glass with a hint of violet")
+    tint, _ = compiled(compile_text, "frosted glass with a violet tint")
+    (L0, C0, _), (L1, C1, h1), (L2, C2, h2) = (lch(m["params"]["base_color"]) for m in (plain, hint, tint))
+    assert C0 < C1 < C2 and L2 < L1 < L0  # a violet, less of it than a tint
+    assert abs(h1 - h2) < 20
+
+
+@pytest.mark.parametrize("text", ["limestone with veins of", "bronze with dents of", "glass with a trace of"])
+def test_of_without_a_colour_says_what_it_needs(compile_text, text):
+    result = compile_text(text)
+    assert not result.ok
+    (error,) = [d for d in result.diagnostics if d.is_error]
+    assert error.message == "'of' after a feature needs the feature's colour"
