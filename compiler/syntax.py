@@ -270,7 +270,10 @@ class _Reader:
         coat: CoatPlan | None = None
         features: tuple[CoatPlan, ...] = ()
         refinements: tuple[RefineItemPlan, ...] = ()
-        for child in tree.children:
+        children = [
+            c for t in tree.children for c in (t.children if isinstance(t, Tree) and t.data == "tail" else (t,))
+        ]
+        for child in children:
             if isinstance(child, Token):
                 continue  # the article
             if child.data == "groups":
@@ -281,6 +284,8 @@ class _Reader:
                 nouns = self.alternatives(child)
             elif child.data == "clauses":
                 coat, features = self.clauses(child)
+            elif child.data == "in_colour":  # "steel in charcoal": the colour of the material
+                groups = groups + self.groups(child)
             elif child.data == "refine_item":
                 refinements = (self.refine_item(child),)
         return MaterialPlan(name, groups, nouns, coat, *self.edges(tree), refinements, features)

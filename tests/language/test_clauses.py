@@ -620,3 +620,33 @@ def test_of_without_a_colour_says_what_it_needs(compile_text, text):
     assert not result.ok
     (error,) = [d for d in result.diagnostics if d.is_error]
     assert error.message == "'of' after a feature needs the feature's colour"
+
+
+# ---------------------------------------------------------------- a colour alone after 'in'
+
+
+@pytest.mark.parametrize(
+    "text,same",
+    [
+        ("aluminium in gunmetal grey", "gunmetal grey aluminium"),
+        ("velvet in a deep burgundy", "deep burgundy velvet"),
+        ("brushed brass in pale gold", "pale gold brushed brass"),
+    ],
+)
+def test_a_colour_alone_after_in_is_the_materials_colour(compile_text, text, same):
+    material, _ = compiled(compile_text, text)
+    expected, _ = compiled(compile_text, same)
+    assert material["params"] == expected["params"]
+
+
+def test_german_colour_after_in(compile_text, german):
+    result = compile_text("Keramik in Dunkelblau", german)
+    assert result.ok, [d.message for d in result.diagnostics]
+    english, _ = compiled(compile_text, "dark blue ceramic")
+    assert result.materials[0]["params"] == english["params"]
+
+
+def test_a_colour_after_in_then_clauses(compile_text):
+    material, _ = compiled(compile_text, "pewter in slate grey with a satin lacquer and a few scratches")
+    expected, _ = compiled(compile_text, "slate grey pewter with a satin lacquer and a few scratches")
+    assert material["params"] == expected["params"] and material.get("maps") == expected.get("maps")
