@@ -614,6 +614,15 @@ def test_a_hint_of_a_colour_is_half_a_tint(compile_text):
     assert abs(h1 - h2) < 20
 
 
+def test_a_touch_of_a_colour_is_a_hint_and_a_touch_before_a_word_still_an_adverb(compile_text):
+    touch, _ = compiled(compile_text, "frosted glass with a touch of teal")
+    hint, _ = compiled(compile_text, "frosted glass with a hint of teal")
+    assert touch["params"] == hint["params"]
+    adverb, _ = compiled(compile_text, "a touch glossier grey plastic")
+    slightly, _ = compiled(compile_text, "slightly glossier grey plastic")
+    assert adverb["params"] == slightly["params"]
+
+
 @pytest.mark.parametrize("text", ["limestone with veins of", "bronze with dents of", "glass with a trace of"])
 def test_of_without_a_colour_says_what_it_needs(compile_text, text):
     result = compile_text(text)
