@@ -44,7 +44,8 @@ OPEN_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "REFINE")
 # clause takes a feature ("with a matte finish": the surface; "with a blue glaze and fine cracks": two clauses)
 _FEATURE_FIRST = tuple(t for tag in OPEN_TAGS for t in (("FEATURE", tag) if tag == "ADJ" else (tag,)))
 TAG_PREFERENCE = {
-    t: i for i, t in enumerate(("NAME", "COLON", "ARTICLE", "AND", "OR", "WITH", "OF", "COMMA", *_FEATURE_FIRST, "OBJECT"))
+    t: i
+    for i, t in enumerate(("NAME", "COLON", "ARTICLE", "AND", "OR", "WITH", "OF", "COMMA", *_FEATURE_FIRST, "OBJECT"))
 }
 
 

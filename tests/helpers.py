@@ -6,6 +6,7 @@ tables live here, imported as ``from tests.helpers import run_cnlmc``.
 
 from __future__ import annotations
 
+import importlib.util
 import subprocess
 import sys
 from collections.abc import Callable, Mapping
@@ -110,3 +111,14 @@ class Goldens:
         path.write_bytes(data)
         self.rewritten.append(path)
         return True
+
+
+def load_module(name: str, path: Path) -> ModuleType:
+    """A script or bench file (not a package module) imported by path, registered under `name`
+    in sys.modules (dataclasses look their module up there)."""
+    spec = importlib.util.spec_from_file_location(name, path)
+    assert spec is not None and spec.loader is not None, path
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module

@@ -21,7 +21,7 @@ from pathlib import Path
 from typing import Any, TextIO
 
 from cnlmc.api import Session
-from cnlmc.changes import material_changes
+from cnlmc.changes import fmt, material_changes
 from cnlmc.diagnostics import did_you_mean, render
 from cnlmc.material import Material
 
@@ -115,7 +115,7 @@ class LiveSession:
             return Step(True, "\n".join(f"  {k:12s} {v}" for k, v in COMMANDS.items()))
         if name == ":show":
             params = self.material.to_ir()["params"]
-            return Step(True, "\n".join(f"  {k:18s} {_fmt(v)}" for k, v in params.items()))
+            return Step(True, "\n".join(f"  {k:18s} {fmt(v)}" for k, v in params.items()))
         if name == ":undo":
             return self.undo()
         if name in (":tier", ":mesh") and arg:
@@ -158,16 +158,6 @@ def changes_of(before: Material, after: Material) -> list[str]:
 def changes(before: dict, after: dict) -> list[str]:
     """'  name  old -> new' for every parameter, coat and map parameter that differs (cnlmc.changes)."""
     return material_changes(before, after)
-
-
-def _fmt(value) -> str:
-    if isinstance(value, float):
-        return f"{value:.4g}"
-    if isinstance(value, (list, tuple)):
-        return "(" + ", ".join(_fmt(v) for v in value) + ")"
-    if isinstance(value, dict):
-        return "{" + ", ".join(f"{k}: {_fmt(v)}" for k, v in value.items()) + "}"
-    return str(value)
 
 
 # ------------------------------------------------------------------------- the loop

@@ -3,8 +3,6 @@ compounds and shifts in OKLab, checked against the survey and through the compil
 
 from __future__ import annotations
 
-import importlib.util
-import sys
 import tomllib
 from pathlib import Path
 
@@ -14,20 +12,13 @@ from hypothesis import strategies as st
 
 from cnlmc import colour
 from cnlmc.lexicon import cached_lexicon, load_lexicon
+from tests.helpers import load_module
 
 ROOT = Path(__file__).resolve().parents[2]
 NAMES = ROOT / "stdlib" / "data" / "colour_names.toml"
 
 
-def _load(name: str, path: Path):
-    spec = importlib.util.spec_from_file_location(name, path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
-
-
-ev = _load("everyday_bench_colours", ROOT / "bench" / "everyday.py")  # OKLab, CIELAB, CIEDE2000
+ev = load_module("everyday_bench_colours", ROOT / "bench" / "everyday.py")  # OKLab, CIELAB, CIEDE2000
 
 
 @pytest.fixture(scope="module")

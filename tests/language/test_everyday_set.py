@@ -4,15 +4,15 @@ never asserted here."""
 
 from __future__ import annotations
 
-import importlib.util
 import re
-import sys
 import tomllib
 from collections import Counter
 from importlib import resources
 from pathlib import Path
 
 import pytest
+
+from tests.helpers import load_module
 
 ROOT = Path(__file__).resolve().parents[2]
 SET = ROOT / "tests" / "language" / "everyday.toml"
@@ -40,14 +40,6 @@ CATEGORIES = {
     "clause",
     "german",
 }
-
-
-def load_module(name: str, path: Path):
-    spec = importlib.util.spec_from_file_location(name, path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module  # dataclasses look their module up
-    spec.loader.exec_module(module)
-    return module
 
 
 ev = load_module("everyday_bench", ROOT / "bench" / "everyday.py")

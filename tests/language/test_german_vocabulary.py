@@ -5,8 +5,6 @@ must compile to exactly what its English translation compiles to: these tests co
 through the real compiler. None of the phrases here is in tests/language/everyday.toml.
 """
 
-import importlib.util
-import sys
 import tomllib
 from importlib import resources
 from pathlib import Path
@@ -14,20 +12,13 @@ from pathlib import Path
 import pytest
 
 from cnlmc.api import Session, compile_source, lexicon_for
+from tests.helpers import load_module
 
 from .conftest import first
 
 ADJECTIVE_ENDINGS = ("e", "en", "er", "es", "em")  # strong, weak and mixed declension
 ROOT = Path(__file__).resolve().parents[2]
 COMPARATIVES = ROOT / "stdlib" / "overlays" / "de" / "refinements_declined_de.toml"
-
-
-def load_module(name, path):
-    spec = importlib.util.spec_from_file_location(name, path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
 
 
 gen_comparatives = load_module("gen_de_comparatives", ROOT / "scripts" / "gen_de_comparatives.py")

@@ -4,8 +4,6 @@ stdlib/lexicon/word_formation.toml). A German phrase means what its English tran
 and every inferred reading says so in a note. None of these phrases is in everyday.toml.
 """
 
-import importlib.util
-import sys
 from pathlib import Path
 
 import pytest
@@ -13,19 +11,12 @@ import pytest
 from cnlmc.api import compile_source, lexicon_for
 from cnlmc.colour import linear_to_oklab
 from cnlmc.diagnostics import Severity
+from tests.helpers import load_module
 
 from .conftest import first
 
 ROOT = Path(__file__).resolve().parents[2]
 COMPOUNDS = ROOT / "stdlib" / "overlays" / "de" / "colours_compounds_de.toml"
-
-
-def load_module(name, path):
-    spec = importlib.util.spec_from_file_location(name, path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
 
 
 gen_compounds = load_module("gen_de_colour_compounds", ROOT / "scripts" / "gen_de_colour_compounds.py")
