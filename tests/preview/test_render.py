@@ -10,6 +10,13 @@ from cnlmc.backends.preview.tiers import QUALITY_ORDER, TIERS, TierError, parse_
 
 from .conftest import material_of, stdlib_nouns
 
+NEAR_BLACK = 0.005  # albedo (luminance of base_color) below which a noun is black by its measured data
+
+
+def _luminance(material) -> float:
+    r, g, b = material.params.base_color
+    return 0.2126 * r + 0.7152 * g + 0.0722 * b
+
 
 @pytest.mark.slow  # ~60 s: every stdlib noun rendered
 def test_every_stdlib_noun_renders_without_nan(renderer, scene):
@@ -21,7 +28,8 @@ def test_every_stdlib_noun_renders_without_nan(renderer, scene):
         assert np.isfinite(frame.hdr).all(), noun
         covered = frame.rgba[..., 3] > 0
         assert 0.2 < covered.mean() < 0.8, noun  # the sphere is in the frame
-        assert frame.rgba[..., :3][covered].mean() > 3, f"{noun} renders black"
+        if _luminance(material) >= NEAR_BLACK:  # the ultra-black paints (MIT black, Musou) are meant to be black
+            assert frame.rgba[..., :3][covered].mean() > 3, f"{noun} renders black"
 
 
 @pytest.mark.parametrize(
