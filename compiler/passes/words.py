@@ -24,6 +24,7 @@ from .colour_compounds import colour_compounds
 from .colours import colour_text, opposed_shades, resolve_colour
 from .diffuse_sigma import DIFFUSE_SIGMA, PARAM_BOUNDS, move_sigma
 from .order import canonical_groups, gloss_on_coat, stage_of
+from .textured_colour import keep_pattern_visible
 
 Effect = dict[str, Any]  # one formula of a lexicon entry: {"param": ..., "op": ..., "value": ...}
 Holder = dict[str, Any]  # where a value goes: the material's parameters or its coat's
@@ -99,6 +100,8 @@ def apply_colour(state: MaterialState, ctx: Context, c: ast.Colour, adverbs: Wor
     param, holder = _colour_slot(state, target)
     current = holder.get(param)
     rgb = resolve_colour(c, ctx, start=current, weight=weight)
+    if target == "base" and c.words:
+        rgb = keep_pattern_visible(state, ctx, rgb, c.words, noun_of(state).key)
     _warn_opposed_shades(state, ctx, c)
     _warn_second_colour(state, param if target == "base" else "coat.color", c)
     holder[param] = rgb
