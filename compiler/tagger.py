@@ -196,6 +196,8 @@ class Tagger:
         for n in self.lengths_from.get(text.lower(), ()):
             if i + n <= len(raw):
                 candidates = self._candidates(tuple([t.lower() for t, _c in raw[i : i + n]]))
+                if candidates and n > 1 and self._noun_starts_inside(raw, i + n - 1):
+                    continue  # "dull red wine": 'dull' then the noun 'red wine', not the colour 'dull red'
                 if candidates:
                     tagged.append(
                         Tagged(
@@ -245,6 +247,18 @@ class Tagger:
             Diagnostic(self._span(raw, i, reading.words, line_no, offset), Severity.NOTE, NOTE_CODE, reading.note)
         )
         return reading.words
+
+    def _noun_starts_inside(self, raw: list[RawToken], j: int) -> bool:
+        """Whether a multi-word noun starts at raw[j] and runs past it to the end of the line or
+        a separator: then a form ending at raw[j] gives way to it (the material is what a phrase
+        names; a shorter form before it still tags)."""
+        for m in self.lengths_from.get(raw[j][0].lower(), ()):
+            end = j + m
+            if m > 1 and end <= len(raw) and (end == len(raw) or not raw[end][0][0].isalpha()):
+                found = self._candidates(tuple([t.lower() for t, _c in raw[j:end]]))
+                if any(c.tag == "NOUN" for c in found):
+                    return True
+        return False
 
     def _candidates(self, words: tuple[str, ...]) -> tuple[Candidate, ...]:
         cached = self.memo.get(words)

@@ -178,14 +178,18 @@ def lexicon_items(
         category = CATEGORY_OF_TAG.get(tag)
         if category is None:
             continue
-        for entry in lexicon.all_of(category).values():
+        for position, entry in enumerate(lexicon.all_of(category).values()):
             surface = surface_for(entry, partial)
             if surface is None or not fits(entry, context):
                 continue
-            yield completion_item(entry, surface, where, order[category])
+            yield completion_item(entry, surface, where, order[category], position)
 
 
-def completion_item(entry: Entry, surface: str, where: types.Range, rank: int) -> types.CompletionItem:
+def completion_item(
+    entry: Entry, surface: str, where: types.Range, rank: int, position: int = 0
+) -> types.CompletionItem:
+    """An item sorted by its category's rank, then by where the lexicon declares it: the stdlib
+    files list the common words first (varnish, lacquer and clear coat before wax)."""
     effects = effect_lines(entry)
     detail = CATEGORY_NAMES[entry.category] + (f": {effects[0]}" if effects else "")
     return types.CompletionItem(
@@ -193,7 +197,7 @@ def completion_item(entry: Entry, surface: str, where: types.Range, rank: int) -
         kind=KINDS[entry.category],
         detail=detail,
         documentation=types.MarkupContent(types.MarkupKind.Markdown, entry_markdown(entry, surface)),
-        sort_text=f"{rank}_{surface}",
+        sort_text=f"{rank}_{position:05d}_{surface}",
         filter_text=surface,
         text_edit=types.TextEdit(where, surface),
     )

@@ -108,7 +108,7 @@ async def test_quick_fixes(client):
     )
     titles = [a.title for a in actions]
     assert "Replace 'blu' with 'blue'" in titles
-    assert "Remove 'brushed'" in titles and "Remove 'anodized'" in titles and "Remove 'lightly'" in titles
+    assert "Remove 'polished'" in titles and "Remove 'anodized'" in titles and "Remove 'lightly'" in titles
     fixed = apply_all(text, [a for a in actions if a.title.startswith(("Replace 'blu' with 'blue'", "Remove"))], uri)
     assert compile_source(fixed, "x").diagnostics == []
 

@@ -100,7 +100,7 @@ def test_lsp_diagnostics_are_bounded_and_forgotten():
     converted = LspDiagnostics(limit=500)
     for n in range(5):
         snap = analyzer.analyse("\n".join(f"m{i}: blu plastic\nbleu" for i in range(n * 100, n * 100 + 100)))
-        assert len(converted.of(snap, f"file:///{n}.cnl")) == 300
+        assert len(converted.of(snap, f"file:///{n}.cnl")) == 200  # one E001 per unknown word, no follow-on error
         assert converted.kept <= 500
     converted.forget("file:///4.cnl")
     assert all(key[2] != "file:///4.cnl" for key in converted._by_block)

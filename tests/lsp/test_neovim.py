@@ -54,7 +54,7 @@ def test_filetype_is_cnl(nvim_results):
 def test_diagnostics_in_neovim(nvim_results):
     found = {(d["code"], d["lnum"], d["col"], d["end_col"]) for d in nvim_results["diagnostics"]}
     assert ("E001", 1, 0, 3) in found
-    assert ("W101", 2, 9, 16) in found
+    assert ("W101", 2, 0, 8) in found  # on 'polished': applied after 'brushed' (canonical order), it wins
 
 
 def test_hover_in_neovim(nvim_results):
