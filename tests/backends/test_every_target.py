@@ -73,13 +73,26 @@ def test_every_target_from_the_command_line(tmp_path, target):
 
 def stdlib_pairs(every: bool) -> list[str]:
     """Stdlib adjective + noun phrases ('matte denim', 'brushed walnut', ...): with `every`, each
-    adjective before each noun; else each adjective and each noun at least once (round robin)."""
+    adjective before every noun that can read differently — the first noun of each noun class
+    and of each model, and every noun an adjective names in its `on` table (per-class and
+    per-noun formulas are what differ; 30,000 pairs of the same class repeat one another) —;
+    else each adjective and each noun at least once (round robin)."""
     lexicon = load_lexicon()
     adjectives, nouns = sorted(lexicon.all_of("adjectives")), sorted(lexicon.all_of("nouns"))
     if every:
-        return [f"{adjective} {noun}" for adjective in adjectives for noun in nouns]
+        return [f"{adjective} {noun}" for adjective in adjectives for noun in _distinct_nouns(lexicon, nouns)]
     count = max(len(adjectives), len(nouns))
     return [f"{adjectives[i % len(adjectives)]} {nouns[i % len(nouns)]}" for i in range(count)]
+
+
+def _distinct_nouns(lexicon, nouns: list[str]) -> list[str]:
+    firsts: dict[tuple[str, str], str] = {}
+    for key in nouns:
+        entry = lexicon.entry("nouns", key)
+        firsts.setdefault(("class", str(entry.get("class"))), key)
+        firsts.setdefault(("model", str(entry.get("model"))), key)
+    named = {name for a in lexicon.all_of("adjectives").values() for name in (a.get("on") or {})}
+    return sorted(set(firsts.values()) | (named & set(nouns)))
 
 
 def pairs_document(every: bool):
