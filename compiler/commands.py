@@ -34,6 +34,7 @@ from .document import parse_document
 from .errors import UsageError
 from .explain import explain
 from .inputs import DEFAULT_MAX_BYTES, input_name, read_text
+from .ir import terminal_safe
 from .lexicon import Lexicon
 from .lexicon_schema import LexiconError
 from .lines import iter_lines
@@ -315,7 +316,7 @@ def emit_stage(stage: str, source: str, name: str, lexicon: Lexicon) -> int:
     doc = parse_document(source, lexicon, name)
     print_diagnostics(doc.diagnostics, source, name)
     nodes = [{"node": type(item).__name__, **asdict(item)} for item in doc.items]
-    print(json.dumps(nodes, indent=2, ensure_ascii=False))
+    print(terminal_safe(json.dumps(nodes, indent=2, ensure_ascii=False)))
     return EXIT_ERRORS if any(d.is_error for d in doc.diagnostics) else EXIT_OK
 
 

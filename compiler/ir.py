@@ -118,7 +118,12 @@ def json_text(value: object) -> str:
     U+2028/U+2029 written as \\u escapes. The encoder leaves them raw (valid JSON), but a terminal
     reads C1 as commands (U+009B is CSI) and JavaScript reads U+2028 as a line end. They occur only
     inside strings, so escaping the text is exact."""
-    text = _ENCODER.encode(value)
+    return terminal_safe(_ENCODER.encode(value))
+
+
+def terminal_safe(text: str) -> str:
+    """JSON text with DEL, the C1 controls and U+2028/U+2029 as \\u escapes (exact: they occur
+    only inside JSON strings); the IR, the AST printed by --emit ast."""
     if text.isascii() and "\x7f" not in text:  # the common case: two C scans, no regular expression
         return text
     if _UNSAFE_ON_TERMINAL.search(text) is None:
