@@ -6,7 +6,7 @@ brick, leather: `blend … mode = "multiply"` with the base_color input), so a n
 OKLab lightness 0 ('black') or 1 ('white') would flatten every crystal, vein or grain line into one
 flat value. The named colour keeps its hue and chroma; its OKLab lightness is held inside the
 lexicon's band `textured_colour_min_lightness` .. `textured_colour_max_lightness` (settings.toml), so black granite is a near-black stone
-whose light crystals still show, white marble a white whose veins still show. A note says so.
+whose light crystals still show, white marble a white whose veins still show. `cnlmc explain` shows the step.
 """
 
 from __future__ import annotations
@@ -15,12 +15,10 @@ from collections.abc import Sequence
 
 from .. import ast
 from ..colour import linear_to_oklab, oklab_to_linear_in_gamut
-from ..diagnostics import Diagnostic, Severity
 from ..state import Context, MaterialState
 
-__all__ = ["NOTE_CODE", "keep_pattern_visible"]
+__all__ = ["keep_pattern_visible"]
 
-NOTE_CODE = "N132"  # a named colour held inside the band that keeps a pattern visible
 DEFAULT_BAND = (0.0, 1.0)  # a lexicon without the setting leaves colours as named
 
 
@@ -36,18 +34,16 @@ def keep_pattern_visible(
     held = min(max(lab[0], low), high)
     if abs(held - lab[0]) < 1e-6:
         return rgb
-    state.diagnostics.append(_note(words, lab[0], held, noun_text))
-    return oklab_to_linear_in_gamut([held, lab[1], lab[2]])
+    rgb = oklab_to_linear_in_gamut([held, lab[1], lab[2]])
+    state.note("base_color", rgb, _rule(words, lab[0], held, noun_text), tuple(words))
+    return rgb
 
 
-def _note(words: Sequence[ast.Word], was: float, held: float, noun_text: str) -> Diagnostic:
+def _rule(words: Sequence[ast.Word], was: float, held: float, noun_text: str) -> str:
+    """The provenance rule `cnlmc explain` shows (a quiet adjustment, not a diagnostic)."""
     text = " ".join(w.text for w in words)
     direction = "raised" if held > was else "lowered"
-    return Diagnostic(
-        words[0].span.to(words[-1].span),
-        Severity.NOTE,
-        NOTE_CODE,
-        f"'{text}' on {noun_text}'s pattern: lightness {direction} to OKLab {held:.2f} (from {was:.2f}) "
-        "so the pattern stays visible",
-        ("settings.toml 'textured_colour_min_lightness' / '_max_lightness' set the band",),
+    return (
+        f"settings.textured_colour_*_lightness: '{text}' on {noun_text}'s pattern, OKLab lightness "
+        f"{direction} to {held:.2f} (from {was:.2f}) so the pattern stays visible"
     )
