@@ -196,7 +196,7 @@ class Tagger:
         for n in self.lengths_from.get(text.lower(), ()):
             if i + n <= len(raw):
                 candidates = self._candidates(tuple([t.lower() for t, _c in raw[i : i + n]]))
-                if candidates and n > 1 and self._noun_starts_inside(raw, i + n - 1):
+                if candidates and n > 1 and self._gives_way(raw, i, n):
                     continue  # "dull red wine": 'dull' then the noun 'red wine', not the colour 'dull red'
                 if candidates:
                     tagged.append(
@@ -247,6 +247,13 @@ class Tagger:
             Diagnostic(self._span(raw, i, reading.words, line_no, offset), Severity.NOTE, NOTE_CODE, reading.note)
         )
         return reading.words
+
+    def _gives_way(self, raw: list[RawToken], i: int, n: int) -> bool:
+        """Whether the form raw[i:i+n] gives way to a multi-word noun starting on its last word:
+        only when the words before that noun are a form themselves ('dull' in 'dull red wine'), so
+        'floral white beech' stays the colour 'floral white' on beech."""
+        before = tuple([t.lower() for t, _c in raw[i : i + n - 1]])
+        return bool(self._candidates(before)) and self._noun_starts_inside(raw, i + n - 1)
 
     def _noun_starts_inside(self, raw: list[RawToken], j: int) -> bool:
         """Whether a multi-word noun starts at raw[j] and runs past it to the end of the line or

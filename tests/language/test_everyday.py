@@ -154,3 +154,14 @@ def test_designer_phrases_compile_cleanly(compile_text, phrase):
 def test_extra_punctuation_is_tolerated(compile_text, text, same_as):
     a, b = material(compile_text, text), material(compile_text, same_as)
     assert a["params"] == b["params"] and a["model"] == b["model"]
+
+
+@pytest.mark.parametrize(
+    ("phrase", "noun"), [("floral white beech", "beech"), ("ugly yellow gold", "gold"), ("dull red wine", "red wine")]
+)
+def test_a_colour_keeps_its_words_unless_the_rest_is_a_word(compile_text, phrase, noun):
+    """A multi-word colour gives way to a multi-word noun on its last word only when the words
+    before that noun are a word themselves ('dull' in 'dull red wine'; 'floral' is not)."""
+    m = material(compile_text, phrase)
+    rules = {step["rule"] for steps in m["provenance"].values() for step in steps}
+    assert f"nouns.{noun}" in rules, sorted(rules)
