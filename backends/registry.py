@@ -43,6 +43,7 @@ BUILTIN_BACKENDS = {
     "materialx": "cnlmc.backends.exchange.materialx",
     "usd": "cnlmc.backends.exchange.usd",
     "mitsuba": "cnlmc.backends.exchange.mitsuba",
+    "gltf": "cnlmc.backends.exchange.gltf",
     "maps": "cnlmc.backends.maps.target",
     "preview": "cnlmc.backends.preview",
 }
