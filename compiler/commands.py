@@ -29,6 +29,7 @@ from cnlmc.backends.registry import (
 )
 
 from .api import Result, compile_source, compile_stream, cyclic_gc_paused, lexicon_for
+from .batch.command import BuildCommand
 from .diagnostics import Diagnostic, has_errors, render_all, visible
 from .document import parse_document
 from .errors import UsageError
@@ -369,4 +370,10 @@ class LspCommand(Command):
 
 
 #: The CLI's own subcommands, in the order `cnlmc --help` lists them (backends' commands follow).
-LANGUAGE_COMMANDS: tuple[Command, ...] = (CompileCommand(), ExplainCommand(), TargetsCommand(), LspCommand())
+LANGUAGE_COMMANDS: tuple[Command, ...] = (
+    CompileCommand(),
+    ExplainCommand(),
+    TargetsCommand(),
+    LspCommand(),
+    BuildCommand(),  # cnlmc.batch: catalogues to targets (#20)
+)
