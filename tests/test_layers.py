@@ -26,7 +26,17 @@ BACKENDS = "cnlmc.backends"
 
 #: The front ends over both layers (the CLI, and the facade's emit) reach targets only through
 #: the registry, which imports none of them until one is asked for by name.
-FRONT_ENDS = frozenset({"cnlmc.cli", "cnlmc.commands", "cnlmc.api"})
+FRONT_ENDS = frozenset(
+    {
+        "cnlmc.cli",
+        "cnlmc.commands",
+        "cnlmc.api",
+        # batch builds (#20): the `build` command, and the one module that parses each target's
+        # options and runs a target on a material in a worker (cnlmc.batch's only registry users)
+        "cnlmc.batch.command",
+        "cnlmc.batch.work",
+    }
+)
 REGISTRY = "cnlmc.backends.registry"
 
 #: (importer, imported) -> why an edge that breaks the rules is still there. Empty: keep it so.
