@@ -196,3 +196,13 @@ class Session:
     @property
     def warnings(self) -> list[Diagnostic]:
         return [d for d in self.result.diagnostics if not d.is_error]
+
+
+def build(catalog: str | Path, out: str | Path, targets: Iterable[str], **settings: Any) -> JSONDict:
+    """Build every material of a catalogue (a .cnl file or a folder of them) to every target into
+    `out`, incrementally and in parallel; returns the manifest (also written to
+    OUT/cnlmc-build.json). Settings: size, jobs, scheduler, results, options, lexicon, seed
+    (cnlmc.batch.build_report, docs/build.md)."""
+    from .batch import build as build_catalog  # the batch front end, only when a build is asked for
+
+    return build_catalog(catalog, out, list(targets), **settings)
