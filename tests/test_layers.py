@@ -46,6 +46,10 @@ ALLOWED: dict[tuple[str, str], str] = {
         "check that the compiler accepts them as offered: a compile inside the teaching of a failed "
         "line, imported in the function, only when a line has no noun"
     ),
+    ("cnlmc.api", "cnlmc.batch"): (
+        "the facade's build() (#20) hands a catalogue to the batch front end, which compiles it through "
+        "the facade: imported in the function, only when a build is asked for"
+    ),
 }
 
 
