@@ -13,3 +13,10 @@ fi
 python3 -m venv .venv
 .venv/bin/python -m pip install -q -U pip
 .venv/bin/python -m pip install -q -e '.[all]'
+# Node tools the tests run (tools/js/package-lock.json): the Khronos glTF-Validator.
+if ! command -v npm >/dev/null 2>&1 && command -v apt-get >/dev/null 2>&1 && [ "$(id -u)" = 0 ]; then
+  apt-get install -y -qq --no-install-recommends nodejs npm >/dev/null
+fi
+if command -v npm >/dev/null 2>&1; then
+  (cd tools/js && npm ci --no-audit --no-fund --loglevel=error)
+fi
