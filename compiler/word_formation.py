@@ -7,6 +7,8 @@ cnlmc.word_formation_rules; the overlay's rules first). A word is tried, in orde
 2. a negation prefix and an adjective (unpolished, non-glossy): the adjective's declared
    `opposite`, else "without X" (no effect);
 3. a degree prefix and an adjective (semi-matte = slightly matte, high-shine = very shiny);
+   a compound's first part of [compound_first] (hand-forged = forged: a manner; close-grained =
+   fine-grained: a synonym's compound; heavy-rusted = strongly rusted: a degree);
 4. a derivational suffix (wooden -> wood, mirror-like -> mirror, gold-coloured -> gold,
    roughish -> slightly rough);
 5. a WordNet noun under a lexicon noun, or a WordNet synonym of an adjective (cnlmc.wordnet);
@@ -93,6 +95,15 @@ class Rules:
         self.min_part = min((c["min_part"] for c in compounds), default=3)
         self.heads = frozenset(h for c in compounds for h in c["heads"])
         self.qualifiers = frozenset(joined("qualifiers", "words"))
+        self.manners = frozenset(joined("compound_first", "manners"))
+        self.participles = frozenset(joined("compound_first", "participles"))
+        self.participle_endings = joined("compound_first", "participle_endings")
+        self.first_synonyms = _merged_table(layers, "compound_first", "synonyms")
+        self.first_degrees = _merged_table(layers, "compound_first", "degrees")
+        firsts = {*self.manners, *self.first_synonyms, *self.first_degrees}
+        self.first_parts = tuple(
+            sorted(firsts, key=lambda w: (-len(w), w))
+        )  # the longest first: 'heavily' before 'heavy'
         self.wordnet = _merged_wordnet([layer["wordnet"] for layer in layers])
         self.resemblance = _merged_resemblance([layer["resemblance"] for layer in layers])
         self.colour_heads = frozenset(self.resemblance["colour_heads"])
@@ -127,6 +138,16 @@ class WordFormation:
         rules = self.rules
         if first in rules.qualifiers and len(words) > 1:  # "kitchen cabinets", "exterior paint"
             return Reading((), 1, f"read '{first}' as saying where or what for: no effect on the look")
+        if len(words) > 1 and first in rules.manners:  # "hand painted", "machine cut"
+            found = self._after_manner(f"{first} {words[1]}", first, words[1], 1)
+            if found is not None:
+                return found
+        if len(words) > 1 and first in rules.first_synonyms:  # "close grained" = fine-grained
+            same = rules.first_synonyms[first]
+            compound = self._kept(self._known(f"{same}-{words[1]}"), ("ADJ",))
+            if compound:
+                note = f"read '{first} {words[1]}' as '{same}-{words[1]}' ('{first}' means '{same}' here)"
+                return Reading((Part(0, 1, 0, None, compound),), 2, note)
         if len(words) > 1:
             named = self._resembling_colour_name(first, words[1])
             if named is not None:
@@ -167,6 +188,7 @@ class WordFormation:
             self._joined,
             self._negated,
             self._prefixed,
+            self._compound_first,
             self._resembling,
             self._derived,
             self._wordnet,
@@ -272,6 +294,62 @@ class WordFormation:
                 if found:
                     return found
         return ()
+
+    def _compound_first(self, word: str) -> Reading | None:
+        """hand-forged = forged, salt-glazed = glazed (a manner), close-grained = fine-grained (a
+        synonym's compound), heavy-rusted = strongly rusted (a degree): the [compound_first] rules."""
+        split = self._first_and_rest(word)
+        if split is None:
+            return None
+        first, rest = split
+        start = len(word) - len(rest)
+        same = self.rules.first_synonyms.get(first)
+        if same is not None:
+            found = self._kept(self._known(f"{same}-{rest}"), ("ADJ",))
+            if found:
+                return _whole(found, f"read '{word}' as '{same}-{rest}' ('{first}' means '{same}' here)")
+        if first in self.rules.manners:
+            return self._after_manner(word, first, rest, 0, start, hyphen="-" in word)
+        adverb = self.rules.first_degrees.get(same or first)
+        head = self._kept(self._resolved(rest), ("ADJ",))
+        if adverb is not None and not head and "-" in word and self._is_participle(rest):  # 'fine-finished'
+            return Reading((), 1, f"read '{word}' as saying how it was made ('{first}' {rest}): no effect on the look")
+        if adverb is None or not head:
+            return None
+        parts = (Part(0, 0, 0, start, self._adverb(adverb)), Part(0, 0, start, None, head))
+        return Reading(parts, 1, f"read '{word}' as '{adverb} {head[0].key}' ('{first}' is a degree: {adverb})")
+
+    def _first_and_rest(self, word: str) -> tuple[str, str] | None:
+        """The first part of the rules and the rest: at the hyphen, or glued when the rest is a
+        describing word ('handpainted')."""
+        if "-" in word:
+            first, rest = word.split("-", 1)
+            return (first, rest) if first in self.rules.first_parts and rest else None
+        for first in self.rules.first_parts:
+            rest = word[len(first) :]
+            if word.startswith(first) and len(rest) >= self.rules.min_part:
+                if any(c.tag == "ADJ" for c in self._resolved(rest)) or self._is_participle(rest):
+                    return first, rest
+        return None
+
+    def _after_manner(
+        self, text: str, first: str, rest: str, last: int, start: int = 0, hyphen: bool = True
+    ) -> Reading | None:
+        """The describing word after a manner ('hand'), or, for a participle the lexicon lacks, no effect."""
+        head = self._kept(self._resolved(rest), ("ADJ",))
+        if head:
+            part = Part(last, last, start, None, head)
+            note = f"read '{text}' as '{head[0].key}' ('{first}' says how it was made: no effect of its own)"
+            return Reading((part,), last + 1, note)
+        if (hyphen or last == 0) and self._is_participle(rest):  # 'factory-finished': 'finished' is no ADJ
+            return Reading(
+                (), last + 1, f"read '{text}' as saying how it was made ('{first}' {rest}): no effect on the look"
+            )
+        return None
+
+    def _is_participle(self, word: str) -> bool:
+        rules = self.rules
+        return word in rules.participles or (len(word) > 4 and word.endswith(rules.participle_endings))
 
     def _adverb(self, key: str) -> tuple[Candidate, ...]:
         return (Candidate("ADV", key, "adverbs"),)
@@ -454,6 +532,14 @@ def _merged_wordnet(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:
         "noun_roots": roots,
         "adjectives": list(dict.fromkeys(a for layer in layers for a in layer["adjectives"])),
     }
+
+
+def _merged_table(layers: Sequence[dict[str, Any]], section: str, name: str) -> dict[str, str]:
+    """A word table of every layer, the most specific layer's entry winning."""
+    merged: dict[str, str] = {}
+    for layer in reversed(layers):
+        merged.update(layer[section][name])
+    return merged
 
 
 def _stems(stem: str, endings: Sequence[str]) -> list[str]:

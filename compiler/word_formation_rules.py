@@ -33,6 +33,13 @@ def empty_rules() -> dict[str, Any]:
         "punctuation": {"trailing": [], "leading": [], "quotes": [], "number_marks": []},
         "negation": {"words": [], "prefixes": [], "softeners": [], "soft_adverb": ""},
         "qualifiers": {"words": []},
+        "compound_first": {
+            "manners": [],
+            "participles": [],
+            "participle_endings": [],
+            "synonyms": {},
+            "degrees": {},
+        },
         "prefix": [],
         "suffix": [],
         "compounds": {"join": False, "split": False, "linkers": [], "min_part": 3, "head_last": False, "heads": []},
@@ -66,6 +73,7 @@ def check_rules(c: Checker, data: dict[str, Any]) -> dict[str, Any]:
     rules["prefix"] = [_prefix(c, raw, i) for i, raw in enumerate(c.array(data.get("prefix", []), ("prefix",)))]
     rules["suffix"] = [_suffix(c, raw, i) for i, raw in enumerate(c.array(data.get("suffix", []), ("suffix",)))]
     rules["compounds"] = _compounds(c, data.get("compounds", {}))
+    rules["compound_first"] = _compound_first(c, data.get("compound_first", {}))
     rules["wordnet"] = _wordnet(c, data.get("wordnet", {}))
     rules["resemblance"] = _resemblance(c, data.get("resemblance", {}))
     return rules
@@ -118,6 +126,20 @@ def _compounds(c: Checker, raw: object) -> dict[str, Any]:
     out["linkers"] = _words(c, table.get("linkers", []), ("compounds", "linkers"))
     out["heads"] = _words(c, table.get("heads", []), ("compounds", "heads"))
     out["min_part"] = int(c.number(table.get("min_part", out["min_part"]), ("compounds", "min_part"), 1, 20))
+    return out
+
+
+def _compound_first(c: Checker, raw: object) -> dict[str, Any]:
+    """[compound_first]: the first part of a compound participle (hand-forged, close-grained)."""
+    path: tuple[str | int, ...] = ("compound_first",)
+    table = c.table(raw, path)
+    out: dict[str, Any] = dict(empty_rules()["compound_first"])
+    c.known_keys(table, tuple(out), path)
+    for name in ("manners", "participles", "participle_endings"):
+        out[name] = _words(c, table.get(name, []), (*path, name))
+    for name in ("synonyms", "degrees"):
+        pairs = c.table(table.get(name, {}), (*path, name))
+        out[name] = {k.lower(): c.string(v, (*path, name, k), blank=False).lower() for k, v in pairs.items()}
     return out
 
 
@@ -192,6 +214,7 @@ def check_rule_names(c: Checker, rules: Mapping[str, Any], raw: Mapping[str, Map
         (("prefix", i, "adverb"), p["adverb"]) for i, p in enumerate(rules["prefix"])
     ]
     named += [(("suffix", i, "adverb"), s["adverb"]) for i, s in enumerate(rules["suffix"]) if s["adverb"]]
+    named += [(("compound_first", "degrees", k), a) for k, a in rules["compound_first"]["degrees"].items()]
     if rules["negation"]["soft_adverb"]:
         named.append((("negation", "soft_adverb"), rules["negation"]["soft_adverb"]))
     for path, name in named:
