@@ -57,3 +57,10 @@ def graph_outputs(name: str) -> tuple[str, ...]:
 def all_graph_params() -> frozenset[str]:
     """Every parameter name some bundled graph has (what a property's map_param may name)."""
     return frozenset(p for name in graph_names() for p in graph_params(name))
+
+
+@cache
+def graph_palette(name: str) -> Mapping[str, Any]:
+    """A stdlib graph's `[palette]` table (what a colour word does to its colours: chroma cap,
+    lightness range, parameters a dark colour sets; docs/maps.md); empty when it has none."""
+    return MappingProxyType(dict(_graph_table(name).get("palette", {})))
