@@ -22,16 +22,14 @@ from cnlmc.output import main_file_name
 from ..base import Artifact, Option, Options, Target, emit_each
 from ..capabilities import ALL_FEATURES, EmitResult
 from .gltf_document import GltfBuilder
-from .gltf_mesh import MESH_NAMES, placements, preview_geometry
-from .naming import MaterialIdents
+from .gltf_mesh import DEFAULT_SIZE, MESH_NAMES, placements, preview_geometry
+from .naming import MaterialIdents, phrase_text
 from .options import Capabilities, capabilities_for, map_options
 from .textures import bake_textures
 
 FORMATS = ("glb", "gltf")
 STEM = "materials"  # the main file's name (before its suffix) when -o names a folder
 PACKED = "metallic_roughness"
-#: our choice: 20 cm, a material sample held in the hand or set on a table in AR
-DEFAULT_SIZE = 0.2
 
 OPTIONS = (
     *(o for o in map_options() if o.name != "map_format"),
@@ -156,7 +154,7 @@ def build_scene(
             builder.add_object(first.name, geometry, [(indices[group[0]], None)], where)
             continue
         pairs = [(indices[i], builder.add_variant(materials[i].variant.name)) for i in group]  # type: ignore[union-attr]
-        builder.add_object(first.variant.group, geometry, pairs, where)
+        builder.add_object(phrase_text(first), geometry, pairs, where)  # "red or green glass"
 
 
 TARGET = GltfTarget()

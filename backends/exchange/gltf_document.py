@@ -15,7 +15,6 @@ from __future__ import annotations
 import base64
 import json
 from collections.abc import Mapping, Sequence
-from typing import Any
 from urllib.parse import quote
 
 import numpy as np
@@ -126,12 +125,12 @@ class GltfBuilder:
         return len(self.doc.materials) - 1
 
     def add_variant(self, name: str) -> int:
-        taken = set(self.variant_names)
-        candidate, n = name, 2
-        while candidate in taken:
-            candidate, n = f"{name}_{n}", n + 1
-        self.variant_names.append(candidate)
-        return len(self.variant_names) - 1
+        """The variant called `name` (variants are global in glTF: one name switches every object
+        that has an alternative of that name, e.g. 'red' on both 'red or green glass' and
+        'red or blue plastic')."""
+        if name not in self.variant_names:
+            self.variant_names.append(name)
+        return self.variant_names.index(name)
 
     # ------------------------------------------------------------------------- scene
 
@@ -180,7 +179,3 @@ class GltfBuilder:
             uri = "data:application/octet-stream;base64," + base64.b64encode(bytes(self.blob)).decode("ascii")
             self.doc.buffers = [gltf.Buffer(byteLength=len(self.blob), uri=uri)]
         return json.dumps(json.loads(self.doc.to_json()), indent=1, ensure_ascii=False) + "\n"
-
-
-def as_dict(document: Any) -> dict[str, Any]:
-    return json.loads(document.to_json())

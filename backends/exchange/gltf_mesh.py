@@ -11,11 +11,14 @@ the image, the direction in which the preview's v grows.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
 MESH_NAMES = ("sphere", "shader_ball", "teapot")
+#: our choice: 20 cm, a material sample held in the hand or set on a table in AR
+DEFAULT_SIZE = 0.2
 
 
 @dataclass(frozen=True)
@@ -79,7 +82,10 @@ def bitangent_signs(
 
 
 def placements(count: int, size: float) -> list[tuple[float, float, float]]:
-    """Where each of `count` objects stands: in a row along x, a quarter of `size` apart, centred."""
+    """Where each of `count` objects stands: a square-ish grid on the floor (rows along x, then
+    back along -z), a quarter of `size` apart, centred on the origin."""
     step = size * 1.25
-    start = -step * (count - 1) / 2.0
-    return [(start + i * step, 0.0, 0.0) for i in range(count)]
+    columns = max(1, math.ceil(math.sqrt(count)))
+    rows = math.ceil(count / columns)
+    x0, z0 = -step * (min(count, columns) - 1) / 2.0, step * (rows - 1) / 2.0
+    return [(x0 + (i % columns) * step, 0.0, z0 - (i // columns) * step) for i in range(count)]

@@ -48,10 +48,13 @@ async function main(files) {
   return reports.every((r) => r.errors === 0 && r.warnings === 0) ? 0 : 1;
 }
 
+// exitCode, not exit(): a piped stdout is written asynchronously and exit() would cut it short
 main(process.argv.slice(2)).then(
-  (code) => process.exit(code),
+  (code) => {
+    process.exitCode = code;
+  },
   (error) => {
     process.stderr.write(String(error) + "\n");
-    process.exit(2);
+    process.exitCode = 2;
   },
 );

@@ -1,0 +1,179 @@
+"""The 'usdz' target: one self-contained .usdz for iPhone/iPad AR Quick Look (docs/gltf.md).
+
+Only what AR Quick Look reads: a UsdPreviewSurface network per material (UsdPreviewSurface,
+UsdUVTexture, UsdPrimvarReader_float2: the usd target's preview network, without its MaterialX
+one), PNG textures inside the package, a preview mesh sized in metres (metersPerUnit 1, y up)
+bound to each material, a usdc root layer first, every file stored and 64-byte aligned, fixed
+zip timestamps, so two runs give the same bytes. An "or" phrase is one object whose material
+has a VariantSet `material` (the first alternative shown). `arkit_rules.check_package` runs the
+ARKit rules of OpenUSD's compliance checker on the result (the tests run it on every package).
+"""
+
+from __future__ import annotations
+
+import tempfile
+from collections.abc import Mapping, Sequence
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
+
+from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade
+
+from cnlmc.material import Document, Material
+from cnlmc.output import main_file_name
+
+from ..base import Artifact, Option, Options, Target, emit_each
+from ..capabilities import ALL_FEATURES, EmitResult
+from . import usd
+from .gltf_mesh import DEFAULT_SIZE, MESH_NAMES, PreviewGeometry, placements, preview_geometry
+from .naming import MaterialIdents, identifier, phrase_text, unique_identifiers
+from .options import Capabilities, capabilities_for, map_options
+from .textures import Textures, bake_textures
+from .usdz_package import usdz_bytes
+
+STEM = "materials"
+VARIANT_SET = "material"
+ROLES = ("base_color", "normal", "roughness", "metallic")
+OPTIONS = (
+    *(o for o in map_options() if o.name != "map_format"),
+    Option("map_format", str, "png8", choices=("png8",), doc="baked image encoding (AR Quick Look reads 8-bit PNG)"),
+    Option("mesh", str, "sphere", choices=MESH_NAMES, doc="the preview object each material is shown on"),
+    Option("size", float, DEFAULT_SIZE, range=(0.001, 100.0), doc="the preview object's size in metres"),
+    Option("root", str, "Root", doc="the name of the stage's default prim"),
+)
+PREVIEW_ONLY = "(AR Quick Look reads UsdPreviewSurface only)"
+CAPABILITIES: Capabilities = {
+    **usd.CAPABILITIES,
+    "model.glass": ("approximate", "UsdPreviewSurface: opacity 0 with ior, no refraction tint " + PREVIEW_ONLY),
+    "anisotropic": ("drop", "UsdPreviewSurface has no anisotropy: isotropic roughness sqrt(sqrt(ax*ay))"),
+    "distribution.ward": ("approximate", "no Ward lobe: isotropic GGX " + PREVIEW_ONLY),
+    "diffuse.oren_nayar": ("approximate", "UsdPreviewSurface is Lambertian " + PREVIEW_ONLY),
+    "coat": ("approximate", "UsdPreviewSurface clearcoat (fixed IOR 1.5, clearcoatRoughness)"),
+    "coat.color": ("drop", "UsdPreviewSurface has no coat colour"),
+    "model.conductor": (
+        "approximate",
+        "UsdPreviewSurface metallic workflow: Schlick with diffuseColor = f0, no edge tint",
+    ),
+}
+assert set(CAPABILITIES) == set(ALL_FEATURES)
+
+
+# ---------------------------------------------------------------------------- geometry
+
+
+def author_mesh(stage: Any, path: Any, geometry: PreviewGeometry, where: Sequence[float]) -> Any:
+    """The preview geometry as a UsdGeom.Mesh (triangles, vertex normals, st with v up the image)."""
+    mesh = UsdGeom.Mesh.Define(stage, path)
+    points = geometry.positions.astype(float) + list(where)
+    mesh.CreatePointsAttr([Gf.Vec3f(*p) for p in points.tolist()])
+    mesh.CreateFaceVertexCountsAttr([3] * len(geometry.indices))
+    mesh.CreateFaceVertexIndicesAttr(geometry.indices.reshape(-1).tolist())
+    mesh.CreateNormalsAttr([Gf.Vec3f(*n) for n in geometry.normals.tolist()])
+    mesh.SetNormalsInterpolation(UsdGeom.Tokens.vertex)
+    mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
+    mesh.CreateExtentAttr([Gf.Vec3f(*points.min(0).tolist()), Gf.Vec3f(*points.max(0).tolist())])
+    st = [Gf.Vec2f(u, 1.0 - v) for u, v in geometry.uvs.tolist()]  # glTF's v -> USD's (v = 0 at the bottom)
+    primvar = UsdGeom.PrimvarsAPI(mesh).CreatePrimvar("st", Sdf.ValueTypeNames.TexCoord2fArray, UsdGeom.Tokens.vertex)
+    primvar.Set(st)
+    return mesh
+
+
+# ---------------------------------------------------------------------------- materials
+
+
+def author_group(stage: Any, path: Any, materials: Sequence[Material], textures: Sequence[Textures]) -> Any:
+    """One Material prim: a single material's preview network, or a VariantSet of them."""
+    material_prim = UsdShade.Material.Define(stage, path)
+    material_prim.GetPrim().SetDocumentation(phrase_text(materials[0]))
+    if len(materials) == 1 and materials[0].variant is None:
+        usd.author_preview(stage, material_prim, materials[0], textures[0])
+        return material_prim
+    variants = material_prim.GetPrim().GetVariantSets().AddVariantSet(VARIANT_SET)
+    names = unique_identifiers(m.variant.name if m.variant else m.name for m in materials)
+    for name, material, tex in zip(names, materials, textures):
+        variants.AddVariant(name)
+        variants.SetVariantSelection(name)
+        with variants.GetVariantEditContext():
+            usd.author_preview(stage, material_prim, material, tex)
+    variants.SetVariantSelection(names[0])
+    return material_prim
+
+
+def groups_of(materials: Sequence[Material]) -> list[list[int]]:
+    groups: dict[str, list[int]] = {}
+    for i, material in enumerate(materials):
+        key = f"group:{material.variant.group}" if material.variant else f"material:{i}"
+        groups.setdefault(key, []).append(i)
+    return list(groups.values())
+
+
+def group_name(materials: Sequence[Material], group: Sequence[int]) -> str:
+    """A prim name that says what the object holds: 'red_or_green_glass' for an "or" phrase."""
+    first = materials[group[0]]
+    return identifier(first.phrase if first.variant else first.name)
+
+
+def build_stage(materials: Sequence[Material], textures: Sequence[Textures], options: Options) -> Any:
+    stage = Usd.Stage.CreateInMemory()
+    UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.y)
+    UsdGeom.SetStageMetersPerUnit(stage, 1.0)
+    root = UsdGeom.Xform.Define(stage, Sdf.Path.absoluteRootPath.AppendChild(identifier(options.root, "Root")))
+    stage.SetDefaultPrim(root.GetPrim())
+    looks, objects = root.GetPath().AppendChild("Looks"), root.GetPath().AppendChild("Preview")
+    UsdGeom.Scope.Define(stage, looks)
+    UsdGeom.Scope.Define(stage, objects)
+    geometry = preview_geometry(options.mesh, options.size)
+    groups = groups_of(materials)
+    names = unique_identifiers(group_name(materials, g) for g in groups)
+    for name, group, where in zip(names, groups, placements(len(groups), options.size)):
+        prim = author_group(stage, looks.AppendChild(name), [materials[i] for i in group], [textures[i] for i in group])
+        mesh = author_mesh(stage, objects.AppendChild(name), geometry, where)
+        UsdShade.MaterialBindingAPI.Apply(mesh.GetPrim()).Bind(prim)
+    return stage
+
+
+# --------------------------------------------------------------------------------- emit
+
+
+def package(stage: Any, images: Mapping[str, bytes]) -> bytes:
+    """The stage as a usdc layer, first, then the images: one usdz's bytes."""
+    with tempfile.TemporaryDirectory(prefix="cnlmc-usdz-") as tmp:
+        layer = Path(tmp) / f"{STEM}.usdc"
+        stage.GetRootLayer().Export(str(layer))
+        return usdz_bytes([(layer.name, layer.read_bytes()), *sorted(images.items())])
+
+
+class UsdzTarget(Target):
+    name = "usdz"
+    description = "USDZ for AR Quick Look: UsdPreviewSurface only, PNG inside, sized in metres, same bytes every run"
+    capabilities = CAPABILITIES
+    options = OPTIONS
+
+    def emit(self, document: Document, options: Options) -> EmitResult:
+        idents = MaterialIdents(document.materials)
+        table = capabilities_for(CAPABILITIES, options.maps)
+        main = main_file_name(options.output, f"{STEM}.usdz")
+        textures: list[Textures] = []
+        images: dict[str, bytes] = {}
+
+        def bake(material: Material) -> list[Artifact]:
+            baked, artifacts = bake_textures(material, idents[material], options, roles=ROLES, main=main)
+            inside = {t.role: replace(t, path=f"textures/{Path(t.path).name}") for t in baked.values()}
+            textures.append(inside)
+            by_name = {a.name: a for a in artifacts}
+            for texture, original in zip(inside.values(), baked.values()):
+                content = by_name[original.path].content
+                images[texture.path] = content if isinstance(content, bytes) else content.encode()
+            return []
+
+        result = emit_each(self, document, bake, lambda material: table)
+        stage = build_stage(document.materials, textures, options)
+        return EmitResult([Artifact(main, package(stage, images), "binary")], result.notes)
+
+
+TARGET = UsdzTarget()
+
+
+def emit(ir: Document | Mapping[str, Any], options: Mapping[str, object] | None = None) -> EmitResult:
+    """The target on an IR (typed or JSON form) with raw `--option` pairs."""
+    return TARGET.emit_ir(ir, options)
