@@ -34,12 +34,13 @@ class Joiner:
     """Joins the tagged words of a line by the lexicon's objects, noun classes and word formation
     rules (`rules` gives them; they are made on first use)."""
 
-    __slots__ = ("lexicon", "resembling", "rules")
+    __slots__ = ("artifacts", "lexicon", "resembling", "rules")
 
     def __init__(self, lexicon: Lexicon, rules: Callable[[], Rules]) -> None:
         self.lexicon = lexicon
         self.rules = rules
         self.resembling: Resemblance | None = None  # made on first use
+        self.artifacts: frozenset[str] | None = None  # WordNet's artifact nouns, read on first use
 
     def resemblance(self) -> Resemblance:
         """What a noun lends when it describes another material (cnlmc.resemblance)."""
@@ -56,7 +57,10 @@ class Joiner:
         for k, word in enumerate(tagged):
             before = out[-1] if out else None
             if word.unknown or (before is not None and before.unknown):  # its tags are guesses: E001 says so
-                out.append(word)
+                if before is not None and self._is_artifact_after(before, word, tagged[k + 1 :]):
+                    out[-1] = self._artifact(before, word, diags)
+                else:
+                    out.append(word)
                 continue
             nouns = of_tag(word, "NOUN")
             if before is not None and of_tag(before, "OBJECT") and not others(before) and nouns:
@@ -91,6 +95,32 @@ class Joiner:
         if len(out) > 2 and self._is_coat_finish(out):
             self._coat_after(out, diags)
         return out
+
+    def _is_artifact_after(self, before: Tagged, word: Tagged, rest: list[Tagged]) -> bool:
+        """An unknown word after a material noun, last on the line, that WordNet 3.0 lists as an
+        artifact ("pewter tankard"): the thing made of the material."""
+        if before.unknown or rest or not of_tag(before, "NOUN") or not word.text.isalpha():
+            return False
+        return self._artifact_name(word.text.lower()) is not None
+
+    def _artifact_name(self, word: str) -> str | None:
+        """The WordNet artifact `word` is, also in a plural (-s, -es, -ies)."""
+        if self.artifacts is None:
+            self.artifacts = _artifact_words()
+        for form in (word, word[:-1] if word.endswith("s") else "", word[:-2] if word.endswith("es") else ""):
+            if form and form in self.artifacts:
+                return form
+        if word.endswith("ies") and word[:-3] + "y" in self.artifacts:
+            return word[:-3] + "y"
+        return None
+
+    def _artifact(self, before: Tagged, word: Tagged, diags: list[Diagnostic]) -> Tagged:
+        """The material, with a note saying WordNet named the thing; the word's E001 goes."""
+        diags[:] = [d for d in diags if not (d.span == word.span and d.code == "E001")]
+        made = of_tag(before, "NOUN")
+        name = self._artifact_name(word.text.lower())
+        reading = f"'{made[0].key}' (the material of the {word.text}: WordNet 3.0 lists '{name}' as an artifact)"
+        return self._join(before, Tagged(word.text, word.span, made), made, reading, diags)
 
     def _is_coat_finish(self, out: list[Tagged]) -> bool:
         """'powder coat finish steel', 'clear coat finish steel': a coat, a finish head, the material last."""
@@ -271,6 +301,15 @@ def _plating_first(out: list[Tagged]) -> None:
         out[start:] = [out[-3], out[-2], *out[start:-3], out[-1]]
 
 
+def _artifact_words() -> frozenset[str]:
+    """stdlib/data/wordnet_artifacts.toml (scripts/gen_wordnet_artifacts.py): WordNet's artifact nouns."""
+    import tomllib
+    from importlib import resources
+
+    path = resources.files("cnlmc.stdlib").joinpath("data").joinpath("wordnet_artifacts.toml")
+    return frozenset(tomllib.loads(path.read_text("utf-8"))["words"])
+
+
 def may_join(tagged: list[Tagged]) -> bool:
     """Whether a line has an object, two nouns side by side, or a head word ('finish', 'look':
     a COAT or FEATURE reading) before another word or after a noun (see Joiner.joined)."""
@@ -278,6 +317,8 @@ def may_join(tagged: list[Tagged]) -> bool:
     final = tagged[-1] if tagged else None
     for word in tagged:
         noun = head = False
+        if word.unknown and noun_before and word is final:  # "pewter tankard": maybe a WordNet artifact
+            return True
         for candidate in word.candidates:
             tag = candidate.tag
             if tag == "OBJECT":
