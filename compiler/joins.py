@@ -94,6 +94,7 @@ class Joiner:
                 out.append(word)
         if len(out) > 2 and self._is_coat_finish(out):
             self._coat_after(out, diags)
+        _feature_colour_list(out, diags)
         return out
 
     def _is_artifact_after(self, before: Tagged, word: Tagged, rest: list[Tagged]) -> bool:
@@ -299,6 +300,46 @@ def _plating_first(out: list[Tagged]) -> None:
         start -= 1
     if start < len(out) - 3:
         out[start:] = [out[-3], out[-2], *out[start:-3], out[-1]]
+
+
+def _feature_colour_list(out: list[Tagged], diags: list[Diagnostic]) -> None:
+    """'flecks of red and green', 'veins of gold, grey and white': a feature's graph draws one colour
+    (its color_r/g/b), so the first colour after 'of' is the feature's and the others are left out,
+    with a note that says so (an 'and' before anything but a colour stays the clause's joint)."""
+    for k in range(2, len(out)):
+        first_end = _colour_end(out, k) if of_tag(out[k - 1], "OF") and of_tag(out[k - 2], "FEATURE") else None
+        if first_end is not None:
+            end: int | None = first_end
+            dropped_start = first_end
+            while end is not None and end + 1 < len(out) and _is_joint(out[end]):
+                after = _colour_end(out, end + 1)
+                if after is None:
+                    break
+                end = after
+            if end is not None and end > dropped_start:
+                left = out[dropped_start:end]
+                words = ", ".join(t.text for t in left if not _is_joint(t))
+                first = " ".join(t.text for t in out[k:dropped_start])
+                said = "".join(t.text if of_tag(t, "COMMA") else f" {t.text}" for t in left)
+                note = (
+                    f"read '{out[k - 2].text} of {first}{said}' as "
+                    f"'{out[k - 2].text} of {first}': the {out[k - 2].text} are drawn in one colour; "
+                    f"'{words}' left out"
+                )
+                diags.append(Diagnostic(left[0].span.to(left[-1].span), Severity.NOTE, NOTE_CODE, note))
+                del out[dropped_start:end]
+            return
+
+
+def _is_joint(word: Tagged) -> bool:
+    return bool(of_tag(word, "AND") or of_tag(word, "COMMA"))
+
+
+def _colour_end(out: list[Tagged], k: int) -> int | None:
+    """The index after a colour (SHADE* COLOR) starting at k, or None."""
+    while k < len(out) and of_tag(out[k], "SHADE") and not of_tag(out[k], "COLOR"):
+        k += 1
+    return k + 1 if k < len(out) and of_tag(out[k], "COLOR") else None
 
 
 def _artifact_words() -> frozenset[str]:
