@@ -13,6 +13,7 @@ from .ir import JSONDict, document_ir, material_ir
 from .params import Params
 from .passes.base import apply_noun
 from .passes.coats import apply_coat_clause
+from .passes.conformal_coat import lay_conformal_coats
 from .passes.model import select_model
 from .passes.ranges import check_finite, check_ranges
 from .passes.refine import apply_inline_refinements, apply_refinement_line
@@ -21,7 +22,7 @@ from .passes.words import apply_groups
 from .state import Context, MaterialState
 
 BUILD_PASSES = (apply_noun, apply_groups, apply_coat_clause, apply_inline_refinements)
-FINAL_PASSES = (select_model, check_ranges, check_finite)
+FINAL_PASSES = (lay_conformal_coats, select_model, check_ranges, check_finite)
 
 
 def attach_refinements(doc: ast.Document) -> list[tuple[ast.Material, list[ast.Refinement]]]:

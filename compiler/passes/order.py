@@ -69,7 +69,14 @@ def gloss_on_coat(groups: Sequence[ast.Group], lexicon: Lexicon, coated: bool) -
 def _lays_coat(group: ast.Group, lexicon: Lexicon) -> bool:
     """A coat word ('varnished'), or a treatment that lays a layer on top ('powder-coated')."""
     adjective = _adjective(group, lexicon)
-    return adjective is not None and (stage_of(adjective) == "coat" or bool(adjective.get("coat")))
+    if adjective is None or (adjective.get("coat") and _conformal(adjective.get("coat"), lexicon)):
+        return False  # a conformal film (an anodic oxide) has the base's surface: gloss stays on the base
+    return stage_of(adjective) == "coat" or bool(adjective.get("coat"))
+
+
+def _conformal(coat: str, lexicon: Lexicon) -> bool:
+    entry = lexicon.entry("coats", coat)
+    return entry is not None and bool(entry.get("follows_base"))
 
 
 def _stage_is(group: ast.Group, lexicon: Lexicon, stage: str) -> bool:

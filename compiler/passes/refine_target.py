@@ -20,7 +20,12 @@ SURFACE_PARAMS = ("roughness",)  # what one sees on the outermost layer: the coa
 def surface(state: MaterialState, param: str) -> tuple[dict[str, Any], str, tuple[float, float] | None]:
     """(where the value lives, its provenance key, its range) for a parameter a refinement moves:
     gloss and roughness act on the coat when there is one (the surface one sees)."""
-    if param in SURFACE_PARAMS and state.coat is not None and param in state.coat:
+    if (
+        param in SURFACE_PARAMS
+        and state.coat is not None
+        and param in state.coat
+        and not state.coat.get("follows_base")
+    ):
         return state.coat, f"coat.{param}", COAT_RANGES.get(param)
     return state.params, param, PARAM_RANGES.get(param)
 

@@ -45,7 +45,7 @@ def group_weight(group: ast.Group, ctx: Context) -> float:
 def apply_groups(state: MaterialState, ctx: Context) -> MaterialState:
     groups = colour_compounds(state.selection.groups, ctx.lexicon, state.diagnostics)
     ordered = canonical_groups(groups, ctx.lexicon)
-    on_coat = gloss_on_coat(ordered, ctx.lexicon, state.coat is not None)
+    on_coat = gloss_on_coat(ordered, ctx.lexicon, state.coat is not None and not state.coat.get("follows_base"))
     for group in ordered:
         if group not in on_coat:
             apply_group(state, ctx, group, target="base")

@@ -13,7 +13,7 @@ from cnlmc.passes.variants import expand
 from cnlmc.state import Context, MaterialState
 
 FIXTURES = tomllib.loads((Path(__file__).parent / "fixtures" / "passes.toml").read_text())
-ORDER = ["base", "words", "coats", "refine", "model", "ranges"]
+ORDER = ["base", "words", "coats", "refine", "films", "model", "ranges"]  # films: passes/conformal_coat.py
 
 
 def run_until(pass_name: str, phrase: str, lexicon) -> MaterialState:

@@ -206,7 +206,10 @@ class Data:
         metal = self.metals[key]
         row = next(r for r in [metal["primary"], *metal["alternatives"]] if r["dataset"] == dataset)
         f82 = row.get("F82_srgb_linear") or [fresnel(n, k, MU_82) for n, k in zip(row["eta_rgb_fit"], row["k_rgb_fit"])]
-        return {"eta": row["eta_rgb_fit"], "k": row["k_rgb_fit"], "f0": row["F0_srgb_linear"], "f82": f82}
+        f0 = row["F0_srgb_linear"]
+        if not all(0.0 <= v <= 1.0 for v in f0):  # Au's red (1.0376): the exact Fresnel of the fitted eta/k
+            f0 = [round(fresnel(n, k, 1.0), 4) for n, k in zip(row["eta_rgb_fit"], row["k_rgb_fit"])]
+        return {"eta": row["eta_rgb_fit"], "k": row["k_rgb_fit"], "f0": f0, "f82": f82}
 
 
 @pytest.fixture(scope="module")

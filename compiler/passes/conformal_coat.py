@@ -1,0 +1,32 @@
+"""Thin films over a metal (issue #15 item 2, docs/bsdf.md "Finishes and layers").
+
+- A colour word on a bare metal names a surface film the words do not name (black oxide, gun
+  bluing, a tinted lacquer): no metal is black or blue by its optics. The film is the coat
+  `settings.metal_colour_coat` (stdlib: 'tinted film'), the colour stays the base's tint under it,
+  so 'matte black metal' keeps a white highlight over a black body instead of reflecting nothing.
+- A conformal coat (`follows_base`, an anodic oxide or that film) has the base's surface: it takes
+  the base's roughness.
+"""
+
+from __future__ import annotations
+
+from ..state import Context, MaterialState
+from .words import apply_coat_entry
+
+COLOUR_RULES = ("colours", "shades")  # provenance rules of colour words (passes/colours.py)
+
+
+def lay_conformal_coats(state: MaterialState, ctx: Context) -> MaterialState:
+    film = ctx.settings.get("metal_colour_coat")
+    if film and state.kind == "conductor" and state.coat is None and _coloured_by_words(state):
+        words = tuple(w for step in state.provenance.get("base_color", []) for w in step.words)
+        apply_coat_entry(state, ctx, film, f"settings.metal_colour_coat: a colour on a metal is a film ({film})", words)
+    if state.coat is not None and state.coat.get("follows_base") and "roughness" in state.params:
+        state.coat["roughness"] = state.params["roughness"]
+        state.note("coat.roughness", state.params["roughness"], "a conformal coat takes the base's roughness")
+    return state
+
+
+def _coloured_by_words(state: MaterialState) -> bool:
+    steps = state.provenance.get("base_color", [])
+    return any(step.rule.split(":", 1)[0].strip() in COLOUR_RULES for step in steps)
