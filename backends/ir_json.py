@@ -14,7 +14,8 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import Any, BinaryIO
 
 from cnlmc.ir import EncodedMaterial, json_text
-from cnlmc.material import Document, Material
+from cnlmc.ir_check import check_material
+from cnlmc.material import Document
 
 from .base import DOCUMENT_FIELDS, Artifact, Options, Target, as_document
 from .capabilities import ALL_FEATURES, EmitResult
@@ -43,14 +44,14 @@ class IrTarget(Target):
 
 
 def checked(ir: Mapping[str, Any]) -> Mapping[str, Any]:
-    """The IR, refused (ValueError) where it is not a valid document: typed as every target types
-    it, one material at a time, so that only one material's records exist at once."""
+    """The IR, refused (ValueError) where it is not a valid document: checked as every target types
+    it (cnlmc.ir_check: what Material.from_ir accepts, without building the records)."""
     Document.from_ir({**ir, "materials": []})
     materials = ir["materials"]
     if not isinstance(materials, list):
         raise ValueError(f"materials: expected a list, got {type(materials).__name__}")
     for i, material in enumerate(materials):
-        Material.from_ir(material, f"materials[{i}]")
+        check_material(material, f"materials[{i}]")
     return ir
 
 
@@ -93,8 +94,7 @@ class IrWriter:
             text = material.text
         else:
             if self.check:
-                assert isinstance(material, Mapping)
-                Material.from_ir(material, f"materials[{self.count}]")
+                check_material(material, f"materials[{self.count}]")
             text = json_text(material)
         self.out.write(((",\n    " if self.count else "\n    ") + text).encode("utf-8"))
         self.count += 1

@@ -119,6 +119,7 @@ class Run:
     output_bytes: int
     warnings: int
     exit_code: int
+    errors: list[str]  # the first error lines on stderr (a run that exited non-zero measured the error path)
 
 
 def write_source(path: Path, lines: int, next_phrase: Callable[[], str], seed: int = 13) -> None:
@@ -152,7 +153,9 @@ def compile_once(kind: str, workers: int, source: Path, output: Path) -> Run:
         _pid, status, usage = os.wait4(process.pid, 0)
         wall = time.perf_counter() - start
         errors.seek(0)
-        warnings = errors.read().count(b": warning[")
+        stderr = errors.read()
+        warnings = stderr.count(b": warning[")
+        error_lines = [line for line in stderr.decode("utf-8", "replace").splitlines() if "error" in line][:5]
     lines = sum(1 for _ in source.open("rb"))
     return Run(
         kind,
@@ -165,6 +168,7 @@ def compile_once(kind: str, workers: int, source: Path, output: Path) -> Run:
         output.stat().st_size if output.exists() else 0,
         warnings,
         os.waitstatus_to_exitcode(status),
+        error_lines,
     )
 
 
@@ -175,6 +179,14 @@ def report(run: Run) -> None:
         f"out {run.output_bytes / 1e6:6.1f} MB  warnings {run.warnings}  exit {run.exit_code}",
         flush=True,
     )
+    if run.exit_code != 0:
+        print(
+            f"!!!!!!!! {run.kind} x{run.workers} {run.lines} lines EXITED {run.exit_code}: this run timed the error path, "
+            "NOT a compile; its numbers mean nothing. First errors:",
+            flush=True,
+        )
+        for line in run.errors or ["(no error line on stderr)"]:
+            print(f"!!!!!!!!   {line}", flush=True)
 
 
 def summarise(runs: list[Run]) -> None:
@@ -206,7 +218,7 @@ def phase_times(text: str) -> tuple[dict[str, float], int, list[dict[str, object
     from cnlmc.api import cyclic_gc_paused, lexicon_for
     from cnlmc.document import iter_items
     from cnlmc.ir import json_text, material_ir
-    from cnlmc.material import Material
+    from cnlmc.ir_check import check_material
     from cnlmc.params import Params
     from cnlmc.state import Context
 
@@ -251,7 +263,7 @@ def phase_times(text: str) -> tuple[dict[str, float], int, list[dict[str, object
                     start = clock()
                     ir = material_ir(state, convention, lexicon.caches.rounded_optics)
                     middle = clock()
-                    Material.from_ir(ir)
+                    check_material(ir)
                     end = clock()
                     json_text(ir)
                     spent["IR build"] += middle - start
@@ -365,7 +377,10 @@ def main() -> int:
                     report(run)
     summarise(runs)
     print(f"load average at the end: {os.getloadavg()[0]:.2f}")
-    return 0 if all(run.exit_code == 0 for run in runs) else 1
+    failed = [run for run in runs if run.exit_code != 0]
+    for run in failed:
+        print(f"!!!!!!!! FAILED: {run.kind} x{run.workers} {run.lines} lines exited {run.exit_code} (see above)")
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":

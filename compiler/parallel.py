@@ -34,8 +34,8 @@ from .diagnostics import Diagnostic
 from .document import parse_line
 from .interrupts import SIGNALS
 from .ir import EncodedMaterial, JSONDict, json_text, material_ir
+from .ir_check import check_material
 from .lines import LINE_END
-from .material import Material
 from .params import Params
 from .state import Context
 from .tagger import Tagger
@@ -233,7 +233,7 @@ def _encoded(material: JSONDict) -> tuple[dict[str, Any] | None, str, str] | JSO
     its label and phrase, and the text of the rest (see _Replay.text). One that fails the check is
     sent as it is (the parent's writer checks it again, and fails naming its place in the document)."""
     try:
-        Material.from_ir(material, "material")
+        check_material(material, "material")
     except ValueError:
         return material
     front = json_text({key: material[key] for key in FRONT_KEYS if key in material})
