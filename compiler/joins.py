@@ -53,6 +53,8 @@ class Joiner:
     def joined(self, tagged: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
         """Objects and class nouns joined to their material: "oak planks" = oak, "roof tiles" =
         tiles, "planks" = wood, "walnut wood" = walnut; each with a note."""
+        if any(t.unknown for t in tagged):
+            tagged = self._made_of(tagged, diags)
         out: list[Tagged] = []
         for k, word in enumerate(tagged):
             before = out[-1] if out else None
@@ -95,7 +97,49 @@ class Joiner:
         if len(out) > 2 and self._is_coat_finish(out):
             self._coat_after(out, diags)
         _feature_colour_list(out, diags)
+        if len(out) > 1 and of_tag(out[-1], "ADJ") and self.rules().postfix:
+            self._postfix(out, diags)
         return out
+
+    def _made_of(self, tagged: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
+        """'Dielen aus Eiche' (an object, a `made_of` word of the rules, a material noun) = 'Eichendielen':
+        the material; the word's E001 goes."""
+        made_of = self.rules().made_of
+        for k in range(1, len(tagged) - 1):
+            thing, word, material = tagged[k - 1 : k + 2]
+            if word.unknown and word.text.lower() in made_of and of_tag(thing, "OBJECT") and of_tag(material, "NOUN"):
+                if material.unknown:
+                    continue
+                diags[:] = [d for d in diags if not (d.span == word.span and d.code == "E001")]
+                made = of_tag(material, "NOUN")
+                span = thing.span.to(material.span)
+                text = f"{thing.text} {word.text} {material.text}"
+                note = f"read '{text}' as '{made[0].key}' (the material the {thing.text} are made of)"
+                diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, note))
+                return [*tagged[: k - 1], Tagged(text, span, made), *tagged[k + 2 :]]
+        return tagged
+
+    def _postfix(self, out: list[Tagged], diags: list[Diagnostic]) -> None:
+        """'Eiche geölt', 'Stahl gebürstet' (rules `postfix`, German): describing words after the noun
+        at the end of a line with no comma read as after a comma (the grammar's postfix form)."""
+        if any(of_tag(t, "COMMA") or of_tag(t, "WITH") for t in out):
+            return
+        start = len(out)
+        while start > 0 and any(c.tag in ("ADJ", "ADV", "AND") for c in out[start - 1].candidates):
+            start -= 1
+        while start < len(out) and of_tag(out[start], "AND"):
+            start += 1
+        if start == 0 or start == len(out) or not of_tag(out[start - 1], "NOUN") or out[start - 1].unknown:
+            return
+        first = out[start]
+        at = first.span.start - 1  # the space before the word: a span of its own (the parser keys words by start)
+        comma = Tagged(",", Span(at, at + 1, first.span.line, first.span.col - 1), _COMMA)
+        said = " ".join(t.text for t in out[start:])
+        note = (
+            f"read '{out[start - 1].text} {said}' as '{out[start - 1].text}, {said}' (describing words after the noun)"
+        )
+        diags.append(Diagnostic(out[start - 1].span.to(out[-1].span), Severity.NOTE, NOTE_CODE, note))
+        out.insert(start, comma)
 
     def _is_artifact_after(self, before: Tagged, word: Tagged, rest: list[Tagged]) -> bool:
         """An unknown word after a material noun, last on the line, that WordNet 3.0 lists as an
@@ -284,6 +328,8 @@ class Joiner:
         )
 
 
+_COMMA = (Candidate("COMMA", ",", "keyword"),)
+
 #: The readings of describing words a plating ('nickel plated', from 'nickel finish') may move before.
 DESCRIBING = frozenset(("ADV", "ADJ", "COLOR", "SHADE"))
 
@@ -354,11 +400,13 @@ def _artifact_words() -> frozenset[str]:
 def may_join(tagged: list[Tagged]) -> bool:
     """Whether a line has an object, two nouns side by side, or a head word ('finish', 'look':
     a COAT or FEATURE reading) before another word or after a noun (see Joiner.joined)."""
-    noun_before = False
+    noun_before = noun_seen = False
     final = tagged[-1] if tagged else None
     for word in tagged:
         noun = head = False
         if word.unknown and noun_before and word is final:  # "pewter tankard": maybe a WordNet artifact
+            return True
+        if noun_seen and word is final and any(c.tag == "ADJ" for c in word.candidates):  # "Eiche (leicht) geölt"
             return True
         for candidate in word.candidates:
             tag = candidate.tag
@@ -371,6 +419,7 @@ def may_join(tagged: list[Tagged]) -> bool:
         if (noun and noun_before) or (head and (word is not final or noun_before)):
             return True
         noun_before = noun
+        noun_seen = noun_seen or noun
     return False
 
 

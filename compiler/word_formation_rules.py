@@ -42,7 +42,16 @@ def empty_rules() -> dict[str, Any]:
         },
         "prefix": [],
         "suffix": [],
-        "compounds": {"join": False, "split": False, "linkers": [], "min_part": 3, "head_last": False, "heads": []},
+        "compounds": {
+            "join": False,
+            "split": False,
+            "linkers": [],
+            "min_part": 3,
+            "head_last": False,
+            "heads": [],
+            "postfix": False,
+            "made_of": [],
+        },
         "wordnet": {"file": "", "noun_roots": {}, "adjectives": []},
         "resemblance": {
             "forms": [],
@@ -118,13 +127,14 @@ def _compounds(c: Checker, raw: object) -> dict[str, Any]:
     table = c.table(raw, ("compounds",))
     out: dict[str, Any] = dict(empty_rules()["compounds"])
     c.known_keys(table, tuple(out), ("compounds",))
-    for flag in ("join", "split", "head_last"):
+    for flag in ("join", "split", "head_last", "postfix"):
         value = table.get(flag, out[flag])
         if not isinstance(value, bool):
             c.fail(("compounds", flag), f"expected true or false, got {value!r:.40}")
         out[flag] = value
     out["linkers"] = _words(c, table.get("linkers", []), ("compounds", "linkers"))
     out["heads"] = _words(c, table.get("heads", []), ("compounds", "heads"))
+    out["made_of"] = _words(c, table.get("made_of", []), ("compounds", "made_of"))
     out["min_part"] = int(c.number(table.get("min_part", out["min_part"]), ("compounds", "min_part"), 1, 20))
     return out
 

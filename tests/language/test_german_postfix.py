@@ -1,0 +1,73 @@
+"""German word order (issue #14, category 4): a participle after the noun without a comma ('Eiche
+geölt' = 'Eiche, geölt') and 'X aus Y' ('Dielen aus Eiche' = Eichendielen = oak), from the German
+overlay's word formation rules ([compounds] postfix, made_of). Each reading is a note. No phrase here
+is in tests/language/everyday.toml.
+"""
+
+import pytest
+
+from cnlmc.api import compile_source, lexicon_for
+from cnlmc.diagnostics import Severity
+
+
+@pytest.fixture(scope="module")
+def de():
+    return lexicon_for(["de"])
+
+
+def look(lexicon, text):
+    result = compile_source(text, "de.cnl", lexicon)
+    assert result.ok, (text, [d.message for d in result.diagnostics])
+    assert not [d for d in result.diagnostics if d.severity is Severity.WARNING], text
+    (material,) = result.ir["materials"]
+    return result, {k: material[k] for k in ("model", "params", "maps")}
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning"),
+    [
+        ("Nussbaum geölt", "Nussbaum, geölt"),
+        ("Kiefer gewachst", "Kiefer, gewachst"),
+        ("Aluminium gebürstet", "Aluminium, gebürstet"),
+        ("Messing poliert", "Messing, poliert"),
+        ("Edelstahl matt", "Edelstahl, matt"),
+        ("Marmor geschliffen", "Marmor, geschliffen"),
+        ("Kupfer leicht gebürstet", "Kupfer, leicht gebürstet"),
+        ("Buche geölt und gewachst", "Buche, geölt und gewachst"),
+        ("Granit poliert", "Granit, poliert"),
+        ("Stahl sandgestrahlt", "Stahl, sandgestrahlt"),
+    ],
+)
+def test_a_participle_after_the_noun_needs_no_comma(de, text, meaning):
+    result, got = look(de, text)
+    _plain, expected = look(de, meaning)
+    assert got == expected, (text, meaning)
+    assert any("after the noun" in d.message for d in result.diagnostics if d.severity is Severity.NOTE)
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning"),
+    [
+        ("Bretter aus Kiefer", "Kiefer"),
+        ("Platten aus Granit", "Granit"),
+        ("Rohre aus Messing", "Messing"),
+        ("Fliesen aus Schiefer", "Schiefer"),
+        ("Dielen aus Nussbaum", "Nussbaum"),
+    ],
+)
+def test_object_aus_material_is_the_material(de, text, meaning):
+    result, got = look(de, text)
+    _plain, expected = look(de, meaning)
+    assert got == expected, (text, meaning)
+    assert any("made of" in d.message for d in result.diagnostics if d.severity is Severity.NOTE)
+
+
+def test_english_keeps_its_comma_rule():
+    """English has no postfix rule: 'oak oiled' says where describing words go (E002), as before."""
+    result = compile_source("oak oiled", "en.cnl", lexicon_for([]))
+    assert not result.ok
+    assert any(d.code == "E002" for d in result.diagnostics)
+
+
+def test_aus_before_a_word_that_is_no_material_stays_an_error(de):
+    assert not compile_source("Dielen aus xqzt", "de.cnl", de).ok
