@@ -13,12 +13,12 @@
 // uniforms: (values also in the .glsl.json sidecar)
 //   vec3 cnlm_base_color = vec3(1.0, 1.0, 1.0)
 //   float cnlm_alpha = 0.001
-//   vec3 cnlm_f0 = vec3(1.0376, 0.7283, 0.3646)
+//   vec3 cnlm_f0 = vec3(0.9992, 0.7285, 0.3645)
 //   vec3 cnlm_f82 = vec3(0.991, 0.8572, 0.6464)
 // samplers: none
 uniform vec3 cnlm_base_color = vec3(1.0, 1.0, 1.0);
 uniform float cnlm_alpha = 0.001;
-uniform vec3 cnlm_f0 = vec3(1.0376, 0.7283, 0.3646);
+uniform vec3 cnlm_f0 = vec3(0.9992, 0.7285, 0.3645);
 uniform vec3 cnlm_f82 = vec3(0.991, 0.8572, 0.6464);
 // cnlm common: constants and helpers of the local shading frame (n = +z, t = +x).
 const float CNLM_PI = 3.14159265358979;

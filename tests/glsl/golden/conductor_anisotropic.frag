@@ -4,7 +4,7 @@
 // for a plain 8-bit default framebuffer.
 // cnlmc GLSL backend -- material "lightly_brushed_blue_anodized_aluminum"
 // phrase: lightly brushed, blue anodized aluminum
-// model: conductor + ward anisotropic + fresnel exact + maps: normal
+// model: conductor + ward anisotropic + fresnel exact + coat + maps: normal
 // options: fresnel=exact, multiscatter=off, profile=330, form=both, specialize=on
 //
 // entry points:
@@ -20,6 +20,8 @@
 //   float cnlm_anisotropy_rotation = 0.0
 //   vec3 cnlm_eta = vec3(1.5022, 0.9853, 0.606)
 //   vec3 cnlm_k = vec3(7.6534, 6.5496, 5.3505)
+//   float cnlm_coat_ior = 1.7705
+//   float cnlm_coat_alpha = 0.09
 // samplers: (bind baked maps; see the sidecar)
 //   sampler2D cnlm_map_normal  role=normal colour_space=linear: tangent-space normal, OpenGL convention (+Y up the image), stored as n * 0.5 + 0.5
 uniform vec3 cnlm_base_color = vec3(0.000911, 0.056128, 0.73791);
@@ -27,6 +29,8 @@ uniform vec2 cnlm_alpha = vec2(0.1125, 0.072);
 uniform float cnlm_anisotropy_rotation = 0.0;
 uniform vec3 cnlm_eta = vec3(1.5022, 0.9853, 0.606);
 uniform vec3 cnlm_k = vec3(7.6534, 6.5496, 5.3505);
+uniform float cnlm_coat_ior = 1.7705;
+uniform float cnlm_coat_alpha = 0.09;
 uniform sampler2D cnlm_map_normal;
 // cnlm common: constants and helpers of the local shading frame (n = +z, t = +x).
 const float CNLM_PI = 3.14159265358979;
@@ -108,6 +112,48 @@ float cnlm_ward_dv(vec3 wo, vec3 wi, vec2 alpha) {
     return exp(min(-e - log_norm, 80.0));
 }
 
+// Exact unpolarised Fresnel reflectance of a dielectric, relative IOR eta (Born & Wolf).
+// Total internal reflection gives 1; eta = 1 gives exactly 0.
+float cnlm_fresnel_dielectric(float cos_theta, float eta) {
+    if (eta == 1.0) return 0.0;
+    float c = clamp(abs(cos_theta), 0.0, 1.0);
+    float ct2 = ((eta * eta - 1.0) + c * c) / (eta * eta);
+    if (ct2 < 0.0) return 1.0;
+    float ct = sqrt(ct2);
+    float rs_den = c + eta * ct;
+    float rp_den = eta * c + ct;
+    float rs = rs_den != 0.0 ? (c - eta * ct) / rs_den : 0.0;
+    float rp = rp_den != 0.0 ? (eta * c - ct) / rp_den : 0.0;
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+// Weidlich & Wilkie 2007 coat helpers: refraction into the coat at the macro normal
+// (same azimuth, sin' = sin / eta) and the Fresnel transmittance at entry and exit.
+vec3 cnlm_refract_into_coat(vec3 w, float eta) {
+    vec2 xy = w.xy / eta;
+    float z = w.z > 0.0 ? sqrt(max(1.0 - dot(xy, xy), 0.0)) : 0.0;
+    return vec3(xy, z);
+}
+
+float cnlm_coat_transmission(vec3 wo, vec3 wi, float eta) {
+    if (!cnlm_both_upper(wo, wi)) return 0.0;
+    return (1.0 - cnlm_fresnel_dielectric(wo.z, eta)) * (1.0 - cnlm_fresnel_dielectric(wi.z, eta));
+}
+
+// Isotropic GGX D * V (Walter 2007; Heitz 2014), height-correlated Smith.
+// D = 1/(pi a^2 q^2), q = (hx^2 + hy^2)/a^2 + hz^2: no cancellation down to a = 1e-3.
+// V = 1/(2(zi |wo|_a + zo |wi|_a)), |w|_a = sqrt(a^2 (wx^2 + wy^2) + wz^2): finite at grazing.
+float cnlm_ggx_dv(vec3 wo, vec3 wi, vec3 h, float alpha) {
+    if (!cnlm_both_upper(wo, wi) || h.z < 0.0) return 0.0;
+    float a = max(alpha, CNLM_ALPHA_MIRROR);
+    float a2 = a * a;
+    float q = dot(h.xy, h.xy) / a2 + h.z * h.z;
+    float d = 1.0 / (CNLM_PI * a2 * q * q);
+    float len_o = sqrt(a2 * dot(wo.xy, wo.xy) + wo.z * wo.z);
+    float len_i = sqrt(a2 * dot(wi.xy, wi.xy) + wi.z * wi.z);
+    return d / (2.0 * (wi.z * len_o + wo.z * len_i));
+}
+
 // Tangent-space normal map (OpenGL convention, +Y up the image; stored as n * 0.5 + 0.5).
 // Bitangent = cross(n, t).
 vec3 cnlm_perturb_normal(vec3 n, vec3 t, vec2 uv) {
@@ -118,7 +164,7 @@ vec3 cnlm_perturb_normal(vec3 n, vec3 t, vec2 uv) {
     return len2 > 0.0 ? p * inversesqrt(len2) : n;
 }
 
-// ---- material lightly_brushed_blue_anodized_aluminum: conductor + ward anisotropic + fresnel exact + maps: normal ----
+// ---- material lightly_brushed_blue_anodized_aluminum: conductor + ward anisotropic + fresnel exact + coat + maps: normal ----
 
 vec3 cnlm_surface_albedo(vec2 uv) {
     return cnlm_base_color;
@@ -152,8 +198,16 @@ void cnlm_base(vec3 wo, vec3 wi, vec3 albedo, vec2 alpha, float outside,
 vec3 cnlm_bsdf_local(vec3 wo, vec3 wi, vec2 uv) {
     vec3 albedo = cnlm_surface_albedo(uv);
     vec3 spec, diff;
-    cnlm_base(wo, wi, albedo, cnlm_surface_alpha(uv), 1.0, spec, diff);
-    vec3 f = spec + diff;
+    // Weidlich-Wilkie coat over the base.
+    float eta = cnlm_coat_ior;
+    vec3 wo_in = cnlm_refract_into_coat(wo, eta);
+    vec3 wi_in = cnlm_refract_into_coat(wi, eta);
+    cnlm_base(wo_in, wi_in, albedo, cnlm_surface_alpha(uv), eta, spec, diff);
+    vec3 under = spec / (eta * eta) + diff;
+    vec3 h = cnlm_half_vector(wo, wi);
+    float coat_dv = cnlm_ggx_dv(wo, wi, h, cnlm_coat_alpha);
+    float coat_spec = coat_dv == 0.0 ? 0.0 : coat_dv * cnlm_fresnel_dielectric(cnlm_half_angle_cos(wo, wi, h), eta);
+    vec3 f = vec3(coat_spec) + cnlm_coat_transmission(wo, wi, eta) * under;
     return f;
 }
 
