@@ -12,9 +12,9 @@ from typing import Any
 
 from cnlmc import __version__
 
-from ..api import lexicon_for
 from ..errors import UsageError
 from ..inputs import DEFAULT_MAX_BYTES
+from ..lexicon import Lexicon, cached_lexicon
 from ..lexicon_schema import LexiconError
 from ..output import write_atomic
 from .catalog import Catalog, Entry, read_catalog
@@ -68,10 +68,12 @@ def build_report(
     seed: int = 0,
     max_bytes: int = DEFAULT_MAX_BYTES,
     progress: Progress | None = None,
+    pool: bool | None = None,
 ) -> BuildReport:
     """The build, with what happened to each task. `jobs`: worker processes (None: every CPU;
     1: this process); `scheduler`: a Dask scheduler's address (then `results` is 'return' or
-    'shared', docs/build.md); `options`: 'KEY=VALUE' (every target that declares KEY) or
+    'shared', docs/build.md); `pool`: True runs even one worker in a pool process, False runs
+    every task in this process (None: a pool when more than one worker); `options`: 'KEY=VALUE' (every target that declares KEY) or
     'TARGET.KEY=VALUE' strings, or such a mapping; `lexicon`: overlay names or folders."""
     if results not in RESULT_MODES:
         raise UsageError(f"results must be one of {', '.join(RESULT_MODES)}, got '{results}'")
@@ -95,7 +97,7 @@ def build_report(
     total = len(tasks)
     finished = total - len(to_run)
     by_folder = {task.folder: task for task in to_run}
-    for outcome in _run(to_run, root, jobs, scheduler, results):
+    for outcome in _run(to_run, root, jobs, scheduler, results, pool):
         place = _place(by_folder[outcome.folder])
         outcome = _deliver(outcome, root, by_folder[outcome.folder])
         if outcome.ok:
@@ -107,6 +109,10 @@ def build_report(
         finished += 1
         if progress is not None:
             progress(finished, total, time.monotonic() - started)
+    for task in to_run:  # a runner that lost a task (it never should) fails it rather than hide it
+        if _place(task) not in report.statuses:
+            errors[_place(task)] = "error: the task did not finish; run the build again"
+            report.statuses[_place(task)] = FAILED
     report.failures = _failures(compiled, errors)
     report.manifest = manifest(compiled, per_target, hashes, errors)
     write_atomic(root / MANIFEST_NAME, _manifest_bytes(report.manifest))
@@ -117,9 +123,15 @@ def _place(task: Task) -> tuple[str, str]:
     return task.folder.rpartition("/")[0], task.target
 
 
-def _lexicon(specs: Iterable[str | Path]) -> Any:
+def _lexicon(specs: Iterable[str | Path]) -> Lexicon:
+    """The lexicon as its files are now. cnlmc.api.lexicon_for keeps the lexicons it made in memory
+    by folder name, so a pipeline that edits an overlay and builds again in the same process would
+    get the old one; this goes to the disk cache, keyed by the files' names, sizes and times."""
+    names = tuple(str(spec) for spec in specs)
+    folders = tuple(name for name in names if Path(name).is_dir())
+    overlays = tuple(name for name in names if not Path(name).is_dir())
     try:
-        return lexicon_for(tuple(specs))
+        return cached_lexicon.__wrapped__(folders, overlays)
     except LexiconError as exc:
         raise UsageError(f"lexicon: {exc}") from None
 
@@ -131,13 +143,15 @@ def _tasks(entries: list[Entry], per_target: dict[str, dict[str, Any]]) -> Itera
             yield Task(key, f"{entry.folder}/{target}", target, options, entry.document)
 
 
-def _run(tasks: list[Task], root: Path, jobs: int | None, scheduler: str | None, results: str) -> Iterator[Outcome]:
+def _run(
+    tasks: list[Task], root: Path, jobs: int | None, scheduler: str | None, results: str, pool: bool | None
+) -> Iterator[Outcome]:
     if not tasks:
         return iter(())
     if scheduler is not None:
         return run_dask(tasks, root, scheduler, results)
     workers = min(jobs or available_cpus(), len(tasks))
-    if workers <= 1:
+    if pool is False or (workers <= 1 and not pool):
         return run_serial(tasks, root)
     return run_pool(tasks, root, workers)
 

@@ -103,8 +103,10 @@ def first_line(material: dict[str, Any]) -> int:
 def relative_spans(material: dict[str, Any], first: int) -> dict[str, Any]:
     """A copy of the material whose spans count lines from `first` (its line 1)."""
     moved = copy.deepcopy(material)
-    for span in _spans(moved):
-        span[0] -= first - 1
+    for steps in (moved.get("provenance") or {}).values():
+        for step in steps:  # new lists: one span list may be shared by several steps
+            if "spans" in step:
+                step["spans"] = [[span[0] - (first - 1), *span[1:]] for span in step["spans"]]
     return moved
 
 

@@ -20,7 +20,6 @@ from .tasks import Outcome, Task
 from .work import run_task
 
 WINDOW_PER_WORKER = 4  # tasks handed to a worker ahead of the one it runs (our choice: keeps each busy)
-CONNECT_TIMEOUT_S = 10  # how long to wait for a Dask scheduler to answer (our choice)
 RESULT_MODES = ("return", "shared")
 
 
@@ -77,9 +76,9 @@ def _windowed(
         done, _ = wait(list(pending), return_when=FIRST_COMPLETED)
         for future in done:
             yield outcome_of(pending.pop(future), future)
-            task = next(queue, None)
-            if task is not None:
-                pending[submit(task)] = task
+            following = next(queue, None)
+            if following is not None:
+                pending[submit(following)] = following
 
 
 def run_dask(tasks: Iterable[Task], root: Path, scheduler: str, results: str) -> Iterator[Outcome]:
@@ -91,7 +90,9 @@ def run_dask(tasks: Iterable[Task], root: Path, scheduler: str, results: str) ->
     except ImportError as exc:
         raise UsageError(f"--scheduler needs Dask: {exc}; install it with: pip install 'cnlmc[build]'") from None
     try:
-        client = Client(scheduler, timeout=CONNECT_TIMEOUT_S, set_as_default=False)
+        # how long to wait for the scheduler: Dask's own setting, distributed.comm.timeouts.connect
+        # (30 s; DASK_DISTRIBUTED__COMM__TIMEOUTS__CONNECT=5s in the environment changes it)
+        client = Client(scheduler, set_as_default=False)  # type: ignore[no-untyped-call]
     except (OSError, TimeoutError, ValueError) as exc:
         raise UsageError(f"cannot reach the Dask scheduler at '{scheduler}': {exc}") from None
     where = str(root.resolve()) if results == "shared" else None
@@ -111,7 +112,7 @@ def _dask_outcomes(client: Any, as_completed: Any, tasks: Iterable[Task], where:
         pending[future.key] = task
         return future
 
-    running = as_completed([submit(t) for t, _ in zip(queue, range(window))])
+    running = as_completed([submit(t) for _, t in zip(range(window), queue)], loop=client.loop)
     for future in running:
         task = pending.pop(future.key)
         try:
