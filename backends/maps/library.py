@@ -43,3 +43,10 @@ def load_graph(name: str) -> Graph:
         raise MapError(f"unknown map graph '{name}'{did_you_mean(name, names)}; known graphs: {', '.join(names)}")
     entry = graph_dir() / f"{name}.toml"
     return parse_graph(entry.read_text(encoding="utf-8"), f"stdlib/graphs/{name}.toml", name)
+
+
+def metres_per_unit(name: str) -> float | None:
+    """Metres one texture unit of a stdlib graph's maps spans (its `[scale]` table; None when it
+    states none): what an exporter's texture transform divides UVs in metres by."""
+    scale = load_graph(name).scale
+    return None if scale is None else scale.metres_per_unit

@@ -7,9 +7,12 @@ from numbers import Real
 
 from .errors import GraphSchemaError, did_you_mean
 from .registry import NODE_TYPES, REQUIRED, Input
-from .spec import OUTPUT_ROLES, Graph, GraphInput, GraphParam, NodeSpec, Ref
+from .spec import OUTPUT_ROLES, Graph, GraphInput, GraphParam, GraphScale, NodeSpec, Ref
 
-TOP_KEYS = ("name", "doc", "params", "inputs", "nodes", "outputs", "presets")
+TOP_KEYS = ("name", "doc", "params", "inputs", "nodes", "outputs", "presets", "scale", "palette")
+SCALE_KEYS = ("metres_per_unit", "feature", "what", "measure", "axis", "source")
+SCALE_AXES = ("u", "v", "any")
+PALETTE_KEYS = ("max_chroma", "lightness", "dark_below", "dark_params", "source")
 REF_KEYS = ("node", "param", "input", "mul", "add")
 IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]{0,63}")  # names that end up in node names and file names
 
@@ -205,6 +208,54 @@ def check_presets(c: Checker, raw, params: dict[str, GraphParam]) -> dict:
     return presets
 
 
+def check_scale(c: Checker, raw, outputs: dict[str, str]) -> GraphScale:
+    """The `[scale]` table: every key present, sizes positive metres, `measure` one of the outputs."""
+    table = c.table(raw, "scale")
+    c.known_keys(table, SCALE_KEYS, "scale")
+    for required in SCALE_KEYS:
+        if required not in table:
+            c.fail(f"scale.{required}", "missing")
+    unit, feature = (c.number(table[k], f"scale.{k}") for k in ("metres_per_unit", "feature"))
+    for key, value in (("metres_per_unit", unit), ("feature", feature)):
+        if not value > 0:
+            c.fail(f"scale.{key}", f"expected a size in metres above 0, got {value}")
+    measure = c.string(table["measure"], "scale.measure")
+    if measure not in outputs:
+        c.fail("scale.measure", f"'{measure}' is not an output{did_you_mean(measure, outputs)}")
+    axis = c.string(table["axis"], "scale.axis")
+    if axis not in SCALE_AXES:
+        c.fail("scale.axis", f"expected one of {', '.join(SCALE_AXES)}, got '{axis}'")
+    what, source = (c.string(table[k], f"scale.{k}") for k in ("what", "source"))
+    return GraphScale(unit, feature, what, measure, axis, source)
+
+
+def check_palette(c: Checker, raw, params: dict[str, GraphParam]) -> dict:
+    """The `[palette]` table (what a colour word does to the graph's colours; read by the compiler's
+    compiler/passes/textured_colour.py): OKLab chroma cap and lightness range, and the graph
+    parameters a dark named colour sets (light veins in a black marble)."""
+    table = c.table(raw, "palette")
+    c.known_keys(table, PALETTE_KEYS, "palette")
+    if "max_chroma" in table and not 0 <= c.number(table["max_chroma"], "palette.max_chroma") <= 0.4:
+        c.fail("palette.max_chroma", "expected an OKLab chroma in [0, 0.4]")
+    if "lightness" in table:
+        bounds = table["lightness"]
+        if not isinstance(bounds, list) or len(bounds) != 2:
+            c.fail("palette.lightness", "expected [min, max] OKLab lightness")
+        low, high = (c.number(b, "palette.lightness") for b in bounds)
+        if not 0 <= low <= high <= 1:
+            c.fail("palette.lightness", f"expected 0 <= min <= max <= 1, got [{low}, {high}]")
+    if "dark_below" in table:
+        c.number(table["dark_below"], "palette.dark_below")
+    settings = c.table(table.get("dark_params", {}), "palette.dark_params")
+    c.known_keys(settings, params, "palette.dark_params")
+    for name, value in settings.items():
+        v = c.number(value, f"palette.dark_params.{name}")
+        if not params[name].low <= v <= params[name].high:
+            c.fail(f"palette.dark_params.{name}", f"{v} is outside the range [{params[name].low}, {params[name].high}]")
+    c.string(table.get("source", ""), "palette.source")
+    return dict(table)
+
+
 def check_graph(raw: dict, file: str, stem: str) -> Graph:
     c = Checker(file)
     c.known_keys(raw, TOP_KEYS, "")
@@ -224,4 +275,7 @@ def check_graph(raw: dict, file: str, stem: str) -> Graph:
     check_acyclic(c, nodes)
     outputs = check_outputs(c, raw["outputs"], nodes)
     presets = check_presets(c, raw.get("presets", {}), params)
-    return Graph(name, c.string(raw["doc"], "doc"), file, params, inputs, nodes, outputs, presets)
+    scale = check_scale(c, raw["scale"], outputs) if "scale" in raw else None
+    check_palette(c, raw.get("palette", {}), params)
+    graph = Graph(name, c.string(raw["doc"], "doc"), file, params, inputs, nodes, outputs, presets, scale)
+    return graph

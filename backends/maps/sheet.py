@@ -28,6 +28,14 @@ def sheet_rows(size: int, seed: int = 0) -> list[tuple[str, dict[str, np.ndarray
     return [(name, evaluate(load_graph(name), size, seed)) for name in graph_names()]
 
 
+def size_note(name: str) -> str:
+    """The graph's real size for the first tile's title: the tile's width and its feature size."""
+    scale = load_graph(name).scale
+    if scale is None:
+        return ""
+    return f"\n{scale.metres_per_unit * 1000:.0f} mm tile, {scale.feature * 1000:g} mm"
+
+
 def render_contact_sheet(path, size: int = 256, seed: int = 0) -> Path:
     """Write a PNG with one row per stdlib graph and one labelled tile per output."""
     import matplotlib
@@ -45,7 +53,7 @@ def render_contact_sheet(path, size: int = 256, seed: int = 0) -> Path:
             if column < len(tiles):
                 role, array = tiles[column]
                 axis.imshow(display_pixels(role, array), interpolation="nearest")
-                axis.set_title(f"{name}: {role}", fontsize=9)
+                axis.set_title(f"{name}: {role}{size_note(name) if column == 0 else ''}", fontsize=9)
     figure.tight_layout()
     return save_atomically(figure, Path(path))
 

@@ -39,6 +39,20 @@ class NodeSpec:
     args: dict[str, Any]
 
 
+@dataclass(frozen=True)
+class GraphScale:
+    """The graph's real size (the `[scale]` table): one texture unit spans `metres_per_unit` metres,
+    and its features repeat every `feature` metres (what `what` names; measured on `measure`, along
+    `axis`: "u", "v" or "any"), as `source` says."""
+
+    metres_per_unit: float
+    feature: float
+    what: str
+    measure: str
+    axis: str
+    source: str
+
+
 @dataclass
 class Graph:
     name: str
@@ -49,3 +63,4 @@ class Graph:
     nodes: dict[str, NodeSpec] = field(default_factory=dict)
     outputs: dict[str, str] = field(default_factory=dict)
     presets: dict[str, dict[str, float]] = field(default_factory=dict)
+    scale: GraphScale | None = None

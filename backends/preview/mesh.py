@@ -18,6 +18,9 @@ class Mesh:
     tangents: np.ndarray  # (N, 3) float32, unit, orthogonal to the normal
     uvs: np.ndarray  # (N, 2) float32
     indices: np.ndarray  # (M, 3) uint32, counter-clockwise seen from outside
+    #: metres one UV unit spans on the object at its stated size (generated meshes: meshes.UV_UNIT_M,
+    #: the stdlib maps' texture unit, so a map shows at its real size); None: a file's UVs, unit unknown
+    metres_per_uv: float | None = None
 
     def interleaved(self) -> np.ndarray:
         """position, normal, tangent, uv per vertex (11 floats): the preview's vertex layout."""
@@ -107,7 +110,7 @@ def uv_tangents(positions, uvs, indices, normals) -> np.ndarray:
     return orthonormal_tangents(acc, normals.astype(np.float64))
 
 
-def make_mesh(positions, indices, normals=None, uvs=None, tangents=None) -> Mesh:
+def make_mesh(positions, indices, normals=None, uvs=None, tangents=None, metres_per_uv: float | None = None) -> Mesh:
     positions = np.asarray(positions, np.float64)
     indices = np.asarray(indices, np.int64).reshape(-1, 3)
     normals = vertex_normals(positions, indices) if normals is None else normalized(np.asarray(normals, np.float64))
@@ -120,7 +123,12 @@ def make_mesh(positions, indices, normals=None, uvs=None, tangents=None) -> Mesh
         else orthonormal_tangents(np.asarray(tangents, np.float64), normals)
     )
     return Mesh(
-        positions.astype("f4"), normals.astype("f4"), tangents.astype("f4"), uvs.astype("f4"), indices.astype("u4")
+        positions.astype("f4"),
+        normals.astype("f4"),
+        tangents.astype("f4"),
+        uvs.astype("f4"),
+        indices.astype("u4"),
+        metres_per_uv,
     )
 
 

@@ -18,6 +18,17 @@ __all__ = ["MESHES", "Mesh", "MeshError", "fit", "make_mesh", "mesh_by_name", "s
 
 DATA = Path(__file__).parent / "data"
 
+#: Metres one UV unit of a generated mesh spans: the stdlib maps' texture unit (stdlib/graphs/*.toml,
+#: `scale.metres_per_unit`), so a map shows at its real size. Our choice: pi x 5 cm, so the 10 cm
+#: sphere's equator is exactly two units and every periodic map closes around it without a seam.
+UV_UNIT_M = math.pi * 0.05
+
+#: The stated real sizes of the generated meshes (what their UVs measure; `fit()` scales the
+#: positions for the frame and keeps the UVs). Our choice: hand-held sample objects.
+SPHERE_DIAMETER_M = 0.10  # a 10 cm ball (issue #15)
+SHADER_BALL_UNIT_M = 0.06  # profile units -> metres: a 9.6 cm ball on a pedestal, 11.4 cm tall
+TEAPOT_UNIT_M = 0.04  # one unit of Newell's data: 26 cm spout to handle, 12.6 cm tall (a ~1 l teapot)
+
 
 def grid_indices(rows: int, cols: int, offset: int = 0) -> np.ndarray:
     """Two triangles per cell of a (rows+1) x (cols+1) vertex grid (row-major)."""
@@ -30,16 +41,18 @@ def grid_indices(rows: int, cols: int, offset: int = 0) -> np.ndarray:
 # ------------------------------------------------------------------------ generators
 
 
-def lathe(profile: list[tuple[float, float]], segments: int = 96) -> Mesh:
+def lathe(profile: list[tuple[float, float]], segments: int = 96, unit_m: float = 0.05) -> Mesh:
     """A surface of revolution about +y of one smooth polyline (r, y), from bottom to top.
 
-    Normals come from the profile's tangent, so each call is one smoothly shaded part."""
+    Normals come from the profile's tangent, so each call is one smoothly shaded part. UVs are in
+    UV_UNIT_M at the stated size (`unit_m` metres per profile unit): u is the arc length around the
+    widest circle of the part, v the arc length up the profile; u starts (the seam) at the back (-z)."""
     prof = np.asarray(profile, np.float64)
     d = np.gradient(prof, axis=0)
     n2 = normalized(np.stack([d[:, 1], -d[:, 0]], 1))  # outward normal of the profile (r, y)
     on_axis = prof[:, 0] < 1e-9  # poles: the normal is the axis itself
     n2[on_axis] = np.stack([np.zeros(on_axis.sum()), np.sign(n2[on_axis, 1])], 1)
-    phi = np.linspace(0, 2 * np.pi, segments + 1)
+    phi = np.linspace(np.pi, 3 * np.pi, segments + 1)  # from the back (-z) round to the back
     s, c = np.sin(phi)[None, :], np.cos(phi)[None, :]
     r, y = prof[:, :1], prof[:, 1:]
     shape = (len(prof), segments + 1)
@@ -47,13 +60,13 @@ def lathe(profile: list[tuple[float, float]], segments: int = 96) -> Mesh:
     nor = np.stack([n2[:, :1] * s, np.broadcast_to(n2[:, 1:], shape), n2[:, :1] * c], -1)
     tan = np.stack([c, np.zeros_like(c), -s], -1) * np.ones((len(prof), 1, 1))
     arc = np.concatenate([[0], np.cumsum(np.linalg.norm(np.diff(prof, axis=0), axis=1))])
-    v = np.broadcast_to((arc / max(arc[-1], 1e-9))[:, None], pos.shape[:2])
-    u = np.broadcast_to((phi / (2 * np.pi))[None, :], pos.shape[:2])
+    metres = unit_m / UV_UNIT_M
+    v = np.broadcast_to((arc * metres)[:, None], pos.shape[:2])
+    u = np.broadcast_to(((phi - np.pi) * float(prof[:, 0].max()) * metres)[None, :], pos.shape[:2])
     idx = grid_indices(len(prof) - 1, segments)
     idx = idx[:, [0, 2, 1]]  # counter-clockwise from outside
-    return make_mesh(
-        pos.reshape(-1, 3), idx, nor.reshape(-1, 3), np.stack([u, v], -1).reshape(-1, 2), tan.reshape(-1, 3)
-    )
+    uvs = np.stack([u, v], -1).reshape(-1, 2)
+    return make_mesh(pos.reshape(-1, 3), idx, nor.reshape(-1, 3), uvs, tan.reshape(-1, 3), UV_UNIT_M)
 
 
 def merge(meshes: list[Mesh]) -> Mesh:
@@ -65,6 +78,7 @@ def merge(meshes: list[Mesh]) -> Mesh:
         cat("tangents"),
         cat("uvs"),
         np.concatenate([m.indices + o for m, o in zip(meshes, offsets)]).astype("u4"),
+        meshes[0].metres_per_uv if len({m.metres_per_uv for m in meshes}) == 1 else None,
     )
 
 
@@ -74,8 +88,9 @@ def arc(cx: float, cy: float, radius: float, a0: float, a1: float, steps: int) -
 
 
 def sphere(rings: int = 64, segments: int = 96) -> Mesh:
-    """Unit sphere centred at the origin (poles on y)."""
-    return lathe(arc(0.0, 0.0, 1.0, -math.pi / 2, math.pi / 2, rings + 1), segments)
+    """Unit sphere centred at the origin (poles on y); its UVs are those of the 10 cm ball
+    (SPHERE_DIAMETER_M): u in [0, 2] round the equator, v in [0, 1] from pole to pole."""
+    return lathe(arc(0.0, 0.0, 1.0, -math.pi / 2, math.pi / 2, rings + 1), segments, SPHERE_DIAMETER_M / 2)
 
 
 #: the largest distance (pixels) between the tessellated silhouette and the true sphere's.
@@ -120,7 +135,7 @@ def shader_ball(segments: int = 96) -> Mesh:
         arc(0.0, ball_c, ball_r, 0.12, math.pi / 2, 28),  # upper ball
     ]
     # One walk up the outside: every part has the outside on its right (outward normals).
-    return merge([lathe(p, segments) for p in parts])
+    return merge([lathe(p, segments, SHADER_BALL_UNIT_M) for p in parts])
 
 
 def _read_teapot() -> tuple[np.ndarray, np.ndarray]:
@@ -160,8 +175,7 @@ def teapot(steps: int = 12) -> Mesh:
     pos = np.einsum("ui,vj,pijc->puvc", b, b, ctrl)  # (P, u, v, 3)
     P = len(ctrl)
     idx = np.concatenate([grid_indices(steps, steps, p * (steps + 1) ** 2) for p in range(P)])
-    uv = np.stack(np.meshgrid(t, t, indexing="ij"), -1)
-    uvs = np.broadcast_to(uv, (P,) + uv.shape).reshape(-1, 2)
+    uvs = patch_uvs(pos, t).reshape(-1, 2)
     flat = pos.reshape(-1, 3)
     flat = flat[:, [0, 2, 1]] * [1.0, 1.0, -1.0]  # z-up -> y-up (right-handed)
     welded, widx, first = _weld(flat, idx)
@@ -170,7 +184,17 @@ def teapot(steps: int = 12) -> Mesh:
     if signed_volume(welded, widx) < 0:  # make the winding outward
         widx = widx[:, [0, 2, 1]]
     normals = vertex_normals(welded, widx)
-    return make_mesh(welded, widx, normals, uvs[first])
+    return make_mesh(welded, widx, normals, uvs[first], metres_per_uv=UV_UNIT_M)
+
+
+def patch_uvs(pos: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """(P, n, n, 2) UVs of tessellated patches in UV_UNIT_M at TEAPOT_UNIT_M: each patch's (s, t)
+    scaled by its mean arc length along s and along t, so a map keeps its real size on every patch."""
+    along_s = np.linalg.norm(np.diff(pos, axis=1), axis=-1).sum(axis=1).mean(axis=1)  # (P,)
+    along_t = np.linalg.norm(np.diff(pos, axis=2), axis=-1).sum(axis=2).mean(axis=1)
+    metres = TEAPOT_UNIT_M / UV_UNIT_M
+    s, tt = np.meshgrid(t, t, indexing="ij")
+    return np.stack([s[None] * along_s[:, None, None], tt[None] * along_t[:, None, None]], -1) * metres
 
 
 def signed_volume(positions: np.ndarray, indices: np.ndarray) -> float:
@@ -186,7 +210,7 @@ def fit(mesh: Mesh, stand: bool = True) -> Mesh:
     pos = (mesh.positions - centre) / radius
     if stand:
         pos[:, 1] -= pos[:, 1].min()
-    return Mesh(pos.astype("f4"), mesh.normals, mesh.tangents, mesh.uvs, mesh.indices)
+    return Mesh(pos.astype("f4"), mesh.normals, mesh.tangents, mesh.uvs, mesh.indices, mesh.metres_per_uv)
 
 
 #: name -> generator (no arguments). `load_mesh` also accepts a path to an OBJ/PLY file.

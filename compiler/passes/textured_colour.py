@@ -1,20 +1,34 @@
-"""A colour word on a material whose colour is a procedural pattern keeps the pattern (issue #14:
-"black granite keeps its speckles"; #15: "colour words wipe textures").
+"""A colour word on a material whose colour is a procedural pattern tints the pattern's palette and
+keeps its variation (issue #14: "black granite keeps its speckles"; #15 item 3: "colour words wipe
+textures", "red brick is fire-engine red over mortar").
 
 The stdlib graphs multiply their palette by the material's base colour (granite, marble, wood,
-brick, leather: `blend … mode = "multiply"` with the base_color input), so a named colour at
-OKLab lightness 0 ('black') or 1 ('white') would flatten every crystal, vein or grain line into one
-flat value. The named colour keeps its hue and chroma; its OKLab lightness is held inside the
-lexicon's band `textured_colour_min_lightness` .. `textured_colour_max_lightness` (settings.toml), so black granite is a near-black stone
-whose light crystals still show, white marble a white whose veins still show. `cnlmc explain` shows the step.
+brick, leather: `blend … mode = "multiply"` with the base_color input) and keep their other
+features in their own colours (brick's mortar). So the named colour is made one the pattern can
+carry, in OKLab:
+
+* its lightness is held inside the lexicon's band `textured_colour_min_lightness` ..
+  `textured_colour_max_lightness` (settings.toml), narrowed by the graph's `palette.lightness`, so
+  black granite is a near-black stone whose crystals still show, white marble a white whose veins
+  still show;
+* its chroma is capped at the graph's `palette.max_chroma` (stdlib/graphs/NAME.toml), so 'red
+  brick' is a brick red, not a paint red, and its hue is kept;
+* a colour darker than `palette.dark_below` sets the graph parameters `palette.dark_params` that a
+  clause has not set: the white calcite veins of a black marble, the pale flecks of a black granite.
+
+A colour word that names a coating (a paint, a lacquer) colours the coat, not the pattern: this pass
+sees only the base colour. `cnlmc explain` shows each step (provenance), not a diagnostic.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import math
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 from .. import ast
 from ..colour import linear_to_oklab, oklab_to_linear_in_gamut
+from ..graphs import graph_palette
 from ..state import Context, MaterialState
 
 __all__ = ["keep_pattern_visible"]
@@ -25,25 +39,68 @@ DEFAULT_BAND = (0.0, 1.0)  # a lexicon without the setting leaves colours as nam
 def keep_pattern_visible(
     state: MaterialState, ctx: Context, rgb: list[float], words: Sequence[ast.Word], noun_text: str
 ) -> list[float]:
-    """`rgb` with its OKLab lightness inside the band when the base colour feeds a pattern map."""
-    if "base_color" not in state.maps:
+    """`rgb` as the pattern's palette can carry it when the base colour feeds a pattern map."""
+    ref = state.maps.get("base_color")
+    if ref is None:
         return rgb
-    low = ctx.settings.get("textured_colour_min_lightness", DEFAULT_BAND[0])
-    high = ctx.settings.get("textured_colour_max_lightness", DEFAULT_BAND[1])
+    graph = str(ref.get("graph", ""))
+    palette = graph_palette(graph)
+    low, high = _lightness_band(ctx.settings, palette)
     lab = linear_to_oklab(rgb)
     held = min(max(lab[0], low), high)
-    if abs(held - lab[0]) < 1e-6:
+    chroma = math.hypot(lab[1], lab[2])
+    cap = float(palette.get("max_chroma", math.inf))
+    factor = cap / chroma if chroma > cap else 1.0
+    _set_dark_params(state, graph, palette, lab[0], words, noun_text)
+    if abs(held - lab[0]) < 1e-6 and factor == 1.0:
         return rgb
-    rgb = oklab_to_linear_in_gamut([held, lab[1], lab[2]])
-    state.note("base_color", rgb, _rule(words, lab[0], held, noun_text), tuple(words))
+    rgb = oklab_to_linear_in_gamut([held, lab[1] * factor, lab[2] * factor])
+    state.note("base_color", rgb, _rule(words, lab[0], held, chroma, factor, noun_text), tuple(words))
     return rgb
 
 
-def _rule(words: Sequence[ast.Word], was: float, held: float, noun_text: str) -> str:
+def _lightness_band(settings: Mapping[str, Any], palette: Mapping[str, Any]) -> tuple[float, float]:
+    """The lexicon's band narrowed by the graph's own lightness range."""
+    low = float(settings.get("textured_colour_min_lightness", DEFAULT_BAND[0]))
+    high = float(settings.get("textured_colour_max_lightness", DEFAULT_BAND[1]))
+    graph_low, graph_high = palette.get("lightness", DEFAULT_BAND)
+    return max(low, float(graph_low)), min(high, float(graph_high))
+
+
+def _set_dark_params(
+    state: MaterialState,
+    graph: str,
+    palette: Mapping[str, Any],
+    lightness: float,
+    words: Sequence[ast.Word],
+    noun_text: str,
+) -> None:
+    """A named colour darker than `palette.dark_below`: the graph's `dark_params` on every map of
+    that graph (a value a clause set stays)."""
+    settings = palette.get("dark_params") or {}
+    if not settings or lightness >= float(palette.get("dark_below", 0.0)):
+        return
+    for role, ref in state.maps.items():
+        if ref.get("graph") != graph:
+            continue
+        params = ref.setdefault("params", {})
+        for name, value in settings.items():
+            params.setdefault(name, float(value))
+        text = " ".join(w.text for w in words)
+        rule = f"stdlib/graphs/{graph}.toml palette.dark_params: '{text}' on {noun_text} keeps its light features"
+        state.note(f"maps.{role}", dict(params), rule, tuple(words))
+
+
+def _rule(words: Sequence[ast.Word], was: float, held: float, chroma: float, factor: float, noun_text: str) -> str:
     """The provenance rule `cnlmc explain` shows (a quiet adjustment, not a diagnostic)."""
     text = " ".join(w.text for w in words)
-    direction = "raised" if held > was else "lowered"
+    parts = []
+    if abs(held - was) >= 1e-6:
+        direction = "raised" if held > was else "lowered"
+        parts.append(f"OKLab lightness {direction} to {held:.2f} (from {was:.2f})")
+    if factor < 1.0:
+        parts.append(f"chroma {chroma * factor:.2f} (from {chroma:.2f})")
     return (
-        f"settings.textured_colour_*_lightness: '{text}' on {noun_text}'s pattern, OKLab lightness "
-        f"{direction} to {held:.2f} (from {was:.2f}) so the pattern stays visible"
+        f"settings.textured_colour_*_lightness and the pattern's palette: '{text}' on {noun_text}'s pattern, "
+        f"{' and '.join(parts)} so the pattern stays visible"
     )

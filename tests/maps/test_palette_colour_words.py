@@ -1,0 +1,83 @@
+"""A colour word tints a pattern's palette and keeps its variation (issue #15 item 3): measured on
+the baked colour maps, in OKLab."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from cnlmc import api, colour
+from cnlmc.backends.maps.bake import bake
+from cnlmc.material import params_to_ir
+
+SIZE = 128
+
+
+def _material(phrase: str):
+    result = api.compile_source(phrase, "<phrase>")
+    assert not [d for d in result.diagnostics if d.is_error], result.diagnostics
+    return result.document.materials[0]
+
+
+def _baked(phrase: str, outputs: tuple[str, ...] = ("color",)) -> dict[str, np.ndarray]:
+    """The material's base_color graph baked with its own parameters, for each output asked."""
+    material = _material(phrase)
+    ref = material.maps["base_color"].to_ir()
+    refs = {out: {**ref, "output": out} for out in outputs}
+    return bake(refs, params_to_ir(material.params), SIZE, 0)
+
+
+def _oklab(rgb: np.ndarray) -> np.ndarray:
+    flat = np.clip(rgb.reshape(-1, 3), 0, None)
+    return np.array([colour.linear_to_oklab([float(c) for c in p]) for p in flat[:: max(1, len(flat) // 4096)]])
+
+
+def _lightness_spread(phrase: str) -> tuple[float, float, float]:
+    lab = _oklab(_baked(phrase)["color"])
+    return tuple(float(x) for x in np.percentile(lab[:, 0], [2, 50, 99]))
+
+
+@pytest.mark.parametrize("phrase", ["black granite", "polished black granite"])
+def test_black_granite_is_black_with_visible_crystals(phrase):
+    low, median, high = _lightness_spread(phrase)
+    assert median < 0.4  # a black stone
+    assert high - median > 0.15  # pale crystals show (a flat black ball has no spread)
+
+
+def test_black_marble_is_black_with_light_veins():
+    low, median, high = _lightness_spread("black marble")
+    assert median < 0.4
+    assert high - median > 0.3  # white calcite veins: a visible contrast
+
+
+def test_white_marble_is_white_with_visible_veins():
+    low, median, high = _lightness_spread("white marble")
+    assert median > 0.85
+    assert median - low > 0.06
+
+
+def test_a_clause_colour_wins_over_the_dark_palette():
+    """'black marble with red veins': the clause's colour, not the palette's white."""
+    veins = _oklab(_baked("black marble with red veins")["color"])
+    reddest = veins[np.argmax(veins[:, 1])]
+    assert reddest[1] > 0.05  # a: toward red
+
+
+def test_red_brick_is_a_brick_red_and_its_mortar_stays_mortar():
+    baked = _baked("red brick", ("color", "mask"))
+    color, mask = baked["color"].reshape(-1, 3), baked["mask"].reshape(-1)
+    mortar, bricks = _oklab(color[mask < 0.05]), _oklab(color[mask > 0.95])
+    assert len(mortar) > 50 and len(bricks) > 50
+    mortar_chroma = np.hypot(mortar[:, 1], mortar[:, 2])
+    assert np.median(mortar_chroma) < 0.03 and 0.5 < np.median(mortar[:, 0]) < 0.85  # grey mortar
+    chroma = np.hypot(bricks[:, 1], bricks[:, 2])
+    hue = np.degrees(np.arctan2(bricks[:, 2], bricks[:, 1]))
+    assert 0.05 < np.median(chroma) <= 0.13  # a brick red, not a paint red (xkcd red: chroma 0.25)
+    assert 0 < np.median(hue) < 60  # red
+    assert np.percentile(bricks[:, 0], 95) - np.percentile(bricks[:, 0], 5) > 0.05  # bricks still vary
+
+
+def test_grey_slate_is_grey():
+    material = _material("grey slate")
+    lab = colour.linear_to_oklab(list(material.params.base_color))
+    assert np.hypot(lab[1], lab[2]) < 0.03 and 0.3 < lab[0] < 0.8
