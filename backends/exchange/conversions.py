@@ -37,9 +37,39 @@ def measured(values: RGB | None, name: str) -> RGB:
     return values
 
 
+def conductor_weight(params: Params) -> float:
+    """The metal lobe's weight (OpenPBR base_weight, Standard Surface base): the IR tint's brightest
+    channel. The IR tints the whole Fresnel curve (grazing included), a Schlick/F82 metal always
+    rises to 1 at grazing: the weight keeps a dark tint's rim dark (issue #15: 'blue anodized
+    aluminum' had a white rim), the colour is the tint over that weight."""
+    return min(max(max(float(t) for t in params.base_color), 0.0), 1.0)
+
+
+def _tinted(values: RGB, params: Params) -> list[float]:
+    weight = conductor_weight(params)
+    scale = 1.0 / weight if weight > 0.0 else 0.0
+    return [f * (t * scale if weight > 0.0 else 1.0) for f, t in zip(values, params.base_color)]
+
+
 def conductor_f0(params: Params) -> list[float]:
     """The measured normal-incidence reflectance times the IR tint, clipped to [0, 1]."""
     return clip01(f * t for f, t in zip(measured(params.f0, "f0"), params.base_color))
+
+
+def weighted_f0(params: Params) -> list[float]:
+    """The F0 a weighted metal lobe takes: the tinted F0 over `conductor_weight`, in [0, 1]."""
+    return clip01(_tinted(measured(params.f0, "f0"), params))
+
+
+def f82_floor(f0: float) -> float:
+    """The least F82 for which the F82-tint curve stays >= 0 at every angle: F(mu) = S(mu) -
+    (S(1/7) - F82) g(mu) with g(mu) = mu (1-mu)^6 / (mu82 (1-mu82)^6); F82 >= S(1/7) - S(mu)/g(mu)."""
+    worst = 0.0
+    for i in range(1, 200):
+        mu = i / 200.0
+        g = mu * (1.0 - mu) ** 6 / (MU_82 * (1.0 - MU_82) ** 6)
+        worst = max(worst, schlick(f0, MU_82) - schlick(f0, mu) / g)
+    return worst
 
 
 def f82_tint(params: Params) -> list[float]:
@@ -47,18 +77,20 @@ def f82_tint(params: Params) -> list[float]:
 
     OpenPBR (and MaterialX's generalized_schlick_bsdf color82) subtracts a term so that the
     reflectance at mu = 1/7 equals specular_color * Schlick(F0, 1/7); the IR stores the
-    measured F82, so the tint is f82 / schlick(f0, 1/7) (both scaled by the IR tint).
+    measured F82, so the tint is f82 / schlick(f0, 1/7) (both scaled by the IR tint). A tint
+    below the one that keeps the curve >= 0 (a dark-tinted F0 near 0) is raised to it, else the
+    curve goes negative at mid angles and MaterialX's renderer draws a bright rim (issue #15).
     """
-    f0 = conductor_f0(params)
-    f82 = [f * t for f, t in zip(measured(params.f82, "f82"), params.base_color)]
-    return clip01(b / schlick(a, MU_82) for a, b in zip(f0, f82))
+    f0 = weighted_f0(params)
+    f82 = _tinted(measured(params.f82, "f82"), params)
+    return clip01(max(b, f82_floor(a)) / schlick(a, MU_82) for a, b in zip(f0, f82))
 
 
 def gulbrandsen_edge(params: Params) -> list[float]:
     """Standard Surface's specular_color for a metal: the edge tint g for which Gulbrandsen's
     artistic IOR mapping (MaterialX `artistic_ior`) gives back the measured eta at F0 = r."""
     edge = []
-    for r, n in zip(conductor_f0(params), measured(params.eta, "eta")):
+    for r, n in zip(weighted_f0(params), measured(params.eta, "eta")):
         r = min(r, 0.999)
         n_min = (1.0 - r) / (1.0 + r)
         n_max = (1.0 + math.sqrt(r)) / (1.0 - math.sqrt(r))

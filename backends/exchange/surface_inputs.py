@@ -15,12 +15,13 @@ from .conversions import (
     alpha_pair,
     alpha_to_roughness,
     clip01,
-    conductor_f0,
+    conductor_weight,
     f82_tint,
     gulbrandsen_edge,
     openpbr_roughness,
     rounded,
     standard_roughness,
+    weighted_f0,
 )
 
 # IR concept -> input name, per MaterialX surface shader (per-target differences as a table).
@@ -80,7 +81,8 @@ def abstract_inputs(material: Material, surface: str) -> Inputs:
     base = model.base
     out: Inputs = {"base_weight": ("float", 1.0)}
     if base == "conductor":
-        out["base_color"] = ("color3", conductor_f0(params))
+        out["base_weight"] = ("float", conductor_weight(params))
+        out["base_color"] = ("color3", weighted_f0(params))
         out["metalness"] = ("float", 1.0)
         out["specular_color"] = ("color3", METAL_EDGE[surface](params))
     else:
