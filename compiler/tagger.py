@@ -216,7 +216,7 @@ class Tagger:
                     tagged[-1], text, self._span(raw, i, 1, line_no, offset), last, diags
                 )
                 return 1
-            reading = self.formation().read_at([t.lower() for t, _c in raw[i : i + 3]])
+            reading = self.formation().read_at([t.lower() for t, _c in raw[i : i + 5]])  # "not X in the least"
             if reading is not None:
                 return self._formed(reading, raw, i, line_no, offset, tagged, diags)
         tagged.append(self._unknown(raw[i], line_no, offset, diags))
