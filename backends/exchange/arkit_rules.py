@@ -23,7 +23,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
-from pxr import Ar, Sdf, Usd, UsdGeom, UsdShade, UsdUtils
+from pxr import Ar, Sdf, Tf, Usd, UsdGeom, UsdShade, UsdUtils
 
 ALIGNMENT = 64
 IMAGE_FORMATS = ("jpg", "png")
@@ -288,7 +288,10 @@ def check_package(path: str | Path) -> list[str]:
     for zip_rule in (byte_alignment, compression, file_extensions, root_layer_first):
         failures += zip_rule(archive, path)
     delegate = UsdUtils.CoalescingDiagnosticDelegate()
-    stage = Usd.Stage.Open(path)
+    try:
+        stage = Usd.Stage.Open(path)
+    except Tf.ErrorException as exc:  # e.g. a compressed layer, or no layer first
+        return failures + [f"the package does not open as a stage: {' '.join(str(exc).split())}"]
     diagnostics = delegate.TakeUncoalescedDiagnostics()
     failures += stage_metadata(stage) + one_layer(stage)
     with Ar.ResolverContextBinder(stage.GetPathResolverContext()):

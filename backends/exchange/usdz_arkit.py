@@ -17,7 +17,8 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
-from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade
+import numpy as np
+from pxr import Sdf, Usd, UsdGeom, UsdShade, Vt
 
 from cnlmc.material import Document, Material
 from cnlmc.output import main_file_name
@@ -64,17 +65,17 @@ assert set(CAPABILITIES) == set(ALL_FEATURES)
 def author_mesh(stage: Any, path: Any, geometry: PreviewGeometry, where: Sequence[float]) -> Any:
     """The preview geometry as a UsdGeom.Mesh (triangles, vertex normals, st with v up the image)."""
     mesh = UsdGeom.Mesh.Define(stage, path)
-    points = geometry.positions.astype(float) + list(where)
-    mesh.CreatePointsAttr([Gf.Vec3f(*p) for p in points.tolist()])
-    mesh.CreateFaceVertexCountsAttr([3] * len(geometry.indices))
-    mesh.CreateFaceVertexIndicesAttr(geometry.indices.reshape(-1).tolist())
-    mesh.CreateNormalsAttr([Gf.Vec3f(*n) for n in geometry.normals.tolist()])
+    points = (geometry.positions + np.asarray(where, np.float32)).astype(np.float32)
+    mesh.CreatePointsAttr(Vt.Vec3fArray.FromNumpy(points))
+    mesh.CreateFaceVertexCountsAttr(Vt.IntArray.FromNumpy(np.full(len(geometry.indices), 3, np.int32)))
+    mesh.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(geometry.indices.reshape(-1).astype(np.int32)))
+    mesh.CreateNormalsAttr(Vt.Vec3fArray.FromNumpy(geometry.normals))
     mesh.SetNormalsInterpolation(UsdGeom.Tokens.vertex)
     mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
-    mesh.CreateExtentAttr([Gf.Vec3f(*points.min(0).tolist()), Gf.Vec3f(*points.max(0).tolist())])
-    st = [Gf.Vec2f(u, 1.0 - v) for u, v in geometry.uvs.tolist()]  # glTF's v -> USD's (v = 0 at the bottom)
+    mesh.CreateExtentAttr(Vt.Vec3fArray.FromNumpy(np.stack([points.min(0), points.max(0)])))
+    st = np.stack([geometry.uvs[:, 0], 1.0 - geometry.uvs[:, 1]], 1).astype(np.float32)  # glTF's v -> USD's
     primvar = UsdGeom.PrimvarsAPI(mesh).CreatePrimvar("st", Sdf.ValueTypeNames.TexCoord2fArray, UsdGeom.Tokens.vertex)
-    primvar.Set(st)
+    primvar.Set(Vt.Vec2fArray.FromNumpy(st))
     return mesh
 
 
