@@ -44,6 +44,7 @@ BUILTIN_BACKENDS = {
     "usd": "cnlmc.backends.exchange.usd",
     "mitsuba": "cnlmc.backends.exchange.mitsuba",
     "gltf": "cnlmc.backends.exchange.gltf",
+    "usdz": "cnlmc.backends.exchange.usdz_arkit",
     "maps": "cnlmc.backends.maps.target",
     "preview": "cnlmc.backends.preview",
 }
