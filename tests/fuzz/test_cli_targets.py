@@ -41,7 +41,17 @@ WORDS = Vocabulary.stdlib()
 HUNT = int(os.environ.get("CNLMC_FUZZ_EXAMPLES", "0"))
 
 #: examples per test in the test run, by cost (a preview renders, the exchange targets bake maps)
-BUDGET = {"ir": 25, "glsl": 20, "materialx": 12, "usd": 12, "mitsuba": 12, "maps": 10, "preview": 3, "gltf": 8}
+BUDGET = {
+    "ir": 25,
+    "glsl": 20,
+    "materialx": 12,
+    "usd": 12,
+    "mitsuba": 12,
+    "maps": 10,
+    "preview": 3,
+    "gltf": 8,
+    "usdz": 6,
+}
 #: what a target needs to emit beyond what loading it needs: (module, extra)
 EMIT_NEEDS = {
     "maps": ("OpenImageIO", "maps"),
@@ -49,6 +59,7 @@ EMIT_NEEDS = {
     "materialx": ("OpenImageIO", "maps"),
     "usd": ("OpenImageIO", "maps"),
     "gltf": ("OpenImageIO", "maps"),
+    "usdz": ("OpenImageIO", "maps"),
     "preview": ("moderngl", "preview"),
 }
 MARKS = {
@@ -58,6 +69,7 @@ MARKS = {
     "materialx": [pytest.mark.materialx, pytest.mark.oiio],
     "usd": [pytest.mark.usd, pytest.mark.oiio],
     "gltf": [pytest.mark.oiio],
+    "usdz": [pytest.mark.usd, pytest.mark.oiio],
 }
 #: options given before the fuzzed ones (which override them), so that a run bakes and renders small images
 CHEAP_DEFAULTS = {
@@ -67,6 +79,7 @@ CHEAP_DEFAULTS = {
     "materialx": ("map_size=16",),
     "usd": ("map_size=16",),
     "gltf": ("map_size=16",),
+    "usdz": ("map_size=16",),
 }
 #: what -o is given as, relative to the run's cwd ('out' is the run's output folder)
 OUTPUTS = ("", "../out/", "../out/result", "../out/sub/deeper/", "../out/名前 🔥.txt", "../out/a.json", "../out/a.png")
@@ -185,6 +198,7 @@ test_compile_mitsuba = compile_test("mitsuba")
 test_compile_maps = compile_test("maps")
 test_compile_preview = compile_test("preview")
 test_compile_gltf = compile_test("gltf")
+test_compile_usdz = compile_test("usdz")
 
 
 def test_every_registered_target_is_fuzzed():
