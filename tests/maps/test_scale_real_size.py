@@ -74,3 +74,49 @@ def test_concrete_is_grey_at_its_measured_albedo():
     mean = bake_arrays(material, 128, 0, roles=["base_color"])["base_color"][..., :3].mean()
     assert 0.51 / 1.15 < mean < 0.51 * 1.15
     assert np.isfinite(mean)
+
+
+SCALE = """
+doc = "test"
+[params.scale]
+default = 1.0
+range = [0.5, 2.0]
+doc = "density"
+[nodes.noise]
+type = "perlin"
+[scale]
+metres_per_unit = 0.157
+feature = 0.02
+what = "blobs"
+measure = "mask"
+axis = "any"
+source = "our choice"
+[palette]
+max_chroma = 0.1
+dark_params = { scale = 1.5 }
+[outputs]
+mask = "noise"
+"""
+
+
+@pytest.mark.parametrize(
+    "change, key, words",
+    [
+        (("feature = 0.02", "feature = -1"), "scale.feature", "above 0"),
+        (('measure = "mask"', 'measure = "colour"'), "scale.measure", "not an output"),
+        (('axis = "any"', 'axis = "w"'), "scale.axis", "one of u, v, any"),
+        (("max_chroma = 0.1", "max_chroma = 3"), "palette.max_chroma", "[0, 0.4]"),
+        (("dark_params = { scale = 1.5 }", "dark_params = { scale = 9 }"), "palette.dark_params.scale", "outside"),
+        (("dark_params = { scale = 1.5 }", "dark_params = { scal = 1 }"), "palette.dark_params.scal", "did you mean"),
+    ],
+)
+def test_scale_and_palette_tables_are_checked(tmp_path, change, key, words):
+    from cnlmc.backends.maps import GraphSchemaError, load_graph_file
+
+    path = tmp_path / "g.toml"
+    path.write_text(SCALE)
+    assert load_graph_file(path).scale.feature == 0.02
+    path.write_text(SCALE.replace(*change))
+    with pytest.raises(GraphSchemaError) as caught:
+        load_graph_file(path)
+    assert "g.toml" in str(caught.value) and key in str(caught.value) and words in str(caught.value)
