@@ -24,6 +24,7 @@ from .bracket import Move, bracket_move, scaled_steps
 from .coats import apply_clauses
 from .refine_colour import refine_colour, refine_named_colour, refine_saturation
 from .refine_effects import brings_treatment, refine_adjective
+from .refine_missing_map import add_missing_map
 from .refine_target import item_words, move_sigma_too, note_unmoved_number, refine_weight, surface
 from .words import apply_group
 
@@ -42,7 +43,8 @@ def apply_inline_refinements(state: MaterialState, ctx: Context) -> MaterialStat
     for item in state.selection.refinements:
         if item.target is not None and _describes_material(ctx, item):
             apply_group(state, ctx, _as_group(item.target), target="base")
-        apply_refinement(state, ctx, item)
+        if not add_missing_map(state, ctx, item):  # 'rustier iron' = slightly rusty iron
+            apply_refinement(state, ctx, item)
     return state
 
 
