@@ -78,6 +78,7 @@ class Rules:
         self.negation_words = frozenset(joined("negation", "words"))
         self.negation_prefixes = joined("negation", "prefixes")
         self.softeners = frozenset(joined("negation", "softeners"))
+        self.emphatic = tuple(tuple(e.split()) for e in joined("negation", "emphatic"))  # "at all"
         self.soft_adverb = next((x["negation"]["soft_adverb"] for x in layers if x["negation"]["soft_adverb"]), "")
         self.prefixes = {
             form: p["adverb"] for layer in reversed(layers) for p in layer["prefix"] for form in p["forms"]
@@ -500,7 +501,36 @@ class WordFormation:
     # ------------------------------------------------------------ two or more words
 
     def _negated_words(self, words: Sequence[str]) -> Reading | None:
-        """'not X' (X's opposite, or without X); 'not too X' = the soft adverb + X."""
+        """'not X' (X's opposite, or without X); 'not too X' = the soft adverb + X; 'not at all X',
+        'not X at all' = 'not X' (the emphatic words are taken with it)."""
+        before = self._emphatic_at(words, 1)
+        if before:  # 'not at all rusty': read as 'not rusty', the words between taken along
+            found = self._negated_words([words[0], *words[1 + before :]])
+            if found is None:
+                return None
+            parts = tuple(
+                Part(p.first + before if p.first else 0, p.last + before, p.start, p.end, p.candidates)
+                for p in found.parts
+            )
+            return Reading(parts, found.words + before, found.note)
+        reading = self._plain_negation(words)
+        after = self._emphatic_at(words, 2) if reading is not None and reading.words == 2 else 0
+        if reading is None or not after:
+            return reading
+        parts = tuple(
+            Part(p.first, p.last + after if p.last == 1 else p.last, p.start, p.end, p.candidates)
+            for p in reading.parts
+        )
+        return Reading(parts, reading.words + after, reading.note)
+
+    def _emphatic_at(self, words: Sequence[str], at: int) -> int:
+        """How many words of an emphatic phrase ('at all') start at words[at]: 0 when none does."""
+        for phrase in self.rules.emphatic:
+            if tuple(words[at : at + len(phrase)]) == phrase and len(words) > at + len(phrase) - (at == 2):
+                return len(phrase)
+        return 0
+
+    def _plain_negation(self, words: Sequence[str]) -> Reading | None:
         rules = self.rules
         if words[1] in rules.softeners and len(words) > 2 and rules.soft_adverb:
             found = self._resolved(words[2])

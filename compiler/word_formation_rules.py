@@ -22,7 +22,7 @@ RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN")
 
 _LISTS = {
     "punctuation": ("trailing", "leading", "quotes", "number_marks"),
-    "negation": ("words", "prefixes", "softeners"),
+    "negation": ("words", "prefixes", "softeners", "emphatic"),
     "qualifiers": ("words",),
 }
 
@@ -31,7 +31,7 @@ def empty_rules() -> dict[str, Any]:
     """The normal form of a file with no rules at all."""
     return {
         "punctuation": {"trailing": [], "leading": [], "quotes": [], "number_marks": []},
-        "negation": {"words": [], "prefixes": [], "softeners": [], "soft_adverb": ""},
+        "negation": {"words": [], "prefixes": [], "softeners": [], "emphatic": [], "soft_adverb": ""},
         "qualifiers": {"words": []},
         "compound_first": {
             "manners": [],
