@@ -51,9 +51,11 @@ def write_image(path: Path, pixels: np.ndarray, pixel_type: str, colour_space: s
     if output is None or not output.open(str(path), spec):
         raise MapError(f"cannot write {path}: {oiio.geterror()}")
     ok = output.write_image(np.ascontiguousarray(pixels, np.float32))
-    output.close()
-    if not ok:
-        raise MapError(f"cannot write {path}: {output.geterror()}")
+    error = output.geterror()  # PNG: a failed write (a full disk) is reported here, not by ok (#13)
+    closed = output.close()
+    error = error or output.geterror()
+    if not ok or not closed or error:
+        raise MapError(f"cannot write {path}: {error.strip() or 'the image writer failed'}")
 
 
 def map_file_name(stem: str, role: str, extension: str) -> str:
