@@ -10,7 +10,7 @@ from typing import TextIO
 
 from cnlmc.commands import EXIT_ERRORS, EXIT_OK, add_source_arguments, compile_reported, read_source, say_wrote
 from cnlmc.errors import UsageError
-from cnlmc.output import Staging
+from cnlmc.output import Staging, writable_destination
 
 from ..base import Command
 from .errors import MapError
@@ -95,6 +95,7 @@ class SheetCommand(Command):
         low, high = SHEET_TILE
         if not low <= args.size <= high:
             raise UsageError(f"sheet: tile size {args.size} is out of range: use {low} to {high} pixels")
+        writable_destination(args.output)  # a bad -o is refused before the seconds of rendering (#13)
         try:
             path = render_contact_sheet(args.output, size=args.size)
         except ImportError as exc:
