@@ -124,6 +124,23 @@ def destination(path: Path | str, protect: Iterable[str | Path] = ()) -> Path:
     return real
 
 
+def writable_destination(path: Path | str, protect: Iterable[str | Path] = ()) -> Path:
+    """destination(path, protect), and a new file can be made where it goes: the nearest folder
+    above it that exists is a folder this process may write into. For a command that works
+    before it writes (a contact sheet renders for seconds): a bad -o is refused before the work
+    (UsageError naming the path and the reason), not after. Writes nothing."""
+    real = destination(path, protect)
+    probe = real.parent
+    while not os.path.lexists(probe) and probe.parent != probe:
+        probe = probe.parent
+    if not probe.is_dir():
+        raise os_error(path, OSError(errno.ENOTDIR, os.strerror(errno.ENOTDIR)))
+    if not os.access(probe, os.W_OK | os.X_OK):
+        code = errno.EROFS if os.statvfs(probe).f_flag & os.ST_RDONLY else errno.EACCES
+        raise os_error(path, OSError(code, os.strerror(code)))
+    return real
+
+
 def _make_parents(folder: Path, made: list[Path]) -> None:
     """Create `folder` and its missing parents, recording each folder made (to remove on failure)."""
     missing = []
