@@ -97,6 +97,8 @@ class Joiner:
         if len(out) > 2 and self._is_coat_finish(out):
             self._coat_after(out, diags)
         _feature_colour_list(out, diags)
+        if len(out) > 1 and of_tag(out[-2], "FEATURE"):
+            _feature_first(out, diags)
         if len(out) > 1 and of_tag(out[-1], "ADJ") and self.rules().postfix:
             self._postfix(out, diags)
         return out
@@ -375,6 +377,32 @@ def _feature_colour_list(out: list[Tagged], diags: list[Diagnostic]) -> None:
                 diags.append(Diagnostic(left[0].span.to(left[-1].span), Severity.NOTE, NOTE_CODE, note))
                 del out[dropped_start:end]
             return
+
+
+#: The readings of the words a feature named before the material may take with it ('fine grain', 'gold vein').
+FEATURE_WORDS = frozenset(("ADV", "COLOR", "SHADE"))
+
+
+def _feature_first(out: list[Tagged], diags: list[Diagnostic]) -> None:
+    """'fine grain walnut', 'gold vein marble', 'subtle sheen plastic': a feature (with its degree or
+    colour words) right before the material at the end of a line with no 'with' is the feature
+    clause 'walnut with fine grain'; a word that is also a describing word or a noun ('patina':
+    patinated) keeps that reading."""
+    feature, noun = out[-2], out[-1]
+    if any(c.tag in ("ADJ", "NOUN") for c in feature.candidates) or not of_tag(noun, "NOUN") or noun.unknown:
+        return
+    if any(of_tag(t, "WITH") or of_tag(t, "COMMA") or t.unknown for t in out):
+        return
+    start = len(out) - 2
+    while start > 0 and any(c.tag in FEATURE_WORDS for c in out[start - 1].candidates):
+        start -= 1
+    words = out[start:-1]
+    said = " ".join(t.text for t in words)
+    note = f"read '{said} {noun.text}' as '{noun.text} with {said}' (a feature named before the material)"
+    diags.append(Diagnostic(words[0].span.to(noun.span), Severity.NOTE, NOTE_CODE, note))
+    at, col = noun.span.end, noun.span.col + noun.span.end - noun.span.start  # the clause's 'with': at the noun's end
+    with_word = Tagged("with", Span(at, at, noun.span.line, col), (Candidate("WITH", "with", "keyword"),))
+    out[start:] = [noun, with_word, *words]
 
 
 def _is_joint(word: Tagged) -> bool:

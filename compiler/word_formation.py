@@ -112,6 +112,9 @@ class Rules:
         self.colour_heads = frozenset(self.resemblance["colour_heads"])
         self.like_heads = frozenset(self.resemblance["like_heads"])
         self.finish_heads = frozenset(self.resemblance["finish_heads"])
+        suffix_forms = [f for s in self.suffixes for f in s["forms"]]
+        suffix_forms += [f for name in ("forms", "colour_forms") for f in self.resemblance[name]]
+        self.suffix_words = frozenset(f.lstrip("-") for f in suffix_forms)  # 'coloured', 'finished': not participles
 
 
 class WordFormation:
@@ -191,9 +194,9 @@ class WordFormation:
             self._joined,
             self._negated,
             self._prefixed,
-            self._compound_first,
             self._resembling,
             self._derived,
+            self._compound_first,
             self._wordnet,
             self._split,
             self._head,
@@ -351,7 +354,10 @@ class WordFormation:
         return None
 
     def _is_participle(self, word: str) -> bool:
+        """A participle the lexicon may lack ('thrown', 'stitched'); not a suffix of the rules ('coloured')."""
         rules = self.rules
+        if word in rules.suffix_words and word not in rules.participles:
+            return False
         return word in rules.participles or (len(word) > 4 and word.endswith(rules.participle_endings))
 
     def _adverb(self, key: str) -> tuple[Candidate, ...]:

@@ -67,6 +67,11 @@ def notes(result):
         ("heavy-rusted iron", "strongly rusted iron", "is a degree"),
         ("lightly-brushed steel", "lightly brushed steel", "is a degree"),
         ("deep-etched glass", "strong etched glass", "is a degree"),
+        ("loose-woven hemp", "slightly woven hemp", "is a degree"),
+        ("tightly-woven wool", "strongly woven wool", "is a degree"),
+        ("sand-cast brass", "brass", "how it was made"),
+        ("drop forged iron", "forged iron", "'drop' says how"),
+        ("hand-finished oak", "oak", "how it was made"),
     ],
 )
 def test_compound_first_part(lexicon, text, meaning, note_has):
@@ -104,3 +109,12 @@ def test_a_manner_before_nothing_it_can_read_is_still_unknown(lexicon):
     result = compile_source("hand-xqzt oak", "cp.cnl", lexicon)
     assert not result.ok
     assert any(d.code == "E001" for d in result.diagnostics)
+
+
+def test_a_suffix_of_the_rules_is_not_a_participle(lexicon):
+    """'sand-coloured' is the colour of sand (resemblance), not 'made with sand': the manner rule
+    comes after the suffix rules and never reads 'coloured' as a participle."""
+    result, look = compiled(lexicon, "sand-coloured plaster")
+    _plain, expected = compiled(lexicon, "sand plaster")
+    assert look == expected
+    assert not [n for n in notes(result) if "how it was made" in n]

@@ -68,3 +68,20 @@ def test_colours_before_a_feature_and_an_and_after_it_compile(lexicon, text):
 def test_an_and_before_another_clause_is_not_a_colour_list(lexicon):
     result, _got = look(lexicon, "granite with flecks of black and a glossy finish")
     assert not [d for d in result.diagnostics if "left out" in d.message]
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning"),
+    [
+        ("fine grain walnut", "walnut with fine grain"),
+        ("heavy grain oak", "oak with heavy grain"),
+        ("gold vein marble", "marble with gold veins"),
+        ("black speckle granite", "granite with black speckles"),
+        ("subtle sheen plastic", "plastic with a subtle sheen"),
+    ],
+)
+def test_a_feature_named_before_the_material_is_its_clause(lexicon, text, meaning):
+    result, got = look(lexicon, text)
+    _plain, expected = look(lexicon, meaning)
+    assert got == expected, (text, meaning)
+    assert any("a feature named before the material" in d.message for d in result.diagnostics)
