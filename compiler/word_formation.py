@@ -142,12 +142,12 @@ class WordFormation:
         """A reading of the unknown word words[0] (lower case), which may take the words after it."""
         first = words[0]
         rules = self.rules
-        if first in rules.qualifiers and len(words) > 1:  # "kitchen cabinets", "exterior paint"
-            return Reading((), 1, f"read '{first}' as saying where or what for: no effect on the look")
         if len(words) > 1 and first in rules.manners:  # "hand painted", "machine cut"
             found = self._after_manner(f"{first} {words[1]}", first, words[1], 1)
             if found is not None:
                 return found
+        if first in rules.qualifiers and len(words) > 1:  # "kitchen cabinets", "exterior paint"
+            return Reading((), 1, f"read '{first}' as saying where or what for: no effect on the look")
         if len(words) > 1 and first in rules.first_synonyms:  # "close grained" = fine-grained
             same = rules.first_synonyms[first]
             compound = self._kept(self._known(f"{same}-{words[1]}"), ("ADJ",))

@@ -93,3 +93,21 @@ def test_a_word_wordnet_does_not_know_or_a_thing_alone_stays_unknown(lexicon, te
     """Only an artifact noun last on the line after a material joins it: a typo or a lone word keeps its E001."""
     result = compile_source(text, "ob.cnl", lexicon)
     assert not result.ok
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning"),
+    [
+        ("teak dining table", "teak"),
+        ("gold hoop earrings", "gold"),
+        ("stainless steel hex bolts", "stainless steel"),
+        ("oak front door", "oak"),
+        ("porcelain dinner plate", "porcelain"),
+        ("rose gold wedding band", "rose gold"),
+    ],
+)
+def test_a_word_saying_what_kind_of_thing_before_an_object_has_no_effect(lexicon, text, meaning):
+    result, got = look(lexicon, text)
+    _plain, expected = look(lexicon, meaning)
+    assert got == expected, (text, meaning)
+    assert any("where or what for" in d.message for d in result.diagnostics)
