@@ -4,7 +4,8 @@ checker nor `usdchecker` (../shared/PLATFORM.md). One function per rule, named a
 restates; each returns the failures it finds as text.
 
     failures = check_package("hull.usdz")      # [] when the package passes every rule
-    python -m cnlmc.backends.exchange.arkit_rules hull.usdz ...   # prints failures, exit 1 if any
+    failures = check("shot.usda", arkit=False)  # the base rules only (`usdchecker` without --arkit)
+    python -m cnlmc.backends.exchange.arkit_rules [--no-arkit] FILE...   # prints failures, exit 1 if any
 
 Base rules: byte alignment (64), no compression, no unresolvable dependency, stage metadata (upAxis
 Y, metersPerUnit, defaultPrim), textures PNG/JPEG, prim encapsulation (connectable prims only
@@ -77,11 +78,12 @@ def root_layer_first(archive: Any, path: str) -> list[str]:
 # -------------------------------------------------------------------------- the stage
 
 
-def stage_metadata(stage: Any) -> list[str]:
+def stage_metadata(stage: Any, arkit: bool = True) -> list[str]:
+    """upAxis (Y for consumer content) and metersPerUnit authored, a valid defaultPrim."""
     failures = []
     if not stage.HasAuthoredMetadata(UsdGeom.Tokens.upAxis):
         failures.append("the stage does not specify an upAxis")
-    elif UsdGeom.GetStageUpAxis(stage) != UsdGeom.Tokens.y:
+    elif arkit and UsdGeom.GetStageUpAxis(stage) != UsdGeom.Tokens.y:
         failures.append(f"the stage's upAxis is {UsdGeom.GetStageUpAxis(stage)}, not Y")
     if not stage.HasAuthoredMetadata(UsdGeom.Tokens.metersPerUnit):
         failures.append("the stage does not specify metersPerUnit")
@@ -100,8 +102,9 @@ def one_layer(stage: Any) -> list[str]:
     ]
 
 
-def dependencies(path: str, opening_diagnostics: list[Any]) -> list[str]:
-    """Unresolvable asset paths, composition errors while opening, and files from outside the package."""
+def dependencies(path: str, opening_diagnostics: list[Any], inside_package: bool) -> list[str]:
+    """Unresolvable asset paths and composition errors while opening; with `inside_package`
+    (ARKit, on a usdz), every layer and asset also comes from inside the package."""
     layers, assets, unresolved = UsdUtils.ComputeAllDependencies(Sdf.AssetPath(path))
     failures = [f"unresolvable dependency '{p}'" for p in unresolved]
     failures += [
@@ -109,10 +112,11 @@ def dependencies(path: str, opening_diagnostics: list[Any]) -> list[str]:
         for d in opening_diagnostics
         if "_ReportErrors" in d.sourceFunction and "usd/stage.cpp" in d.sourceFileName
     ]
-    package = str(Path(path).resolve())
-    outside = [layer.realPath for layer in layers if layer.realPath and not layer.realPath.startswith(package)]
-    outside += [asset for asset in assets if not asset.startswith(package)]
-    return failures + [f"'{p}' is outside the package '{package}'" for p in outside]
+    if not inside_package:
+        return failures
+    outside = [layer.realPath for layer in layers if layer.realPath and not layer.realPath.startswith(path)]
+    outside += [asset for asset in assets if not asset.startswith(path)]
+    return failures + [f"'{p}' is outside the package '{path}'" for p in outside]
 
 
 # ---------------------------------------------------------------------------- prims
@@ -123,18 +127,23 @@ def prim_type(prim: Any) -> list[str]:
     return [] if name in PRIM_TYPES else [f"prim <{prim.GetPath()}> has the type '{name}', which ARKit does not read"]
 
 
-def textures(prim: Any) -> list[str]:
-    connectable = UsdShade.ConnectableAPI(prim)
-    if not prim.GetTypeName() or not connectable:
-        return []
-    failures = []
-    for shader_input in connectable.GetInputs():
-        if shader_input.GetTypeName() != Sdf.ValueTypeNames.Asset:
-            continue
-        asset = shader_input.Get(Usd.TimeCode.EarliestTime())
-        if asset and Ar.GetResolver().GetExtension(asset.path).lower() not in IMAGE_FORMATS:
-            failures.append(f"texture <{shader_input.GetAttr().GetPath()}> @{asset.path}@ is not PNG or JPEG")
-    return failures
+def texture_formats(allowed: tuple[str, ...]) -> PrimRule:
+    """The rule: every asset input of a connectable prim names a texture of an `allowed` format."""
+
+    def textures(prim: Any) -> list[str]:
+        connectable = UsdShade.ConnectableAPI(prim)
+        if not prim.GetTypeName() or not connectable:
+            return []
+        failures = []
+        for shader_input in connectable.GetInputs():
+            if shader_input.GetTypeName() != Sdf.ValueTypeNames.Asset:
+                continue
+            asset = shader_input.Get(Usd.TimeCode.EarliestTime())
+            if asset and Ar.GetResolver().GetExtension(asset.path).lower() not in allowed:
+                failures.append(f"texture <{shader_input.GetAttr().GetPath()}> @{asset.path}@ is not PNG or JPEG")
+        return failures
+
+    return textures
 
 
 def encapsulation(prim: Any) -> list[str]:
@@ -196,16 +205,20 @@ def binding_rels(prim: Any) -> list[Any]:
     return [r for r in prim.GetRelationships() if r.GetName().startswith(UsdShade.Tokens.materialBinding)]
 
 
-def bindings(prim: Any) -> list[str]:
-    """A binding needs MaterialBindingAPI applied and a real Material as its target."""
-    rels = binding_rels(prim)
-    failures = []
-    if rels and not prim.HasAPI(UsdShade.MaterialBindingAPI):
-        failures.append(f"prim <{prim.GetPath()}> has a material binding without MaterialBindingAPI")
-    for rel in rels:
-        if len(rel.GetTargets()) == 1 and not UsdShade.MaterialBindingAPI.DirectBinding(rel).GetMaterial():
-            failures.append(f"binding <{rel.GetPath()}> targets no valid material")
-    return failures
+def binding_api(prim: Any) -> list[str]:
+    """A prim with a material binding has MaterialBindingAPI applied."""
+    if binding_rels(prim) and not prim.HasAPI(UsdShade.MaterialBindingAPI):
+        return [f"prim <{prim.GetPath()}> has a material binding without MaterialBindingAPI"]
+    return []
+
+
+def binding_targets(prim: Any) -> list[str]:
+    """ARKit: every direct binding targets a real Material."""
+    return [
+        f"binding <{rel.GetPath()}> targets no valid material"
+        for rel in binding_rels(prim)
+        if len(rel.GetTargets()) == 1 and not UsdShade.MaterialBindingAPI.DirectBinding(rel).GetMaterial()
+    ]
 
 
 def shaders(prim: Any) -> list[str]:
@@ -235,15 +248,16 @@ def shaders(prim: Any) -> list[str]:
     return failures
 
 
-PRIM_RULES: tuple[PrimRule, ...] = (prim_type, textures, encapsulation, normal_maps, bindings, shaders)
+BASE_PRIM_RULES: tuple[PrimRule, ...] = (encapsulation, normal_maps, binding_api)
+ARKIT_PRIM_RULES: tuple[PrimRule, ...] = (prim_type, shaders, binding_targets)
 
 
-def check_prims(stage: Any) -> list[str]:
+def check_prims(stage: Any, rules: tuple[PrimRule, ...]) -> list[str]:
     """The prim rules on every prim in every variant (selections are set in the session layer)."""
     stage.SetEditTarget(stage.GetSessionLayer())
     failures: list[str] = []
     for prim in visit(iter(Usd.PrimRange.Stage(stage, Usd.TraverseInstanceProxies()))):
-        for rule in PRIM_RULES:
+        for rule in rules:
             failures += rule(prim)
     return sorted(set(failures))
 
@@ -280,29 +294,46 @@ def selections(prim: Any, names: list[str]) -> Iterator[None]:
 
 def check_package(path: str | Path) -> list[str]:
     """Every failure of the usdz at `path` under the base and ARKit rules ([] when it passes)."""
+    return check(path, arkit=True)
+
+
+def check(path: str | Path, arkit: bool = True) -> list[str]:
+    """The failures of a USD file (.usda/.usdc/.usdz) under the base rules, and with `arkit` the
+    ARKit rules too: `usdchecker FILE` and `usdchecker --arkit FILE` ([] when it passes)."""
     path = str(Path(path).resolve())
-    archive = Sdf.ZipFile.Open(path)
-    if not archive:
-        return [f"'{path}' is not a zip package"]
-    failures = []
-    for zip_rule in (byte_alignment, compression, file_extensions, root_layer_first):
-        failures += zip_rule(archive, path)
+    package = path.lower().endswith(".usdz")
+    failures = zip_failures(path, arkit) if package else []
+    if arkit and not package and not path.endswith(".usdc"):
+        failures.append(f"the root layer '{path}' is not a .usdc file")
     delegate = UsdUtils.CoalescingDiagnosticDelegate()
     try:
         stage = Usd.Stage.Open(path)
     except Tf.ErrorException as exc:  # e.g. a compressed layer, or no layer first
-        return failures + [f"the package does not open as a stage: {' '.join(str(exc).split())}"]
+        return failures + [f"the file does not open as a stage: {' '.join(str(exc).split())}"]
     diagnostics = delegate.TakeUncoalescedDiagnostics()
-    failures += stage_metadata(stage) + one_layer(stage)
+    failures += stage_metadata(stage, arkit) + (one_layer(stage) if arkit else [])
     with Ar.ResolverContextBinder(stage.GetPathResolverContext()):
-        failures += dependencies(path, diagnostics)
-    return failures + check_prims(stage)
+        failures += dependencies(path, diagnostics, arkit and package)
+    rules = BASE_PRIM_RULES + (ARKIT_PRIM_RULES if arkit else ())
+    if package or arkit:  # the checker tests texture formats only for packages and consumer content
+        rules += (texture_formats(IMAGE_FORMATS if arkit else IMAGE_FORMATS + ("exr",)),)
+    return failures + check_prims(stage, rules)
 
 
-def main(paths: list[str]) -> int:
+def zip_failures(path: str, arkit: bool) -> list[str]:
+    archive = Sdf.ZipFile.Open(path)
+    if not archive:
+        return [f"'{path}' is not a zip package"]
+    rules = (byte_alignment, compression) + ((file_extensions, root_layer_first) if arkit else ())
+    return [failure for rule in rules for failure in rule(archive, path)]
+
+
+def main(arguments: list[str]) -> int:
+    """`[--no-arkit] FILE...`: print each failure; exit 1 if any."""
+    arkit = "--no-arkit" not in arguments
     failed = 0
-    for path in paths:
-        for failure in check_package(path):
+    for path in (a for a in arguments if a != "--no-arkit"):
+        for failure in check(path, arkit):
             print(f"{path}: {failure}")
             failed = 1
     return failed

@@ -21,7 +21,7 @@ from pxr import Sdf, Usd, UsdGeom, UsdShade  # noqa: E402
 
 from cnlmc.api import compile_source, emit  # noqa: E402
 from cnlmc.backends.exchange import usd  # noqa: E402
-from cnlmc.backends.exchange.arkit_rules import check_package  # noqa: E402
+from cnlmc.backends.exchange.arkit_rules import check, check_package  # noqa: E402
 from cnlmc.backends.exchange.usdz_package import usdz_bytes  # noqa: E402
 from cnlmc.material import Material  # noqa: E402
 
@@ -217,3 +217,18 @@ def test_rules_catch_compression_and_misalignment(tmp_path):
     (tmp_path / "z.usdz").write_bytes(buffer.getvalue())
     failures = check_package(tmp_path / "z.usdz")
     assert any("compressed" in f for f in failures) and any("multiple of 64" in f for f in failures), failures
+
+
+def test_base_rules_alone_check_a_usda_as_usdchecker_does_without_arkit(tmp_path):
+    stage = Usd.Stage.Open(Sdf.Layer.OpenAsAnonymous(str(write_layer(tmp_path, layer_text(up="Z")))))
+    stage.GetRootLayer().Export(str(tmp_path / "shot.usda"))
+    (tmp_path / "t.png").write_bytes(PNG)
+    assert check(tmp_path / "shot.usda", arkit=False) == []  # Z up and a usda root are fine outside ARKit
+    arkit = check(tmp_path / "shot.usda", arkit=True)
+    assert any("upAxis" in f for f in arkit) and any("not a .usdc" in f for f in arkit), arkit
+
+
+def write_layer(folder: Path, data: bytes) -> Path:
+    path = folder / "layer.usdc"
+    path.write_bytes(data)
+    return path
