@@ -11,8 +11,9 @@ this module loads (load_lexicon), caches on disk as plain data (cached_lexicon) 
 
 from __future__ import annotations
 
+import os
+from collections import OrderedDict
 from collections.abc import Iterable
-from functools import lru_cache
 from importlib import resources
 from pathlib import Path
 from typing import Any
@@ -38,6 +39,7 @@ __all__ = [
     "Forms",
     "Lexicon",
     "LexiconCaches",
+    "LexiconStore",
     "Overlays",
     "cached_lexicon",
     "from_data",
@@ -72,9 +74,73 @@ def load_lexicon(user_paths: Iterable[str | Path] = (), overlay: Overlays = None
     return load(user_paths, overlay)
 
 
-@lru_cache(maxsize=8)
-def cached_lexicon(user_paths: tuple[str | Path, ...] = (), overlay: Overlays = None) -> Lexicon:
-    """The lexicon, from the on-disk cache when no source file changed since it was written."""
+class LexiconStore:
+    """The lexicons a program has loaded, each kept while it is one of the `limit` used last
+    (least recently used out) and while its user folders' files are as they were: the key holds
+    the folders' and overlays' names and the names, sizes and times of the user folders' files
+    (os.stat of each, on every lookup), so a user lexicon edited while a program runs (the
+    language server, a build pipeline) is read again. The bundled stdlib and overlays are package
+    data: not stat'ed per lookup (an installed package does not change under a running program;
+    the disk cache keys them by their files all the same). A Lexicon keeps its own bounded memos
+    (Lexicon.caches); `clear()` lets every lexicon go. The process's store is STORE (its owner:
+    this module; cached_lexicon and cnlmc.api.lexicon_for read it); a program that wants its
+    own lifetime makes its own LexiconStore."""
+
+    def __init__(self, limit: int = 8) -> None:
+        self.limit = limit
+        self._entries: OrderedDict[tuple[Any, ...], Lexicon] = OrderedDict()
+
+    def get(self, user_paths: tuple[str | Path, ...] = (), overlay: Overlays = None) -> Lexicon:
+        """The lexicon of these folders and overlays as their files are now (LexiconError if bad)."""
+        key = (user_paths, overlay, _user_files(user_paths))
+        found = self._entries.get(key)
+        if found is not None:
+            self._entries.move_to_end(key)
+            return found
+        lexicon = _from_disk_cache(user_paths, overlay)
+        stale = [k for k in self._entries if k[:2] == (user_paths, overlay)]  # the same folders, edited since
+        for old in stale:
+            del self._entries[old]
+        self._entries[key] = lexicon
+        while len(self._entries) > self.limit:
+            self._entries.popitem(last=False)
+        return lexicon
+
+    __call__ = get
+
+    @staticmethod
+    def __wrapped__(user_paths: tuple[str | Path, ...] = (), overlay: Overlays = None) -> Lexicon:
+        """The lexicon without the store: from the disk cache, or loaded (functools' name for it)."""
+        return _from_disk_cache(user_paths, overlay)
+
+    def clear(self) -> None:
+        self._entries.clear()
+
+    def __len__(self) -> int:
+        return len(self._entries)
+
+
+def _user_files(user_paths: tuple[str | Path, ...]) -> tuple[tuple[str, int, int], ...]:
+    """(name, size, mtime) of each user folder and of the .toml files in it (missing: -1)."""
+    stamps = []
+    for folder in user_paths:
+        for path in (Path(folder), *sorted(Path(folder).glob("*.toml"))):
+            try:
+                st = os.stat(path)
+                stamps.append((str(path), st.st_size, st.st_mtime_ns))
+            except OSError:
+                stamps.append((str(path), -1, -1))
+    return tuple(stamps)
+
+
+STORE = LexiconStore()
+
+#: The lexicon from the process's store (STORE), else from the on-disk cache when no source file
+#: changed since it was written, else loaded; `cached_lexicon.__wrapped__(...)` skips the store.
+cached_lexicon = STORE
+
+
+def _from_disk_cache(user_paths: tuple[str | Path, ...], overlay: Overlays) -> Lexicon:
     sources = lexicon_sources(user_paths, overlay)
     return cached("lexicon", sources, lambda: load_lexicon(user_paths, overlay), _dump, _load)
 
