@@ -427,15 +427,14 @@ def _artifact_words() -> frozenset[str]:
 
 def may_join(tagged: list[Tagged]) -> bool:
     """Whether a line has an object, two nouns side by side, or a head word ('finish', 'look':
-    a COAT or FEATURE reading) before another word or after a noun (see Joiner.joined)."""
-    noun_before = noun_seen = False
+    a COAT or FEATURE reading) before another word or after a noun (see Joiner.joined); or ends in
+    an unknown word after a noun ("pewter tankard") or, with no 'with' or comma, in a describing
+    word after a noun ("Eiche geölt")."""
+    noun_before = noun_seen = noun_before_last = False
+    plain = True  # no 'with', no comma
     final = tagged[-1] if tagged else None
     for word in tagged:
         noun = head = False
-        if word.unknown and noun_before and word is final:  # "pewter tankard": maybe a WordNet artifact
-            return True
-        if noun_seen and word is final and any(c.tag == "ADJ" for c in word.candidates):  # "Eiche (leicht) geölt"
-            return True
         for candidate in word.candidates:
             tag = candidate.tag
             if tag == "OBJECT":
@@ -444,11 +443,17 @@ def may_join(tagged: list[Tagged]) -> bool:
                 noun = True
             elif tag == "COAT" or tag == "FEATURE" or tag == "PROP":  # PROP: 'coloured' (colour + -ed)
                 head = True
+            elif tag == "WITH" or tag == "COMMA":
+                plain = False
         if (noun and noun_before) or (head and (word is not final or noun_before)):
             return True
-        noun_before = noun
+        noun_before_last, noun_before = noun_before, noun
         noun_seen = noun_seen or noun
-    return False
+    if final is None:
+        return False
+    if final.unknown:
+        return noun_before_last
+    return plain and noun_seen and any(c.tag == "ADJ" for c in final.candidates)
 
 
 def of_tag(word: Tagged, tag: str) -> tuple[Candidate, ...]:
