@@ -158,8 +158,8 @@ def texture_targets(material: Material, role: str, surface: str) -> list[str]:
     return [names[TEXTURE_INPUTS[role][0]]]
 
 
-def add_tangent_rotation(doc: Any, ident: str, shader: Any, angle: float, surface: str) -> None:
-    """OpenPBR has no rotation input: tangent = cos(angle) T + sin(angle) B, normalised."""
+def add_tangent_rotation(doc: Any, ident: str, angle: float) -> Any:
+    """OpenPBR has no rotation input: tangent = cos(angle) T + sin(angle) B, normalised (the node)."""
     tangent = doc.addNode("tangent", f"{ident}_tangent", "vector3")
     bitangent = doc.addNode("bitangent", f"{ident}_bitangent", "vector3")
     along = doc.addNode("multiply", f"{ident}_tangent_cos", "vector3")
@@ -173,7 +173,7 @@ def add_tangent_rotation(doc: Any, ident: str, shader: Any, angle: float, surfac
     total.setConnectedNode("in2", across)
     unit = doc.addNode("normalize", f"{ident}_tangent_rotated", "vector3")
     unit.setConnectedNode("in", total)
-    shader.setConnectedNode(SURFACE_NAMES[surface]["tangent"], unit)
+    return unit
 
 
 Natives = dict[str, MapRef]
@@ -192,6 +192,30 @@ def native_maps(material: Material) -> Natives:
     return found
 
 
+class MapGraph:
+    """The node graph `NG_<ident>` that holds one material's map nodes (images, native recipes,
+    their conductor tint / sqrt / normalmap, the rotated tangent). Created on first use, so a
+    material without maps has none; the shader reads each map through a graph output."""
+
+    def __init__(self, doc: Any, ident: str, shader: Any):
+        self.doc, self.ident, self.shader = doc, ident, shader
+        self.graph: Any = None
+
+    def nodes(self) -> Any:
+        """Where map nodes are added (the graph)."""
+        if self.graph is None:
+            self.graph = self.doc.addNodeGraph(f"NG_{self.ident}")
+        return self.graph
+
+    def connect(self, target: str, source: Any) -> None:
+        """shader.target <- the graph output that carries `source` (one output per source node)."""
+        name = f"{source.getName()}_out"
+        output = self.graph.getOutput(name) or self.graph.addOutput(name, source.getType())
+        output.setConnectedNode(source)
+        shader_input = self.shader.getInput(target) or self.shader.addInput(target, source.getType())
+        shader_input.setConnectedOutput(output)
+
+
 def add_material(
     doc: Any, material: Material, ident: str, surface: str, textures: Textures, natives: Natives | None = None
 ) -> None:
@@ -199,21 +223,22 @@ def add_material(
     inputs = surface_inputs(material, surface)
     for name, (mx_type, value) in inputs.items():
         _set(shader, name, mx_type, value)
+    graph = MapGraph(doc, ident, shader)
     for role, texture in textures.items():
         if role not in TEXTURE_INPUTS:
             continue
-        source = texture_source(doc, material, ident, texture, surface, inputs)
+        source = texture_source(graph.nodes(), material, ident, texture, surface, inputs)
         for target in texture_targets(material, role, surface):
-            shader.setConnectedNode(target, source)
+            graph.connect(target, source)
     for role, ref in (natives or {}).items():
-        node = native.build(doc, material, ident, ref)
+        node = native.build(graph.nodes(), material, ident, ref)
         role = "metallic" if role == "mask" else role
-        source = map_source(doc, material, ident, role, node, surface, inputs)
+        source = map_source(graph.nodes(), material, ident, role, node, surface, inputs)
         for target in texture_targets(material, role, surface):
-            shader.setConnectedNode(target, source)
+            graph.connect(target, source)
     angle = tangent_rotation(material)
     if angle and "rotation" not in SURFACE_NAMES[surface]:
-        add_tangent_rotation(doc, ident, shader, angle, surface)
+        graph.connect(SURFACE_NAMES[surface]["tangent"], add_tangent_rotation(graph.nodes(), ident, angle))
     node = doc.addMaterialNode(f"M_{ident}", shader)
     node.setDocString(phrase_text(material))
     if display_name(material):  # the name as written, where the identifier could not keep it
@@ -241,6 +266,11 @@ def build_document(
     for material, ident in zip(materials, idents):
         add_material(doc, material, ident, surface, textures.get(ident, {}), natives.get(ident, {}))
     return doc
+
+
+def node_graphs(doc: Any) -> list[Any]:
+    """The document's own node graphs (not those of a data library it is set to)."""
+    return [child for child in doc.getChildren() if child.getCategory() == "nodegraph"]
 
 
 def validate(doc: Any, library: Any) -> None:

@@ -326,6 +326,21 @@ def layout(count: int) -> tuple[list[list[float]], dict[str, Any]]:
     return centres, {"fov": fov, "origin": [0, 0, round(distance, 4)], "target": [0, 0, 0]}
 
 
+# The backdrop: BACKDROP_DEPTH behind the spheres' plane, a little wider than the view there, with
+# about CHECKS_PER_SPHERE checks across a sphere's diameter (our choice: glass shows a bent checker).
+BACKDROP_DEPTH, BACKDROP_MARGIN, CHECKS_PER_SPHERE = 3.0, 1.2, 3.0
+
+
+def backdrop(camera: dict[str, Any]) -> dict[str, float]:
+    depth = camera["origin"][2] + BACKDROP_DEPTH
+    half = depth * math.tan(math.radians(camera["fov"] / 2)) * BACKDROP_MARGIN
+    return {
+        "z": -BACKDROP_DEPTH,
+        "half_size": round(half, 4),
+        "checks": round(half * CHECKS_PER_SPHERE / 2.0, 4),  # the rectangle's uv spans 2 * half
+    }
+
+
 def installed_version() -> str:
     try:
         return dist_version("cnlmc")
@@ -346,6 +361,8 @@ def render_xml(entries: list[dict[str, Any]], options: Options, env: jinja2.Envi
         resolution=options.resolution,
         max_depth=options.max_depth,
         envmap=options.envmap,
+        backdrop=backdrop(camera),
+        cnlm=options.bsdf == "cnlm",
         version=version,
     )
 

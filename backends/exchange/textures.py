@@ -51,16 +51,19 @@ def bake_textures(
     derive: Derive | None = None,
     *,
     main: str,
+    folder: str | None = None,
 ) -> tuple[Textures, list[Artifact]]:
     """Bake the material's maps (the roles given, default all) into image Artifacts in the folder of
     the document's main file (`main`: its name when -o names a folder, e.g. "materials.mtlx").
 
     `derive(arrays) -> arrays` may add roles computed from the baked ones (e.g. Mitsuba's
-    alpha = roughness^2). Returns role -> Texture and the artifacts (bytes) to write.
+    alpha = roughness^2). `folder` replaces the main file's folder (a usdz keeps its textures
+    inside the package, under a folder whose name holds no `.usdz`). Returns role -> Texture and
+    the artifacts (bytes) to write.
     """
     if options.maps == "none" or not any(roles is None or role in roles for role in material.maps):
         return {}, []
-    folder = texture_folder(options.output, main)
+    folder = texture_folder(options.output, main) if folder is None else folder
     images = bake_images(material, options.map_size, options.map_format, options.seed, ident, folder, roles, derive)
     textures = {
         role: Texture(role, image.name, texture_encoding(role, options.map_format)) for role, image in images.items()

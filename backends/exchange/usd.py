@@ -15,27 +15,32 @@ from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
-from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade, UsdUtils
+from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade
 
 from cnlmc.material import Document, Material
 
 from ..base import Artifact, Option, Options, Target, emit_each
 from ..capabilities import ALL_FEATURES, EmitResult
 from . import materialx as mtlx_backend
+from . import usdz
 from .conversions import alpha_pair, alpha_to_roughness, clip01, conductor_f0, rounded
 from .naming import MaterialIdents, display_name, identifier, phrase_text, unique_identifiers
 from .options import Capabilities, capabilities_for, map_options
 from .textures import Texture, Textures, bake_textures
 
 FORMATS = ("usda", "usdc", "usdz")
+NETWORK_SET = "network"  # preview: UsdPreviewSurface only; materialx: + the MaterialX network (needs usdMtlx)
+NETWORKS = ("preview", "materialx")
 OPTIONS = (
-    *map_options(),
+    *map_options(mtlx_backend.MAP_MODES),  # native: MaterialX nodes in the MaterialX network, baked for the preview
     Option("format", str, None, choices=FORMATS, doc="the file format (default: the suffix of -o, else usda)"),
     Option("mesh", str, "none", choices=("none", "sphere"), doc="sphere: a preview sphere bound to each material"),
     Option("surface", str, "open_pbr_surface", choices=mtlx_backend.SURFACES, doc="the MaterialX network's shader"),
     Option("root", str, "Root", doc="the name of the stage's default prim"),
+    Option("network", str, "preview", choices=NETWORKS, doc="the `network` variant selected in the file"),
 )
 VARIANT_SET = "material"
+PACKAGE_TEXTURES = "textures"  # a usdz's textures, inside the package
 STEM = "materials"  # the stage's file name (before its suffix) when -o names a folder
 
 KEPT = "(the MaterialX network beside it keeps it)"
@@ -172,33 +177,65 @@ def author_uv_texture(
 # ---------------------------------------------------------------------- MaterialX network
 
 
-def author_materialx(stage: Any, material_prim: Any, material: Material, textures: Textures, surface: str) -> None:
-    """The 'materialx' backend's document for this material, as UsdShade prims with ND_* ids."""
-    ident = identifier(material.name)
-    doc = mtlx_backend.build_document([material], surface, {ident: textures}, [ident])
+def author_materialx(
+    stage: Any, material_prim: Any, material: Material, textures: Textures, surface: str, natives: Any = None
+) -> None:
+    """The 'materialx' backend's document for this material, as UsdShade prims with ND_* ids: the
+    surface shader directly in the Material (validation wants connectable ancestors), each MaterialX
+    node graph as a UsdShade NodeGraph beside it with its outputs."""
+    ident, natives = identifier(material.name), natives or {}
+    baked = {role: texture for role, texture in textures.items() if role not in natives}  # the rest: native nodes
+    doc = mtlx_backend.build_document([material], surface, {ident: baked}, [ident], {ident: natives})
     mtlx_backend.validate(doc, mtlx_backend.TARGET.library)
-    scope = material_prim.GetPath()  # shaders sit directly in the Material (a connectable container)
-    shaders = {}
-    nodes = [n for n in doc.getNodes() if n.getCategory() != "surfacematerial"]
-    for node in nodes:
-        shader = UsdShade.Shader.Define(stage, scope.AppendChild(node.getName()))
-        shader.CreateIdAttr(node.getNodeDef().getName())
-        shaders[node.getName()] = (node, shader)
-    for node, shader in shaders.values():
-        _author_mx_inputs(node, shader, shaders)
-    (sr_name,) = [n.getName() for n in nodes if n.getType() == "surfaceshader"]
-    out = shaders[sr_name][1].CreateOutput("out", Sdf.ValueTypeNames.Token)
+    scope = material_prim.GetPath()
+    shaders: Shaders = {}
+    for graph in mtlx_backend.node_graphs(doc):
+        graph_path = UsdShade.NodeGraph.Define(stage, scope.AppendChild(graph.getName())).GetPath()
+        for node in graph.getNodes():
+            define_mx_shader(stage, graph_path, graph.getName(), node, shaders)
+    top = [n for n in doc.getNodes() if n.getCategory() != "surfacematerial"]
+    for node in top:
+        define_mx_shader(stage, scope, "", node, shaders)
+    for (graph_name, _), (node, shader) in shaders.items():
+        _author_mx_inputs(stage, scope, graph_name, node, shader, shaders)
+    (sr_name,) = [n.getName() for n in top if n.getType() == "surfaceshader"]
+    out = shaders[("", sr_name)][1].CreateOutput("out", Sdf.ValueTypeNames.Token)
     material_prim.CreateSurfaceOutput("mtlx").ConnectToSource(out)
 
 
-def _author_mx_inputs(node: Any, shader: Any, shaders: dict[str, tuple[Any, Any]]) -> None:
+Shaders = dict[tuple[str, str], tuple[Any, Any]]  # (graph name or "", node name) -> (mx node, usd shader)
+
+
+def define_mx_shader(stage: Any, parent: Any, graph_name: str, node: Any, shaders: Shaders) -> None:
+    shader = UsdShade.Shader.Define(stage, parent.AppendChild(node.getName()))
+    shader.CreateIdAttr(node.getNodeDef().getName())
+    shaders[(graph_name, node.getName())] = (node, shader)
+
+
+def _mx_output(shaders: Shaders, graph_name: str, node_name: str) -> Any:
+    node, shader = shaders[(graph_name, node_name)]
+    return shader.CreateOutput("out", MX_TYPES[node.getType()][0])
+
+
+def _connect_graph_output(stage: Any, scope: Any, mx_input: Any, shaders: Shaders) -> Any:
+    """A top-level shader input fed by a MaterialX node graph output -> the UsdShade NodeGraph output."""
+    graph_name, output_name = mx_input.getNodeGraphString(), mx_input.getOutputString()
+    graph = UsdShade.NodeGraph(stage.GetPrimAtPath(scope.AppendChild(graph_name)))
+    mx_output = mx_input.getConnectedOutput()
+    output = graph.CreateOutput(output_name, MX_TYPES[mx_output.getType()][0])
+    output.ConnectToSource(_mx_output(shaders, graph_name, mx_output.getNodeName()))
+    return output
+
+
+def _author_mx_inputs(stage: Any, scope: Any, graph_name: str, node: Any, shader: Any, shaders: Shaders) -> None:
     for mx_input in node.getInputs():
         sdf_type, convert = MX_TYPES[mx_input.getType()]
         usd_input = shader.CreateInput(mx_input.getName(), sdf_type)
-        upstream = mx_input.getNodeName()
-        if upstream:
-            up_node, up_shader = shaders[upstream]
-            usd_input.ConnectToSource(up_shader.CreateOutput("out", MX_TYPES[up_node.getType()][0]))
+        if mx_input.getNodeGraphString():
+            usd_input.ConnectToSource(_connect_graph_output(stage, scope, mx_input, shaders))
+            continue
+        if mx_input.getNodeName():
+            usd_input.ConnectToSource(_mx_output(shaders, graph_name, mx_input.getNodeName()))
             continue
         value = mx_input.getValue()
         assert convert is not None, f"a {mx_input.getType()} input holds no value"
@@ -210,9 +247,20 @@ def _author_mx_inputs(node: Any, shader: Any, shaders: dict[str, tuple[Any, Any]
 # ------------------------------------------------------------------------------ materials
 
 
-def author_network(stage: Any, material_prim: Any, material: Material, textures: Textures, surface: str) -> None:
+def author_network(
+    stage: Any, material_prim: Any, material: Material, textures: Textures, surface: str, natives: Any = None
+) -> None:
+    """The preview network, and the MaterialX network inside the `network` VariantSet's `materialx`
+    variant: a USD without usdMtlx (pip usd-core) knows no `ND_*` shader, so the stage validates
+    everywhere with `preview` selected (the default) and a full USD build selects `materialx`."""
     author_preview(stage, material_prim, material, textures)
-    author_materialx(stage, material_prim, material, textures, surface)
+    networks = material_prim.GetPrim().GetVariantSets().AddVariantSet(NETWORK_SET)
+    for name in NETWORKS:
+        networks.AddVariant(name)
+    networks.SetVariantSelection("materialx")
+    with networks.GetVariantEditContext():
+        author_materialx(stage, material_prim, material, textures, surface, natives)
+    networks.ClearVariantSelection()  # the Material's own selection (author_group) decides
 
 
 def record_phrase(material_prim: Any, material: Material) -> None:
@@ -235,7 +283,21 @@ def groups_of(materials: Sequence[Material]) -> list[tuple[str, list[int]]]:
             groups[key] = []
             order.append((variant.group if variant else material.name, key))
         groups[key].append(i)
-    return [(name, groups[key]) for name, key in order]
+    return [(group_prim_name(name, [materials[i] for i in groups[key]]), groups[key]) for name, key in order]
+
+
+def group_prim_name(group: str, materials: Sequence[Material]) -> str:
+    """A variant group's prim is named for the whole phrase ('red or green glass' ->
+    red_or_green_glass) when the compiler named the group after its first alternative (red_glass
+    would hold green too); a name the user gave (`hull: red or green glass`) is kept."""
+    first = materials[0].variant
+    if first is None or len(materials) < 2:
+        return group
+    words = set(group.split("_"))
+    own = set(identifier(first.name).split("_"))
+    others = {w for m in materials[1:] if m.variant for w in identifier(m.variant.name).split("_")}
+    named_after_first = own <= words and not (others - own) & words
+    return identifier(phrase_text(materials[0])) if named_after_first else group
 
 
 def author_materials(
@@ -244,12 +306,14 @@ def author_materials(
     materials: Sequence[Material],
     textures: Sequence[Textures],
     surface: str = "open_pbr_surface",
+    natives: Sequence[Any] | None = None,
+    network: str = "preview",
 ) -> list[Any]:
     """Author every IR material (variant groups as one prim) under `looks`."""
     groups = groups_of(materials)
+    natives = natives or [{}] * len(materials)
     prims = []
-    for prim_name, (group_name, indices) in zip(unique_identifiers(n for n, _ in groups), groups):
-        del group_name
+    for prim_name, (_, indices) in zip(unique_identifiers(n for n, _ in groups), groups):
         prims.append(
             author_group(
                 stage,
@@ -257,29 +321,50 @@ def author_materials(
                 [materials[i] for i in indices],
                 [textures[i] for i in indices],
                 surface,
+                [natives[i] for i in indices],
+                network,
             )
         )
     return prims
 
 
 def author_group(
-    stage: Any, path: Any, materials: Sequence[Material], textures: Sequence[Textures], surface: str
+    stage: Any,
+    path: Any,
+    materials: Sequence[Material],
+    textures: Sequence[Textures],
+    surface: str,
+    natives: Sequence[Any] | None = None,
+    network: str = "preview",
 ) -> Any:
     material_prim = UsdShade.Material.Define(stage, path)
     record_phrase(material_prim, materials[0])
+    natives = natives or [{}] * len(materials)
     if len(materials) == 1 and materials[0].variant is None:
-        author_network(stage, material_prim, materials[0], textures[0], surface)
-        return material_prim
+        author_network(stage, material_prim, materials[0], textures[0], surface, natives[0])
+    else:
+        author_variants(stage, material_prim, materials, textures, surface, natives)
+    material_prim.GetPrim().GetVariantSets().GetVariantSet(NETWORK_SET).SetVariantSelection(network)
+    return UsdShade.Material(stage.GetPrimAtPath(path))  # the selection recomposed the prim: a fresh handle
+
+
+def author_variants(
+    stage: Any,
+    material_prim: Any,
+    materials: Sequence[Material],
+    textures: Sequence[Textures],
+    surface: str,
+    natives: Sequence[Any],
+) -> None:
     vset = material_prim.GetPrim().GetVariantSets().AddVariantSet(VARIANT_SET)
     names = unique_identifiers(m.variant.name if m.variant else m.name for m in materials)
-    for name, material, tex in zip(names, materials, textures):
+    for name, material, tex, native in zip(names, materials, textures, natives):
         vset.AddVariant(name)
         vset.SetVariantSelection(name)
         with vset.GetVariantEditContext():
-            author_network(stage, material_prim, material, tex, surface)
+            author_network(stage, material_prim, material, tex, surface, native)
             material_prim.GetPrim().SetCustomDataByKey("cnlmc:material", identifier(material.name))
     vset.SetVariantSelection(names[0])
-    return material_prim
 
 
 # ---------------------------------------------------------------------------- preview mesh
@@ -330,13 +415,21 @@ def bind(prim: Any, material: Any) -> None:
     UsdShade.MaterialBindingAPI(prim).Bind(material)
 
 
+# Preview spheres at a real-world size (the stage is 1 m per unit): 10 cm across, 5 cm apart.
+# Our choice: the size of a sample ball on a desk in AR.
+SPHERE_RADIUS, SPHERE_GAP = 0.05, 0.05
+
+
 def author_preview_meshes(stage: Any, root: Any, materials: Sequence[Any]) -> None:
     UsdGeom.Scope.Define(stage, root.AppendChild("Preview"))
+    step = 2 * SPHERE_RADIUS + SPHERE_GAP
+    first = -step * (len(materials) - 1) / 2  # centred on the origin
     for i, material in enumerate(materials):
         mesh = uv_sphere(
             stage,
             root.AppendChild("Preview").AppendChild(f"Sphere_{material.GetPrim().GetName()}"),
-            (i * 2.5, 0.0, 0.0),
+            (round(first + i * step, 6), SPHERE_RADIUS, 0.0),  # resting on the ground plane y = 0
+            SPHERE_RADIUS,
         )
         bind(mesh.GetPrim(), material)
 
@@ -364,7 +457,8 @@ def build_stage(materials: Sequence[Material], options: Options, textures: Seque
     stage, root = new_stage(options.root)
     looks = root.AppendChild("Looks")
     UsdGeom.Scope.Define(stage, looks)
-    prims = author_materials(stage, looks, materials, textures, options.surface)
+    natives = [mtlx_backend.native_maps(m) if options.maps == "native" else {} for m in materials]
+    prims = author_materials(stage, looks, materials, textures, options.surface, natives, options.network)
     if options.mesh == "sphere":
         author_preview_meshes(stage, root, prims)
     return stage
@@ -376,16 +470,15 @@ def export(stage: Any, fmt: str, images: list[Artifact], stem: str = STEM) -> li
     with tempfile.TemporaryDirectory(prefix="cnlmc-usd-") as tmp:
         layer_path = Path(tmp) / f"{stem}.usdc"
         stage.GetRootLayer().Export(str(layer_path))
-        if fmt == "usdc":
-            return [Artifact(layer_path.name, layer_path.read_bytes(), "binary")] + images
-        for image in images:  # usdz: the textures travel inside the package
-            target = Path(tmp) / image.name
-            target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_bytes(image.content if isinstance(image.content, bytes) else image.content.encode())
-        package = Path(tmp) / f"{stem}.usdz"
-        if not UsdUtils.CreateNewUsdzPackage(Sdf.AssetPath(str(layer_path)), str(package)):
-            raise RuntimeError("usd: could not write the usdz package")
-        return [Artifact(package.name, package.read_bytes(), "binary")]
+        layer = layer_path.read_bytes()
+    if fmt == "usdc":
+        return [Artifact(layer_path.name, layer, "binary")] + images
+    files = [(layer_path.name, layer)] + [(image.name, _bytes(image)) for image in images]
+    return [Artifact(f"{stem}.usdz", usdz.package(files), "binary")]  # the textures travel inside
+
+
+def _bytes(artifact: Artifact) -> bytes:
+    return artifact.content if isinstance(artifact.content, bytes) else artifact.content.encode()
 
 
 class UsdTarget(Target):
@@ -401,8 +494,15 @@ class UsdTarget(Target):
 
         def bake(material: Material) -> list[Artifact]:
             ident = idents[material]
-            main = f"{STEM}.{output_format(options)}"
-            textures[ident], images = bake_textures(material, ident, options, roles=tuple(PREVIEW_TEXTURES), main=main)
+            fmt = output_format(options)
+            textures[ident], images = bake_textures(
+                material,
+                ident,
+                options,
+                roles=tuple(PREVIEW_TEXTURES),
+                main=f"{STEM}.{fmt}",
+                folder=PACKAGE_TEXTURES if fmt == "usdz" else None,
+            )
             return images
 
         baked = emit_each(self, document, bake, lambda material: table)

@@ -57,6 +57,7 @@ def author_material(
     texture_dir: str | Path | None = None,
     map_size: int = 512,
     surface: str = "open_pbr_surface",
+    network: str = "preview",
 ) -> UsdShade.Material:
     """Author `phrase` as a UsdShade.Material at `path` (an "or" phrase: one prim with a VariantSet)
     and bind it to the prims at `bind_to`. Returns the UsdShade.Material. A prim authored there
@@ -66,6 +67,9 @@ def author_material(
     stage's root layer, or to the current folder for a stage in memory), in the prim's own folder
     there; asset paths are relative (`./tex/...`) to the root layer's folder when the layer is on
     disk, else as `texture_dir` gives them. Without `texture_dir` maps are left out.
+    `network`: the selected variant of the Material's `network` VariantSet ("preview": only
+    UsdPreviewSurface, valid on every USD build; "materialx": also the MaterialX network, for a
+    USD build with usdMtlx). Both variants are always authored.
     Raises ValueError with the rendered diagnostics for a phrase that does not compile.
     """
     materials = compile_phrase_materials(phrase, lexicon, seed)
@@ -83,7 +87,7 @@ def author_material(
         UsdGeom.Scope.Define(stage, parent)
     if stage.GetPrimAtPath(sdf_path).IsValid():
         stage.RemovePrim(sdf_path)  # re-authoring replaces: no old input, variant or shader survives
-    material_prim = backend.author_group(stage, sdf_path, materials, textures, surface)
+    material_prim = backend.author_group(stage, sdf_path, materials, textures, surface, network=network)
     for prim in targets:
         backend.bind(prim, material_prim)
     return material_prim

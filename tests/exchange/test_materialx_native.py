@@ -13,7 +13,7 @@ from cnlmc.api import emit  # noqa: E402
 from cnlmc.backends.exchange import materialx_native as native  # noqa: E402
 
 from .conftest import FAST, ir_of  # noqa: E402
-from .test_materialx import check_document, glsl  # noqa: E402,F401
+from .test_materialx import check_document, glsl, graph_node, graph_nodes, source_node_name  # noqa: E402,F401
 
 # phrase -> (native node categories expected, roles native, roles baked)
 CASES = {
@@ -37,9 +37,9 @@ def test_native_maps(phrase, surface, mx_library, glsl):  # noqa: F811
     material = ir["materials"][0]
     assert set(material["maps"]) == native_roles | baked_roles  # the phrase still has these maps
     doc, result = check_document(ir, {"surface": surface, "maps": "native"}, mx_library, glsl)
-    present = {n.getCategory() for n in doc.getNodes()}
+    present = {n.getCategory() for n in graph_nodes(doc)}
     assert categories <= present
-    images = {n.getName() for n in doc.getNodes("image")}
+    images = {n.getName() for n in graph_nodes(doc, "image")}
     assert images == {f"{material['name']}_{role}_image" for role in baked_roles}
     assert {a.name for a in result.artifacts[1:]} == {
         f"textures/materials.mtlx/{material['name']}_{role}.png" for role in baked_roles
@@ -56,10 +56,10 @@ def test_rust_mask_drives_metalness(mx_library, glsl):  # noqa: F811
     doc, _ = check_document(ir_of("heavily rusted iron"), {"maps": "native"}, mx_library, glsl)
     shader = doc.getChild("SR_heavily_rusted_iron")
     metalness = shader.getInput("base_metalness")
-    assert metalness.getNodeName() == "heavily_rusted_iron_rust_metallic"
-    assert doc.getNode("heavily_rusted_iron_rust_metallic").getCategory() == "subtract"
+    assert source_node_name(metalness) == "heavily_rusted_iron_rust_metallic"
+    assert graph_node(doc, "heavily_rusted_iron_rust_metallic").getCategory() == "subtract"
     # colour, roughness and metalness share one mask
-    assert len([n for n in doc.getNodes() if n.getCategory() == "smoothstep"]) == 1
+    assert len([n for n in graph_nodes(doc) if n.getCategory() == "smoothstep"]) == 1
 
 
 def test_roughness_recipe_follows_the_material(mx_library, glsl):  # noqa: F811
@@ -72,23 +72,23 @@ def test_roughness_recipe_follows_the_material(mx_library, glsl):  # noqa: F811
         "seed": 0,
     }
     doc, result = check_document(ir, {"maps": "native"}, mx_library, glsl)
-    remap = doc.getNode(f"{material['name']}_sandblasted_roughness")
+    remap = graph_node(doc, f"{material['name']}_sandblasted_roughness")
     r = material["params"]["roughness"]
     assert remap.getInputValue("outlow") == pytest.approx(r - 0.1)
     assert remap.getInputValue("outhigh") == pytest.approx(r + 0.1)
-    assert any(n.getCategory() == "fractal2d" for n in doc.getNodes())
-    assert not doc.getNodes("image")
+    assert any(n.getCategory() == "fractal2d" for n in graph_nodes(doc))
+    assert not graph_nodes(doc, "image")
 
 
 def test_bake_stays_the_default(mx_library, glsl):  # noqa: F811
     doc, result = check_document(ir_of("polished granite"), {}, mx_library, glsl)
-    assert doc.getNodes("image")
-    assert not any(n.getCategory() in ("cellnoise2d", "worleynoise2d") for n in doc.getNodes())
+    assert graph_nodes(doc, "image")
+    assert not any(n.getCategory() in ("cellnoise2d", "worleynoise2d") for n in graph_nodes(doc))
 
 
 def test_maps_none_still_drops(mx_library, glsl):  # noqa: F811
     doc, result = check_document(ir_of("polished granite"), {"maps": "none"}, mx_library, glsl)
-    assert not doc.getNodes("image") and not doc.getNodes("cellnoise2d")
+    assert not graph_nodes(doc, "image") and not graph_nodes(doc, "cellnoise2d")
     assert {n.policy for n in result.notes if n.feature.startswith("maps.")} == {"drop"}
 
 

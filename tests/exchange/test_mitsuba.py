@@ -40,7 +40,7 @@ def test_scene_loads_and_renders(source, tmp_path):
     image = render(tmp_path)
     assert image.mean() > 0.01
     root = ET.fromstring(result.artifacts[0].content)
-    assert len(root.findall("shape")) == len(ir["materials"])
+    assert len(root.findall("shape[@type='sphere']")) == len(ir["materials"])  # one sphere each (+ the backdrop)
 
 
 def test_fragment_holds_only_bsdfs_and_loads(tmp_path):
