@@ -5,10 +5,11 @@ from __future__ import annotations
 
 import json
 import time
+from collections import Counter
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
 from cnlmc import __version__
 
@@ -26,7 +27,21 @@ from .work import target_options
 MANIFEST_NAME = "cnlmc-build.json"
 BUILT, UP_TO_DATE, FAILED = "built", "up to date", "failed"
 STATUSES = (BUILT, UP_TO_DATE, FAILED)
-Progress = Callable[[int, int, float], None]  # (tasks done, tasks in all, seconds since the start)
+
+
+class Done(NamedTuple):
+    """How far a build is, as its progress callback hears it after each task that ran."""
+
+    materials_done: int  # materials whose every target is built, up to date or failed
+    materials: int
+    tasks_done: int
+    tasks: int
+    seconds: float  # since the first task was handed out
+    ran: int  # tasks that ran (were not up to date) so far, of `to_run`
+    to_run: int
+
+
+Progress = Callable[[Done], None]
 
 
 @dataclass
@@ -38,6 +53,7 @@ class BuildReport:
     statuses: dict[tuple[str, str], str] = field(default_factory=dict)  # (material folder, target) -> status
     failures: list[tuple[str, str, str]] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
+    cpu_seconds: float = 0.0  # the workers' CPU time for the tasks that ran (not the catalogue's compile)
 
     def count(self, status: str, target: str | None = None) -> int:
         return sum(1 for (_, t), s in self.statuses.items() if s == status and target in (None, t))
@@ -80,43 +96,64 @@ def build_report(
     per_target = target_options(targets, options, size, seed)
     root = Path(out)
     compiled = read_catalog(Path(catalog), _lexicon(lexicon), seed, max_bytes)
-    tasks = list(_tasks(compiled.entries, per_target))
-    report = BuildReport({})
+    ledger = Ledger(root, compiled, list(_tasks(compiled.entries, per_target)))
+    ledger.run(_run(ledger.to_run, root, jobs, scheduler, results, pool), progress)
+    report = BuildReport(manifest(compiled, per_target, ledger.hashes, ledger.errors), ledger.statuses)
+    report.failures = _failures(compiled, ledger.errors)
     report.warnings = compiled.warnings
-    hashes: dict[tuple[str, str], dict[str, str]] = {}
-    errors: dict[tuple[str, str], str] = {}
-    to_run = []
-    for task in tasks:
-        done = up_to_date(root, task)
-        if done is None:
-            to_run.append(task)
-        else:
-            hashes[_place(task)] = done
-            report.statuses[_place(task)] = UP_TO_DATE
-    started = time.monotonic()
-    total = len(tasks)
-    finished = total - len(to_run)
-    by_folder = {task.folder: task for task in to_run}
-    for outcome in _run(to_run, root, jobs, scheduler, results, pool):
-        place = _place(by_folder[outcome.folder])
-        outcome = _deliver(outcome, root, by_folder[outcome.folder])
-        if outcome.ok:
-            hashes[place] = outcome.hashes
-            report.statuses[place] = BUILT
-        else:
-            errors[place] = outcome.error or ""
-            report.statuses[place] = FAILED
-        finished += 1
-        if progress is not None:
-            progress(finished, total, time.monotonic() - started)
-    for task in to_run:  # a runner that lost a task (it never should) fails it rather than hide it
-        if _place(task) not in report.statuses:
-            errors[_place(task)] = "error: the task did not finish; run the build again"
-            report.statuses[_place(task)] = FAILED
-    report.failures = _failures(compiled, errors)
-    report.manifest = manifest(compiled, per_target, hashes, errors)
+    report.cpu_seconds = ledger.cpu_seconds
     write_atomic(root / MANIFEST_NAME, _manifest_bytes(report.manifest))
     return report
+
+
+class Ledger:
+    """What each task of a build came to: up to date (found on disk), built or failed, with its
+    files' hashes or its error; and how far the build is."""
+
+    def __init__(self, root: Path, compiled: Catalog, tasks: list[Task]) -> None:
+        self.root = root
+        self.tasks = tasks
+        self.materials = len(compiled.entries)
+        self.hashes: dict[tuple[str, str], dict[str, str]] = {}
+        self.errors: dict[tuple[str, str], str] = {}
+        self.statuses: dict[tuple[str, str], str] = {}
+        self.to_run: list[Task] = []
+        self.cpu_seconds = 0.0
+        for task in tasks:
+            current = up_to_date(root, task)
+            if current is None:
+                self.to_run.append(task)
+            else:
+                self.hashes[_place(task)] = current
+                self.statuses[_place(task)] = UP_TO_DATE
+
+    def run(self, outcomes: Iterator[Outcome], progress: Progress | None) -> None:
+        started = time.monotonic()
+        left = Counter(_place(task)[0] for task in self.to_run)  # tasks still to finish, per material
+        finished = self.materials - len(left)
+        by_folder = {task.folder: task for task in self.to_run}
+        for ran, outcome in enumerate(outcomes, start=1):
+            task = by_folder[outcome.folder]
+            self.record(task, _deliver(outcome, self.root, task))
+            left[_place(task)[0]] -= 1
+            finished += left[_place(task)[0]] == 0
+            if progress is not None:
+                done = len(self.tasks) - len(self.to_run) + ran
+                seconds = time.monotonic() - started
+                progress(Done(finished, self.materials, done, len(self.tasks), seconds, ran, len(self.to_run)))
+        for task in self.to_run:  # a runner that lost a task (it never should) fails it rather than hide it
+            if _place(task) not in self.statuses:
+                self.record(task, Outcome(task.key, task.folder, task.target, error="error: the task did not finish"))
+
+    def record(self, task: Task, outcome: Outcome) -> None:
+        place = _place(task)
+        self.cpu_seconds += outcome.cpu_seconds
+        if outcome.ok:
+            self.hashes[place] = outcome.hashes
+            self.statuses[place] = BUILT
+        else:
+            self.errors[place] = outcome.error or ""
+            self.statuses[place] = FAILED
 
 
 def _place(task: Task) -> tuple[str, str]:
@@ -131,7 +168,9 @@ def _lexicon(specs: Iterable[str | Path]) -> Lexicon:
     folders = tuple(name for name in names if Path(name).is_dir())
     overlays = tuple(name for name in names if not Path(name).is_dir())
     try:
-        return cached_lexicon.__wrapped__(folders, overlays)
+        fresh = getattr(cached_lexicon, "__wrapped__", cached_lexicon)  # past its in-memory lru_cache
+        lexicon: Lexicon = fresh(folders, overlays)
+        return lexicon
     except LexiconError as exc:
         raise UsageError(f"lexicon: {exc}") from None
 

@@ -9,7 +9,7 @@ from typing import TextIO
 from cnlmc.backends.registry import Command
 
 from ..diagnostics import visible
-from .builder import FAILED, MANIFEST_NAME, STATUSES, BuildReport, build_report
+from .builder import FAILED, MANIFEST_NAME, STATUSES, BuildReport, Done, build_report
 from .runners import RESULT_MODES
 
 EXIT_OK, EXIT_FAILED = 0, 1
@@ -72,16 +72,22 @@ def _positive(text: str) -> int:
 
 
 class ProgressLine:
-    """`build: 12/40 tasks, 30%, ETA 8 s` on one terminal line, rewritten as tasks finish."""
+    """`build: 12/40 materials (30%, 36/120 tasks), ETA 8 s` on one terminal line, rewritten as
+    tasks finish; the ETA from the rate of the tasks that ran (up-to-date ones cost nothing)."""
 
     def __init__(self, stream: TextIO) -> None:
         self.stream = stream
         self.shown = False
 
-    def __call__(self, done: int, total: int, elapsed: float) -> None:
-        rate = done / elapsed if elapsed > 0 else 0.0
-        eta = f"ETA {(total - done) / rate:.0f} s" if rate > 0 and done < total else "done" if done >= total else ""
-        self.stream.write(f"\rbuild: {done}/{total} tasks, {100 * done // max(total, 1)}%, {eta}\x1b[K")
+    def __call__(self, done: Done) -> None:
+        rate = done.ran / done.seconds if done.seconds > 0 else 0.0
+        left = done.to_run - done.ran
+        eta = "done" if left == 0 else f"ETA {left / rate:.0f} s" if rate > 0 else ""
+        share = 100 * done.materials_done // max(done.materials, 1)
+        self.stream.write(
+            f"\rbuild: {done.materials_done}/{done.materials} materials ({share}%, "
+            f"{done.tasks_done}/{done.tasks} tasks), {eta}\x1b[K"
+        )
         self.stream.flush()
         self.shown = True
 

@@ -44,6 +44,7 @@ class Outcome:
     notes: list[str] = field(default_factory=list)
     error: str | None = None
     version: str = __version__
+    cpu_seconds: float = 0.0  # the worker's CPU time for the task (emit and, where it writes, the write)
 
     @property
     def ok(self) -> bool:

@@ -5,6 +5,7 @@ worker and on a Dask worker; each process imports a target once and keeps it for
 
 from __future__ import annotations
 
+import time
 from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -20,6 +21,7 @@ def run_task(task: Task, root: str | None) -> Outcome:
     """Emit the task's files. With `root` (the output folder, seen from this process) they are
     written there and only their hashes come back; without, their bytes come back too."""
     outcome = Outcome(task.key, task.folder, task.target)
+    start = time.process_time()
     try:
         emitted = get_target(task.target).emit_ir(task.document, task.options)
         files = [
@@ -37,6 +39,7 @@ def run_task(task: Task, root: str | None) -> Outcome:
         outcome.error = f"error: {exc}"
     except Exception as exc:  # a target's failure on one material fails that task, not the build
         outcome.error = f"error: the {task.target} target failed: {type(exc).__name__}: {exc}"
+    outcome.cpu_seconds = time.process_time() - start
     return outcome
 
 
