@@ -28,7 +28,7 @@ from .refine_missing_map import add_missing_map
 from .refine_target import item_words, move_sigma_too, note_unmoved_number, refine_weight, surface
 from .words import apply_group
 
-__all__ = ["apply_inline_refinements", "apply_refinement", "apply_refinement_line"]
+__all__ = ["apply_inline_refinements", "apply_refinement", "apply_refinement_line", "refine_property"]
 
 
 def apply_inline_refinements(state: MaterialState, ctx: Context) -> MaterialState:
@@ -114,6 +114,13 @@ def _refine_named(state: MaterialState, ctx: Context, item: ast.RefineItem, dire
         _refine_property(state, ctx, ctx.lexicon.require("properties", target.key), item, direction, weight)
     else:
         refine_adjective(state, ctx, ctx.lexicon.require("adjectives", target.key), item, direction, weight)
+
+
+def refine_property(
+    state: MaterialState, ctx: Context, prop: Entry, item: ast.RefineItem, direction: int, weight: float
+) -> None:
+    """One step of a property (properties.toml) in `direction`."""
+    _refine_property(state, ctx, prop, item, direction, weight)
 
 
 def _refine_property(
