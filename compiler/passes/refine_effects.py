@@ -46,7 +46,8 @@ def refine_adjective(
     applied = adjective.key in [k for k, _w in state.applied]
     effects = [e for e in effects_for(adjective, state) if e["param"] != "model"]
     if not applied and (brings_treatment(adjective) or not effects):
-        state.diagnostics.append(_absent(state, adjective, item))
+        if not _refined_as_property(state, ctx, item, direction, weight):  # 'more grainy' oak: more grain
+            state.diagnostics.append(_absent(state, adjective, item))
         return
     if not applied:
         state.diagnostics.append(
@@ -62,6 +63,24 @@ def refine_adjective(
     for role in adjective.get("maps", {}):
         for name in adjective.get("maps")[role].get("weighted", []):
             _refine_weighted_map(state, role, name, item, direction, Strength(w, weight))
+
+
+def _refined_as_property(
+    state: MaterialState, ctx: Context, item: ast.RefineItem, direction: int, weight: float
+) -> bool:
+    """'more grainy' on a wood: the word's stem is a map property of the material's map (grain)."""
+    from .refine import refine_property
+    from .refine_missing_map import map_property_of
+
+    prop = map_property_of(state, ctx, _target(item).text.lower())
+    if prop is None:
+        return False
+    message = (
+        f"read '{item_text(item)}' as '{item.word.text} {prop.key}' (the material's map has no '{_target(item).text}')"
+    )
+    state.diagnostics.append(note(item.span, "N104", message))
+    refine_property(state, ctx, prop, item, direction, weight)
+    return True
 
 
 def _absent(state: MaterialState, adjective: Entry, item: ast.RefineItem) -> Diagnostic:

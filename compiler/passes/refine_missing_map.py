@@ -19,7 +19,10 @@ from .base import noun_of
 from .refine_target import note, refine_weight
 from .words import apply_adjective
 
-__all__ = ["add_missing_map"]
+__all__ = ["add_missing_map", "map_property_of"]
+
+#: Endings that make an adjective of a map property's noun ('grainy', 'veiny', 'speckled'): our choice.
+PROPERTY_ENDINGS = ("y", "ey", "ed", "d")
 
 
 def add_missing_map(state: MaterialState, ctx: Context, item: ast.RefineItem) -> bool:
@@ -72,3 +75,25 @@ def _draws(ref: dict[str, object], name: str, graphs: list[str] | None) -> bool:
 def _applies(adjective: Entry, noun: Entry) -> bool:
     classes = adjective.get("applies_to")
     return not classes or noun.get("class") in classes or noun.key in classes
+
+
+def map_property_of(state: MaterialState, ctx: Context, word: str) -> Entry | None:
+    """'more grainy' on oak: 'grainy' is an adjective the material lacks ('textured'), but its stem
+    names a map property of a map the material has ('grain'): that property."""
+    for ending in PROPERTY_ENDINGS:
+        if not word.endswith(ending) or len(word) - len(ending) < 3:
+            continue
+        stem = word[: len(word) - len(ending)]
+        for entry in ctx.lexicon.lookup((stem,)):
+            name = entry.get("map_param") if entry.category == "properties" else None
+            graphs = entry.get("graphs") if name else None
+            if name and any(_has_param(ref, name, graphs) for ref in state.maps.values()):
+                return entry
+    return None
+
+
+def _has_param(ref: dict[str, object], name: str, graphs: list[str] | None) -> bool:
+    from ..graphs import graph_params
+
+    graph = str(ref.get("graph"))
+    return name in graph_params(graph) and (not graphs or graph in graphs)

@@ -77,6 +77,8 @@ def map_param(material, graph, name):
         ("walnut", "less grain", "wood", "grain", -1),
         ("maple", "more grain", "wood", "grain", 1),
         ("oak", "grainier", "wood", "grain", 1),
+        ("oak", "more grainy", "wood", "grain", 1),
+        ("walnut", "less grainy", "wood", "grain", -1),
     ],
 )
 def test_a_map_refinement_moves_the_graph_parameter_and_is_reported(lexicon, first, line, graph, param, way):
