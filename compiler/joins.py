@@ -97,7 +97,7 @@ class Joiner:
         if len(out) > 2 and self._is_coat_finish(out):
             self._coat_after(out, diags)
         _feature_colour_list(out, diags)
-        if len(out) > 1 and of_tag(out[-2], "FEATURE"):
+        if len(out) > 1:
             _feature_first(out, diags)
         if len(out) > 1 and of_tag(out[-1], "ADJ") and self.rules().postfix:
             self._postfix(out, diags)
@@ -381,28 +381,48 @@ def _feature_colour_list(out: list[Tagged], diags: list[Diagnostic]) -> None:
 
 #: The readings of the words a feature named before the material may take with it ('fine grain', 'gold vein').
 FEATURE_WORDS = frozenset(("ADV", "COLOR", "SHADE"))
+#: The readings of the material's own describing words a feature may stand before ('speckled white ceramic').
+MATERIAL_WORDS = frozenset(("ADV", "COLOR", "SHADE", "ADJ"))
 
 
 def _feature_first(out: list[Tagged], diags: list[Diagnostic]) -> None:
-    """'fine grain walnut', 'gold vein marble', 'subtle sheen plastic': a feature (with its degree or
-    colour words) right before the material at the end of a line with no 'with' is the feature
-    clause 'walnut with fine grain'; a word that is also a describing word or a noun ('patina':
-    patinated) keeps that reading."""
-    feature, noun = out[-2], out[-1]
-    if any(c.tag in ("ADJ", "NOUN") for c in feature.candidates) or not of_tag(noun, "NOUN") or noun.unknown:
+    """'fine grain walnut', 'gold vein marble', 'speckled granite': a feature (with its degree or colour
+    words) right before the material noun, before any 'with', is the feature clause ('walnut with fine
+    grain'), put first among the clauses after the noun ('speckled granite with a polished finish' =
+    'granite with speckles and with a polished finish'); a word that is also a describing word or a
+    noun ('patina': patinated) keeps that reading."""
+    n = next((k for k, t in enumerate(out) if of_tag(t, "WITH") or of_tag(t, "COMMA")), len(out)) - 1
+    if n < 1 or not of_tag(out[n], "NOUN") or out[n].unknown or any(t.unknown for t in out[:n]):
         return
-    if any(of_tag(t, "WITH") or of_tag(t, "COMMA") or t.unknown for t in out):
+    f = n - 1  # the feature, maybe before the material's own describing words ('speckled white ceramic')
+    while f > 0 and not of_tag(out[f], "FEATURE") and all(c.tag in MATERIAL_WORDS for c in out[f].candidates):
+        f -= 1
+    feature = out[f]
+    if not of_tag(feature, "FEATURE") or any(c.tag in ("ADJ", "NOUN") for c in feature.candidates):
         return
-    start = len(out) - 2
+    rest = out[n + 1 :]
+    if rest and not of_tag(rest[0], "WITH"):
+        return
+    noun = out[n]
+    start = f
     while start > 0 and any(c.tag in FEATURE_WORDS for c in out[start - 1].candidates):
         start -= 1
-    words = out[start:-1]
+    if start > 0 and of_tag(out[start - 1], "REFINE"):
+        return  # 'more grain oak': the comparative's target
+    words, own = out[start : f + 1], out[f + 1 : n]
     said = " ".join(t.text for t in words)
-    note = f"read '{said} {noun.text}' as '{noun.text} with {said}' (a feature named before the material)"
+    named = " ".join(t.text for t in (*own, noun))
+    note = f"read '{said} {named}' as '{named} with {said}' (a feature named before the material)"
     diags.append(Diagnostic(words[0].span.to(noun.span), Severity.NOTE, NOTE_CODE, note))
     at, col = noun.span.end, noun.span.col + noun.span.end - noun.span.start  # the clause's 'with': at the noun's end
     with_word = Tagged("with", Span(at, at, noun.span.line, col), (Candidate("WITH", "with", "keyword"),))
-    out[start:] = [noun, with_word, *words]
+    joint = []
+    if rest:  # 'and' before the clauses that follow: a span of its own (inside that 'with': no word starts there)
+        w = rest[0].span
+        joint = [
+            Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), (Candidate("AND", "and", "keyword"),))
+        ]
+    out[start:] = [*own, noun, with_word, *words, *joint, *rest]
 
 
 def _is_joint(word: Tagged) -> bool:

@@ -198,6 +198,7 @@ class WordFormation:
             self._derived,
             self._compound_first,
             self._wordnet,
+            self._feature_derived,
             self._split,
             self._head,
         )
@@ -417,7 +418,16 @@ class WordFormation:
         return None
 
     def _derived(self, word: str) -> Reading | None:
+        return self._suffixed(word, features=False)
+
+    def _feature_derived(self, word: str) -> Reading | None:
+        """'speckled', 'veiny': a feature's noun with a suffix, after WordNet ('sheeny' is shiny there)."""
+        return self._suffixed(word, features=True)
+
+    def _suffixed(self, word: str, features: bool) -> Reading | None:
         for rule in self.rules.suffixes:
+            if (rule["reads_as"] == ["FEATURE"]) != features:
+                continue
             for form in rule["forms"]:
                 if not word.endswith(form) or len(word) - len(form) < self.rules.min_part - 1:
                     continue

@@ -18,7 +18,7 @@ from .lexicon_schema import Checker, did_you_mean
 __all__ = ["RULE_TAGS", "check_rule_names", "check_rules", "empty_rules", "wordnet_file"]
 
 #: The tags a suffix rule may keep from its stem's reading (the grammar's open word classes).
-RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN")
+RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "FEATURE")
 
 _LISTS = {
     "punctuation": ("trailing", "leading", "quotes", "number_marks"),

@@ -78,6 +78,12 @@ def test_an_and_before_another_clause_is_not_a_colour_list(lexicon):
         ("gold vein marble", "marble with gold veins"),
         ("black speckle granite", "granite with black speckles"),
         ("subtle sheen plastic", "plastic with a subtle sheen"),
+        ("speckled granite", "granite with speckles"),
+        ("flecked terrazzo", "terrazzo with flecks"),
+        ("veiny marble", "marble with veins"),
+        ("speckled white ceramic", "white ceramic with speckles"),
+        ("speckled granite with a polished finish", "granite with speckles and a polished finish"),
+        ("dotted blue ceramic", "blue ceramic with dots"),
     ],
 )
 def test_a_feature_named_before_the_material_is_its_clause(lexicon, text, meaning):
