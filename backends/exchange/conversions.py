@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable
 
-from cnlmc.material import RGB, Params
+from cnlmc.material import RGB, Material, Params
 
 MU_82 = 1.0 / 7.0  # cos 82 degrees, rounded as OpenPBR does: the F82 angle
 DIGITS = 6  # values are rounded so documents are stable (golden files)
@@ -128,3 +128,20 @@ def standard_roughness(ax: float, ay: float) -> tuple[float, float]:
         return 0.0, 0.0
     a = min(1.0 - lo / hi, 0.98)
     return math.sqrt(math.sqrt(hi * lo) if lo > 0 else hi * math.sqrt(1 - a)), a
+
+
+# ------------------------------------------------------------------------- energy
+
+ALBEDO_MUS = 8  # Gauss-Legendre points in mu for the hemispherical average
+ALBEDO_SAMPLES = 256  # QMC samples per direction (cnlmc.bsdf.albedo): ~1e-3 for a diffuse lobe
+
+
+def hemispherical_albedo(material: Material) -> list[float]:
+    """2 integral A(mu) mu dmu, RGB: what a sphere under a white sky averages to."""
+    import numpy as np
+
+    from cnlmc.bsdf import albedo
+
+    x, w = np.polynomial.legendre.leggauss(ALBEDO_MUS)
+    mu = 0.5 * (x + 1.0)
+    return [float(v) for v in (w * mu) @ albedo(material, mu, n_samples=ALBEDO_SAMPLES)]

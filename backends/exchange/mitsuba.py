@@ -28,7 +28,7 @@ from cnlmc.material import Document, Material
 
 from ..base import Artifact, Option, Options, Target, emit_each
 from ..capabilities import ALL_FEATURES, EmitResult
-from .conversions import alpha_pair, alpha_to_roughness, clip01, conductor_f0, measured, rounded
+from .conversions import alpha_pair, alpha_to_roughness, clip01, conductor_f0, hemispherical_albedo, measured, rounded
 from .naming import MaterialIdents, described, xml_text
 from .options import Capabilities, capabilities_for, map_options
 from .textures import Texture, bake_textures
@@ -61,13 +61,20 @@ CAPABILITIES: Capabilities = {
         "rough conductors and glass take alpha_u/alpha_v directly, but the streaks follow "
         "the UV tangent (no rotation); an anisotropic plastic becomes `principled` (Disney diffuse, Schlick)",
     ),
-    "diffuse.oren_nayar": ("approximate", "Mitsuba 3 has no Oren-Nayar plugin: Lambertian `diffuse`"),
+    "diffuse.oren_nayar": (
+        "approximate",
+        "Mitsuba 3 has no Oren-Nayar plugin: Lambertian `diffuse` with the lobe's hemispherical albedo (its energy)",
+    ),
     "coat": (
         "approximate",
-        "Mitsuba 3 has no coating BSDF: `principled` with clearcoat 1 (Disney's GTR1 coat at a "
-        "fixed IOR 1.5, gloss from the coat roughness); a coated metal uses Schlick with base_color = f0",
+        "Mitsuba 3 has no coating BSDF: a coat over a plastic or paint is `roughplastic` (the coat's IOR and "
+        "alpha over the diffuse base, with internal reflection); over a metal or an anisotropic plastic "
+        "`principled` with clearcoat 1 (Disney's GTR1 coat at a fixed IOR 1.5, base not dimmed)",
     ),
-    "coat.color": ("drop", "principled's clear coat is colourless"),
+    "coat.color": (
+        "approximate",
+        "roughplastic: color^thickness tints the base under it; principled's coat is colourless",
+    ),
     "maps.base_color": BAKED,
     "maps.roughness": (
         "bake",
@@ -125,6 +132,8 @@ def plugin_for(material: Material) -> str:
     base = model.base
     if base == "diffuse":
         return "diffuse"
+    if model.coat and base == "dielectric" and not model.anisotropic:
+        return "coated"
     if model.coat or (base == "dielectric" and model.anisotropic):
         return "principled"
     mirror = max(alpha_pair(material.params)) < ALPHA_MIRROR
@@ -181,7 +190,12 @@ def roughness_props(material: Material, tex: BsdfTextures) -> list[Prop]:
 
 
 def diffuse_bsdf(material: Material, tex: BsdfTextures) -> Prop:
-    return node("diffuse", [colour("reflectance", material.params.base_color, tex.get("base_color"))])
+    """Lambert; an Oren-Nayar lobe (no Mitsuba plugin) keeps its energy: the reflectance is the
+    lobe's hemispherical albedo from the reference (conversions.hemispherical_albedo, #15 item 6)."""
+    colour_of: Iterable[float] = material.params.base_color
+    if material.model.diffuse == "oren_nayar" and "base_color" not in tex:
+        colour_of = hemispherical_albedo(material)
+    return node("diffuse", [colour("reflectance", colour_of, tex.get("base_color"))])
 
 
 def plastic_bsdf(material: Material, tex: BsdfTextures, rough: bool) -> Prop:
@@ -244,7 +258,26 @@ def principled_bsdf(material: Material, tex: BsdfTextures) -> Prop:
     return node("principled", props)
 
 
+def coated_bsdf(material: Material, tex: BsdfTextures) -> Prop:
+    """A clear coat over a plastic or paint: Mitsuba's `roughplastic` is exactly that stack (a
+    dielectric interface of the coat's IOR and alpha over a diffuse base, with internal reflection);
+    the base's own specular lobe vanishes under a coat of its index (the IR's relative IOR ~ 1), the
+    coat's colour^thickness tints what lies under it."""
+    params, coat = material.params, material.params.coat
+    assert coat is not None, "plugin_for chose 'coated' for a coated material"
+    tint = [max(float(c), 0.0) ** float(coat.thickness) for c in coat.color]
+    props = [
+        prop("string", "distribution", "ggx"),
+        prop("float", "alpha", max(float(coat.alpha[0]), ALPHA_MIRROR)),
+        prop("float", "int_ior", float(coat.ior)),
+        prop("float", "ext_ior", 1.0),
+        colour("diffuse_reflectance", [b * t for b, t in zip(params.base_color, tint)], tex.get("base_color")),
+    ]
+    return node("roughplastic", props)
+
+
 BUILDERS: Mapping[str, Callable[[Material, BsdfTextures], Prop]] = {
+    "coated": coated_bsdf,
     "diffuse": diffuse_bsdf,
     "principled": principled_bsdf,
     "roughplastic": functools.partial(plastic_bsdf, rough=True),

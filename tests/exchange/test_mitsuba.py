@@ -70,8 +70,8 @@ def bsdf_types(xml: str) -> dict[str, list[str]]:
     [
         ("gold", ["twosided", "roughconductor"]),
         ("polished gold", ["twosided", "conductor"]),
-        ("lightly brushed, blue anodized aluminum", ["twosided", "roughconductor"]),
-        ("clear-coated red car paint", ["twosided", "principled"]),
+        ("lightly brushed, blue anodized aluminum", ["twosided", "principled"]),  # a metal under its oxide (#15)
+        ("clear-coated red car paint", ["twosided", "roughplastic"]),  # a coat over paint is roughplastic (#15)
         ("glossy red plastic", ["twosided", "roughplastic"]),
         ("deep red velvet", ["twosided", "diffuse"]),
         ("glass", ["dielectric"]),

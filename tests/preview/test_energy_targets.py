@@ -27,7 +27,9 @@ SUBSET = [
     "black anodized aluminium",
     "matte black metal",
 ]
-UNCOATED_IN_MITSUBA = ["white plastic", "gold", "silver", "rough iron"]
+# Mitsuba's native plugins agree for these (Oren-Nayar as a Lambert of the lobe's albedo); a coat
+# over paint (roughplastic) is within 5-16 %, over a metal (principled) 3x off: bench/furnace.py
+MITSUBA_AGREES = ["white plastic", "white paper", "gold", "silver", "rough iron"]
 
 
 @pytest.fixture(scope="module")
@@ -62,7 +64,7 @@ def test_the_check_sees_a_wrong_material(renderer, furnace, white):
     assert abs(preview / ir - 1) > 0.2
 
 
-@pytest.mark.parametrize("phrase", UNCOATED_IN_MITSUBA)
+@pytest.mark.parametrize("phrase", MITSUBA_AGREES)
 def test_mitsuba_agrees_with_the_ir_under_a_white_sky(furnace, white, phrase):
     pytest.importorskip("mitsuba")
     scene, mus = white
