@@ -9,6 +9,8 @@ if command -v apt-get >/dev/null 2>&1 && [ "$(id -u)" = 0 ]; then
   apt-get install -y -qq --no-install-recommends \
     libegl1 libgl1 libegl-mesa0 libgl1-mesa-dri libatomic1 glslang-tools spirv-tools neovim libllvm19 \
     xvfb python3-tk libtk8.6 libtcl8.6 >/dev/null
+  # speech (cnlmc listen, issue #18): PortAudio for the microphone; espeak-ng and sox make the test utterances
+  apt-get install -y -qq --no-install-recommends libportaudio2 espeak-ng sox >/dev/null
 fi
 python3 -m venv .venv
 .venv/bin/python -m pip install -q -U pip
