@@ -1,9 +1,10 @@
 """One large document compiled on several processes (#13), with the bytes of one process.
 
 The lines are cut into chunks of CHUNK_LINES; worker k of n (a forked process) compiles chunks
-k, k+n, k+2n, ... and sends each chunk's result down its own pipe; the parent reads the chunks in
-document order (chunk j from worker j mod n), so a worker runs at most one chunk ahead and memory
-stays bounded. A chunk owns the materials whose line lies in it: its leading refinement lines
+k, k+n, k+2n, ... and sends each chunk's result down its own pipe; the parent takes each chunk's
+result as soon as it is sent (up to AHEAD_CHUNKS of one worker's held, waiting for an earlier
+chunk of another) and replays them in document order (chunk j from worker j mod n). So a worker
+slowed by a busy machine does not stall the others at every chunk, and memory stays bounded. A chunk owns the materials whose line lies in it: its leading refinement lines
 belong to the material above (the chunk before reads on past its end up to the next material).
 
 What a chunk sends is a list of events the parent replays exactly as analyze._streamed_states
@@ -24,8 +25,9 @@ import os
 import pickle
 import signal
 import sys
+from collections import deque
 from collections.abc import Iterator, Mapping
-from multiprocessing.connection import Connection
+from multiprocessing.connection import Connection, wait
 from typing import Any
 
 from . import ast
@@ -42,6 +44,7 @@ from .tagger import Tagger
 
 PARALLEL_MIN_LINES = 5000  # below this, starting the processes costs more than they save
 CHUNK_LINES = 1000
+AHEAD_CHUNKS = 3  # a worker's results the parent holds before it stops reading from that worker
 MAX_WORKERS = 8
 WORKERS_VARIABLE = "CNLMC_WORKERS"
 
@@ -104,8 +107,9 @@ def parallel_material_irs(
             pipes.append(receiver)
             processes.append(process)
         replay = _Replay(diags)
+        inbox = _Inbox(pipes, [len(chunks[k::count]) for k in range(count)])
         for j in range(len(chunks)):
-            yield from replay.events(_receive(pipes[j % count]))
+            yield from replay.events(inbox.take(j % count))
         for process in processes:
             process.join()
     finally:
@@ -117,17 +121,50 @@ def parallel_material_irs(
             pipe.close()
 
 
-def _receive(pipe: Connection) -> list[Event]:
+class _Inbox:
+    """The parent's reading: every worker's results taken as they are sent (at most AHEAD_CHUNKS
+    held per worker), handed out per worker in the order it sent them."""
+
+    def __init__(self, pipes: list[Connection], expected: list[int]) -> None:
+        self.pipes, self.left = pipes, list(expected)
+        self.held: list[deque[object]] = [deque() for _ in pipes]
+
+    def take(self, worker: int) -> list[Event]:
+        """The worker's next chunk's events (what the same document raises in one process, where
+        compiling that chunk failed)."""
+        while not self.held[worker]:
+            self._read_ready(worker)
+        result = self.held[worker].popleft()
+        if isinstance(result, BaseException):
+            raise result
+        events: list[Event] = result  # type: ignore[assignment]
+        return events
+
+    def _read_ready(self, needed: int) -> None:
+        """Wait for the needed worker's result, taking whatever the others have sent meanwhile."""
+        if not self.left[needed]:
+            raise RuntimeError(
+                f"a worker process sent less than it was given ({WORKERS_VARIABLE}=1 compiles in one process)"
+            )
+        open_to = [
+            k for k in range(len(self.pipes)) if self.left[k] and (k == needed or len(self.held[k]) < AHEAD_CHUNKS)
+        ]
+        ready = wait([self.pipes[k] for k in open_to])
+        for k in open_to:
+            if self.pipes[k] in ready:
+                self.held[k].append(_receive(self.pipes[k]))
+                self.left[k] -= 1
+
+
+def _receive(pipe: Connection) -> object:
+    """One result from a worker: its chunk's events or the exception compiling it raised."""
     try:
-        result = pipe.recv()
+        result: object = pipe.recv()
     except EOFError:
         raise RuntimeError(
             f"a worker process stopped before it sent its materials ({WORKERS_VARIABLE}=1 compiles in one process)"
         ) from None
-    if isinstance(result, BaseException):
-        raise result  # what the same document raises in one process
-    events: list[Event] = result
-    return events
+    return result
 
 
 class _Replay:
