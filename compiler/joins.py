@@ -99,48 +99,58 @@ class Joiner:
         _feature_colour_list(out, diags)
         if len(out) > 1:
             _feature_first(out, diags)
-        if len(out) > 1 and of_tag(out[-1], "ADJ") and self.rules().postfix:
+        if len(out) > 1 and _ends_in_describing(out) and self.rules().postfix:
             self._postfix(out, diags)
         return out
 
     def _made_of(self, tagged: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
-        """'Dielen aus Eiche' (an object, a `made_of` word of the rules, a material noun) = 'Eichendielen':
-        the material; the word's E001 goes."""
+        """'Dielen aus Eiche', 'Rohre aus verzinktem Stahl' (an object, a `made_of` word of the rules,
+        describing words, a material noun) = the material with its describing words; the word's E001 goes."""
         made_of = self.rules().made_of
         for k in range(1, len(tagged) - 1):
-            thing, word, material = tagged[k - 1 : k + 2]
-            if word.unknown and word.text.lower() in made_of and of_tag(thing, "OBJECT") and of_tag(material, "NOUN"):
-                if material.unknown:
-                    continue
-                diags[:] = [d for d in diags if not (d.span == word.span and d.code == "E001")]
-                made = of_tag(material, "NOUN")
-                span = thing.span.to(material.span)
-                text = f"{thing.text} {word.text} {material.text}"
-                note = f"read '{text}' as '{made[0].key}' (the material the {thing.text} are made of)"
-                diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, note))
-                return [*tagged[: k - 1], Tagged(text, span, made), *tagged[k + 2 :]]
+            thing, word = tagged[k - 1], tagged[k]
+            if not (word.unknown and word.text.lower() in made_of and of_tag(thing, "OBJECT")):
+                continue
+            j = k + 1
+            while (
+                j < len(tagged)
+                and not of_tag(tagged[j], "NOUN")
+                and any(c.tag in DESCRIBING for c in tagged[j].candidates)
+            ):
+                j += 1
+            if j == len(tagged) or tagged[j].unknown or not of_tag(tagged[j], "NOUN"):
+                continue
+            material = tagged[j]
+            diags[:] = [d for d in diags if not (d.span == word.span and d.code == "E001")]
+            made = of_tag(material, "NOUN")
+            said = " ".join(t.text for t in tagged[k - 1 : j + 1])
+            note = f"read '{said}' as '{made[0].key}' (the material the {thing.text} are made of)"
+            diags.append(Diagnostic(thing.span.to(material.span), Severity.NOTE, NOTE_CODE, note))
+            joined = Tagged(f"{thing.text} {word.text} {material.text}", material.span, made)
+            return [*tagged[: k - 1], *tagged[k + 1 : j], joined, *tagged[j + 1 :]]
         return tagged
 
     def _postfix(self, out: list[Tagged], diags: list[Diagnostic]) -> None:
-        """'Eiche geölt', 'Stahl gebürstet' (rules `postfix`, German): describing words after the noun
-        at the end of a line with no comma read as after a comma (the grammar's postfix form)."""
-        if any(of_tag(t, "COMMA") or of_tag(t, "WITH") for t in out):
+        """'Eiche geölt', 'Stahl gebürstet', 'Marmor poliert mit grauen Adern' (rules `postfix`, German):
+        describing words after the noun, at the end of the line or before its 'with', with no comma,
+        read as after a comma (the grammar's postfix form)."""
+        if any(of_tag(t, "COMMA") for t in out):
             return
-        start = len(out)
+        end = next((k for k, t in enumerate(out) if of_tag(t, "WITH")), len(out))
+        start = end
         while start > 0 and any(c.tag in ("ADJ", "ADV", "AND") for c in out[start - 1].candidates):
             start -= 1
-        while start < len(out) and of_tag(out[start], "AND"):
+        while start < end and of_tag(out[start], "AND"):
             start += 1
-        if start == 0 or start == len(out) or not of_tag(out[start - 1], "NOUN") or out[start - 1].unknown:
+        if start == 0 or start == end or not of_tag(out[start - 1], "NOUN") or out[start - 1].unknown:
             return
         first = out[start]
         at = first.span.start - 1  # the space before the word: a span of its own (the parser keys words by start)
         comma = Tagged(",", Span(at, at + 1, first.span.line, first.span.col - 1), _COMMA)
-        said = " ".join(t.text for t in out[start:])
-        note = (
-            f"read '{out[start - 1].text} {said}' as '{out[start - 1].text}, {said}' (describing words after the noun)"
-        )
-        diags.append(Diagnostic(out[start - 1].span.to(out[-1].span), Severity.NOTE, NOTE_CODE, note))
+        said = " ".join(t.text for t in out[start:end])
+        noun = out[start - 1].text
+        note = f"read '{noun} {said}' as '{noun}, {said}' (describing words after the noun)"
+        diags.append(Diagnostic(out[start - 1].span.to(out[end - 1].span), Severity.NOTE, NOTE_CODE, note))
         out.insert(start, comma)
 
     def _is_artifact_after(self, before: Tagged, word: Tagged, rest: list[Tagged]) -> bool:
@@ -350,6 +360,12 @@ def _plating_first(out: list[Tagged]) -> None:
         out[start:] = [out[-3], out[-2], *out[start:-3], out[-1]]
 
 
+def _ends_in_describing(out: list[Tagged]) -> bool:
+    """Whether the words before the first 'with' (or the line's end) end in a describing word."""
+    end = next((k for k, t in enumerate(out) if of_tag(t, "WITH")), len(out))
+    return end > 1 and bool(of_tag(out[end - 1], "ADJ"))
+
+
 def _feature_colour_list(out: list[Tagged], diags: list[Diagnostic]) -> None:
     """'flecks of red and green', 'veins of gold, grey and white': a feature's graph draws one colour
     (its color_r/g/b), so the first colour after 'of' is the feature's and the others are left out,
@@ -450,11 +466,11 @@ def may_join(tagged: list[Tagged]) -> bool:
     a COAT or FEATURE reading) before another word or after a noun (see Joiner.joined); or ends in
     an unknown word after a noun ("pewter tankard") or, with no 'with' or comma, in a describing
     word after a noun ("Eiche geölt")."""
-    noun_before = noun_seen = noun_before_last = False
+    noun_before = noun_seen = noun_before_last = described_noun = False
     plain = True  # no 'with', no comma
     final = tagged[-1] if tagged else None
     for word in tagged:
-        noun = head = False
+        noun = head = describing = False
         for candidate in word.candidates:
             tag = candidate.tag
             if tag == "OBJECT":
@@ -463,10 +479,15 @@ def may_join(tagged: list[Tagged]) -> bool:
                 noun = True
             elif tag == "COAT" or tag == "FEATURE" or tag == "PROP":  # PROP: 'coloured' (colour + -ed)
                 head = True
+            elif tag == "ADJ":
+                describing = True
             elif tag == "WITH" or tag == "COMMA":
+                if tag == "WITH" and described_noun and plain:  # "Marmor poliert mit grauen Adern"
+                    return True
                 plain = False
         if (noun and noun_before) or (head and (word is not final or noun_before)):
             return True
+        described_noun = describing and (noun_before or described_noun)
         noun_before_last, noun_before = noun_before, noun
         noun_seen = noun_seen or noun
     if final is None:

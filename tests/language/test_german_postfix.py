@@ -36,6 +36,7 @@ def look(lexicon, text):
         ("Buche geölt und gewachst", "Buche, geölt und gewachst"),
         ("Granit poliert", "Granit, poliert"),
         ("Stahl sandgestrahlt", "Stahl, sandgestrahlt"),
+        ("Marmor poliert mit grauen Adern", "Marmor, poliert, mit grauen Adern"),
     ],
 )
 def test_a_participle_after_the_noun_needs_no_comma(de, text, meaning):
@@ -53,6 +54,10 @@ def test_a_participle_after_the_noun_needs_no_comma(de, text, meaning):
         ("Rohre aus Messing", "Messing"),
         ("Fliesen aus Schiefer", "Schiefer"),
         ("Dielen aus Nussbaum", "Nussbaum"),
+        ("Rohre aus verzinktem Stahl", "verzinkter Stahl"),
+        ("Knöpfe aus Messing", "Messing"),
+        ("Dachrinne aus Zink", "Zink"),
+        ("Ohrringe aus Silber", "Silber"),
     ],
 )
 def test_object_aus_material_is_the_material(de, text, meaning):
