@@ -32,6 +32,7 @@ WHEN = {
     "anisotropic": "model.anisotropic",
     "oren_nayar": 'model.diffuse is "oren_nayar"',
     "always": "always (null when the model has no coat)",
+    "sheen": "the noun has a sheen (velvet, cloth: docs/bsdf.md 'Sheen')",
 }
 
 
@@ -237,6 +238,25 @@ class Params:
         doc="null, or the coat layer (the coat table below)",
         optional=True,
         required=True,
+    )
+    sheen_color: RGB | None = param(
+        default=None,
+        kind="rgb",
+        range=(0.0, 1.0),
+        unit="linear Rec.709",
+        when="sheen",
+        doc="the Charlie sheen's colour over the base (a fibre layer: velvet, cloth); null = no sheen",
+        optional=True,
+        noun=True,
+    )
+    sheen_roughness: float = param(
+        default=0.3,
+        kind="number",
+        range=(0.0, 1.0),
+        unit="perceptual r",
+        when="sheen",
+        doc="the sheen's roughness r; the Charlie lobe's alpha = r^2",
+        noun=True,
     )
     present: frozenset[str] = field(default=frozenset(), compare=True)
 

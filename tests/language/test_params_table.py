@@ -34,8 +34,13 @@ def test_derived_maps_keep_their_v1_values_and_order():
         "diffuse_roughness": (0.0, 1.6),
         "ior": (1.0, 5.0),
         "base_color": (0.0, 1.0),
+        "sheen_color": (0.0, 1.0),
+        "sheen_roughness": (0.0, 1.0),
     }
-    assert list(RANGES) == ["roughness", "anisotropy", "diffuse_roughness", "ior", "base_color"]
+    assert list(RANGES) == [
+        *("roughness", "anisotropy", "diffuse_roughness", "ior", "base_color"),
+        *("sheen_color", "sheen_roughness"),  # issue #15 item 5: velvet's and cloth's sheen
+    ]
     assert list(COAT_RANGES.items()) == [
         ("roughness", (0.0, 1.0)),
         ("ior", (1.0, 3.0)),
@@ -48,7 +53,10 @@ def test_derived_maps_keep_their_v1_values_and_order():
         "conductor": ("base_color", "roughness", "eta", "k", "f0", "f82"),
         "glass": ("base_color", "roughness", "ior"),
     }
-    assert NOUN_PARAMS == ("base_color", "roughness", "eta", "k", "f0", "f82", "ior", "diffuse_roughness")
+    assert NOUN_PARAMS == (
+        *("base_color", "roughness", "eta", "k", "f0", "f82", "ior", "diffuse_roughness"),
+        *("sheen_color", "sheen_roughness"),
+    )
 
 
 def test_every_row_is_documented_and_has_a_default():
