@@ -13,6 +13,7 @@ from .diagnostics import Diagnostic
 from .formulas import round6_list, rounded
 from .lexicon import Entry
 from .params import COAT_PARAMS, Params, params_by_model
+from .sheen_colour import sheen_params
 from .state import MaterialState, WordLists, step_json
 
 JSONDict = dict[str, Any]
@@ -63,6 +64,7 @@ def _params(
         out["anisotropy"] = rounded(p["anisotropy"])
         out["anisotropy_rotation"] = rounded(p.get("anisotropy_rotation", Params.anisotropy_rotation))
     out["coat"] = rounded(_coat(state.coat, convention)) if model["coat"] else None
+    out.update(sheen_params(p))
     return out
 
 
