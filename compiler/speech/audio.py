@@ -1,0 +1,96 @@
+"""Audio in: a WAV file or the microphone, as 16-bit mono PCM at the recogniser's rate, split into
+utterances at pauses (pocketsphinx's Segmenter, a voice-activity detector)."""
+
+from __future__ import annotations
+
+import io
+import wave
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..errors import UsageError
+from ..inputs import read_bytes
+from .recogniser import SpeechUnavailable, _pocketsphinx
+
+MAX_WAV_BYTES = 256 << 20  # our choice: about 2 hours of 16 kHz speech
+
+
+def read_wav(path: str, rate: int) -> bytes:
+    """A WAV file as 16-bit mono PCM at `rate` (other rates and channel counts are converted)."""
+    data = read_bytes(path, limit=MAX_WAV_BYTES, what="WAV file")
+    try:
+        with wave.open(io.BytesIO(data)) as w:
+            width, channels, source_rate = w.getsampwidth(), w.getnchannels(), w.getframerate()
+            frames = w.readframes(w.getnframes())
+    except (wave.Error, EOFError) as exc:
+        raise UsageError(
+            f"{path}: not a PCM WAV file ({exc}); convert it with: sox IN -r 16000 -c 1 -b 16 OUT.wav"
+        ) from None
+    if width not in (1, 2, 4):
+        raise UsageError(f"{path}: {8 * width}-bit samples are not supported; convert it with: sox IN -b 16 OUT.wav")
+    return to_pcm16(frames, width, channels, source_rate, rate)
+
+
+def to_pcm16(frames: bytes, width: int, channels: int, source_rate: int, rate: int) -> bytes:
+    kind = {1: np.uint8, 2: np.int16, 4: np.int32}[width]
+    samples = np.frombuffer(frames, dtype=kind).astype(np.float64)
+    if width == 1:
+        samples = (samples - 128.0) * 256.0
+    elif width == 4:
+        samples /= 65536.0
+    samples = samples.reshape(-1, channels).mean(axis=1) if channels > 1 else samples
+    if source_rate != rate and samples.size:
+        times = np.arange(int(samples.size * rate / source_rate)) * (source_rate / rate)
+        samples = np.interp(times, np.arange(samples.size), samples)
+    return bytes(np.clip(np.round(samples), -32768, 32767).astype("<i2").tobytes())
+
+
+def utterances(pcm: bytes, rate: int) -> Iterator[bytes]:
+    """The speech segments of `pcm`, in order."""
+    segmenter = _pocketsphinx().Segmenter(sample_rate=rate, window=0.5, ratio=0.9)
+    for segment in segmenter.segment(io.BytesIO(pcm)):
+        yield bytes(segment.pcm)
+
+
+def microphone(rate: int) -> Iterator[bytes]:
+    """Utterances from the default input device until interrupted (Ctrl-C)."""
+    sounddevice = _sounddevice()
+    try:
+        device = sounddevice.query_devices(kind="input")
+    except (ValueError, sounddevice.PortAudioError):
+        device = None
+    if not device:
+        raise UsageError("no audio input device here (no microphone found); give a recording with --from FILE.wav")
+    segmenter = _pocketsphinx().Segmenter(sample_rate=rate, window=0.5, ratio=0.9)
+    with sounddevice.RawInputStream(samplerate=rate, channels=1, dtype="int16") as stream:
+        for segment in segmenter.segment(_StreamReader(stream)):
+            yield bytes(segment.pcm)
+
+
+class _StreamReader:
+    """A sounddevice input stream read as a file of bytes (what Segmenter reads)."""
+
+    def __init__(self, stream: Any) -> None:
+        self.stream = stream
+
+    def read(self, size: int) -> bytes:
+        data, _overflowed = self.stream.read(size // 2)
+        return bytes(data)
+
+
+def _sounddevice() -> Any:
+    try:
+        import sounddevice
+    except (ImportError, OSError) as exc:  # OSError: the PortAudio library is missing
+        raise SpeechUnavailable(
+            f"the microphone needs sounddevice and PortAudio ({exc}); install them with: "
+            "pip install 'cnlmc[speech]' and apt-get install libportaudio2; or give --from FILE.wav"
+        ) from None
+    return sounddevice
+
+
+def is_wav(path: str) -> bool:
+    return Path(path).suffix.lower() in (".wav", ".wave")

@@ -1,0 +1,93 @@
+"""`cnlmc listen`: speak a material (from the microphone, or a WAV file with --from).
+
+Light on purpose: the CLI imports this module on every start; pocketsphinx and the audio library
+load only when the command runs."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from ..commands import (  # the targets through the front end (tests/test_layers.py)
+    EXIT_ERRORS,
+    EXIT_OK,
+    Command,
+    TargetUnavailable,
+    UnknownTarget,
+    add_lexicon_arguments,
+    deliver,
+    get_target,
+    lexicon_of,
+    print_notes,
+    run_target,
+)
+from ..errors import UsageError
+
+
+class ListenCommand(Command):
+    name = "listen"
+    help = "speak a material: the first phrase starts it, later ones refine it ('darker', 'undo')"
+
+    def add_arguments(self, parser: argparse.ArgumentParser) -> None:
+        parser.add_argument(
+            "--from", dest="wav", metavar="FILE.wav", help="a recording to read instead of the microphone"
+        )
+        parser.add_argument("--target", "-t", default="ir", help="backend: see `cnlmc targets` (default: ir)")
+        parser.add_argument("-o", "--output", help="output file or folder (default: stdout)")
+        parser.add_argument(
+            "--min-confidence",
+            type=float,
+            metavar="P",
+            help="apply an utterance only at or above this confidence, 0-1 (default: stdlib/speech/speech.toml)",
+        )
+        parser.add_argument(
+            "--grammar", action="store_true", help="print the recogniser's grammar (Sphinx FSG) and stop"
+        )
+        parser.add_argument("--option", action="append", default=[], metavar="KEY=VALUE", help="a backend option")
+        add_lexicon_arguments(parser)
+
+    def run(self, args: argparse.Namespace) -> int:
+        from .audio import microphone, read_wav, utterances
+        from .listen import SOURCE_NAME, Listener
+        from .model import SpeechModel
+        from .recogniser import SpeechUnavailable
+
+        try:
+            target = get_target(args.target)
+        except (UnknownTarget, TargetUnavailable) as exc:
+            raise UsageError(str(exc)) from None
+        lexicon = lexicon_of(args)
+        folders = [spec for spec in args.lexicon if Path(spec).is_dir()]
+        try:
+            model = SpeechModel.of(lexicon, folders)
+            if args.grammar:
+                sys.stdout.write(model.grammar.fsg_text())
+                return EXIT_OK
+            if model.unsayable:
+                words = " ".join(sorted(model.unsayable)[:10])
+                print(f"note: no pronunciation for: {words}; add them to speech/pronunciations.toml", file=sys.stderr)
+            rate = model.settings.sample_rate
+            audio = utterances(read_wav(args.wav, rate), rate) if args.wav else microphone(rate)
+            recogniser = model.recogniser()
+            threshold = model.settings.min_confidence if args.min_confidence is None else args.min_confidence
+            listener = Listener(lexicon, model.settings.undo, threshold, args.seed)
+            if not args.wav:
+                print("listening: say a material, then refinements ('darker', 'undo'); Ctrl-C ends", file=sys.stderr)
+            try:
+                for pcm in audio:
+                    for message in listener.hear(recogniser.decode(pcm)).messages:
+                        print(message, file=sys.stderr)
+            except KeyboardInterrupt:
+                pass
+        except SpeechUnavailable as exc:
+            raise UsageError(str(exc)) from None
+        if listener.result is None:
+            print("cnlmc listen: no material was applied", file=sys.stderr)
+            return EXIT_ERRORS
+        print(f"material ({SOURCE_NAME}):", *(f"  {line}" for line in listener.lines), sep="\n", file=sys.stderr)
+        emitted = run_target(target, listener.result, args)
+        if emitted is None:
+            return EXIT_ERRORS
+        print_notes(emitted)
+        return deliver(emitted.artifacts, args.output, protect=[args.wav] if args.wav else [])

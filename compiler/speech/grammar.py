@@ -1,0 +1,169 @@
+"""The recogniser's finite-state grammar, generated from a lexicon's sayable vocabulary.
+
+The structure follows grammar/cnl.lark (docs/language.md), flattened so that each word class is a
+set of parallel arcs between two states (a JSGF rule is copied at each reference, which made a
+grammar of this lexicon take 35 s to load): a material is [article] up to `max_describing`
+describing words (adverbs, shades, colours, adjectives, 'and', 'or'; a comparative first)
+then a noun [or a noun], then up to `max_clauses` 'with' clauses; a refinement is up to
+`max_items` items ([adverb] comparative [target]) or a 'with' clause; "undo" is the session's
+command. No state loops, and only the end of a noun, a clause, a refinement item or "undo" is
+final, so every accepted path is a complete phrase.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+from .settings import SpeechSettings
+from .vocabulary import Vocabulary
+
+Transition = tuple[int, int, float, str] | tuple[int, int, float]
+
+
+@dataclass
+class Grammar:
+    """States 0..count-1, start 0, one final state; word arcs carry a word, null arcs none."""
+
+    transitions: list[Transition] = field(default_factory=list)
+    count: int = 2  # 0 start, 1 final
+    start: int = 0
+    final: int = 1
+
+    def state(self) -> int:
+        self.count += 1
+        return self.count - 1
+
+    def words(self, source: int, target: int, forms: Iterable[str], probability: float = 1.0) -> None:
+        """An arc for each form (a multi-word form through states of its own), sharing `probability`."""
+        forms = list(dict.fromkeys(forms))
+        for form in forms:
+            words = form.split()
+            at = source
+            for word in words[:-1]:
+                step = self.state()
+                self.transitions.append((at, step, probability / len(forms) if at == source else 1.0, word))
+                at = step
+            self.transitions.append((at, target, probability / len(forms) if at == source else 1.0, words[-1]))
+
+    def skip(self, source: int, target: int, probability: float = 1.0) -> None:
+        self.transitions.append((source, target, probability))
+
+    def words_used(self) -> set[str]:
+        return {t[3] for t in self.transitions if len(t) == 4}
+
+    def fsg_text(self, name: str = "cnlmc") -> str:
+        """The grammar in Sphinx's FSG text format (what `cnlmc listen --grammar` prints)."""
+        lines = [
+            f"FSG_BEGIN {name}",
+            f"NUM_STATES {self.count}",
+            f"START_STATE {self.start}",
+            f"FINAL_STATE {self.final}",
+        ]
+        for t in self.transitions:
+            lines.append(f"TRANSITION {t[0]} {t[1]} {t[2]:.6g}" + (f" {t[3]}" if len(t) == 4 else ""))
+        return "\n".join([*lines, "FSG_END"]) + "\n"
+
+
+class GrammarBuilder:
+    def __init__(self, vocabulary: Vocabulary, settings: SpeechSettings) -> None:
+        self.forms = vocabulary.forms
+        self.settings = settings
+        self.grammar = Grammar()
+
+    def of(self, *categories: str) -> list[str]:
+        return [form for c in categories for form in self.forms.get(c, ())]
+
+    def build(self) -> Grammar:
+        g, s = self.grammar, self.settings
+        clauses = self.clauses()
+        material, refinement = g.state(), g.state()
+        g.skip(g.start, material)
+        g.skip(g.start, refinement)
+        g.words(g.start, g.final, s.undo)
+        self.material(material, clauses)
+        self.refinement(refinement, clauses)
+        return g
+
+    def describing(self, first: int, slots: int, comparatives: bool) -> list[int]:
+        """States first .. after `slots` describing words; each may go on to what follows."""
+        g = self.grammar
+        describing = self.of("adverbs", "shades", "colours", "adjectives")
+        states = [first]
+        joiners = [self.settings.and_word, self.settings.or_word]
+        for slot in range(slots):
+            following = g.state()
+            extra = joiners if slot else self.of("refinements") if comparatives else []
+            g.words(states[-1], following, describing + extra)
+            states.append(following)
+        return states
+
+    def material(self, begin: int, clauses: int) -> None:
+        g, s = self.grammar, self.settings
+        after_article = g.state()
+        g.words(begin, after_article, s.articles)
+        g.skip(begin, after_article)
+        noun = g.state()
+        for state in self.describing(after_article, s.max_describing, comparatives=True):
+            g.skip(state, noun)
+        named, second = g.state(), g.state()
+        g.words(noun, named, self.of("nouns"))
+        self.ending(named, clauses)
+        or_noun = g.state()
+        g.words(named, or_noun, [s.or_word])
+        g.words(or_noun, second, self.of("nouns"))
+        self.ending(second, clauses)
+
+    def ending(self, state: int, clauses: int) -> None:
+        """A complete phrase may end here or go on to its 'with' clauses."""
+        g = self.grammar
+        g.skip(state, g.final)
+        g.words(state, clauses, [self.settings.with_word])
+
+    def clauses(self) -> int:
+        """The 'with' clauses (after 'with'): [article] describing words, a coat or feature; 'and' another."""
+        g, s = self.grammar, self.settings
+        begin = g.state()
+        at = begin
+        for number in range(s.max_clauses):
+            after_article = g.state()
+            g.words(at, after_article, s.articles)
+            g.skip(at, after_article)
+            head, done = g.state(), g.state()
+            for state in self.describing(after_article, s.max_clause_describing, comparatives=False):
+                g.skip(state, head)
+            g.words(head, done, self.of("coats", "features"))
+            g.skip(done, g.final)
+            if number + 1 < s.max_clauses:
+                at = g.state()
+                g.words(done, at, [s.and_word, f"{s.and_word} {s.with_word}"])
+        return begin
+
+    def refinement(self, begin: int, clauses: int) -> None:
+        g, s = self.grammar, self.settings
+        g.words(begin, clauses, [s.with_word])
+        at = begin
+        for number in range(s.max_items):
+            comparative, done = g.state(), g.state()
+            g.words(at, comparative, self.of("adverbs"))
+            g.skip(at, comparative)
+            g.words(comparative, done, self.of("refinements"))
+            targeted = g.state()
+            g.words(done, targeted, self.of("colours", "adjectives", "properties"))
+            following = g.state()
+            for end in (done, targeted):
+                g.skip(end, g.final)
+                if number + 1 < s.max_items:
+                    g.words(end, following, [s.and_word])
+                    g.skip(end, following)
+            at = following
+
+
+def build_grammar(vocabulary: Vocabulary, settings: SpeechSettings) -> Grammar:
+    return GrammarBuilder(vocabulary, settings).build()
+
+
+def closed_words(settings: SpeechSettings) -> set[str]:
+    """The words the grammar adds to the vocabulary's: articles, joiners, the session's commands."""
+    phrases = [*settings.articles, settings.and_word, settings.or_word, settings.with_word, *settings.undo]
+    return {word for phrase in phrases for word in phrase.split()}

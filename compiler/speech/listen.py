@@ -1,0 +1,73 @@
+"""A spoken session: each utterance is a line of a material file, compiled as typed text is.
+
+The first applied utterance starts the material, later ones refine it ("darker", "more glossy");
+"undo" drops the last line. An utterance is applied only when its confidence reaches the
+threshold and the document still compiles without errors with it; otherwise the user sees what was
+heard, the alternatives and the compiler's diagnostics, and the material stays as it was.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ..api import Result, compile_source
+from ..diagnostics import render_all
+from ..lexicon import Lexicon
+from .recogniser import Hypothesis
+
+SOURCE_NAME = "<speech>"
+
+
+@dataclass(frozen=True)
+class Heard:
+    """What one utterance did: `applied` (a line added or 'undo' done), and what to tell the user."""
+
+    hypothesis: Hypothesis | None
+    applied: bool
+    messages: tuple[str, ...]
+
+
+@dataclass
+class Listener:
+    lexicon: Lexicon
+    undo_words: tuple[str, ...]
+    min_confidence: float
+    seed: int = 0
+    lines: list[str] = field(default_factory=list)
+    result: Result | None = None
+
+    def source(self, extra: tuple[str, ...] = ()) -> str:
+        return "\n".join([*self.lines, *extra])
+
+    def hear(self, hypothesis: Hypothesis | None) -> Heard:
+        if hypothesis is None:
+            return Heard(None, False, ("heard no phrase of the language (say it again, or closer to the microphone)",))
+        said = f"heard '{hypothesis.text}' (confidence {hypothesis.confidence:.2f})"
+        if hypothesis.confidence < self.min_confidence:
+            options = "; ".join(f"'{a}'" for a in hypothesis.alternatives) or "none"
+            return Heard(
+                hypothesis,
+                False,
+                (f"{said}: not applied, below {self.min_confidence:.2f}; alternatives: {options}; say it again",),
+            )
+        if hypothesis.text in self.undo_words:
+            return self._undo(hypothesis, said)
+        return self._apply(hypothesis, said)
+
+    def _undo(self, hypothesis: Hypothesis, said: str) -> Heard:
+        if not self.lines:
+            return Heard(hypothesis, False, (f"{said}: nothing to undo",))
+        dropped = self.lines.pop()
+        self.result = compile_source(self.source(), SOURCE_NAME, self.lexicon, self.seed) if self.lines else None
+        return Heard(hypothesis, True, (f"{said}: dropped '{dropped}'",))
+
+    def _apply(self, hypothesis: Hypothesis, said: str) -> Heard:
+        source = self.source((hypothesis.text,))
+        result = compile_source(source, SOURCE_NAME, self.lexicon, self.seed)
+        shown = tuple(render_all(result.diagnostics, source, SOURCE_NAME))
+        if not result.ok or not result.materials:
+            reason = "" if result.materials else " (it names no material yet: start with one, e.g. 'brushed aluminum')"
+            return Heard(hypothesis, False, (f"{said}: not applied{reason}", *shown))
+        self.lines.append(hypothesis.text)
+        self.result = result
+        return Heard(hypothesis, True, (f"{said}: line {len(self.lines)}", *shown))

@@ -1,0 +1,39 @@
+"""The speech model of one lexicon: its sayable vocabulary, pronunciations and grammar, and the
+recogniser loaded with them."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..lexicon import Lexicon
+from .grammar import Grammar, build_grammar, closed_words
+from .pronounce import Pronunciations
+from .recogniser import Recogniser, model_files
+from .settings import SpeechSettings
+from .vocabulary import Vocabulary, sayable_vocabulary
+
+
+@dataclass(frozen=True)
+class SpeechModel:
+    vocabulary: Vocabulary
+    grammar: Grammar
+    dictionary: str  # CMU-format pronunciations of every word of the grammar
+    unsayable: frozenset[str]  # words left out: no pronunciation anywhere
+    settings: SpeechSettings
+
+    @classmethod
+    def of(
+        cls, lexicon: Lexicon, folders: Iterable[str | Path] = (), settings: SpeechSettings | None = None
+    ) -> SpeechModel:
+        """The model of `lexicon`; `folders` are its user lexicon folders (their speech/pronunciations.toml)."""
+        settings = settings or SpeechSettings.bundled()
+        vocabulary = sayable_vocabulary(lexicon, settings)
+        pronunciations = Pronunciations(vocabulary.words() | closed_words(settings), model_files().dictionary, folders)
+        vocabulary = vocabulary.without(pronunciations.missing)
+        grammar = build_grammar(vocabulary, settings)
+        return cls(vocabulary, grammar, pronunciations.dictionary_text(), frozenset(pronunciations.missing), settings)
+
+    def recogniser(self) -> Recogniser:
+        return Recogniser(self.grammar, self.dictionary, self.settings)

@@ -1,0 +1,72 @@
+"""stdlib/speech/speech.toml: what may be said, the grammar's bounds and the confidence threshold."""
+
+from __future__ import annotations
+
+import tomllib
+from dataclasses import dataclass
+from importlib import resources
+from typing import Any
+
+
+def speech_data(name: str) -> str:
+    """The text of a bundled file of stdlib/speech/."""
+    return resources.files("cnlmc.stdlib").joinpath("speech").joinpath(name).read_text("utf-8")
+
+
+@dataclass(frozen=True)
+class SpeechSettings:
+    max_form_words: int
+    survey_colour_max_words: int
+    categories: tuple[str, ...]
+    articles: tuple[str, ...]
+    and_word: str
+    or_word: str
+    with_word: str
+    undo: tuple[str, ...]
+    max_describing: int
+    max_clause_describing: int
+    max_clauses: int
+    max_items: int
+    min_confidence: float
+    alternatives: int
+    sample_rate: int
+    spellings: tuple[tuple[str, str], ...]
+    nbest_paths: int
+    confidence_scale: float
+    decoder: dict[str, float]
+
+    def same_spelling(self, one: str, other: str) -> bool:
+        """Whether two forms differ only by spelling (British/American: 'aluminium', 'aluminum')."""
+        return _spelled(one, self.spellings) == _spelled(other, self.spellings)
+
+    @classmethod
+    def bundled(cls) -> SpeechSettings:
+        data: dict[str, Any] = tomllib.loads(speech_data("speech.toml"))
+        vocabulary, grammar, recogniser = data["vocabulary"], data["grammar"], data["recogniser"]
+        return cls(
+            max_form_words=int(vocabulary["max_form_words"]),
+            survey_colour_max_words=int(vocabulary["survey_colour_max_words"]),
+            categories=tuple(vocabulary["categories"]),
+            articles=tuple(grammar["articles"]),
+            and_word=str(grammar["and"]),
+            or_word=str(grammar["or"]),
+            with_word=str(grammar["with"]),
+            undo=tuple(grammar["undo"]),
+            max_describing=int(grammar["max_describing"]),
+            max_clause_describing=int(grammar["max_clause_describing"]),
+            max_clauses=int(grammar["max_clauses"]),
+            max_items=int(grammar["max_items"]),
+            min_confidence=float(recogniser["min_confidence"]),
+            alternatives=int(recogniser["alternatives"]),
+            sample_rate=int(recogniser["sample_rate"]),
+            nbest_paths=int(recogniser["nbest_paths"]),
+            confidence_scale=float(recogniser["confidence_scale"]),
+            decoder={str(k): float(v) for k, v in recogniser["decoder"].items()},
+            spellings=tuple((str(a), str(b)) for a, b in data["vocabulary"]["spellings"]),
+        )
+
+
+def _spelled(form: str, spellings: tuple[tuple[str, str], ...]) -> str:
+    for old, new in spellings:
+        form = form.replace(old, new)
+    return form
