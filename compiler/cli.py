@@ -18,6 +18,7 @@ from .cache import freeze_long_lived
 from .commands import EXIT_INTERNAL, EXIT_OK, EXIT_USAGE, LANGUAGE_COMMANDS
 from .diagnostics import visible
 from .errors import UsageError
+from .speech.command import ListenCommand  # light: pocketsphinx loads only when `listen` runs
 
 __all__ = ["build_parser", "main"]
 
@@ -36,7 +37,7 @@ def build_parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
         "'lightly brushed, blue anodized aluminum' into renderable materials.",
     )
     sub = parser.add_subparsers(dest="command", required=True)
-    for command in LANGUAGE_COMMANDS:
+    for command in (*LANGUAGE_COMMANDS, ListenCommand()):
         _add(sub.add_parser(command.name, help=command.help), command)
     chosen = chosen_command(argv)
     for name, entry in BUILTIN_COMMANDS.items():
@@ -44,7 +45,7 @@ def build_parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
         if name == chosen:
             with _loading():
                 _add(backend_parser, get_command(name))
-    if chosen is not None and chosen not in {c.name for c in LANGUAGE_COMMANDS} | set(BUILTIN_COMMANDS):
+    if chosen is not None and chosen not in {c.name for c in LANGUAGE_COMMANDS} | {"listen"} | set(BUILTIN_COMMANDS):
         with _loading():
             plugin = plugin_command(chosen)
         if plugin is not None:
