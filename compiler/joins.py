@@ -387,7 +387,7 @@ def _feature_colour_list(out: list[Tagged], diags: list[Diagnostic]) -> None:
                 said = "".join(t.text if of_tag(t, "COMMA") else f" {t.text}" for t in left)
                 note = (
                     f"read '{out[k - 2].text} of {first}{said}' as "
-                    f"'{out[k - 2].text} of {first}': the {out[k - 2].text} are drawn in one colour; "
+                    f"'{out[k - 2].text} of {first}': one colour is drawn for the {out[k - 2].text}; "
                     f"'{words}' left out"
                 )
                 diags.append(Diagnostic(left[0].span.to(left[-1].span), Severity.NOTE, NOTE_CODE, note))

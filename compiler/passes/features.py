@@ -68,6 +68,7 @@ def apply_feature(state: MaterialState, ctx: Context, entry: Entry, clause: ast.
     if entry.get("coat"):
         apply_coat_entry(state, ctx, entry.get("coat"), f"features.{entry.key}.coat", (clause.word,))
     _report_unused(state, entry, clause, colour if not used_colour else None)
+    _report_other_colours(state, clause)
 
 
 def clause_weight(clause: ast.Feature, ctx: Context) -> float:
@@ -324,6 +325,17 @@ def _report_unused(state: MaterialState, entry: Entry, clause: ast.Feature, colo
                 (f"features.{entry.key} takes degree words ('a few', 'fine', 'strong'){_colour_hint(entry)}",),
             )
         )
+
+
+def _report_other_colours(state: MaterialState, clause: ast.Feature) -> None:
+    """'red and black speckles': a feature is drawn in one colour, the first; the others are left out, noted."""
+    others = [c for g in clause.groups for c in g.colours][1:]
+    if not others:
+        return
+    text = ", ".join(" ".join(w.text for w in c.words) for c in others)
+    span = others[0].span.to(others[-1].span)
+    message = f"one colour is drawn for the {clause.word.text}, the first: '{text}' left out"
+    state.diagnostics.append(Diagnostic(span, Severity.NOTE, UNUSED, message))
 
 
 def _colour_hint(entry: Entry) -> str:

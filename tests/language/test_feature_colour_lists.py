@@ -65,6 +65,26 @@ def test_colours_before_a_feature_and_an_and_after_it_compile(lexicon, text):
     look(lexicon, text)
 
 
+@pytest.mark.parametrize(
+    ("text", "meaning", "left_out"),
+    [
+        ("granite with red and black speckles", "granite with red speckles", "black"),
+        ("marble with grey and white veining", "marble with grey veining", "white"),
+        ("terrazzo with white, grey and black flecks", "terrazzo with white flecks", "grey, black"),
+        ("bronze with a green and brown patina", "bronze with a green patina", "brown"),
+    ],
+)
+def test_colours_before_a_feature_the_first_is_drawn(lexicon, text, meaning, left_out):
+    result, got = look(lexicon, text)
+    _plain, expected = look(lexicon, meaning)
+    assert got == expected
+    assert any(f"'{left_out}' left out" in d.message for d in result.diagnostics if d.severity is Severity.NOTE)
+
+
+def test_multicoloured_flecks_are_flecks(lexicon):
+    assert look(lexicon, "terrazzo with multicoloured flecks")[1] == look(lexicon, "terrazzo with flecks")[1]
+
+
 def test_an_and_before_another_clause_is_not_a_colour_list(lexicon):
     result, _got = look(lexicon, "granite with flecks of black and a glossy finish")
     assert not [d for d in result.diagnostics if "left out" in d.message]
