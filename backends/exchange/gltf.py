@@ -22,7 +22,7 @@ from cnlmc.output import main_file_name
 from ..base import Artifact, Option, Options, Target, emit_each
 from ..capabilities import ALL_FEATURES, EmitResult
 from .gltf_document import GltfBuilder
-from .gltf_mesh import DEFAULT_SIZE, MESH_NAMES, placements, preview_geometry
+from .gltf_mesh import FALLBACK_SIZE, MESH_NAMES, placements, preview_geometry
 from .naming import MaterialIdents, phrase_text
 from .options import Capabilities, capabilities_for, map_options
 from .textures import bake_textures
@@ -36,7 +36,13 @@ OPTIONS = (
     Option("map_format", str, "png8", choices=("png8", "png16"), doc="baked image encoding (glTF core reads PNG)"),
     Option("format", str, None, choices=FORMATS, doc="glb (one file) or gltf (text + textures); default: -o's suffix"),
     Option("mesh", str, "sphere", choices=(*MESH_NAMES, "none"), doc="the preview object each material is shown on"),
-    Option("size", float, DEFAULT_SIZE, range=(0.001, 100.0), doc="the preview object's size in metres"),
+    Option(
+        "size",
+        float,
+        None,
+        range=(0.001, 100.0),
+        doc="the preview object's size in metres (default: its own: sphere 10 cm, teapot 26 cm)",
+    ),
 )
 
 BAKED = ("bake", "procedural graph baked to a PNG (sRGB colour, linear data) read through TEXCOORD_0")
@@ -143,12 +149,15 @@ def groups_of(materials: Sequence[Material]) -> list[list[int]]:
 def build_scene(
     builder: GltfBuilder, materials: Sequence[Material], images: Sequence[Mapping[str, Artifact]], options: Options
 ) -> None:
-    indices = [builder.add_material(m, im, options.size) for m, im in zip(materials, images)]
-    if options.mesh == "none":
+    shape = None if options.mesh == "none" else preview_geometry(options.mesh, options.size)
+    uv_metres = None if shape is None else shape.metres_per_uv
+    thickness = round(shape.size, 6) if shape is not None else (options.size or FALLBACK_SIZE)  # glass: its depth
+    indices = [builder.add_material(m, im, thickness, uv_metres) for m, im in zip(materials, images)]
+    if shape is None:
         return
-    geometry = builder.add_geometry(preview_geometry(options.mesh, options.size))
+    geometry = builder.add_geometry(shape)
     groups = groups_of(materials)
-    for group, where in zip(groups, placements(len(groups), options.size)):
+    for group, where in zip(groups, placements(len(groups), shape.size)):
         first = materials[group[0]]
         if first.variant is None:
             builder.add_object(first.name, geometry, [(indices[group[0]], None)], where)

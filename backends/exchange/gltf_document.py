@@ -15,6 +15,7 @@ from __future__ import annotations
 import base64
 import json
 from collections.abc import Mapping, Sequence
+from typing import Any
 from urllib.parse import quote
 
 import numpy as np
@@ -23,6 +24,7 @@ import pygltflib as gltf
 from cnlmc.material import Material
 
 from ..base import Artifact
+from ..maps.library import metres_per_unit
 from . import gltf_material
 from .gltf_mesh import PreviewGeometry
 from .naming import phrase_text
@@ -32,6 +34,9 @@ ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
 FLOAT, UNSIGNED_SHORT, UNSIGNED_INT = 5126, 5123, 5125
 REPEAT, LINEAR, LINEAR_MIPMAP_LINEAR = 10497, 9729, 9987
 VARIANTS = "KHR_materials_variants"
+TRANSFORM = "KHR_texture_transform"
+#: the maps a packed image is made from, in the order their graph's unit is taken from
+PACKED_FROM = {"metallic_roughness": ("roughness", "metallic")}
 #: texture slot of pbrMetallicRoughness or the material, by baked role
 SLOTS = {"base_color": "baseColorTexture", "metallic_roughness": "metallicRoughnessTexture", "normal": "normalTexture"}
 
@@ -101,8 +106,12 @@ class GltfBuilder:
 
     # ---------------------------------------------------------------------- materials
 
-    def add_material(self, material: Material, images: Mapping[str, Artifact], thickness: float) -> int:
-        """The material with its baked images (role -> image: base_color, metallic_roughness, normal)."""
+    def add_material(
+        self, material: Material, images: Mapping[str, Artifact], thickness: float, uv_metres: float | None = None
+    ) -> int:
+        """The material with its baked images (role -> image: base_color, metallic_roughness, normal).
+        `uv_metres`: metres one UV unit spans on the mesh; each map then gets a KHR_texture_transform
+        scale so it shows at its real size (its graph's metres per texture unit)."""
         factors = gltf_material.core(material)
         exts = gltf_material.extensions(material, thickness)
         pbr = gltf.PbrMetallicRoughness(**factors)
@@ -110,19 +119,31 @@ class GltfBuilder:
         entry.extras = {"cnlmc": {"phrase": phrase_text(material)}}
         for role, image in images.items():
             index = self.texture(image)
+            transform = self.real_size(material, role, uv_metres)
             if role == "base_color":
-                pbr.baseColorTexture = gltf.TextureInfo(index=index)
+                pbr.baseColorTexture = gltf.TextureInfo(index=index, extensions=transform)
                 if material.model.base != "conductor":  # the map is the colour; on a metal it tints f0
                     pbr.baseColorFactor = [1.0, 1.0, 1.0, 1.0]
             elif role == "metallic_roughness":
-                pbr.metallicRoughnessTexture = gltf.TextureInfo(index=index)
+                pbr.metallicRoughnessTexture = gltf.TextureInfo(index=index, extensions=transform)
                 pbr.metallicFactor = 1.0 if "metallic" in material.maps else pbr.metallicFactor
                 pbr.roughnessFactor = 1.0 if "roughness" in material.maps else pbr.roughnessFactor
             elif role == "normal":
-                entry.normalTexture = gltf.NormalMaterialTexture(index=index, scale=1.0)
+                entry.normalTexture = gltf.NormalMaterialTexture(index=index, scale=1.0, extensions=transform)
         self.used.update(exts)
         self.doc.materials.append(entry)
         return len(self.doc.materials) - 1
+
+    def real_size(self, material: Material, role: str, uv_metres: float | None) -> dict[str, Any]:
+        """{KHR_texture_transform: {scale}} that shows the map of `role` at its graph's real size on
+        a mesh whose UV unit spans `uv_metres`; {} when either is unknown or the scale is 1."""
+        refs = [material.maps[r] for r in PACKED_FROM.get(role, (role,)) if r in material.maps]
+        unit = metres_per_unit(refs[0].graph) if refs else None
+        if uv_metres is None or not unit or abs(uv_metres / unit - 1.0) < 1e-6:
+            return {}
+        self.used.add(TRANSFORM)
+        scale = round(uv_metres / unit, 6)
+        return {TRANSFORM: {"scale": [scale, scale]}}
 
     def add_variant(self, name: str) -> int:
         """The variant called `name` (variants are global in glTF: one name switches every object

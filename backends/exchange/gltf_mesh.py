@@ -17,8 +17,8 @@ from dataclasses import dataclass
 import numpy as np
 
 MESH_NAMES = ("sphere", "shader_ball", "teapot")
-#: our choice: 20 cm, a material sample held in the hand or set on a table in AR
-DEFAULT_SIZE = 0.2
+#: our choice, for a mesh that states no size of its own: 10 cm, the preview sphere's size
+FALLBACK_SIZE = 0.1
 
 
 @dataclass(frozen=True)
@@ -31,6 +31,8 @@ class PreviewGeometry:
     tangents: np.ndarray  # (N, 4), xyz unit and orthogonal to the normal, w = +-1
     uvs: np.ndarray  # (N, 2), glTF's v (0 = the image's top row)
     indices: np.ndarray  # (M, 3)
+    #: metres one UV unit spans on this object as written (None: the mesh states no UV unit)
+    metres_per_uv: float | None = None
 
     @property
     def size(self) -> float:
@@ -38,12 +40,19 @@ class PreviewGeometry:
         return float((self.positions.max(0) - self.positions.min(0)).max())
 
 
-def preview_geometry(name: str, size: float) -> PreviewGeometry:
-    """The preview mesh `name` fitted into a bounding sphere `size` metres across, on y = 0."""
+def preview_geometry(name: str, size: float | None = None) -> PreviewGeometry:
+    """The preview mesh `name` fitted into a bounding sphere `size` metres across, on y = 0; without
+    `size`, at the size the mesh states (its UVs then span the maps' texture unit: the 10 cm sphere,
+    the 11.4 cm shader ball, the 26 cm teapot of cnlmc.backends.preview.meshes)."""
     from ..preview.meshes import MESHES, fit  # numpy generators; the preview's GL modules load lazily
 
     mesh = fit(MESHES[name]())
-    positions = np.asarray(mesh.positions, np.float64) * (size / 2.0)
+    unit_ball = np.asarray(mesh.positions, np.float64)
+    stated = getattr(mesh, "metres_per_uv", None)  # generated meshes give UVs in a real unit
+    if size is None:
+        along_v = metres_along_v(unit_ball, np.asarray(mesh.uvs, np.float64), np.asarray(mesh.indices).reshape(-1, 3))
+        size = 2.0 * stated / along_v if stated else FALLBACK_SIZE
+    positions = unit_ball * (size / 2.0)
     normals = unit(np.asarray(mesh.normals, np.float64))
     tangent = unit(np.asarray(mesh.tangents, np.float64))
     uvs = np.asarray(mesh.uvs, np.float64)
@@ -56,7 +65,21 @@ def preview_geometry(name: str, size: float) -> PreviewGeometry:
         np.hstack([tangent, sign[:, None]]).astype(np.float32),
         np.stack([uvs[:, 0], 1.0 - uvs[:, 1]], 1).astype(np.float32),
         indices.astype(np.uint32),
+        None if stated is None else metres_along_v(positions, uvs, indices),
     )
+
+
+def metres_along_v(positions: np.ndarray, uvs: np.ndarray, indices: np.ndarray) -> float:
+    """Metres one UV unit spans on the mesh as scaled: the median |dP/dv| over its triangles (our
+    choice: v is the arc length along the profile of the generated meshes, so |dP/dv| is the same
+    everywhere on them, and u is measured in the same unit: their UVs are isotropic)."""
+    p, uv = positions[indices], uvs[indices]
+    e1, e2 = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
+    d1, d2 = uv[:, 1] - uv[:, 0], uv[:, 2] - uv[:, 0]
+    det = d1[:, 0] * d2[:, 1] - d2[:, 0] * d1[:, 1]
+    keep = np.abs(det) > 1e-12
+    dp_dv = (e2[keep] * d1[keep, 0:1] - e1[keep] * d2[keep, 0:1]) / det[keep, None]
+    return float(np.median(np.linalg.norm(dp_dv, axis=1)))
 
 
 def unit(v: np.ndarray) -> np.ndarray:

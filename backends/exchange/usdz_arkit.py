@@ -18,15 +18,16 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from pxr import Sdf, Usd, UsdGeom, UsdShade, Vt
+from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade, Vt
 
 from cnlmc.material import Document, Material
 from cnlmc.output import main_file_name
 
 from ..base import Artifact, Option, Options, Target, emit_each
 from ..capabilities import ALL_FEATURES, EmitResult
+from ..maps.library import metres_per_unit
 from . import usd
-from .gltf_mesh import DEFAULT_SIZE, MESH_NAMES, PreviewGeometry, placements, preview_geometry
+from .gltf_mesh import MESH_NAMES, PreviewGeometry, placements, preview_geometry
 from .naming import MaterialIdents, identifier, phrase_text, unique_identifiers
 from .options import Capabilities, capabilities_for, map_options
 from .textures import Textures, bake_textures
@@ -39,7 +40,13 @@ OPTIONS = (
     *(o for o in map_options() if o.name != "map_format"),
     Option("map_format", str, "png8", choices=("png8",), doc="baked image encoding (AR Quick Look reads 8-bit PNG)"),
     Option("mesh", str, "sphere", choices=MESH_NAMES, doc="the preview object each material is shown on"),
-    Option("size", float, DEFAULT_SIZE, range=(0.001, 100.0), doc="the preview object's size in metres"),
+    Option(
+        "size",
+        float,
+        None,
+        range=(0.001, 100.0),
+        doc="the preview object's size in metres (default: its own: sphere 10 cm, teapot 26 cm)",
+    ),
     Option("root", str, "Root", doc="the name of the stage's default prim"),
 )
 PREVIEW_ONLY = "(AR Quick Look reads UsdPreviewSurface only)"
@@ -82,12 +89,41 @@ def author_mesh(stage: Any, path: Any, geometry: PreviewGeometry, where: Sequenc
 # ---------------------------------------------------------------------------- materials
 
 
-def author_group(stage: Any, path: Any, materials: Sequence[Material], textures: Sequence[Textures]) -> Any:
+def real_size(stage: Any, material_prim: Any, material: Material, uv_metres: float | None) -> None:
+    """A UsdTransform2d between the st reader and each texture, scaling st so the map shows at its
+    graph's real size on a mesh whose UV unit spans `uv_metres` (none where the scale is 1)."""
+    for role, ref in material.maps.items():
+        texture = UsdShade.Shader(stage.GetPrimAtPath(material_prim.GetPath().AppendChild(f"Texture_{role}")))
+        unit = metres_per_unit(ref.graph)
+        if not texture or uv_metres is None or not unit or abs(uv_metres / unit - 1.0) < 1e-6:
+            continue
+        st = texture.GetInput("st")
+        (source,) = st.GetConnectedSources()[0]
+        transform = UsdShade.Shader.Define(stage, material_prim.GetPath().AppendChild(f"Transform_{role}"))
+        transform.CreateIdAttr("UsdTransform2d")
+        transform.CreateInput("in", Sdf.ValueTypeNames.Float2).ConnectToSource(
+            source.source.GetOutput(source.sourceName)
+        )
+        scale = round(uv_metres / unit, 6)
+        transform.CreateInput("scale", Sdf.ValueTypeNames.Float2).Set(Gf.Vec2f(scale, scale))
+        st.ConnectToSource(transform.CreateOutput("result", Sdf.ValueTypeNames.Float2))
+
+
+def author_material(
+    stage: Any, material_prim: Any, material: Material, textures: Textures, uv_metres: float | None
+) -> None:
+    usd.author_preview(stage, material_prim, material, textures)
+    real_size(stage, material_prim, material, uv_metres)
+
+
+def author_group(
+    stage: Any, path: Any, materials: Sequence[Material], textures: Sequence[Textures], uv_metres: float | None
+) -> Any:
     """One Material prim: a single material's preview network, or a VariantSet of them."""
     material_prim = UsdShade.Material.Define(stage, path)
     material_prim.GetPrim().SetDocumentation(phrase_text(materials[0]))
     if len(materials) == 1 and materials[0].variant is None:
-        usd.author_preview(stage, material_prim, materials[0], textures[0])
+        author_material(stage, material_prim, materials[0], textures[0], uv_metres)
         return material_prim
     variants = material_prim.GetPrim().GetVariantSets().AddVariantSet(VARIANT_SET)
     names = unique_identifiers(m.variant.name if m.variant else m.name for m in materials)
@@ -95,7 +131,7 @@ def author_group(stage: Any, path: Any, materials: Sequence[Material], textures:
         variants.AddVariant(name)
         variants.SetVariantSelection(name)
         with variants.GetVariantEditContext():
-            usd.author_preview(stage, material_prim, material, tex)
+            author_material(stage, material_prim, material, tex, uv_metres)
     variants.SetVariantSelection(names[0])
     return material_prim
 
@@ -126,8 +162,11 @@ def build_stage(materials: Sequence[Material], textures: Sequence[Textures], opt
     geometry = preview_geometry(options.mesh, options.size)
     groups = groups_of(materials)
     names = unique_identifiers(group_name(materials, g) for g in groups)
-    for name, group, where in zip(names, groups, placements(len(groups), options.size)):
-        prim = author_group(stage, looks.AppendChild(name), [materials[i] for i in group], [textures[i] for i in group])
+    for name, group, where in zip(names, groups, placements(len(groups), geometry.size)):
+        members = [materials[i] for i in group]
+        prim = author_group(
+            stage, looks.AppendChild(name), members, [textures[i] for i in group], geometry.metres_per_uv
+        )
         mesh = author_mesh(stage, objects.AppendChild(name), geometry, where)
         UsdShade.MaterialBindingAPI.Apply(mesh.GetPrim()).Bind(prim)
     return stage

@@ -36,6 +36,7 @@ CASES = [
     ("glass.glb", ["frosted glass", "tinted glass", "clear glass"], {"size": "0.35"}),
     ("textured.gltf", ["white varnished oak", "heavily rusted iron", "red or blue plastic"], {"mesh": "teapot"}),
     ("paint.glb", ["navy blue velvet", "weathered concrete", "mirror chrome", "polished gold"], {"mesh": "none"}),
+    ("real_size.glb", ["hammered copper", "white varnished oak"], {"size": "0.2"}),
 ]
 
 
@@ -159,6 +160,7 @@ def test_reopened_file_gives_back_the_ir_values(written, name):
     assert set(document.get("extensionsUsed", [])) <= {
         *(e for m in document["materials"] for e in m.get("extensions", {})),
         "KHR_materials_variants",
+        "KHR_texture_transform",
     }
 
 
@@ -188,7 +190,7 @@ def test_preview_mesh_is_sized_in_metres_with_tangents_that_follow_the_normal_ma
     document = pygltflib.GLTF2().load(str(written["coats.glb"][1]))
     attributes = document.meshes[0].primitives[0].attributes
     positions = accessor_array(document, attributes.POSITION)
-    assert np.allclose(positions.max(0) - positions.min(0), 0.2, atol=1e-4)  # the default: 20 cm
+    assert np.allclose(positions.max(0) - positions.min(0), 0.1, atol=1e-4)  # the sphere's own size: 10 cm
     assert abs(positions[:, 1].min()) < 1e-6  # standing on the floor
     normals, tangents = accessor_array(document, attributes.NORMAL), accessor_array(document, attributes.TANGENT)
     assert set(np.unique(tangents[:, 3])) <= {-1.0, 1.0}
@@ -197,7 +199,21 @@ def test_preview_mesh_is_sized_in_metres_with_tangents_that_follow_the_normal_ma
     assert (bitangent[:, 1] > 0.9).all()  # up the sphere: the way the baked normal map's +Y points
     teapot = pygltflib.GLTF2().load(str(written["textured.glb"][1]))
     extent = accessor_array(teapot, teapot.meshes[0].primitives[0].attributes.POSITION)
-    assert 0.1 < (extent.max(0) - extent.min(0)).max() <= 0.2 + 1e-6
+    assert 0.25 < (extent.max(0) - extent.min(0)).max() < 0.28  # the teapot's own: 26 cm spout to handle
+
+
+def test_maps_show_at_their_real_size(written):
+    """At its own size a preview mesh's UVs are in the maps' texture unit: no transform. Twice the
+    size (a 20 cm sphere), KHR_texture_transform repeats each map twice per UV unit."""
+    for name in ("coats.glb", "textured.glb"):
+        document = load(written[name][1])
+        assert "KHR_texture_transform" not in document.get("extensionsUsed", [])
+    document = load(written["real_size.glb"][1])
+    copper, oak = document["materials"]
+    slots = [copper["normalTexture"], oak["pbrMetallicRoughness"]["baseColorTexture"]]
+    slots.append(oak["pbrMetallicRoughness"]["metallicRoughnessTexture"])
+    assert all(slot["extensions"]["KHR_texture_transform"]["scale"] == [2.0, 2.0] for slot in slots)
+    assert "KHR_texture_transform" in document["extensionsUsed"]
 
 
 def test_maps_are_png_with_their_colour_spaces(written):

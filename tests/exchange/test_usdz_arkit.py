@@ -34,6 +34,7 @@ CASES = [
     ("textured", ["heavily rusted iron", "hammered copper", "white marble", "rough stone"], {"mesh": "teapot"}),
     ("anisotropic", ["lightly brushed, blue anodized aluminum", "brushed steel", "brushed plastic"], {}),
     ("glass", ["frosted glass", "tinted glass", "clear glass"], {"size": "0.5"}),
+    ("real_size", ["hammered copper", "white varnished oak"], {"size": "0.2"}),
 ]
 
 
@@ -110,12 +111,25 @@ def test_object_is_sized_in_metres_and_stands_on_the_floor(packages):
     assert len(meshes) == 3
     for mesh in meshes:
         low, high = mesh.GetExtentAttr().Get()
-        assert high[1] - low[1] == pytest.approx(0.2, abs=1e-4) and abs(low[1]) < 1e-6  # a 20 cm sample
+        assert high[1] - low[1] == pytest.approx(0.1, abs=1e-4) and abs(low[1]) < 1e-6  # the sphere's own 10 cm
         bound, _ = UsdShade.MaterialBindingAPI(mesh.GetPrim()).ComputeBoundMaterial()
         assert bound.GetPath().GetParentPath().name == "Looks"
     glass = Usd.Stage.Open(str(packages["glass"][1]))
     low, high = next(UsdGeom.Mesh(p) for p in glass.Traverse() if p.IsA(UsdGeom.Mesh)).GetExtentAttr().Get()
     assert high[0] - low[0] == pytest.approx(0.5, abs=1e-4)
+
+
+def test_maps_show_at_their_real_size(packages):
+    """A 20 cm sphere (twice its own size) gets a UsdTransform2d scaling st by 2 before each texture;
+    at its own size there is none."""
+    stage = Usd.Stage.Open(str(packages["real_size"][1]))
+    textures = [UsdShade.Shader(p) for p in stage.Traverse() if p.GetName().startswith("Texture_")]
+    assert len(textures) == 3
+    for texture in textures:
+        transform = UsdShade.Shader(texture.GetInput("st").GetConnectedSources()[0][0].source.GetPrim())
+        assert transform.GetShaderId() == "UsdTransform2d" and tuple(transform.GetInput("scale").Get()) == (2, 2)
+    plain = Usd.Stage.Open(str(packages["textured"][1]))
+    assert not [p for p in plain.Traverse() if p.GetName().startswith("Transform_")]
 
 
 def test_or_phrase_is_one_object_named_for_the_phrase_with_a_variant_each(packages):
