@@ -98,7 +98,7 @@ class Joiner:
             self._coat_after(out, diags)
         _feature_colour_list(out, diags)
         if len(out) > 1:
-            _feature_first(out, diags)
+            _feature_first(out, diags, self.lexicon)
         if len(out) > 1 and _ends_in_describing(out) and self.rules().postfix:
             self._postfix(out, diags)
         return out
@@ -401,7 +401,7 @@ FEATURE_WORDS = frozenset(("ADV", "COLOR", "SHADE"))
 MATERIAL_WORDS = frozenset(("ADV", "COLOR", "SHADE", "ADJ"))
 
 
-def _feature_first(out: list[Tagged], diags: list[Diagnostic]) -> None:
+def _feature_first(out: list[Tagged], diags: list[Diagnostic], lexicon: Lexicon) -> None:
     """'fine grain walnut', 'gold vein marble', 'speckled granite': a feature (with its degree or colour
     words) right before the material noun, before any 'with', is the feature clause ('walnut with fine
     grain'), put first among the clauses after the noun ('speckled granite with a polished finish' =
@@ -416,6 +416,9 @@ def _feature_first(out: list[Tagged], diags: list[Diagnostic]) -> None:
     feature = out[f]
     if not of_tag(feature, "FEATURE") or any(c.tag in ("ADJ", "NOUN") for c in feature.candidates):
         return
+    entry = lexicon.entry("features", of_tag(feature, "FEATURE")[0].key)
+    if entry is None or entry.get("colour") == "base" or not (entry.get("maps") or entry.get("adjective")):
+        return  # a tint, a cast, a hint before a material is not a look the words draw
     rest = out[n + 1 :]
     if rest and not of_tag(rest[0], "WITH"):
         return
