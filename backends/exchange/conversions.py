@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
+from dataclasses import replace
 
 from cnlmc.material import RGB, Material, Params
 
@@ -145,3 +146,45 @@ def hemispherical_albedo(material: Material) -> list[float]:
     x, w = np.polynomial.legendre.leggauss(ALBEDO_MUS)
     mu = 0.5 * (x + 1.0)
     return [float(v) for v in (w * mu) @ albedo(material, mu, n_samples=ALBEDO_SAMPLES)]
+
+
+def without_coat(material: Material) -> Material:
+    return replace(material, model=replace(material.model, coat=False), params=replace(material.params, coat=None))
+
+
+def coat_lobe_albedo(material: Material) -> list[float]:
+    """The hemispherical albedo of the coat's own lobe: a black dielectric of its IOR and alpha."""
+    coat = material.params.coat
+    if coat is None:
+        raise ValueError("a coat lobe of a material without a coat")
+    model = {"base": "dielectric", "distribution": "ggx", "anisotropic": False, "coat": False, "diffuse": "lambert"}
+    params = {"base_color": [0.0, 0.0, 0.0], "ior": float(coat.ior), "alpha": list(coat.alpha), "roughness": 0.0}
+    return hemispherical_albedo(Material.from_ir({"name": "coat_lobe", "model": model, "params": params}))
+
+
+def base_under_coat(material: Material) -> list[float]:
+    """What the base keeps under the IR's coat, RGB in [0, 1]: (coated albedo - the coat lobe's) over
+    the bare base's, all from the reference: for a target that adds a coat lobe over a base it can
+    only weight (Mitsuba's principled), so the energy is the IR's (#15 item 6)."""
+    total, lobe, bare = (
+        hemispherical_albedo(material),
+        coat_lobe_albedo(material),
+        hemispherical_albedo(without_coat(material)),
+    )
+    return [min(max((t - c) / b, 0.0), 1.0) if b > 1e-6 else 0.0 for t, c, b in zip(total, lobe, bare)]
+
+
+DISNEY_COAT_IOR, DISNEY_COAT_ALPHA = 1.5, 0.01  # the GTR1 clear coat: Schlick F0 0.04, a quarter weight per unit
+FULL_CLEARCOAT = 4.0  # principled's clearcoat at which its coat lobe has full weight (its grazing F reaches 1)
+
+
+def principled_clearcoat(material: Material) -> float:
+    """principled's clearcoat giving the IR coat lobe's energy: full weight (4) times the coat lobe's
+    hemispherical albedo over a smooth IOR 1.5 coat's, never above full weight (a grazing F above 1)."""
+    coat = material.params.coat
+    if coat is None:
+        raise ValueError("a clearcoat for a material without a coat")
+    smooth = replace(coat, ior=DISNEY_COAT_IOR, alpha=(DISNEY_COAT_ALPHA, DISNEY_COAT_ALPHA))
+    reference = coat_lobe_albedo(replace(material, params=replace(material.params, coat=smooth)))
+    ratio = sum(coat_lobe_albedo(material)) / sum(reference)
+    return min(FULL_CLEARCOAT * ratio, FULL_CLEARCOAT)

@@ -28,7 +28,17 @@ from cnlmc.material import Document, Material
 
 from ..base import Artifact, Option, Options, Target, emit_each
 from ..capabilities import ALL_FEATURES, EmitResult
-from .conversions import alpha_pair, alpha_to_roughness, clip01, conductor_f0, hemispherical_albedo, measured, rounded
+from .conversions import (
+    alpha_pair,
+    alpha_to_roughness,
+    base_under_coat,
+    clip01,
+    conductor_f0,
+    hemispherical_albedo,
+    measured,
+    principled_clearcoat,
+    rounded,
+)
 from .naming import MaterialIdents, described, xml_text
 from .options import Capabilities, capabilities_for, map_options
 from .textures import Texture, bake_textures
@@ -69,7 +79,8 @@ CAPABILITIES: Capabilities = {
         "approximate",
         "Mitsuba 3 has no coating BSDF: a coat over a plastic or paint is `roughplastic` (the coat's IOR and "
         "alpha over the diffuse base, with internal reflection); over a metal or an anisotropic plastic "
-        "`principled` with clearcoat 1 (Disney's GTR1 coat at a fixed IOR 1.5, base not dimmed)",
+        "`principled` (Disney's GTR1 coat, Schlick F0 0.04) with the clearcoat weight of the coat lobe's "
+        "energy and the base dimmed by what the coat lets through (both from the reference: the IR's energy)",
     ),
     "coat.color": (
         "approximate",
@@ -235,6 +246,8 @@ def principled_bsdf(material: Material, tex: BsdfTextures) -> Prop:
     ax, ay = alpha_pair(params)
     alpha = math.sqrt(ax * ay)
     base_color = conductor_f0(params) if base == "conductor" else params.base_color
+    if model.coat and params.coat is not None and "base_color" not in tex:  # the base dimmed by the coat (#15)
+        base_color = [c * t for c, t in zip(base_color, base_under_coat(material))]
     props = [
         colour("base_color", base_color, tex.get("base_color") if base != "conductor" else None),
         prop("float", "metallic", 1.0 if base == "conductor" else 0.0),
@@ -254,7 +267,8 @@ def principled_bsdf(material: Material, tex: BsdfTextures) -> Prop:
     if model.coat and params.coat is not None:
         coat_alpha = float(params.coat.alpha[0])
         gloss = min(max((0.1 - coat_alpha) / 0.099, 0.0), 1.0)  # Disney: alpha_c = lerp(0.1, 0.001, gloss)
-        props += [prop("float", "clearcoat", 1.0), prop("float", "clearcoat_gloss", gloss)]
+        clearcoat = principled_clearcoat(material)  # the coat lobe's energy (#15)
+        props += [prop("float", "clearcoat", clearcoat), prop("float", "clearcoat_gloss", gloss)]
     return node("principled", props)
 
 
