@@ -31,7 +31,7 @@ from .gltf_mesh import MESH_NAMES, PreviewGeometry, placements, preview_geometry
 from .naming import MaterialIdents, identifier, phrase_text, unique_identifiers
 from .options import Capabilities, capabilities_for, map_options
 from .textures import Textures, bake_textures
-from .usdz_package import usdz_bytes
+from .usdz import package as usdz_bytes  # the deterministic usdz writer the usd target uses too
 
 STEM = "materials"
 VARIANT_SET = "material"

@@ -22,7 +22,7 @@ from pxr import Sdf, Usd, UsdGeom, UsdShade  # noqa: E402
 from cnlmc.api import compile_source, emit  # noqa: E402
 from cnlmc.backends.exchange import usd  # noqa: E402
 from cnlmc.backends.exchange.arkit_rules import check, check_package  # noqa: E402
-from cnlmc.backends.exchange.usdz_package import usdz_bytes  # noqa: E402
+from cnlmc.backends.exchange.usdz import package as usdz_bytes  # noqa: E402
 from cnlmc.material import Material  # noqa: E402
 
 from .conftest import bakeable, nouns, synthetic_ir  # noqa: E402
