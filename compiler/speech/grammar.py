@@ -85,27 +85,33 @@ class GrammarBuilder:
         self.refinement(refinement, clauses)
         return g
 
-    def describing(self, first: int, slots: int, comparatives: bool) -> list[int]:
-        """States first .. after `slots` describing words; each may go on to what follows."""
+    def groups(self, begin: int, count: int) -> int:
+        """Up to `count` describing groups, as cnl.lark's `group`: [adverb] [shade] [colour]
+        [adjective] (each slot may be skipped), joined by an optional 'and'; returns the state after."""
         g = self.grammar
-        describing = self.of("adverbs", "shades", "colours", "adjectives")
-        states = [first]
-        joiners = [self.settings.and_word, self.settings.or_word]
-        for slot in range(slots):
-            following = g.state()
-            extra = joiners if slot else self.of("refinements") if comparatives else []
-            g.words(states[-1], following, describing + extra)
-            states.append(following)
-        return states
+        at = begin
+        for number in range(count):
+            for category in ("adverbs", "shades", "colours", "adjectives"):
+                following = g.state()
+                g.words(at, following, self.of(category))
+                g.skip(at, following)
+                at = following
+            if number + 1 < count:
+                joined = g.state()
+                g.words(at, joined, [self.settings.and_word])
+                g.skip(at, joined)
+                at = joined
+        return at
 
     def material(self, begin: int, clauses: int) -> None:
         g, s = self.grammar, self.settings
         after_article = g.state()
         g.words(begin, after_article, s.articles)
         g.skip(begin, after_article)
-        noun = g.state()
-        for state in self.describing(after_article, s.max_describing, comparatives=True):
-            g.skip(state, noun)
+        compared = g.state()
+        g.words(after_article, compared, self.of("refinements"))  # an inline comparative: "shinier aluminum"
+        g.skip(after_article, compared)
+        noun = self.groups(compared, s.max_groups)
         named, second = g.state(), g.state()
         g.words(noun, named, self.of("nouns"))
         self.ending(named, clauses)
@@ -129,9 +135,8 @@ class GrammarBuilder:
             after_article = g.state()
             g.words(at, after_article, s.articles)
             g.skip(at, after_article)
-            head, done = g.state(), g.state()
-            for state in self.describing(after_article, s.max_clause_describing, comparatives=False):
-                g.skip(state, head)
+            done = g.state()
+            head = self.groups(after_article, s.max_clause_groups)
             g.words(head, done, self.of("coats", "features"))
             g.skip(done, g.final)
             if number + 1 < s.max_clauses:

@@ -23,8 +23,8 @@ class SpeechSettings:
     or_word: str
     with_word: str
     undo: tuple[str, ...]
-    max_describing: int
-    max_clause_describing: int
+    max_groups: int
+    max_clause_groups: int
     max_clauses: int
     max_items: int
     min_confidence: float
@@ -52,8 +52,8 @@ class SpeechSettings:
             or_word=str(grammar["or"]),
             with_word=str(grammar["with"]),
             undo=tuple(grammar["undo"]),
-            max_describing=int(grammar["max_describing"]),
-            max_clause_describing=int(grammar["max_clause_describing"]),
+            max_groups=int(grammar["max_groups"]),
+            max_clause_groups=int(grammar["max_clause_groups"]),
             max_clauses=int(grammar["max_clauses"]),
             max_items=int(grammar["max_items"]),
             min_confidence=float(recogniser["min_confidence"]),

@@ -1,0 +1,92 @@
+"""Speech input accuracy and speed: the test set (cnlmc.speech.testset) decoded with the grammar
+generated from the lexicon, per voice / speed / noise cell.
+
+Run: .venv/bin/python bench/speech.py [--quick]
+Prints, per cell, phrase-exact accuracy (the words recognised are the words said) and IR-equal
+accuracy (the session compiles to the same material), then both overall for clean and 20 dB SNR
+speech, and the real-time factor: decode CPU time / audio duration (CPU time, since this machine is
+shared; wall time is printed too). Peer in the same process: a grammar of the test phrases alone,
+the floor of what constraining can do (and how much the lexicon-sized grammar costs).
+Goals (issue #18): IR-equal >= 95 % clean, >= 85 % at 20 dB SNR; RTF <= 0.3.
+--quick: the tests' subset of phrases (tests/speech).
+"""
+
+from __future__ import annotations
+
+import argparse
+import tempfile
+import time
+from collections import defaultdict
+from pathlib import Path
+
+from cnlmc.api import lexicon_for
+from cnlmc.speech.grammar import Grammar
+from cnlmc.speech.model import SpeechModel
+from cnlmc.speech.recogniser import Recogniser
+from cnlmc.speech.testset import SPEEDS, VOICES, Phrases, Scorer, read_pcm, synthesize
+
+
+def phrase_grammar(phrases: Phrases) -> Grammar:
+    """The peer: exactly the test phrases (and nothing else) as a grammar."""
+    grammar = Grammar()
+    grammar.words(grammar.start, grammar.final, [*phrases.materials, *phrases.refinements])
+    return grammar
+
+
+def run(recogniser: Recogniser, scorer: Scorer, items: list, label: str) -> None:
+    cells: dict[tuple, list[tuple[bool, bool]]] = defaultdict(list)
+    cpu = wall = audio = 0.0
+    for utterance, pcm in items:
+        c0, w0 = time.process_time(), time.perf_counter()
+        heard = recogniser.decode(pcm)
+        cpu += time.process_time() - c0
+        wall += time.perf_counter() - w0
+        audio += len(pcm) / 2 / recogniser.settings.sample_rate
+        text = heard.text if heard else None
+        cells[utterance.cell].append((text == utterance.text, scorer.ir_equal(utterance, text)))
+    print(f"\n== {label}: {len(items)} utterances")
+    print(f"{'voice':10} {'wpm':>4} {'audio':6} {'n':>4} {'exact':>7} {'IR-equal':>9}")
+    totals: dict[str, list[tuple[bool, bool]]] = defaultdict(list)
+    for cell in sorted(cells):
+        rows = cells[cell]
+        totals[cell[2]] += rows
+        print(
+            f"{cell[0]:10} {cell[1]:>4} {cell[2]:6} {len(rows):>4} {_pct(r[0] for r in rows):>7} {_pct(r[1] for r in rows):>9}"
+        )
+    for kind, rows in sorted(totals.items()):
+        print(
+            f"overall {kind:6} n={len(rows):4}  exact {_pct(r[0] for r in rows)}  IR-equal {_pct(r[1] for r in rows)}"
+        )
+    print(f"real-time factor: CPU {cpu / audio:.3f}  wall {wall / audio:.3f}  ({audio:.0f} s of audio)")
+
+
+def _pct(values) -> str:
+    values = list(values)
+    return f"{100 * sum(values) / max(1, len(values)):.1f}%"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="the tests' subset of phrases")
+    args = parser.parse_args()
+    lexicon = lexicon_for()
+    t0 = time.perf_counter()
+    model = SpeechModel.of(lexicon)
+    t1 = time.perf_counter()
+    recogniser = model.recogniser()
+    t2 = time.perf_counter()
+    words = len(model.grammar.words_used())
+    print(f"grammar: {model.grammar.count} states, {len(model.grammar.transitions)} arcs, {words} words")
+    print(f"generate {t1 - t0:.2f} s, load {t2 - t1:.2f} s")
+    phrases = Phrases.bundled(full=not args.quick)
+    scorer = Scorer(lexicon, phrases, model.settings.undo)
+    utterances = phrases.utterances(VOICES, SPEEDS, (False, True))
+    with tempfile.TemporaryDirectory(prefix="cnlmc-speech-bench-") as folder:
+        items = [(u, read_pcm(synthesize(u, Path(folder), model.settings.sample_rate))) for u in utterances]
+    run(recogniser, scorer, items, "lexicon grammar")
+    peer = Recogniser(phrase_grammar(phrases), model.dictionary, model.settings)
+    run(peer, scorer, items, "peer: the test phrases only")
+
+
+if __name__ == "__main__":
+    main()
