@@ -35,6 +35,8 @@ FRONT_ENDS = frozenset(
         # options and runs a target on a material in a worker (cnlmc.batch's only registry users)
         "cnlmc.batch.command",
         "cnlmc.batch.work",
+        # speech input (#18): the `listen` command runs the target on what was said
+        "cnlmc.speech.command",
     }
 )
 REGISTRY = "cnlmc.backends.registry"
