@@ -83,7 +83,7 @@ class _StreamReader:
 
 def _sounddevice() -> Any:
     try:
-        import sounddevice
+        import sounddevice  # type: ignore[import-untyped]
     except (ImportError, OSError) as exc:  # OSError: the PortAudio library is missing
         raise SpeechUnavailable(
             f"the microphone needs sounddevice and PortAudio ({exc}); install them with: "

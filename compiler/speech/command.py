@@ -9,19 +9,9 @@ import argparse
 import sys
 from pathlib import Path
 
-from ..commands import (  # the targets through the front end (tests/test_layers.py)
-    EXIT_ERRORS,
-    EXIT_OK,
-    Command,
-    TargetUnavailable,
-    UnknownTarget,
-    add_lexicon_arguments,
-    deliver,
-    get_target,
-    lexicon_of,
-    print_notes,
-    run_target,
-)
+from cnlmc.backends.registry import Command, TargetUnavailable, UnknownTarget, get_target
+
+from ..commands import EXIT_ERRORS, EXIT_OK, add_lexicon_arguments, deliver, lexicon_of, print_notes, run_target
 from ..errors import UsageError
 
 

@@ -21,7 +21,7 @@ class SpeechUnavailable(RuntimeError):
 
 def _pocketsphinx() -> Any:
     try:
-        import pocketsphinx
+        import pocketsphinx  # type: ignore[import-untyped]
     except ImportError as exc:
         raise SpeechUnavailable(
             f"speech input needs pocketsphinx ({exc}); install it with: pip install 'cnlmc[speech]'"

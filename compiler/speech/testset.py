@@ -118,7 +118,7 @@ def add_noise(clean: Path, out: Path, snr_db: float) -> None:
 
 def read_pcm(path: Path) -> bytes:
     with wave.open(str(path)) as w:
-        return w.readframes(w.getnframes())
+        return bytes(w.readframes(w.getnframes()))
 
 
 def _run(command: list[str]) -> None:
