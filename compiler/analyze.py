@@ -132,7 +132,16 @@ def _states(
         refinements = [r for r in refinements if r.span.line not in bad_lines]
         for state in build_states(material, refinements, ctx, material_name(material, used), diags):
             _report_new(state.diagnostics, seen, diags)
-            yield state
+            yield _variant_named(state, used)
+
+
+def _variant_named(state: MaterialState, used: dict[str, int]) -> MaterialState:
+    """A variant's name made unique as a material's is ('red or red plastic': red_plastic__red,
+    red_plastic__red_2; a later 'y__red: steel' after 'y: red or blue' is y__red_2): no two
+    materials of a document share a name, so no target writes one file twice (#13)."""
+    if state.variant is not None:
+        state.name = unique_name(state.name, used)
+    return state
 
 
 def iter_material_irs(source: str, ctx: Context, diags: list[Diagnostic]) -> Iterator[JSONDict]:
@@ -162,7 +171,7 @@ def _streamed_states(source: str, ctx: Context, diags: list[Diagnostic]) -> Iter
         seen.update(diags[mark:])  # the parser's since the last material: a state repeating one is not added
         for state in build_states(material, refinements, ctx, material_name(material, used), diags):
             _report_new(state.diagnostics, seen, diags)
-            yield state
+            yield _variant_named(state, used)
         mark = len(diags)
 
 
