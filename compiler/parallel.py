@@ -193,18 +193,18 @@ class _Replay:
                 for encoded in event[2]:
                     yield self.named(encoded, name)
 
-    @staticmethod
-    def named(encoded: tuple[dict[str, Any] | None, str, str] | JSONDict, name: str) -> Mapping[str, Any]:
-        """A material made by a worker, given its name (and its variant's group)."""
+    def named(self, encoded: tuple[dict[str, Any] | None, str, str] | JSONDict, name: str) -> Mapping[str, Any]:
+        """A material made by a worker, given its name (and its variant's group); a variant's name
+        is made unique over the document as analyze._variant_named makes it."""
         if isinstance(encoded, dict):  # failed the check: the writer says where
             variant = encoded["variant"]
             if variant is not None:
                 variant["group"] = name
-            return {**encoded, "name": f"{name}__{variant['name']}" if variant else name}
+            return {**encoded, "name": unique_name(f"{name}__{variant['name']}", self.used) if variant else name}
         variant, front, rest = encoded
         if variant is not None:
             variant["group"] = name
-            name = f"{name}__{variant['name']}"
+            name = unique_name(f"{name}__{variant['name']}", self.used)
         return EncodedMaterial(f'{{"name": {json_text(name)}, {front}, "variant": {json_text(variant)}, {rest}')
 
 

@@ -139,3 +139,34 @@ def test_sheet_checks_its_output_before_rendering(
         out.parent.chmod(0o700)
     stderr = capsys.readouterr().err
     assert "cnlmc: error: cannot write" in stderr and "internal error" not in stderr, stderr
+
+
+# ---------------------------------------------------------------- duplicate names (#13)
+
+DUPLICATES = "red or red plastic\ny: red or blue plastic\ny__red: steel\nheavily rusted iron\nheavily rusted iron\n"
+
+
+def test_no_two_materials_share_a_name(tmp_path: Path) -> None:
+    """#13: 'red or red plastic', or 'y: red or blue plastic' then 'y__red: steel', overwrote one
+    another's files (GLSL, preview and bake said "wrote" twice for one file)."""
+    import json
+
+    source = tmp_path / "dup.cnl"
+    source.write_text(DUPLICATES)
+    proc = run_cnlmc("compile", str(source))
+    assert proc.returncode == 0, proc.stderr
+    names = [m["name"] for m in json.loads(proc.stdout)["materials"]]
+    assert names == [
+        "red_plastic__red",
+        "red_plastic__red_2",
+        "y__red",
+        "y__blue",
+        "y__red_2",
+        "heavily_rusted_iron",
+        "heavily_rusted_iron_2",
+    ]
+    out = tmp_path / "gl"
+    proc = run_cnlmc("compile", str(source), "-t", "glsl", "-o", f"{out}/")
+    assert proc.returncode == 0, proc.stderr
+    wrote = [line for line in proc.stdout.splitlines() + proc.stderr.splitlines() if line.startswith("wrote ")]
+    assert len(wrote) == len(set(wrote)) == len(list(out.iterdir())) > len(names)
