@@ -12,6 +12,7 @@ from functools import cached_property
 from typing import Any
 
 from cnlmc.bsdf.sampling import lobe_shares
+from cnlmc.bsdf.sheen import has_sheen
 from cnlmc.material import Material
 
 from .. import glsl
@@ -48,6 +49,7 @@ class PreviewPlan:
     strategy: tuple[str, ...]  # the sampled tiers' lobe shares, as GLSL literals
     summary: str
     split_fitted: bool  # the split-sum tables hold a fitted kernel pair: two lookups (split.glsl.j2)
+    sheen: bool = False  # a Charlie sheen over the base (sheen.glsl.j2)
 
 
 @dataclass(frozen=True)
@@ -83,6 +85,7 @@ def preview_plan(material: Material, library: Plan, specialized: Plan) -> Previe
         strategy=tuple(repr(float(x)) for x in lobe_shares(base, coat)),
         summary=base + "".join(f", {k}" for k, on in flags.items() if on),
         split_fitted=split_fitted(material, roughness_map),
+        sheen=has_sheen(material),
     )
 
 
