@@ -18,6 +18,7 @@ from .mesh import Mesh
 from .resources import Resources, source_key
 from .scene import Scene
 from .shader import MaterialShader
+from .sheen import sheen_uniforms
 from .tiers import Tier
 
 VERTEX_ATTRIBUTES = (("in_position", 3), ("in_normal", 3), ("in_tangent", 3), ("in_uv", 2))
@@ -99,6 +100,8 @@ def draw_object(
     if material.model.base == "glass":
         for name, value in glass_uniforms(scene.mesh, model, scene.glass).items():
             gl.set_uniform(prog, name, value)
+    for name, value in sheen_uniforms(material).items():
+        gl.set_uniform(prog, name, value)
     ctx.enable(moderngl.DEPTH_TEST)
     if scene.mesh.closed:
         ctx.enable(moderngl.CULL_FACE)
