@@ -79,7 +79,8 @@ def clean_lines(lines: list[str]) -> list[str]:
 def distinct_phrases(count: int, seed: int = 13) -> list[str]:
     """`count` different phrases, none repeated: checked adjective-noun pairs and colours (each
     compiles without a diagnostic; colours of one word or a plain compound) combined as
-    'COLOUR ADJECTIVE NOUN', 'ADVERB ADJECTIVE, COLOUR NOUN' and 'COLOUR NOUN'."""
+    'COLOUR ADJECTIVE NOUN', 'ADVERB ADJECTIVE, COLOUR NOUN' and 'COLOUR NOUN', each combination
+    checked too ('dirt brown paper' reads as two nouns: left out)."""
     from cnlmc.api import lexicon_for
 
     lexicon = lexicon_for()
@@ -98,12 +99,15 @@ def distinct_phrases(count: int, seed: int = 13) -> list[str]:
     )
     seen: set[str] = set()
     out: list[str] = []
-    while len(out) < count:
-        adjective, noun = rng.choice(pairs)
-        phrase = rng.choice(forms)(adjective, noun)
-        if phrase not in seen:
-            seen.add(phrase)
-            out.append(phrase)
+    while len(out) < count:  # each batch checked as a whole: a combination may still read otherwise
+        batch: list[str] = []
+        while len(batch) < min(count - len(out), 20_000) + 64:
+            adjective, noun = rng.choice(pairs)
+            phrase = rng.choice(forms)(adjective, noun)
+            if phrase not in seen:
+                seen.add(phrase)
+                batch.append(phrase)
+        out += clean_lines(batch)[: count - len(out)]
     return out
 
 
