@@ -42,6 +42,9 @@ SURFACE_NAMES = {
         "coat_color": "coat_color",
         "coat_roughness": "coat_roughness",
         "coat_ior": "coat_ior",
+        "sheen": "fuzz_weight",
+        "sheen_color": "fuzz_color",
+        "sheen_roughness": "fuzz_roughness",
         "normal": "geometry_normal",
         "tangent": "geometry_tangent",
     },
@@ -62,6 +65,9 @@ SURFACE_NAMES = {
         "coat_color": "coat_color",
         "coat_roughness": "coat_roughness",
         "coat_ior": "coat_IOR",
+        "sheen": "sheen",
+        "sheen_color": "sheen_color",
+        "sheen_roughness": "sheen_roughness",
         "normal": "normal",
         "tangent": "tangent",
     },
@@ -99,6 +105,8 @@ def abstract_inputs(material: Material, surface: str) -> Inputs:
         out["diffuse_roughness"] = ("float", min(max(float(params.diffuse_roughness), 0.0), 1.0))
     if model.coat and params.coat is not None:
         out.update(_coat_inputs(params.coat))
+    if params.sheen_color is not None and max(params.sheen_color) > 0.0:
+        out.update(_sheen_inputs(params))
     return {k: (t, round(v, DIGITS) if isinstance(v, float) else rounded(v)) for k, (t, v) in out.items()}
 
 
@@ -124,6 +132,17 @@ def _coat_inputs(coat: Coat) -> Inputs:
         "coat_color": ("color3", clip01(color)),
         "coat_roughness": ("float", alpha_to_roughness(float(coat.alpha[0]))),
         "coat_ior": ("float", float(coat.ior)),
+    }
+
+
+def _sheen_inputs(params: Params) -> Inputs:
+    """The IR's sheen (docs/bsdf.md "Sheen") as a weight (its brightest channel) times a colour; the
+    width as the lobe's alpha = r^2 (MaterialX's sheen_bsdf takes the lobe width itself)."""
+    weight = max(float(c) for c in params.sheen_color or (0.0, 0.0, 0.0))
+    return {
+        "sheen": ("float", weight),
+        "sheen_color": ("color3", clip01([float(c) / weight for c in params.sheen_color or ()])),
+        "sheen_roughness": ("float", float(params.sheen_roughness) ** 2),
     }
 
 
