@@ -135,15 +135,13 @@ def measure(phrases, size: int, spp: int, tier: str, mitsuba: bool = True):
 
     scene = white_scene(size)
     mus = view_cosines(scene, size)
-    rows = []
     with Renderer(size, msaa=4) as renderer:
         for phrase in phrases:
             m = material_of(phrase)
             ir = ir_image(m, mus)
             ir_pv, pv = agreement(ir, mus, *preview_image(renderer, scene, m, tier))
             ir_mi, mi = agreement(ir, mus, *mitsuba_image(scene, m, size, spp)) if mitsuba else (ir_pv, float("nan"))
-            rows.append((phrase, ir_pv, pv, mi * ir_pv / ir_mi))
-    return rows
+            yield phrase, ir_pv, pv, mi * ir_pv / ir_mi
 
 
 def every_phrase() -> list[str]:
@@ -166,7 +164,7 @@ def main(argv=None) -> int:
     phrases = every_phrase() if args.all else REPRESENTATIVE
     print(f"{'material':36s} {'IR':>7s} {'preview':>8s} {'Mitsuba':>8s} {'pv/IR':>7s} {'mi/IR':>7s}")
     for phrase, ir, pv, mi in measure(phrases, args.size, args.spp, args.tier):
-        print(f"{phrase[:36]:36s} {ir:7.3f} {pv:8.3f} {mi:8.3f} {pv / ir:7.3f} {mi / ir:7.3f}")
+        print(f"{phrase[:36]:36s} {ir:7.3f} {pv:8.3f} {mi:8.3f} {pv / ir:7.3f} {mi / ir:7.3f}", flush=True)
     return 0
 
 
