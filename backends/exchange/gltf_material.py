@@ -12,8 +12,10 @@ KHR_materials_* extensions it needs (glTF 2.0 spec, Appendix B; the extensions' 
   preview object's size; attenuation left at infinity, since the IR's tint is per crossing,
   as glTF's baseColor tints transmitted light at each crossing).
 - coat: KHR_materials_clearcoat 1 with clearcoatRoughness = sqrt(coat alpha).
-The IR has no sheen and no emission (cnlmc.params): KHR_materials_sheen and
-KHR_materials_emissive_strength have nothing to carry and are not written.
+- sheen (velvet, cloth): KHR_materials_sheen with the IR's sheen colour and roughness as they are
+  (the extension's lobe is the same Charlie sheen, alpha = roughness^2, with the same albedo scaling
+  of the base; docs/bsdf.md "Sheen").
+The IR has no emission (cnlmc.params): KHR_materials_emissive_strength is not written.
 """
 
 from __future__ import annotations
@@ -80,6 +82,11 @@ def extensions(material: Material, thickness: float) -> JSON:
         out["KHR_materials_clearcoat"] = {
             "clearcoatFactor": 1.0,
             "clearcoatRoughnessFactor": roughness_of(float(params.coat.alpha[0])),
+        }
+    if params.sheen_color is not None and max(params.sheen_color) > 0.0:
+        out["KHR_materials_sheen"] = {
+            "sheenColorFactor": [float(c) for c in params.sheen_color],
+            "sheenRoughnessFactor": float(params.sheen_roughness),
         }
     return out
 

@@ -126,7 +126,12 @@ def check_material(material: dict, entry: dict) -> None:
         assert pbr["baseColorFactor"] == [1.0, 1.0, 1.0, 1.0] and "baseColorTexture" in pbr, name
     if "metallic" not in maps:
         assert pbr["metallicFactor"] == (1.0 if model["base"] == "conductor" else 0.0), name
-    assert "KHR_materials_sheen" not in exts  # the IR has no sheen parameter (cnlmc.params)
+    if params.get("sheen_color") is None:  # a fibre noun's sheen (velvet, cloth), as the IR has it
+        assert "KHR_materials_sheen" not in exts, name
+    else:
+        sheen = exts["KHR_materials_sheen"]
+        assert np.allclose(sheen["sheenColorFactor"], params["sheen_color"], atol=1e-6, rtol=0), name
+        assert abs(sheen["sheenRoughnessFactor"] - params["sheen_roughness"]) <= 1e-6, name
     if model["base"] == "diffuse":
         assert exts["KHR_materials_specular"]["specularFactor"] == 0.0, name
         return
