@@ -313,6 +313,26 @@ def peer_run(text: str, workers: int) -> tuple[float, float, bytes]:
     return time.perf_counter() - wall, cpu() - used, out.getvalue()
 
 
+def typing_peer(materials: list[dict[str, object]]) -> None:
+    """The IR writer's check: Material.from_ir (what it called before: typed records built and let
+    go) against cnlmc.ir_check.check_material (the same verdicts, no records)."""
+    from cnlmc.ir_check import check_material
+    from cnlmc.material import Material
+
+    start = time.process_time()
+    for material in materials:
+        Material.from_ir(material)
+    middle = time.process_time()
+    for material in materials:
+        check_material(material)
+    end = time.process_time()
+    print(
+        f"  peer, the writer's check: Material.from_ir {(middle - start) / len(materials) * 1e6:.1f} us, "
+        f"ir_check {(end - middle) / len(materials) * 1e6:.1f} us per material "
+        f"(ratio {(middle - start) / max(1e-9, end - middle):.1f}x)"
+    )
+
+
 def phases_and_peers(lines: int, pool: list[str], folder: Path) -> None:
     from cnlmc.ir import _plain, json_text
 
@@ -335,6 +355,7 @@ def phases_and_peers(lines: int, pool: list[str], folder: Path) -> None:
             f"  peer, JSON text: previous {middle - start:.3f} s, now {end - start_new:.3f} s "
             f"(ratio {(middle - start) / max(1e-9, end - start_new):.2f}x, same text: {same})"
         )
+        typing_peer(materials)
         one, two = peer_run(text, 1), peer_run(text, 2)
         print(
             f"  peer, one process (previous path) vs two: wall {one[0]:.2f} s -> {two[0]:.2f} s "
