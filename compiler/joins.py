@@ -104,31 +104,41 @@ class Joiner:
         return out
 
     def _made_of(self, tagged: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
-        """'Dielen aus Eiche', 'Rohre aus verzinktem Stahl' (an object, a `made_of` word of the rules,
-        describing words, a material noun) = the material with its describing words; the word's E001 goes."""
-        made_of = self.rules().made_of
-        for k in range(1, len(tagged) - 1):
-            thing, word = tagged[k - 1], tagged[k]
-            if not (word.unknown and word.text.lower() in made_of and of_tag(thing, "OBJECT")):
-                continue
-            j = k + 1
-            while (
-                j < len(tagged)
-                and not of_tag(tagged[j], "NOUN")
-                and any(c.tag in DESCRIBING for c in tagged[j].candidates)
-            ):
-                j += 1
-            if j == len(tagged) or tagged[j].unknown or not of_tag(tagged[j], "NOUN"):
-                continue
-            material = tagged[j]
-            diags[:] = [d for d in diags if not (d.span == word.span and d.code == "E001")]
-            made = of_tag(material, "NOUN")
-            said = " ".join(t.text for t in tagged[k - 1 : j + 1])
-            note = f"read '{said}' as '{made[0].key}' (the material the {thing.text} are made of)"
-            diags.append(Diagnostic(thing.span.to(material.span), Severity.NOTE, NOTE_CODE, note))
-            joined = Tagged(f"{thing.text} {word.text} {material.text}", material.span, made)
-            return [*tagged[: k - 1], *tagged[k + 1 : j], joined, *tagged[j + 1 :]]
+        """'Dielen aus Eiche', 'Rohre aus verzinktem Stahl', 'buttons made of brass' (an object, a
+        `made_of` phrase of the rules, describing words, a material noun) = the material with its
+        describing words; the phrase's E001s go."""
+        for phrase in self.rules().made_of:
+            words = tuple(phrase.split())
+            for k in range(1, len(tagged) - len(words)):
+                thing, said = tagged[k - 1], tagged[k : k + len(words)]
+                if not of_tag(thing, "OBJECT") or tuple(t.text.lower() for t in said) != words:
+                    continue
+                if not all(t.unknown or of_tag(t, "OF") for t in said):
+                    continue
+                j = k + len(words)
+                while (
+                    j < len(tagged)
+                    and not of_tag(tagged[j], "NOUN")
+                    and any(c.tag in DESCRIBING for c in tagged[j].candidates)
+                ):
+                    j += 1
+                if j == len(tagged) or tagged[j].unknown or not of_tag(tagged[j], "NOUN"):
+                    continue
+                return self._made_of_join(tagged, k - 1, k + len(words), j, diags)
         return tagged
+
+    def _made_of_join(
+        self, tagged: list[Tagged], thing: int, after: int, noun: int, diags: list[Diagnostic]
+    ) -> list[Tagged]:
+        spans = {t.span for t in tagged[thing + 1 : after]}
+        diags[:] = [d for d in diags if not (d.span in spans and d.code == "E001")]
+        material = tagged[noun]
+        made = of_tag(material, "NOUN")
+        said = " ".join(t.text for t in tagged[thing : noun + 1])
+        note = f"read '{said}' as '{made[0].key}' (the material of the {tagged[thing].text})"
+        diags.append(Diagnostic(tagged[thing].span.to(material.span), Severity.NOTE, NOTE_CODE, note))
+        joined = Tagged(said, material.span, made)
+        return [*tagged[:thing], *tagged[after:noun], joined, *tagged[noun + 1 :]]
 
     def _postfix(self, out: list[Tagged], diags: list[Diagnostic]) -> None:
         """'Eiche geölt', 'Stahl gebürstet', 'Marmor poliert mit grauen Adern' (rules `postfix`, German):

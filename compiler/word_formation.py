@@ -96,7 +96,7 @@ class Rules:
         self.min_part = min((c["min_part"] for c in compounds), default=3)
         self.heads = frozenset(h for c in compounds for h in c["heads"])
         self.postfix = any(c["postfix"] for c in compounds)  # 'Eiche geölt': describing words after the noun
-        self.made_of = frozenset(w for c in compounds for w in c["made_of"])  # 'Dielen aus Eiche'
+        self.made_of = tuple(dict.fromkeys(w for c in compounds for w in c["made_of"]))  # 'Dielen aus Eiche'
         self.qualifiers = frozenset(joined("qualifiers", "words"))
         self.manners = frozenset(joined("compound_first", "manners"))
         self.participles = frozenset(joined("compound_first", "participles"))

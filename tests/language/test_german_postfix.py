@@ -64,7 +64,7 @@ def test_object_aus_material_is_the_material(de, text, meaning):
     result, got = look(de, text)
     _plain, expected = look(de, meaning)
     assert got == expected, (text, meaning)
-    assert any("made of" in d.message for d in result.diagnostics if d.severity is Severity.NOTE)
+    assert any("the material of" in d.message for d in result.diagnostics if d.severity is Severity.NOTE)
 
 
 def test_english_keeps_its_comma_rule():

@@ -111,3 +111,19 @@ def test_a_word_saying_what_kind_of_thing_before_an_object_has_no_effect(lexicon
     _plain, expected = look(lexicon, meaning)
     assert got == expected, (text, meaning)
     assert any("where or what for" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning"),
+    [
+        ("buttons made of horn", "horn"),
+        ("a tray made from teak", "teak"),
+        ("planks made out of weathered oak", "weathered oak"),
+        ("cufflinks crafted from sterling silver", "sterling silver"),
+    ],
+)
+def test_an_object_made_of_a_material_is_that_material(lexicon, text, meaning):
+    result, got = look(lexicon, text)
+    _plain, expected = look(lexicon, meaning)
+    assert got == expected, (text, meaning)
+    assert any("the material of" in d.message for d in result.diagnostics)
