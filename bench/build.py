@@ -96,53 +96,56 @@ def main() -> None:
             rates[label] = count / seconds
             cpu_costs[label] = cpu / count
             say(label, seconds, count, cpu)
-        start = time.perf_counter()
-        with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
-            started = time.perf_counter() - start
-            print(f"LocalCluster (2 processes) started in {started:.1f} s")
-            with Client(cluster.scheduler_address) as client:
-                overhead = dask_overhead_per_task(client, 2000)
-                print(f"Dask overhead per empty task (2 workers): {overhead * 1000:.2f} ms")
-                for workers in (1, 2):
-                    if workers == 1:
-                        client.retire_workers(workers=list(client.scheduler_info()["workers"])[1:])
-                    else:
-                        cluster.scale(2)
-                        client.wait_for_workers(2)
-                    seconds, count, cpu = timed_build(
-                        catalog, folder / "out", targets, args.size, scheduler=cluster.scheduler_address
-                    )
-                    rates[f"dask {workers}"] = count / seconds
-                    say(f"dask, {workers} worker(s)", seconds, count, cpu)
-        print_summary(rates, cpu_costs["in this process (1)"], overhead, started, args)
+        written = sum(p.stat().st_size for p in (folder / "out").rglob("*") if p.is_file()) / args.materials
+        print(f"written: {written / 1000:.0f} kB a material")
+        for workers in (1, 2):  # a cluster of each size, started afresh
+            start = time.perf_counter()
+            with LocalCluster(
+                n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None
+            ) as cluster:
+                started = time.perf_counter() - start
+                print(f"LocalCluster ({workers} processes) started in {started:.1f} s")
+                with Client(cluster.scheduler_address) as client:
+                    overhead = dask_overhead_per_task(client, 1000)
+                print(f"Dask overhead per empty task ({workers} workers): {overhead * 1000:.2f} ms")
+                seconds, count, cpu = timed_build(
+                    catalog, folder / "out", targets, args.size, scheduler=cluster.scheduler_address
+                )
+                rates[f"dask {workers}"] = count / seconds
+                say(f"dask, {workers} worker(s)", seconds, count, cpu)
+        print_summary(rates, cpu_costs["in this process (1)"], overhead, started, written)
     print(f"load average after: {os.getloadavg()[0]:.1f}")
 
 
-def print_summary(
-    rates: dict[str, float], cpu_cost: float, overhead: float, started: float, args: argparse.Namespace
-) -> None:
+def print_summary(rates: dict[str, float], cpu_cost: float, overhead: float, started: float, written: float) -> None:
     print(f"scaling efficiency, pool: {rates['pool of 2'] / (2 * rates['pool of 1']):.0%} (2 workers against 1)")
     print(f"scaling efficiency, dask: {rates['dask 2'] / (2 * rates['dask 1']):.0%} (2 workers against 1)")
     print(f"dask against the pool, 2 workers: {rates['dask 2'] / rates['pool of 2']:.2f}x the rate")
     per_material = cpu_cost  # CPU seconds: what a material costs on a core of its own
     per_task_cost = max(0.0, 1 / rates["dask 1"] - 1 / rates["pool of 1"])
-    print(f"per-material CPU cost, one process, {args.size}^2: {per_material * 1000:.0f} ms")
+    print(f"per-material CPU cost, one process: {per_material * 1000:.0f} ms")
     print(f"Dask cost per task over the pool (1 worker): {per_task_cost * 1000:.1f} ms")
-    print_payoff(per_material, max(overhead, per_task_cost), started)
+    print_payoff(per_material, overhead, started, written)
 
 
-def print_payoff(per_material: float, per_task: float, startup: float, cores: int = 16, machines: int = 8) -> None:
+#: what carries the files back to the client with results='return' (our choice: 1 Gbit/s Ethernet, about 110 MB/s)
+BANDWIDTH = 110e6
+
+
+def print_payoff(
+    per_material: float, per_task: float, startup: float, written: float, cores: int = 16, machines: int = 8
+) -> None:
     """When `machines` machines of `cores` cores beat one such machine (docs/build.md):
-    n c / P > S + n (c + o) / (k P)  <=>  n > S / (c / P - (c + o) / (k P))."""
-    for scale, label in ((1, "512^2"), (16, "2048^2 (16x the pixels)")):
-        c = per_material * scale
-        gain = c / cores - (c + per_task) / (machines * cores)
-        n = startup / gain if gain > 0 else float("inf")
-        one = n * c / cores
-        print(
-            f"a cluster of {machines} x {cores} cores pays off against one {cores}-core machine at {label} "
-            f"from about {n:,.0f} materials ({one:,.0f} s on one machine)"
-        )
+    n c / P > S + n (c + o) / (k P) + n B / W  <=>  n > S / (c / P - (c + o) / (k P) - B / W)."""
+    for scale, label in ((1, "the bench's size"), (16, "4x the side (16x the pixels)")):
+        c, b = per_material * scale, written * scale
+        for mode, bandwidth in (("shared", float("inf")), ("return", BANDWIDTH)):
+            gain = c / cores - (c + per_task) / (machines * cores) - b / bandwidth
+            n = startup / gain if gain > 0 else float("inf")
+            print(
+                f"{machines} x {cores} cores beat one {cores}-core machine at {label}, results={mode}: "
+                f"from about {n:,.0f} materials ({n * c / cores:,.0f} s on one machine)"
+            )
 
 
 if __name__ == "__main__":

@@ -12,7 +12,7 @@ from ..diagnostics import visible
 from .builder import FAILED, MANIFEST_NAME, STATUSES, BuildReport, Done, build_report
 from .runners import RESULT_MODES
 
-EXIT_OK, EXIT_FAILED = 0, 1
+EXIT_OK, EXIT_FAILED, EXIT_INTERRUPTED = 0, 1, 130  # 130: 128 + SIGINT, as the other commands
 
 
 class BuildCommand(Command):
@@ -57,6 +57,13 @@ class BuildCommand(Command):
                 seed=args.seed,
                 progress=line,
             )
+        except KeyboardInterrupt:
+            print(
+                "cnlmc: build interrupted: the tasks that finished are kept, nothing is half-written; "
+                "run the same command again to finish",
+                file=sys.stderr,
+            )
+            return EXIT_INTERRUPTED
         finally:
             if line is not None:
                 line.end()
