@@ -23,6 +23,7 @@ from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .base import noun_of
 from .bracket import Move, Step, bracket_move, scaled_steps
+from .refine_property import refine_property
 from .refine_target import item_text, item_words, move_sigma_too, note, note_unmoved_number, surface
 from .words import Effect, effects_for
 
@@ -69,7 +70,6 @@ def _refined_as_property(
     state: MaterialState, ctx: Context, item: ast.RefineItem, direction: int, weight: float
 ) -> bool:
     """'more grainy' on a wood: the word's stem is a map property of the material's map (grain)."""
-    from .refine import refine_property
     from .refine_missing_map import map_property_of
 
     prop = map_property_of(state, ctx, _target(item).text.lower())

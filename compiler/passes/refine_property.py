@@ -1,0 +1,72 @@
+"""One step of a named property ('rougher', 'more grain'), shared by refinement lines and the
+refinements other passes make (refine_effects' 'more grainy' on a wood)."""
+
+from __future__ import annotations
+
+from .. import ast
+from ..diagnostics import warning
+from ..graphs import graph_params
+from ..lexicon import Entry
+from ..state import Context, MaterialState
+from .base import noun_of
+from .bracket import Move, bracket_move, scaled_steps
+from .refine_colour import refine_saturation
+from .refine_target import item_words, move_sigma_too, note_unmoved_number, surface
+
+
+def refine_property(
+    state: MaterialState, ctx: Context, prop: Entry, item: ast.RefineItem, direction: int, weight: float
+) -> None:
+    """One step of a property (properties.toml) in `direction`: a surface parameter, the
+    saturation, or a map parameter of the maps that have it."""
+    if prop.get("invert"):
+        direction = -direction
+    if prop.get("map_param"):
+        _refine_map_param(state, prop, item, direction, weight)
+        return
+    param = prop.get("param")
+    if param == "saturation":
+        refine_saturation(state, ctx, item, direction, weight)
+        return
+    holder, key, limits = surface(state, param)
+    up, down = scaled_steps(prop.get("step"), weight)
+    move = Move(direction, up if direction > 0 else down, weight, limits)
+    current = holder.get(param, 0.0)
+    new = bracket_move(state.brackets, key, current, move)
+    holder[param] = new
+    rule = f"refinements.{item.word.key} {prop.key}: bracket step"
+    state.note(key, new, rule, item_words(item))
+    note_unmoved_number(state, item, key, current, new)
+    move_sigma_too(state, key, move, item_words(item), rule)
+
+
+def _refine_map_param(state: MaterialState, prop: Entry, item: ast.RefineItem, direction: int, weight: float) -> None:
+    name = prop.get("map_param")
+    graphs = prop.get("graphs")
+    roles = [
+        role
+        for role, ref in state.maps.items()
+        if name in graph_params(ref["graph"]) and (not graphs or ref["graph"] in graphs)
+    ]
+    if not roles:
+        what = "no procedural map" if not state.maps else f"no map with '{name}'"
+        if graphs:
+            what = f"no {' or '.join(graphs)} map"
+        state.diagnostics.append(
+            warning(
+                item.span,
+                "W106",
+                f"'{prop.key}' has nothing to act on: {noun_of(state).key} has {what}",
+                ("maps come from words such as 'wood', 'marble', 'brushed' or 'rusty'",),
+            )
+        )
+        return
+    up, down = scaled_steps(prop.get("step"), weight)
+    for role in roles:
+        ref = state.maps[role]
+        key = f"maps.{role}.{name}"
+        low, high, default = graph_params(ref["graph"])[name]
+        move = Move(direction, up if direction > 0 else down, weight, (low, high), saturate=False)
+        new = bracket_move(state.brackets, key, ref["params"].get(name, default), move)
+        ref["params"][name] = new
+        state.note(key, new, f"refinements.{item.word.key} {prop.key}: bracket step", item_words(item))
