@@ -45,6 +45,7 @@ def assert_manifest_matches_files(manifest: dict, root: Path) -> None:
                 assert digest == "sha256:" + hashlib.sha256(data).hexdigest()
 
 
+@pytest.mark.dask
 def test_serial_pool_and_dask_give_the_same_manifest_and_bytes(catalog, tmp_path, cluster):
     serial = build(catalog, tmp_path / "serial", TARGETS, size=SIZE, jobs=1)
     pool = build(catalog, tmp_path / "pool", TARGETS, size=SIZE, jobs=2)
@@ -64,6 +65,7 @@ def test_serial_pool_and_dask_give_the_same_manifest_and_bytes(catalog, tmp_path
     assert not leftovers(tmp_path)
 
 
+@pytest.mark.dask
 def test_a_killed_dask_worker_loses_nothing(catalog, tmp_path, cluster):
     """A worker killed mid-build: Dask runs its tasks again (or fails them after its retries);
     either way a rerun finishes the build, with the manifest and files of a serial run."""
