@@ -10,12 +10,14 @@ white environment of radiance AMBIENT = 0.1 (its reflection is L_a · A(μo), A 
 tabulated on 16 μ values by cnlmc.bsdf's MIS integrator, the same for both models); black background.
 
 Exposure: the fits are in MERL's camera RGB with their own scale, so each image is scaled so that the
-mean luminance (Rec. 709 weights) over the sphere's pixels is 0.18, then clipped to [0, 1] and
-sRGB-encoded; FLIP (flip-evaluator, LDR, 67 ppd) is averaged over the sphere's pixels only (the
-background is equal and would dilute it). Camera RGB is read as linear sRGB, unconverted.
+mean luminance (Rec. 709 weights) over the sphere's pixels is 0.18 (default; `--exposure p99`: its
+99th percentile is 0.8), then clipped to [0, 1] and sRGB-encoded; FLIP (flip-evaluator, LDR, 67 ppd)
+is averaged over the sphere's pixels only (the background is equal and would dilute it). Camera RGB
+is read as linear sRGB, unconverted. A second FLIP column compares the two images' luma only (the
+same encoded images, hue and chroma removed): it separates gloss and shading from colour.
 
-    .venv/bin/python bench/merl_render.py                 # table, median, writes docs/merl_worst10.png
-    .venv/bin/python bench/merl_render.py --size 96 --no-sheet
+    .venv/bin/python bench/merl_render.py                 # table, medians, writes docs/merl_worst10.png
+    .venv/bin/python bench/merl_render.py --size 96 --no-sheet --exposure p99
 Exit status 2 when the shared data folder is missing.
 """
 
@@ -38,6 +40,7 @@ ROOT = Path(__file__).resolve().parents[1]
 LIGHT = np.array([-0.5, 0.6, 0.62]) / np.linalg.norm([-0.5, 0.6, 0.62])
 AMBIENT = 0.1
 MEAN_LUMINANCE = 0.18
+P99_LUMINANCE = 0.8
 LUMA = np.array([0.2126, 0.7152, 0.0722])
 MU_TABLE = np.linspace(0.02, 1.0, 16)
 GOAL = 0.2
@@ -101,11 +104,15 @@ def ours_image(sphere: Sphere, material: dict[str, Any]) -> np.ndarray:
     return sphere.render(brdf, albedo_table(brdf, lobes))
 
 
-def exposed(image: np.ndarray, coverage: np.ndarray) -> np.ndarray:
-    """Scaled to mean luminance MEAN_LUMINANCE over the sphere, clipped, sRGB-encoded (FLIP's LDR input)."""
-    inside = coverage > 0.999
-    mean = float((image[inside] @ LUMA).mean())
-    scaled = np.clip(image * (MEAN_LUMINANCE / max(mean, 1e-12)), 0.0, 1.0)
+def exposed(image: np.ndarray, coverage: np.ndarray, exposure: str = "mean") -> np.ndarray:
+    """Scaled so the sphere's mean luminance is MEAN_LUMINANCE ("mean") or its 99th percentile is
+    P99_LUMINANCE ("p99"), clipped, sRGB-encoded (FLIP's LDR input)."""
+    luminance = image[coverage > 0.999] @ LUMA
+    if exposure == "p99":
+        scale = P99_LUMINANCE / max(float(np.percentile(luminance, 99)), 1e-12)
+    else:
+        scale = MEAN_LUMINANCE / max(float(luminance.mean()), 1e-12)
+    scaled = np.clip(image * scale, 0.0, 1.0)
     return np.where(scaled <= 0.0031308, 12.92 * scaled, 1.055 * scaled ** (1 / 2.4) - 0.055)
 
 
@@ -140,7 +147,7 @@ def rgba8(srgb: np.ndarray) -> np.ndarray:
     return (out * 255 + 0.5).astype(np.uint8)
 
 
-def compare_all(data: Path, size: int) -> list[dict[str, Any]]:
+def compare_all(data: Path, size: int, exposure: str = "mean") -> list[dict[str, Any]]:
     fits = parse_low_fits(data / "merl_fits" / cal.FITS["low"])
     sphere = Sphere(size)
     rows = []
@@ -149,8 +156,8 @@ def compare_all(data: Path, size: int) -> list[dict[str, Any]]:
         material, error = cal.compile_phrase(phrase)
         row: dict[str, Any] = {"name": name, "phrase": phrase, "error": error}
         if material is not None:
-            ref = exposed(fit_image(sphere, fits[name]), sphere.coverage)
-            ours = exposed(ours_image(sphere, material), sphere.coverage)
+            ref = exposed(fit_image(sphere, fits[name]), sphere.coverage, exposure)
+            ours = exposed(ours_image(sphere, material), sphere.coverage, exposure)
             row["flip"], row["map"] = flip(ref, ours, sphere.coverage)
             row["flip_grey"], _ = flip(grey(ref), grey(ours), sphere.coverage)
             row["fit_png"], row["ours_png"] = ref, ours
@@ -182,13 +189,14 @@ def main(argv: Sequence[str] | None = None) -> int:
     ap.add_argument("--data", type=Path, default=cal.DATA, help="the shared data folder (default ../shared/data)")
     ap.add_argument("--size", type=int, default=128, help="image side in pixels (default 128)")
     ap.add_argument("--sheet", type=Path, default=ROOT / "docs" / "merl_worst10.png")
+    ap.add_argument("--exposure", choices=("mean", "p99"), default="mean", help="the exposure normalisation")
     ap.add_argument("--no-sheet", action="store_true", help="print the numbers only")
     args = ap.parse_args(argv)
     if not (args.data / "merl_fits").is_dir():
         print(f"error: {args.data / 'merl_fits'} not found; pass --data DIR (the shared data folder)")
         return 2
-    print("MERL: FLIP (fit | ours, each at mean luminance 0.18, LDR, sphere pixels); columns: RGB, luma only")
-    rows = compare_all(args.data, args.size)
+    print(f"MERL: FLIP (fit | ours, exposure {args.exposure}, LDR, sphere pixels); columns: RGB, luma only")
+    rows = compare_all(args.data, args.size, args.exposure)
     scores = [r["flip"] for r in rows if "flip" in r]
     median = statistics.median(scores)
     print(
