@@ -12,15 +12,19 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from cnlmc.material import Document
+from cnlmc.material import Document, Material
 
-from ..base import Options, Target, emit_each
+from ..base import Artifact, Options, Target, emit_each
 from ..capabilities import EmitResult
 from .emit import emit_material
+from .maps import bake_sampled_maps
 from .options import OPTIONS, glsl_options
 from .render import ShaderWriter
 
-_BAKED = "procedural map: bake it (cnlmc bake) and bind the image to the sampler the sidecar lists"
+_BAKED = (
+    "procedural map baked to a PNG (textures/<first material>.glsl/); the sidecar names each sampler's "
+    "file; an unbound sampler falls back to the IR's uniform value"
+)
 CAPABILITIES: dict[str, tuple[str, str]] = {
     "model.diffuse": ("exact", "Lambert / Oren-Nayar"),
     "model.dielectric": ("exact", "GGX or Ward lobe over a diffuse base"),
@@ -62,7 +66,13 @@ class GlslTarget(Target):
     def emit(self, document: Document, options: Options) -> EmitResult:
         """GLSL for every material; options as in OPTIONS (docs/glsl.md)."""
         opts = glsl_options(options)
-        return emit_each(self, document, lambda material: emit_material(material, opts, self.writer))
+        main = f"{document.materials[0].name}.glsl" if document.materials else "materials.glsl"
+
+        def emit_one(material: Material) -> list[Artifact]:
+            files, images = bake_sampled_maps(material, options, main)
+            return [*emit_material(material, opts, self.writer, files), *images]
+
+        return emit_each(self, document, emit_one)
 
 
 TARGET = GlslTarget()

@@ -61,6 +61,17 @@ def library_context(material: Material, plan: Plan, options: GlslOptions, writer
         "initializers": profile["initializers"],
         "snippets": [writer.snippet(name) for name in plan.snippets],
         "ms": writer.multiscatter_tables if plan.multiscatter else None,
+        "fallback": fallback_values(material),
+    }
+
+
+def fallback_values(material: Material) -> dict[str, str]:
+    """GLSL literals a library uses where a map's sampler has no texture bound: the IR's uniform
+    base colour and perceptual roughness."""
+    r, g, b = (min(max(float(c), 0.0), 1.0) for c in material.params.base_color)
+    return {
+        "base_color": f"vec3({r:.6g}, {g:.6g}, {b:.6g})",
+        "roughness": f"{min(max(float(material.params.roughness), 0.0), 1.0):.6g}",
     }
 
 
@@ -113,7 +124,9 @@ def sidecar_json(meta: dict[str, Any]) -> str:
     return TERMINAL_CONTROLS.sub(lambda m: f"\\u{ord(m.group()):04x}", text)
 
 
-def sidecar(material: Material, plan: Plan, options: GlslOptions, files: list[str]) -> dict[str, Any]:
+def sidecar(
+    material: Material, plan: Plan, options: GlslOptions, files: list[str], maps_files: dict[str, str] | None = None
+) -> dict[str, Any]:
     maps = {role: ref.to_ir() for role, ref in material.maps.items()}
     extra = {"btdf_entry_points": BTDF_ENTRY_POINTS, "btdf_returns": BTDF_RETURNS} if plan.transmission else {}
     return {
@@ -131,7 +144,14 @@ def sidecar(material: Material, plan: Plan, options: GlslOptions, files: list[st
         **extra,
         "uniforms": [{"name": u.name, "type": u.type, "value": u.value} for u in plan.uniforms],
         "samplers": [
-            {"name": s.name, "role": s.role, "colour_space": s.colour_space, "doc": s.doc, "map": maps.get(s.role)}
+            {
+                "name": s.name,
+                "role": s.role,
+                "colour_space": s.colour_space,
+                "doc": s.doc,
+                "map": maps.get(s.role),
+                "file": (maps_files or {}).get(s.role),
+            }
             for s in plan.samplers
         ],
         "standalone": {
@@ -142,7 +162,11 @@ def sidecar(material: Material, plan: Plan, options: GlslOptions, files: list[st
     }
 
 
-def emit_material(material: Material, options: GlslOptions, writer: ShaderWriter) -> list[Artifact]:
+def emit_material(
+    material: Material, options: GlslOptions, writer: ShaderWriter, maps_files: dict[str, str] | None = None
+) -> list[Artifact]:
+    """The material's shader files and sidecar; `maps_files`: role -> the baked image each sampler
+    reads (relative to the output folder), recorded in the sidecar."""
     name = material.name
     library, plan = library_source(material, options, writer)
     parts = FORM_PARTS[options.form]
@@ -153,6 +177,6 @@ def emit_material(material: Material, options: GlslOptions, writer: ShaderWriter
         frag, vert = standalone_sources(material, library, options, writer, plan.transmission)
         artifacts += [Artifact(f"{name}.frag", frag), Artifact(f"{name}.vert", vert)]
     files = [a.name for a in artifacts]
-    meta = sidecar(material, plan, options, files)
+    meta = sidecar(material, plan, options, files, maps_files)
     artifacts.append(Artifact(f"{name}.glsl.json", sidecar_json(meta)))
     return artifacts

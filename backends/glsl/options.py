@@ -31,6 +31,15 @@ OPTIONS = (
         choices=("both", "library", "standalone"),
         doc="library: <name>.glsl; standalone: <name>.frag + <name>.vert; both",
     ),
+    Option("maps", str, "bake", choices=("bake", "none"), doc="bake: the maps the shader samples, as PNG files"),
+    Option(
+        "map_size",
+        int,
+        256,
+        doc="baked image size in pixels (a power of two, 8 to 8192)",
+        range=(8, 8192),
+    ),
+    Option("map_format", str, "png8", choices=("png8", "png16"), doc="baked image encoding (sRGB colour, raw data)"),
     Option(
         "specialize",
         str,

@@ -160,6 +160,8 @@ def make_plan(material: Material, options: GlslOptions) -> Plan:
 def snippet_names(plan: Plan) -> list[str]:
     """Snippet files in dependency order, each once."""
     names = ["common", "any_tangent"]
+    if plan.maps:
+        names.append("map_bound")
     if plan.needs_tangent:
         names.append("frame")
     if plan.anisotropic:
@@ -309,6 +311,7 @@ UBER_SNIPPETS = (
     "diffuse_oren_nayar",
     "coat",
     "coat_absorption",
+    "map_bound",
     "normal_map",
 )
 

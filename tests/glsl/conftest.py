@@ -27,10 +27,11 @@ def material_of(phrase: str) -> dict:
 
 
 def emit_material(material: dict, **options) -> dict[str, str]:
-    """Emit one material; returns {file suffix: text}, e.g. 'frag', 'vert', 'glsl', 'json'."""
+    """Emit one material; returns {file suffix: text}, e.g. 'frag', 'vert', 'glsl', 'json' (the
+    baked map images, 8x8 here unless `map_size` says otherwise, are left out)."""
     ir = {"ir_version": 1, "materials": [material], "diagnostics": []}
-    result = glsl.emit(ir, {k: str(v) for k, v in options.items()})
-    return {a.name.split(".", 1)[1]: a.content for a in result.artifacts}
+    result = glsl.emit(ir, {"map_size": "8", **{k: str(v) for k, v in options.items()}})
+    return {a.name.split(".", 1)[1]: a.content for a in result.artifacts if isinstance(a.content, str)}
 
 
 def emit_phrase(phrase: str, **options) -> dict[str, str]:

@@ -16,9 +16,11 @@ def test_cli_writes_library_standalone_and_sidecar(tmp_path, glslang):
     assert done.returncode == 0, done.stderr
     stem = "lightly_brushed_blue_anodized_aluminum"
     assert sorted(p.name for p in out.iterdir()) == sorted(
-        f"{stem}{s}" for s in (".glsl", ".frag", ".vert", ".glsl.json")
+        [*(f"{stem}{s}" for s in (".glsl", ".frag", ".vert", ".glsl.json")), "textures"]
     )
     assert "warning[W202]" in done.stderr  # the normal map must be baked: said, not dropped
+    (sampler,) = json.loads((out / f"{stem}.glsl.json").read_text())["samplers"]
+    assert (out / sampler["file"]).is_file() and sampler["file"].endswith(f"{stem}_normal.png")  # and written
     assert json.loads((out / f"{stem}.glsl.json").read_text())["options"]["fresnel"] == "f82"
     for name in (f"{stem}.frag", f"{stem}.vert"):
         assert subprocess.run([glslang, str(out / name)], capture_output=True).returncode == 0

@@ -60,6 +60,13 @@ vec3 cnlm_any_tangent(vec3 n) {
     return vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
 }
 
+// A sampler with no texture bound reads a 1x1 black texture (0, 0, 0, 1). Baked maps are at least
+// 8x8, so a texture of 1 texel is "not bound": the shader then uses the IR's uniform value instead of
+// black (a black normal or roughness map would remove the highlight).
+bool cnlm_map_bound(sampler2D map) {
+    return textureSize(map, 0).x > 1;
+}
+
 // World -> local frame: n = +z, t = +x (t made orthogonal to n), b = cross(n, t).
 // A tangent parallel to n (or zero) falls back to cnlm_any_tangent(n).
 mat3 cnlm_frame(vec3 n, vec3 t) {
@@ -151,9 +158,12 @@ float cnlm_ggx_dv(vec3 wo, vec3 wi, vec3 h, float alpha) {
 }
 
 // Tangent-space normal map (OpenGL convention, +Y up the image; stored as n * 0.5 + 0.5).
-// Bitangent = cross(n, t).
+// Bitangent = cross(n, t). An unbound map, or a texel pointing below the surface, keeps n.
 vec3 cnlm_perturb_normal(vec3 n, vec3 t, vec2 uv) {
     vec3 m = texture(cnlm_map_normal, uv).xyz * 2.0 - 1.0;
+    if (!cnlm_map_bound(cnlm_map_normal) || m.z <= 0.0) {
+        return n;
+    }
     mat3 frame = cnlm_frame(n, t);
     vec3 p = frame * m;
     float len2 = dot(p, p);

@@ -62,6 +62,13 @@ vec3 cnlm_any_tangent(vec3 n) {
     return vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
 }
 
+// A sampler with no texture bound reads a 1x1 black texture (0, 0, 0, 1). Baked maps are at least
+// 8x8, so a texture of 1 texel is "not bound": the shader then uses the IR's uniform value instead of
+// black (a black normal or roughness map would remove the highlight).
+bool cnlm_map_bound(sampler2D map) {
+    return textureSize(map, 0).x > 1;
+}
+
 // Perceptual roughness -> alpha, convention "squared" (alpha = r^2, Burley 2012).
 float cnlm_alpha_of(float r) {
     float c = clamp(r, 0.0, 1.0);
@@ -125,11 +132,15 @@ vec3 cnlm_coat_absorption(vec3 wo_in, vec3 wi_in, vec3 color, float thickness) {
 // ---- material red_varnished_oak: dielectric + ggx + lambert + fresnel exact + coat (tinted) + maps: base_color, roughness ----
 
 vec3 cnlm_surface_albedo(vec2 uv) {
+    if (!cnlm_map_bound(cnlm_map_base_color)) {
+        return vec3(0.501738, 0.13, 0.0585);  // the IR's base colour where no map is bound
+    }
     return texture(cnlm_map_base_color, uv).rgb;
 }
 
 float cnlm_surface_alpha(vec2 uv) {
-    float a = cnlm_alpha_of(texture(cnlm_map_roughness, uv).r);
+    float r = cnlm_map_bound(cnlm_map_roughness) ? texture(cnlm_map_roughness, uv).r : 0.55;
+    float a = cnlm_alpha_of(r);
     return clamp(a, CNLM_ALPHA_MIRROR, 1.0);
 }
 

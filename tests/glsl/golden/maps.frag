@@ -58,6 +58,13 @@ vec3 cnlm_any_tangent(vec3 n) {
     return vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
 }
 
+// A sampler with no texture bound reads a 1x1 black texture (0, 0, 0, 1). Baked maps are at least
+// 8x8, so a texture of 1 texel is "not bound": the shader then uses the IR's uniform value instead of
+// black (a black normal or roughness map would remove the highlight).
+bool cnlm_map_bound(sampler2D map) {
+    return textureSize(map, 0).x > 1;
+}
+
 // Perceptual roughness -> alpha, convention "squared" (alpha = r^2, Burley 2012).
 float cnlm_alpha_of(float r) {
     float c = clamp(r, 0.0, 1.0);
@@ -102,11 +109,15 @@ vec3 cnlm_lambert(vec3 wo, vec3 wi, vec3 albedo) {
 // ---- material rusty_iron: conductor + ggx + fresnel exact + maps: base_color, roughness, mask ----
 
 vec3 cnlm_surface_albedo(vec2 uv) {
+    if (!cnlm_map_bound(cnlm_map_base_color)) {
+        return vec3(1, 1, 1);  // the IR's base colour where no map is bound
+    }
     return texture(cnlm_map_base_color, uv).rgb;
 }
 
 float cnlm_surface_alpha(vec2 uv) {
-    float a = cnlm_alpha_of(texture(cnlm_map_roughness, uv).r);
+    float r = cnlm_map_bound(cnlm_map_roughness) ? texture(cnlm_map_roughness, uv).r : 0.5;
+    float a = cnlm_alpha_of(r);
     return clamp(a, CNLM_ALPHA_MIRROR, 1.0);
 }
 
@@ -136,7 +147,7 @@ vec3 cnlm_bsdf_local(vec3 wo, vec3 wi, vec2 uv) {
     vec3 spec, diff;
     cnlm_base(wo, wi, albedo, cnlm_surface_alpha(uv), 1.0, spec, diff);
     vec3 f = spec + diff;
-    f = mix(f, cnlm_lambert(wo, wi, albedo), clamp(texture(cnlm_map_mask, uv).r, 0.0, 1.0));
+    f = mix(f, cnlm_lambert(wo, wi, albedo), cnlm_map_bound(cnlm_map_mask) ? clamp(texture(cnlm_map_mask, uv).r, 0.0, 1.0) : 0.0);
     return f;
 }
 
