@@ -13,6 +13,7 @@ import sys
 import tempfile
 from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 from cnlmc.errors import UsageError
 from cnlmc.output import write_files
@@ -48,7 +49,8 @@ def render(scene: Path, output: Path, params: dict[str, str]) -> None:
         mitsuba_cnlm.register()
     elif mi.variant() is None:
         mi.set_variant(SCALAR_VARIANT)
-    image = mi.render(mi.load_file(str(scene), **params))
+    load: Any = mi.load_file  # its stub types the keyword parameters as bool; -D values are strings
+    image = mi.render(load(str(scene), **params))
     with tempfile.TemporaryDirectory(prefix="cnlmc-render-") as tmp:
         written = Path(tmp) / output.name
         mi.util.write_bitmap(str(written), image, write_async=False)
