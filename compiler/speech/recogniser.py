@@ -94,7 +94,7 @@ class Recogniser:
         best = self._meaning(best)
         try:
             for count, entry in enumerate(self.decoder.nbest()):
-                text = " ".join(entry.hypstr.split())
+                text = " ".join((entry.hypstr or "").split())
                 if text and self._meaning(text) not in scores and self.fsg.accept(text):
                     scores[self._meaning(text)] = entry.score
                 if count >= self.settings.nbest_paths or len(scores) > self.settings.alternatives:

@@ -33,7 +33,7 @@ class SpeechSettings:
     spellings: tuple[tuple[str, str], ...]
     nbest_paths: int
     confidence_scale: float
-    decoder: dict[str, float]
+    decoder: dict[str, float | bool]
 
     def same_spelling(self, one: str, other: str) -> bool:
         """Whether two forms differ only by spelling (British/American: 'aluminium', 'aluminum')."""
@@ -61,7 +61,7 @@ class SpeechSettings:
             sample_rate=int(recogniser["sample_rate"]),
             nbest_paths=int(recogniser["nbest_paths"]),
             confidence_scale=float(recogniser["confidence_scale"]),
-            decoder={str(k): float(v) for k, v in recogniser["decoder"].items()},
+            decoder={str(k): v if isinstance(v, bool) else float(v) for k, v in recogniser["decoder"].items()},
             spellings=tuple((str(a), str(b)) for a, b in data["vocabulary"]["spellings"]),
         )
 

@@ -74,7 +74,7 @@ def synthesize(utterance: Utterance, folder: Path, rate: int) -> Path:
     if not clean.exists():
         raw = folder / f"espeak_{clean.name}"
         _run(["espeak-ng", "-v", utterance.voice, "-s", str(utterance.speed), "-w", str(raw), utterance.text])
-        _run(["sox", str(raw), "-r", str(rate), "-c", "1", "-b", "16", str(clean), "pad", "0.2", "0.3"])
+        _run(["sox", str(raw), "-r", str(rate), "-c", "1", "-b", "16", str(clean)])
         raw.unlink()
     if not utterance.noisy:
         return clean
