@@ -86,7 +86,7 @@ def test_every_grammar_word_has_a_pronunciation(model: SpeechModel) -> None:
 
 def test_a_user_lexicon_regenerates_the_grammar(tmp_path: Path) -> None:
     (tmp_path / "nouns_studio.toml").write_text(
-        '[zorbium]\nclass = "metal"\nmodel = "conductor"\nroughness = 0.2\nbase_color = [0.9, 0.8, 0.7]\n'
+        '[zorbium]\nclass = "plastic"\nmodel = "dielectric"\nroughness = 0.2\nbase_color = [0.9, 0.8, 0.7]\nior = 1.5\n'
         'source = "studio"\ndoc = "A studio metal."\nexample = "polished zorbium"\n',
         "utf-8",
     )
