@@ -56,7 +56,8 @@ def utterances(pcm: bytes, rate: int) -> Iterator[bytes]:
 
 
 def microphone(rate: int) -> Iterator[bytes]:
-    """Utterances from the default input device until interrupted (Ctrl-C)."""
+    """Utterances from the default input device until interrupted (Ctrl-C); a UsageError at once
+    when there is no input device."""
     sounddevice = _sounddevice()
     try:
         device = sounddevice.query_devices(kind="input")
@@ -64,6 +65,10 @@ def microphone(rate: int) -> Iterator[bytes]:
         device = None
     if not device:
         raise UsageError("no audio input device here (no microphone found); give a recording with --from FILE.wav")
+    return _recorded(sounddevice, rate)
+
+
+def _recorded(sounddevice: Any, rate: int) -> Iterator[bytes]:
     segmenter = _pocketsphinx().Segmenter(sample_rate=rate, window=0.5, ratio=0.9)
     with sounddevice.RawInputStream(samplerate=rate, channels=1, dtype="int16") as stream:
         for segment in segmenter.segment(_StreamReader(stream)):
