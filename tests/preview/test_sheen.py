@@ -9,7 +9,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from .conftest import material_of
+from .conftest import material_of, stdlib_nouns
 
 VELVETS = ["velvet", "navy blue velvet", "dusty pink velvet"]
 
@@ -77,3 +77,16 @@ def test_navy_velvet_is_blue_at_the_rim_and_in_the_centre(renderer, scene):
 def test_every_tier_draws_the_rim(renderer, scene, tier):
     ring, disc, _ = rings(renderer, scene, material_of("navy blue velvet"), tier)
     assert ring > 1.15 * disc, (tier, ring, disc)
+
+
+def test_every_noun_with_a_sheen_renders_finite(renderer, scene):
+    """Each fibre noun of the stdlib that carries a sheen: finite, and not darker than without it
+    at the rim (the sheen only adds at grazing what it takes from the body)."""
+    nouns = [n for n in stdlib_nouns() if material_of(n).params.sheen_color is not None]
+    assert len(nouns) >= 10, nouns
+    for noun in nouns:
+        frame = renderer.render(material_of(noun), tier="splitsum", scene=scene, hdr=True)
+        assert np.isfinite(frame.hdr).all(), noun
+        ring, _, _ = rings(renderer, scene, material_of(noun))
+        bare_ring, _, _ = rings(renderer, scene, without_sheen(material_of(noun)))
+        assert ring > bare_ring, (noun, ring, bare_ring)
