@@ -141,7 +141,7 @@ def measure(phrases, size: int, spp: int, tier: str, mitsuba: bool = True):
             ir = ir_image(m, mus)
             ir_pv, pv = agreement(ir, mus, *preview_image(renderer, scene, m, tier))
             ir_mi, mi = agreement(ir, mus, *mitsuba_image(scene, m, size, spp)) if mitsuba else (ir_pv, float("nan"))
-            yield phrase, ir_pv, pv, mi * ir_pv / ir_mi
+            yield phrase, ir_pv, pv, (mi * ir_pv / ir_mi if ir_mi > 0 else mi)  # ultra-black paints: IR 0
 
 
 def every_phrase() -> list[str]:
@@ -164,7 +164,8 @@ def main(argv=None) -> int:
     phrases = every_phrase() if args.all else REPRESENTATIVE
     print(f"{'material':36s} {'IR':>7s} {'preview':>8s} {'Mitsuba':>8s} {'pv/IR':>7s} {'mi/IR':>7s}")
     for phrase, ir, pv, mi in measure(phrases, args.size, args.spp, args.tier):
-        print(f"{phrase[:36]:36s} {ir:7.3f} {pv:8.3f} {mi:8.3f} {pv / ir:7.3f} {mi / ir:7.3f}", flush=True)
+        scale = 1.0 / ir if ir > 0 else float("nan")
+        print(f"{phrase[:36]:36s} {ir:7.3f} {pv:8.3f} {mi:8.3f} {pv * scale:7.3f} {mi * scale:7.3f}", flush=True)
     return 0
 
 
