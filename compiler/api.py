@@ -17,8 +17,8 @@ from .document import parse_document
 from .ir import document_head, document_ir
 from .lexicon import Lexicon, cached_lexicon
 from .material import Document
-from .parallel import parallel_material_irs, worker_count
 from .state import Context, MaterialState
+from .workers import worker_count
 
 JSONDict = dict[str, Any]
 
@@ -121,15 +121,19 @@ def compile_stream(
     gives, without holding the materials. Iterate with the cyclic GC paused (cyclic_gc_paused).
 
     A large document is compiled by `workers` processes (None: $CNLMC_WORKERS, else the CPUs;
-    see cnlmc.parallel.worker_count), its materials then EncodedMaterial mappings, in the same
+    see cnlmc.workers.worker_count), its materials then EncodedMaterial mappings, in the same
     order, with the same diagnostics and the same bytes once written."""
     lexicon = lexicon or lexicon_for()
     ctx = Context(lexicon, seed=seed, filename=filename)
     diags: list[Diagnostic] = []
     count = worker_count(source, workers)
-    materials = (
-        iter_material_irs(source, ctx, diags) if count == 1 else parallel_material_irs(source, ctx, diags, count)
-    )
+    materials: Iterator[Mapping[str, Any]]
+    if count == 1:
+        materials = iter_material_irs(source, ctx, diags)
+    else:
+        from .parallel import parallel_material_irs  # multiprocessing only for a large document
+
+        materials = parallel_material_irs(source, ctx, diags, count)
     return Stream(document_head(filename, lexicon.sources), materials, diags)
 
 

@@ -21,7 +21,6 @@ otherwise (or with CNLMC_WORKERS=1) the document is compiled in this process.
 from __future__ import annotations
 
 import multiprocessing
-import os
 import pickle
 import signal
 import sys
@@ -41,38 +40,15 @@ from .lines import LINE_END
 from .params import Params
 from .state import Context
 from .tagger import Tagger
+from .workers import WORKERS_VARIABLE
 
-PARALLEL_MIN_LINES = 5000  # below this, starting the processes costs more than they save
 CHUNK_LINES = 1000
 AHEAD_CHUNKS = 3  # a worker's results the parent holds before it stops reading from that worker
-MAX_WORKERS = 8
-WORKERS_VARIABLE = "CNLMC_WORKERS"
 
 ADD, NEW, BEGIN, END, MATERIAL = range(5)  # the kinds of event (see the module's doc)
 Event = tuple[Any, ...]
 FRONT_KEYS = ("label", "phrase")  # a material's IR keys between its name and its variant
 NAMED_KEYS = ("name", *FRONT_KEYS, "variant")  # the keys up to the variant's, which names the group
-
-
-def worker_count(source: str, requested: int | None = None) -> int:
-    """How many processes compile `source`: `requested`, else $CNLMC_WORKERS (a positive integer),
-    else the CPUs this process may use; 1 below PARALLEL_MIN_LINES lines or where fork is missing."""
-    wanted = requested if requested is not None else _workers_from_environment()
-    if wanted <= 1 or max(source.count("\n"), source.count("\r")) + 1 < PARALLEL_MIN_LINES:
-        return 1
-    if "fork" not in multiprocessing.get_all_start_methods():
-        return 1
-    return min(wanted, MAX_WORKERS)
-
-
-def _workers_from_environment() -> int:
-    value = os.environ.get(WORKERS_VARIABLE, "").strip()
-    if value.isdigit() and int(value) > 0:
-        return int(value)
-    try:
-        return len(os.sched_getaffinity(0))
-    except (AttributeError, OSError):  # not on Linux
-        return os.cpu_count() or 1
 
 
 def chunk_starts(source: str, lines_per_chunk: int = CHUNK_LINES) -> list[tuple[int, int]]:

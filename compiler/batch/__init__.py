@@ -9,6 +9,18 @@ version), so a material is rebuilt only when that changes. Every file goes throu
 
 from __future__ import annotations
 
-from .builder import BuildReport, build, build_report
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from .builder import BuildReport, build, build_report
 
 __all__ = ["BuildReport", "build", "build_report"]
+
+
+def __getattr__(name: str) -> Any:
+    """The builder loads on first use, so `cnlmc --help` and a compile do not import it."""
+    if name in __all__:
+        from . import builder
+
+        return getattr(builder, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

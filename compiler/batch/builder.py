@@ -20,7 +20,8 @@ from ..lexicon_schema import LexiconError
 from ..output import write_atomic
 from .catalog import Catalog, Entry, read_catalog
 from .keys import BUILD_FORMAT, task_key
-from .runners import RESULT_MODES, available_cpus, run_dask, run_pool, run_serial
+from .modes import RESULT_MODES
+from .runners import available_cpus, run_dask, run_pool, run_serial
 from .tasks import Outcome, Task, up_to_date, write_task
 from .work import target_options
 

@@ -4,13 +4,15 @@ from __future__ import annotations
 
 import argparse
 import sys
-from typing import TextIO
+from typing import TYPE_CHECKING, TextIO
 
 from cnlmc.backends.registry import Command
 
 from ..diagnostics import visible
-from .builder import FAILED, MANIFEST_NAME, STATUSES, BuildReport, Done, build_report
-from .runners import RESULT_MODES
+from .modes import RESULT_MODES
+
+if TYPE_CHECKING:
+    from .builder import BuildReport, Done
 
 EXIT_OK, EXIT_FAILED, EXIT_INTERRUPTED = 0, 1, 130  # 130: 128 + SIGINT, as the other commands
 
@@ -42,6 +44,8 @@ class BuildCommand(Command):
         parser.add_argument("--seed", type=int, default=0, help="seed for procedural maps (default 0)")
 
     def run(self, args: argparse.Namespace) -> int:
+        from .builder import MANIFEST_NAME, build_report  # the builder loads only when a build runs
+
         line = ProgressLine(sys.stderr) if sys.stderr.isatty() else None
         try:
             report = build_report(
@@ -105,6 +109,8 @@ class ProgressLine:
 
 
 def print_report(report: BuildReport, out: TextIO, err: TextIO) -> None:
+    from .builder import FAILED, STATUSES
+
     """The catalogue's warnings and the failures on `err`; the table (one row per target) on `out`."""
     for warning in report.warnings:
         print(warning, file=err)

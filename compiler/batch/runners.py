@@ -20,7 +20,6 @@ from .tasks import Outcome, Task
 from .work import run_task
 
 WINDOW_PER_WORKER = 4  # tasks handed to a worker ahead of the one it runs (our choice: keeps each busy)
-RESULT_MODES = ("return", "shared")
 
 
 def available_cpus() -> int:

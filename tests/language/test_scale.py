@@ -267,7 +267,7 @@ def test_a_stream_closed_early_stops_its_workers():
 
 
 def test_how_many_workers(monkeypatch):
-    from cnlmc.parallel import PARALLEL_MIN_LINES, worker_count
+    from cnlmc.workers import PARALLEL_MIN_LINES, worker_count
 
     small, large = mixed_source(100), mixed_source(PARALLEL_MIN_LINES)
     assert worker_count(small, 2) == 1 and worker_count(large, 1) == 1
@@ -282,7 +282,7 @@ def test_how_many_workers(monkeypatch):
 
 def test_the_cli_writes_the_same_bytes_with_one_or_two_workers(tmp_path):
     """A file above the threshold, compiled with CNLMC_WORKERS=1 and =2: the same file, the same stderr."""
-    from cnlmc.parallel import PARALLEL_MIN_LINES
+    from cnlmc.workers import PARALLEL_MIN_LINES
 
     source = tmp_path / "big.cnl"
     source.write_text(STREAMED + "\n" + mixed_source(PARALLEL_MIN_LINES + 200), encoding="utf-8")
@@ -302,7 +302,7 @@ def test_a_signal_during_a_compile_with_workers_leaves_nothing(tmp_path):
     import signal
     import time
 
-    from cnlmc.parallel import PARALLEL_MIN_LINES
+    from cnlmc.workers import PARALLEL_MIN_LINES
 
     source = tmp_path / "big.cnl"
     source.write_text(mixed_source(PARALLEL_MIN_LINES * 2), encoding="utf-8")
