@@ -6,22 +6,15 @@ No phrase here is in tests/language/everyday.toml.
 
 import pytest
 
-from cnlmc.api import compile_source
 from cnlmc.diagnostics import Severity
 from cnlmc.lexicon import load_lexicon
+
+from .conftest import look
 
 
 @pytest.fixture(scope="module")
 def lexicon():
     return load_lexicon()
-
-
-def look(lexicon, text):
-    result = compile_source(text, "fc.cnl", lexicon)
-    assert result.ok, (text, [d.message for d in result.diagnostics])
-    assert not [d for d in result.diagnostics if d.severity is Severity.WARNING], text
-    (material,) = result.ir["materials"]
-    return result, {k: material[k] for k in ("model", "params", "maps")}
 
 
 @pytest.mark.parametrize(

@@ -9,18 +9,12 @@ import pytest
 from cnlmc.api import compile_source, lexicon_for
 from cnlmc.diagnostics import Severity
 
+from .conftest import look
+
 
 @pytest.fixture(scope="module")
 def de():
     return lexicon_for(["de"])
-
-
-def look(lexicon, text):
-    result = compile_source(text, "de.cnl", lexicon)
-    assert result.ok, (text, [d.message for d in result.diagnostics])
-    assert not [d for d in result.diagnostics if d.severity is Severity.WARNING], text
-    (material,) = result.ir["materials"]
-    return result, {k: material[k] for k in ("model", "params", "maps")}
 
 
 @pytest.mark.parametrize(

@@ -16,18 +16,12 @@ from cnlmc.diagnostics import Severity
 from cnlmc.graphs import graph_params
 from cnlmc.lexicon import load_lexicon
 
+from .conftest import look
+
 
 @pytest.fixture(scope="module")
 def lexicon():
     return load_lexicon()
-
-
-def look(lexicon, text):
-    result = compile_source(text, "mc.cnl", lexicon)
-    assert result.ok, (text, [d.message for d in result.diagnostics])
-    assert not [d for d in result.diagnostics if d.severity is Severity.WARNING], text
-    (material,) = result.ir["materials"]
-    return result, {k: material[k] for k in ("model", "params", "maps")}
 
 
 @pytest.mark.parametrize(
