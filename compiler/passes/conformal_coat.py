@@ -14,6 +14,7 @@ from ..state import Context, MaterialState
 from .words import apply_coat_entry
 
 COLOUR_RULES = ("colours", "shades")  # provenance rules of colour words (passes/colours.py)
+UNTINTED = 0.999  # a base colour channel at or above this leaves the metal's own reflectance
 
 
 def lay_conformal_coats(state: MaterialState, ctx: Context) -> MaterialState:
@@ -28,5 +29,8 @@ def lay_conformal_coats(state: MaterialState, ctx: Context) -> MaterialState:
 
 
 def _coloured_by_words(state: MaterialState) -> bool:
+    """A colour word set the base colour and it still tints the metal: a white tint is the bare
+    metal (a later plating's optics replaced the colour: 'gold finish plastic'), no film to add."""
     steps = state.provenance.get("base_color", [])
-    return any(step.rule.split(":", 1)[0].strip() in COLOUR_RULES for step in steps)
+    tinted = any(channel < UNTINTED for channel in state.params.get("base_color", (1.0, 1.0, 1.0)))
+    return tinted and any(step.rule.split(":", 1)[0].strip() in COLOUR_RULES for step in steps)

@@ -36,7 +36,15 @@ def start_bake(source: Path, out: Path, *extra: str, env: dict[str, str] | None 
         stderr=subprocess.PIPE,
         text=True,
         env=env,
+        preexec_fn=_default_dispositions,
     )
+
+
+def _default_dispositions() -> None:
+    """The bake starts with the default handlers even when the test run ignores a signal (`nohup`
+    sets SIGHUP to ignored, and cnlmc rightly keeps an ignored signal ignored)."""
+    for signum in (signal.SIGTERM, signal.SIGHUP, signal.SIGINT):
+        signal.signal(signum, signal.SIG_DFL)
 
 
 def wait_for(found: Callable[[], bool], proc: subprocess.Popen[str], what: str, limit: float = 240) -> None:
