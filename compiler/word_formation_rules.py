@@ -24,6 +24,7 @@ _LISTS = {
     "punctuation": ("trailing", "leading", "quotes", "number_marks"),
     "negation": ("words", "prefixes", "softeners", "emphatic"),
     "qualifiers": ("words",),
+    "properties": ("endings",),
 }
 
 
@@ -33,6 +34,7 @@ def empty_rules() -> dict[str, Any]:
         "punctuation": {"trailing": [], "leading": [], "quotes": [], "number_marks": []},
         "negation": {"words": [], "prefixes": [], "softeners": [], "emphatic": [], "soft_adverb": ""},
         "qualifiers": {"words": []},
+        "properties": {"endings": []},
         "compound_first": {
             "manners": [],
             "participles": [],

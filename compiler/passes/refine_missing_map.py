@@ -21,9 +21,6 @@ from .words import apply_adjective
 
 __all__ = ["add_missing_map", "map_property_of"]
 
-#: Endings that make an adjective of a map property's noun ('grainy', 'veiny', 'speckled'): our choice.
-PROPERTY_ENDINGS = ("y", "ey", "ed", "d")
-
 
 def add_missing_map(state: MaterialState, ctx: Context, item: ast.RefineItem) -> bool:
     """Apply the adjective that draws the comparative's missing map; False if there is none to apply."""
@@ -80,7 +77,8 @@ def _applies(adjective: Entry, noun: Entry) -> bool:
 def map_property_of(state: MaterialState, ctx: Context, word: str) -> Entry | None:
     """'more grainy' on oak: 'grainy' is an adjective the material lacks ('textured'), but its stem
     names a map property of a map the material has ('grain'): that property."""
-    for ending in PROPERTY_ENDINGS:
+    endings = [e for layer in ctx.lexicon.word_formation for e in layer["properties"]["endings"]]
+    for ending in dict.fromkeys(endings):  # word_formation*.toml [properties], the overlay's first
         if not word.endswith(ending) or len(word) - len(ending) < 3:
             continue
         stem = word[: len(word) - len(ending)]
