@@ -1,0 +1,116 @@
+"""What the preview's subsurface shader (shaders/subsurface.glsl.j2) needs to know about a
+translucent material and the scene: the body's albedo and mean free path in scene units, whether
+it is a thick volume or a thin wall, and the object's bounding sphere (the path length light
+takes through the body). docs/preview.md, "Subsurface".
+
+The IR (docs/subsurface.md): `model.subsurface` is "volume" or "thin" (absent otherwise) and
+`params.subsurface` holds `color` (multiple-scattering albedo), `radius` (mean free path per
+channel, metres), `anisotropy` and `thickness` (metres, thin walls)."""
+
+from __future__ import annotations
+
+import tomllib
+from collections.abc import Mapping
+from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .glass import bounding_sphere
+from .mesh import Mesh
+
+DATA = Path(__file__).parent / "data" / "subsurface.toml"
+FORMS = ("volume", "thin")
+
+
+@cache
+def settings() -> Mapping[str, Any]:
+    """The approximation's constants (data/subsurface.toml; read once, never changed)."""
+    with DATA.open("rb") as handle:
+        return tomllib.load(handle)
+
+
+@dataclass(frozen=True)
+class TranslucentBody:
+    """A translucent body: `form` "volume" or "thin"; `color` the multiple-scattering albedo,
+    `radius` the mean free path (metres) per channel, `thickness` a thin wall's (metres)."""
+
+    form: str
+    color: tuple[float, float, float]
+    radius: tuple[float, float, float]
+    anisotropy: float = 0.0
+    thickness: float | None = None
+    ior: float = 1.4
+
+    @property
+    def thin(self) -> bool:
+        return self.form == "thin"
+
+    def wall(self) -> float:
+        """A thin wall's thickness in metres (the data's default when the IR gives none)."""
+        return float(self.thickness or settings()["thin"]["default_thickness_m"])
+
+
+def _field(record: Any, name: str, default: Any = None) -> Any:
+    if isinstance(record, Mapping):
+        return record.get(name, default)
+    return getattr(record, name, default)
+
+
+def _triple(value: Any) -> tuple[float, float, float]:
+    values = [float(x) for x in np.broadcast_to(np.asarray(value, np.float64), (3,))]
+    return values[0], values[1], values[2]
+
+
+def subsurface_of(material: Any) -> TranslucentBody | None:
+    """The material's subsurface body (a typed Material or its IR object), None when its model
+    has none."""
+    model, params = _field(material, "model"), _field(material, "params")
+    form = _field(model, "subsurface")
+    record = _field(params, "subsurface")
+    if form not in FORMS or record is None:
+        return None
+    thickness = _field(record, "thickness")
+    return TranslucentBody(
+        form=str(form),
+        color=_triple(_field(record, "color", 0.8)),
+        radius=_triple(_field(record, "radius", 1e-3)),
+        anisotropy=float(_field(record, "anisotropy", 0.0) or 0.0),
+        thickness=None if thickness is None else float(thickness),
+        ior=float(_field(params, "ior", 1.4) or 1.4),
+    )
+
+
+def has_subsurface(material: Any) -> bool:
+    return subsurface_of(material) is not None
+
+
+def schlick_f0(ior: float) -> float:
+    return ((ior - 1.0) / (ior + 1.0)) ** 2
+
+
+def subsurface_uniforms(material: Any, mesh: Mesh, model: np.ndarray) -> dict[str, object]:
+    """The subsurface uniforms for the object drawn with `model` (world = model @ object); none
+    when the material has no subsurface body. Lengths are in scene units: metres divided by
+    the scene's metres_per_unit (data/subsurface.toml), scaled with the model matrix."""
+    body = subsurface_of(material)
+    if body is None:
+        return {}
+    centre, radius = bounding_sphere(mesh)
+    model = np.asarray(model, np.float64)
+    scale = abs(float(np.linalg.det(model[:3, :3]))) ** (1.0 / 3.0) or 1.0
+    per_unit = float(settings()["scene"]["metres_per_unit"])
+    wrap = settings()["wrap"]
+    return {
+        "pv_sss_albedo": np.clip(body.color, 0.0, 1.0),
+        "pv_sss_mfp": np.maximum(np.asarray(body.radius) / per_unit * scale, 1e-6),
+        "pv_sss_thin": int(body.thin),
+        "pv_sss_wall": body.wall() / per_unit * scale,
+        "pv_sss_centre": model[:3, :3] @ centre + model[:3, 3],
+        "pv_sss_radius": radius * scale,
+        "pv_sss_f0": schlick_f0(body.ior),
+        "pv_sss_wrap_gain": float(wrap["gain"]),
+        "pv_sss_wrap_max": float(wrap["max"]),
+    }
