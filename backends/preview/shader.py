@@ -23,6 +23,7 @@ from ..glsl.plan import MICROFACET_BASES, Plan, Sampler, make_plan
 from ..glsl.render import ShaderWriter
 from .albedo_tables import split_fitted
 from .resources import source_key
+from .subsurface import has_subsurface
 
 #: the GLSL backend's options that change a material's shader
 GLSL_OPTION_KEYS = ("fresnel", "multiscatter", "specialize")
@@ -50,6 +51,7 @@ class PreviewPlan:
     summary: str
     split_fitted: bool  # the split-sum tables hold a fitted kernel pair: two lookups (split.glsl.j2)
     sheen: bool = False  # a Charlie sheen over the base (sheen.glsl.j2)
+    subsurface: bool = False  # a translucent body under a black-based boundary (subsurface.glsl.j2)
 
 
 @dataclass(frozen=True)
@@ -86,6 +88,7 @@ def preview_plan(material: Material, library: Plan, specialized: Plan) -> Previe
         summary=base + "".join(f", {k}" for k, on in flags.items() if on),
         split_fitted=split_fitted(material, roughness_map),
         sheen=has_sheen(material),
+        subsurface=has_subsurface(material),
     )
 
 
