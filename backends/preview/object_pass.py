@@ -19,6 +19,7 @@ from .resources import Resources, source_key
 from .scene import Scene
 from .shader import MaterialShader
 from .sheen import sheen_uniforms
+from .subsurface import subsurface_uniforms
 from .tiers import Tier
 
 VERTEX_ATTRIBUTES = (("in_position", 3), ("in_normal", 3), ("in_tangent", 3), ("in_uv", 2))
@@ -86,6 +87,8 @@ def draw_object(
     textures = dict(map_textures(resources, material, shader.samplers))
     if tier.ibl == "splitsum":
         textures.update(split_textures(resources, material, shader.plan, res, options))
+    if shader.plan.subsurface:
+        textures["pv_env_irradiance"] = res.irradiance  # the body's diffuse light (subsurface.glsl.j2)
     for unit, (name, tex) in enumerate(textures.items()):
         tex.use(unit)
         gl.set_uniform(prog, name, unit)
@@ -102,6 +105,10 @@ def draw_object(
             gl.set_uniform(prog, name, value)
     for name, value in sheen_uniforms(material).items():
         gl.set_uniform(prog, name, value)
+    for name, value in subsurface_uniforms(material, scene.mesh, model).items():
+        gl.set_uniform(prog, name, value)
+    if shader.plan.subsurface:  # the boundary reflects, the body scatters: no diffuse base lobe
+        gl.set_uniform(prog, "cnlm_base_color", (0.0, 0.0, 0.0))
     ctx.enable(moderngl.DEPTH_TEST)
     if scene.mesh.closed:
         ctx.enable(moderngl.CULL_FACE)
