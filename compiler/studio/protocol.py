@@ -1,0 +1,161 @@
+"""The studio's WebSocket messages: the page sends {op, seq, ...}, the server answers each with
+{op, seq, ...} (or {op: "error", seq, message}). Work that takes long (exports, the refinement
+chips, AR) runs on a worker thread so the page's next keystroke is not kept waiting on it.
+
+  edit {text}                   -> analysis {diagnostics, tokens, colours, materials, payloads, history, ok}
+  refine {words}                -> analysis {..., text}  (the document with the refinement line)
+  undo / redo                   -> analysis {..., text}
+  complete {text, line, character} -> completion {items}
+  hover {text, line, character} -> hover {markdown, range} | hover {}
+  export {key}                  -> exported {url, name, notes}
+  ar_model                      -> ar_model {glb, usdz, notes}
+  thumbnail {index, image}      -> (nothing: the history strip's picture of step `index`)
+and, unasked, chips {words, text} after an analysis that made a history step."""
+
+from __future__ import annotations
+
+import asyncio
+import functools
+import logging
+from collections.abc import Callable
+from typing import Any
+
+from aiohttp import web
+
+from .ar import ARFailed
+from .exports import ExportFailed
+from .session import StudioSession
+
+JSONDict = dict[str, Any]
+#: a thumbnail is a small PNG data: URL; anything longer is not one
+MAX_THUMBNAIL_CHARS = 200_000
+log = logging.getLogger("cnlmc.studio")
+
+
+class Dispatcher:
+    def __init__(self, session: StudioSession, socket: web.WebSocketResponse, initial_text: str) -> None:
+        self.session = session
+        self.socket = socket
+        self.initial_text = initial_text
+        self.chip_task: asyncio.Task[None] | None = None
+
+    def stop(self) -> None:
+        if self.chip_task is not None:
+            self.chip_task.cancel()
+
+    async def hello(self, exports: list[JSONDict]) -> None:
+        session = self.session
+        await self.socket.send_json(
+            {
+                "op": "hello",
+                "session": session.id,
+                "files_url": f"/files/{session.id}/",
+                "data_url": "/view-data/",
+                "text": self.initial_text,
+                "exports": exports,
+                "view": session.view.module is not None,
+            }
+        )
+
+    async def handle(self, message: JSONDict) -> None:
+        op, seq = str(message.get("op", "")), message.get("seq")
+        handler = getattr(self, f"op_{op}", None)
+        if handler is None:
+            await self.reply(seq, {"op": "error", "message": f"unknown request '{op}'"})
+            return
+        try:
+            answer = await handler(message)
+        except (ValueError, ExportFailed, ARFailed) as exc:
+            answer = {"op": "error", "message": str(exc)}
+        except Exception as exc:  # never a traceback in the page
+            log.error("studio: %s while answering '%s': %s", type(exc).__name__, op, exc)
+            answer = {"op": "error", "message": f"the studio could not answer '{op}' ({type(exc).__name__})"}
+        if answer is not None:
+            await self.reply(seq, answer)
+
+    async def reply(self, seq: Any, answer: JSONDict) -> None:
+        if not self.socket.closed:
+            await self.socket.send_json({**answer, "seq": seq})
+
+    async def in_thread(self, work: Callable[..., Any], *args: Any) -> Any:
+        return await asyncio.get_running_loop().run_in_executor(None, functools.partial(work, *args))
+
+    async def analysed(self, answer: JSONDict) -> JSONDict:
+        if answer.get("recorded"):
+            self.offer_chips()
+        return {"op": "analysis", **answer}
+
+    def offer_chips(self) -> None:
+        self.stop()
+        self.chip_task = asyncio.create_task(self.send_chips(self.session.text))
+
+    async def send_chips(self, text: str) -> None:
+        words = await self.in_thread(self.session.chips)
+        if text == self.session.text:
+            await self.reply(None, {"op": "chips", "words": words, "text": text})
+
+    # ------------------------------------------------------------------ requests
+
+    async def op_edit(self, message: JSONDict) -> JSONDict:
+        return await self.analysed(self.session.edit(_text(message, "text")))
+
+    async def op_refine(self, message: JSONDict) -> JSONDict:
+        return await self.analysed(self.session.refine(_text(message, "words")))
+
+    async def op_undo(self, message: JSONDict) -> JSONDict:
+        return await self.analysed(self.session.undo())
+
+    async def op_redo(self, message: JSONDict) -> JSONDict:
+        return await self.analysed(self.session.redo())
+
+    async def op_complete(self, message: JSONDict) -> JSONDict:
+        text, line, character = _position(self.session, message)
+        return {"op": "completion", "items": self.session.engine.completion(text, line, character)}
+
+    async def op_hover(self, message: JSONDict) -> JSONDict:
+        text, line, character = _position(self.session, message)
+        return {"op": "hover", **(self.session.engine.hover(text, line, character) or {})}
+
+    async def op_export(self, message: JSONDict) -> JSONDict:
+        exported = await self.in_thread(self.session.export, _text(message, "key"))
+        return {
+            "op": "exported",
+            "url": self.url(exported.path),
+            "name": exported.path.rsplit("/", 1)[-1],
+            "notes": exported.notes,
+        }
+
+    async def op_ar_model(self, message: JSONDict) -> JSONDict:
+        glb = await self.in_thread(self.session.export, "glb")
+        usdz = await self.in_thread(self.session.export, "usdz")
+        return {
+            "op": "ar_model",
+            "glb": self.url(glb.path),
+            "usdz": self.url(usdz.path),
+            "notes": glb.notes + usdz.notes,
+        }
+
+    async def op_thumbnail(self, message: JSONDict) -> None:
+        image, index = message.get("image"), message.get("index")
+        if isinstance(image, str) and image.startswith("data:image/") and len(image) <= MAX_THUMBNAIL_CHARS:
+            if isinstance(index, int):
+                self.session.history.set_thumbnail(index, image)
+
+    def url(self, relative: str) -> str:
+        return f"/files/{self.session.id}/{relative}"
+
+
+def _text(message: JSONDict, key: str) -> str:
+    value = message.get(key)
+    if not isinstance(value, str):
+        raise ValueError(f"the request has no '{key}'")
+    return value
+
+
+def _position(session: StudioSession, message: JSONDict) -> tuple[str, int, int]:
+    text = _text(message, "text")
+    session.check_size(text)
+    line, character = message.get("line"), message.get("character")
+    if not isinstance(line, int) or not isinstance(character, int) or line < 0 or character < 0:
+        raise ValueError("the request has no position")
+    return text, line, character

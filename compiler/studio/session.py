@@ -1,0 +1,141 @@
+"""One browser tab's studio session: its document, analysis, history and output folder.
+
+Every file the session makes goes into its own folder (cnlmc.output writes them) and the server
+serves nothing else of the file system; the folder is removed when the session ends."""
+
+from __future__ import annotations
+
+import secrets
+import shutil
+from pathlib import Path
+from typing import Any
+
+from ..api import compile_source
+from ..changes import material_changes
+from ..colour import linear_to_hex
+from ..diagnostics import Severity
+from ..explain import explain_material
+from ..lexicon import Lexicon
+from .editor import EditorEngine
+from .exports import Exported, export
+from .history import History, Step
+from .payloads import ViewData
+from .settings import Settings
+
+JSONDict = dict[str, Any]
+
+
+class TooLarge(ValueError):
+    """A document over the size limit: the message says the limit."""
+
+
+class StudioSession:
+    def __init__(self, root: Path, lexicon: Lexicon, settings: Settings, view: ViewData) -> None:
+        self.id = secrets.token_urlsafe(12)
+        self.folder = root / self.id
+        self.folder.mkdir(mode=0o700)
+        self.lexicon = lexicon
+        self.settings = settings
+        self.view = view
+        self.engine = EditorEngine(lexicon)
+        self.history = History(settings.limits.max_history)
+        self.text = ""
+
+    def close(self) -> None:
+        shutil.rmtree(self.folder, ignore_errors=True)
+
+    # ------------------------------------------------------------------ the document
+
+    def check_size(self, text: str) -> None:
+        limit = self.settings.limits.max_document_bytes
+        if len(text.encode("utf-8", "surrogatepass")) > limit:
+            raise TooLarge(f"the document is over the studio's limit of {limit // 1024} KiB: split it into files")
+
+    def edit(self, text: str, label: str = "edit") -> JSONDict:
+        """Analyse `text` (the editor's whole document); a result that compiles to different
+        materials becomes a history step. Returns what the page shows."""
+        self.check_size(text)
+        self.text = text
+        features = self.engine.features(text)
+        materials = self.materials()
+        ok = bool(materials) and not any(d["severity"] == 1 for d in features["diagnostics"])
+        recorded = ok and self.history.push(Step(text, materials, label))
+        return {**features, **self.picture(materials, ok), "ok": ok, "recorded": recorded}
+
+    def materials(self) -> list[JSONDict]:
+        snapshot = self.engine.analyse(self.text)
+        return [m for block in snapshot.blocks for m in block.result.materials]
+
+    def picture(self, materials: list[JSONDict], ok: bool) -> JSONDict:
+        """The materials panel (name, swatch, explain table, what changed) and the view's payloads."""
+        previous = self.history.previous()
+        before = {m["name"]: m for m in previous.materials} if previous else {}
+        panel = [
+            {
+                "name": m["name"],
+                "hex": linear_to_hex(m["params"]["base_color"]) if "base_color" in m["params"] else None,
+                "explain": explain_material(m),
+                "changes": material_changes(before[m["name"]], m) if m["name"] in before else [],
+            }
+            for m in materials
+        ]
+        payloads = self.view.payloads(materials, self.folder / "view") if ok else []
+        return {"materials": panel, "payloads": payloads, "history": self.history.summary()}
+
+    # ------------------------------------------------------------------ refinement and history
+
+    def refine(self, words: str) -> JSONDict:
+        """Add a refinement line under the last material ('darker', 'less grain'); a line the
+        compiler refuses leaves the document as it was and says why."""
+        words = " ".join(words.split())
+        if not words:
+            raise ValueError("type a refinement such as 'darker' or 'less grain'")
+        text = self.text.rstrip("\n") + "\n" + words
+        self.check_size(text)
+        trial = compile_source(text, "<studio>", self.lexicon)
+        errors = [d.message for d in trial.diagnostics if d.severity == Severity.ERROR]
+        if errors or not trial.materials:
+            raise ValueError(f"'{words}' cannot refine this material: " + ("; ".join(errors) or "no material"))
+        return {**self.edit(text, words), "text": text}
+
+    def move(self, step: Step | None, what: str) -> JSONDict:
+        if step is None:
+            raise ValueError(f"nothing to {what}")
+        self.text = step.text
+        features = self.engine.features(step.text)
+        return {**features, **self.picture(step.materials, True), "ok": True, "recorded": False, "text": step.text}
+
+    def undo(self) -> JSONDict:
+        return self.move(self.history.undo(), "undo")
+
+    def redo(self) -> JSONDict:
+        return self.move(self.history.redo(), "redo")
+
+    def chips(self) -> list[str]:
+        """Refinement words that change the current material and compile without a new warning."""
+        current = self.history.current
+        if current is None or current.text != self.text:
+            return []
+        base = compile_source(self.text, "<studio>", self.lexicon)
+        warnings = len([d for d in base.diagnostics if d.severity != Severity.ERROR])
+        chips = []
+        for word in self.lexicon.all_of("refinements"):
+            if word in self.settings.chip_needs_property:
+                continue
+            trial = compile_source(self.text.rstrip("\n") + "\n" + word, "<studio>", self.lexicon)
+            if trial.ok and len(trial.diagnostics) <= warnings and trial.materials != base.materials:
+                chips.append(word)
+            if len(chips) == self.settings.max_chips:
+                break
+        return chips
+
+    # ------------------------------------------------------------------ exports
+
+    def export(self, key: str) -> Exported:
+        kind = self.settings.export(key)
+        if kind is None:
+            raise ValueError(f"no export called '{key}'")
+        result = compile_source(self.text, "<studio>", self.lexicon, keep_stages=False)
+        if not result.ok or not result.materials:
+            raise ValueError("the document has errors: fix them before exporting")
+        return export(result.ir, kind, self.folder)
