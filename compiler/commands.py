@@ -40,6 +40,7 @@ from .lexicon import Lexicon
 from .lexicon_schema import LexiconError
 from .lines import iter_lines
 from .output import write_artifacts, write_streamed
+from .studio.command import ServeCommand  # light: aiohttp loads only when `serve` runs
 from .tagger import Tagger
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
@@ -376,4 +377,5 @@ LANGUAGE_COMMANDS: tuple[Command, ...] = (
     TargetsCommand(),
     LspCommand(),
     BuildCommand(),  # cnlmc.batch: catalogues to targets (#20)
+    ServeCommand(),  # cnlmc.studio: the web studio (#17)
 )
