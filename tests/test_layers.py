@@ -37,6 +37,10 @@ FRONT_ENDS = frozenset(
         "cnlmc.batch.work",
         # speech input (#18): the `listen` command runs the target on what was said
         "cnlmc.speech.command",
+        # the web studio (#17): the `serve` command, its exports and its marker AR run targets
+        "cnlmc.studio.command",
+        "cnlmc.studio.exports",
+        "cnlmc.studio.ar",
     }
 )
 REGISTRY = "cnlmc.backends.registry"
