@@ -43,7 +43,7 @@ SHADE_OPS = {
 PARAM_SPECS = {s.name: s for s in PARAMS}
 #: What an adjective's formula may change: the scalar parameters, the base colour and the model.
 #: (A metal's optics come whole from a noun: `material = "copper"`.)
-EFFECT_PARAMS = (*(s.name for s in PARAMS if s.kind == "number"), "base_color", "model")
+EFFECT_PARAMS = (*(s.name for s in PARAMS if s.kind == "number"), "base_color", "flake_color", "model")
 
 
 class LexiconError(Exception):
