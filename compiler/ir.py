@@ -10,6 +10,7 @@ from typing import Any
 
 from .conventions import alpha_of
 from .diagnostics import Diagnostic
+from .flake_params import flake_params
 from .formulas import round6_list, rounded
 from .lexicon import Entry
 from .params import COAT_PARAMS, Params, params_by_model
@@ -65,6 +66,7 @@ def _params(
         out["anisotropy_rotation"] = rounded(p.get("anisotropy_rotation", Params.anisotropy_rotation))
     out["coat"] = rounded(_coat(state.coat, convention)) if model["coat"] else None
     out.update(sheen_params(p))
+    out.update(flake_params(p))
     return out
 
 

@@ -33,6 +33,7 @@ WHEN = {
     "oren_nayar": 'model.diffuse is "oren_nayar"',
     "always": "always (null when the model has no coat)",
     "sheen": "the noun has a sheen (velvet, cloth: docs/bsdf.md 'Sheen')",
+    "flakes": "a word asks for flakes (metallic, pearlescent, glittery paint or plastic: docs/bsdf.md 'Flakes')",
 }
 
 
@@ -257,6 +258,39 @@ class Params:
         when="sheen",
         doc="the sheen's roughness r; the Charlie lobe's alpha = r^2",
         noun=True,
+    )
+    flake_color: RGB | None = param(
+        default=None,
+        kind="rgb",
+        range=(0.0, 1.0),
+        unit="linear Rec.709",
+        when="flakes",
+        doc="the flakes' normal-incidence reflectance F0 (Schlick), under the coat; null = no flakes",
+        optional=True,
+    )
+    flake_density: float = param(
+        default=0.0,
+        kind="number",
+        range=(0.0, 1.0),
+        unit="area fraction",
+        when="flakes",
+        doc="the share of the surface the flakes cover; the pigment below shows through 1 - density",
+    )
+    flake_roughness: float = param(
+        default=0.5,
+        kind="number",
+        range=(0.0, 1.0),
+        unit="perceptual r",
+        when="flakes",
+        doc="the spread of the flakes' orientations; their GGX normal distribution's alpha = r^2",
+    )
+    flake_size: float = param(
+        default=0.0001,
+        kind="number",
+        range=(0.00001, 0.001),
+        unit="metres",
+        when="flakes",
+        doc="a flake's real size (0.02-0.2 mm paint, up to 1 mm glitter): how many flakes a pixel sees",
     )
     present: frozenset[str] = field(default=frozenset(), compare=True)
 

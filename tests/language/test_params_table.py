@@ -36,10 +36,15 @@ def test_derived_maps_keep_their_v1_values_and_order():
         "base_color": (0.0, 1.0),
         "sheen_color": (0.0, 1.0),
         "sheen_roughness": (0.0, 1.0),
+        "flake_color": (0.0, 1.0),
+        "flake_density": (0.0, 1.0),
+        "flake_roughness": (0.0, 1.0),
+        "flake_size": (0.00001, 0.001),
     }
     assert list(RANGES) == [
         *("roughness", "anisotropy", "diffuse_roughness", "ior", "base_color"),
         *("sheen_color", "sheen_roughness"),  # issue #15 item 5: velvet's and cloth's sheen
+        *("flake_color", "flake_density", "flake_roughness", "flake_size"),  # #15 item 5: paints' flakes
     ]
     assert list(COAT_RANGES.items()) == [
         ("roughness", (0.0, 1.0)),
