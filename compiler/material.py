@@ -23,9 +23,23 @@ from types import MappingProxyType
 from typing import Any
 
 from .conventions import alpha_of
-from .params import BASES, COAT_PARAMS, DIFFUSE_LOBES, DISTRIBUTIONS, PARAM_NAMES, PARAMS, RGB, Coat, Params, ParamSpec
+from .params import (
+    BASES,
+    COAT_PARAMS,
+    DIFFUSE_LOBES,
+    DISTRIBUTIONS,
+    PARAM_NAMES,
+    PARAMS,
+    RGB,
+    SUBSURFACE_MODELS,
+    SUBSURFACE_PARAMS,
+    Coat,
+    Params,
+    ParamSpec,
+    Subsurface,
+)
 
-__all__ = ["RGB", "Coat", "Document", "MapRef", "Material", "Model", "Params", "Provenance", "Variant"]
+__all__ = ["RGB", "Coat", "Document", "MapRef", "Material", "Model", "Params", "Provenance", "Subsurface", "Variant"]
 
 JSON = Any
 MAP_ROLES = ("base_color", "normal", "roughness", "metallic", "mask")
@@ -138,6 +152,7 @@ class Model:
     anisotropic: bool
     coat: bool
     diffuse: str | None
+    subsurface: str | None = None  # "volume" | "thin"; absent from the IR when null (docs/subsurface.md)
 
     @classmethod
     def from_ir(cls, d: object, path: str = "model") -> Model:
@@ -148,10 +163,14 @@ class Model:
             anisotropic=_boolean(d.get("anisotropic", False), f"{path}.anisotropic"),
             coat=_boolean(d.get("coat", False), f"{path}.coat"),
             diffuse=_choice(d.get("diffuse"), DIFFUSE_LOBES, f"{path}.diffuse"),
+            subsurface=_choice(d.get("subsurface"), SUBSURFACE_MODELS, f"{path}.subsurface"),
         )
 
     def to_ir(self) -> dict[str, JSON]:
-        return dataclasses.asdict(self)
+        out = dataclasses.asdict(self)
+        if self.subsurface is None:
+            del out["subsurface"]
+        return out
 
 
 def _value(spec: ParamSpec, value: object, path: str, ranged: bool = True) -> Any:
@@ -200,6 +219,23 @@ def coat_to_ir(coat: Coat) -> dict[str, JSON]:
     return {s.name: _json_value(getattr(coat, s.name)) for s in COAT_PARAMS}
 
 
+SUBSURFACE_NAMES = frozenset(s.name for s in SUBSURFACE_PARAMS)
+
+
+def subsurface_from_ir(d: object, path: str, ranged: bool = True) -> Subsurface:
+    """The medium under the boundary (docs/subsurface.md)."""
+    d = _object(d, path)
+    if ranged:
+        _no_unknown_keys(d, SUBSURFACE_NAMES, path)
+    return Subsurface(
+        **{s.name: _value(s, d[s.name], f"{path}.{s.name}", ranged) for s in SUBSURFACE_PARAMS if s.name in d}
+    )
+
+
+def subsurface_to_ir(medium: Subsurface) -> dict[str, JSON]:
+    return {s.name: _json_value(getattr(medium, s.name)) for s in SUBSURFACE_PARAMS}
+
+
 def params_from_ir(d: object, model: Model, path: str = "params", ranged: bool = True) -> Params:
     """Params from the IR's params object; absent keys hold the table's default (alpha: derived).
 
@@ -218,6 +254,8 @@ def params_from_ir(d: object, model: Model, path: str = "params", ranged: bool =
         where = f"{path}.{s.name}"
         if s.kind == "coat":
             values[s.name] = None if d[s.name] is None else coat_from_ir(d[s.name], convention, where, ranged)
+        elif s.kind == "subsurface":
+            values[s.name] = None if d[s.name] is None else subsurface_from_ir(d[s.name], where, ranged)
         else:
             values[s.name] = _value(s, d[s.name], where, ranged)
     if "alpha" not in values:
@@ -232,7 +270,12 @@ def params_to_ir(params: Params) -> dict[str, JSON]:
     for s in PARAMS:
         if s.name in params.present:
             value = getattr(params, s.name)
-            out[s.name] = coat_to_ir(value) if isinstance(value, Coat) else _json_value(value)
+            if isinstance(value, Coat):
+                out[s.name] = coat_to_ir(value)
+            elif isinstance(value, Subsurface):
+                out[s.name] = subsurface_to_ir(value)
+            else:
+                out[s.name] = _json_value(value)
     return out
 
 

@@ -34,7 +34,9 @@ WHEN = {
     "always": "always (null when the model has no coat)",
     "sheen": "the noun has a sheen (velvet, cloth: docs/bsdf.md 'Sheen')",
     "flakes": "a word asks for flakes (metallic, pearlescent, glittery paint or plastic: docs/bsdf.md 'Flakes')",
+    "subsurface": "model.subsurface is not null (docs/subsurface.md)",
 }
+SUBSURFACE_MODELS = (None, "volume", "thin")
 
 
 @dataclass(frozen=True)
@@ -42,7 +44,7 @@ class ParamSpec:
     """One row of the table (a field's metadata, with the field's name and default)."""
 
     name: str
-    kind: str  # "number" | "rgb" | "alpha" | "enum" | "coat" | "str"
+    kind: str  # "number" | "rgb" | "alpha" | "enum" | "coat" | "subsurface" | "str"
     default: Any
     range: tuple[float, float] | None
     unit: str
@@ -121,6 +123,44 @@ class Coat:
     )
     thickness: float = param(
         default=1.0, kind="number", range=(0.0, 10.0), unit="unitless", doc="a unitless absorption scale", required=True
+    )
+
+
+@dataclass(frozen=True)
+class Subsurface:
+    """Light that enters the body and leaves elsewhere (docs/subsurface.md): a homogeneous medium."""
+
+    color: RGB = param(
+        default=(0.8, 0.8, 0.8),
+        kind="rgb",
+        range=(0.0, 1.0),
+        unit="linear Rec.709",
+        doc="the multiple-scattering albedo (what a thick slab of the medium reflects), per channel",
+        required=True,
+    )
+    radius: RGB = param(
+        default=(0.001, 0.001, 0.001),
+        kind="rgb",
+        range=(0.0, 1.0),
+        unit="metres",
+        doc="the mean free path per channel (how far light travels in the body)",
+        required=True,
+    )
+    anisotropy: float = param(
+        default=0.0,
+        kind="number",
+        range=(-0.99, 0.99),
+        doc="the Henyey-Greenstein phase function's g (0 = isotropic)",
+        required=True,
+    )
+    thickness: float | None = param(
+        default=None,
+        kind="number",
+        range=(0.0, 1.0),
+        unit="metres",
+        doc='the sheet\'s thickness for model.subsurface "thin"; null for "volume" (the mesh is the body)',
+        optional=True,
+        required=True,
     )
 
 
@@ -292,6 +332,13 @@ class Params:
         when="flakes",
         doc="a flake's real size (0.02-0.2 mm paint, up to 1 mm glitter): how many flakes a pixel sees",
     )
+    subsurface: Subsurface | None = param(
+        default=None,
+        kind="subsurface",
+        when="subsurface",
+        doc="the medium under the dielectric boundary (the subsurface table below); the boundary's IOR is `ior`",
+        optional=True,
+    )
     present: frozenset[str] = field(default=frozenset(), compare=True)
 
 
@@ -305,6 +352,7 @@ def _specs(cls: type) -> tuple[ParamSpec, ...]:
 
 PARAMS: tuple[ParamSpec, ...] = _specs(Params)
 COAT_PARAMS: tuple[ParamSpec, ...] = _specs(Coat)
+SUBSURFACE_PARAMS: tuple[ParamSpec, ...] = _specs(Subsurface)
 PARAM_NAMES: frozenset[str] = frozenset(s.name for s in PARAMS)
 
 

@@ -12,7 +12,18 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from .params import BASES, COAT_PARAMS, DIFFUSE_LOBES, DISTRIBUTIONS, PARAMS, SPECULAR, WHEN, ParamSpec
+from .params import (
+    BASES,
+    COAT_PARAMS,
+    DIFFUSE_LOBES,
+    DISTRIBUTIONS,
+    PARAMS,
+    SPECULAR,
+    SUBSURFACE_MODELS,
+    SUBSURFACE_PARAMS,
+    WHEN,
+    ParamSpec,
+)
 
 SCHEMA_PATH = Path(__file__).with_name("ir_schema.json")
 DOCS_PATH = Path(__file__).resolve().parent.parent / "docs" / "ir.md"
@@ -39,7 +50,7 @@ def _property(spec: ParamSpec) -> JSONDict:
         out: JSONDict = {"type": "number"}
         if spec.range is not None:
             out.update(minimum=spec.range[0], maximum=spec.range[1])
-        return out
+        return {"oneOf": [{"type": "null"}, out]} if spec.optional else out
     if spec.kind == "rgb":
         return _numbers(3, spec)
     if spec.kind == "alpha":
@@ -48,6 +59,8 @@ def _property(spec: ParamSpec) -> JSONDict:
         return {"enum": list(spec.choices)}
     if spec.kind == "coat":
         return {"oneOf": [{"type": "null"}, {"$ref": "#/$defs/coat"}]}
+    if spec.kind == "subsurface":
+        return {"oneOf": [{"type": "null"}, {"$ref": "#/$defs/subsurface"}]}
     return {"type": "string"}
 
 
@@ -105,6 +118,7 @@ def _model() -> JSONDict:
             "anisotropic": {"type": "boolean"},
             "coat": {"type": "boolean"},
             "diffuse": {"enum": list(DIFFUSE_LOBES)},
+            "subsurface": {"enum": list(SUBSURFACE_MODELS)},
         },
     }
 
@@ -178,6 +192,7 @@ def ir_schema() -> JSONDict:
             "model": _model(),
             "params": _object(PARAMS),
             "coat": _object(COAT_PARAMS),
+            "subsurface": _object(SUBSURFACE_PARAMS),
             "map": _map(),
             "step": _step(),
             "diagnostic": _diagnostic(),
@@ -195,7 +210,9 @@ def schema_text() -> str:
 def _kind(spec: ParamSpec) -> str:
     if spec.kind == "enum":
         return " \\| ".join(f'`"{c}"`' for c in spec.choices)
-    return {"number": "number", "rgb": "RGB", "alpha": "[x, y]", "coat": "null \\| coat", "str": "string"}[spec.kind]
+    return {"number": "number", "rgb": "RGB", "alpha": "[x, y]", "coat": "null \\| coat", "str": "string"}.get(
+        spec.kind, f"null \\| {spec.kind}"
+    )
 
 
 def _default(spec: ParamSpec) -> str:
@@ -239,7 +256,9 @@ def _rows(specs: tuple[ParamSpec, ...], used_by: bool) -> list[str]:
 def params_table() -> str:
     """The markdown between the markers in docs/ir.md: the params and the coat tables."""
     lines = [TABLE_START, "", *_rows(PARAMS, True), "", "`coat` (every key present when the coat is):", ""]
-    lines += [*_rows(COAT_PARAMS, False), "", TABLE_END]
+    lines += [*_rows(COAT_PARAMS, False), ""]
+    lines += ["`subsurface` (every key present when the medium is; docs/subsurface.md):", ""]
+    lines += [*_rows(SUBSURFACE_PARAMS, False), "", TABLE_END]
     return "\n".join(lines)
 
 
