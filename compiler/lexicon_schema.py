@@ -17,7 +17,7 @@ from .colour import parse_hex
 from .graphs import graph_names, graph_outputs, graph_params
 from .lexicon_source import Path_, SourceText, dotted
 from .material import MAP_ROLES
-from .params import COAT_PARAMS, PARAMS, ParamSpec
+from .params import COAT_PARAMS, PARAMS, SUBSURFACE_PARAMS, ParamSpec
 
 COMMON_FIELDS: dict[str, dict[str, Any]] = {
     "aliases": {"type": "strlist"},
@@ -157,6 +157,7 @@ def _table_field(spec: ParamSpec) -> FieldSpec:
 TABLE_FIELDS = {
     **{f"params.{s.name}": _table_field(s) for s in PARAMS if s.kind in _LEXICON_TYPES},
     **{f"coat.{s.name}": _table_field(s) for s in COAT_PARAMS if s.kind in _LEXICON_TYPES},
+    **{f"subsurface.{s.name}": _table_field(s) for s in SUBSURFACE_PARAMS if s.kind in _LEXICON_TYPES},
 }
 
 
