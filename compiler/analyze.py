@@ -17,12 +17,13 @@ from .passes.conformal_coat import lay_conformal_coats
 from .passes.model import select_model
 from .passes.ranges import check_finite, check_ranges
 from .passes.refine import apply_inline_refinements, apply_refinement_line
+from .passes.subsurface import apply_subsurface, select_subsurface
 from .passes.variants import expand, identifier
 from .passes.words import apply_groups
 from .state import Context, MaterialState
 
-BUILD_PASSES = (apply_noun, apply_groups, apply_coat_clause, apply_inline_refinements)
-FINAL_PASSES = (lay_conformal_coats, select_model, check_ranges, check_finite)
+BUILD_PASSES = (apply_noun, apply_groups, apply_subsurface, apply_coat_clause, apply_inline_refinements)
+FINAL_PASSES = (lay_conformal_coats, select_model, select_subsurface, check_ranges, check_finite)
 
 
 def attach_refinements(doc: ast.Document) -> list[tuple[ast.Material, list[ast.Refinement]]]:
