@@ -16,6 +16,7 @@ from .lexicon import Entry
 from .params import COAT_PARAMS, Params, params_by_model
 from .sheen_colour import sheen_params
 from .state import MaterialState, WordLists, step_json
+from .subsurface import subsurface_ir
 
 JSONDict = dict[str, Any]
 
@@ -66,6 +67,7 @@ def _params(
         out["anisotropy_rotation"] = rounded(p.get("anisotropy_rotation", Params.anisotropy_rotation))
     out["coat"] = rounded(_coat(state.coat, convention)) if model["coat"] else None
     out.update(sheen_params(p))
+    out.update(subsurface_ir(p))
     out.update(flake_params(p))
     return out
 
