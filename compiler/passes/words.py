@@ -163,7 +163,11 @@ def apply_adjective(
     holder = state.coat if target == "coat" and state.coat is not None else state.params
     rule, data = f"adjectives.{adjective.key}", adjective.data
     where, effects = effect_source(adjective, state)
-    if not effects and not group.colours and not any(data.get(k) for k in ("maps", "coat", "material", "hides")):
+    if (
+        not effects
+        and not group.colours
+        and not any(data.get(k) for k in ("maps", "coat", "material", "hides", "subsurface"))
+    ):
         _note_unchanged_look(state, word)
     for index, effect in enumerate(effects):
         _apply_effect(state, ctx, holder, effect, weight, (rule, where, index), words)
