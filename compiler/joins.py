@@ -87,7 +87,9 @@ class Joiner:
             elif of_tag(word, "OBJECT"):
                 if k + 1 < len(tagged) and of_tag(tagged[k + 1], "NOUN"):
                     out.append(word)  # "roof tiles": joined to the noun next
-                elif not others(word) and any(of_tag(t, "NOUN") or of_tag(t, "OBJECT") for t in tagged[k + 1 :]):
+                elif not others(word) and any(
+                    of_tag(t, "NOUN") or of_tag(t, "OBJECT") for t in _until_with(tagged[k + 1 :])
+                ):
                     note = f"read '{word.text}' as saying how or what for, not what: the material is named later"
                     diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))  # "wire brushed oak"
                 else:
@@ -508,6 +510,13 @@ def may_join(tagged: list[Tagged]) -> bool:
     if final.unknown:
         return noun_before_last
     return plain and noun_seen and any(c.tag == "ADJ" for c in final.candidates)
+
+
+def _until_with(words: list[Tagged]) -> list[Tagged]:
+    """The words before the first 'with': a noun in a clause ('a backsplash with white grout')
+    names what the clause adds, not the material of the phrase."""
+    end = next((k for k, t in enumerate(words) if of_tag(t, "WITH")), len(words))
+    return words[:end]
 
 
 def of_tag(word: Tagged, tag: str) -> tuple[Candidate, ...]:

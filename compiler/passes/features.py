@@ -124,13 +124,14 @@ def _adverbs_of(clause: ast.Feature) -> tuple[ast.Word, ...]:
 
 
 def _apply_finish(state: MaterialState, ctx: Context, clause: ast.Feature) -> None:
-    """'with a matte finish' = matte; 'with a mirror finish' (one word that is also an adjective) = mirror;
+    """'with a matte finish' = matte; 'with a mirror finish' or 'a high polish' (a word that is also an
+    adjective, alone with its degree words) = mirror, polished;
     'with a clear finish' on oak = a clear coat ('clear' is said of a coat, not of oak)."""
     coat = _as_coat(state, ctx, clause)
     if coat is not None:
         apply_coat(state, ctx, coat)
         return
-    own = _adjective_named_by(ctx, clause.word)
+    own = None if _describes(clause) else _adjective_named_by(ctx, clause.word)
     if own is not None:
         word = ast.Word(clause.word.text, own.key, "adjectives", clause.word.span)
         group = ast.Group("adjective", _adverbs_of(clause), (), (word,), clause.span)
@@ -138,6 +139,12 @@ def _apply_finish(state: MaterialState, ctx: Context, clause: ast.Feature) -> No
         return
     for group in clause.groups:
         apply_group(state, ctx, group, target="base")
+
+
+def _describes(clause: ast.Feature) -> bool:
+    """Whether the clause has describing words of its own: they are the surface ('a satin polish' =
+    satin), else a finish word that is also an adjective is ('a high polish' = polished)."""
+    return any(g.adjectives or g.colours for g in clause.groups)
 
 
 def _as_coat(state: MaterialState, ctx: Context, clause: ast.Feature) -> ast.Coat | None:

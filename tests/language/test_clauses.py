@@ -659,3 +659,22 @@ def test_a_colour_after_in_then_clauses(compile_text):
     material, _ = compiled(compile_text, "pewter in slate grey with a satin lacquer and a few scratches")
     expected, _ = compiled(compile_text, "slate grey pewter with a satin lacquer and a few scratches")
     assert material["params"] == expected["params"] and material.get("maps") == expected.get("maps")
+
+
+@pytest.mark.parametrize(
+    "text,same",
+    [
+        ("brass with a high polish", "polished brass"),
+        ("steel with a polish", "polished steel"),
+        ("plastic with a high gloss", "glossy plastic"),
+        ("oak with a satin polish", "satin oak"),
+        ("steel, with a mirror polish", "mirror steel"),
+    ],
+)
+def test_a_finish_noun_is_its_adjective_unless_the_clause_describes_it(compile_text, text, same):
+    """'polish' and 'gloss' name a finish as 'finish' does: alone (with degree words) they are their
+    own adjective; with describing words of the clause, those are the surface ('a satin polish')."""
+    material, diags = compiled(compile_text, text)
+    expected, _ = compiled(compile_text, same)
+    assert material["params"] == expected["params"] and material.get("maps") == expected.get("maps")
+    assert not [d for d in diags if d["severity"] in ("error", "warning")]
