@@ -49,7 +49,7 @@ class Dispatcher:
             {
                 "op": "hello",
                 "session": session.id,
-                "files_url": f"/files/{session.id}/",
+                "files_url": f"/files/{session.id}/view/",
                 "data_url": "/view-data/",
                 "text": self.initial_text,
                 "exports": exports,

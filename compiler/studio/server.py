@@ -139,7 +139,7 @@ async def view_data(request: web.Request) -> web.StreamResponse:
     if found is None:
         raise web.HTTPNotFound(reason="no such view data")
     body, content_type = found
-    return web.Response(body=body, content_type=content_type, headers={"Cache-Control": "max-age=3600"})
+    return web.Response(body=body, headers={"Content-Type": content_type, "Cache-Control": "max-age=3600"})
 
 
 def session_file(studio: Studio, session_id: str, relative: str) -> Path:
@@ -214,7 +214,7 @@ def make_app(studio: Studio) -> web.Application:
     app["studio"] = studio
     app.router.add_get("/", index)
     app.router.add_get("/ws", websocket)
-    app.router.add_get("/view-data/{name}", view_data)
+    app.router.add_get("/view-data/{name:.+}", view_data)
     app.router.add_get("/files/{session}/{path:.+}", files)
     app.router.add_post("/ar-photo/{session}", ar_photo)
     app.router.add_static("/static", static_folder(), follow_symlinks=False)
