@@ -39,6 +39,7 @@ from .conversions import (
     principled_clearcoat,
     rounded,
 )
+from .mitsuba_subsurface import VOLUME_MAX_DEPTH, medium_entry, subsurface_bsdf
 from .naming import MaterialIdents, described, xml_text
 from .options import Capabilities, capabilities_for, map_options
 from .textures import Texture, bake_textures
@@ -322,10 +323,13 @@ def uses_cnlm(material: Material, options: Options) -> bool:
 
 def bsdf_for(material: Material, ident: str, tex: BsdfTextures, cnlm: bool = False) -> Prop:
     """The BSDF tree: plugin, then twosided (opaque ones), then normalmap; the root gets the id."""
-    plugin = "cnlm" if cnlm else plugin_for(material)
-    tree = cnlm_bsdf(material, tex) if cnlm else BUILDERS[plugin](material, tex)
-    if plugin not in TRANSMISSIVE and material.model.base != "glass":
-        tree = node("twosided", [], [tree])
+    if material.model.subsurface is not None:  # the medium's boundary, or a thin sheet (mitsuba_subsurface)
+        tree = subsurface_bsdf(material)
+    else:
+        plugin = "cnlm" if cnlm else plugin_for(material)
+        tree = cnlm_bsdf(material, tex) if cnlm else BUILDERS[plugin](material, tex)
+        if plugin not in TRANSMISSIVE and material.model.base != "glass":
+            tree = node("twosided", [], [tree])
     if "normal" in tex:
         tree = node("normalmap", [bitmap("normalmap", tex["normal"])], [tree])
     tree["id"] = ident
@@ -398,6 +402,7 @@ def installed_version() -> str:
 def render_xml(entries: list[dict[str, Any]], options: Options, env: jinja2.Environment, version: str) -> str:
     if options.form == "fragment":
         return env.get_template("fragment.xml.j2").render(materials=entries, version=version)
+    volume = any(entry["medium"] for entry in entries)  # a medium: volpath, deep enough to scatter in it
     centres, camera = layout(len(entries))
     for entry, centre in zip(entries, centres):
         entry["center"] = centre
@@ -406,7 +411,8 @@ def render_xml(entries: list[dict[str, Any]], options: Options, env: jinja2.Envi
         camera=camera,
         spp=options.spp,
         resolution=options.resolution,
-        max_depth=options.max_depth,
+        max_depth=max(options.max_depth, VOLUME_MAX_DEPTH) if volume else options.max_depth,
+        volume=volume,
         envmap=options.envmap,
         backdrop=backdrop(camera),
         cnlm=options.bsdf == "cnlm",
@@ -446,6 +452,7 @@ class MitsubaScene:
         if alpha_maps and alpha_maps.mean_alpha is not None and plugin_for(material) == "roughplastic":
             tex["mean_alpha"] = alpha_maps.mean_alpha
         entry = {"ident": ident, "phrase": described(material), "bsdf": bsdf_for(material, ident, tex, cnlm)}
+        entry["medium"] = medium_entry(material, ident)
         self.entries.append(entry)
         return images
 

@@ -1,0 +1,108 @@
+"""Mitsuba 3 for a material with light inside (docs/subsurface.md): the volumetric reference.
+
+`volume`: a `dielectric` (or `roughdielectric`) boundary of the IR's IOR and alpha around a
+`homogeneous` medium: σt and the single-scattering albedo σs/σt from the IR's (color, radius, g)
+by cnlmc.bsdf.subsurface.medium_of (the dipole inversion, Jensen & Buhler 2002), a Henyey–Greenstein
+phase function of g; the RGB `sigma_t` is divided by its largest channel (Mitsuba reads an RGB as a
+reflectance in [0, 1]) and `scale` = that channel × METRES_PER_UNIT (σ per metre, the scene's unit
+METRES_PER_UNIT metres). The scene then uses `volpath`. This is exact: a path tracer of
+the medium the IR names.
+
+`thin`: Mitsuba 3 has no thin translucent slab BSDF, so the sheet is `principledthin` (two-sided,
+thin-walled): base_color = R + T and diff_trans = 2 T / (R + T) of the Kubelka–Munk slab of the
+medium at the IR's thickness (cnlmc.bsdf.subsurface.slab), its IOR and roughness the IR's. This is
+an approximation (diffuse in, diffuse out: no forward peak through the sheet).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from cnlmc.bsdf.subsurface import medium_of, slab
+from cnlmc.conventions import ALPHA_MIRROR
+from cnlmc.material import Material
+
+from .conversions import alpha_pair, alpha_to_roughness, rounded
+
+Prop = dict[str, Any]
+#: our choice: a preview sphere of radius 1 unit is a 10 cm ball (a candle, an apple, a teapot's
+#: body), so millimetre mean free paths show as they would on such an object
+METRES_PER_UNIT = 0.05
+#: volpath's depth counts scattering events: a dense medium needs hundreds (our choice: enough for
+#: a 10 cm marble ball to converge in brightness; measured in docs/subsurface.md)
+VOLUME_MAX_DEPTH = 512
+
+
+def _prop(kind: str, name: str, value: Any) -> Prop:
+    if kind == "float":
+        value = f"{float(value):.6g}"
+    elif kind == "rgb":
+        value = [f"{float(v):.6g}" for v in value]
+    return {"kind": kind, "name": name, "value": value}
+
+
+def _node(plugin: str, props: list[Prop]) -> Prop:
+    return {"type": plugin, "id": None, "props": props, "children": []}
+
+
+def medium_coefficients(material: Material) -> tuple[list[float], list[float], float]:
+    """(σt in 1/m, single-scattering albedo, g) of the material's medium."""
+    sub = material.params.subsurface
+    assert sub is not None, "only a material with a medium has coefficients"
+    medium = medium_of(sub.color, sub.radius, float(sub.anisotropy), float(material.params.ior))
+    return [float(v) for v in medium.sigma_t], [float(v) for v in medium.single_albedo], float(sub.anisotropy)
+
+
+def medium_entry(material: Material, ident: str, metres_per_unit: float = METRES_PER_UNIT) -> dict[str, Any] | None:
+    """The `<medium>` a volume material's shapes take as their interior (None for a thin sheet)."""
+    if material.model.subsurface != "volume":
+        return None
+    sigma_t, albedo, g = medium_coefficients(material)
+    largest = max(sigma_t)  # Mitsuba reads an RGB sigma_t as a reflectance in [0, 1]: the magnitude goes to scale
+    return {
+        "id": f"{ident}_medium",
+        "sigma_t": [f"{v / largest:.6g}" for v in sigma_t],
+        "albedo": [f"{min(v, 1.0):.6g}" for v in albedo],
+        "g": f"{g:.6g}",
+        "scale": f"{largest * metres_per_unit:.6g}",
+    }
+
+
+def subsurface_bsdf(material: Material) -> Prop:
+    """The boundary (volume) or the thin-walled sheet's BSDF."""
+    if material.model.subsurface == "thin":
+        return thin_bsdf(material)
+    params = material.params
+    alpha = float(max(alpha_pair(params)))
+    props = [_prop("float", "int_ior", params.ior), _prop("float", "ext_ior", 1.0)]
+    if alpha < ALPHA_MIRROR:
+        return _node("dielectric", props)
+    return _node("roughdielectric", [_prop("string", "distribution", "ggx"), _prop("float", "alpha", alpha), *props])
+
+
+def sheet_weights(material: Material) -> tuple[list[float], list[float]]:
+    """(R + T, T / (R + T)) of the Kubelka–Munk slab of the material's sheet."""
+    sub = material.params.subsurface
+    assert sub is not None and sub.thickness is not None, "a thin sheet has a thickness"
+    medium = medium_of(sub.color, sub.radius, float(sub.anisotropy), float(material.params.ior))
+    reflectance, transmittance = slab(medium, float(sub.thickness))
+    total = np.clip(reflectance + transmittance, 0.0, 1.0)
+    share = np.where(total > 1e-9, transmittance / np.maximum(total, 1e-9), 0.0)
+    return [float(v) for v in total], [float(v) for v in share]
+
+
+def thin_bsdf(material: Material) -> Prop:
+    total, share = sheet_weights(material)
+    params = material.params
+    roughness = alpha_to_roughness(float(max(alpha_pair(params))))
+    return _node(
+        "principledthin",
+        [
+            _prop("rgb", "base_color", rounded(total)),
+            _prop("float", "diff_trans", 2.0 * float(np.mean(share))),
+            _prop("float", "roughness", min(max(roughness, 0.0), 1.0)),
+            _prop("float", "eta", params.ior),
+        ],
+    )
