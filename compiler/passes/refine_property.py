@@ -66,7 +66,9 @@ def _refine_map_param(state: MaterialState, prop: Entry, item: ast.RefineItem, d
         ref = state.maps[role]
         key = f"maps.{role}.{name}"
         low, high, default = graph_params(ref["graph"])[name]
-        move = Move(direction, up if direction > 0 else down, weight, (low, high), saturate=False)
-        new = bracket_move(state.brackets, key, ref["params"].get(name, default), move)
+        move = Move(direction, up if direction > 0 else down, weight, (low, high))
+        current = ref["params"].get(name, default)
+        new = bracket_move(state.brackets, key, current, move)
         ref["params"][name] = new
         state.note(key, new, f"refinements.{item.word.key} {prop.key}: bracket step", item_words(item))
+        note_unmoved_number(state, item, key, current, new)
