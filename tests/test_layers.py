@@ -52,6 +52,11 @@ ALLOWED: dict[tuple[str, str], str] = {
         "check that the compiler accepts them as offered: a compile inside the teaching of a failed "
         "line, imported in the function, only when a line has no noun"
     ),
+    ("cnlmc.studio.view_payload", "cnlmc.backends.preview.web"): (
+        "the studio's live WebGL2 view (#17) draws what `cnlmc preview` draws: its payload is the preview "
+        "backend's splitsum shader, tables, environment and meshes, as data; imported in the function, "
+        "only when the studio asks for a payload or an asset"
+    ),
     ("cnlmc.api", "cnlmc.batch"): (
         "the facade's build() (#20) hands a catalogue to the batch front end, which compiles it through "
         "the facade: imported in the function, only when a build is asked for"
