@@ -1,0 +1,319 @@
+// The studio's live material view: cnlmc's own GLSL ES 3.00 (the GLSL backend's library in the
+// preview's `splitsum` shader, from cnlmc.studio.view_payload) drawn in WebGL2 the way
+// `cnlmc preview` draws it: object pass into a half-float target, the blurred environment
+// behind it at quarter size, then edge filter, exposure, ACES and sRGB (tonemap.frag).
+//
+//   const view = new MaterialView(canvas, { dataUrl: "/view-data", filesUrl: "/files" });
+//   await view.show([payload]);            // "or" variants: several payloads side by side
+//   canvas.addEventListener("frame", (e) => console.log(e.detail.ms));
+import { decodeFloats, environmentFromContainer, fetchBytes, fetchText, meshFromContainer } from "./assets.js";
+import { Orbit, invert } from "./camera.js";
+import { EnvironmentTextures } from "./environment.js";
+import { Targets, compileProgram, floatTexture, setUniform } from "./glutil.js";
+import { meshFromFile, environmentFromFile } from "./loaders.js";
+
+const IDENTITY3 = [1, 0, 0, 0, 1, 0, 0, 0, 1];
+const IDENTITY4 = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];
+const ATTRIBUTES = [["in_position", 3, 0], ["in_normal", 3, 12], ["in_tangent", 3, 24], ["in_uv", 2, 36]];
+const STRIDE = 44;
+
+export class MaterialView {
+  constructor(canvas, { dataUrl = "/view-data", filesUrl = "/files" } = {}) {
+    this.canvas = canvas;
+    this.dataUrl = dataUrl.replace(/\/$/, "");
+    this.filesUrl = filesUrl.replace(/\/$/, "");
+    const gl = canvas.getContext("webgl2", { antialias: false, alpha: false, preserveDrawingBuffer: true });
+    if (!gl) throw new Error("view: this browser has no WebGL2");
+    if (!gl.getExtension("EXT_color_buffer_float")) throw new Error("view: WebGL2 without EXT_color_buffer_float");
+    this.gl = gl;
+    this.exposure = 1;
+    this.orbit = new Orbit();
+    this.orbit.attach(canvas, () => this.requestDraw());
+    this.programs = new Map(); // source -> program (one per shader, kept while the view lives)
+    this.maps = new Map(); // file -> texture
+    this.entries = []; // what is shown: per variant {payload, program, textures}
+    this.meshName = "sphere";
+    this.envName = "studio";
+    this.pending = null;
+    this.ready = this.init();
+  }
+
+  async init() {
+    const shader = (name) => fetchText(`${this.dataUrl}/shader/${name}`);
+    const [vertex, prefilter, background, tonemap] = await Promise.all(
+      ["fullscreen.vert", "prefilter.frag", "background.frag", "tonemap.frag"].map(shader));
+    const gl = this.gl;
+    this.prefilterProgram = compileProgram(gl, vertex, prefilter);
+    this.backgroundProgram = compileProgram(gl, vertex, background);
+    this.tonemapProgram = compileProgram(gl, vertex, tonemap);
+    this.emptyVao = gl.createVertexArray();
+    await Promise.all([this.loadMesh("sphere"), this.loadEnvironment("studio")]);
+  }
+
+  // -- what is drawn
+  async show(payloads) {
+    await this.ready;
+    const list = Array.isArray(payloads) ? payloads : [payloads];
+    const entries = [];
+    for (const payload of list) entries.push(await this.entry(payload));
+    await this.resolvePrefiltered(entries);
+    for (const old of this.entries) this.releaseEntry(old);
+    this.entries = entries;
+    return this.draw();
+  }
+
+  async entry(payload) {
+    const gl = this.gl;
+    const program = this.program(payload.vertex, payload.fragment);
+    const tables = {};
+    for (const [name, t] of Object.entries(payload.tables)) {
+      tables[name] = floatTexture(gl, t.width, t.height, decodeFloats(t.data));
+    }
+    const maps = {};
+    for (const [name, m] of Object.entries(payload.maps)) maps[name] = await this.mapTexture(m);
+    return { payload, program, tables, maps };
+  }
+
+  // Each entry's environment textures prefiltered at exactly its alphas (in the current environment).
+  async resolvePrefiltered(entries) {
+    const env = this.environment;
+    for (const entry of entries) {
+      entry.prefiltered = {};
+      for (const [name, alpha] of Object.entries(entry.payload.prefilter)) {
+        entry.prefiltered[name] = await env.prefilteredAt(alpha);
+      }
+    }
+  }
+
+  releaseEntry(entry) {
+    for (const tex of Object.values(entry.tables)) this.gl.deleteTexture(tex);
+  }
+
+  program(vertex, fragment) {
+    const key = `${vertex}\u0000${fragment}`;
+    if (!this.programs.has(key)) this.programs.set(key, compileProgram(this.gl, vertex, fragment));
+    return this.programs.get(key);
+  }
+
+  async mapTexture(map) {
+    if (!this.maps.has(map.file)) {
+      const bits = new Uint16Array(await fetchBytes(`${this.filesUrl}/${encodeURIComponent(map.file)}`));
+      this.maps.set(map.file, floatTexture(this.gl, map.width, map.height, bits, { mipmaps: true, repeat: [true, true] }));
+    }
+    return this.maps.get(map.file);
+  }
+
+  async setMesh(nameOrArrayBuffer) {
+    await this.ready;
+    if (typeof nameOrArrayBuffer === "string") await this.loadMesh(nameOrArrayBuffer);
+    else this.useMesh(meshFromFile(nameOrArrayBuffer));
+    return this.draw();
+  }
+
+  async loadMesh(name) {
+    this.useMesh(meshFromContainer(await fetchBytes(`${this.dataUrl}/mesh/${encodeURIComponent(name)}`)));
+    this.meshName = name;
+  }
+
+  useMesh(mesh) {
+    const gl = this.gl;
+    if (this.mesh) {
+      gl.deleteBuffer(this.mesh.vbo);
+      gl.deleteBuffer(this.mesh.ibo);
+      for (const vao of this.mesh.vaos.values()) gl.deleteVertexArray(vao);
+    }
+    const vbo = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, vbo);
+    gl.bufferData(gl.ARRAY_BUFFER, mesh.vertices, gl.STATIC_DRAW);
+    const ibo = gl.createBuffer();
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ibo);
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, mesh.indices, gl.STATIC_DRAW);
+    this.mesh = { ...mesh, vbo, ibo, count: mesh.indices.length, vaos: new Map() };
+  }
+
+  vertexArray(program) {
+    const gl = this.gl;
+    if (!this.mesh.vaos.has(program)) {
+      const vao = gl.createVertexArray();
+      gl.bindVertexArray(vao);
+      gl.bindBuffer(gl.ARRAY_BUFFER, this.mesh.vbo);
+      for (const [name, size, offset] of ATTRIBUTES) {
+        const at = gl.getAttribLocation(program, name);
+        if (at < 0) continue;
+        gl.enableVertexAttribArray(at);
+        gl.vertexAttribPointer(at, size, gl.FLOAT, false, STRIDE, offset);
+      }
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this.mesh.ibo);
+      gl.bindVertexArray(null);
+      this.mesh.vaos.set(program, vao);
+    }
+    return this.mesh.vaos.get(program);
+  }
+
+  async setEnvironment(nameOrFile) {
+    await this.ready;
+    if (typeof nameOrFile === "string") await this.loadEnvironment(nameOrFile);
+    else this.useEnvironment(await environmentFromFile(nameOrFile, this.environment.env), null);
+    await this.resolvePrefiltered(this.entries);
+    return this.draw();
+  }
+
+  async loadEnvironment(name) {
+    const url = `${this.dataUrl}/env/${encodeURIComponent(name)}`;
+    this.useEnvironment(environmentFromContainer(await fetchBytes(url)), (alpha) => `${url}@${alpha}`);
+    this.envName = name;
+  }
+
+  useEnvironment(env, alphaUrl) {
+    if (this.environment) this.environment.release();
+    this.environment = new EnvironmentTextures(this.gl, env, this.prefilterProgram, alphaUrl);
+  }
+
+  setExposure(ev) {
+    this.exposure = 2 ** Number(ev);
+    this.requestDraw();
+  }
+
+  // -- a frame
+  requestDraw() {
+    if (this.pending) return;
+    this.pending = requestAnimationFrame(() => {
+      this.pending = null;
+      this.draw();
+    });
+  }
+
+  draw() {
+    const start = performance.now();
+    const gl = this.gl;
+    const width = this.canvas.width, height = this.canvas.height;
+    if (!this.targets || this.targets.width !== width || this.targets.height !== height) {
+      if (this.targets) this.targets.release();
+      this.targets = new Targets(gl, width, height);
+    }
+    const t = this.targets;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, t.hdrFbo);
+    gl.viewport(0, 0, width, height);
+    gl.clearColor(0, 0, 0, 0);
+    gl.clearDepth(1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    const cells = Math.max(this.entries.length, 1);
+    const cameras = [];
+    for (let i = 0; i < cells; i++) {
+      const x0 = Math.round((i * width) / cells), x1 = Math.round(((i + 1) * width) / cells);
+      const cell = [x0, 0, x1 - x0, height];
+      const camera = this.orbit.camera(this.mesh.lo, this.mesh.hi, cell[2] / cell[3]);
+      cameras.push([cell, camera]);
+      if (this.entries[i]) this.drawObject(this.entries[i], cell, camera);
+    }
+    this.drawBackground(cameras);
+    this.drawTonemap();
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4)); // the frame is finished
+    const ms = performance.now() - start;
+    this.canvas.dispatchEvent(new CustomEvent("frame", { detail: { ms } }));
+    return ms;
+  }
+
+  drawObject(entry, cell, camera) {
+    const gl = this.gl;
+    const { payload, program } = entry;
+    const env = this.environment;
+    const textures = { ...entry.maps, ...entry.tables, ...entry.prefiltered, pv_env_irradiance: env.irradiance };
+    gl.bindFramebuffer(gl.FRAMEBUFFER, this.targets.hdrFbo);
+    gl.viewport(...cell);
+    gl.useProgram(program);
+    textures.pv_env = env.radiance;
+    textures.pv_env_prefiltered = env.prefiltered;
+    let unit = 0;
+    for (const [name, tex] of Object.entries(textures)) {
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      gl.bindTexture(gl.TEXTURE_2D, tex);
+      setUniform(gl, program, name, "int", unit);
+      unit += 1;
+    }
+    for (const u of payload.uniforms) setUniform(gl, program, u.name, u.type, u.value);
+    const key = env.env;
+    setUniform(gl, program, "pv_prefilter_levels", "float", env.passes.prefilter_levels);
+    setUniform(gl, program, "pv_env_intensity", "float", 1.0);
+    setUniform(gl, program, "pv_env_size", "vec2", [env.width, env.height]);
+    setUniform(gl, program, "pv_model", "mat4", IDENTITY4);
+    setUniform(gl, program, "pv_normal_matrix", "mat3", IDENTITY3);
+    setUniform(gl, program, "pv_view_projection", "mat4", camera.viewProjection);
+    setUniform(gl, program, "pv_camera_position", "vec3", camera.eye);
+    setUniform(gl, program, "pv_key_direction", "vec3", key.key_direction);
+    setUniform(gl, program, "pv_key_irradiance", "vec3", [key.key_irradiance, key.key_irradiance, key.key_irradiance]);
+    if (payload.glass) {
+      setUniform(gl, program, "pv_glass_centre", "vec3", this.mesh.centre);
+      setUniform(gl, program, "pv_glass_radius", "float", this.mesh.radius);
+      setUniform(gl, program, "pv_glass_reference", "float", this.mesh.radius);
+      setUniform(gl, program, "pv_glass_thin", "int", this.mesh.closed ? 0 : 1);
+    }
+    gl.enable(gl.DEPTH_TEST);
+    if (this.mesh.closed) gl.enable(gl.CULL_FACE);
+    else gl.disable(gl.CULL_FACE);
+    gl.bindVertexArray(this.vertexArray(program));
+    gl.drawElements(gl.TRIANGLES, this.mesh.count, gl.UNSIGNED_INT, 0);
+    gl.bindVertexArray(null);
+    gl.disable(gl.CULL_FACE);
+    gl.disable(gl.DEPTH_TEST);
+  }
+
+  drawBackground(cameras) {
+    const gl = this.gl, t = this.targets, prog = this.backgroundProgram;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, t.backgroundFbo);
+    gl.useProgram(prog);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, this.environment.radiance);
+    setUniform(gl, prog, "pv_env", "int", 0);
+    setUniform(gl, prog, "pv_env_intensity", "float", 1.0);
+    setUniform(gl, prog, "pv_background_lod", "float", this.environment.passes.background_lod);
+    gl.bindVertexArray(this.emptyVao);
+    const sx = t.backgroundWidth / t.width, sy = t.backgroundHeight / t.height;
+    for (const [cell, camera] of cameras) {
+      const x0 = Math.round(cell[0] * sx), x1 = Math.round((cell[0] + cell[2]) * sx);
+      gl.viewport(x0, 0, Math.max(x1 - x0, 1), t.backgroundHeight);
+      setUniform(gl, prog, "pv_inverse_view_projection", "mat4", invert(camera.viewProjection));
+      gl.drawArrays(gl.TRIANGLES, 0, 3);
+    }
+  }
+
+  drawTonemap() {
+    const gl = this.gl, t = this.targets, prog = this.tonemapProgram;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.viewport(0, 0, t.width, t.height);
+    gl.useProgram(prog);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, t.hdr);
+    gl.activeTexture(gl.TEXTURE1);
+    gl.bindTexture(gl.TEXTURE_2D, t.background);
+    setUniform(gl, prog, "pv_hdr", "int", 0);
+    setUniform(gl, prog, "pv_background_image", "int", 1);
+    setUniform(gl, prog, "pv_exposure", "float", this.exposure);
+    setUniform(gl, prog, "pv_curve", "int", 0);
+    setUniform(gl, prog, "pv_edge_aa", "int", 1);
+    setUniform(gl, prog, "pv_background", "int", 1);
+    gl.bindVertexArray(this.emptyVao);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+  }
+
+  // -- what the last frame shows
+  // RGBA bytes of the canvas, top row first.
+  readPixels() {
+    const gl = this.gl, w = this.canvas.width, h = this.canvas.height;
+    const raw = new Uint8Array(w * h * 4);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, raw);
+    const out = new Uint8Array(raw.length);
+    for (let y = 0; y < h; y++) out.set(raw.subarray((h - 1 - y) * w * 4, (h - y) * w * 4), y * w * 4);
+    return out;
+  }
+
+  // Mean [r, g, b] of the last frame, 0..1 (sRGB-encoded values).
+  meanColour() {
+    const px = this.readPixels();
+    const sum = [0, 0, 0];
+    for (let i = 0; i < px.length; i += 4) { sum[0] += px[i]; sum[1] += px[i + 1]; sum[2] += px[i + 2]; }
+    const n = px.length / 4;
+    return sum.map((s) => s / (255 * n));
+  }
+}
