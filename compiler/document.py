@@ -12,6 +12,7 @@ from .lexicon import Lexicon
 from .lines import iter_lines
 from .mistakes import known_mistake
 from .parser import ParseFailure, describe_expected, parse_line_shape
+from .shape_store import save_shapes
 from .spans import Span
 from .tagged import Tagged
 from .tagger import Tagger
@@ -31,6 +32,7 @@ def parse_document(source: str, lexicon: Lexicon, filename: str = "<input>") -> 
         node = parse_line(text, number, offset, tagger, doc.diagnostics)
         if node is not None:
             doc.items.append(node)
+    save_shapes(lexicon.caches.shapes)  # the shapes read here, for the next run (nothing new: no write)
     return doc
 
 
@@ -43,6 +45,7 @@ def iter_items(source: str, lexicon: Lexicon, diags: list[Diagnostic]) -> Iterat
         node = parse_line(text, number, offset, tagger, diags)
         if node is not None:
             yield node, any(d.is_error for d in diags[before:])
+    save_shapes(lexicon.caches.shapes)  # the shapes read here, for the next run (nothing new: no write)
 
 
 def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Item | None:

@@ -17,17 +17,17 @@ from __future__ import annotations
 from collections.abc import Iterator, Sequence
 from functools import lru_cache
 from importlib import resources
-from typing import Any, TypedDict
-
-from lark import Lark, Token, Tree
-from lark.exceptions import UnexpectedInput, UnexpectedToken
-from lark.lexer import Lexer, LexerState
-from lark.parsers.lalr_interactive_parser import InteractiveParser
+from typing import TYPE_CHECKING, Any, TypedDict
 
 from .diagnostics import FailureKey
-from .grammar_cache import cached_lark
+from .shape_store import recall_shape
 from .syntax import Shape, ShapeCache, ShapeKey
 from .tagged import Candidate, Tagged
+
+if TYPE_CHECKING:  # lark is loaded only when a line's shape must be read (about 60 ms of a start)
+    from lark import Lark, Token, Tree
+    from lark.exceptions import UnexpectedToken
+    from lark.parsers.lalr_interactive_parser import InteractiveParser
 
 MAX_BRANCHES = 256  # ambiguous words are few; this bounds the search on hostile input
 Chosen = dict[int, Candidate]  # word start offset -> the candidate chosen for it
@@ -52,25 +52,42 @@ TERMINAL_NAMES = {
 }
 
 
-class _Lexer(Lexer):
-    """lark calls lex() with whatever parse() was given: here, a ready list of Tokens."""
-
-    def __init__(self, lexer_conf: Any) -> None:
-        pass
-
-    def lex(self, lexer_state: LexerState | Sequence[Token], parser_state: Any = None) -> Iterator[Token]:
-        assert not isinstance(lexer_state, LexerState), "parse() is given tokens, never text"
-        yield from lexer_state
-
-
 @lru_cache(maxsize=1)
 def lark_parser() -> Lark:
     """The LALR parser; its tables come from the disk cache as verified plain data (cnlmc.grammar_cache)."""
+    from .grammar_cache import cached_lark
+
     grammar = resources.files("cnlmc.grammar").joinpath("cnl.lark").read_text("utf-8")
-    return cached_lark(grammar, _Lexer, parser="lalr", propagate_positions=False, maybe_placeholders=False)
+    return cached_lark(grammar, lexer_class(), parser="lalr", propagate_positions=False, maybe_placeholders=False)
+
+
+@lru_cache(maxsize=1)
+def lexer_class() -> type:
+    """The parser's lexer (a class lark instantiates): it hands lark the tokens it was given."""
+    from lark.lexer import Lexer, LexerState
+
+    class _Lexer(Lexer):
+        """lark calls lex() with whatever parse() was given: here, a ready list of Tokens."""
+
+        def __init__(self, lexer_conf: Any) -> None:
+            pass
+
+        def lex(self, lexer_state: LexerState | Sequence[Token], parser_state: Any = None) -> Iterator[Token]:
+            assert not isinstance(lexer_state, LexerState), "parse() is given tokens, never text"
+            yield from lexer_state
+
+    return _Lexer
+
+
+def __getattr__(name: str) -> Any:
+    if name == "_Lexer":  # the lexer class by its old name, made when first asked for
+        return lexer_class()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def _token(t: Tagged, tag: str) -> Token:
+    from lark import Token
+
     return Token(tag, t.text, t.span.start, t.span.line, t.span.col)
 
 
@@ -109,8 +126,12 @@ def parse_line_shape(words: list[Tagged], shapes: ShapeCache) -> tuple[Shape, li
     )
     found = shapes.get(key)
     if found is None:
-        found = _read_shape(words)
-        shapes.put(key, *found)
+        found = recall_shape(shapes, key)  # stored by an earlier run
+        if found is None:
+            found = _read_shape(words)
+            shapes.put(key, *found)
+        else:
+            shapes.put(key, *found, fresh=False)
     shape, choice = found
     if choice is None:
         return shape, [t.candidates[0] for t in words]
@@ -121,14 +142,16 @@ def _read_shape(words: list[Tagged]) -> tuple[Shape, tuple[int, ...] | None]:
     tree, chosen = parse_tagged(words)
     if _reads_as_refinement(tree) and _may_end_in_noun(words, chosen):
         tree, chosen = _material_reading(words) or (tree, chosen)
+    from .shape_reader import read_shape
+
     choice = tuple(_position(t.candidates, chosen[t.span.start]) for t in words)
-    shape = Shape(tree, {t.span.start: i for i, t in enumerate(words)})
+    shape = read_shape(tree, {t.span.start: i for i, t in enumerate(words)})
     return shape, (choice if any(choice) else None)
 
 
 def _reads_as_refinement(tree: Tree[Token]) -> bool:
     last = tree.children[-1]
-    return isinstance(last, Tree) and last.data == "refinement"
+    return not isinstance(last, str) and last.data == "refinement"  # a Tree (a Token is a str)
 
 
 def _may_end_in_noun(words: list[Tagged], chosen: Chosen) -> bool:
@@ -153,6 +176,8 @@ def _position(candidates: tuple[Candidate, ...], chosen: Candidate) -> int:
 
 
 def _parse_direct(words: list[Tagged]) -> Tree[Token]:
+    from lark.exceptions import UnexpectedInput, UnexpectedToken
+
     try:
         return lark_parser().parse([_token(t, t.candidates[0].tag) for t in words])
     except UnexpectedToken as exc:
@@ -173,7 +198,7 @@ class _Search(TypedDict):
 
 def _parse_search(words: list[Tagged]) -> tuple[Tree[Token], Chosen]:
     state: _Search = {"budget": MAX_BRANCHES, "deepest": (-1, None, set(), None)}
-    ip = lark_parser().parse_interactive()
+    ip = lark_parser().parse_interactive()  # loads lark
     result = _search(ip, words, 0, {}, state)
     if result is None:
         _index, at, expected, key = state["deepest"]
@@ -184,6 +209,8 @@ def _parse_search(words: list[Tagged]) -> tuple[Tree[Token], Chosen]:
 def _search(
     ip: InteractiveParser, words: list[Tagged], i: int, chosen: Chosen, state: _Search
 ) -> tuple[Tree[Token], Chosen] | None:
+    from lark.exceptions import UnexpectedToken
+
     while i < len(words) and len(words[i].candidates) == 1:  # no choice: no copy of the parser
         cand = words[i].candidates[0]
         try:
@@ -214,6 +241,8 @@ def _search(
 def _finish(
     ip: InteractiveParser, words: list[Tagged], chosen: Chosen, state: _Search
 ) -> tuple[Tree[Token], Chosen] | None:
+    from lark.exceptions import UnexpectedToken
+
     try:
         last = _token(words[-1], chosen[words[-1].span.start].tag) if words else None
         return ip.feed_eof(last), chosen

@@ -1,4 +1,4 @@
-"""lark tree -> AST, by way of a reusable *shape*.
+"""Parse tree -> AST, by way of a reusable *shape*.
 
 A deterministic LALR grammar gives the same tree for the same sequence of terminal types, so
 a tree is read once into a shape: a small tree of plans that mirrors the AST and holds word
@@ -15,14 +15,15 @@ aluminum" (words 0, 1, 2) the shape's root is:
 A plan never holds text from the line: each build reads the words of the line it is given.
 """
 
-from collections.abc import Iterable, Sequence
-from typing import NamedTuple
-
-from lark import Token, Tree
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, NamedTuple
 
 from . import ast
 from .spans import Span
 from .tagged import Candidate, Tagged
+
+if TYPE_CHECKING:
+    from .shape_store import StoredShapes
 
 GROUP_RULES = ("adjective_group", "colour_group", "dangling_group")
 COLOUR_CATEGORIES = ("colours", "unknown")
@@ -184,14 +185,23 @@ class RefinementPlan(NamedTuple):
 
 
 class Shape:
-    """The plan of one terminal sequence's tree: build(tagged, picks, text) -> the line's AST node."""
+    """The plan of one terminal sequence's tree: build(tagged, picks, text) -> the line's AST node.
+
+    `used` holds the positions in the tagged line of the words that become AST words (not the
+    separators); `root` is the line's plan. shape_reader.read_shape makes one from lark's tree;
+    shape_store.decode_entry from its stored form (so a start whose shapes are all stored never
+    loads lark)."""
 
     __slots__ = ("root", "used")
 
-    def __init__(self, tree: Tree[Token], index: dict[int, int]) -> None:
-        tokens = tree.scan_values(lambda v: isinstance(v, Token) and v.type not in SEPARATORS)
-        self.used = tuple(sorted(index[tok.start_pos or 0] for tok in tokens))  # tagged positions of the words
-        self.root = _Reader(index, {position: i for i, position in enumerate(self.used)}).start(tree)
+    def __init__(self, used: tuple[int, ...], root: "MaterialPlan | RefinementPlan") -> None:
+        self.used = used
+        self.root = root
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Shape) and (self.used, self.root) == (other.used, other.root)
+
+    __hash__ = None  # type: ignore[assignment]  # compared by value, never a key
 
     def build(self, tagged: Sequence[Tagged], picks: Sequence[Candidate], text: str) -> ast.Item:
         """The AST of a line whose words carry this shape's tags; picks[i] is word i's reading."""
@@ -209,161 +219,21 @@ class ShapeCache(dict[ShapeKey, tuple[Shape, tuple[int, ...] | None]]):
 
     The choice is None when every word's first candidate was chosen. A dict (its get is the
     parser's fast path) that put() keeps bounded: at MAX_SHAPES sequences it starts over.
+
+    A persistent cache (the default) also recalls shapes kept in the disk cache by earlier runs
+    (shape_store.recall_shape, the store read on the first miss, kept in `stored`), and
+    shape_store.save_shapes writes the shapes this process read to it: a start whose lines all
+    have stored shapes never loads lark. With persistent=False it lives in memory only.
     """
 
-    def put(self, key: ShapeKey, shape: Shape, choice: tuple[int, ...] | None) -> None:
+    def __init__(self, persistent: bool = True) -> None:
+        super().__init__()
+        self.persistent = persistent
+        self.fresh = 0  # shapes the parser read since the store was last written
+        self.stored: StoredShapes | None = None  # shape_store's, read on the first miss
+
+    def put(self, key: ShapeKey, shape: Shape, choice: tuple[int, ...] | None, fresh: bool = True) -> None:
         if len(self) >= MAX_SHAPES:
             self.clear()
         self[key] = (shape, choice)
-
-
-def _tree(node: Tree[Token] | Token) -> Tree[Token]:
-    assert isinstance(node, Tree), node
-    return node
-
-
-def _token(node: Tree[Token] | Token) -> Token:
-    assert isinstance(node, Token), node
-    return node
-
-
-class _Reader:
-    """One method per grammar rule: lark tree -> plan."""
-
-    def __init__(self, index: dict[int, int], word_of: dict[int, int]) -> None:
-        self.index = index  # token start offset -> position in the tagged line
-        self.word_of = word_of  # position in the tagged line -> index in the line's AST words
-
-    def word(self, tok: Token) -> int:
-        return self.word_of[self.index[tok.start_pos or 0]]
-
-    def words(self, tokens: Iterable[Tree[Token] | Token]) -> slice:
-        """These tokens as a slice of the line's words (they stand side by side)."""
-        indices = [self.word(_token(t)) for t in tokens]
-        assert indices == list(range(indices[0], indices[-1] + 1)), indices
-        return slice(indices[0], indices[-1] + 1)
-
-    def edges(self, node: Tree[Token]) -> tuple[int, int]:
-        return self._edge(node, 0), self._edge(node, -1)
-
-    def _edge(self, node: Tree[Token] | Token, end: int) -> int:
-        while isinstance(node, Tree):
-            node = node.children[end]
-        return self.index[node.start_pos or 0]
-
-    def start(self, tree: Tree[Token]) -> MaterialPlan | RefinementPlan:
-        name, body = None, None
-        for child in tree.children:
-            child = _tree(child)
-            if child.data == "name":
-                name = self.word(_token(child.children[0]))
-            else:
-                body = child
-        assert body is not None, "the grammar's start rule has a material or a refinement"
-        if body.data == "material":
-            return self.material(body, name)
-        return self.refinement(body, name)
-
-    def material(self, tree: Tree[Token], name: int | None) -> MaterialPlan:
-        groups: tuple[GroupPlan, ...] = ()
-        nouns = NONE
-        coat: CoatPlan | None = None
-        features: tuple[CoatPlan, ...] = ()
-        refinements: tuple[RefineItemPlan, ...] = ()
-        children = [
-            c for t in tree.children for c in (t.children if isinstance(t, Tree) and t.data == "tail" else (t,))
-        ]
-        for child in children:
-            if isinstance(child, Token):
-                continue  # the article
-            if child.data == "groups":
-                groups = self.groups(child)
-            elif child.data == "postfix":  # "Oak, oiled": after the groups before the noun
-                groups = groups + self.groups(_tree(child.children[1]))
-            elif child.data == "nouns":
-                nouns = self.alternatives(child)
-            elif child.data == "clauses":
-                coat, features = self.clauses(child)
-            elif child.data == "in_colour":  # "steel in charcoal": the colour of the material
-                groups = groups + self.groups(child)
-            elif child.data == "refine_item":
-                refinements = (self.refine_item(child),)
-        return MaterialPlan(name, groups, nouns, coat, *self.edges(tree), refinements, features)
-
-    def clauses(self, tree: Tree[Token]) -> tuple[CoatPlan | None, tuple[CoatPlan, ...]]:
-        """The first coat clause is the coat; features and any further coat clause are features."""
-        coat, features = None, []
-        with_at = None  # a clause's span starts at its 'with'
-        for child in tree.children:
-            if isinstance(child, Token):
-                with_at = self.index[child.start_pos or 0] if child.type == "WITH" else None
-                continue
-            plan = self.coat(child)
-            if with_at is not None:
-                plan = plan._replace(first=with_at)
-            if child.data == "coat" and coat is None:
-                coat = plan
-            else:
-                features.append(plan)
-        return coat, tuple(features)
-
-    def groups(self, tree: Tree[Token]) -> tuple[GroupPlan, ...]:
-        return tuple([self.group(c) for c in tree.children if isinstance(c, Tree) and c.data in GROUP_RULES])
-
-    def group(self, tree: Tree[Token]) -> GroupPlan:
-        adverbs = adjectives = NONE
-        colours: tuple[ColourPlan, ...] = ()
-        for child in tree.children:
-            child = _tree(child)
-            if child.data == "advs":
-                adverbs = self.words(child.children)
-            elif child.data == "colours":
-                colours = tuple([self.colour(c) for c in child.children if isinstance(c, Tree)])
-            elif child.data == "noun_colour":
-                colours = (self.colour(child),)
-            elif child.data == "adjs":
-                adjectives = self.alternatives(child)
-        kind = str(tree.data).replace("_group", "")
-        return GroupPlan(kind, adverbs, colours, adjectives, *self.edges(tree))
-
-    def colour(self, tree: Tree[Token]) -> ColourPlan:
-        noun_at = 0 if tree.data == "noun_colour" else -1  # NOUN [COLOR]
-        return ColourPlan(self.words(tree.children), tree.data == "colour", *self.edges(tree), noun_at)
-
-    def alternatives(self, tree: Tree[Token]) -> slice:
-        return self.words(t for t in tree.children if _token(t).type != "OR")
-
-    def coat(self, tree: Tree[Token]) -> CoatPlan:
-        groups: tuple[GroupPlan, ...] = ()  # the words before the coat or feature, then a colour after 'of'
-        coat_word = None
-        for child in tree.children:
-            if isinstance(child, Tree) and child.data == "shaded_noun_tint":  # SHADE+ NOUN: one named colour
-                colour = ColourPlan(self.words(child.children), False, *self.edges(child), len(child.children) - 1)
-                groups += (GroupPlan("colour", NONE, (colour,), NONE, *self.edges(child)),)
-            elif isinstance(child, Tree):
-                groups += (self.group(child),) if child.data in GROUP_RULES else self.groups(child)
-            elif child.type in ("COAT", "FEATURE"):
-                coat_word = self.word(child)
-        assert coat_word is not None, "the grammar's clause rules end with a COAT or FEATURE word"
-        return CoatPlan(groups, coat_word, *self.edges(tree))
-
-    def refinement(self, tree: Tree[Token], name: int | None) -> RefinementPlan:
-        first = tree.children[0]
-        if isinstance(first, Tree) and first.data == "clauses":
-            return RefinementPlan(name, (), *self.edges(tree), *self.clauses(first))
-        items = tuple([self.refine_item(c) for c in tree.children if isinstance(c, Tree)])
-        return RefinementPlan(name, items, *self.edges(tree))
-
-    def refine_item(self, tree: Tree[Token]) -> RefineItemPlan:
-        children = list(tree.children)
-        adverbs = NONE
-        first = children[0]
-        if isinstance(first, Tree) and first.data == "advs":
-            adverbs = self.words(first.children)
-            children = children[1:]
-        word = self.word(_token(children[0]))
-        target: int | ColourPlan | None = None
-        if len(children) > 1:
-            t = children[1]
-            target = self.colour(t) if isinstance(t, Tree) else self.word(t)
-        return RefineItemPlan(word, target, *self.edges(tree), adverbs)
+        self.fresh += fresh
