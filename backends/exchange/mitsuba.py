@@ -52,6 +52,7 @@ OPTIONS = (
     Option("max_depth", int, 8, doc="the path tracer's maximum depth", range=(1, 1024)),
     Option("envmap", str, "", doc="an environment map lighting the scene (default: constant light)"),
     Option("bsdf", str, "native", choices=("native", "cnlm"), doc="native plugins, or cnlmc's own BSDF (cnlm)"),
+    Option("unit_metres", float, 0.05, doc="metres per scene unit, for a medium's mean free path", range=(1e-6, 1e6)),
 )
 TEXTURED_ALPHA = ("roughconductor", "roughdielectric")  # roughplastic's alpha is a float
 
@@ -452,7 +453,7 @@ class MitsubaScene:
         if alpha_maps and alpha_maps.mean_alpha is not None and plugin_for(material) == "roughplastic":
             tex["mean_alpha"] = alpha_maps.mean_alpha
         entry = {"ident": ident, "phrase": described(material), "bsdf": bsdf_for(material, ident, tex, cnlm)}
-        entry["medium"] = medium_entry(material, ident)
+        entry["medium"] = medium_entry(material, ident, self.options.unit_metres)
         self.entries.append(entry)
         return images
 
