@@ -5,7 +5,7 @@
 by cnlmc.bsdf.subsurface.medium_of (the dipole inversion, Jensen & Buhler 2002), a Henyey–Greenstein
 phase function of g; the RGB `sigma_t` is divided by its largest channel (Mitsuba reads an RGB as a
 reflectance in [0, 1]) and `scale` = that channel × METRES_PER_UNIT (σ per metre, the scene's unit
-METRES_PER_UNIT metres). The scene then uses `volpath`. This is exact: a path tracer of
+METRES_PER_UNIT metres). The scene then uses `volpathmis` (spectral MIS: Mitsuba's `volpath` is biased dark for a chromatic medium, 0.69 instead of 1 in blue in a white furnace; volpathmis 0.96-1.02). This is exact: a path tracer of
 the medium the IR names.
 
 `thin`: Mitsuba 3 has no thin translucent slab BSDF, so the sheet is `principledthin` (two-sided,
