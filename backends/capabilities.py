@@ -38,7 +38,16 @@ def material_features(material: Material | Mapping[str, Any]) -> list[str]:
         features.append("coat")
         if coat is not None and any(abs(c - 1.0) > 1e-6 for c in coat.color):
             features.append("coat.color")
+    features += _layer_features(material)
     return features + [f"maps.{role}" for role in material.maps]
+
+
+def _layer_features(material: Material) -> list[str]:
+    """The layers a word adds over or under the base: a fibre sheen, paint flakes (docs/bsdf.md)."""
+    p = material.params
+    sheen = p.sheen_color is not None and max(p.sheen_color) > 0.0
+    flakes = p.flake_color is not None and max(p.flake_color) > 0.0 and p.flake_density > 0.0
+    return [name for name, on in (("sheen", sheen), ("flakes", flakes)) if on]
 
 
 ALL_FEATURES = (
@@ -52,6 +61,8 @@ ALL_FEATURES = (
     "diffuse.oren_nayar",
     "coat",
     "coat.color",
+    "sheen",
+    "flakes",
     "maps.base_color",
     "maps.normal",
     "maps.roughness",

@@ -68,6 +68,12 @@ CAPABILITIES: Capabilities = {
         "Weidlich-Wilkie stack",
     ),
     "coat.color": ("drop", "KHR_materials_clearcoat has no coat colour"),
+    "sheen": ("exact", "KHR_materials_sheen: the same Charlie lobe and albedo scaling"),
+    "flakes": (
+        "drop",
+        "no ratified glTF extension draws flakes (KHR_materials_* has none): the paint exports as its pigment "
+        "under the clearcoat",
+    ),
     "maps.base_color": BAKED,
     "maps.roughness": ("bake", "baked into the G channel of the metallicRoughnessTexture (linear)"),
     "maps.metallic": ("bake", "baked into the B channel of the metallicRoughnessTexture (linear)"),

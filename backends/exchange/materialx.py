@@ -46,6 +46,11 @@ _SHARED = {
         "approximate",
         "coat_color = color^thickness, the normal-incidence tint; the angular absorption is the shader's own",
     ),
+    "flakes": (
+        "drop",
+        "OpenPBR and Standard Surface have no flake slot: the paint exports as its pigment under the coat; "
+        "the flakes' brighter face, darker flop and sparkle are lost (docs/bsdf.md 'Flakes')",
+    ),
     "maps.base_color": BAKED,
     "maps.normal": BAKED,
     "maps.roughness": BAKED,
@@ -70,6 +75,11 @@ CAPABILITIES_BY_SURFACE: dict[str, Capabilities] = {
             "OpenPBR coat (coat_ior, coat_roughness); OpenPBR also roughens and darkens the base "
             "under the coat, unlike the IR's Weidlich-Wilkie stack",
         ),
+        "sheen": (
+            "approximate",
+            "OpenPBR fuzz (fuzz_weight = max(sheen_color), fuzz_color, fuzz_roughness = alpha): Zeltner's LTC "
+            "sheen, not the Charlie lobe",
+        ),
     },
     "standard_surface": {
         **_SHARED,
@@ -83,6 +93,10 @@ CAPABILITIES_BY_SURFACE: dict[str, Capabilities] = {
             "Standard Surface's Oren-Nayar with diffuse_roughness = sigma (clipped to [0,1])",
         ),
         "coat": ("approximate", "Standard Surface coat (coat_IOR, coat_roughness); coat_affect_color/roughness stay 0"),
+        "sheen": (
+            "exact",
+            "Standard Surface sheen (its lobe is the Charlie sheen): sheen, sheen_color, sheen_roughness",
+        ),
     },
 }
 CAPABILITIES = CAPABILITIES_BY_SURFACE["open_pbr_surface"]

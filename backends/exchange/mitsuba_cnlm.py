@@ -29,8 +29,8 @@ import numpy as np
 from cnlmc.bsdf.alpha import alpha_from_roughness
 from cnlmc.bsdf.diffuse import lambert
 from cnlmc.bsdf.evaluate import lobe_alphas
+from cnlmc.bsdf.flakes import evaluate_full  # the base, its flakes under the coat, the sheen over it (docs/bsdf.md)
 from cnlmc.bsdf.sampling import lobe_shares, mixture_pdf, sample_mixture, sampled_weight
-from cnlmc.bsdf.sheen import evaluate_sheened  # the base with a fibre sheen over it (docs/bsdf.md "Sheen")
 from cnlmc.material import RGB, Material
 
 PLUGIN = "cnlm"
@@ -145,12 +145,12 @@ class LaneModel:
     def f(self, si: Any, material: Material, wo: np.ndarray, wi: np.ndarray, active: Any) -> np.ndarray:
         """f(wo, wi), RGB (N, 3): affine in the base colour, so a colour map costs two calls."""
         if "base_color" not in self.textures:
-            value = evaluate_sheened(material, wo, wi)
+            value = evaluate_full(material, wo, wi)
             albedo = np.asarray(material.params.base_color, np.float64)
         else:
             albedo = _lanes(self.textures["base_color"].eval(si, active))
-            black = evaluate_sheened(_with_colour(material, (0.0, 0.0, 0.0)), wo, wi)
-            white = evaluate_sheened(_with_colour(material, (1.0, 1.0, 1.0)), wo, wi)
+            black = evaluate_full(_with_colour(material, (0.0, 0.0, 0.0)), wo, wi)
+            white = evaluate_full(_with_colour(material, (1.0, 1.0, 1.0)), wo, wi)
             value = black + (white - black) * albedo
         if "mask" in self.textures:
             mask = np.clip(_lanes(self.textures["mask"].eval_1(si, active)), 0.0, 1.0)[:, None]

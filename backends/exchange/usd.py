@@ -66,6 +66,8 @@ CAPABILITIES: Capabilities = {
     ),
     "coat": ("approximate", "UsdPreviewSurface clearcoat (fixed IOR 1.5, clearcoatRoughness); OpenPBR coat beside it"),
     "coat.color": ("drop", "UsdPreviewSurface has no coat colour " + KEPT),
+    "sheen": ("approximate", "UsdPreviewSurface has no sheen; the OpenPBR network beside it has fuzz " + KEPT),
+    "flakes": ("drop", "neither UsdPreviewSurface nor OpenPBR has a flake slot: the pigment under the coat"),
     "maps.base_color": BAKED,
     "maps.roughness": BAKED,
     "maps.metallic": BAKED,

@@ -58,6 +58,7 @@ CAPABILITIES: Capabilities = {
     "diffuse.oren_nayar": ("approximate", "UsdPreviewSurface is Lambertian " + PREVIEW_ONLY),
     "coat": ("approximate", "UsdPreviewSurface clearcoat (fixed IOR 1.5, clearcoatRoughness)"),
     "coat.color": ("drop", "UsdPreviewSurface has no coat colour"),
+    "sheen": ("drop", "UsdPreviewSurface has no sheen: the fabric's body colour only " + PREVIEW_ONLY),
     "model.conductor": (
         "approximate",
         "UsdPreviewSurface metallic workflow: Schlick with diffuseColor = f0, no edge tint",

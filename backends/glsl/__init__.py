@@ -42,6 +42,12 @@ CAPABILITIES: dict[str, tuple[str, str]] = {
     "diffuse.oren_nayar": ("exact", "qualitative Oren-Nayar"),
     "coat": ("exact", "Weidlich-Wilkie coat"),
     "coat.color": ("exact", "coat absorption along the refracted paths"),
+    "sheen": ("exact", "the Charlie sheen over cnlm_bsdf, scaled by 1 - s max(E(mu_o), E(mu_i)) (sheen.glsl)"),
+    "flakes": (
+        "exact",
+        "the flake lobe (GGX of the flakes' spread, Schlick F0 = flake_color) mixed into the base under the coat "
+        "(flakes.glsl): the mean of the flakes; sparkle (how many flakes a pixel sees) is the renderer's",
+    ),
     "maps.base_color": ("bake", _BAKED),
     "maps.normal": ("bake", _BAKED),
     "maps.roughness": ("bake", _BAKED),

@@ -15,13 +15,14 @@ from cnlmc.bsdf.sampling import lobe_shares
 from cnlmc.bsdf.sheen import has_sheen
 from cnlmc.material import Material
 
-from .. import glsl
 from ..capabilities import check_material
 from ..glsl.emit import library_source
 from ..glsl.options import GlslOptions, parse_glsl_options
 from ..glsl.plan import MICROFACET_BASES, Plan, Sampler, make_plan
 from ..glsl.render import ShaderWriter
 from .albedo_tables import split_fitted
+from .capability_table import CAPABILITIES
+from .capability_table import NAME as PREVIEW
 from .resources import source_key
 from .subsurface import has_subsurface
 
@@ -109,6 +110,6 @@ def material_shader(material: Material, options: GlslOptions, writer: ShaderWrit
     library, plan = library_source(material, options, writer)
     specialized = plan if options.specialize else make_plan(material, options)
     notes: list = []
-    check_material(notes, glsl.TARGET.name, glsl.TARGET.capabilities, material)
+    check_material(notes, PREVIEW, CAPABILITIES, material)  # the preview's own table, not the GLSL export's
     plans = preview_plan(material, plan, specialized)
     return MaterialShader(material.name, library, plans, tuple(plan.samplers), [n.text() for n in notes])

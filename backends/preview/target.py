@@ -9,6 +9,7 @@ from cnlmc.material import Document, Material
 
 from ..base import Artifact, OptionError, Options, Target, emit_each
 from ..capabilities import EmitResult
+from .capability_table import CAPABILITIES
 from .commands import PreviewCommand
 from .frames import IR, Rendered, compose, preview_scene, render_material
 from .options import OPTIONS, PreviewOptionError, preview_options
@@ -17,30 +18,6 @@ from .sheet import png_bytes
 
 NAME = "preview"
 DESCRIPTION = "PNG previews rendered with OpenGL (moderngl/EGL) from the GLSL backend's BSDF (docs/preview.md)"
-_BAKED = "procedural map baked with cnlmc.backends.maps and bound as a texture"
-CAPABILITIES = {
-    "model.diffuse": ("exact", ""),
-    "model.dielectric": ("exact", ""),
-    "model.conductor": ("exact", ""),
-    "model.glass": (
-        "approximate",
-        "the environment refracted through the object (a solid's second interface is its bounding "
-        "sphere: exact for the sphere mesh; glass=thin: a sheet), Beer-Lambert tint per bounding "
-        "radius, rough transmission prefiltered or sampled by tier; the key light is not transmitted "
-        "(no caustics, no shadows); docs/preview.md 'Transparent materials'",
-    ),
-    "distribution.ggx": ("exact", ""),
-    "distribution.ward": ("exact", ""),
-    "anisotropic": ("exact", "exact in the key light and the mc/fis tiers; split-sum uses sqrt(ax ay)"),
-    "diffuse.oren_nayar": ("exact", "exact in the key light and the mc/fis tiers; split-sum uses Lambert"),
-    "coat": ("exact", ""),
-    "coat.color": ("exact", ""),
-    "maps.base_color": ("bake", _BAKED),
-    "maps.normal": ("bake", _BAKED),
-    "maps.roughness": ("bake", _BAKED),
-    "maps.mask": ("bake", _BAKED),
-    "maps.metallic": ("drop", "no IR model reads a metallic map"),
-}
 
 
 class PreviewTarget(Target):
