@@ -22,6 +22,7 @@ import jinja2
 import markupsafe
 import numpy as np
 
+from cnlmc.bsdf.sheen import has_sheen
 from cnlmc.conventions import ALPHA_MIRROR, alpha_isotropic, alpha_of
 from cnlmc.diagnostics import visible
 from cnlmc.material import Document, Material
@@ -88,6 +89,15 @@ CAPABILITIES: Capabilities = {
         "approximate",
         "roughplastic: color^thickness tints the base under it; principled's coat is colourless",
     ),
+    "sheen": (
+        "approximate",
+        "principled's sheen is Disney's (a (1 - cos)^5 grazing term, no roughness): sheen = the IR's sheen "
+        "weight, sheen_tint towards its colour; bsdf=cnlm draws the Charlie sheen",
+    ),
+    "flakes": (
+        "drop",
+        "no native Mitsuba BSDF has flakes: the paint's pigment under its coat; bsdf=cnlm draws them",
+    ),
     "maps.base_color": BAKED,
     "maps.roughness": (
         "bake",
@@ -143,6 +153,8 @@ def plugin_for(material: Material) -> str:
     """The Mitsuba plugin for an IR material (the decision table, in order)."""
     model = material.model
     base = model.base
+    if has_sheen(material) and base in ("diffuse", "dielectric"):
+        return "principled"  # the one native plugin with a sheen (Disney's: docs/bsdf.md "Sheen")
     if base == "diffuse":
         return "diffuse"
     if model.coat and base == "dielectric" and not model.anisotropic:
@@ -266,12 +278,30 @@ def principled_bsdf(material: Material, tex: BsdfTextures) -> Prop:
         props.append(prop("float", "eta", params.ior))
     if base == "glass":
         props.append(prop("float", "spec_trans", 1.0))
+    if base == "diffuse":  # a fabric: principled's diffuse without its specular lobe
+        props = [p for p in props if p["name"] != "roughness"] + [
+            prop("float", "roughness", 1.0),
+            prop("float", "specular", 0.0),
+        ]
+    props += principled_sheen(material)
     if model.coat and params.coat is not None:
         coat_alpha = float(params.coat.alpha[0])
         gloss = min(max((0.1 - coat_alpha) / 0.099, 0.0), 1.0)  # Disney: alpha_c = lerp(0.1, 0.001, gloss)
         clearcoat = principled_clearcoat(material)  # the coat lobe's energy (#15)
         props += [prop("float", "clearcoat", clearcoat), prop("float", "clearcoat_gloss", gloss)]
     return node("principled", props)
+
+
+def principled_sheen(material: Material) -> list[Prop]:
+    """principled's Disney sheen for the IR's Charlie sheen: what it can match is the strength (sheen =
+    the sheen colour's brightest channel) and the colour following the base (sheen_tint 1: the IR dyes
+    the sheen with the base colour, cnlmc.sheen_colour); what it cannot: the lobe's shape and width
+    (Disney's is a (1 - cos theta_d)^5 grazing term without roughness) and the energy taken from the
+    base (Disney adds it)."""
+    if not has_sheen(material):
+        return []
+    weight = min(max(float(c) for c in material.params.sheen_color or (0.0,)), 1.0)
+    return [prop("float", "sheen", weight), prop("float", "sheen_tint", 1.0)]
 
 
 def coated_bsdf(material: Material, tex: BsdfTextures) -> Prop:
