@@ -344,8 +344,17 @@ def _hide_maps(state: MaterialState, adjective: Entry, words: Words) -> None:
 
 def _apply_maps(state: MaterialState, ctx: Context, adjective: Entry, weight: float, words: Words) -> None:
     for role, ref in adjective.get("maps", {}).items():
-        state.maps[role] = _map_ref(weighted_map(ref, weight), ctx)
+        drawn = _map_ref(weighted_map(ref, weight), ctx)
+        state.maps[role] = _kept_params(state.maps.get(role), drawn)
         state.note(f"maps.{role}", ref["graph"], f"adjectives.{adjective.key}.maps (weight {weight:g})", words)
+
+
+def _kept_params(before: dict[str, Any] | None, drawn: dict[str, Any]) -> dict[str, Any]:
+    """A describing word's map over the same graph and output as the map already there keeps that
+    map's own parameters and sets its own ('fine-grained oak' is oak's grain, finer)."""
+    if before is None or (before.get("graph"), before.get("output")) != (drawn.get("graph"), drawn.get("output")):
+        return drawn
+    return {**drawn, "params": {**before.get("params", {}), **drawn.get("params", {})}}
 
 
 def weighted_map(ref: dict[str, Any], weight: float) -> dict[str, Any]:
