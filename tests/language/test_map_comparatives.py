@@ -124,3 +124,16 @@ def test_german_comparative_with_an_ending_adds_a_missing_map():
     _r, got = look(de, "rostigeres Eisen")
     _r2, expected = look(de, "leicht rostiges Eisen")
     assert got == expected
+
+
+@pytest.mark.parametrize("noun", ["oak", "walnut", "ash"])
+def test_a_describing_word_on_the_nouns_own_graph_keeps_the_nouns_parameters(noun):
+    """'fine-grained oak' is oak's own wood map with a finer grain: the adjective's parameters are
+    set, the noun's (its grain, its colour variation) kept."""
+    plain = compile_source(noun, "<t>").ir["materials"][0]["maps"]["base_color"]
+    fine = compile_source(f"fine-grained {noun}", "<t>").ir["materials"][0]["maps"]["base_color"]
+    assert fine["graph"] == plain["graph"] == "wood"
+    said = {"scale", "ring_scale"}  # what 'fine-grained' sets (adjectives_participles.toml)
+    kept = {k: v for k, v in plain["params"].items() if k not in said}
+    assert kept and {k: fine["params"].get(k) for k in kept} == kept
+    assert fine["params"]["scale"] > plain["params"].get("scale", 1.0)
