@@ -79,6 +79,7 @@ class Rules:
         self.negation_prefixes = joined("negation", "prefixes")
         self.softeners = frozenset(joined("negation", "softeners"))
         self.emphatic = tuple(tuple(e.split()) for e in joined("negation", "emphatic"))  # "at all"
+        self.emphatic_before = frozenset(joined("negation", "emphatic_before"))  # "gar nicht"
         self.soft_adverb = next((x["negation"]["soft_adverb"] for x in layers if x["negation"]["soft_adverb"]), "")
         self.prefixes = {
             form: p["adverb"] for layer in reversed(layers) for p in layer["prefix"] for form in p["forms"]
@@ -160,6 +161,8 @@ class WordFormation:
                 return named
             if first in rules.negation_words:
                 return self._negated_words(words)
+            if first in rules.emphatic_before and words[1] in rules.negation_words:
+                return self._emphatic_negation(words)
             adverb = rules.prefixes.get(first)
             if adverb is not None:
                 return self._prefixed_word(first, adverb, words[1])
@@ -538,6 +541,17 @@ class WordFormation:
             for p in reading.parts
         )
         return Reading(parts, reading.words + after, reading.note)
+
+    def _emphatic_negation(self, words: Sequence[str]) -> Reading | None:
+        """'gar nicht X', 'überhaupt nicht X' = 'nicht X': the emphatic word before the negation is
+        taken along with it."""
+        found = self._negated_words(words[1:])
+        if found is None:
+            return None
+        parts = tuple(
+            Part(p.first + 1 if p.first else 0, p.last + 1, p.start, p.end, p.candidates) for p in found.parts
+        )
+        return Reading(parts, found.words + 1, found.note.replace(f"'{words[1]} ", f"'{words[0]} {words[1]} ", 1))
 
     def _emphatic_at(self, words: Sequence[str], at: int) -> int:
         """How many words of an emphatic phrase ('at all') start at words[at]: 0 when none does."""

@@ -22,7 +22,7 @@ RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "FEATURE")
 
 _LISTS = {
     "punctuation": ("trailing", "leading", "quotes", "number_marks"),
-    "negation": ("words", "prefixes", "softeners", "emphatic"),
+    "negation": ("words", "prefixes", "softeners", "emphatic", "emphatic_before"),
     "qualifiers": ("words",),
     "properties": ("endings",),
 }
@@ -32,7 +32,14 @@ def empty_rules() -> dict[str, Any]:
     """The normal form of a file with no rules at all."""
     return {
         "punctuation": {"trailing": [], "leading": [], "quotes": [], "number_marks": []},
-        "negation": {"words": [], "prefixes": [], "softeners": [], "emphatic": [], "soft_adverb": ""},
+        "negation": {
+            "words": [],
+            "prefixes": [],
+            "softeners": [],
+            "emphatic": [],
+            "emphatic_before": [],
+            "soft_adverb": "",
+        },
         "qualifiers": {"words": []},
         "properties": {"endings": []},
         "compound_first": {

@@ -160,6 +160,8 @@ def test_the_generated_colour_compounds_are_up_to_date():
         ("nicht zu glänzendes Kupfer", "not too glossy copper"),
         ("nicht sehr rauer Sandstein", "not very rough sandstone"),
         ("nicht ganz glatter Beton", "slightly smooth concrete"),
+        ("gar nicht glänzendes Acryl", "not glossy at all acrylic"),
+        ("überhaupt nicht polierter Stahl", "not at all polished steel"),
         ("halbmatte Keramik", "semi-matte ceramic"),
         ("halb matte Keramik", "semi matte ceramic"),
     ],
