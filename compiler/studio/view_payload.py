@@ -36,4 +36,8 @@ def static_asset(name: str) -> tuple[bytes, str] | None:
     `shader/<fullscreen.vert|prefilter.frag|background.frag|tonemap.frag>`; None for any other name."""
     from cnlmc.backends.preview.web import WebScene
 
-    return WebScene().asset(name)
+    scene = WebScene()
+    try:
+        return scene.asset(name)
+    finally:
+        scene.close()  # an environment missing from the disk cache was prefiltered in an OpenGL context
