@@ -65,6 +65,11 @@ class Joiner:
                     out.append(word)
                 continue
             nouns = of_tag(word, "NOUN")
+            if _more_things(out, word, tagged[:k]):  # "copper pots and pans": the pans are copper too
+                note = f"read '{out[-1].text} {word.text}' as more things of the same material"
+                diags.append(Diagnostic(_joined_span(out[-1], word), Severity.NOTE, NOTE_CODE, note))
+                out.pop()
+                continue
             if before is not None and of_tag(before, "OBJECT") and not others(before) and nouns:
                 out[-1] = self._join(before, word, nouns, f"'{word.text}' ('{before.text}' names the object)", diags)
             elif before is not None and of_tag(word, "OBJECT") and of_tag(before, "NOUN"):
@@ -88,7 +93,7 @@ class Joiner:
                 if k + 1 < len(tagged) and of_tag(tagged[k + 1], "NOUN"):
                     out.append(word)  # "roof tiles": joined to the noun next
                 elif not others(word) and any(
-                    of_tag(t, "NOUN") or of_tag(t, "OBJECT") for t in _until_with(tagged[k + 1 :])
+                    of_tag(t, "NOUN") or of_tag(t, "OBJECT") for t in _main_words(tagged[k + 1 :])
                 ):
                     note = f"read '{word.text}' as saying how or what for, not what: the material is named later"
                     diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))  # "wire brushed oak"
@@ -512,10 +517,24 @@ def may_join(tagged: list[Tagged]) -> bool:
     return plain and noun_seen and any(c.tag == "ADJ" for c in final.candidates)
 
 
-def _until_with(words: list[Tagged]) -> list[Tagged]:
-    """The words before the first 'with': a noun in a clause ('a backsplash with white grout')
-    names what the clause adds, not the material of the phrase."""
-    end = next((k for k, t in enumerate(words) if of_tag(t, "WITH")), len(words))
+def _more_things(out: list[Tagged], word: Tagged, said: list[Tagged]) -> bool:
+    """Whether `word` is an object after 'and' after a material named by its object ('copper pots
+    and pans', 'pots and pans', 'oak tables and chairs'; `said`: the words before it as tagged):
+    another thing made of that material, not a second one."""
+    if len(out) < 2 or not of_tag(word, "OBJECT") or others(word) or not of_tag(out[-1], "AND"):
+        return False
+    return bool(of_tag(out[-2], "NOUN")) and bool(of_tag(said[-2], "OBJECT"))
+
+
+def _joined_span(first: Tagged, last: Tagged) -> Span:
+    return Span(first.span.start, last.span.end, first.span.line, first.span.col)
+
+
+def _main_words(words: list[Tagged]) -> list[Tagged]:
+    """The words before the first 'with' or 'and': a noun in a clause ('a backsplash with white
+    grout') names what the clause adds, an object after 'and' another thing ('pots and pans'), not
+    the material of the phrase."""
+    end = next((k for k, t in enumerate(words) if of_tag(t, "WITH") or of_tag(t, "AND")), len(words))
     return words[:end]
 
 

@@ -121,3 +121,20 @@ def test_an_object_made_of_a_material_is_that_material(lexicon, text, meaning):
     _plain, expected = look(lexicon, meaning)
     assert got == expected, (text, meaning)
     assert any("the material of" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    ("text", "meaning"),
+    [
+        ("copper pots and pans", "copper"),
+        ("oak tables and chairs", "oak"),
+        ("brushed brass hinges and handles", "brushed brass"),
+        ("a backsplash with white grout", "ceramic tile with white grout"),
+    ],
+)
+def test_more_objects_after_and_are_of_the_same_material(lexicon, text, meaning):
+    """'copper pots and pans': the pans are copper too (a note says so), not a second material."""
+    result, said = look(lexicon, text)
+    assert said == look(lexicon, meaning)[1]
+    if " and " in text:
+        assert any("more things of the same material" in d.message for d in result.diagnostics)
