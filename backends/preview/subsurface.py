@@ -87,50 +87,23 @@ def has_subsurface(material: Any) -> bool:
     return subsurface_of(material) is not None
 
 
-def single_scattering_albedo(color: Any) -> np.ndarray:
-    """The single-scattering albedo whose multiple-scattering albedo is `color`: the
-    Christensen-Burley inversion (Christensen & Burley 2015, "Approximate Reflectance Profiles
-    for Efficient Subsurface Scattering", their fit of van de Hulst's albedo):
-    alpha = 1 - (4.09712 + 4.20863 c - sqrt(9.59217 + 41.6808 c + 17.7126 c^2))^2."""
-    c = np.clip(np.asarray(color, np.float64), 0.0, 1.0)
-    return np.asarray(1.0 - (4.09712 + 4.20863 * c - np.sqrt(9.59217 + 41.6808 * c + 17.7126 * c * c)) ** 2)
+def metres_per_unit() -> float:
+    """Metres one scene unit spans: the Mitsuba export's (backends/exchange/mitsuba_subsurface.py
+    METRES_PER_UNIT, a unit sphere is a 10 cm ball), so the preview and its reference agree."""
+    from ..exchange.mitsuba_subsurface import METRES_PER_UNIT
+
+    return float(METRES_PER_UNIT)
 
 
-def diffuse_reflectance(alpha: Any, ior: float) -> np.ndarray:
-    """What a semi-infinite medium of single-scattering albedo `alpha` under a boundary of `ior`
-    reflects in all (Jensen et al. 2001, the dipole's total diffuse reflectance R_d, with
-    Egan-Hilgeman's diffuse Fresnel reflectance F_dr for the boundary). The body's albedo in the
-    preview: what Mitsuba's medium behind its dielectric boundary gives back (docs/preview.md)."""
-    a = np.clip(np.asarray(alpha, np.float64), 0.0, 1.0)
-    f_dr = -1.440 / ior**2 + 0.710 / ior + 0.668 + 0.0636 * ior
-    boundary = (1.0 + f_dr) / (1.0 - f_dr)
-    s = np.sqrt(3.0 * (1.0 - a))
-    return np.asarray(a / 2.0 * (1.0 + np.exp(-4.0 / 3.0 * boundary * s)) * np.exp(-s))
+def sheet_optics(body: TranslucentBody) -> tuple[np.ndarray, np.ndarray]:
+    """(diffuse reflectance R, diffuse transmittance T) of a thin wall: the Kubelka-Munk slab of
+    the IR's medium at its thickness (cnlmc.bsdf.subsurface.slab, what the Mitsuba export's
+    principledthin sheet is made from)."""
+    from cnlmc.bsdf.subsurface import medium_of, slab
 
-
-def body_albedo(body: TranslucentBody) -> np.ndarray:
-    """The share of light entering the body that leaves it again, per channel (<= 1)."""
-    return np.clip(diffuse_reflectance(single_scattering_albedo(body.color), body.ior), 0.0, 1.0)
-
-
-def wall_optics(body: TranslucentBody) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(diffuse reflectance, diffuse transmittance, unscattered transmittance) of a thin wall,
-    per channel: Kubelka-Munk for a slab of the wall's thickness (K = 2 sigma_a, S = sigma_s (1 - g);
-    Kubelka & Munk 1931, our mapping from the medium) for what scatters, Beer-Lambert
-    exp(-sigma_t t) for what crosses without scattering (seen through the wall, undeflected)."""
-    sigma_t = 1.0 / np.maximum(np.asarray(body.radius, np.float64), 1e-9)
-    albedo = single_scattering_albedo(body.color)
-    k = 2.0 * sigma_t * (1.0 - albedo)
-    scatter = np.maximum(sigma_t * albedo * (1.0 - body.anisotropy), 1e-12)
-    a = 1.0 + k / scatter
-    b = np.sqrt(np.maximum(a * a - 1.0, 0.0))
-    x = np.minimum(b * scatter * body.wall(), 50.0)
-    sinh_over_b = np.where(b > 1e-9, np.sinh(x) / np.maximum(b, 1e-12), scatter * body.wall())
-    denominator = a * sinh_over_b + np.cosh(x)
-    ballistic = np.exp(-sigma_t * body.wall())
-    reflect = sinh_over_b / denominator
-    through = np.clip(1.0 / denominator - ballistic, 0.0, 1.0)
-    return np.asarray(reflect), np.asarray(through), np.asarray(ballistic)
+    medium = medium_of(body.color, body.radius, body.anisotropy, body.ior)
+    reflectance, transmittance = slab(medium, body.wall())
+    return np.clip(reflectance, 0.0, 1.0), np.clip(transmittance, 0.0, 1.0)
 
 
 def schlick_f0(ior: float) -> float:
@@ -147,13 +120,13 @@ def subsurface_uniforms(material: Any, mesh: Mesh, model: np.ndarray) -> dict[st
     centre, radius = bounding_sphere(mesh)
     model = np.asarray(model, np.float64)
     scale = abs(float(np.linalg.det(model[:3, :3]))) ** (1.0 / 3.0) or 1.0
-    per_unit = float(settings()["scene"]["metres_per_unit"])
+    per_unit = metres_per_unit()
     wrap = settings()["wrap"]
-    reflect, through, ballistic = wall_optics(body) if body.thin else (body_albedo(body), np.zeros(3), np.zeros(3))
+    # a volume's colour is the dipole's total diffuse reflectance (docs/subsurface.md): the body albedo
+    reflect, through = sheet_optics(body) if body.thin else (np.clip(body.color, 0.0, 1.0), np.zeros(3))
     return {
         "pv_sss_albedo": reflect,
         "pv_sss_wall_through": through,
-        "pv_sss_wall_ballistic": ballistic ** (2 if mesh.closed else 1),  # a closed shell: in and out
         "pv_sss_mfp": np.maximum(np.asarray(body.radius) / per_unit * scale, 1e-6),
         "pv_sss_thin": int(body.thin),
         "pv_sss_centre": model[:3, :3] @ centre + model[:3, 3],
