@@ -1,7 +1,8 @@
 """Phrase -> IR latency in-process, next to lark's raw parse of the same phrase, and the cold CLI.
 
 Run: .venv/bin/python bench/language_bench.py
-Prints median and p99 per stage and phrases/s. The peer is lark's own LALR parse of the
+Prints median and p99 per stage and phrases/s, and the cold CLI's wall and CPU time with the
+parse shapes stored by an earlier run and without (cnlmc.shape_store). The peer is lark's own LALR parse of the
 phrase text with its own lexer (what a lark user would write); lark's parse of our
 already-tagged tokens is printed too (the floor for any parser built on lark).
 
@@ -73,6 +74,7 @@ def p99(xs):
 def in_process(repeat: int = 300) -> dict:
     lexicon = lexicon_for()
     tagger, parser, raw = Tagger(lexicon), lark_parser(), raw_text_parser()
+    shapes = lexicon.caches.shapes
     compile_times, parse_times, raw_times, unshaped_times = [], [], [], []
     for phrase in PHRASES:
         compile_source(phrase, "bench", lexicon)  # warm caches
@@ -82,25 +84,41 @@ def in_process(repeat: int = 300) -> dict:
         compile_times += timed(lambda: compile_source(phrase, "bench", lexicon), repeat)
         parse_times += timed(lambda: parser.parse(tokens), repeat)
         raw_times += timed(lambda: raw.parse(phrase), repeat)
-        unshaped_times += timed(
-            lambda: (lexicon.caches.shapes.clear(), compile_source(phrase, "bench", lexicon)), repeat // 4
-        )
+        shapes.persistent = False  # cleared means parsed again, not recalled from the stored shapes
+        unshaped_times += timed(lambda: (shapes.clear(), compile_source(phrase, "bench", lexicon)), repeat // 4)
+        shapes.persistent = True
     return {"compile": compile_times, "parse": parse_times, "raw": raw_times, "unshaped": unshaped_times}
 
 
-def cold_cli(runs: int = 7) -> list[float]:
+def cold_cli(runs: int = 7) -> dict[str, list[tuple[float, float]]]:
     """A new process per run, as a user's shell starts it: bytecode cached (as pip installs do),
-    lexicon and grammar tables cached after the first run."""
+    lexicon, grammar tables and parse shapes cached after the first run (in a cache folder of its
+    own). Each run is paired with one whose stored parse shapes were deleted first (the peer: the
+    previous start, which imports lark and loads the LALR tables). (wall, CPU) seconds per run;
+    CPU (user + sys, from the process's rusage) is what to compare on a busy machine."""
+    import tempfile
+
     example = Path(__file__).resolve().parents[1] / "examples" / "anodized.cnl"
-    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
     command = [sys.executable, "-m", "cnlmc", "compile", str(example), "--target", "ir"]
-    subprocess.run(command, check=True, capture_output=True, env=env)  # writes bytecode and caches
-    times = []
-    for _ in range(runs):
-        t = time.perf_counter()
-        subprocess.run(command, check=True, capture_output=True, env=env)
-        times.append(time.perf_counter() - t)
-    return times
+    out: dict[str, list[tuple[float, float]]] = {"stored shapes": [], "no stored shapes": []}
+    with tempfile.TemporaryDirectory() as home:
+        env = {k: v for k, v in os.environ.items() if k not in ("PYTHONDONTWRITEBYTECODE", "CNLMC_NO_CACHE")}
+        env["XDG_CACHE_HOME"] = home
+        subprocess.run(command, check=True, capture_output=True, env=env)  # writes bytecode and caches
+        for _ in range(runs):
+            out["stored shapes"].append(_timed_run(command, env))
+            for stored in Path(home, "cnlmc").glob("shapes-*"):
+                stored.unlink()
+            out["no stored shapes"].append(_timed_run(command, env))
+    return out
+
+
+def _timed_run(command: list[str], env: dict[str, str]) -> tuple[float, float]:
+    start = time.perf_counter()
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+    _pid, status, usage = os.wait4(process.pid, 0)
+    assert os.waitstatus_to_exitcode(status) == 0, "the cold compile failed"
+    return time.perf_counter() - start, usage.ru_utime + usage.ru_stime
 
 
 def main() -> None:
@@ -121,10 +139,17 @@ def main() -> None:
         f"/ parse of tagged tokens: {med_c / med_p:.2f}x   phrases/s: {1 / med_c:,.0f}"
     )
     cold = cold_cli()
-    print(
-        f"cold `cnlmc compile --target ir` wall time: median {statistics.median(cold) * 1e3:.0f} ms, "
-        f"min {min(cold) * 1e3:.0f} ms over {len(cold)} runs"
+    for label, runs in cold.items():
+        wall, cpu = [w for w, _c in runs], [c for _w, c in runs]
+        print(
+            f"cold `cnlmc compile --target ir`, {label}: wall median {statistics.median(wall) * 1e3:.0f} ms "
+            f"(min {min(wall) * 1e3:.0f}), CPU median {statistics.median(cpu) * 1e3:.0f} ms "
+            f"(min {min(cpu) * 1e3:.0f}) over {len(runs)} runs"
+        )
+    ratio = statistics.median(c for _w, c in cold["stored shapes"]) / statistics.median(
+        c for _w, c in cold["no stored shapes"]
     )
+    print(f"ratio CPU stored / not stored: {ratio:.2f}x   load average now: {os.getloadavg()[0]:.2f}")
 
 
 if __name__ == "__main__":
