@@ -10,13 +10,15 @@ far-fetched look-alike (pewter -> water, beech -> bleach: 2-3 edits on 5-7 lette
 from __future__ import annotations
 
 from bisect import bisect_left
-from collections.abc import Mapping, Sequence
+from collections import Counter
+from collections.abc import Iterable, Mapping, Sequence
 from functools import lru_cache
 from importlib import resources
+from itertools import chain
 from types import MappingProxyType
 from typing import Any
 
-__all__ = ["closest_forms", "teaching"]
+__all__ = ["FormIndex", "allowed_edits", "teaching"]
 
 
 @lru_cache(maxsize=1)
@@ -37,50 +39,160 @@ def allowed_edits(word: str) -> int:
     return edits
 
 
-def closest_forms(word: str, pool: Sequence[str], limit: int) -> list[str]:
-    """The forms of `pool` (sorted lower-case surface forms) that `word` may stand for, best first:
-    fewest edits, then those that begin with the word's first letter."""
+class FormIndex:
+    """Every surface form of one lexicon with its categories, indexed for 'did you mean'; made
+    once per lexicon on its first unknown word and kept with it (lexicon.caches.suggestion_index).
+
+    A typo is a form within `allowed_edits(word)` edits of optimal string alignment (OSA: insert,
+    delete, substitute, swap two neighbours). Rather than measuring the distance to every form,
+    a filter that never drops a form within reach picks the few candidates to measure (rapidfuzz):
+
+    - one edit (short words): each edit, a swap included, is undone by deleting one letter on each
+      side, so the forms are indexed by themselves and each of their one-letter deletions, and
+      looked up by the word and each of its one-letter deletions;
+    - k edits (long words): an edit breaks at most 3 of the word's letter pairs (a swap 3, any
+      other edit 2), and moves the pairs after it by at most one place, so a form within reach
+      holds at least (letters - 1 - 3k) of the word's pairs, each within k places of where the
+      word has it; the forms are indexed by (pair, place).
+
+    tests/lsp/test_suggest_index.py checks the result against measuring every form.
+    """
+
+    def __init__(self, categories_by_form: Mapping[str, Iterable[str]]) -> None:
+        self.forms: list[str] = sorted(categories_by_form)
+        self._number = {form: i for i, form in enumerate(self.forms)}
+        self._categories = [frozenset(categories_by_form[form]) for form in self.forms]
+        self._lengths = [len(form) for form in self.forms]
+        self._one_edit_longest = _longest_word_with_edits(1) + 1
+        self._by_deletion: dict[str, list[int]] | None = None
+        self._by_pair: dict[tuple[str, int], list[int]] | None = None
+
+    def closest(self, word: str, categories: Iterable[str], limit: int, scan: bool = False) -> list[str]:
+        """The forms of `categories` that `word` may stand for, best first: fewest edits, then
+        those that begin with the word's first letter, then whole forms begun, then compound heads.
+        `scan=True` measures every form instead of the index's candidates (the same answer, slowly:
+        the reference tests/lsp/test_suggest_index.py and bench/suggest_bench.py compare with)."""
+        wanted = frozenset(categories)
+        low = word.lower()
+        scored = self._scanned(low, wanted) if scan else self._typos(low, wanted)
+        scored += [(10, form) for form in self._begun_by(low, wanted)]
+        scored += [(11, form) for form in self._heads(low, wanted)]
+        negated = _negated_stems(low)
+        never = frozenset(teaching()["never_suggest"])
+        out: list[str] = []
+        for _rank, _other_start, form in sorted((rank, form[:1] != low[:1], form) for rank, form in scored):
+            if form not in out and form not in negated and form != low and never.isdisjoint(form.split()):
+                out.append(form)
+        return out[:limit]
+
+    def _typos(self, low: str, wanted: frozenset[str]) -> list[tuple[int, str]]:
+        """(edits, form) of every form of `wanted` within allowed_edits(low) edits of `low`."""
+        edits = allowed_edits(low)
+        if edits == 0:
+            return []
+        if edits == 1 and len(low) < self._one_edit_longest:
+            found = self._one_deletion_candidates(low)
+        else:
+            found = self._pair_candidates(low, edits)
+        candidates = [self.forms[i] for i in found if not wanted.isdisjoint(self._categories[i])]
+        return _measured(low, candidates, edits)
+
+    def _scanned(self, low: str, wanted: frozenset[str]) -> list[tuple[int, str]]:
+        candidates = [
+            form for form, categories in zip(self.forms, self._categories) if not wanted.isdisjoint(categories)
+        ]
+        return _measured(low, candidates, allowed_edits(low))
+
+    def _one_deletion_candidates(self, low: str) -> set[int]:
+        if self._by_deletion is None:
+            self._by_deletion = _deletion_index(self.forms, self._one_edit_longest)
+        found: set[int] = set()
+        for key in _with_one_deletion(low):
+            found.update(self._by_deletion.get(key, ()))
+        return found
+
+    def _pair_candidates(self, low: str, edits: int) -> set[int]:
+        needed = len(low) - 1 - 3 * edits
+        shortest, longest = len(low) - edits, len(low) + edits
+        if needed < 1:  # too short for pairs to tell: only the length does
+            return {i for i, length in enumerate(self._lengths) if shortest <= length <= longest}
+        if self._by_pair is None:
+            self._by_pair = _pair_index(self.forms)
+        by_pair, none = self._by_pair, ()
+        near = [
+            by_pair.get((low[place : place + 2], at), none)
+            for place in range(len(low) - 1)
+            for at in range(max(0, place - edits), place + edits + 1)
+        ]
+        if needed == 1:
+            found: set[int] = set().union(*near)
+        else:  # a form with a pair twice near one place counts twice: a few more candidates, none lost
+            found = {i for i, count in Counter(chain.from_iterable(near)).items() if count >= needed}
+        return {i for i in found if shortest <= self._lengths[i] <= longest}
+
+    def _begun_by(self, word: str, wanted: frozenset[str]) -> list[str]:
+        """'stainless' -> 'stainless steel': the multi-word forms whose first word is `word`."""
+        start = word + " "
+        found = []
+        for i in range(bisect_left(self.forms, start), len(self.forms)):
+            if not self.forms[i].startswith(start):
+                break
+            if not wanted.isdisjoint(self._categories[i]):
+                found.append(self.forms[i])
+        return found
+
+    def _heads(self, word: str, wanted: frozenset[str]) -> list[str]:
+        """'rubberwood' -> 'wood': the known one-word forms (>= 4 letters) the word ends in, after
+        a first part of >= head_min_letters letters that is not a meaning prefix."""
+        rules = teaching()
+        found = []
+        for cut in range(rules["head_min_letters"], len(word) - 3):
+            first, rest = word[:cut].rstrip("-"), word[cut:].lstrip("-")
+            if first in rules["meaning_prefixes"] or len(rest) < 4:
+                continue
+            i = self._number.get(rest)
+            if i is not None and not wanted.isdisjoint(self._categories[i]):
+                found.append(rest)
+        return found
+
+
+def _measured(low: str, candidates: list[str], edits: int) -> list[tuple[int, str]]:
+    if not candidates:
+        return []
     from rapidfuzz import process  # only needed when a word is unknown
     from rapidfuzz.distance import OSA
 
-    low = word.lower()
-    typos = process.extract(low, pool, scorer=OSA.distance, score_cutoff=allowed_edits(low), limit=None)
-    scored = [(int(edits), form) for form, edits, _i in typos]
-    scored += [(10, form) for form in _forms_begun_by(low, pool)]
-    scored += [(11, form) for form in _heads(low, pool)]
-    negated = _negated_stems(low)
-    never = frozenset(teaching()["never_suggest"])
-    out: list[str] = []
-    for _rank, _other_start, form in sorted((rank, form[:1] != low[:1], form) for rank, form in scored):
-        if form not in out and form not in negated and form != low and never.isdisjoint(form.split()):
-            out.append(form)
-    return out[:limit]
+    typos = process.extract(low, candidates, scorer=OSA.distance, score_cutoff=edits, limit=None)
+    return [(int(distance), form) for form, distance, _i in typos]
 
 
-def _forms_begun_by(word: str, pool: Sequence[str]) -> list[str]:
-    """'stainless' -> 'stainless steel': the multi-word forms whose first word is `word` (pool sorted)."""
-    start = word + " "
-    found = []
-    for form in pool[bisect_left(pool, start) :]:
-        if not form.startswith(start):
-            break
-        found.append(form)
-    return found
+def _longest_word_with_edits(edits: int) -> int:
+    """The most letters a word may have and still be allowed at most `edits` edits (teaching.toml)."""
+    longer = [step["letters"] for step in teaching()["typo_edits"] if step["edits"] > edits]
+    return min(longer) - 1 if longer else 10**9
 
 
-def _heads(word: str, pool: Sequence[str]) -> list[str]:
-    """'rubberwood' -> 'wood': the known one-word forms (>= 4 letters) the word ends in, after a
-    first part of >= head_min_letters letters that is not a meaning prefix."""
-    rules = teaching()
-    found = []
-    for cut in range(rules["head_min_letters"], len(word) - 3):
-        first, rest = word[:cut].rstrip("-"), word[cut:].lstrip("-")
-        if first in rules["meaning_prefixes"] or len(rest) < 4:
-            continue
-        index = bisect_left(pool, rest)
-        if index < len(pool) and pool[index] == rest:
-            found.append(rest)
-    return found
+def _with_one_deletion(text: str) -> set[str]:
+    return {text, *(text[:i] + text[i + 1 :] for i in range(len(text)))}
+
+
+def _deletion_index(forms: Sequence[str], longest: int) -> dict[str, list[int]]:
+    """Each form of at most `longest` letters, and each of its one-letter deletions -> the forms."""
+    index: dict[str, list[int]] = {}
+    for i, form in enumerate(forms):
+        if len(form) <= longest:
+            for key in _with_one_deletion(form):
+                index.setdefault(key, []).append(i)
+    return index
+
+
+def _pair_index(forms: Sequence[str]) -> dict[tuple[str, int], list[int]]:
+    """(two neighbouring letters, place of the first) -> the forms that have them there."""
+    index: dict[tuple[str, int], list[int]] = {}
+    for i, form in enumerate(forms):
+        for place in range(len(form) - 1):
+            index.setdefault((form[place : place + 2], place), []).append(i)
+    return index
 
 
 def _negated_stems(word: str) -> frozenset[str]:
