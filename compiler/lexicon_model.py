@@ -19,6 +19,7 @@ from .syntax import ShapeCache
 from .tagged import Candidate
 
 if TYPE_CHECKING:  # the tagger reads the lexicon; a lexicon keeps the tagger made for it
+    from .suggest import FormIndex
     from .tagger import Tagger
     from .word_formation import WordFormation
 
@@ -66,7 +67,7 @@ class LexiconCaches:
     - tagger: the Tagger of this lexicon (document.parse_document makes it on first use)
     - tags: word tuple -> the candidate tags the tagger found for it
     - suggestions: (word, categories, limit) -> the closest surface forms (Lexicon.suggest)
-    - suggestion_pools: categories -> the sorted surface forms suggestions are drawn from
+    - suggestion_index: every surface form with its categories, indexed for the typo search (suggest.FormIndex)
     - shapes: parse shapes by the candidate tags of a line's words (parser.parse_line_shape)
     - mistakes: parser failure key -> the friendly message learned from grammar/bad_examples.toml
       (None until a line first fails to parse; mistakes.known_mistake)
@@ -85,7 +86,7 @@ class LexiconCaches:
         self.tagger: Tagger | None = None
         self.tags: dict[tuple[str, ...], tuple[Candidate, ...]] = {}
         self.suggestions: dict[tuple[str, tuple[str, ...], int], list[str]] = {}
-        self.suggestion_pools: dict[tuple[str, ...], list[str]] = {}
+        self.suggestion_index: FormIndex | None = None
         self.shapes = ShapeCache()
         self.mistakes: dict[FailureKey, Mistake] | None = None
         self.effect_rules: dict[tuple[str, str, int, float], str] = {}
@@ -160,17 +161,14 @@ class Lexicon:
         return list(memo[key])
 
     def _closest(self, word: str, categories: tuple[str, ...], limit: int) -> list[str]:
-        from .suggest import closest_forms  # only needed when a word is unknown
+        caches = self.caches
+        if caches.suggestion_index is None:
+            from .suggest import FormIndex  # only needed when a word is unknown
 
-        return closest_forms(word, self._pool(categories), limit)
-
-    def _pool(self, categories: tuple[str, ...]) -> list[str]:
-        pools = self.caches.suggestion_pools
-        if categories not in pools:
-            pools[categories] = sorted(
-                " ".join(form) for form, hits in self.forms.items() if any(e.category in categories for e in hits)
+            caches.suggestion_index = FormIndex(
+                {" ".join(f): {e.category for e in hits} for f, hits in self.forms.items()}
             )
-        return pools[categories]
+        return caches.suggestion_index.closest(word, categories, limit)
 
     def all_of(self, category: str) -> dict[str, Entry]:
         return self.entries.get(category, {})
