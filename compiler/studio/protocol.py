@@ -7,8 +7,8 @@ chips, AR) runs on a worker thread so the page's next keystroke is not kept wait
   undo / redo                   -> analysis {..., text}
   complete {text, line, character} -> completion {items}
   hover {text, line, character} -> hover {markdown, range} | hover {}
-  export {key}                  -> exported {url, name, notes}
-  ar_model                      -> ar_model {glb, usdz, notes}
+  export {key, text}            -> exported {url, name, notes}
+  ar_model {text}               -> ar_model {glb, usdz, notes}
   thumbnail {index, image}      -> (nothing: the history strip's picture of step `index`)
 and, unasked, chips {words, text} after an analysis that made a history step."""
 
@@ -117,7 +117,7 @@ class Dispatcher:
         return {"op": "hover", **(self.session.engine.hover(text, line, character) or {})}
 
     async def op_export(self, message: JSONDict) -> JSONDict:
-        exported = await self.in_thread(self.session.export, _text(message, "key"))
+        exported = await self.in_thread(self.session.export, _text(message, "key"), _text(message, "text"))
         return {
             "op": "exported",
             "url": self.url(exported.path),
@@ -126,8 +126,9 @@ class Dispatcher:
         }
 
     async def op_ar_model(self, message: JSONDict) -> JSONDict:
-        glb = await self.in_thread(self.session.export, "glb")
-        usdz = await self.in_thread(self.session.export, "usdz")
+        text = _text(message, "text")
+        glb = await self.in_thread(self.session.export, "glb", text)
+        usdz = await self.in_thread(self.session.export, "usdz", text)
         return {
             "op": "ar_model",
             "glb": self.url(glb.path),

@@ -131,11 +131,14 @@ class StudioSession:
 
     # ------------------------------------------------------------------ exports
 
-    def export(self, key: str) -> Exported:
+    def export(self, key: str, text: str | None = None) -> Exported:
+        """`key`'s export of `text` (the page's document as it is now; default: the last analysed)."""
         kind = self.settings.export(key)
         if kind is None:
             raise ValueError(f"no export called '{key}'")
-        result = compile_source(self.text, "<studio>", self.lexicon, keep_stages=False)
+        text = self.text if text is None else text
+        self.check_size(text)
+        result = compile_source(text, "<studio>", self.lexicon, keep_stages=False)
         if not result.ok or not result.materials:
             raise ValueError("the document has errors: fix them before exporting")
         return export(result.ir, kind, self.folder)

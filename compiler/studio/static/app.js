@@ -111,7 +111,7 @@ class Studio {
   async export(kind, button) {
     button.disabled = true;
     try {
-      const answer = await this.connection.request("export", { key: kind.key });
+      const answer = await this.connection.request("export", { key: kind.key, text: this.editor.text });
       showNotes($("notes"), answer.notes);
       const link = document.createElement("a");
       link.href = `${answer.url}?download=1`;
@@ -130,7 +130,7 @@ class Studio {
     const dialog = $("ar");
     dialog.showModal();
     try {
-      const answer = await this.connection.request("ar_model");
+      const answer = await this.connection.request("ar_model", { text: this.editor.text });
       showNotes($("notes"), answer.notes);
       const model = $("model");
       model.setAttribute("ios-src", answer.usdz);
