@@ -11,6 +11,9 @@ if command -v apt-get >/dev/null 2>&1 && [ "$(id -u)" = 0 ]; then
     xvfb python3-tk libtk8.6 libtcl8.6 >/dev/null
   # speech (cnlmc listen, issue #18): PortAudio for the microphone; espeak-ng and sox make the test utterances
   apt-get install -y -qq --no-install-recommends libportaudio2 espeak-ng sox >/dev/null
+  # the studio's browser tests (cnlmc serve, #17): Debian's Chromium draws WebGL2 on the CPU (SwiftShader);
+  # Playwright drives it (no browser download)
+  apt-get install -y -qq --no-install-recommends chromium >/dev/null
 fi
 python3 -m venv .venv
 .venv/bin/python -m pip install -q -U pip
