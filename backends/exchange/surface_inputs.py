@@ -23,6 +23,7 @@ from .conversions import (
     standard_roughness,
     weighted_f0,
 )
+from .subsurface_inputs import subsurface_inputs
 
 # IR concept -> input name, per MaterialX surface shader (per-target differences as a table).
 SURFACE_NAMES = {
@@ -45,6 +46,12 @@ SURFACE_NAMES = {
         "sheen": "fuzz_weight",
         "sheen_color": "fuzz_color",
         "sheen_roughness": "fuzz_roughness",
+        "subsurface": "subsurface_weight",
+        "subsurface_color": "subsurface_color",
+        "subsurface_length": "subsurface_radius",
+        "subsurface_shape": "subsurface_radius_scale",
+        "subsurface_anisotropy": "subsurface_scatter_anisotropy",
+        "thin_walled": "geometry_thin_walled",
         "normal": "geometry_normal",
         "tangent": "geometry_tangent",
     },
@@ -68,6 +75,12 @@ SURFACE_NAMES = {
         "sheen": "sheen",
         "sheen_color": "sheen_color",
         "sheen_roughness": "sheen_roughness",
+        "subsurface": "subsurface",
+        "subsurface_color": "subsurface_color",
+        "subsurface_length": "subsurface_scale",
+        "subsurface_shape": "subsurface_radius",
+        "subsurface_anisotropy": "subsurface_anisotropy",
+        "thin_walled": "thin_walled",
         "normal": "normal",
         "tangent": "tangent",
     },
@@ -77,7 +90,7 @@ METAL_EDGE = {"open_pbr_surface": f82_tint, "standard_surface": gulbrandsen_edge
 SURFACES = tuple(SURFACE_NAMES)
 
 
-Value = float | list[float]
+Value = float | bool | list[float]
 Inputs = dict[str, tuple[str, Value]]
 
 
@@ -107,7 +120,14 @@ def abstract_inputs(material: Material, surface: str) -> Inputs:
         out.update(_coat_inputs(params.coat))
     if params.sheen_color is not None and max(params.sheen_color) > 0.0:
         out.update(_sheen_inputs(params))
-    return {k: (t, round(v, DIGITS) if isinstance(v, float) else rounded(v)) for k, (t, v) in out.items()}
+    out.update(subsurface_inputs(material))  # light inside the body (subsurface_inputs.py)
+    return {k: (t, _rounded(v)) for k, (t, v) in out.items()}
+
+
+def _rounded(value: Value) -> Value:
+    if isinstance(value, bool):
+        return value
+    return round(value, DIGITS) if isinstance(value, float) else rounded(value)
 
 
 def _specular_inputs(params: Params, surface: str) -> Inputs:
