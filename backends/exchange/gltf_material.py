@@ -26,6 +26,7 @@ from typing import Any
 from cnlmc.material import Material
 
 from .conversions import alpha_pair, clip01, conductor_f0
+from .gltf_subsurface import subsurface_extensions
 
 JSON = dict[str, Any]
 
@@ -88,6 +89,7 @@ def extensions(material: Material, thickness: float) -> JSON:
             "sheenColorFactor": [float(c) for c in params.sheen_color],
             "sheenRoughnessFactor": float(params.sheen_roughness),
         }
+    out.update(subsurface_extensions(material, thickness))  # light inside the body (gltf_subsurface.py)
     return out
 
 
