@@ -27,7 +27,7 @@ def material_features(material: Material | Mapping[str, Any]) -> list[str]:
     if isinstance(material, Mapping):
         material = Material.from_ir(dict(material))
     model, coat = material.model, material.params.coat
-    features = [f"model.{model.base}"]
+    features = [f"model.{model.base}" if model.subsurface is None else f"subsurface.{model.subsurface}"]
     if model.distribution:
         features.append(f"distribution.{model.distribution}")
     if model.anisotropic:
@@ -63,6 +63,8 @@ ALL_FEATURES = (
     "coat.color",
     "sheen",
     "flakes",
+    "subsurface.volume",  # a dielectric boundary around a medium (docs/subsurface.md), in place of model.dielectric
+    "subsurface.thin",  # a thin-walled translucent sheet of it
     "maps.base_color",
     "maps.normal",
     "maps.roughness",

@@ -74,6 +74,16 @@ CAPABILITIES: Capabilities = {
         "no ratified glTF extension draws flakes (KHR_materials_* has none): the paint exports as its pigment "
         "under the clearcoat",
     ),
+    "subsurface.volume": (
+        "approximate",
+        "glTF has no scattering medium: KHR_materials_volume attenuation and KHR_materials_diffuse_transmission "
+        "(NOT ratified; the validator reports it unsupported, an info) with the Kubelka-Munk share through the "
+        "object's size (gltf_subsurface.py)",
+    ),
+    "subsurface.thin": (
+        "approximate",
+        "KHR_materials_diffuse_transmission (NOT ratified): the Kubelka-Munk sheet's transmitted share and colour",
+    ),
     "maps.base_color": BAKED,
     "maps.roughness": ("bake", "baked into the G channel of the metallicRoughnessTexture (linear)"),
     "maps.metallic": ("bake", "baked into the B channel of the metallicRoughnessTexture (linear)"),

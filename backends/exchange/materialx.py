@@ -51,6 +51,12 @@ _SHARED = {
         "OpenPBR and Standard Surface have no flake slot: the paint exports as its pigment under the coat; "
         "the flakes' brighter face, darker flop and sparkle are lost (docs/bsdf.md 'Flakes')",
     ),
+    "subsurface.volume": (
+        "approximate",
+        "OpenPBR subsurface_* / Standard Surface subsurface: the albedo and the mean free path (scene unit: a metre) "
+        "as the IR has them; the renderer inverts them its own way (subsurface_inputs.py)",
+    ),
+    "subsurface.thin": ("approximate", "the same inputs with geometry_thin_walled / thin_walled: the renderer's sheet"),
     "maps.base_color": BAKED,
     "maps.normal": BAKED,
     "maps.roughness": BAKED,

@@ -98,6 +98,14 @@ CAPABILITIES: Capabilities = {
         "drop",
         "no native Mitsuba BSDF has flakes: the paint's pigment under its coat; bsdf=cnlm draws them",
     ),
+    "subsurface.volume": (
+        "exact",
+        "a dielectric boundary around a homogeneous medium, volpathmis (mitsuba_subsurface.py)",
+    ),
+    "subsurface.thin": (
+        "approximate",
+        "principledthin with the Kubelka-Munk sheet's R + T and transmitted share: diffuse through, no forward peak",
+    ),
     "maps.base_color": BAKED,
     "maps.roughness": (
         "bake",
@@ -112,6 +120,7 @@ assert set(CAPABILITIES) == set(ALL_FEATURES)
 #: bsdf=cnlm: the plugin evaluates cnlmc's BSDF itself; like the GLSL backend it has no metallic map.
 CNLM_CAPABILITIES: dict[str, tuple[str, str]] = dict.fromkeys(ALL_FEATURES, ("exact", ""))
 CNLM_CAPABILITIES["maps.metallic"] = ("drop", "no IR model reads a metallic map")
+CNLM_CAPABILITIES["subsurface.thin"] = CAPABILITIES["subsurface.thin"]  # a medium is always native
 USED_MAPS = ("base_color", "roughness", "normal")
 #: `bsdf=cnlm`: cnlmc's own BSDF through the `cnlm` plugin (mitsuba_cnlm.py), which
 #: reads these maps itself (normals still go through `normalmap`).

@@ -68,6 +68,11 @@ CAPABILITIES: Capabilities = {
     "coat.color": ("drop", "UsdPreviewSurface has no coat colour " + KEPT),
     "sheen": ("approximate", "UsdPreviewSurface has no sheen; the OpenPBR network beside it has fuzz " + KEPT),
     "flakes": ("drop", "neither UsdPreviewSurface nor OpenPBR has a flake slot: the pigment under the coat"),
+    "subsurface.volume": (
+        "approximate",
+        "UsdPreviewSurface has no subsurface (diffuseColor = base_color); the OpenPBR network carries it " + KEPT,
+    ),
+    "subsurface.thin": ("approximate", "UsdPreviewSurface has no translucency; the OpenPBR network has it " + KEPT),
     "maps.base_color": BAKED,
     "maps.roughness": BAKED,
     "maps.metallic": BAKED,

@@ -59,6 +59,8 @@ CAPABILITIES: Capabilities = {
     "coat": ("approximate", "UsdPreviewSurface clearcoat (fixed IOR 1.5, clearcoatRoughness)"),
     "coat.color": ("drop", "UsdPreviewSurface has no coat colour"),
     "sheen": ("drop", "UsdPreviewSurface has no sheen: the fabric's body colour only " + PREVIEW_ONLY),
+    "subsurface.volume": ("drop", "UsdPreviewSurface has no subsurface: base_color as its surface " + PREVIEW_ONLY),
+    "subsurface.thin": ("drop", "UsdPreviewSurface has no translucency: base_color as its surface " + PREVIEW_ONLY),
     "model.conductor": (
         "approximate",
         "UsdPreviewSurface metallic workflow: Schlick with diffuseColor = f0, no edge tint",

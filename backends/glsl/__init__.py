@@ -48,6 +48,12 @@ CAPABILITIES: dict[str, tuple[str, str]] = {
         "the flake lobe (GGX of the flakes' spread, Schlick F0 = flake_color) mixed into the base under the coat "
         "(flakes.glsl): the mean of the flakes; sparkle (how many flakes a pixel sees) is the renderer's",
     ),
+    "subsurface.volume": (
+        "drop",
+        "no light inside the body in the exported GLSL: the dielectric boundary over base_color; the preview "
+        "draws it (docs/subsurface.md)",
+    ),
+    "subsurface.thin": ("drop", "no transmission through the sheet in the exported GLSL: its front face only"),
     "maps.base_color": ("bake", _BAKED),
     "maps.normal": ("bake", _BAKED),
     "maps.roughness": ("bake", _BAKED),

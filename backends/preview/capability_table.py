@@ -41,6 +41,8 @@ CAPABILITIES: dict[str, tuple[str, str]] = {
         "many of the flakes its footprint holds at their real size face the half vector (a Poisson "
         "count with the mean lobe as its mean, capped at 64x)",
     ),
+    "subsurface.volume": ("approximate", "the preview's subsurface body shader (docs/preview.md 'Subsurface')"),
+    "subsurface.thin": ("approximate", "the preview's thin-wall shader (docs/preview.md 'Subsurface')"),
     "maps.base_color": ("bake", _BAKED),
     "maps.normal": ("bake", _BAKED),
     "maps.roughness": ("bake", _BAKED),
