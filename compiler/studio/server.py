@@ -75,6 +75,9 @@ class Studio:
             self.root.rmdir()
 
 
+STUDIO = web.AppKey("studio", Studio)
+
+
 def static_folder() -> Path:
     return Path(str(resources.files("cnlmc.studio").joinpath("static")))
 
@@ -126,7 +129,7 @@ def refuse(studio: Studio, request: web.Request) -> tuple[int, str] | None:
 
 
 async def index(request: web.Request) -> web.StreamResponse:
-    studio: Studio = request.app["studio"]
+    studio: Studio = request.app[STUDIO]
     response = web.FileResponse(static_folder() / "index.html")
     if studio.token is not None:
         response.set_cookie(TOKEN_COOKIE, studio.token, httponly=True, samesite="Strict")
@@ -134,7 +137,7 @@ async def index(request: web.Request) -> web.StreamResponse:
 
 
 async def view_data(request: web.Request) -> web.StreamResponse:
-    studio: Studio = request.app["studio"]
+    studio: Studio = request.app[STUDIO]
     found = studio.view.static_asset(request.match_info["name"])
     if found is None:
         raise web.HTTPNotFound(reason="no such view data")
@@ -155,14 +158,14 @@ def session_file(studio: Studio, session_id: str, relative: str) -> Path:
 
 
 async def files(request: web.Request) -> web.StreamResponse:
-    studio: Studio = request.app["studio"]
+    studio: Studio = request.app[STUDIO]
     path = session_file(studio, request.match_info["session"], request.match_info["path"])
     headers = {"Content-Disposition": f'attachment; filename="{path.name}"'} if "download" in request.query else {}
     return web.FileResponse(path, headers=headers)
 
 
 async def ar_photo(request: web.Request) -> web.StreamResponse:
-    studio: Studio = request.app["studio"]
+    studio: Studio = request.app[STUDIO]
     session = studio.sessions.get(request.match_info["session"])
     if session is None:
         raise web.HTTPNotFound(reason="no such session")
@@ -178,7 +181,7 @@ async def ar_photo(request: web.Request) -> web.StreamResponse:
 
 
 async def websocket(request: web.Request) -> web.StreamResponse:
-    studio: Studio = request.app["studio"]
+    studio: Studio = request.app[STUDIO]
     socket = web.WebSocketResponse(max_msg_size=studio.settings.limits.max_message_bytes, heartbeat=30)
     await socket.prepare(request)
     session = studio.open_session()
@@ -211,7 +214,7 @@ def make_app(studio: Studio) -> web.Application:
     app = web.Application(
         middlewares=[security_middleware(studio)], client_max_size=studio.settings.limits.max_upload_bytes
     )
-    app["studio"] = studio
+    app[STUDIO] = studio
     app.router.add_get("/", index)
     app.router.add_get("/ws", websocket)
     app.router.add_get("/view-data/{name:.+}", view_data)
@@ -223,7 +226,7 @@ def make_app(studio: Studio) -> web.Application:
 
 
 async def _cleanup(app: web.Application) -> None:
-    app["studio"].close()
+    app[STUDIO].close()
 
 
 __all__ = ["ExportFailed", "Studio", "make_app"]

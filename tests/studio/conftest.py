@@ -51,7 +51,7 @@ class Server:
 
 
 def start_server(*args: str) -> Server:
-    """`cnlmc serve --port 0 ARGS` in its own process; returns once it printed its address."""
+    """`cnlmc serve --port 0 ARGS` in its own process; returns once it has said where it is."""
     env = {**os.environ, "PYTHONDONTWRITEBYTECODE": "1", "PYTHONUNBUFFERED": "1"}
     process = subprocess.Popen(
         [sys.executable, "-m", "cnlmc", "serve", "--port", "0", *args],
@@ -68,8 +68,9 @@ def start_server(*args: str) -> Server:
         if not line:
             break
         said.append(line)
-        if line.startswith("cnlmc studio: "):
-            return Server(process, line.split(": ", 1)[1].strip(), said)
+        if line.strip() == "stop it with Ctrl-C":  # the last line of the announcement
+            url = next(s for s in said if s.startswith("cnlmc studio: ")).split(": ", 1)[1].strip()
+            return Server(process, url, said)
     process.kill()
     raise AssertionError("cnlmc serve did not start:\n" + "".join(said) + (process.stdout.read() or ""))
 
