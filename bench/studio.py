@@ -1,0 +1,171 @@
+"""The studio's live view in headless Chromium (WebGL2 on SwiftShader): keystroke -> updated frame
+latency, and the frame time at 512x512.
+
+    .venv/bin/python bench/studio.py [--edits 12] [--frames 7] [--through studio|view]
+
+Latency: through the studio's own page (`cnlmc serve`, the CodeMirror editor, the WebSocket
+edit, the server's compile and `material_payload`, the page's debounce, MaterialView.show and
+its frame) by default; `--through view` (or when `cnlmc serve` does not start) through
+`material_payload` and the view's test page (tests/studio/view_page.html). Each edit replaces
+the phrase with the next of its cycle (one input event, as a paste or an accepted completion);
+the latency is from just before the edit to the "frame" event of the updated picture. The
+first cycle includes what is made once per content (albedo tables, baked maps, the environment
+prefiltered at a new alpha, a program per shader); `cold` lists it. Goal (issue #17): p99 <= 150 ms
+untextured, <= 400 ms textured.
+
+Frame time: MaterialView.draw() at 512x512 on the view's test page, median of --frames after a
+warm-up, per material. Prints the load average: on a shared machine the numbers are inflated.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+from tests.studio.view_server import CHROMIUM, CHROMIUM_ARGS, ViewServer  # noqa: E402
+
+#: kind -> the phrases an edit cycles through (each edit changes the material, not its shader)
+CYCLES = {
+    "untextured": ("red plastic", "blue plastic", "green plastic"),
+    "textured": ("oak", "dark oak", "light oak"),
+    "glass": ("clear glass", "blue glass", "green glass"),
+}
+FRAME_LISTENER = """(canvas) => { window.bench_frames = [];
+    document.querySelector(canvas).addEventListener("frame", () => window.bench_frames.push(performance.now())); }"""
+
+
+def percentile(values: list[float], q: float) -> float:
+    return float(np.percentile(np.asarray(values, np.float64), q)) if values else float("nan")
+
+
+def start_studio() -> tuple[subprocess.Popen[str], str] | None:
+    """`cnlmc serve --port 0` on an empty document; (process, url) or None when it does not start."""
+    env = {**os.environ, "PYTHONDONTWRITEBYTECODE": "1", "PYTHONUNBUFFERED": "1"}
+    cmd = [sys.executable, "-m", "cnlmc", "serve", "--port", "0"]
+    process = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
+    assert process.stdout is not None
+    deadline = time.monotonic() + 90
+    while time.monotonic() < deadline:
+        line = process.stdout.readline()
+        if not line:
+            break
+        if line.startswith("cnlmc studio: "):
+            return process, line.split(": ", 1)[1].strip()
+    process.kill()
+    return None
+
+
+class StudioPage:
+    """Edits through the studio's page: select all in the editor, insert the phrase."""
+
+    canvas = "#view"
+
+    def __init__(self, page: Any, url: str) -> None:
+        self.page = page
+        page.goto(url)
+        page.wait_for_selector("body[data-ready='1']", state="attached", timeout=120_000)
+        page.evaluate(FRAME_LISTENER, self.canvas)
+
+    def edit(self, phrase: str) -> float:
+        page = self.page
+        shown = int(page.evaluate("Number(document.body.dataset.shown)"))
+        page.click(".cm-content")
+        page.keyboard.press("Control+A")
+        start = page.evaluate("performance.now()")
+        page.keyboard.insert_text(phrase + "\n")
+        # (a CSS wait: the page's Content-Security-Policy forbids evaluating strings)
+        page.wait_for_selector(f"body:not([data-shown='{shown}'])", state="attached", timeout=120_000)
+        return float(page.evaluate(f"Math.max(...window.bench_frames.filter((t) => t > {start}))")) - start
+
+
+class ViewPage:
+    """Edits through material_payload and the view's test page (no editor, no debounce)."""
+
+    canvas = "#view"
+
+    def __init__(self, page: Any, url: str) -> None:
+        self.page = page
+        page.goto(url + "/page.html?size=512")
+        page.evaluate("window.viewReady")
+        page.evaluate(FRAME_LISTENER, self.canvas)
+
+    def edit(self, phrase: str) -> float:
+        start = self.page.evaluate("performance.now()")
+        self.page.evaluate("(p) => window.showPhrase(p)", phrase)
+        return float(self.page.evaluate(f"Math.max(...window.bench_frames.filter((t) => t > {start}))")) - start
+
+
+def latencies(driver: Any, edits: int) -> dict[str, dict[str, Any]]:
+    out = {}
+    for kind, cycle in CYCLES.items():
+        driver.edit(cycle[-1])  # the shader compiled, the page settled
+        times = [driver.edit(cycle[i % len(cycle)]) for i in range(edits)]
+        out[kind] = {"cold": times[: len(cycle)], "warm": times[len(cycle) :]}
+    return out
+
+
+def frame_times(page: Any, frames: int) -> dict[str, float]:
+    out = {}
+    for kind, cycle in CYCLES.items():
+        page.evaluate("(p) => window.showPhrase(p)", cycle[0])
+        page.evaluate("window.view.draw()")
+        out[kind] = float(np.median([page.evaluate("window.view.draw()") for _ in range(frames)]))
+    return out
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--edits", type=int, default=12)
+    parser.add_argument("--frames", type=int, default=7)
+    parser.add_argument("--through", choices=("studio", "view"), default="studio")
+    args = parser.parse_args()
+    from playwright.sync_api import sync_playwright
+
+    print(f"load average before: {' '.join(f'{x:.1f}' for x in os.getloadavg())} ({os.cpu_count()} cores)")
+    studio = start_studio() if args.through == "studio" else None
+    with ViewServer(Path(tempfile.mkdtemp(prefix="cnlmc-bench-studio-"))) as server, sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        page = browser.new_page(viewport={"width": 1280, "height": 860})
+        if studio is not None:
+            through = "the studio's page (cnlmc serve: editor -> WebSocket -> compile -> payload -> view)"
+            driver: Any = StudioPage(page, studio[1])
+        else:
+            through = "material_payload + the view's test page (no editor)"
+            driver = ViewPage(page, server.url)
+        measured = latencies(driver, args.edits)
+        view_page = browser.new_page()
+        view_page.goto(server.url + "/page.html?size=512")
+        view_page.evaluate("window.viewReady")
+        frames = frame_times(view_page, args.frames)
+        browser.close()
+    if studio is not None:
+        studio[0].terminate()
+        studio[0].wait(20)
+    print(f"keystroke -> updated frame, through {through}:")
+    goals = {"untextured": 150.0, "textured": 400.0, "glass": 150.0}
+    for kind, m in measured.items():
+        warm = m["warm"]
+        p50, p99 = percentile(warm, 50), percentile(warm, 99)
+        cold = ", ".join(f"{t:.0f}" for t in m["cold"])
+        print(
+            f"  {kind:11s} p50 {p50:7.0f} ms  p99 {p99:7.0f} ms  (n={len(warm)}; goal p99 <= {goals[kind]:.0f} ms: "
+            f"{'met' if p99 <= goals[kind] else 'not met'})  first cycle: {cold} ms"
+        )
+    print("frame time at 512x512 on SwiftShader (MaterialView.draw, median):")
+    for kind, ms in frames.items():
+        print(f"  {kind:11s} {ms:7.1f} ms  ({CYCLES[kind][0]})")
+    print(f"load average after: {' '.join(f'{x:.1f}' for x in os.getloadavg())}")
+
+
+if __name__ == "__main__":
+    main()
