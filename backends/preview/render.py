@@ -26,6 +26,7 @@ from .object_pass import draw_object
 from .resources import Resources
 from .scene import Scene, default_scene, scene_mesh
 from .shader import MaterialLike, MaterialShader, as_material, material_shader, shader_key, shader_options
+from .subsurface import boundary_material
 from .targets import Rect, Targets, grown, read_image, screen_rect, targets
 from .tiers import DEFAULT_TIER, Tier, parse_tier
 from .tonemap import tonemap
@@ -82,7 +83,7 @@ class Renderer:
     # -- what a frame is made from
     def shader(self, material: MaterialLike, glsl_options: Mapping[str, Any] | None = None) -> MaterialShader:
         """The material's shader (GLSL library and plan), made once per content and options."""
-        typed, options = as_material(material), self.glsl_options(glsl_options)
+        typed, options = boundary_material(as_material(material)), self.glsl_options(glsl_options)
         key = ("shader", *shader_key(typed, options))
         return self.resources.once(key, lambda: material_shader(typed, options, self.resources.shader_writer))
 
@@ -116,7 +117,7 @@ class Renderer:
         """Draw into the targets (no read-back); `overlay(renderer, scene)` draws extra geometry."""
         self.resources.make_current()  # ours must be the current context (another may have been made current)
         tier = parse_tier(tier) if isinstance(tier, str) else tier
-        material = as_material(material)
+        material = boundary_material(as_material(material))  # a translucent body: its boundary (subsurface.py)
         shader = self.shader(material, glsl_options)
         res = env_resources(self.resources, scene.env)
         t = targets(self.resources, self.width, self.height, self.msaa)
@@ -167,7 +168,7 @@ class Renderer:
         """Render one material; returns the sRGB image (top row first) and the frame time."""
         scene = scene or self.scene(mesh, env)
         tier = parse_tier(tier) if isinstance(tier, str) else tier
-        material = as_material(material)
+        material = boundary_material(as_material(material))  # a translucent body: its boundary (subsurface.py)
         shader = self.shader(material, glsl_options)
         warm_key = (shader.key, tier.name, scene.mesh.key, scene.env.content_key, self.width, self.height)
         if self.resources.first_use(warm_key):  # the first frame compiles and uploads: drawn once untimed
@@ -190,7 +191,7 @@ class Renderer:
         repeats: int = 5,
     ) -> float:
         """Median frame time (ms) over `repeats` frames, after one warm-up frame."""
-        material = as_material(material)
+        material = boundary_material(as_material(material))  # a translucent body: its boundary (subsurface.py)
         self.draw(scene, material, tier, glsl_options)
         self.ctx.finish()
         times = []
