@@ -107,8 +107,6 @@ def draw_object(
         gl.set_uniform(prog, name, value)
     for name, value in subsurface_uniforms(material, scene.mesh, model).items():
         gl.set_uniform(prog, name, value)
-    if shader.plan.subsurface:  # the boundary reflects, the body scatters: no diffuse base lobe
-        gl.set_uniform(prog, "cnlm_base_color", (0.0, 0.0, 0.0))
     ctx.enable(moderngl.DEPTH_TEST)
     if scene.mesh.closed:
         ctx.enable(moderngl.CULL_FACE)
