@@ -9,6 +9,7 @@ channel, metres), `anisotropy` and `thickness` (metres, thin walls)."""
 
 from __future__ import annotations
 
+import dataclasses
 import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -17,6 +18,8 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
+from cnlmc.material import Material
 
 from .glass import bounding_sphere
 from .mesh import Mesh
@@ -87,6 +90,18 @@ def has_subsurface(material: Any) -> bool:
     return subsurface_of(material) is not None
 
 
+def boundary_material(material: Material) -> Material:
+    """What the preview draws with cnlm_bsdf for a translucent material: its boundary alone, the
+    base colour black and without a base-colour map (the body's light is the subsurface term;
+    the IR's base_color is the colour the eye sees, for exports without subsurface). Any other
+    material is returned as it is."""
+    if not has_subsurface(material):
+        return material
+    params = dataclasses.replace(material.params, base_color=(0.0, 0.0, 0.0))
+    maps = {role: ref for role, ref in material.maps.items() if role != "base_color"}
+    return dataclasses.replace(material, params=params, maps=maps)
+
+
 def metres_per_unit() -> float:
     """Metres one scene unit spans: the Mitsuba export's (backends/exchange/mitsuba_subsurface.py
     METRES_PER_UNIT, a unit sphere is a 10 cm ball), so the preview and its reference agree."""
@@ -126,7 +141,8 @@ def subsurface_uniforms(material: Any, mesh: Mesh, model: np.ndarray) -> dict[st
     reflect, through = sheet_optics(body) if body.thin else (np.clip(body.color, 0.0, 1.0), np.zeros(3))
     return {
         "pv_sss_albedo": reflect,
-        "pv_sss_wall_through": through,
+        # a closed thin-walled shell (a lantern): the light from behind crosses the far wall first
+        "pv_sss_wall_through": through * (through if mesh.closed else 1.0),
         "pv_sss_mfp": np.maximum(np.asarray(body.radius) / per_unit * scale, 1e-6),
         "pv_sss_thin": int(body.thin),
         "pv_sss_centre": model[:3, :3] @ centre + model[:3, 3],
