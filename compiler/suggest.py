@@ -10,7 +10,7 @@ far-fetched look-alike (pewter -> water, beech -> bleach: 2-3 edits on 5-7 lette
 from __future__ import annotations
 
 from bisect import bisect_left
-from collections import Counter
+from collections import Counter, OrderedDict
 from collections.abc import Iterable, Mapping, Sequence
 from functools import lru_cache
 from importlib import resources
@@ -19,6 +19,10 @@ from types import MappingProxyType
 from typing import Any
 
 __all__ = ["FormIndex", "allowed_edits", "teaching"]
+
+#: Words whose typos an index remembers (the tagger and then the word's slot ask for the same word;
+#: our choice: a few dozen lines of words).
+RECENT_WORDS = 256
 
 
 @lru_cache(maxsize=1)
@@ -65,7 +69,8 @@ class FormIndex:
         self._lengths = [len(form) for form in self.forms]
         self._one_edit_longest = _longest_word_with_edits(1) + 1
         self._by_deletion: dict[str, list[int]] | None = None
-        self._by_pair: dict[tuple[str, int], list[int]] | None = None
+        self._by_pair: dict[str, dict[int, list[int]]] | None = None
+        self._recent: OrderedDict[str, list[tuple[int, int]]] = OrderedDict()
 
     def closest(self, word: str, categories: Iterable[str], limit: int, scan: bool = False) -> list[str]:
         """The forms of `categories` that `word` may stand for, best first: fewest edits, then
@@ -87,6 +92,15 @@ class FormIndex:
 
     def _typos(self, low: str, wanted: frozenset[str]) -> list[tuple[int, str]]:
         """(edits, form) of every form of `wanted` within allowed_edits(low) edits of `low`."""
+        typos = self._recent.get(low)
+        if typos is None:
+            typos = self._recent[low] = self._all_typos(low)
+            if len(self._recent) > RECENT_WORDS:
+                self._recent.popitem(last=False)
+        return [(edits, self.forms[i]) for edits, i in typos if not wanted.isdisjoint(self._categories[i])]
+
+    def _all_typos(self, low: str) -> list[tuple[int, int]]:
+        """(edits, form number) of every form within allowed_edits(low) edits of `low`."""
         edits = allowed_edits(low)
         if edits == 0:
             return []
@@ -94,14 +108,14 @@ class FormIndex:
             found = self._one_deletion_candidates(low)
         else:
             found = self._pair_candidates(low, edits)
-        candidates = [self.forms[i] for i in found if not wanted.isdisjoint(self._categories[i])]
-        return _measured(low, candidates, edits)
+        numbers = list(found)
+        return [(d, numbers[at]) for d, at in _measured(low, [self.forms[i] for i in numbers], edits)]
 
     def _scanned(self, low: str, wanted: frozenset[str]) -> list[tuple[int, str]]:
         candidates = [
             form for form, categories in zip(self.forms, self._categories) if not wanted.isdisjoint(categories)
         ]
-        return _measured(low, candidates, allowed_edits(low))
+        return [(d, candidates[at]) for d, at in _measured(low, candidates, allowed_edits(low))]
 
     def _one_deletion_candidates(self, low: str) -> set[int]:
         if self._by_deletion is None:
@@ -118,12 +132,11 @@ class FormIndex:
             return {i for i, length in enumerate(self._lengths) if shortest <= length <= longest}
         if self._by_pair is None:
             self._by_pair = _pair_index(self.forms)
-        by_pair, none = self._by_pair, ()
-        near = [
-            by_pair.get((low[place : place + 2], at), none)
-            for place in range(len(low) - 1)
-            for at in range(max(0, place - edits), place + edits + 1)
-        ]
+        near = []
+        for place in range(len(low) - 1):
+            places = self._by_pair.get(low[place : place + 2])
+            if places is not None:  # a pair no form has (most of a made-up word's) costs one look-up
+                near += [places[at] for at in range(max(0, place - edits), place + edits + 1) if at in places]
         if needed == 1:
             found: set[int] = set().union(*near)
         else:  # a form with a pair twice near one place counts twice: a few more candidates, none lost
@@ -156,14 +169,15 @@ class FormIndex:
         return found
 
 
-def _measured(low: str, candidates: list[str], edits: int) -> list[tuple[int, str]]:
+def _measured(low: str, candidates: list[str], edits: int) -> list[tuple[int, int]]:
+    """(edits, place in `candidates`) of the candidates within `edits` edits of `low`."""
     if not candidates:
         return []
     from rapidfuzz import process  # only needed when a word is unknown
     from rapidfuzz.distance import OSA
 
     typos = process.extract(low, candidates, scorer=OSA.distance, score_cutoff=edits, limit=None)
-    return [(int(distance), form) for form, distance, _i in typos]
+    return [(int(distance), at) for _form, distance, at in typos]
 
 
 def _longest_word_with_edits(edits: int) -> int:
@@ -186,12 +200,12 @@ def _deletion_index(forms: Sequence[str], longest: int) -> dict[str, list[int]]:
     return index
 
 
-def _pair_index(forms: Sequence[str]) -> dict[tuple[str, int], list[int]]:
-    """(two neighbouring letters, place of the first) -> the forms that have them there."""
-    index: dict[tuple[str, int], list[int]] = {}
+def _pair_index(forms: Sequence[str]) -> dict[str, dict[int, list[int]]]:
+    """Two neighbouring letters -> the place of the first -> the forms that have them there."""
+    index: dict[str, dict[int, list[int]]] = {}
     for i, form in enumerate(forms):
         for place in range(len(form) - 1):
-            index.setdefault((form[place : place + 2], place), []).append(i)
+            index.setdefault(form[place : place + 2], {}).setdefault(place, []).append(i)
     return index
 
 

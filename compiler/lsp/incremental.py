@@ -1,6 +1,10 @@
 """Incremental analysis: the document is cut into blocks (a material line and the refinement
 lines below it), each block is compiled by `compile_source` and cached by its text.
 
+Which lines are materials is found by compiling each line alone, kept in the same cache: a
+material line with no refinement below it (the usual case, and every line of a document of
+unknown words) is its own block, so each line is parsed once.
+
 The compiler does all the language work; this module only decides what to recompile. A block
 compiles exactly as it does inside the whole document because a line's parse depends on that
 line alone and a refinement attaches to the material line above it. Diagnostics come back
@@ -20,7 +24,6 @@ from typing import Any, Generic, TypeVar
 from .. import ast
 from ..api import Result, compile_source
 from ..diagnostics import Diagnostic
-from ..document import parse_document
 from ..lexicon import Lexicon
 from ..spans import Span
 from .positions import LineIndex
@@ -30,11 +33,9 @@ Node = TypeVar("Node")
 Value = TypeVar("Value")
 KeepGoing = Callable[[], bool]  # False once a newer edit made the analysis stale
 
-#: What the analyzer keeps between edits (blocks and line kinds by their text), at most.
-MAX_CACHED_BLOCKS = 20000
+#: What the analyzer keeps between edits (blocks, lines among them, by their text), at most.
+MAX_CACHED_BLOCKS = 50000
 MAX_CACHED_BLOCK_CHARS = 4_000_000
-MAX_CACHED_LINES = 50000
-MAX_CACHED_LINE_CHARS = 2_000_000
 
 
 class Cancelled(Exception):
@@ -231,22 +232,18 @@ class Analyzer:
     def __init__(self, lexicon: Lexicon, filename: str = "<lsp>") -> None:
         self.lexicon = lexicon
         self.filename = filename
-        self._kinds: TextCache[str] = TextCache(MAX_CACHED_LINES, MAX_CACHED_LINE_CHARS)
         self._blocks: TextCache[BlockResult] = TextCache(MAX_CACHED_BLOCKS, MAX_CACHED_BLOCK_CHARS)
 
     def line_kind(self, text: str) -> str | None:
-        """'material', 'refinement' or None (blank, comment, or a line that does not parse)."""
-        if not text.strip():
+        """'material', 'refinement' or None (blank, comment, or a line that does not parse), from
+        the line compiled alone (kept: a material line followed by another is that block)."""
+        stripped = text.lstrip()
+        if not stripped or stripped.startswith("#"):
             return None
-        known = self._kinds.get(text)
-        if known is not None:
-            return None if known == "other" else known
-        items = parse_document(text, self.lexicon, self.filename).items
-        kind = "other"
-        if items:
-            kind = "material" if isinstance(items[0], ast.Material) else "refinement"
-        self._kinds.put(text, kind)
-        return None if kind == "other" else kind
+        items = self.compile_block(text).items
+        if not items:
+            return None
+        return "material" if isinstance(items[0], ast.Material) else "refinement"
 
     def compile_block(self, text: str) -> BlockResult:
         found = self._blocks.get(text)
@@ -290,10 +287,9 @@ class Analyzer:
         """(first line, line count) of each block: a new block starts at every material line."""
         starts = [0]
         for number, line in enumerate(lines):
-            if number % 64 == 0:
-                yield
             if number and self.line_kind(line) == "material":
                 starts.append(number)
+            yield
         ends = starts[1:] + [len(lines)]
         return [(a, b - a) for a, b in zip(starts, ends)]
 
@@ -305,13 +301,12 @@ class Analyzer:
                 snapshot.text[first : snapshot.index.line_end_offset(block.first_line + block.line_count - 1)]
             )
         for line in snapshot.index.lines:
-            self._kinds.discard(line)
+            self._blocks.discard(line)
 
     def clear(self) -> None:
         """Drop everything learnt from documents (when none is open): the blocks and lines kept
         here and what the lexicon memoised about their words (its tagger's word memo, made again
-        on first use, and its suggestions)."""
-        self._kinds.clear()
+        on first use, and its suggestions; not its suggestion index, made once per lexicon)."""
         self._blocks.clear()
         self.lexicon.caches.tagger = None
         self.lexicon.caches.suggestions.clear()

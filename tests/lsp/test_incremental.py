@@ -33,6 +33,9 @@ LINES = [
     "gold plated steel",
     "very",
     "mirror polished brass",
+    "zorblat quimble",
+    "darker zorblat",
+    "blorpy steel",
 ]
 LEXICON = lexicon_for()
 ANALYZER = Analyzer(LEXICON, "test.cnl")

@@ -74,13 +74,13 @@ def test_the_analyzer_forgets_a_closed_document():
     analyzer = Analyzer(LEXICON)
     kept = analyzer.analyse("hull: blue plastic\ndarker\nsteel")
     snap = analyzer.analyse(unknown_words(1, 50) + "\nred steel\nbleu")
-    blocks, lines = len(analyzer._blocks), len(analyzer._kinds)
+    blocks = len(analyzer._blocks)
     analyzer.forget(snap)
-    assert len(analyzer._blocks) == blocks - len(snap.blocks)
-    assert len(analyzer._kinds) < lines
+    assert len(analyzer._blocks) <= blocks - len(snap.blocks)
+    assert all(analyzer._blocks.get(line) is None for line in snap.index.lines)  # lines compiled alone too
     assert analyzer.analyse(kept.text).blocks[0].result is kept.blocks[0].result  # another document's blocks stay
     analyzer.clear()
-    assert len(analyzer._blocks) == len(analyzer._kinds) == 0
+    assert len(analyzer._blocks) == 0
 
 
 def test_text_cache_is_bounded_in_entries_and_characters():
