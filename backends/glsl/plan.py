@@ -15,6 +15,8 @@ from typing import Any
 import numpy as np
 
 from cnlmc.bsdf import coat_alpha, conductor_fresnel, f0_conductor, fresnel_average, material_alpha
+from cnlmc.bsdf.flakes import flake_alpha, has_flakes
+from cnlmc.bsdf.sheen import has_sheen, sheen_alpha, sheen_row
 from cnlmc.material import Coat, Material, Params
 
 from .options import GlslOptions
@@ -100,6 +102,8 @@ class Plan:
     snippets: list = field(default_factory=list)
     uniforms: list = field(default_factory=list)
     samplers: list = field(default_factory=list)
+    sheen: bool = False  # the Charlie sheen over the base (snippets/sheen.glsl)
+    flakes: bool = False  # the flake lobe mixed into the base under the coat (snippets/flakes.glsl)
 
     @property
     def microfacet(self) -> bool:
@@ -150,6 +154,8 @@ def make_plan(material: Material, options: GlslOptions) -> Plan:
         multiscatter=options.multiscatter and base == "conductor",
         maps=tuple(role for role in SHADER_ROLES if role in material.maps),
         alpha_convention=material.params.alpha_convention,
+        sheen=has_sheen(material),
+        flakes=has_flakes(material),
     )
     plan.snippets = snippet_names(plan)
     plan.uniforms = uniforms_for(plan, material)
@@ -182,6 +188,10 @@ def snippet_names(plan: Plan) -> list[str]:
             names.append("coat_absorption")
     if "normal" in plan.maps:
         names.append("normal_map")
+    if plan.flakes:
+        names += ["ggx_isotropic", "fresnel_schlick", "flakes"]
+    if plan.sheen:
+        names.append("sheen")
     return list(dict.fromkeys(names))
 
 
@@ -258,7 +268,23 @@ UNIFORM_TABLE: dict[str, tuple[str | None, Callable[[Plan], bool], UniformValue]
         lambda m, p: float(_coat(m).thickness),
     ),
     "cnlm_ms_favg": ("vec3", lambda p: p.multiscatter, lambda m, p: _multiscatter_favg(m, p.fresnel or "exact")),
+    # layers (zero without them: the uber form draws them always, a zero layer is no layer)
+    "cnlm_flake_color": ("vec3", lambda p: p.flakes, lambda m, p: _rgb(m.params.flake_color or 0.0)),
+    "cnlm_flake_density": ("float", lambda p: p.flakes, lambda m, p: _flake_density(m)),
+    "cnlm_flake_alpha": ("float", lambda p: p.flakes, lambda m, p: float(flake_alpha(m.params.flake_roughness))),
+    "cnlm_sheen_color": ("vec3", lambda p: p.sheen, lambda m, p: _rgb(m.params.sheen_color or 0.0)),
+    "cnlm_sheen_alpha": ("float", lambda p: p.sheen, lambda m, p: _sheen_alpha(m)),
+    # the white sheen's albedo row at that alpha (cnlmc.bsdf.sheen.sheen_row): re-emit to change alpha
+    "cnlm_sheen_albedo": ("float[32]", lambda p: p.sheen, lambda m, p: [float(e) for e in sheen_row(_sheen_alpha(m))]),
 }
+
+
+def _flake_density(material: Material) -> float:
+    return float(material.params.flake_density) if has_flakes(material) else 0.0
+
+
+def _sheen_alpha(material: Material) -> float:
+    return float(sheen_alpha(material.params.sheen_roughness))
 
 
 def uniforms_for(plan: Plan, material: Material) -> list[Uniform]:
@@ -313,6 +339,8 @@ UBER_SNIPPETS = (
     "coat_absorption",
     "map_bound",
     "normal_map",
+    "flakes",
+    "sheen",
 )
 
 
@@ -340,6 +368,8 @@ def make_uber_plan(material: Material, options: GlslOptions) -> Plan:
         maps=SHADER_ROLES,
         alpha_convention=plan.alpha_convention,
         snippets=list(UBER_SNIPPETS),
+        sheen=True,
+        flakes=True,
     )
     selectors = [
         Uniform(name, "int", codes[getattr(plan, attribute)]) for name, (attribute, codes) in UBER_SELECTORS.items()

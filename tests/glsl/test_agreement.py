@@ -10,7 +10,7 @@ import json
 import numpy as np
 import pytest
 
-from cnlmc.bsdf import evaluate
+from cnlmc.bsdf.flakes import evaluate_full as evaluate  # the complete BSDF: with a sheen or flakes (#15)
 
 from .conftest import emit_material, material_of
 from .harness import Evaluator, direction_pairs, relative_error

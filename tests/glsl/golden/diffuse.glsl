@@ -13,9 +13,15 @@
 // uniforms: (values also in the .glsl.json sidecar)
 //   vec3 cnlm_base_color = vec3(0.3, 0.02, 0.05)
 //   float cnlm_diffuse_roughness = 0.6
+//   vec3 cnlm_sheen_color = vec3(0.8, 0.104959, 0.208678)
+//   float cnlm_sheen_alpha = 0.25
+//   float[32] cnlm_sheen_albedo = float[32](0.6546593153718132, 0.7456658763806261, 0.7995807704742705, 0.8033368098459464, 0.7838169928037539, 0.7528096445002705, 0.7161969545786105, 0.6771269031989761, 0.6373407882601665, 0.5978089224004888, 0.5590627206901349, 0.5213790178358942, 0.48488692214554674, 0.44963170762176546, 0.4156138313032304, 0.38281303708665937, 0.3512032327611132, 0.3207614777561558, 0.29147308808722827, 0.2633340954397913, 0.23635184796157768, 0.21054427896371308, 0.1859411635824118, 0.16301946031844275, 0.14185704728718615, 0.12216211561680333, 0.10372124161515671, 0.08638743665838025, 0.07007062510493992, 0.05472912937227929, 0.04036083417541074, 0.026982025030994575)
 // samplers: none
 uniform vec3 cnlm_base_color = vec3(0.3, 0.02, 0.05);
 uniform float cnlm_diffuse_roughness = 0.6;
+uniform vec3 cnlm_sheen_color = vec3(0.8, 0.104959, 0.208678);
+uniform float cnlm_sheen_alpha = 0.25;
+uniform float[32] cnlm_sheen_albedo = float[32](0.6546593153718132, 0.7456658763806261, 0.7995807704742705, 0.8033368098459464, 0.7838169928037539, 0.7528096445002705, 0.7161969545786105, 0.6771269031989761, 0.6373407882601665, 0.5978089224004888, 0.5590627206901349, 0.5213790178358942, 0.48488692214554674, 0.44963170762176546, 0.4156138313032304, 0.38281303708665937, 0.3512032327611132, 0.3207614777561558, 0.29147308808722827, 0.2633340954397913, 0.23635184796157768, 0.21054427896371308, 0.1859411635824118, 0.16301946031844275, 0.14185704728718615, 0.12216211561680333, 0.10372124161515671, 0.08638743665838025, 0.07007062510493992, 0.05472912937227929, 0.04036083417541074, 0.026982025030994575);
 // cnlm common: constants and helpers of the local shading frame (n = +z, t = +x).
 const float CNLM_PI = 3.14159265358979;
 // cos(theta) below this counts as on/below the horizon: every lobe is 0 there.
@@ -59,6 +65,44 @@ vec3 cnlm_oren_nayar(vec3 wo, vec3 wi, vec3 albedo, float sigma) {
     return albedo * ((a + b * angular) / CNLM_PI);
 }
 
+// The Charlie sheen over the base (Estevez & Kulla 2017; cnlmc.bsdf.sheen, docs/bsdf.md "Sheen"):
+// f = cnlm_sheen_color * D V + f_base * (1 - s max(E(mu_o), E(mu_i))), s = max(cnlm_sheen_color),
+// D(h) = (2 + 1/a) sin^(1/a) theta_h / 2pi, V = 1 / ((1 + L(mu_o) + L(mu_i)) 4 mu_o mu_i) with the
+// paper's fitted Lambda; E the white sheen's albedo at the material's alpha (cnlm_sheen_albedo,
+// the reference's row: 32 nodes uniform in sqrt mu).
+float cnlm_charlie_l(float x, float a) {
+    float t = (1.0 - a) * (1.0 - a);
+    float ca = mix(21.5473, 25.3245, t), cb = mix(3.82987, 3.32435, t), cc = mix(0.19823, 0.16801, t);
+    float cd = mix(-1.97760, -1.27393, t), ce = mix(-4.32054, -4.85967, t);
+    return ca / (1.0 + cb * pow(x, cc)) + cd * x + ce;
+}
+
+float cnlm_charlie_lambda(float mu, float a) {
+    float e = mu < 0.5 ? cnlm_charlie_l(mu, a) : 2.0 * cnlm_charlie_l(0.5, a) - cnlm_charlie_l(1.0 - mu, a);
+    return exp(min(e, 80.0));
+}
+
+float cnlm_sheen_dv(vec3 wo, vec3 wi, float a) {
+    if (wo.z < CNLM_COS_EPS || wi.z < CNLM_COS_EPS) return 0.0;
+    vec3 h = cnlm_half_vector(wo, wi);
+    float inv = 1.0 / a;
+    float d = (2.0 + inv) * pow(max(1.0 - h.z * h.z, 0.0), 0.5 * inv) / (2.0 * CNLM_PI);
+    float g2 = 1.0 / (1.0 + cnlm_charlie_lambda(wo.z, a) + cnlm_charlie_lambda(wi.z, a));
+    return d * g2 / (4.0 * wo.z * wi.z);
+}
+
+float cnlm_sheen_e(float mu) {
+    float x = sqrt(clamp(mu, 0.0, 1.0)) * 31.0;
+    int i = min(int(floor(x)), 30);
+    return mix(cnlm_sheen_albedo[i], cnlm_sheen_albedo[i + 1], x - float(i));
+}
+
+vec3 cnlm_sheen_layer(vec3 wo, vec3 wi, vec3 base) {
+    float s = max(cnlm_sheen_color.r, max(cnlm_sheen_color.g, cnlm_sheen_color.b));
+    float e = max(cnlm_sheen_e(wo.z), cnlm_sheen_e(wi.z));
+    return cnlm_sheen_color * cnlm_sheen_dv(wo, wi, cnlm_sheen_alpha) + base * max(1.0 - s * e, 0.0);
+}
+
 // ---- material velvet: diffuse + oren_nayar ----
 
 vec3 cnlm_surface_albedo(vec2 uv) {
@@ -82,6 +126,7 @@ vec3 cnlm_bsdf_local(vec3 wo, vec3 wi, vec2 uv) {
     vec3 spec, diff;
     cnlm_base(wo, wi, albedo, 1.0, spec, diff);
     vec3 f = spec + diff;
+    f = cnlm_sheen_layer(wo, wi, f);
     return f;
 }
 
