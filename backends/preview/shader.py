@@ -105,9 +105,17 @@ def shader_key(material: Material, options: GlslOptions) -> tuple[str, str, Glsl
     return material.key, material.name, options
 
 
+def without_sheen(material: Material) -> Material:
+    """The material the preview takes the GLSL library of: its sheen left out, because the preview
+    draws the sheen itself (sheen.glsl.j2: the key light exactly, the environment by tier)."""
+    if material.params.sheen_color is None:
+        return material
+    return dataclasses.replace(material, params=dataclasses.replace(material.params, sheen_color=None))
+
+
 def material_shader(material: Material, options: GlslOptions, writer: ShaderWriter) -> MaterialShader:
     """The library form of one material and its plans, made anew (Renderer.shader keeps them)."""
-    library, plan = library_source(material, options, writer)
+    library, plan = library_source(without_sheen(material), options, writer)
     specialized = plan if options.specialize else make_plan(material, options)
     notes: list = []
     check_material(notes, PREVIEW, CAPABILITIES, material)  # the preview's own table, not the GLSL export's
