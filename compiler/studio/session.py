@@ -25,6 +25,16 @@ from .settings import Settings
 JSONDict = dict[str, Any]
 
 
+#: a history step's label is its document's last line, cut to this many characters
+LABEL_CHARS = 24
+
+
+def last_line(text: str) -> str:
+    lines = [line.strip() for line in text.splitlines() if line.strip()]
+    label = lines[-1] if lines else ""
+    return label if len(label) <= LABEL_CHARS else label[: LABEL_CHARS - 1] + "…"
+
+
 class TooLarge(ValueError):
     """A document over the size limit: the message says the limit."""
 
@@ -51,7 +61,7 @@ class StudioSession:
         if len(text.encode("utf-8", "surrogatepass")) > limit:
             raise TooLarge(f"the document is over the studio's limit of {limit // 1024} KiB: split it into files")
 
-    def edit(self, text: str, label: str = "edit") -> JSONDict:
+    def edit(self, text: str, label: str | None = None) -> JSONDict:
         """Analyse `text` (the editor's whole document); a result that compiles to different
         materials becomes a history step. Returns what the page shows."""
         self.check_size(text)
@@ -59,7 +69,7 @@ class StudioSession:
         features = self.engine.features(text)
         materials = self.materials()
         ok = bool(materials) and not any(d["severity"] == 1 for d in features["diagnostics"])
-        recorded = ok and self.history.push(Step(text, materials, label))
+        recorded = ok and self.history.push(Step(text, materials, label or last_line(text)))
         return {**features, **self.picture(materials, ok), "ok": ok, "recorded": recorded}
 
     def materials(self) -> list[JSONDict]:
