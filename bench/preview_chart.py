@@ -132,6 +132,8 @@ def run(size: int, ref_spp: int, quick: bool, out_csv: Path, out_png: Path | Non
         writer = csv.DictWriter(f, ["material", "method", "ms", "ms512", "flip", "rmse"])
         writer.writeheader()
         for label, material in mats.items():
+            if material["model"].get("subsurface"):  # the translucent class: bench/preview_chart_translucent.py
+                continue
             scene = default_scene("sphere", "studio", (size, size))
             scene.background = "transparent"
             big = default_scene("sphere", "studio", (TIMING_SIZE, TIMING_SIZE))
@@ -221,6 +223,8 @@ REALTIME = ("analytic", "splitsum")
 
 def material_class(material: dict) -> str:
     model = material["model"]
+    if model.get("subsurface"):
+        return "translucent"
     if model.get("coat"):
         return "coated"
     if model.get("anisotropic"):
@@ -430,7 +434,14 @@ def main(argv=None) -> int:
     parser.add_argument("--failures-only", action="store_true", help="only the failure cases")
     parser.add_argument("--skip-failures", action="store_true", help="no failure cases")
     parser.add_argument("--from-csv", action="store_true", help="re-plot and summarise docs/preview_chart.csv")
+    parser.add_argument(
+        "--translucent", action="store_true", help="the translucent class (preview_chart_translucent.py)"
+    )
     args = parser.parse_args(argv)
+    if args.translucent:
+        from preview_chart_translucent import main as translucent_main
+
+        return translucent_main([])
     docs = ROOT / "docs"
     start = time.time()
     if args.from_csv:
