@@ -128,3 +128,23 @@ def tinted_medium(medium: list[float], noun_base: list[float], base: list[float]
 def _own_transmission(state: MaterialState) -> Diagnostic:
     message = f"{noun_of(state).key} transmits light already: no medium added"
     return Diagnostic(state.selection.span, Severity.NOTE, OWN_TRANSMISSION, message, ())
+
+
+def refine_translucency(
+    state: MaterialState, adjective: Entry, item: ast.RefineItem, direction: int, weight: float
+) -> None:
+    """'more translucent' / 'less milky': the medium's mean free path times the word's radius_scale
+    (at least 1.5) per step, up or down; 'more translucent' on a body without one gives it one."""
+    table: dict[str, Any] = adjective.get("subsurface")
+    words = (item.word, item.target) if isinstance(item.target, ast.Word) else (item.word,)
+    current = state.params.get("subsurface")
+    if not isinstance(current, dict):
+        if direction > 0 and state.kind not in ("conductor", "glass"):
+            state.record("subsurface", _new(table, state), f"refinements.{item.word.key} {adjective.key}", words)
+        elif state.kind == "conductor" and isinstance(item.target, ast.Word):
+            state.diagnostics.append(_no_light_in(state, item.target))
+        return
+    factor = max(float(table.get("radius_scale", 1.0)), 1.5) ** (direction * weight)
+    medium = dict(current)
+    medium["radius"] = [r * factor for r in current["radius"]]
+    state.record("subsurface", medium, f"refinements.{item.word.key} {adjective.key}: radius x{factor:.3g}", words)

@@ -122,3 +122,12 @@ def test_the_medium_says_where_it_came_from():
     m = material("translucent milky wax")
     rules = [step["rule"] for step in m["provenance"]["subsurface"]]
     assert rules[0] == "nouns.wax" and "adjectives.translucent.subsurface" in rules
+
+
+def test_more_and_less_translucent_move_the_mean_free_path():
+    result = compile_source("a: wax\nmore translucent\nb: wax\nless translucent\nc: white plastic\nmore translucent\n")
+    a, b, c = (m["params"].get("subsurface") for m in result.ir["materials"])
+    wax = material("wax")["params"]["subsurface"]["radius"]
+    assert a["radius"] == pytest.approx([2 * r for r in wax]) and b["radius"] == pytest.approx([r / 2 for r in wax])
+    assert c is not None  # more translucent gives a plastic a medium
+    assert "W150" in codes("copper\nmore translucent\n")
