@@ -25,6 +25,7 @@ from .base import noun_of
 from .bracket import Move, Step, bracket_move, scaled_steps
 from .refine_property import refine_property
 from .refine_target import item_text, item_words, move_sigma_too, note, note_unmoved_number, surface
+from .subsurface import refine_translucency
 from .words import Effect, effects_for
 
 
@@ -43,6 +44,9 @@ MIDDLE = 1 / 6  # a 'set' this close to its range's centre (a fraction of the ra
 def refine_adjective(
     state: MaterialState, ctx: Context, adjective: Entry, item: ast.RefineItem, direction: int, weight: float
 ) -> None:
+    if adjective.get("subsurface"):  # 'more translucent': the medium's mean free path (passes/subsurface.py)
+        refine_translucency(state, adjective, item, direction, weight)
+        return
     word = _target(item)
     applied = adjective.key in [k for k, _w in state.applied]
     effects = [e for e in effects_for(adjective, state) if e["param"] != "model"]
