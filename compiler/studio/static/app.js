@@ -202,7 +202,7 @@ async function start() {
   const connection = new Connection(socketUrl());
   await connection.opened;
   const hello = await connection.hello;
-  window.cnlmcStudio = new Studio(connection, hello);
+  new Studio(connection, hello); // eslint-disable-line no-new
   status.ready = "1";
 }
 

@@ -4,12 +4,23 @@
 import {
   EditorState, StateEffect, StateField, EditorView, Decoration, WidgetType, keymap,
   hoverTooltip, lineNumbers, highlightActiveLine, drawSelection, defaultKeymap, history, historyKeymap,
-  autocompletion, completionKeymap, lintGutter, setDiagnostics,
+  autocompletion, acceptCompletion, closeCompletion, moveCompletionSelection, startCompletion, lintGutter,
+  setDiagnostics,
 } from "./vendor/codemirror.js";
 import { markdownNodes } from "./markdown.js";
 
 const SEVERITIES = { 1: "error", 2: "warning", 3: "info", 4: "hint" };
 const setDecorations = StateEffect.define();
+// Completion keys: Tab takes the selected word, the arrows choose, Escape closes, Ctrl-Space opens.
+const COMPLETION_KEYS = [
+  { key: "Tab", run: acceptCompletion },
+  { key: "ArrowDown", run: moveCompletionSelection(true) },
+  { key: "ArrowUp", run: moveCompletionSelection(false) },
+  { key: "PageDown", run: moveCompletionSelection(true, "page") },
+  { key: "PageUp", run: moveCompletionSelection(false, "page") },
+  { key: "Escape", run: closeCompletion },
+  { key: "Ctrl-Space", run: startCompletion },
+];
 
 // Semantic tokens and swatches, replaced whole on every analysis.
 const decorations = StateField.define({
@@ -71,9 +82,13 @@ export class Editor {
           lintGutter(),
           decorations,
           EditorView.lineWrapping,
-          autocompletion({ override: [(context) => this.complete(context)], activateOnTyping: true }),
+          autocompletion({
+            override: [(context) => this.complete(context)],
+            activateOnTyping: true,
+            defaultKeymap: false, // Enter ends the line: a phrase typed and Enter never picks another word
+          }),
           hoverTooltip((view, pos) => this.hover(view, pos), { hoverTime: 250 }),
-          keymap.of([...completionKeymap, ...historyKeymap, ...defaultKeymap]),
+          keymap.of([...COMPLETION_KEYS, ...historyKeymap, ...defaultKeymap]),
           EditorView.updateListener.of((update) => {
             if (update.docChanged && !this.quiet) onChange(update.state.doc.toString());
           }),
