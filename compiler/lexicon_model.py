@@ -191,12 +191,22 @@ def _multi_word_lengths(forms: Forms) -> dict[str, tuple[int, ...]]:
 
 
 def _index_forms(entries: dict[str, dict[str, Entry]]) -> Forms:
+    """Surface form (its lower-case words) -> the entries it names, in entry order. Made for every
+    lexicon a process loads (a cold start): loops, not generators, in its inner part."""
     forms: Forms = {}
     for by_key in entries.values():
         for entry in by_key.values():
-            for surface in [entry.key, *entry.data.get("aliases", ())]:
-                hits = forms.setdefault(tuple(surface.lower().split()), [])
-                if not any(hit is entry for hit in hits):  # identity: comparing entries compares their data
+            aliases = entry.data.get("aliases")
+            for surface in (entry.key, *aliases) if aliases else (entry.key,):
+                form = tuple(surface.lower().split())
+                hits = forms.get(form)
+                if hits is None:
+                    forms[form] = [entry]
+                    continue
+                for hit in hits:
+                    if hit is entry:  # identity: comparing entries compares their data
+                        break
+                else:
                     hits.append(entry)
     return forms
 
