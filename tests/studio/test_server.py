@@ -210,6 +210,33 @@ async def test_a_photo_without_the_marker_is_said_in_the_page(client: TestClient
     await socket.close()
 
 
+async def test_a_photo_with_the_marker_gets_the_material_composited(client: TestClient[Any, Any]) -> None:
+    pytest.importorskip("cv2", reason="marker AR needs OpenCV (extra: ar)")
+    import cv2
+
+    from cnlmc.backends.ar.synthetic import synthetic_photo
+
+    photo, _K, corners = synthetic_photo(np.array([2.2, 0.3, -0.2]), np.array([0.0, 0.02, 0.5]), 320, 240)
+    socket = await client.ws_connect("/ws")
+    hello = await socket.receive_json()
+    await ask(socket, "edit", text=PHRASE)
+    ok, encoded = cv2.imencode(".png", photo)
+    response = await client.post(
+        f"/ar-photo/{hello['session']}", data=encoded.tobytes(), headers={"Content-Type": "image/png"}
+    )
+    answer = json.loads(await response.text())
+    assert "error" not in answer, answer
+    made = cv2.imdecode(np.frombuffer(await (await client.get(answer["url"])).read(), np.uint8), cv2.IMREAD_COLOR)
+    assert made.shape == photo.shape
+    changed = np.abs(made.astype(int) - photo.astype(int)).sum(axis=2) > 30
+    x, y = corners.mean(axis=0).astype(int)  # the object stands on the marker's centre
+    assert changed[y - 30 : y + 5, x - 20 : x + 20].mean() > 0.3
+    assert changed.mean() < 0.5  # the rest of the photo is the photo
+    blue = made[changed]  # BGR: what was drawn is the blue anodized metal (or its shadow)
+    assert np.median(blue[:, 0]) > np.median(blue[:, 2])
+    await socket.close()
+
+
 def test_serve_on_the_lan_prints_the_address_with_its_token_and_a_qr_code() -> None:
     server = start_server("--host", "0.0.0.0")
     try:
