@@ -2,6 +2,7 @@
 latency, and the frame time at 512x512.
 
     .venv/bin/python bench/studio.py [--edits 12] [--frames 7] [--through studio|view]
+    .venv/bin/python bench/studio.py --sheet docs/studio_view.png   # the browser's frames under the preview's
 
 Latency: through the studio's own page (`cnlmc serve`, the CodeMirror editor, the WebSocket
 edit, the server's compile and `material_payload`, the page's debounce, MaterialView.show and
@@ -20,6 +21,7 @@ warm-up, per material. Prints the load average: on a shared machine the numbers 
 from __future__ import annotations
 
 import argparse
+import io
 import os
 import subprocess
 import sys
@@ -123,12 +125,58 @@ def frame_times(page: Any, frames: int) -> dict[str, float]:
     return out
 
 
+SHEET = ("lightly brushed, blue anodized aluminum", "clear glass", "velvet", "oak", "clear-coated red car paint")
+
+
+def sheet(out: Path, size: int = 192) -> None:
+    """Top row `cnlmc preview` (splitsum), bottom row the browser's frame of the same scene; FLIP printed."""
+    from PIL import Image
+    from playwright.sync_api import sync_playwright
+
+    from cnlmc.api import compile_source
+    from cnlmc.backends.preview.render import Renderer
+    from cnlmc.backends.preview.scene import scene_mesh
+    from cnlmc.backends.preview.web import MESH_PIXELS
+    from cnlmc.output import write_atomic
+    from tests.helpers import load_module
+
+    chart = load_module("preview_chart", ROOT / "bench" / "preview_chart.py")
+    sphere = scene_mesh("sphere", (MESH_PIXELS, MESH_PIXELS))
+    top, bottom = [], []
+    with ViewServer(Path(tempfile.mkdtemp(prefix="cnlmc-bench-studio-"))) as server, sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        page = browser.new_page()
+        page.goto(f"{server.url}/page.html?size={size}")
+        page.evaluate("window.viewReady")
+        with Renderer(size) as renderer:
+            for phrase in SHEET:
+                page.evaluate("(p) => window.showPhrase(p)", phrase)
+                web = np.array(page.evaluate("Array.from(window.view.readPixels())"), np.uint8)
+                web = web.reshape(size, size, 4)[..., :3]
+                ir = compile_source(phrase + "\n").ir["materials"][0]
+                ref = renderer.render(ir, mesh=sphere, tier="splitsum").rgba[..., :3]
+                flip = chart.errors(ref.astype(np.float32) / 255, web.astype(np.float32) / 255)[0]
+                print(f"  {phrase:45s} FLIP {flip:.4f} (browser against cnlmc preview, {size}x{size})")
+                top.append(ref)
+                bottom.append(web)
+        browser.close()
+    image = np.vstack([np.hstack(top), np.hstack(bottom)])
+    buffer = io.BytesIO()
+    Image.fromarray(image).save(buffer, format="PNG")
+    write_atomic(out, buffer.getvalue())
+    print(f"wrote {out}")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--edits", type=int, default=12)
     parser.add_argument("--frames", type=int, default=7)
     parser.add_argument("--through", choices=("studio", "view"), default="studio")
+    parser.add_argument("--sheet", type=Path, help="write the preview | browser picture there instead")
     args = parser.parse_args()
+    if args.sheet:
+        sheet(args.sheet)
+        return
     from playwright.sync_api import sync_playwright
 
     print(f"load average before: {' '.join(f'{x:.1f}' for x in os.getloadavg())} ({os.cpu_count()} cores)")
