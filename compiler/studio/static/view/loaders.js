@@ -165,7 +165,11 @@ function parseGlb(buffer) {
 export function meshFromFile(buffer) {
   const head = new Uint8Array(buffer, 0, Math.min(4, buffer.byteLength));
   if (String.fromCharCode(...head) === "glTF") return parseGlb(buffer);
-  return parseObj(new TextDecoder().decode(buffer));
+  const text = new TextDecoder().decode(buffer);
+  if (text.trimStart().startsWith("{")) {
+    throw new Error("view: a .gltf is not read here (its buffers are separate files): drop a .glb or an .obj");
+  }
+  return parseObj(text);
 }
 
 // A dropped Radiance .hdr (a File or ArrayBuffer) -> an environment like the named ones, with
