@@ -209,6 +209,7 @@ def test_the_parser_tables_come_back_from_plain_data_and_parse_alike(tmp_path, m
     assert loaded is not built
     phrases = "lightly brushed, blue anodized aluminum\noak with a glossy white varnish\nred or blue plastic\ndarker\n"
     results = []
+    monkeypatch.setattr(stdlib.caches.shapes, "persistent", False)  # parsed, not recalled from stored shapes
     for lark in (built, loaded):
         monkeypatch.setattr(parser, "lark_parser", lambda lark=lark: lark)
         stdlib.caches.shapes.clear()  # parse every line again, with this parser

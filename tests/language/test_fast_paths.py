@@ -90,8 +90,9 @@ def test_failures_are_not_cached(lexicon):
     assert len(shapes) == 0
 
 
-def test_cached_and_uncached_compiles_agree(lexicon):
+def test_cached_and_uncached_compiles_agree(lexicon, monkeypatch):
     text = "lightly brushed, blue anodized aluminum\ndarker blue\nwhite varnished oak\nmore grain"
+    monkeypatch.setattr(lexicon.caches.shapes, "persistent", False)  # cold: parsed, not recalled from stored shapes
     lexicon.caches.shapes.clear()
     cold = compile_source(text, "a.cnl", lexicon).ir
     for _ in range(3):
