@@ -4,6 +4,13 @@ Words that ask for flakes ('metallic', 'pearlescent', 'glittery', 'with metallic
 lexicon, stdlib/lexicon/adjectives_flakes.toml) set `flake_color` and the flakes' density, spread
 and size as effects. The IR carries the four only when the flakes are there: a colour and a
 density above zero; a material without such a word has none of them (its IR is unchanged).
+
+The flakes sit in the pigmented basecoat, so the light they mirror passes through the pigment:
+the IR's flake colour is the lexicon's (a bare aluminium flake's F0) tinted by the base colour's
+chromaticity, flake = lexicon flake ⊙ base / max(base) (our choice: the hue of the pigment, not
+its darkness — a transparent pigment of a metallic red tints the flakes red; the grey 0.1 of plain
+'car paint' leaves them silver). Looked at: untinted flakes made 'red paint with metallic flakes'
+a pale pink.
 """
 
 from __future__ import annotations
@@ -23,12 +30,20 @@ def has_flakes(params: Mapping[str, Any]) -> bool:
     return color is not None and max(color) > 0.0 and float(params.get("flake_density", 0.0)) > 0.0
 
 
+def tinted_flakes(flake_color: list[float], base_color: list[float]) -> list[float]:
+    """The flakes' colour seen through a pigment of `base_color` (its chromaticity)."""
+    top = max(base_color)
+    if top <= 0.0:
+        return list(flake_color)
+    return [f * max(c, 0.0) / top for f, c in zip(flake_color, base_color, strict=True)]
+
+
 def flake_params(params: Mapping[str, Any]) -> dict[str, Any]:
     """The IR's flake entries for a material's working params: none without flakes."""
     if not has_flakes(params):
         return {}
     return {
-        "flake_color": round6_list(list(params["flake_color"])),
+        "flake_color": round6_list(tinted_flakes(list(params["flake_color"]), list(params["base_color"]))),
         "flake_density": rounded(params["flake_density"]),
         "flake_roughness": rounded(params.get("flake_roughness", Params.flake_roughness)),
         "flake_size": rounded(params.get("flake_size", Params.flake_size)),

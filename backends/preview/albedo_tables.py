@@ -33,7 +33,8 @@ import numpy as np
 
 import cnlmc.bsdf
 from cnlmc.bsdf.alpha import anisotropy_stretch
-from cnlmc.bsdf.evaluate import albedo, material_alpha
+from cnlmc.bsdf.evaluate import material_alpha
+from cnlmc.bsdf.flakes import albedo_flaked as albedo  # a paint's flakes are in its tables (#15 item 5)
 from cnlmc.cache import cached
 from cnlmc.material import RGB, Material
 

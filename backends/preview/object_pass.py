@@ -12,6 +12,7 @@ from cnlmc.material import Material
 from ..glsl.options import GlslOptions
 from . import gl
 from .environment_pass import EnvResources, bind_environment
+from .flakes import flake_uniforms
 from .glass import glass_uniforms
 from .material_textures import map_textures, split_textures
 from .mesh import Mesh
@@ -104,6 +105,8 @@ def draw_object(
         for name, value in glass_uniforms(scene.mesh, model, scene.glass).items():
             gl.set_uniform(prog, name, value)
     for name, value in sheen_uniforms(material).items():
+        gl.set_uniform(prog, name, value)
+    for name, value in flake_uniforms(material, scene.mesh).items():
         gl.set_uniform(prog, name, value)
     for name, value in subsurface_uniforms(material, scene.mesh, model).items():
         gl.set_uniform(prog, name, value)

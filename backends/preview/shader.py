@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
 
+from cnlmc.bsdf.flakes import has_flakes
 from cnlmc.bsdf.sampling import lobe_shares
 from cnlmc.bsdf.sheen import has_sheen
 from cnlmc.material import Material
@@ -52,6 +53,7 @@ class PreviewPlan:
     summary: str
     split_fitted: bool  # the split-sum tables hold a fitted kernel pair: two lookups (split.glsl.j2)
     sheen: bool = False  # a Charlie sheen over the base (sheen.glsl.j2)
+    flakes: bool = False  # the flakes' sparkle for the key light (flakes.glsl.j2; their mean is in cnlm_bsdf)
     subsurface: bool = False  # a translucent body under a black-based boundary (subsurface.glsl.j2)
 
 
@@ -89,6 +91,7 @@ def preview_plan(material: Material, library: Plan, specialized: Plan) -> Previe
         summary=base + "".join(f", {k}" for k, on in flags.items() if on),
         split_fitted=split_fitted(material, roughness_map),
         sheen=has_sheen(material),
+        flakes=has_flakes(material),
         subsurface=has_subsurface(material),
     )
 
