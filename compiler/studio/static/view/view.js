@@ -51,15 +51,34 @@ export class MaterialView {
   }
 
   // -- what is drawn
+  // Show these payloads; resolves with the frame time, or null when a later show() overtook it
+  // (edits arrive faster than their textures: the newest wins, an older one never replaces it).
   async show(payloads) {
+    const ticket = (this.shows = (this.shows || 0) + 1);
     await this.ready;
     const list = Array.isArray(payloads) ? payloads : [payloads];
     const entries = [];
     for (const payload of list) entries.push(await this.entry(payload));
     await this.resolvePrefiltered(entries);
+    if (ticket !== this.shows) {
+      for (const entry of entries) this.releaseEntry(entry);
+      return null;
+    }
     for (const old of this.entries) this.releaseEntry(old);
     this.entries = entries;
+    this.pruneMaps();
     return this.draw();
+  }
+
+  // Map textures no shown material samples go (a long session of textured edits would pile them up).
+  pruneMaps() {
+    const used = new Set(this.entries.flatMap((e) => Object.values(e.payload.maps).map((m) => m.file)));
+    for (const [file, tex] of this.maps) {
+      if (!used.has(file)) {
+        this.gl.deleteTexture(tex);
+        this.maps.delete(file);
+      }
+    }
   }
 
   async entry(payload) {
