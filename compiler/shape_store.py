@@ -111,7 +111,7 @@ class StoredShapes:
         if self.cache is None:
             return
         merged = dict(self.entries)
-        for key, (shape, choice) in shapes.items():
+        for key, (shape, choice) in list(shapes.items()):  # a copy: another thread may parse meanwhile
             merged.pop(key, None)
             merged[key] = encode_entry(shape, choice)
         kept = list(merged.items())[-MAX_SHAPES:]
