@@ -1,6 +1,8 @@
 """The studio's WebSocket messages: the page sends {op, seq, ...}, the server answers each with
-{op, seq, ...} (or {op: "error", seq, message}). Work that takes long (exports, the refinement
-chips, AR) runs on a worker thread so the page's next keystroke is not kept waiting on it.
+{op, seq, ...} (or {op: "error", seq, message}). Each tab's requests are answered in order, on a
+worker thread (an analysis with its view payloads takes up to half a second): the event loop stays
+free for the other tabs and for the file downloads; the refinement chips are found in the
+background and sent when ready.
 
   edit {text}                   -> analysis {diagnostics, tokens, colours, materials, payloads, history, ok}
   refine {words}                -> analysis {..., text}  (the document with the refinement line)
@@ -97,24 +99,27 @@ class Dispatcher:
     # ------------------------------------------------------------------ requests
 
     async def op_edit(self, message: JSONDict) -> JSONDict:
-        return await self.analysed(self.session.edit(_text(message, "text")))
+        return await self.analysed(await self.in_thread(self.session.edit, _text(message, "text")))
 
     async def op_refine(self, message: JSONDict) -> JSONDict:
-        return await self.analysed(self.session.refine(_text(message, "words")))
+        return await self.analysed(await self.in_thread(self.session.refine, _text(message, "words")))
 
     async def op_undo(self, message: JSONDict) -> JSONDict:
-        return await self.analysed(self.session.undo())
+        return await self.analysed(await self.in_thread(self.session.undo))
 
     async def op_redo(self, message: JSONDict) -> JSONDict:
-        return await self.analysed(self.session.redo())
+        return await self.analysed(await self.in_thread(self.session.redo))
 
     async def op_complete(self, message: JSONDict) -> JSONDict:
         text, line, character = _position(self.session, message)
-        return {"op": "completion", "items": self.session.engine.completion(text, line, character)}
+        return {
+            "op": "completion",
+            "items": await self.in_thread(self.session.engine.completion, text, line, character),
+        }
 
     async def op_hover(self, message: JSONDict) -> JSONDict:
         text, line, character = _position(self.session, message)
-        return {"op": "hover", **(self.session.engine.hover(text, line, character) or {})}
+        return {"op": "hover", **(await self.in_thread(self.session.engine.hover, text, line, character) or {})}
 
     async def op_export(self, message: JSONDict) -> JSONDict:
         exported = await self.in_thread(self.session.export, _text(message, "key"), _text(message, "text"))
