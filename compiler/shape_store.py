@@ -103,7 +103,7 @@ class StoredShapes:
         try:
             return decode_entry(key, entry)
         except (ValueError, TypeError, IndexError, KeyError, AttributeError):
-            del self.entries[key]
+            self.entries.pop(key, None)  # (another thread may have dropped it already)
             return None
 
     def save(self, shapes: ShapeCache) -> None:
