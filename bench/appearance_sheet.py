@@ -225,22 +225,24 @@ def cached_tile(path: Path, make) -> np.ndarray:
     return tile
 
 
-def render_all(size: int, spp: int, stage: Path, materialx_timeout: float) -> list[np.ndarray]:
+def render_all(
+    size: int, spp: int, stage: Path, materialx_timeout: float, phrases: tuple[str, ...] = PHRASES
+) -> list[np.ndarray]:
     from cnlmc.api import compile_source
     from cnlmc.backends.preview.render import Renderer, default_scene
 
     scene = default_scene("sphere", "studio", (size, size))
     scene.background = "transparent"
-    materials = [compile_source(phrase + "\n").document.materials[0] for phrase in PHRASES]
+    materials = [compile_source(phrase + "\n").document.materials[0] for phrase in phrases]
     write_materialx_stage(scene, stage)
     for index, material in enumerate(materials):
         write_materialx_job(material, scene, stage / f"{index:02d}")
-    pending = [stage / f"{i:02d}" for i in range(len(PHRASES)) if not (stage / f"{i:02d}" / "render.hdr").exists()]
+    pending = [stage / f"{i:02d}" for i in range(len(phrases)) if not (stage / f"{i:02d}" / "render.hdr").exists()]
     peer, reason = start_materialx(stage, size) if pending else (None, "")
     started = time.perf_counter()
     columns = []
     with Renderer(size, msaa=4) as renderer:
-        for index, (phrase, material) in enumerate(zip(PHRASES, materials)):
+        for index, (phrase, material) in enumerate(zip(phrases, materials)):
             job = stage / f"{index:02d}"
             frame = renderer.render(material, scene=scene, hdr=True)
             alpha = frame.rgba[..., 3] / 255.0
@@ -255,7 +257,7 @@ def render_all(size: int, spp: int, stage: Path, materialx_timeout: float) -> li
             peer.terminate()
             reason = f"not rendered within {materialx_timeout:.0f} s"
     out = []
-    for index, (phrase, (tiles, alpha)) in enumerate(zip(PHRASES, columns)):
+    for index, (phrase, (tiles, alpha)) in enumerate(zip(phrases, columns)):
         job = stage / f"{index:02d}"
         if (job / "render.hdr").exists() or (job / "error.txt").exists():
             third = materialx_tile(job, alpha, size)
@@ -273,6 +275,7 @@ def main() -> None:
     parser.add_argument("--stage", default="", help="a folder kept between runs (tiles and MaterialX renders reused)")
     parser.add_argument("--materialx-timeout", type=float, default=1800.0, help="seconds to wait for MaterialX")
     parser.add_argument("--materialx-peer", default="", help=argparse.SUPPRESS)
+    parser.add_argument("--phrases", default="", help="';'-separated phrases instead of the 24 (a partial sheet)")
     args = parser.parse_args()
     if args.materialx_peer:
         materialx_peer(Path(args.materialx_peer), args.size)
@@ -283,7 +286,8 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as temporary:
         stage = Path(args.stage or temporary)
         stage.mkdir(parents=True, exist_ok=True)
-        triples = render_all(args.size, args.spp, stage, args.materialx_timeout)
+        phrases = tuple(p.strip() for p in args.phrases.split(";") if p.strip()) or PHRASES
+        triples = render_all(args.size, args.spp, stage, args.materialx_timeout, phrases)
     rows = [triples[i : i + PER_ROW] for i in range(0, len(triples), PER_ROW)]
     write_atomic(Path(args.out), png_bytes(sheet(rows, gap=8)))
     print(f"wrote {args.out}")
