@@ -210,6 +210,7 @@ async def test_a_photo_without_the_marker_is_said_in_the_page(client: TestClient
     await socket.close()
 
 
+@pytest.mark.slow  # renders the object offscreen (llvmpipe): ~13 s on this machine
 async def test_a_photo_with_the_marker_gets_the_material_composited(client: TestClient[Any, Any]) -> None:
     pytest.importorskip("cv2", reason="marker AR needs OpenCV (extra: ar)")
     import cv2
