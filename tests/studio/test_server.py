@@ -4,6 +4,7 @@ same warnings as the CLI, the marker AR upload, and `cnlmc serve` on the command
 
 from __future__ import annotations
 
+import asyncio
 import json
 import re
 import zipfile
@@ -246,6 +247,30 @@ def test_serve_on_the_lan_prints_the_address_with_its_token_and_a_qr_code() -> N
         said = "".join(server.said) + server.stop()
     assert "scan this code" in said
     assert sum(line.count("█") + line.count("▀") + line.count("▄") for line in said.splitlines()) > 200  # the QR
+
+
+def test_serve_starts_from_a_file_and_never_writes_it(tmp_path: Path) -> None:
+    import aiohttp
+
+    source = tmp_path / "wood.cnl"
+    source.write_text("walnut wood\n", "utf-8")
+    before = source.stat()
+    server = start_server(str(source))
+
+    async def hello() -> dict[str, Any]:
+        async with aiohttp.ClientSession() as http, http.ws_connect(server.url + "ws") as socket:
+            said: dict[str, Any] = await socket.receive_json(timeout=60)
+            await socket.send_json({"op": "export", "seq": 1, "key": "glb", "text": said["text"]})
+            await socket.receive_json(timeout=300)
+            return said
+
+    try:
+        said = asyncio.run(hello())
+    finally:
+        server.stop()
+    assert said["text"] == "walnut wood\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["wood.cnl"]
+    assert source.stat().st_mtime_ns == before.st_mtime_ns
 
 
 def test_serve_refuses_a_bad_port_as_a_usage_error() -> None:
