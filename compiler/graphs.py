@@ -9,15 +9,16 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from functools import cache
-from importlib import resources
 from types import MappingProxyType
 from typing import Any
+
+from .package_data import package_folder
 
 
 @cache
 def graph_names() -> frozenset[str]:
     """The names of the bundled graphs (read once per process from package data)."""
-    folder = resources.files("cnlmc.stdlib").joinpath("graphs")
+    folder = package_folder("cnlmc.stdlib") / "graphs"
     if not folder.is_dir():
         return frozenset()
     return frozenset(p.name[:-5] for p in folder.iterdir() if p.name.endswith(".toml"))
@@ -29,7 +30,7 @@ def _graph_table(name: str) -> Mapping[str, Any]:
 
     if name not in graph_names():
         return MappingProxyType({})
-    path = resources.files("cnlmc.stdlib").joinpath("graphs").joinpath(f"{name}.toml")
+    path = package_folder("cnlmc.stdlib") / "graphs" / f"{name}.toml"
     return MappingProxyType(tomllib.loads(path.read_text("utf-8")))
 
 
