@@ -14,7 +14,6 @@ from __future__ import annotations
 import os
 from collections import OrderedDict
 from collections.abc import Iterable
-from importlib import resources
 from pathlib import Path
 from typing import Any
 
@@ -31,6 +30,7 @@ from .lexicon_model import (
     normalise,
 )
 from .material import MAP_ROLES
+from .package_data import package_folder
 
 __all__ = [
     "CATEGORY_TAGS",
@@ -155,7 +155,7 @@ def _load(payload: bytes) -> Lexicon:
 
 def lexicon_sources(user_paths: tuple[str | Path, ...], overlay: Overlays) -> list[Path]:
     """Every file a lexicon is made from: a change to one of them makes a new cache entry."""
-    package = resources.files("cnlmc.stdlib")
+    package = package_folder("cnlmc.stdlib")
     folders = [Path(p) for p in user_paths]
     folders += [Path(str(package.joinpath("overlays").joinpath(name))) for name in _overlay_names(overlay)]
     folders += [Path(str(package.joinpath("lexicon"))), Path(str(package.joinpath("graphs")))]
@@ -163,7 +163,7 @@ def lexicon_sources(user_paths: tuple[str | Path, ...], overlay: Overlays) -> li
     sources = [here / f"{name}.py" for name in READER_MODULES]
     sources += [
         Path(str(package.joinpath("schema.toml"))),
-        Path(str(resources.files("cnlmc.grammar").joinpath("keywords.toml"))),
+        package_folder("cnlmc.grammar") / "keywords.toml",
         Path(str(package.joinpath("data").joinpath("colour_names.toml"))),  # the everyday colours
         Path(str(package.joinpath("data").joinpath("colour_rules.toml"))),  # how the survey joins the lexicon
     ]

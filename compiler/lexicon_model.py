@@ -10,11 +10,11 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from functools import lru_cache
-from importlib import resources
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
 from .diagnostics import FailureKey, Mistake
+from .package_data import package_folder
 from .syntax import ShapeCache
 from .tagged import Candidate
 
@@ -223,5 +223,5 @@ def _bundled_keywords() -> Mapping[str, str]:
     """grammar/keywords.toml's table, read once per process (immutable package data)."""
     import tomllib
 
-    text = resources.files("cnlmc.grammar").joinpath("keywords.toml").read_text("utf-8")
+    text = (package_folder("cnlmc.grammar") / "keywords.toml").read_text("utf-8")
     return MappingProxyType(keyword_table(tomllib.loads(text)))

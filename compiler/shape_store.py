@@ -23,11 +23,12 @@ from __future__ import annotations
 
 import os
 import types
-from importlib import resources, util
+from importlib import util
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Union, get_args, get_origin
 
 from .cache import Corrupt, DiskCache, dump_json, load_json, source_key
+from .package_data import package_folder
 from .spans import Span
 from .syntax import MAX_SHAPES, GroupPlan, MaterialPlan, RefinementPlan, Shape, ShapeKey
 from .tagged import Candidate, Tagged
@@ -69,7 +70,7 @@ def shape_sources() -> list[Path]:
     """The files a stored shape depends on: a change to one makes a new cache entry."""
     here = Path(__file__).parent
     sources = [here / f"{name}.py" for name in ("syntax", "shape_reader", "parser", "shape_store")]
-    sources.append(Path(str(resources.files("cnlmc.grammar").joinpath("cnl.lark"))))
+    sources.append(package_folder("cnlmc.grammar") / "cnl.lark")
     spec = util.find_spec("lark")  # lark's version, without loading it
     if spec is not None and spec.origin:
         sources.append(Path(spec.origin))
