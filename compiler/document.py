@@ -10,13 +10,11 @@ from . import ast
 from .diagnostics import Diagnostic, error
 from .lexicon import Lexicon
 from .lines import iter_lines
-from .mistakes import known_mistake
 from .parser import ParseFailure, describe_expected, parse_line_shape
 from .shape_store import save_shapes
 from .spans import Span
 from .tagged import Tagged
 from .tagger import Tagger
-from .teach import fit_unknown_words, teach_syntax_error
 
 __all__ = ["iter_items", "iter_lines", "parse_document", "parse_line"]
 
@@ -62,6 +60,8 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
         return None
     words, tag_diags = tagger.tag_line(text, number, offset)
     if tag_diags:  # only unknown words and characters may lack candidates
+        from .teach import fit_unknown_words  # the teaching modules load only for a line with a problem
+
         fitted, words = fit_unknown_words(tag_diags, words, tagger.lexicon)
         diags.extend(fitted)
         words = [t for t in words if t.candidates]
@@ -79,6 +79,8 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
     try:
         shape, picks = parse_line_shape(words, tagger.lexicon.caches.shapes)
     except ParseFailure as failure:
+        from .teach import teach_syntax_error
+
         diags.append(teach_syntax_error(_syntax_error(failure, words, tagger.lexicon), words, tagger.lexicon))
         return None
     return shape.build(words, picks, text)
@@ -90,6 +92,8 @@ def _syntax_error(failure: ParseFailure, words: list[Tagged], lexicon: Lexicon) 
     is_refinement = any(c.tag == "REFINE" for c in words[0].candidates)
     at = failure.tagged or words[-1]
     span = at.span if failure.tagged else words[0].span.to(words[-1].span)
+    from .mistakes import known_mistake
+
     mistake = known_mistake(lexicon, failure)
     if mistake is not None:
         return error(span if failure.tagged else at.span, "E002", mistake.message.format(word=at.text), (mistake.hint,))
