@@ -9,11 +9,15 @@ shared; wall time is printed too). Peer in the same process: a grammar of the te
 the floor of what constraining can do (and how much the lexicon-sized grammar costs).
 Goals (issue #18): IR-equal >= 95 % clean, >= 85 % at 20 dB SNR; RTF <= 0.3.
 --quick: the tests' subset of phrases (tests/speech).
+Held-out split: phrases drawn (seeded) from the lexicon's own examples (Phrases.held_out), never
+looked at while tuning; scored apart with the same grammar. The load average is printed with the
+RTF (the machine is shared: under load RTF is pessimistic).
 """
 
 from __future__ import annotations
 
 import argparse
+import os
 import tempfile
 import time
 from collections import defaultdict
@@ -36,6 +40,7 @@ def phrase_grammar(phrases: Phrases) -> Grammar:
 def run(recogniser: Recogniser, scorer: Scorer, items: list, label: str) -> None:
     cells: dict[tuple, list[tuple[bool, bool]]] = defaultdict(list)
     cpu = wall = audio = 0.0
+    judged: list[tuple[float, bool]] = []  # (confidence, IR-equal) of each utterance heard
     for utterance, pcm in items:
         c0, w0 = time.process_time(), time.perf_counter()
         heard = recogniser.decode(pcm)
@@ -43,7 +48,10 @@ def run(recogniser: Recogniser, scorer: Scorer, items: list, label: str) -> None
         wall += time.perf_counter() - w0
         audio += len(pcm) / 2 / recogniser.settings.sample_rate
         text = heard.text if heard else None
-        cells[utterance.cell].append((text == utterance.text, scorer.ir_equal(utterance, text)))
+        right = scorer.ir_equal(utterance, text)
+        cells[utterance.cell].append((text == utterance.text, right))
+        if heard is not None:
+            judged.append((heard.confidence, right))
     print(f"\n== {label}: {len(items)} utterances")
     print(f"{'voice':10} {'wpm':>4} {'audio':6} {'n':>4} {'exact':>7} {'IR-equal':>9}")
     totals: dict[str, list[tuple[bool, bool]]] = defaultdict(list)
@@ -57,7 +65,20 @@ def run(recogniser: Recogniser, scorer: Scorer, items: list, label: str) -> None
         print(
             f"overall {kind:6} n={len(rows):4}  exact {_pct(r[0] for r in rows)}  IR-equal {_pct(r[1] for r in rows)}"
         )
-    print(f"real-time factor: CPU {cpu / audio:.3f}  wall {wall / audio:.3f}  ({audio:.0f} s of audio)")
+    calibration(judged, len(items))
+    load = " ".join(f"{x:.1f}" for x in os.getloadavg())
+    print(f"real-time factor: CPU {cpu / audio:.3f}  wall {wall / audio:.3f}  ({audio:.0f} s of audio; load {load})")
+
+
+def calibration(judged: list[tuple[float, bool]], count: int) -> None:
+    """Per threshold: the share of utterances applied, and how many of those are right (IR-equal)."""
+    print("confidence threshold: applied / right among applied / wrong applied (of all)")
+    for threshold in (0.0, 0.2, 0.35, 0.5, 0.7, 0.9):
+        applied = [right for confidence, right in judged if confidence >= threshold]
+        wrong = len(applied) - sum(applied)
+        print(
+            f"  >= {threshold:.2f}: {_pct([True] * len(applied) + [False] * (count - len(applied)))} / {_pct(applied)} / {100 * wrong / max(1, count):.1f}%"
+        )
 
 
 def _pct(values) -> str:
@@ -68,6 +89,8 @@ def _pct(values) -> str:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="the tests' subset of phrases")
+    parser.add_argument("--no-peer", action="store_true", help="skip the peer grammar")
+    parser.add_argument("--no-held-out", action="store_true", help="skip the held-out split")
     args = parser.parse_args()
     lexicon = lexicon_for()
     t0 = time.perf_counter()
@@ -80,12 +103,27 @@ def main() -> None:
     print(f"generate {t1 - t0:.2f} s, load {t2 - t1:.2f} s")
     phrases = Phrases.bundled(full=not args.quick)
     scorer = Scorer(lexicon, phrases, model.settings.undo)
-    utterances = phrases.utterances(VOICES, SPEEDS, (False, True))
+    held_out = Phrases.held_out(lexicon, recogniser.fsg.accept, phrases)
     with tempfile.TemporaryDirectory(prefix="cnlmc-speech-bench-") as folder:
-        items = [(u, read_pcm(synthesize(u, Path(folder), model.settings.sample_rate))) for u in utterances]
-    run(recogniser, scorer, items, "lexicon grammar")
-    peer = Recogniser(phrase_grammar(phrases), model.dictionary, model.settings)
-    run(peer, scorer, items, "peer: the test phrases only")
+        items = spoken(phrases, Path(folder), model.settings.sample_rate)
+        held_items = [] if args.no_held_out else spoken(held_out, Path(folder), model.settings.sample_rate)
+    run(recogniser, scorer, items, "lexicon grammar, tuning phrases")
+    if held_items:
+        held_scorer = Scorer(lexicon, held_out, model.settings.undo)
+        run(
+            recogniser,
+            held_scorer,
+            held_items,
+            f"lexicon grammar, held-out phrases ({len(held_out.materials)} + {len(held_out.refinements)})",
+        )
+    if not args.no_peer:
+        peer = Recogniser(phrase_grammar(phrases), model.dictionary, model.settings)
+        run(peer, scorer, items, "peer: the test phrases only")
+
+
+def spoken(phrases: Phrases, folder: Path, rate: int) -> list:
+    utterances = phrases.utterances(VOICES, SPEEDS, (False, True))
+    return [(u, read_pcm(synthesize(u, folder, rate))) for u in utterances]
 
 
 if __name__ == "__main__":

@@ -13,7 +13,7 @@ import numpy as np
 
 from ..errors import UsageError
 from ..inputs import read_bytes
-from .recogniser import SpeechUnavailable, _pocketsphinx
+from .recogniser import SpeechUnavailable, pocketsphinx_module
 
 MAX_WAV_BYTES = 256 << 20  # our choice: about 2 hours of 16 kHz speech
 
@@ -50,7 +50,7 @@ def to_pcm16(frames: bytes, width: int, channels: int, source_rate: int, rate: i
 
 def utterances(pcm: bytes, rate: int) -> Iterator[bytes]:
     """The speech segments of `pcm`, in order."""
-    segmenter = _pocketsphinx().Segmenter(sample_rate=rate, window=0.5, ratio=0.9)
+    segmenter = pocketsphinx_module().Segmenter(sample_rate=rate, window=0.5, ratio=0.9)
     for segment in segmenter.segment(io.BytesIO(pcm)):
         yield bytes(segment.pcm)
 
@@ -69,7 +69,7 @@ def microphone(rate: int) -> Iterator[bytes]:
 
 
 def _recorded(sounddevice: Any, rate: int) -> Iterator[bytes]:
-    segmenter = _pocketsphinx().Segmenter(sample_rate=rate, window=0.5, ratio=0.9)
+    segmenter = pocketsphinx_module().Segmenter(sample_rate=rate, window=0.5, ratio=0.9)
     with sounddevice.RawInputStream(samplerate=rate, channels=1, dtype="int16") as stream:
         for segment in segmenter.segment(_StreamReader(stream)):
             yield bytes(segment.pcm)

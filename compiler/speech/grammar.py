@@ -12,9 +12,11 @@ final, so every accepted path is a complete phrase.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
+from .prior import WordPrior
 from .settings import SpeechSettings
 from .vocabulary import Vocabulary
 
@@ -34,17 +36,18 @@ class Grammar:
         self.count += 1
         return self.count - 1
 
-    def words(self, source: int, target: int, forms: Iterable[str], probability: float = 1.0) -> None:
-        """An arc for each form (a multi-word form through states of its own), sharing `probability`."""
-        forms = list(dict.fromkeys(forms))
-        for form in forms:
+    def words(self, source: int, target: int, forms: Iterable[str], prior: WordPrior | None = None) -> None:
+        """An arc for each form (a multi-word form through states of its own); the forms share a
+        probability of 1, in proportion to the prior's weights (equally without one)."""
+        shares = _shares(list(dict.fromkeys(forms)), prior)
+        for form, share in shares.items():
             words = form.split()
             at = source
             for word in words[:-1]:
                 step = self.state()
-                self.transitions.append((at, step, probability / len(forms) if at == source else 1.0, word))
+                self.transitions.append((at, step, share if at == source else 1.0, word))
                 at = step
-            self.transitions.append((at, target, probability / len(forms) if at == source else 1.0, words[-1]))
+            self.transitions.append((at, target, share if at == source else 1.0, words[-1]))
 
     def skip(self, source: int, target: int, probability: float = 1.0) -> None:
         self.transitions.append((source, target, probability))
@@ -65,10 +68,23 @@ class Grammar:
         return "\n".join([*lines, "FSG_END"]) + "\n"
 
 
+def _shares(forms: list[str], prior: WordPrior | None) -> dict[str, float]:
+    """Each form's share of a slot's probability: prior weight over the slot's total (softmax of
+    the scaled log probabilities, so the rarest words do not underflow)."""
+    if prior is None or not forms:
+        return {form: 1.0 / max(1, len(forms)) for form in forms}
+    scores = {form: prior.of(form) for form in forms}
+    top = max(scores.values())
+    weights = {form: math.exp(score - top) for form, score in scores.items()}
+    total = sum(weights.values())
+    return {form: weight / total for form, weight in weights.items()}
+
+
 class GrammarBuilder:
-    def __init__(self, vocabulary: Vocabulary, settings: SpeechSettings) -> None:
+    def __init__(self, vocabulary: Vocabulary, settings: SpeechSettings, prior: WordPrior | None = None) -> None:
         self.forms = vocabulary.forms
         self.settings = settings
+        self.prior = prior
         self.grammar = Grammar()
 
     def of(self, *categories: str) -> list[str]:
@@ -93,7 +109,7 @@ class GrammarBuilder:
         for number in range(count):
             for category in ("adverbs", "shades", "colours", "adjectives"):
                 following = g.state()
-                g.words(at, following, self.of(category))
+                g.words(at, following, self.of(category), self.prior)
                 g.skip(at, following)
                 at = following
             if number + 1 < count:
@@ -109,15 +125,17 @@ class GrammarBuilder:
         g.words(begin, after_article, s.articles)
         g.skip(begin, after_article)
         compared = g.state()
-        g.words(after_article, compared, self.of("refinements"))  # an inline comparative: "shinier aluminum"
+        g.words(
+            after_article, compared, self.of("refinements"), self.prior
+        )  # an inline comparative: "shinier aluminum"
         g.skip(after_article, compared)
         noun = self.groups(compared, s.max_groups)
         named, second = g.state(), g.state()
-        g.words(noun, named, self.of("nouns"))
+        g.words(noun, named, self.of("nouns"), self.prior)
         self.ending(named, clauses)
         or_noun = g.state()
         g.words(named, or_noun, [s.or_word])
-        g.words(or_noun, second, self.of("nouns"))
+        g.words(or_noun, second, self.of("nouns"), self.prior)
         self.ending(second, clauses)
 
     def ending(self, state: int, clauses: int) -> None:
@@ -137,7 +155,7 @@ class GrammarBuilder:
             g.skip(at, after_article)
             done = g.state()
             head = self.groups(after_article, s.max_clause_groups)
-            g.words(head, done, self.of("coats", "features"))
+            g.words(head, done, self.of("coats", "features"), self.prior)
             g.skip(done, g.final)
             if number + 1 < s.max_clauses:
                 at = g.state()
@@ -150,11 +168,11 @@ class GrammarBuilder:
         at = begin
         for number in range(s.max_items):
             comparative, done = g.state(), g.state()
-            g.words(at, comparative, self.of("adverbs"))
+            g.words(at, comparative, self.of("adverbs"), self.prior)
             g.skip(at, comparative)
-            g.words(comparative, done, self.of("refinements"))
+            g.words(comparative, done, self.of("refinements"), self.prior)
             targeted = g.state()
-            g.words(done, targeted, self.of("colours", "adjectives", "properties"))
+            g.words(done, targeted, self.of("colours", "adjectives", "properties"), self.prior)
             following = g.state()
             for end in (done, targeted):
                 g.skip(end, g.final)
@@ -164,8 +182,8 @@ class GrammarBuilder:
             at = following
 
 
-def build_grammar(vocabulary: Vocabulary, settings: SpeechSettings) -> Grammar:
-    return GrammarBuilder(vocabulary, settings).build()
+def build_grammar(vocabulary: Vocabulary, settings: SpeechSettings, prior: WordPrior | None = None) -> Grammar:
+    return GrammarBuilder(vocabulary, settings, prior).build()
 
 
 def closed_words(settings: SpeechSettings) -> set[str]:

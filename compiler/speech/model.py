@@ -9,8 +9,9 @@ from pathlib import Path
 
 from ..lexicon import Lexicon
 from .grammar import Grammar, build_grammar, closed_words
+from .prior import WordPrior
 from .pronounce import Pronunciations
-from .recogniser import Recogniser, model_files
+from .recogniser import Recogniser, model_files, pocketsphinx_module
 from .settings import SpeechSettings
 from .vocabulary import Vocabulary, sayable_vocabulary
 
@@ -30,10 +31,21 @@ class SpeechModel:
         """The model of `lexicon`; `folders` are its user lexicon folders (their speech/pronunciations.toml)."""
         settings = settings or SpeechSettings.bundled()
         vocabulary = sayable_vocabulary(lexicon, settings)
-        pronunciations = Pronunciations(vocabulary.words() | closed_words(settings), model_files().dictionary, folders)
+        words = vocabulary.words() | closed_words(settings)
+        pronunciations = Pronunciations(words, model_files().dictionary, folders, british=settings.british_variants)
         vocabulary = vocabulary.without(pronunciations.missing)
-        grammar = build_grammar(vocabulary, settings)
+        grammar = build_grammar(vocabulary, settings, word_prior(vocabulary, settings))
         return cls(vocabulary, grammar, pronunciations.dictionary_text(), frozenset(pronunciations.missing), settings)
 
     def recogniser(self) -> Recogniser:
         return Recogniser(self.grammar, self.dictionary, self.settings)
+
+
+def word_prior(vocabulary: Vocabulary, settings: SpeechSettings) -> WordPrior | None:
+    """The words' weights from the language model (None: every word of a slot alike)."""
+    if not settings.prior_exponent:
+        return None
+    files = model_files()
+    return WordPrior.from_model(
+        pocketsphinx_module(), files.language_model, vocabulary.words(), settings.prior_exponent
+    )

@@ -28,9 +28,9 @@ def read_dictionary(path: Path, wanted: set[str]) -> dict[str, list[str]]:
     return found
 
 
-def read_pronunciations(text: str) -> dict[str, list[str]]:
-    """A pronunciations.toml: `[words]` word = ["PH ONES", ...]."""
-    words = tomllib.loads(text).get("words", {})
+def read_pronunciations(text: str, section: str = "words") -> dict[str, list[str]]:
+    """A pronunciations.toml: `[words]` word = ["PH ONES", ...] (or the `[british]` variants)."""
+    words = tomllib.loads(text).get(section, {})
     return {str(w).lower(): [str(p) for p in (v if isinstance(v, list) else [v])] for w, v in words.items()}
 
 
@@ -47,9 +47,18 @@ def user_pronunciations(folders: Iterable[str | Path]) -> dict[str, list[str]]:
 class Pronunciations:
     """The pronunciations of a set of words, and which words have none."""
 
-    def __init__(self, words: set[str], dictionary: Path, folders: Iterable[str | Path] = (), espeak: bool = True):
+    def __init__(
+        self,
+        words: set[str],
+        dictionary: Path,
+        folders: Iterable[str | Path] = (),
+        espeak: bool = True,
+        british: bool = True,
+    ):
         self.table = read_dictionary(dictionary, words)
         bundled = read_pronunciations(speech_data("pronunciations.toml"))
+        if british:
+            self._add_variants(read_pronunciations(speech_data("pronunciations.toml"), "british"))
         users = user_pronunciations(folders)
         for word in words - set(self.table):
             phones = users.get(word) or bundled.get(word)
@@ -59,6 +68,12 @@ class Pronunciations:
         if rest and espeak and espeak_available():
             self.table.update(espeak_pronunciations(rest, IpaTable.bundled()))
         self.missing = words - set(self.table)
+
+    def _add_variants(self, variants: dict[str, list[str]]) -> None:
+        """Second pronunciations of words the dictionary has (British beside American)."""
+        for word, phones in variants.items():
+            if word in self.table:
+                self.table[word].extend(p for p in phones if p not in self.table[word])
 
     def dictionary_text(self) -> str:
         """The CMU-format dictionary of these words, for the recogniser."""

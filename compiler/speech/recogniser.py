@@ -3,7 +3,7 @@ confidence and alternatives. pocketsphinx (optional extra 'speech') is imported 
 
 from __future__ import annotations
 
-import math
+import itertools
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
@@ -19,7 +19,7 @@ class SpeechUnavailable(RuntimeError):
     """pocketsphinx (or the audio library) is not installed: what to install."""
 
 
-def _pocketsphinx() -> Any:
+def pocketsphinx_module() -> Any:
     try:
         import pocketsphinx  # type: ignore[import-untyped]
     except ImportError as exc:
@@ -33,12 +33,13 @@ def _pocketsphinx() -> Any:
 class ModelFiles:
     acoustic: Path  # the en-US acoustic model folder
     dictionary: Path  # the CMU pronouncing dictionary
+    language_model: Path  # the en-US n-gram model (word frequencies: cnlmc.speech.prior)
 
 
 def model_files() -> ModelFiles:
     """The en-US model pocketsphinx ships inside its wheel (no download)."""
-    root = Path(_pocketsphinx().get_model_path())
-    return ModelFiles(root / "en-us" / "en-us", root / "en-us" / "cmudict-en-us.dict")
+    root = Path(pocketsphinx_module().get_model_path())
+    return ModelFiles(root / "en-us" / "en-us", root / "en-us" / "cmudict-en-us.dict", root / "en-us" / "en-us.lm.bin")
 
 
 @dataclass(frozen=True)
@@ -51,11 +52,19 @@ class Hypothesis:
     alternatives: tuple[str, ...]
 
 
+@dataclass
+class Votes:
+    """A phrase of the n-best list (as first heard) and how many of its paths say it."""
+
+    text: str
+    paths: int
+
+
 class Recogniser:
     """One pocketsphinx decoder with the grammar loaded; decode() one utterance at a time."""
 
     def __init__(self, grammar: Grammar, dictionary: str, settings: SpeechSettings) -> None:
-        ps = _pocketsphinx()
+        ps = pocketsphinx_module()
         self.settings = settings
         with tempfile.TemporaryDirectory(prefix="cnlmc-speech-") as folder:
             dict_path = Path(folder) / "words.dict"
@@ -76,37 +85,45 @@ class Recogniser:
 
     def decode(self, samples: bytes) -> Hypothesis | None:
         """16-bit mono PCM at the settings' sample rate -> the hypothesis; None when no complete
-        phrase of the grammar was heard."""
+        phrase of the grammar was heard. When the best path ends short of a complete phrase
+        (pocketsphinx then returns a partial one: 'more' for a British 'darker'), the best complete
+        phrase of the n-best list is taken instead."""
         decoder = self.decoder
         decoder.start_utt()
         decoder.process_raw(samples, no_search=False, full_utt=True)
         decoder.end_utt()
         best = decoder.hyp()
         text = " ".join(best.hypstr.split()) if best is not None else ""
-        if not text or not self.fsg.accept(text):
+        votes = self._votes()
+        if text and self.fsg.accept(text):
+            meaning = self._meaning(text)
+            votes.setdefault(meaning, Votes(text, 1))
+        elif votes:
+            meaning = next(iter(votes))  # the best scoring complete path
+        else:
             return None
-        confidence, others = self._ranked(text)
-        return Hypothesis(text, confidence, others)
+        return Hypothesis(votes[meaning].text, *self._ranked(meaning, votes))
 
-    def _ranked(self, best: str) -> tuple[float, tuple[str, ...]]:
-        """The best phrase's share of the n-best probability mass, and the other complete phrases."""
-        scores: dict[str, int] = {}
-        best = self._meaning(best)
+    def _votes(self) -> dict[str, Votes]:
+        """The complete phrases of the first `nbest_paths` n-best paths, best first: meaning -> votes."""
+        found: dict[str, Votes] = {}
         try:
-            for count, entry in enumerate(self.decoder.nbest()):
+            for entry in itertools.islice(self.decoder.nbest() or (), self.settings.nbest_paths):
                 text = " ".join((entry.hypstr or "").split())
-                if text and self._meaning(text) not in scores and self.fsg.accept(text):
-                    scores[self._meaning(text)] = entry.score
-                if count >= self.settings.nbest_paths or len(scores) > self.settings.alternatives:
-                    break
+                if text and self.fsg.accept(text):
+                    votes = found.setdefault(self._meaning(text), Votes(text, 0))
+                    votes.paths += 1
         except RuntimeError:  # no lattice for this utterance
-            return 1.0, ()
-        scores.setdefault(best, max(scores.values(), default=0))
-        top = max(scores.values())
-        logmath = self.decoder.logmath
-        weights = {t: math.exp(logmath.log_to_ln(s - top) * self.settings.confidence_scale) for t, s in scores.items()}
-        others = tuple(t for t in sorted(scores, key=lambda t: -scores[t]) if t != best)
-        return weights[best] / sum(weights.values()), others[: self.settings.alternatives]
+            pass
+        return found
+
+    def _ranked(self, best: str, votes: dict[str, Votes]) -> tuple[float, tuple[str, ...]]:
+        """The best phrase's share of the complete n-best paths (1 when it is the only one heard),
+        and the other phrases, most voted first."""
+        total = sum(v.paths for v in votes.values())
+        confidence = votes[best].paths / total
+        others = tuple(votes[m].text for m in sorted(votes, key=lambda m: -votes[m].paths) if m != best)
+        return confidence, others[: self.settings.alternatives]
 
     def _meaning(self, text: str) -> str:
         """The phrase without its articles, which never change the material: 'with a clear coat'

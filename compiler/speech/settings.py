@@ -16,6 +16,7 @@ def speech_data(name: str) -> str:
 @dataclass(frozen=True)
 class SpeechSettings:
     max_form_words: int
+    british_variants: bool
     survey_colour_max_words: int
     categories: tuple[str, ...]
     articles: tuple[str, ...]
@@ -27,12 +28,12 @@ class SpeechSettings:
     max_clause_groups: int
     max_clauses: int
     max_items: int
+    prior_exponent: float
     min_confidence: float
     alternatives: int
     sample_rate: int
     spellings: tuple[tuple[str, str], ...]
     nbest_paths: int
-    confidence_scale: float
     decoder: dict[str, float | bool]
 
     def same_spelling(self, one: str, other: str) -> bool:
@@ -45,6 +46,7 @@ class SpeechSettings:
         vocabulary, grammar, recogniser = data["vocabulary"], data["grammar"], data["recogniser"]
         return cls(
             max_form_words=int(vocabulary["max_form_words"]),
+            british_variants=bool(vocabulary["british_variants"]),
             survey_colour_max_words=int(vocabulary["survey_colour_max_words"]),
             categories=tuple(vocabulary["categories"]),
             articles=tuple(grammar["articles"]),
@@ -56,11 +58,11 @@ class SpeechSettings:
             max_clause_groups=int(grammar["max_clause_groups"]),
             max_clauses=int(grammar["max_clauses"]),
             max_items=int(grammar["max_items"]),
+            prior_exponent=float(grammar["prior_exponent"]),
             min_confidence=float(recogniser["min_confidence"]),
             alternatives=int(recogniser["alternatives"]),
             sample_rate=int(recogniser["sample_rate"]),
             nbest_paths=int(recogniser["nbest_paths"]),
-            confidence_scale=float(recogniser["confidence_scale"]),
             decoder={str(k): v if isinstance(v, bool) else float(v) for k, v in recogniser["decoder"].items()},
             spellings=tuple((str(a), str(b)) for a, b in data["vocabulary"]["spellings"]),
         )

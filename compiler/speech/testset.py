@@ -8,16 +8,19 @@ used by `cnlmc listen` itself."""
 from __future__ import annotations
 
 import math
+import random
 import shutil
 import subprocess
 import tomllib
 import wave
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from ..api import compile_source
 from ..lexicon import Lexicon
 from .listen import Listener
 from .recogniser import Hypothesis
@@ -59,9 +62,33 @@ class Phrases:
             materials, refinements = materials[: data["test_materials"]], refinements[: data["test_refinements"]]
         return cls(tuple(materials), tuple(refinements), str(data["base"]))
 
+    @classmethod
+    def held_out(cls, lexicon: Lexicon, sayable: Callable[[str], bool], exclude: Phrases) -> Phrases:
+        """Phrases drawn (seeded) from the lexicon's own `example` fields, per category as
+        test_phrases.toml's [held_out] says: never looked at while tuning, only scored. An example
+        is kept when the grammar can say it; it is a refinement when it names no material alone."""
+        data: dict[str, Any] = tomllib.loads(speech_data("test_phrases.toml"))
+        spec = data["held_out"]
+        draw = random.Random(int(spec["seed"]))
+        seen = {*exclude.materials, *exclude.refinements}
+        materials: list[str] = []
+        refinements: list[str] = []
+        for category, count in spec["per_category"].items():
+            examples = sorted({_spoken(e.get("example", "")) for e in lexicon.entries.get(category, {}).values()})
+            candidates = [t for t in examples if t and t not in seen and sayable(t)]
+            for text in draw.sample(candidates, min(count, len(candidates))):
+                seen.add(text)
+                named = compile_source(text, "<held-out>", lexicon).materials
+                (materials if named else refinements).append(text)
+        return cls(tuple(materials), tuple(refinements), exclude.base)
+
     def utterances(self, voices: tuple[str, ...], speeds: tuple[int, ...], noisy: tuple[bool, ...]) -> list[Utterance]:
         said = [(t, False) for t in self.materials] + [(t, True) for t in self.refinements]
         return [Utterance(t, v, s, n, r) for n in noisy for v in voices for s in speeds for t, r in said]
+
+
+def _spoken(example: str) -> str:
+    return " ".join(example.lower().replace(",", " ").split())
 
 
 def tools_missing() -> list[str]:

@@ -171,3 +171,21 @@ def test_listen_refuses_a_file_that_is_not_a_wav(tmp_path: Path) -> None:
     text.write_text("white varnished oak\n", "utf-8")
     done = run_cnlmc("listen", "--from", str(text))
     assert done.returncode == 2 and "not a PCM WAV file" in done.stderr and "Traceback" not in done.stderr
+
+
+def test_common_words_weigh_more_in_their_slot(model: SpeechModel) -> None:
+    """A slot's words are weighted by the language model's word frequencies: 'steel' over 'terrazzo'."""
+    by_source: dict[int, dict[str, float]] = defaultdict(dict)
+    for transition in model.grammar.transitions:
+        if len(transition) == 4:
+            by_source[transition[0]][transition[3]] = transition[2]
+    nouns = [arcs for arcs in by_source.values() if {"steel", "terrazzo"} <= set(arcs)]
+    assert nouns
+    for arcs in nouns:
+        assert arcs["steel"] > 10 * arcs["terrazzo"]
+        assert sum(arcs.values()) <= 1.0 + 1e-6  # the slot's shares of one
+
+
+def test_british_pronunciations_beside_american_ones(model: SpeechModel) -> None:
+    lines = set(model.dictionary.splitlines())
+    assert {"darker D AA R K ER", "darker(2) D AA K AH"} <= lines
