@@ -90,6 +90,10 @@ class FormIndex:
                 out.append(form)
         return out[:limit]
 
+    def forget_words(self) -> None:
+        """Drop the typos remembered for recent words (the index itself stays)."""
+        self._recent.clear()
+
     def _typos(self, low: str, wanted: frozenset[str]) -> list[tuple[int, str]]:
         """(edits, form) of every form of `wanted` within allowed_edits(low) edits of `low`."""
         typos = self._recent.get(low)

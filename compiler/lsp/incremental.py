@@ -305,11 +305,18 @@ class Analyzer:
 
     def clear(self) -> None:
         """Drop everything learnt from documents (when none is open): the blocks and lines kept
-        here and what the lexicon memoised about their words (its tagger's word memo, made again
-        on first use, and its suggestions; not its suggestion index, made once per lexicon)."""
+        here and what the lexicon memoised about their words: its tagger (with its word memo) and
+        its word formation engine (with its memo and the look-up of the tagger that made it), both
+        made again on first use, its suggestions and the typos its suggestion index remembers (not
+        the index, made once per lexicon). A memo entry that outlived its document would keep a
+        whole block of the allocator's memory from going back to the system."""
         self._blocks.clear()
-        self.lexicon.caches.tagger = None
-        self.lexicon.caches.suggestions.clear()
+        caches = self.lexicon.caches
+        caches.tagger = None
+        caches.word_formation = None
+        caches.suggestions.clear()
+        if caches.suggestion_index is not None:
+            caches.suggestion_index.forget_words()
 
 
 def _with_spans(result: Result) -> Iterator[Diagnostic]:
