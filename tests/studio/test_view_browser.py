@@ -112,7 +112,7 @@ def test_what_it_looks_like(shown: dict[str, np.ndarray]) -> None:
 def test_variants_mesh_environment_exposure(view_page: tuple[Any, PageLog]) -> None:
     page, _ = view_page
     page.evaluate("""() => { window.frames_seen = [];
-        window.view.canvas.addEventListener("frame", (e) => window.frames_seen.push(e.detail.ms)); }""")
+        window.view.canvas.addEventListener("frame", (e) => window.frames_seen.push(e.detail)); }""")
     pair = show(page, "velvet or oak")
     half = SIZE // 2
     left, right = pair[:, :half, :3].astype(float), pair[:, half:, :3].astype(float)
@@ -144,7 +144,8 @@ def test_variants_mesh_environment_exposure(view_page: tuple[Any, PageLog]) -> N
     page.evaluate("window.view.setEnvironment('studio')")
     assert np.abs(frame(page).astype(int) - sphere.astype(int)).max() <= 1
     seen = page.evaluate("window.frames_seen")
-    assert len(seen) >= 6 and all(ms > 0 for ms in seen)
+    assert len(seen) >= 6 and all(f["ms"] > 0 for f in seen)
+    assert {f["scale"] for f in seen} == {0.5, 1}  # show(): a quick frame at half size, then the full one
 
 
 def test_no_console_errors(view_page: tuple[Any, PageLog]) -> None:

@@ -60,9 +60,10 @@ export function framebufferFor(gl, texture, level = 0, depth = null) {
   return fbo;
 }
 
-// The frame's targets: HDR colour (half float) with depth, and the quarter-size background.
+// The frame's targets: HDR colour (half float) with depth, the quarter-size background and, for
+// a frame drawn smaller than the canvas (`scaled`), the 8-bit image that is then stretched onto it.
 export class Targets {
-  constructor(gl, width, height) {
+  constructor(gl, width, height, scaled = false) {
     this.gl = gl;
     this.width = width;
     this.height = height;
@@ -77,6 +78,14 @@ export class Targets {
     this.backgroundHeight = Math.max(Math.floor(height / 4), 1);
     this.background = floatTexture(gl, this.backgroundWidth, this.backgroundHeight, null);
     this.backgroundFbo = framebufferFor(gl, this.background);
+    this.ldr = null;
+    this.ldrFbo = null;
+    if (scaled) {
+      this.ldr = gl.createTexture();
+      gl.bindTexture(gl.TEXTURE_2D, this.ldr);
+      gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, width, height);
+      this.ldrFbo = framebufferFor(gl, this.ldr);
+    }
   }
 
   release() {
@@ -86,6 +95,10 @@ export class Targets {
     gl.deleteTexture(this.hdr);
     gl.deleteTexture(this.background);
     gl.deleteRenderbuffer(this.depth);
+    if (this.ldr) {
+      gl.deleteFramebuffer(this.ldrFbo);
+      gl.deleteTexture(this.ldr);
+    }
   }
 }
 

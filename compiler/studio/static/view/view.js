@@ -18,7 +18,9 @@ const ATTRIBUTES = [["in_position", 3, 0], ["in_normal", 3, 12], ["in_tangent", 
 const STRIDE = 44;
 
 export class MaterialView {
-  constructor(canvas, { dataUrl = "/view-data", filesUrl = "/files" } = {}) {
+  // quickScale: show() first draws the new material at this fraction of the canvas size (stretched
+  // onto it: a software rasteriser shades 4x fewer pixels at 0.5), then the full frame; null: full only.
+  constructor(canvas, { dataUrl = "/view-data", filesUrl = "/files", quickScale = 0.5 } = {}) {
     this.canvas = canvas;
     this.dataUrl = dataUrl.replace(/\/$/, "");
     this.filesUrl = filesUrl.replace(/\/$/, "");
@@ -27,6 +29,8 @@ export class MaterialView {
     if (!gl.getExtension("EXT_color_buffer_float")) throw new Error("view: WebGL2 without EXT_color_buffer_float");
     this.gl = gl;
     this.exposure = 1;
+    this.quickScale = quickScale;
+    this.sized = new Map(); // "w x h" -> Targets
     this.orbit = new Orbit();
     this.orbit.attach(canvas, () => this.requestDraw());
     this.programs = new Map(); // source -> program (one per shader, kept while the view lives)
@@ -67,6 +71,11 @@ export class MaterialView {
     for (const old of this.entries) this.releaseEntry(old);
     this.entries = entries;
     this.pruneMaps();
+    if (this.quickScale && this.quickScale < 1) {
+      this.draw(this.quickScale);
+      await new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0))); // shown first
+      if (ticket !== this.shows) return null;
+    }
     return this.draw();
   }
 
@@ -202,15 +211,27 @@ export class MaterialView {
     });
   }
 
-  draw() {
+  // The targets of a frame this size, made once (the full size and the quick one).
+  targetsFor(width, height) {
+    const scaled = width !== this.canvas.width || height !== this.canvas.height;
+    const key = `${width}x${height}`;
+    if (!this.sized.has(key)) {
+      if (!scaled) {
+        for (const [k, t] of this.sized) if (!t.ldr) { t.release(); this.sized.delete(k); } // the canvas was resized
+      }
+      this.sized.set(key, new Targets(this.gl, width, height, scaled));
+    }
+    return this.sized.get(key);
+  }
+
+  // Draw a frame (at `scale` of the canvas size, stretched onto it when < 1); returns its time in ms
+  // and dispatches the "frame" event {ms, scale}.
+  draw(scale = 1) {
     const start = performance.now();
     const gl = this.gl;
-    const width = this.canvas.width, height = this.canvas.height;
-    if (!this.targets || this.targets.width !== width || this.targets.height !== height) {
-      if (this.targets) this.targets.release();
-      this.targets = new Targets(gl, width, height);
-    }
-    const t = this.targets;
+    const width = Math.max(1, Math.round(this.canvas.width * scale));
+    const height = Math.max(1, Math.round(this.canvas.height * scale));
+    const t = (this.targets = this.targetsFor(width, height));
     gl.bindFramebuffer(gl.FRAMEBUFFER, t.hdrFbo);
     gl.viewport(0, 0, width, height);
     gl.clearColor(0, 0, 0, 0);
@@ -227,9 +248,15 @@ export class MaterialView {
     }
     this.drawBackground(cameras);
     this.drawTonemap();
+    if (t.ldr) {
+      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, t.ldrFbo);
+      gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
+      gl.blitFramebuffer(0, 0, width, height, 0, 0, this.canvas.width, this.canvas.height, gl.COLOR_BUFFER_BIT, gl.LINEAR);
+      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    }
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4)); // the frame is finished
     const ms = performance.now() - start;
-    this.canvas.dispatchEvent(new CustomEvent("frame", { detail: { ms } }));
+    this.canvas.dispatchEvent(new CustomEvent("frame", { detail: { ms, scale } }));
     return ms;
   }
 
@@ -298,7 +325,7 @@ export class MaterialView {
 
   drawTonemap() {
     const gl = this.gl, t = this.targets, prog = this.tonemapProgram;
-    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, t.ldrFbo); // null (the canvas) for a full-size frame
     gl.viewport(0, 0, t.width, t.height);
     gl.useProgram(prog);
     gl.activeTexture(gl.TEXTURE0);
