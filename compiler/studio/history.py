@@ -1,11 +1,19 @@
-"""Undo and redo over the document texts a session has shown: each step that compiled to a
-different material set is one entry; undo and redo move along them, a new step after an undo
+"""Undo and redo over the document texts a session has shown: each step that compiled to
+materials that look different is one entry; undo and redo move along them, a new step after an undo
 drops the steps that were undone (as every editor's undo does)."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 from typing import Any
+
+#: what a material's IR says beyond its look: its name, its words and where each value came from
+WORDING = ("name", "phrase", "provenance")
+
+
+def appearance(materials: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """The materials without their wording: what the view draws and the exports hold."""
+    return [{k: v for k, v in m.items() if k not in WORDING} for m in materials]
 
 
 @dataclass
@@ -30,10 +38,11 @@ class History:
         return self.steps[self.at] if self.steps else None
 
     def push(self, step: Step) -> bool:
-        """Record a step unless its materials equal the current one's; True when recorded."""
+        """Record a step unless it looks as the current one does (the same materials, however they
+        are worded: 'alum' and 'aluminum' are one step); True when recorded."""
         current = self.current
-        if current is not None and current.materials == step.materials:
-            current.text = step.text  # the same material, typed differently: the newest text
+        if current is not None and appearance(current.materials) == appearance(step.materials):
+            current.text, current.materials = step.text, step.materials  # the same look, worded anew
             return False
         del self.steps[self.at + 1 :]
         self.steps.append(step)

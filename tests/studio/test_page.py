@@ -192,8 +192,8 @@ def test_model_viewer_loads_the_glb(page: Any) -> None:
         assert time.monotonic() < deadline, page.inner_text("#problem")
         time.sleep(0.1)
     model = page.locator("#model")
-    assert model.get_attribute("src", timeout=1000).endswith(".glb")
-    assert model.get_attribute("ios-src", timeout=1000).endswith(".usdz")
+    assert model.get_attribute("src").endswith(".glb")
+    assert model.get_attribute("ios-src").endswith(".usdz")
     assert model.get_attribute("ar-scale") == "fixed"
     page.click("#ar-close")
 
