@@ -7,11 +7,17 @@ normal distribution, a second microfacet lobe), not as single flakes: per unit a
 ``flake_density`` of the base is flakes, whose normals follow GGX with α = flake_roughness²
 (the spread of their orientations), and whose reflectance is Schlick with F0 = ``flake_color``:
 
-    f_base' = (1 − d) · f_base  +  d · flake_color-Schlick(wo'·h) D_α(h) V_α(wo', wi')
+    f_base' = (1 − d s) · f_base  +  d · flake_color-Schlick(wo'·h) D_α(h) V_α(wo', wi'),
+    s = max(flake_color)
+
+(a flake hides the base by what it reflects: an aluminium flake ~0.92, a pearl's TiO₂-coated
+mica platelet, which transmits the rest, 0.35; with s = 1 the mix is convex).
 
 evaluated with the directions refracted into the coat (``layered.coated``: the flakes are a
 directional lobe, so they get the coat's 1/η_c² compression, and the coat's Fresnel and
-absorption). A convex mix of two lobes that each keep the white furnace ≤ 1 keeps it ≤ 1.
+absorption). With white flakes the mix is convex, so the white furnace stays ≤ 1; coloured flakes
+(s < 1) reflect less than s at normal incidence and a white base loses d s, so the furnace holds
+wherever Schlick's rise towards grazing stays under the coat's losses (tested per phrase).
 What the flakes add to the look: a bright lobe around the mirror direction that is much wider
 than the coat's (the metallic "face"), darkening away from it and at grazing (the "flop"), and —
 drawn by the preview, not by this mean BRDF — sparkle: the scatter of how many flakes in a
@@ -53,6 +59,12 @@ def flake_alpha(roughness: Any) -> Real:
     return np.clip(np.asarray(roughness, np.float64) ** 2, FLAKE_ALPHA_MIN, 1.0)
 
 
+def flake_opacity(color: Any) -> float:
+    """How much of the base a flake hides: its reflectance's brightest channel (an aluminium flake
+    hides ~0.92, a pearl platelet, which lets through what it does not reflect, 0.35)."""
+    return float(np.max(np.asarray(color, np.float64)))
+
+
 def flake_lobe(wo: Any, wi: Any, color: Any, alpha: float) -> Real:
     """F D V of a population of flakes: GGX normals of width α, Schlick F0 = color; RGB (..., 3)."""
     f0 = np.asarray(color, np.float64)
@@ -63,11 +75,12 @@ def _flaked_parts(material: Any, fresnel: str, multiscatter: bool, ward_form: st
     """The base's (specular, diffuse) parts with the flakes mixed in (a callable of wo, wi)."""
     p = material.params
     density, alpha, color = float(p.flake_density), float(flake_alpha(p.flake_roughness)), p.flake_color
+    keep = 1.0 - density * flake_opacity(color)
 
     def parts(wo: Real, wi: Real) -> tuple[Real, Real]:
         spec, diff = _base_parts(material, wo, wi, fresnel, multiscatter, ward_form, outside_ior)
         flakes = flake_lobe(wo, wi, color, alpha)
-        return (1.0 - density) * spec + density * flakes, (1.0 - density) * diff
+        return keep * spec + density * flakes, keep * diff
 
     return parts
 

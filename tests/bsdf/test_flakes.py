@@ -51,6 +51,17 @@ def test_white_furnace_at_most_one(phrase):
     assert np.all(a <= 1.0 + 5e-3), a
 
 
+@pytest.mark.parametrize("phrase", FLAKED)
+def test_white_body_under_its_own_flakes_at_most_one(phrase):
+    """Coloured or partly transparent flakes (pearl: s = 0.35) hide less of the base: still <= 1."""
+    m = material(phrase)
+    params = {**m["params"], "base_color": [1.0, 1.0, 1.0]}
+    if params.get("coat"):
+        params["coat"] = {**params["coat"], "color": [1.0, 1.0, 1.0]}
+    a = albedo_full({**m, "params": params}, np.asarray(MUS), n_samples=4096)
+    assert np.all(a <= 1.0 + 5e-3), a
+
+
 def test_the_furnace_check_can_fail():
     """The flakes added on top of the whole base (no 1 - density share) break the budget."""
     m = whitened(material("glittery plastic"))
