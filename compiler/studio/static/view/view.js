@@ -16,6 +16,7 @@ const IDENTITY3 = [1, 0, 0, 0, 1, 0, 0, 0, 1];
 const IDENTITY4 = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];
 const ATTRIBUTES = [["in_position", 3, 0], ["in_normal", 3, 12], ["in_tangent", 3, 24], ["in_uv", 2, 36]];
 const STRIDE = 44;
+const KEPT_MAPS = 24; // our choice: 8 materials' worth of maps (512² half-float RGBA + mips: 2.7 MB each)
 
 export class MaterialView {
   // quickScale: show() first draws the new material at this fraction of the canvas size (stretched
@@ -79,14 +80,17 @@ export class MaterialView {
     return this.draw();
   }
 
-  // Map textures no shown material samples go (a long session of textured edits would pile them up).
+  // Map textures beyond the KEPT_MAPS most recently used go (a long session of textured edits
+  // would pile them up; undo and edits back and forth find the recent ones).
   pruneMaps() {
     const used = new Set(this.entries.flatMap((e) => Object.values(e.payload.maps).map((m) => m.file)));
-    for (const [file, tex] of this.maps) {
-      if (!used.has(file)) {
-        this.gl.deleteTexture(tex);
-        this.maps.delete(file);
-      }
+    let spare = this.maps.size - KEPT_MAPS;
+    for (const [file, tex] of this.maps) { // oldest first (mapTexture re-inserts what it hands out)
+      if (spare <= 0) break;
+      if (used.has(file)) continue;
+      this.gl.deleteTexture(tex);
+      this.maps.delete(file);
+      spare -= 1;
     }
   }
 
@@ -124,11 +128,14 @@ export class MaterialView {
   }
 
   async mapTexture(map) {
-    if (!this.maps.has(map.file)) {
+    let tex = this.maps.get(map.file);
+    if (!tex) {
       const bits = new Uint16Array(await fetchBytes(`${this.filesUrl}/${encodeURIComponent(map.file)}`));
-      this.maps.set(map.file, floatTexture(this.gl, map.width, map.height, bits, { mipmaps: true, repeat: [true, true] }));
+      tex = floatTexture(this.gl, map.width, map.height, bits, { mipmaps: true, repeat: [true, true] });
     }
-    return this.maps.get(map.file);
+    this.maps.delete(map.file);
+    this.maps.set(map.file, tex); // the most recently used last
+    return tex;
   }
 
   async setMesh(nameOrArrayBuffer) {
