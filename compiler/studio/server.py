@@ -116,7 +116,7 @@ def refuse(studio: Studio, request: web.Request) -> tuple[int, str] | None:
     if is_loopback(studio.host) and not is_loopback(host):
         return 421, "this studio answers only on localhost"
     origin = request.headers.get("Origin")
-    if origin is not None and origin not in (f"http://{request.host}", "null") and request.path.startswith("/ws"):
+    if origin is not None and origin != f"http://{request.host}" and request.path.startswith("/ws"):
         return 403, "a WebSocket from another site"
     if studio.token is not None:
         given = request.query.get("token") or request.cookies.get(TOKEN_COOKIE)

@@ -86,9 +86,10 @@ async def test_no_file_outside_the_static_folder_or_a_session_folder(client: Tes
 async def test_a_page_from_another_host_or_origin_is_refused(client: TestClient[Any, Any]) -> None:
     response = await client.get("/", headers={"Host": "evil.example:80"})
     assert response.status == 421  # DNS rebinding: another name pointing at 127.0.0.1
-    with pytest.raises(WSServerHandshakeError) as refused:
-        await client.ws_connect("/ws", headers={"Origin": "http://evil.example"})
-    assert refused.value.status == 403
+    for origin in ("http://evil.example", "null"):  # another site; a local file or a sandboxed frame
+        with pytest.raises(WSServerHandshakeError) as refused:
+            await client.ws_connect("/ws", headers={"Origin": origin})
+        assert refused.value.status == 403
 
 
 async def test_off_loopback_every_request_needs_the_token(tmp_path: Path) -> None:
