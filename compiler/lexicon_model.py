@@ -78,6 +78,9 @@ class LexiconCaches:
     - word_formation: the rules of word_formation*.toml, compiled on first use (cnlmc.word_formation)
     - stage_orders: the describing groups' (kind, adjective key, has a colour) -> the canonical order
       they apply in (passes/order.py)
+    - noun_plans: noun key -> what apply_noun sets from that noun, read from its entry once (passes/base.py)
+    - pattern_colours: (linear RGB, graph) -> the colour a pattern of that graph can carry and the
+      OKLab numbers its provenance names (passes/textured_colour.py)
     """
 
     MAX_ENTRIES = 4096  # a memo this full starts over
@@ -94,6 +97,8 @@ class LexiconCaches:
         self.rounded_optics: dict[tuple[str, str], list[float]] = {}
         self.word_formation: WordFormation | None = None
         self.stage_orders: dict[tuple[tuple[str, str | None, bool], ...], tuple[tuple[int, str], ...]] = {}
+        self.noun_plans: dict[str, Any] = {}
+        self.pattern_colours: dict[tuple[tuple[float, ...], str], Any] = {}
 
 
 class Lexicon:
