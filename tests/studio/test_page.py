@@ -197,6 +197,21 @@ def test_model_viewer_loads_the_glb(page: Any) -> None:
     assert model.get_attribute("src").endswith(".glb")
     assert model.get_attribute("ios-src").endswith(".usdz")
     assert model.get_attribute("ar-scale") == "fixed"
+
+
+def test_a_photo_with_the_marker_comes_back_composited(page: Any, tmp_path: Path) -> None:
+    pytest.importorskip("cv2", reason="marker AR needs OpenCV (extra: ar)")
+    import cv2
+
+    from cnlmc.backends.ar.synthetic import synthetic_photo
+
+    photo, _K, _corners = synthetic_photo(np.array([2.2, 0.3, -0.2]), np.array([0.0, 0.02, 0.5]), 320, 240)
+    path = tmp_path / "table.png"
+    cv2.imwrite(str(path), photo)
+    page.set_input_files("#photo", str(path))  # the AR dialog is open (the test before)
+    page.wait_for_selector("#composite:not([hidden])", timeout=DRAW_SECONDS * 1000)
+    assert page.get_attribute("#composite", "src").endswith("/ar/composite.png")
+    assert page.evaluate("document.getElementById('composite').naturalWidth") == 320
     page.click("#ar-close")
 
 
