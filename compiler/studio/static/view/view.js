@@ -65,6 +65,7 @@ export class MaterialView {
     const entries = [];
     for (const payload of list) entries.push(await this.entry(payload));
     await this.resolvePrefiltered(entries);
+    while (entries.some((e) => e.env !== this.environment)) await this.resolvePrefiltered(entries); // changed meanwhile
     if (ticket !== this.shows) {
       for (const entry of entries) this.releaseEntry(entry);
       return null;
@@ -110,6 +111,7 @@ export class MaterialView {
   async resolvePrefiltered(entries) {
     const env = this.environment;
     for (const entry of entries) {
+      entry.env = env;
       entry.prefiltered = {};
       for (const [name, alpha] of Object.entries(entry.payload.prefilter)) {
         entry.prefiltered[name] = await env.prefilteredAt(alpha);
