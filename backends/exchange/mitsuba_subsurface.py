@@ -30,9 +30,10 @@ Prop = dict[str, Any]
 #: our choice: a preview sphere of radius 1 unit is a 10 cm ball (a candle, an apple, a teapot's
 #: body), so millimetre mean free paths show as they would on such an object
 METRES_PER_UNIT = 0.05
-#: volpath's depth counts scattering events: a dense medium needs hundreds (our choice: enough for
-#: a 10 cm marble ball to converge in brightness; measured in docs/subsurface.md)
-VOLUME_MAX_DEPTH = 512
+#: volpathmis's depth counts scattering events, and a bright medium needs about 1/(3 (1 - α')) of
+#: them per path (wax 200, marble 300, cream 20 000): a scene with a medium renders to any depth (-1;
+#: Russian roulette ends the paths), unbiased; `mitsuba scene.xml -D max_depth=N` caps it (darker)
+VOLUME_MAX_DEPTH = -1
 
 
 def _prop(kind: str, name: str, value: Any) -> Prop:

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from cnlmc.api import compile_source
@@ -27,7 +27,7 @@ unit = st.floats(0.01, 0.99)
 radius = st.floats(1e-4, 0.05)
 
 
-@settings(max_examples=60, deadline=None, derandomize=True)
+@settings(max_examples=60, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
 @given(color=st.tuples(unit, unit, unit), radii=st.tuples(radius, radius, radius), g=st.floats(-0.9, 0.9))
 def test_the_inversion_round_trips(color, radii, g):
     """(color, radius, g) -> sigma_a, sigma_s -> (color, radius): the same to 1e-9."""
@@ -73,7 +73,7 @@ def test_the_diffusion_profile_returns_the_albedo_and_no_more(albedo):
     assert total <= 1.0
 
 
-@settings(max_examples=40, deadline=None, derandomize=True)
+@settings(max_examples=40, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
 @given(color=st.tuples(unit, unit, unit), radii=st.tuples(radius, radius, radius), t=st.floats(1e-5, 0.1))
 def test_a_sheet_returns_no_more_light_than_it_gets(color, radii, t):
     reflectance, transmittance = slab(medium_of(color, radii, 0.0, 1.45), t)
