@@ -451,7 +451,7 @@ def render_xml(entries: list[dict[str, Any]], options: Options, env: jinja2.Envi
         camera=camera,
         spp=options.spp,
         resolution=options.resolution,
-        max_depth=max(options.max_depth, VOLUME_MAX_DEPTH) if volume else options.max_depth,
+        max_depth=VOLUME_MAX_DEPTH if volume else options.max_depth,
         volume=volume,
         envmap=options.envmap,
         backdrop=backdrop(camera),
