@@ -104,7 +104,8 @@ CAPABILITIES: Capabilities = {
     ),
     "subsurface.thin": (
         "approximate",
-        "principledthin with the Kubelka-Munk sheet's R + T and transmitted share: diffuse through, no forward peak",
+        "blendbsdf: a two-sided diffuse front of base_color and a diffuse transmitter of the Kubelka-Munk T: "
+        "diffuse through, no forward peak",
     ),
     "maps.base_color": BAKED,
     "maps.roughness": (
