@@ -8,10 +8,11 @@ reflectance in [0, 1]) and `scale` = that channel × METRES_PER_UNIT (σ per met
 METRES_PER_UNIT metres). The scene then uses `volpathmis` (spectral MIS: Mitsuba's `volpath` is biased dark for a chromatic medium, 0.69 instead of 1 in blue in a white furnace; volpathmis 0.96-1.02). This is exact: a path tracer of
 the medium the IR names.
 
-`thin`: Mitsuba 3 has no thin translucent slab BSDF, so the sheet is `principledthin` (two-sided,
-thin-walled): base_color = R + T and diff_trans = 2 T / (R + T) of the Kubelka–Munk slab of the
-medium at the IR's thickness (cnlmc.bsdf.subsurface.slab), its IOR and roughness the IR's. This is
-an approximation (diffuse in, diffuse out: no forward peak through the sheet).
+`thin`: Mitsuba 3 has no thin translucent slab BSDF, so the sheet is a `blendbsdf` of a two-sided
+`diffuse` of base_color (the front the eye sees) and a pure diffuse transmitter (`principledthin`,
+diff_trans 2) of the Kubelka–Munk slab's transmittance T at the IR's thickness
+(cnlmc.bsdf.subsurface.slab). This is an approximation (diffuse in, diffuse out: no forward peak
+through the sheet, no specular lobe).
 """
 
 from __future__ import annotations
@@ -24,7 +25,7 @@ from cnlmc.bsdf.subsurface import medium_of, slab
 from cnlmc.conventions import ALPHA_MIRROR
 from cnlmc.material import Material
 
-from .conversions import alpha_pair, alpha_to_roughness, rounded
+from .conversions import alpha_pair, rounded
 
 Prop = dict[str, Any]
 #: our choice: a preview sphere of radius 1 unit is a 10 cm ball (a candle, an apple, a teapot's
@@ -83,27 +84,32 @@ def subsurface_bsdf(material: Material) -> Prop:
     return _node("roughdielectric", [_prop("string", "distribution", "ggx"), _prop("float", "alpha", alpha), *props])
 
 
-def sheet_weights(material: Material) -> tuple[list[float], list[float]]:
-    """(R + T, T / (R + T)) of the Kubelka–Munk slab of the material's sheet."""
+def sheet_transmittance(material: Material) -> list[float]:
+    """T of the Kubelka–Munk slab of the material's sheet, per channel."""
     sub = material.params.subsurface
     assert sub is not None and sub.thickness is not None, "a thin sheet has a thickness"
     medium = medium_of(sub.color, sub.radius, float(sub.anisotropy), float(material.params.ior))
-    reflectance, transmittance = slab(medium, float(sub.thickness))
-    total = np.clip(reflectance + transmittance, 0.0, 1.0)
-    share = np.where(total > 1e-9, transmittance / np.maximum(total, 1e-9), 0.0)
-    return [float(v) for v in total], [float(v) for v in share]
+    _reflectance, transmittance = slab(medium, float(sub.thickness))
+    return [float(v) for v in np.clip(transmittance, 0.0, 1.0)]
 
 
 def thin_bsdf(material: Material) -> Prop:
-    total, share = sheet_weights(material)
-    params = material.params
-    roughness = alpha_to_roughness(float(max(alpha_pair(params))))
-    return _node(
+    """blendbsdf: weight w = max T; (1 - w) a two-sided diffuse of base_color (the front the eye sees),
+    w a pure diffuse transmitter (principledthin, diff_trans 2) of colour T / w: it reflects
+    (1 - w) base_color and transmits T, at most 1 in every channel (T <= w)."""
+    transmittance = sheet_transmittance(material)
+    weight = max(max(transmittance), 1e-6)
+    front = _node("diffuse", [_prop("rgb", "reflectance", rounded(np.clip(material.params.base_color, 0.0, 1.0)))])
+    through = _node(
         "principledthin",
         [
-            _prop("rgb", "base_color", rounded(total)),
-            _prop("float", "diff_trans", 2.0 * float(np.mean(share))),
-            _prop("float", "roughness", min(max(roughness, 0.0), 1.0)),
-            _prop("float", "eta", params.ior),
+            _prop("rgb", "base_color", rounded([t / weight for t in transmittance])),
+            _prop("float", "diff_trans", 2.0),
+            _prop("float", "spec_trans", 0.0),
+            _prop("float", "roughness", 1.0),
+            _prop("float", "eta", material.params.ior),
         ],
     )
+    blend = _node("blendbsdf", [_prop("float", "weight", weight)])
+    blend["children"] = [{**_node("twosided", []), "children": [front]}, through]
+    return blend
