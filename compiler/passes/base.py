@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, NamedTuple
 
 from .. import ast
-from ..lexicon import Entry
+from ..lexicon import Entry, LexiconCaches
 from ..state import NOUN_PARAMS, Context, MaterialState, Step
 
 
@@ -22,25 +22,65 @@ def noun_of(state: MaterialState) -> Entry:
 def apply_noun(state: MaterialState, ctx: Context) -> MaterialState:
     word = noun_word(state)
     entry = ctx.lexicon.require("nouns", word.key)
+    plan = _noun_plan(entry, ctx)
     state.noun = entry
-    state.kind = entry.get("model")
-    rule, words, data = f"nouns.{entry.key}", (word,), entry.data
-    source, params, provenance = data.get("source"), state.params, state.provenance
-    for param in NOUN_PARAMS:  # state.record, written out: nouns set up to eight parameters
-        if param in data:
-            value = params[param] = data[param]
-            provenance.setdefault(param, []).append(Step(rule, words, value, source))
+    state.kind = plan.kind
+    words, params, provenance = (word,), state.params, state.provenance
+    rule, source = plan.rule, plan.source
+    for param, value in plan.params:  # state.record, written out: nouns set up to eight parameters
+        params[param] = value
+        provenance.setdefault(param, []).append(Step(rule, words, value, source))
     params.setdefault("diffuse_roughness", 0.0)
     params.setdefault("anisotropy", 0.0)
     params.setdefault("anisotropy_rotation", 0.0)
-    for role, ref in entry.get("maps", {}).items():
-        state.maps[role] = _map_ref(ref, ctx)
-        state.note(f"maps.{role}", ref["graph"], f"nouns.{entry.key}.maps", (word,))
-    if entry.get("coat"):
-        state.coat = dict(ctx.lexicon.require("coats", entry.get("coat")).data)
-        state.coat["name"] = entry.get("coat")
-        state.note("coat", entry.get("coat"), f"nouns.{entry.key}.coat", (word,))
+    for role, graph, output, map_params in plan.maps:
+        state.maps[role] = {"graph": graph, "output": output, "params": dict(map_params), "seed": ctx.seed}
+        state.note(f"maps.{role}", graph, plan.maps_rule, words)
+    if plan.coat is not None:
+        coat_name, coat = plan.coat
+        state.coat = dict(coat)
+        state.coat["name"] = coat_name
+        state.note("coat", coat_name, plan.coat_rule, words)
     return state
+
+
+class NounPlan(NamedTuple):
+    """What apply_noun sets from one noun entry, read once per lexicon (LexiconCaches.noun_plans)."""
+
+    entry: Entry  # the entry it was read from
+    kind: Any
+    rule: str
+    source: Any
+    params: tuple[tuple[str, Any], ...]  # the entry's own values (the IR keeps a lexicon list by identity)
+    maps: tuple[tuple[str, Any, Any, dict[str, Any]], ...]  # role, graph, output, params at weight 1
+    maps_rule: str
+    coat: tuple[Any, dict[str, Any]] | None  # the coat's name and its entry's data
+    coat_rule: str
+
+
+def _noun_plan(entry: Entry, ctx: Context) -> NounPlan:
+    plans = ctx.lexicon.caches.noun_plans
+    plan: NounPlan | None = plans.get(entry.key)
+    if plan is None or plan.entry is not entry:
+        data, coat_name = entry.data, entry.get("coat")
+        maps = tuple(
+            (role, ref["graph"], ref.get("output", "color"), _map_ref(ref, ctx)["params"])
+            for role, ref in entry.get("maps", {}).items()
+        )
+        if len(plans) >= LexiconCaches.MAX_ENTRIES:
+            plans.clear()
+        plan = plans[entry.key] = NounPlan(
+            entry,
+            entry.get("model"),
+            f"nouns.{entry.key}",
+            data.get("source"),
+            tuple((param, data[param]) for param in NOUN_PARAMS if param in data),
+            maps,
+            f"nouns.{entry.key}.maps",
+            (coat_name, ctx.lexicon.require("coats", coat_name).data) if coat_name else None,
+            f"nouns.{entry.key}.coat",
+        )
+    return plan
 
 
 def _map_ref(ref: dict[str, Any], ctx: Context, weight: float = 1.0) -> dict[str, Any]:

@@ -29,6 +29,7 @@ from typing import Any
 from .. import ast
 from ..colour import linear_to_oklab, oklab_to_linear_in_gamut
 from ..graphs import graph_palette
+from ..lexicon import LexiconCaches
 from ..state import Context, MaterialState
 
 __all__ = ["keep_pattern_visible"]
@@ -45,18 +46,43 @@ def keep_pattern_visible(
         return rgb
     graph = str(ref.get("graph", ""))
     palette = graph_palette(graph)
+    was, held, chroma, factor, carried = _carried_colour(ctx, rgb, graph, palette)
+    _set_dark_params(state, graph, palette, was, words, noun_text)
+    if carried is None:
+        return rgb
+    rgb = list(carried)
+    state.note("base_color", rgb, _rule(words, was, held, chroma, factor, noun_text), tuple(words))
+    return rgb
+
+
+Carried = tuple[float, float, float, float, "tuple[float, ...] | None"]  # OKLab L, held L, chroma, factor, colour
+
+
+def _carried_colour(ctx: Context, rgb: list[float], graph: str, palette: Mapping[str, Any]) -> Carried:
+    """The OKLab lightness of `rgb`, the lightness held in the band, its chroma, the chroma factor and
+    the colour the pattern carries (None: `rgb` as it is); made once per lexicon, colour and graph."""
+    key = tuple(rgb)
+    if 0.0 in key:  # -0.0 == 0.0 as a key, but its sign may reach the numbers
+        key += tuple([math.copysign(1.0, v) for v in key])
+    memo = ctx.lexicon.caches.pattern_colours
+    found: Carried | None = memo.get((key, graph))
+    if found is None:
+        if len(memo) >= LexiconCaches.MAX_ENTRIES:
+            memo.clear()
+        found = memo[key, graph] = _carry(ctx, rgb, palette)
+    return found
+
+
+def _carry(ctx: Context, rgb: list[float], palette: Mapping[str, Any]) -> Carried:
     low, high = _lightness_band(ctx.settings, palette)
     lab = linear_to_oklab(rgb)
     held = min(max(lab[0], low), high)
     chroma = math.hypot(lab[1], lab[2])
     cap = float(palette.get("max_chroma", math.inf))
     factor = cap / chroma if chroma > cap else 1.0
-    _set_dark_params(state, graph, palette, lab[0], words, noun_text)
     if abs(held - lab[0]) < 1e-6 and factor == 1.0:
-        return rgb
-    rgb = oklab_to_linear_in_gamut([held, lab[1] * factor, lab[2] * factor])
-    state.note("base_color", rgb, _rule(words, lab[0], held, chroma, factor, noun_text), tuple(words))
-    return rgb
+        return lab[0], held, chroma, factor, None
+    return lab[0], held, chroma, factor, tuple(oklab_to_linear_in_gamut([held, lab[1] * factor, lab[2] * factor]))
 
 
 def _lightness_band(settings: Mapping[str, Any], palette: Mapping[str, Any]) -> tuple[float, float]:
