@@ -12,6 +12,7 @@ offset after the header, then the arrays, each 4-byte aligned."""
 from __future__ import annotations
 
 import base64
+import dataclasses
 import json
 import struct
 import zlib
@@ -31,12 +32,15 @@ from . import gl
 from .albedo_tables import TableCache
 from .environment import environment
 from .environment_pass import IRRADIANCE_SAMPLES, IRRADIANCE_SIZE, PREFILTER_LEVELS, PREFILTER_SAMPLES
+from .flakes import flake_uniforms
 from .glass import bounding_sphere
 from .material_textures import MAP_SIZE, bake_maps, encode_map
-from .meshes import MESHES
+from .mesh import Mesh, make_mesh
+from .meshes import MESHES, UV_UNIT_M, fit, sphere
 from .scene import scene_mesh
 from .shader import material_shader
 from .sheen import sheen_uniforms
+from .subsurface import boundary_material, subsurface_uniforms
 
 MAGIC = b"CNLV"
 #: the tier the browser draws: the preview's default (docs/preview.md), the one its tables serve
@@ -142,7 +146,9 @@ class WebScene:
     def material(self, material_ir: Mapping[str, Any], write: Writer, exists: Callable[[str], bool]) -> dict:
         """The payload of one material (IR object); `write` stores map files by name in the
         session folder, `exists` says whether one is there already (names carry the content key)."""
-        material = Material.from_ir(dict(material_ir))
+        # a translucent body: the preview draws its boundary with cnlm_bsdf and the body's light
+        # with the subsurface term (subsurface.boundary_material, as Renderer does)
+        material = boundary_material(Material.from_ir(dict(material_ir)))
         options = parse_glsl_options({"form": "library", "profile": "es300"})
         shader = material_shader(material, options, self.writer)
         fragment = gl.preview_fragment(shader.name, shader.library, shader.plan, TIER)
@@ -156,6 +162,8 @@ class WebScene:
             "fragment": es300(fragment),
             "uniforms": self.uniforms(material, shader),
             "glass": material.model.base == "glass",
+            "mesh_uniforms": mesh_uniforms(material),
+            "uv_unit_m": UV_UNIT_M,
             "tables": self.split_tables(material, shader.plan.roughness_map),
             "prefilter": prefilter_alphas(material, shader.plan),
             "maps": self.maps(material, shader.samplers, write, exists, notes),
@@ -301,6 +309,36 @@ class EnvironmentBaker:
             self._made.clear()
 
 
+def typed_uniform(name: str, value: Any) -> dict[str, Any]:
+    """{name, type, value} of a preview uniform given as a Python number or vector."""
+    if isinstance(value, (bool, int, np.integer)) and not isinstance(value, (float, np.floating)):
+        return {"name": name, "type": "int", "value": int(value)}
+    arr = np.asarray(value, np.float64)
+    kind = {1: "float", 2: "vec2", 3: "vec3", 4: "vec4"}.get(arr.size, "float[]")
+    return {"name": name, "type": kind, "value": float(arr) if arr.ndim == 0 else arr.ravel().tolist()}
+
+
+def stand_in(closed: bool) -> Mesh:
+    """A closed fitted sphere or an open quad, 1 m per UV unit: what the mesh-dependent uniforms are
+    computed on (the view puts in its mesh's bounding sphere and scales pv_flake_area by 1 / m²)."""
+    if closed:
+        mesh = fit(sphere(6, 8))
+    else:
+        mesh = make_mesh([(-1, 0, 0), (1, 0, 0), (1, 2, 0), (-1, 2, 0)], [(0, 1, 2), (0, 2, 3)])
+    return dataclasses.replace(mesh, metres_per_uv=1.0)
+
+
+def mesh_uniforms(material: Material) -> dict[str, list[dict[str, Any]]]:
+    """ "closed" / "open" -> the flake and subsurface uniforms (object_pass.draw_object's) on a stand-in
+    of that kind, model = identity."""
+    out = {}
+    for form, closed in (("closed", True), ("open", False)):
+        mesh = stand_in(closed)
+        values = {**flake_uniforms(material, mesh), **subsurface_uniforms(material, mesh, np.eye(4))}
+        out[form] = [typed_uniform(name, value) for name, value in values.items()]
+    return out
+
+
 def prefilter_alphas(material: Material, plan: Any) -> dict[str, float]:
     """The alphas split_textures prefilters the environment at exactly (material_textures.py)."""
     out = {}
@@ -328,5 +366,6 @@ def mesh_bytes(name: str) -> bytes:
         "centre": [float(x) for x in centre],
         "radius": radius,
         "closed": bool(mesh.closed),
+        "metres_per_uv": mesh.metres_per_uv,
     }
     return pack(header, {"vertices": mesh.interleaved(), "indices": mesh.indices.astype("<u4")})

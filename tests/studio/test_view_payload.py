@@ -47,7 +47,9 @@ def test_a_colour_change_keeps_the_shader_source(tmp_path: Path) -> None:
 
 
 @pytest.mark.skipif(GLSLANG is None, reason="glslangValidator is not installed (scripts/setup.sh)")
-@pytest.mark.parametrize("phrase", ["lightly brushed, blue anodized aluminum", "clear glass", "velvet", "oak"])
+@pytest.mark.parametrize(
+    "phrase", ["lightly brushed, blue anodized aluminum", "clear glass", "velvet", "oak", "wax", "metallic car paint"]
+)
 def test_every_kind_of_shader_compiles_as_glsl_es(tmp_path: Path, phrase: str) -> None:
     payload = payload_of(phrase, tmp_path)
     for stage, source in (("frag", payload["fragment"]), ("vert", payload["vertex"])):
@@ -55,6 +57,19 @@ def test_every_kind_of_shader_compiles_as_glsl_es(tmp_path: Path, phrase: str) -
         path.write_text(source)
         done = subprocess.run([GLSLANG, "-S", stage, str(path)], capture_output=True, text=True, check=False)
         assert done.returncode == 0, done.stdout[-2000:]
+
+
+def test_a_translucent_body_is_drawn_as_the_preview_draws_it(tmp_path: Path) -> None:
+    """The boundary with a black base under cnlm_bsdf, the body's light from the subsurface term
+    (subsurface.boundary_material): its uniforms for a closed and an open mesh."""
+    payload = payload_of("wax", tmp_path)
+    uniforms = {u["name"]: u["value"] for u in payload["uniforms"]}
+    assert uniforms["cnlm_base_color"] == [0.0, 0.0, 0.0]
+    closed = {u["name"]: u["value"] for u in payload["mesh_uniforms"]["closed"]}
+    assert min(closed["pv_sss_albedo"]) > 0.3 and min(closed["pv_sss_mfp"]) > 0
+    assert {u["name"] for u in payload["mesh_uniforms"]["open"]} == set(closed)
+    flakes = payload_of("metallic car paint", tmp_path)["mesh_uniforms"]["closed"]
+    assert {u["name"] for u in flakes} == {"pv_flake_area", "pv_light_solid_angle"}
 
 
 def test_textured_maps_go_into_the_session_folder_once(tmp_path: Path) -> None:

@@ -297,6 +297,17 @@ export class MaterialView {
     setUniform(gl, program, "pv_camera_position", "vec3", camera.eye);
     setUniform(gl, program, "pv_key_direction", "vec3", key.key_direction);
     setUniform(gl, program, "pv_key_irradiance", "vec3", [key.key_irradiance, key.key_irradiance, key.key_irradiance]);
+    const meshForm = this.mesh.closed ? "closed" : "open";
+    const metresPerUv = this.mesh.metres_per_uv || payload.uv_unit_m;
+    for (const u of (payload.mesh_uniforms || {})[meshForm] || []) {
+      // computed on a stand-in at 1 m per UV unit: this mesh's bounding sphere and UV scale go in
+      const value = {
+        pv_sss_centre: this.mesh.centre,
+        pv_sss_radius: this.mesh.radius,
+        pv_flake_area: u.value / (metresPerUv * metresPerUv),
+      }[u.name] ?? u.value;
+      setUniform(gl, program, u.name, u.type, value);
+    }
     if (payload.glass) {
       setUniform(gl, program, "pv_glass_centre", "vec3", this.mesh.centre);
       setUniform(gl, program, "pv_glass_radius", "float", this.mesh.radius);
