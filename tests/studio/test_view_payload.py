@@ -5,6 +5,7 @@ only, and the named assets (containers of the preview's own environment textures
 from __future__ import annotations
 
 import json
+import re
 import shutil
 import subprocess
 from pathlib import Path
@@ -70,6 +71,41 @@ def test_a_translucent_body_is_drawn_as_the_preview_draws_it(tmp_path: Path) -> 
     assert {u["name"] for u in payload["mesh_uniforms"]["open"]} == set(closed)
     flakes = payload_of("metallic car paint", tmp_path)["mesh_uniforms"]["closed"]
     assert {u["name"] for u in flakes} == {"pv_flake_area", "pv_light_solid_angle"}
+
+
+#: the uniforms view.js (MaterialView.drawObject) sets itself: the environment, camera, key light, glass
+VIEW_SETS = {
+    "pv_env",
+    "pv_env_prefiltered",
+    "pv_env_irradiance",
+    "pv_prefilter_levels",
+    "pv_env_intensity",
+    "pv_env_size",
+    "pv_model",
+    "pv_normal_matrix",
+    "pv_view_projection",
+    "pv_camera_position",
+    "pv_key_direction",
+    "pv_key_irradiance",
+    "pv_glass_centre",
+    "pv_glass_radius",
+    "pv_glass_reference",
+    "pv_glass_thin",
+}
+
+
+@pytest.mark.parametrize(
+    "phrase", ["clear glass", "velvet", "wax", "metallic car paint", "oak", "clear-coated red car paint"]
+)
+def test_every_uniform_of_the_shader_is_given_a_value(tmp_path: Path, phrase: str) -> None:
+    """A feature the preview adds (a new uniform its object pass sets) must reach the payload:
+    otherwise the browser draws it with zeros."""
+    payload = payload_of(phrase, tmp_path)
+    declared = set(re.findall(r"^uniform\s+\w+\s+(\w+)", payload["fragment"] + payload["vertex"], re.M))
+    given = {u["name"] for u in payload["uniforms"]} | {u["name"] for u in payload["mesh_uniforms"]["closed"]}
+    given |= set(payload["tables"]) | set(payload["prefilter"]) | set(payload["maps"]) | VIEW_SETS
+    assert {"pv_key_irradiance", "pv_env_irradiance"} <= declared  # the declarations were found
+    assert declared - given == set()
 
 
 def test_textured_maps_go_into_the_session_folder_once(tmp_path: Path) -> None:
