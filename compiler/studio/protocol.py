@@ -111,11 +111,13 @@ class Dispatcher:
         return await self.analysed(await self.in_thread(self.session.redo))
 
     async def op_complete(self, message: JSONDict) -> JSONDict:
+        """The completion items, best first, at most the settings' number; `complete` says whether
+        they are all (the page then filters them itself as more letters are typed)."""
         text, line, character = _position(self.session, message)
-        return {
-            "op": "completion",
-            "items": await self.in_thread(self.session.engine.completion, text, line, character),
-        }
+        found = await self.in_thread(self.session.engine.completion, text, line, character)
+        items = sorted(found, key=lambda item: str(item["sort"]))
+        limit = self.session.settings.limits.max_completion_items
+        return {"op": "completion", "items": items[:limit], "complete": len(items) <= limit}
 
     async def op_hover(self, message: JSONDict) -> JSONDict:
         text, line, character = _position(self.session, message)

@@ -28,6 +28,7 @@ class Limits:
     max_message_bytes: int
     max_history: int
     max_sessions: int
+    max_completion_items: int
 
 
 @dataclass(frozen=True)

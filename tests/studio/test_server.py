@@ -121,6 +121,21 @@ async def test_edits_are_analysed_by_the_language_servers_functions(client: Test
     await socket.close()
 
 
+async def test_completion_sends_the_best_items_up_to_the_limit(client: TestClient[Any, Any]) -> None:
+    """After a space every word of the slot fits: the list is cut at the settings' limit, best first,
+    and says so (the page asks again as letters are typed); after a few letters it is whole."""
+    limit = studio_settings().limits.max_completion_items
+    socket = await client.ws_connect("/ws")
+    await socket.receive_json()
+    cut = await ask(socket, "complete", text="slightly ", line=0, character=9)
+    assert len(cut["items"]) == limit and not cut["complete"]
+    assert [i["sort"] for i in cut["items"]] == sorted(i["sort"] for i in cut["items"])
+    whole = await ask(socket, "complete", text="blue anodized al", line=0, character=16)
+    assert whole["complete"] and 0 < len(whole["items"]) < limit
+    assert any(i["label"].startswith("alumin") for i in whole["items"])
+    await socket.close()
+
+
 async def test_errors_are_messages_never_tracebacks(client: TestClient[Any, Any]) -> None:
     socket = await client.ws_connect("/ws")
     await socket.receive_json()

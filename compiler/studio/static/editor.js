@@ -177,7 +177,8 @@ export class Editor {
         boost: -Number.parseInt(item.sort, 10) || 0,
         info: item.doc ? () => docNode(item.doc) : undefined,
       })),
-      validFor: /^[\p{L}][\p{L}\p{N}'’\-]*$/u,
+      // a list cut at the server's limit is asked for again as letters are typed
+      validFor: answer.complete ? /^[\p{L}][\p{L}\p{N}'’\-]*$/u : undefined,
     };
   }
 
