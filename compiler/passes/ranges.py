@@ -40,7 +40,8 @@ def check_ranges(state: MaterialState, ctx: Context) -> MaterialState:
     if state.coat is not None:
         _check_all(state, state.coat, COAT_RANGES, "coat.")
     for role, ref in state.maps.items():
-        _check_all(state, ref["params"], graph_params(ref["graph"]), f"maps.{role}.")
+        if ref["params"]:  # a map without parameters of its own has nothing to check
+            _check_all(state, ref["params"], graph_params(ref["graph"]), f"maps.{role}.")
     return state
 
 
@@ -106,7 +107,8 @@ def check_finite(state: MaterialState, ctx: Context) -> MaterialState:
                 coat[param] = fixed = _fixed(value, COAT_RANGES.get(param), COAT_DEFAULTS.get(param))
                 _report(state, "coat." + param, value, fixed)
     for role, ref in state.maps.items():
-        table, held = graph_params(ref["graph"]), ref["params"]
+        held = ref["params"]
+        table = graph_params(ref["graph"]) if held else {}
         for param, value in held.items():
             if not _finite(value):
                 bounds = table.get(param)

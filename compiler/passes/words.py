@@ -131,17 +131,18 @@ def _colour_slot(state: MaterialState, target: str) -> tuple[str, Holder]:
 def _warn_second_colour(state: MaterialState, param: str, c: ast.Colour) -> None:
     if c.base is None:
         return
-    earlier = [s for s in state.provenance.get(param, ()) if s.rule.startswith("colours: ")]
-    if earlier:
-        state.diagnostics.append(
-            warning(
-                c.span,
-                "W105",
-                f"a second colour for the {param.replace('_', ' ')}: "
-                f"'{earlier[-1].words[-1].text}' is replaced by '{colour_text(c)}'",
-                ("use 'or' for alternatives: 'red or blue plastic'",),
+    for step in reversed(state.provenance.get(param, ())):  # the last colour step, if any
+        if step.rule.startswith("colours: "):
+            state.diagnostics.append(
+                warning(
+                    c.span,
+                    "W105",
+                    f"a second colour for the {param.replace('_', ' ')}: "
+                    f"'{step.words[-1].text}' is replaced by '{colour_text(c)}'",
+                    ("use 'or' for alternatives: 'red or blue plastic'",),
+                )
             )
-        )
+            return
 
 
 def apply_adjective(
