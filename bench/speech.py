@@ -17,6 +17,7 @@ RTF (the machine is shared: under load RTF is pessimistic).
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import os
 import tempfile
 import time
@@ -27,6 +28,7 @@ from cnlmc.api import lexicon_for
 from cnlmc.speech.grammar import Grammar
 from cnlmc.speech.model import SpeechModel
 from cnlmc.speech.recogniser import Recogniser
+from cnlmc.speech.settings import SpeechSettings
 from cnlmc.speech.testset import SPEEDS, VOICES, Phrases, Scorer, read_pcm, synthesize
 
 
@@ -91,22 +93,29 @@ def main() -> None:
     parser.add_argument("--quick", action="store_true", help="the tests' subset of phrases")
     parser.add_argument("--no-peer", action="store_true", help="skip the peer grammar")
     parser.add_argument("--no-held-out", action="store_true", help="skip the held-out split")
+    parser.add_argument("--speeds", default=",".join(map(str, SPEEDS)), help="words a minute, e.g. 160 (default: all)")
+    parser.add_argument("--prior-exponent", type=float, help="override speech.toml's (0: every word alike)")
     args = parser.parse_args()
     lexicon = lexicon_for()
     t0 = time.perf_counter()
-    model = SpeechModel.of(lexicon)
+    settings = SpeechSettings.bundled()
+    if args.prior_exponent is not None:
+        settings = dataclasses.replace(settings, prior_exponent=args.prior_exponent)
+    speeds = tuple(int(s) for s in args.speeds.split(","))
+    model = SpeechModel.of(lexicon, (), settings)
     t1 = time.perf_counter()
     recogniser = model.recogniser()
     t2 = time.perf_counter()
     words = len(model.grammar.words_used())
+    print(f"prior exponent {settings.prior_exponent}, British variants {settings.british_variants}, speeds {speeds}")
     print(f"grammar: {model.grammar.count} states, {len(model.grammar.transitions)} arcs, {words} words")
     print(f"generate {t1 - t0:.2f} s, load {t2 - t1:.2f} s")
     phrases = Phrases.bundled(full=not args.quick)
     scorer = Scorer(lexicon, phrases, model.settings.undo)
     held_out = Phrases.held_out(lexicon, recogniser.fsg.accept, phrases)
     with tempfile.TemporaryDirectory(prefix="cnlmc-speech-bench-") as folder:
-        items = spoken(phrases, Path(folder), model.settings.sample_rate)
-        held_items = [] if args.no_held_out else spoken(held_out, Path(folder), model.settings.sample_rate)
+        items = spoken(phrases, speeds, Path(folder), model.settings.sample_rate)
+        held_items = [] if args.no_held_out else spoken(held_out, speeds, Path(folder), model.settings.sample_rate)
     run(recogniser, scorer, items, "lexicon grammar, tuning phrases")
     if held_items:
         held_scorer = Scorer(lexicon, held_out, model.settings.undo)
@@ -121,8 +130,8 @@ def main() -> None:
         run(peer, scorer, items, "peer: the test phrases only")
 
 
-def spoken(phrases: Phrases, folder: Path, rate: int) -> list:
-    utterances = phrases.utterances(VOICES, SPEEDS, (False, True))
+def spoken(phrases: Phrases, speeds: tuple[int, ...], folder: Path, rate: int) -> list:
+    utterances = phrases.utterances(VOICES, speeds, (False, True))
     return [(u, read_pcm(synthesize(u, folder, rate))) for u in utterances]
 
 
