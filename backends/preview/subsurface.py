@@ -91,12 +91,19 @@ def has_subsurface(material: Any) -> bool:
 
 
 def boundary_material(material: Material) -> Material:
-    """What the preview draws with cnlm_bsdf for a translucent material: its boundary alone, the
-    base colour black and without a base-colour map (the body's light is the subsurface term;
-    the IR's base_color is the colour the eye sees, for exports without subsurface). Any other
-    material is returned as it is."""
-    if not has_subsurface(material):
+    """What the preview draws with cnlm_bsdf for a translucent material. A volume: its boundary
+    alone, the base colour black and without a base-colour map (the body's light is the subsurface
+    term; the IR's base_color is the colour the eye sees, for exports without subsurface). A thin
+    sheet: its front as the Mitsuba export draws it, base_color x (1 - w), w the largest channel
+    of the sheet's transmittance (the blend's weight; the subsurface term adds what comes
+    through). Any other material is returned as it is."""
+    body = subsurface_of(material)
+    if body is None:
         return material
+    if body.thin:
+        _, through = sheet_optics(body)
+        front = tuple(float(c) * (1.0 - float(through.max())) for c in material.params.base_color)
+        return dataclasses.replace(material, params=dataclasses.replace(material.params, base_color=front))
     params = dataclasses.replace(material.params, base_color=(0.0, 0.0, 0.0))
     maps = {role: ref for role, ref in material.maps.items() if role != "base_color"}
     return dataclasses.replace(material, params=params, maps=maps)
@@ -112,8 +119,8 @@ def metres_per_unit() -> float:
 
 def sheet_optics(body: TranslucentBody) -> tuple[np.ndarray, np.ndarray]:
     """(diffuse reflectance R, diffuse transmittance T) of a thin wall: the Kubelka-Munk slab of
-    the IR's medium at its thickness (cnlmc.bsdf.subsurface.slab, what the Mitsuba export's
-    principledthin sheet is made from)."""
+    the IR's medium at its thickness (cnlmc.bsdf.subsurface.slab; the Mitsuba export's sheet
+    transmits its T)."""
     from cnlmc.bsdf.subsurface import medium_of, slab
 
     medium = medium_of(body.color, body.radius, body.anisotropy, body.ior)
@@ -138,13 +145,17 @@ def subsurface_uniforms(material: Any, mesh: Mesh, model: np.ndarray) -> dict[st
     per_unit = metres_per_unit()
     wrap = settings()["wrap"]
     # a volume's colour is the dipole's total diffuse reflectance (docs/subsurface.md): the body albedo
-    reflect, through = sheet_optics(body) if body.thin else (np.clip(body.color, 0.0, 1.0), np.zeros(3))
+    # a thin sheet's front is cnlm_bsdf's (boundary_material): the term adds what comes through
+    reflect, through = (
+        (np.zeros(3), sheet_optics(body)[1]) if body.thin else (np.clip(body.color, 0.0, 1.0), np.zeros(3))
+    )
     return {
         "pv_sss_albedo": reflect,
         # a closed thin-walled shell (a lantern): the light from behind crosses the far wall first
         "pv_sss_wall_through": through * (through if mesh.closed else 1.0),
         "pv_sss_mfp": np.maximum(np.asarray(body.radius) / per_unit * scale, 1e-6),
         "pv_sss_thin": int(body.thin),
+        "pv_sss_closed": int(mesh.closed),
         "pv_sss_centre": model[:3, :3] @ centre + model[:3, 3],
         "pv_sss_radius": radius * scale,
         "pv_sss_f0": schlick_f0(body.ior),
