@@ -5,7 +5,7 @@ tests/preview/test_subsurface.py).
 The material is the Mitsuba export's (backends/exchange/mitsuba_subsurface.py, docs/subsurface.md):
 a volume is a dielectric or rough dielectric boundary around a homogeneous medium (the dipole
 inversion of the IR's colour and radius, its scale METRES_PER_UNIT metres a unit), a thin sheet
-a `principledthin` BSDF. The preview scene (mitsuba_scene.export_scene: camera, mesh, environment,
+its blend of a two-sided diffuse front and a diffuse transmitter. The preview scene (mitsuba_scene.export_scene: camera, mesh, environment,
 key light) gets the medium as its shape's interior and the `volpathmis` integrator the export
 uses for media (spectral MIS: `volpath` is biased dark for a chromatic medium)."""
 
