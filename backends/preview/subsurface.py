@@ -102,7 +102,7 @@ def boundary_material(material: Material) -> Material:
         return material
     if body.thin:
         _, through = sheet_optics(body)
-        front = tuple(float(c) * (1.0 - float(through.max())) for c in material.params.base_color)
+        front = _triple(np.asarray(material.params.base_color, np.float64) * (1.0 - float(through.max())))
         return dataclasses.replace(material, params=dataclasses.replace(material.params, base_color=front))
     params = dataclasses.replace(material.params, base_color=(0.0, 0.0, 0.0))
     maps = {role: ref for role, ref in material.maps.items() if role != "base_color"}
