@@ -73,7 +73,7 @@ def bsdf_types(xml: str) -> dict[str, list[str]]:
         ("lightly brushed, blue anodized aluminum", ["twosided", "principled"]),  # a metal under its oxide (#15)
         ("clear-coated red car paint", ["twosided", "roughplastic"]),  # a coat over paint is roughplastic (#15)
         ("glossy red plastic", ["twosided", "roughplastic"]),
-        ("deep red velvet", ["twosided", "diffuse"]),
+        ("deep red velvet", ["twosided", "principled"]),  # its sheen as principled's sheen (#15 item 5)
         ("glass", ["dielectric"]),
         ("frosted glass", ["roughdielectric"]),
     ],
