@@ -275,10 +275,12 @@ def band(bands: Mapping[str, Sequence[float]], value: float) -> str:
 
 
 def map_features(m: Mapping[str, Any]) -> set[str]:
-    """The features the material's maps show (MAP_FEATURES), plus 'any' when it has a map."""
+    """The features the material's maps show (MAP_FEATURES), plus 'any' when it has a map, plus
+    'flakes' when it has a flake lobe (drawn as a distribution, not a map: docs/bsdf.md)."""
     graphs = {ref["graph"] for ref in (m.get("maps") or {}).values()}
     found = {name for name, gs in MAP_FEATURES.items() if graphs & set(gs)}
-    return found | ({"any"} if graphs else set())
+    flakes = {"flakes"} if (m.get("params") or {}).get("flake_density", 0) > 0 else set()
+    return found | flakes | ({"any"} if graphs else set())
 
 
 def as_list(value: Any) -> list[Any]:

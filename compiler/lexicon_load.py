@@ -254,6 +254,8 @@ def add_survey_colours(builder: Builder, names: dict[str, Any], source: SourceTe
                 continue
         if name not in colours and ((" " not in name and name in others) or name in known):
             continue
+        if name.split(" ", 1)[0] in rules["describing_first"] and name not in colours:
+            continue  # "metallic blue": the describing word (flakes) and the colour, not a swatch
         variants = {name.replace("grey", "gray")}
         variants |= set(rules["extra_aliases"].get(name, ()))
         aliases = sorted(v for v in variants - {name} if v not in names and v not in known)

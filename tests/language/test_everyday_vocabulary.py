@@ -205,3 +205,12 @@ def test_petrol_blue_is_one_colour():
 @pytest.mark.parametrize(("text", "noun"), [("basket", "rattan"), ("teapot", "porcelain"), ("lampshade", "linen")])
 def test_a_household_thing_alone_is_its_usual_material(text, noun):
     assert material(text)["params"] == material(noun)["params"]
+
+
+@pytest.mark.parametrize("colour", ["blue", "green", "brown"])
+def test_metallic_before_a_colour_is_the_flakes_and_the_colour(colour):
+    """The survey's 'metallic blue' is a swatch; before a paint a person means blue paint with
+    metallic flakes (colour_rules.toml describing_first)."""
+    said = material(f"metallic {colour} car paint")
+    assert said["params"]["flake_density"] > 0
+    assert said["params"]["base_color"] == material(f"{colour} metallic car paint")["params"]["base_color"]
