@@ -492,8 +492,12 @@ class MitsubaScene:
         tex: BsdfTextures = dict(textures)
         if alpha_maps and alpha_maps.mean_alpha is not None and plugin_for(material) == "roughplastic":
             tex["mean_alpha"] = alpha_maps.mean_alpha
-        entry = {"ident": ident, "phrase": described(material), "bsdf": bsdf_for(material, ident, tex, cnlm)}
-        entry["medium"] = medium_entry(material, ident, self.options.unit_metres)
+        entry: dict[str, Any] = {
+            "ident": ident,
+            "phrase": described(material),
+            "bsdf": bsdf_for(material, ident, tex, cnlm),
+            "medium": medium_entry(material, ident, self.options.unit_metres),
+        }
         self.entries.append(entry)
         return images
 

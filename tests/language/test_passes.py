@@ -13,7 +13,17 @@ from cnlmc.passes.variants import expand
 from cnlmc.state import Context, MaterialState
 
 FIXTURES = tomllib.loads((Path(__file__).parent / "fixtures" / "passes.toml").read_text())
-ORDER = ["base", "words", "subsurface", "coats", "refine", "films", "model", "subsurface_model", "ranges"]  # films: conformal_coat
+ORDER = [
+    "base",
+    "words",
+    "subsurface",
+    "coats",
+    "refine",
+    "films",
+    "model",
+    "subsurface_model",
+    "ranges",
+]  # films: conformal_coat
 
 
 def run_until(pass_name: str, phrase: str, lexicon) -> MaterialState:
