@@ -17,7 +17,6 @@ import json
 import struct
 import zlib
 from collections.abc import Callable, Mapping
-from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -127,25 +126,21 @@ def rgba(array: np.ndarray) -> np.ndarray:
     return out
 
 
-@lru_cache(maxsize=1)
-def shader_writer() -> ShaderWriter:
-    """The GLSL backend's templates and snippets, loaded and compiled once per process: immutable
-    package data, as gl.templates() (compiling the templates anew took 60 of a payload's 70 ms)."""
-    return ShaderWriter()
-
-
 class WebScene:
     """Turns materials and names into what the WebGL2 view draws; owns the albedo tables it has
-    used and the OpenGL context its environments were prefiltered in (one per server, or one per call)."""
+    used, the GLSL templates (compiling them anew took 60 of a payload's 70 ms: the studio keeps one
+    scene) and the OpenGL context its environments were prefiltered in (one per server, or one per
+    call). Not thread-safe: its owner uses it from one thread (the context is current there)."""
 
     def __init__(self) -> None:
         self.tables = TableCache()
-        self.writer = shader_writer()
+        self.writer = ShaderWriter()
         self.environments = EnvironmentBaker()
 
     def material(self, material_ir: Mapping[str, Any], write: Writer, exists: Callable[[str], bool]) -> dict:
         """The payload of one material (IR object); `write` stores map files by name in the
-        session folder, `exists` says whether one is there already (names carry the content key)."""
+        session folder, `exists` says whether one is there already (named by the content key alone:
+        the same look under another name is not baked again)."""
         # a translucent body: the preview draws its boundary with cnlm_bsdf and the body's light
         # with the subsurface term (subsurface.boundary_material, as Renderer does)
         material = boundary_material(Material.from_ir(dict(material_ir)))
@@ -192,7 +187,7 @@ class WebScene:
         (encode_map's layout: top image row at v = 1, normals n * 0.5 + 0.5), baked once per content."""
         if not samplers:
             return {}
-        names = {s.role: f"{material.name}-{material.key}-{s.role}.f16" for s in samplers}
+        names = {s.role: f"{material.key}-{s.role}.f16" for s in samplers}
         if not all(exists(n) for n in names.values()):
             baked = bake_maps(material, MAP_SIZE, 0, notes)
             write([(names[r], rgba(encode_map(r, a)).astype("<f2").tobytes()) for r, a in baked.items() if r in names])

@@ -12,25 +12,33 @@ background and sent when ready.
   export {key, text}            -> exported {url, name, notes}
   ar_model {text}               -> ar_model {glb, usdz, notes}
   thumbnail {index, image}      -> (nothing: the history strip's picture of step `index`)
-and, unasked, chips {words, text} after an analysis that made a history step."""
+and, unasked, chips {words, text} after an analysis that made a history step.
+
+Messages are read as they arrive and answered in order by one task: an edit is numbered when it
+arrives, so one that a newer edit replaced while it waited is answered {op: "skipped"} at once,
+without its analysis and payloads."""
 
 from __future__ import annotations
 
 import asyncio
 import functools
+import json
 import logging
 from collections.abc import Callable
 from typing import Any
 
-from aiohttp import web
+from aiohttp import WSMsgType, web
 
 from .ar import ARFailed
 from .exports import ExportFailed
-from .session import StudioSession
+from .session import Closed, Replaced, StudioSession
 
 JSONDict = dict[str, Any]
 #: a thumbnail is a small PNG data: URL; anything longer is not one
 MAX_THUMBNAIL_CHARS = 200_000
+#: requests read ahead of the one being answered (our choice: edits come one per keystroke burst;
+#: a client that sends more waits, the socket is not read meanwhile)
+QUEUED_REQUESTS = 64
 log = logging.getLogger("cnlmc.studio")
 
 
@@ -40,6 +48,7 @@ class Dispatcher:
         self.socket = socket
         self.initial_text = initial_text
         self.chip_task: asyncio.Task[None] | None = None
+        self.queue: asyncio.Queue[tuple[JSONDict, int | None]] = asyncio.Queue(QUEUED_REQUESTS)
 
     def stop(self) -> None:
         if self.chip_task is not None:
@@ -59,15 +68,35 @@ class Dispatcher:
             }
         )
 
-    async def handle(self, message: JSONDict) -> None:
+    async def serve(self) -> None:
+        """Read the socket until it closes; one task answers the requests in order."""
+        answering = asyncio.create_task(self.answer_queued())
+        try:
+            async for message in self.socket:
+                if message.type != WSMsgType.TEXT:
+                    break
+                request = _parsed(message.data)
+                ticket = self.session.announce_edit() if request.get("op") == "edit" else None
+                await self.queue.put((request, ticket))
+        finally:
+            answering.cancel()
+
+    async def answer_queued(self) -> None:
+        while True:
+            request, ticket = await self.queue.get()
+            await self.handle(request, ticket)
+
+    async def handle(self, message: JSONDict, ticket: int | None = None) -> None:
         op, seq = str(message.get("op", "")), message.get("seq")
         handler = getattr(self, f"op_{op}", None)
         if handler is None:
             await self.reply(seq, {"op": "error", "message": f"unknown request '{op}'"})
             return
         try:
-            answer = await handler(message)
-        except (ValueError, ExportFailed, ARFailed) as exc:
+            answer = await (handler(message, ticket) if op == "edit" else handler(message))
+        except Replaced:
+            answer = {"op": "skipped"}
+        except (ValueError, ExportFailed, ARFailed, Closed) as exc:
             answer = {"op": "error", "message": str(exc)}
         except Exception as exc:  # never a traceback in the page
             log.error("studio: %s while answering '%s': %s", type(exc).__name__, op, exc)
@@ -98,8 +127,9 @@ class Dispatcher:
 
     # ------------------------------------------------------------------ requests
 
-    async def op_edit(self, message: JSONDict) -> JSONDict:
-        return await self.analysed(await self.in_thread(self.session.edit, _text(message, "text")))
+    async def op_edit(self, message: JSONDict, ticket: int | None = None) -> JSONDict:
+        self.session.check_replaced(ticket)  # skipped without a thread when already replaced
+        return await self.analysed(await self.in_thread(self.session.edit, _text(message, "text"), None, ticket))
 
     async def op_refine(self, message: JSONDict) -> JSONDict:
         return await self.analysed(await self.in_thread(self.session.refine, _text(message, "words")))
@@ -151,6 +181,14 @@ class Dispatcher:
 
     def url(self, relative: str) -> str:
         return f"/files/{self.session.id}/{relative}"
+
+
+def _parsed(data: str) -> JSONDict:
+    try:
+        found = json.loads(data)
+    except ValueError:
+        return {}
+    return found if isinstance(found, dict) else {}
 
 
 def _text(message: JSONDict, key: str) -> str:

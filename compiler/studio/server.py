@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
-import json
 import logging
 import secrets
 import tempfile
@@ -19,9 +18,8 @@ from collections.abc import Awaitable, Callable
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
-from typing import Any
 
-from aiohttp import WSMsgType, web
+from aiohttp import web
 from aiohttp.typedefs import Middleware
 
 from ..lexicon import Lexicon
@@ -64,13 +62,20 @@ class Studio:
         self.sessions[session.id] = session
         return session
 
-    def close_session(self, session: StudioSession) -> None:
+    def forget_session(self, session: StudioSession) -> None:
+        """The tab closed: no more work for it (its folder goes with session.close, off the loop)."""
         self.sessions.pop(session.id, None)
-        session.close()
+        session.stop()
+
+    def allowed_alphas(self) -> set[float]:
+        """The alphas the open sessions' payloads prefilter their environment at."""
+        return {alpha for session in self.sessions.values() for alpha in session.payloads.alphas()}
 
     def close(self) -> None:
         for session in list(self.sessions.values()):
-            self.close_session(session)
+            self.forget_session(session)
+            session.close()
+        self.view.close()
         with contextlib.suppress(OSError):
             self.root.rmdir()
 
@@ -109,15 +114,24 @@ def security_middleware(studio: Studio) -> Middleware:
     return guard
 
 
+#: Sec-Fetch-Site values of a request the studio's own page (or a typed address) makes
+OWN_FETCH_SITES = ("same-origin", "none")
+
+
 def refuse(studio: Studio, request: web.Request) -> tuple[int, str] | None:
     """Why a request is refused (status, text), or None. A Host that is not this server's is a
-    DNS-rebinding page; a WebSocket from another Origin is another site driving the studio."""
+    DNS-rebinding page; a request another page made (its Origin, or the browser's Sec-Fetch-Site)
+    is another site using the studio: refused on every route (an <img> of /view-data/... would
+    make the server work for it)."""
     host = request.host.rsplit(":", 1)[0].strip("[]")
     if is_loopback(studio.host) and not is_loopback(host):
         return 421, "this studio answers only on localhost"
     origin = request.headers.get("Origin")
-    if origin is not None and origin != f"http://{request.host}" and request.path.startswith("/ws"):
-        return 403, "a WebSocket from another site"
+    if origin is not None and origin != f"http://{request.host}":
+        return 403, "a request from another site"
+    site = request.headers.get("Sec-Fetch-Site")
+    if site is not None and site not in OWN_FETCH_SITES:
+        return 403, "a request from another site"
     if studio.token is not None:
         given = request.query.get("token") or request.cookies.get(TOKEN_COOKIE)
         if given is None or not secrets.compare_digest(given, studio.token):
@@ -137,12 +151,25 @@ async def index(request: web.Request) -> web.StreamResponse:
 
 
 async def view_data(request: web.Request) -> web.StreamResponse:
+    """A named asset, built on the view's own thread; an environment prefiltered at an alpha only
+    when an open session's payload asked for that alpha (each new one is seconds of GPU work)."""
     studio: Studio = request.app[STUDIO]
-    found = studio.view.static_asset(request.match_info["name"])
+    name = request.match_info["name"]
+    _, at, alpha = name.partition("@")
+    if at and _number(alpha) not in studio.allowed_alphas():
+        raise web.HTTPNotFound(reason="no such view data")
+    found = await studio.view.static_asset(name)
     if found is None:
         raise web.HTTPNotFound(reason="no such view data")
     body, content_type = found
     return web.Response(body=body, headers={"Content-Type": content_type, "Cache-Control": "max-age=3600"})
+
+
+def _number(text: str) -> float | None:
+    try:
+        return float(text)
+    except ValueError:
+        return None
 
 
 def session_file(studio: Studio, session_id: str, relative: str) -> Path:
@@ -172,9 +199,7 @@ async def ar_photo(request: web.Request) -> web.StreamResponse:
     photo = await request.read()
     loop = asyncio.get_running_loop()
     try:
-        made = await loop.run_in_executor(
-            None, studio.composer.composite, photo, request.content_type, session.text, session.folder
-        )
+        made = await loop.run_in_executor(None, session.composite, studio.composer, photo, request.content_type)
     except ARFailed as exc:
         return web.json_response({"error": str(exc)})
     return web.json_response({"url": f"/files/{session.id}/{made}"})
@@ -192,22 +217,14 @@ async def websocket(request: web.Request) -> web.StreamResponse:
     dispatcher = Dispatcher(session, socket, studio.initial_text)
     try:
         await dispatcher.hello([{"key": k.key, "label": k.label} for k in studio.settings.exports])
-        async for message in socket:
-            if message.type != WSMsgType.TEXT:
-                break
-            await dispatcher.handle(_parsed(message.data))
+        await dispatcher.serve()
     finally:
         dispatcher.stop()
-        studio.close_session(session)
+        studio.forget_session(session)
+        # waits for the work writing into the folder now (an export, an AR composite): off the loop,
+        # shielded (aiohttp cancels the handler of a dropped connection; the folder must still go)
+        await asyncio.shield(asyncio.get_running_loop().run_in_executor(None, session.close))
     return socket
-
-
-def _parsed(data: str) -> dict[str, Any]:
-    try:
-        found = json.loads(data)
-    except ValueError:
-        return {}
-    return found if isinstance(found, dict) else {}
 
 
 def make_app(studio: Studio) -> web.Application:

@@ -5,8 +5,11 @@ serves nothing else of the file system; the folder is removed when the session e
 
 from __future__ import annotations
 
+import contextlib
 import secrets
 import shutil
+import threading
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -16,10 +19,11 @@ from ..colour import linear_to_hex
 from ..diagnostics import Severity
 from ..explain import explain_material
 from ..lexicon import Lexicon
+from .ar import ARFailed, MarkerComposer
 from .editor import EditorEngine
 from .exports import Exported, export
 from .history import History, Step
-from .payloads import ViewData
+from .payloads import PayloadCache, ViewData
 from .settings import Settings
 
 JSONDict = dict[str, Any]
@@ -39,6 +43,14 @@ class TooLarge(ValueError):
     """A document over the size limit: the message says the limit."""
 
 
+class Replaced(Exception):
+    """An edit a newer one replaced before its analysis was made: nothing to answer."""
+
+
+class Closed(Exception):
+    """The tab closed: its folder is gone and nothing more is written."""
+
+
 class StudioSession:
     def __init__(self, root: Path, lexicon: Lexicon, settings: Settings, view: ViewData) -> None:
         self.id = secrets.token_urlsafe(12)
@@ -47,12 +59,48 @@ class StudioSession:
         self.lexicon = lexicon
         self.settings = settings
         self.view = view
+        self.payloads = PayloadCache(view, settings.limits.max_cached_payloads)
         self.engine = EditorEngine(lexicon)
         self.history = History(settings.limits.max_history)
         self.text = ""
+        self.latest_edit = 0  # the number of the newest edit received (the event loop counts them)
+        self.closed = False
+        self.writing = threading.Lock()  # held while work writes into the folder; close waits for it
+
+    def announce_edit(self) -> int:
+        """Number an edit as it arrives: an older one still waiting is then skipped."""
+        self.latest_edit += 1
+        return self.latest_edit
+
+    def stop(self) -> None:
+        """Refuse any further work (called on the event loop when the tab closes)."""
+        self.closed = True
 
     def close(self) -> None:
-        shutil.rmtree(self.folder, ignore_errors=True)
+        """Stop, wait for the work writing now, remove the folder (blocks: call it off the loop)."""
+        self.stop()
+        with self.writing:
+            shutil.rmtree(self.folder, ignore_errors=True)
+
+    @contextlib.contextmanager
+    def guarded(self) -> Iterator[None]:
+        """Work that writes into the folder: one at a time, never after the tab closed."""
+        with self.writing:
+            if self.closed:
+                raise Closed("the studio tab was closed")
+            yield
+
+    def composite(self, composer: MarkerComposer, photo: bytes, content_type: str) -> str:
+        """The marker AR composite of the document on `photo` (see ar.py), in the session's folder."""
+        try:
+            with self.guarded():
+                return composer.composite(photo, content_type, self.text, self.folder)
+        except Closed as exc:
+            raise ARFailed(str(exc)) from None
+
+    def check_replaced(self, ticket: int | None) -> None:
+        if ticket is not None and ticket != self.latest_edit:
+            raise Replaced()
 
     # ------------------------------------------------------------------ the document
 
@@ -61,13 +109,16 @@ class StudioSession:
         if len(text.encode("utf-8", "surrogatepass")) > limit:
             raise TooLarge(f"the document is over the studio's limit of {limit // 1024} KiB: split it into files")
 
-    def edit(self, text: str, label: str | None = None) -> JSONDict:
+    def edit(self, text: str, label: str | None = None, ticket: int | None = None) -> JSONDict:
         """Analyse `text` (the editor's whole document); a result that compiles to different
-        materials becomes a history step. Returns what the page shows."""
+        materials becomes a history step. Returns what the page shows. An edit numbered `ticket`
+        (announce_edit) that a newer one replaced raises Replaced before each costly part."""
         self.check_size(text)
+        self.check_replaced(ticket)
         self.text = text
         features = self.engine.features(text)
         materials = self.materials()
+        self.check_replaced(ticket)
         ok = bool(materials) and not any(d["severity"] == 1 for d in features["diagnostics"])
         recorded = ok and self.history.push(Step(text, materials, label or last_line(text)))
         return {**features, **self.picture(materials, ok), "ok": ok, "recorded": recorded}
@@ -77,7 +128,8 @@ class StudioSession:
         return [m for block in snapshot.blocks for m in block.result.materials]
 
     def picture(self, materials: list[JSONDict], ok: bool) -> JSONDict:
-        """The materials panel (name, swatch, explain table, what changed) and the view's payloads."""
+        """The materials panel (name, swatch, explain table, what changed) and the view's payloads
+        of the first materials (at most the settings' number: `not_shown` counts the rest)."""
         previous = self.history.previous()
         before = {m["name"]: m for m in previous.materials} if previous else {}
         panel = [
@@ -89,8 +141,15 @@ class StudioSession:
             }
             for m in materials
         ]
-        payloads = self.view.payloads(materials, self.folder / "view") if ok else []
-        return {"materials": panel, "payloads": payloads, "history": self.history.summary()}
+        shown = materials[: self.settings.limits.max_shown_materials] if ok else []
+        with self.guarded():
+            payloads = self.payloads.payloads(shown, self.folder / "view")
+        return {
+            "materials": panel,
+            "payloads": payloads,
+            "not_shown": len(materials) - len(shown) if ok else 0,
+            "history": self.history.summary(),
+        }
 
     # ------------------------------------------------------------------ refinement and history
 
@@ -151,4 +210,5 @@ class StudioSession:
         result = compile_source(text, "<studio>", self.lexicon, keep_stages=False)
         if not result.ok or not result.materials:
             raise ValueError("the document has errors: fix them before exporting")
-        return export(result.ir, kind, self.folder)
+        with self.guarded():
+            return export(result.ir, kind, self.folder)

@@ -29,6 +29,8 @@ class Limits:
     max_history: int
     max_sessions: int
     max_completion_items: int
+    max_shown_materials: int
+    max_cached_payloads: int
 
 
 @dataclass(frozen=True)

@@ -5,10 +5,14 @@ environment and mesh as `cnlmc preview`, so the browser frame agrees with it (do
 
     payload = material_payload(ir["materials"][0], session_folder)   # JSON-serialisable
     data, content_type = static_asset("env/studio")                  # or None for an unknown name
+
+A server keeps one `ViewScene` instead: one WebScene (its tables, GLSL templates, OpenGL context)
+used on one worker thread of its own, so builds never run on the event loop nor side by side.
 """
 
 from __future__ import annotations
 
+from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
 from typing import Any
 
@@ -20,6 +24,14 @@ def material_payload(material_ir: dict[str, Any], files: Path) -> dict[str, Any]
     cnlmc.output, named by content: a map already there is not baked again)."""
     from cnlmc.backends.preview.web import WebScene
 
+    scene = WebScene()
+    try:
+        return _payload(scene, material_ir, files)
+    finally:
+        scene.close()
+
+
+def _payload(scene: Any, material_ir: dict[str, Any], files: Path) -> dict[str, Any]:
     root = Path(files)
 
     def write(named: list[tuple[str, bytes]]) -> None:
@@ -28,7 +40,8 @@ def material_payload(material_ir: dict[str, Any], files: Path) -> dict[str, Any]
     def exists(name: str) -> bool:
         return safe_name(name, root).is_file()
 
-    return WebScene().material(material_ir, write, exists)
+    found: dict[str, Any] = scene.material(material_ir, write, exists)
+    return found
 
 
 def static_asset(name: str) -> tuple[bytes, str] | None:
@@ -41,3 +54,36 @@ def static_asset(name: str) -> tuple[bytes, str] | None:
         return scene.asset(name)
     finally:
         scene.close()  # an environment missing from the disk cache was prefiltered in an OpenGL context
+
+
+class ViewScene:
+    """The server's one WebScene, made on first need and used only on its own worker thread (one
+    build at a time: the OpenGL context is current there); `close` releases it."""
+
+    def __init__(self) -> None:
+        self.worker = ThreadPoolExecutor(max_workers=1, thread_name_prefix="cnlmc-view")
+        self.scene: Any = None
+
+    def _scene(self) -> Any:
+        if self.scene is None:
+            from cnlmc.backends.preview.web import WebScene
+
+            self.scene = WebScene()
+        return self.scene
+
+    def payload(self, material_ir: dict[str, Any], files: Path) -> dict[str, Any]:
+        """material_payload, on the scene's thread (the caller waits)."""
+        return self.worker.submit(lambda: _payload(self._scene(), material_ir, files)).result()
+
+    def asset(self, name: str) -> Future[tuple[bytes, str] | None]:
+        """static_asset's answer, built on the scene's thread (await it with asyncio.wrap_future)."""
+        return self.worker.submit(lambda: self._scene().asset(name))
+
+    def close(self) -> None:
+        def release() -> None:
+            if self.scene is not None:
+                self.scene.close()
+                self.scene = None
+
+        self.worker.submit(release).result()
+        self.worker.shutdown(wait=True)

@@ -56,7 +56,8 @@ class Studio {
   async edit() {
     const text = this.editor.text;
     try {
-      this.apply(await this.connection.request("edit", { text }), text);
+      const analysis = await this.connection.request("edit", { text });
+      if (analysis.op !== "skipped") this.apply(analysis, text); // a newer edit replaced it: its answer comes
     } catch (error) {
       fail(error);
     }
@@ -71,6 +72,9 @@ class Studio {
     status.analyses = String(Number(status.analyses) + 1);
     problem.clear();
     showMaterials($("materials"), analysis.materials);
+    const more = $("not-shown");
+    more.hidden = !analysis.not_shown;
+    more.textContent = analysis.not_shown ? `${analysis.not_shown} more not shown in the view` : "";
     showHistory($("history"), analysis.history);
     $("undo").disabled = !analysis.history.can_undo;
     $("redo").disabled = !analysis.history.can_redo;
