@@ -6,7 +6,8 @@ glTF has no scattering medium. The nearest it has:
   share of the diffuse light that passes through the surface, and its colour;
 - KHR_materials_volume (ratified): how the light it passes is attenuated inside the body
   (attenuationColor = the medium's albedo, attenuationDistance = its longest mean free path in
-  metres; thicknessFactor = the object's size).
+  metres; thicknessFactor = the object's size). The extension requires attenuationDistance > 0: a
+  medium whose every radius is 0 lets no light travel inside, so it gets no volume (an opaque body).
 The share comes from the numpy reference's Kubelka-Munk slab (cnlmc.bsdf.subsurface.slab) of the
 medium: for a thin sheet at its thickness; for a volume at the object's size (a thick body lets
 almost nothing through: its glow at thin edges is lost). base_color stays what the eye sees.
@@ -50,10 +51,11 @@ def subsurface_extensions(material: Material, size_m: float) -> JSON:
             "diffuseTransmissionColorFactor": colour,
         }
     }
-    if not thin:
+    distance = max(float(r) for r in medium.radius)
+    if not thin and distance > 0.0:
         out["KHR_materials_volume"] = {
             "thicknessFactor": float(size_m),
-            "attenuationDistance": max(float(r) for r in medium.radius),
+            "attenuationDistance": distance,
             "attenuationColor": [float(c) for c in medium.color],
         }
     return out

@@ -28,11 +28,25 @@ DATA = Path(__file__).parent / "data" / "subsurface.toml"
 FORMS = ("volume", "thin")
 
 
+@dataclass(frozen=True)
+class Settings:
+    """The approximation's constants (data/subsurface.toml), immutable: one shared copy is safe."""
+
+    default_thickness_m: float
+    wrap_gain: float
+    wrap_max: float
+
+
 @cache
-def settings() -> Mapping[str, Any]:
-    """The approximation's constants (data/subsurface.toml; read once, never changed)."""
+def settings() -> Settings:
+    """The constants, read once (a frozen value: no caller can change what another reads)."""
     with DATA.open("rb") as handle:
-        return tomllib.load(handle)
+        table = tomllib.load(handle)
+    return Settings(
+        default_thickness_m=float(table["thin"]["default_thickness_m"]),
+        wrap_gain=float(table["wrap"]["gain"]),
+        wrap_max=float(table["wrap"]["max"]),
+    )
 
 
 @dataclass(frozen=True)
@@ -53,7 +67,7 @@ class TranslucentBody:
 
     def wall(self) -> float:
         """A thin wall's thickness in metres (the data's default when the IR gives none)."""
-        return float(self.thickness or settings()["thin"]["default_thickness_m"])
+        return float(self.thickness or settings().default_thickness_m)
 
 
 def _field(record: Any, name: str, default: Any = None) -> Any:
@@ -143,7 +157,7 @@ def subsurface_uniforms(material: Any, mesh: Mesh, model: np.ndarray) -> dict[st
     model = np.asarray(model, np.float64)
     scale = abs(float(np.linalg.det(model[:3, :3]))) ** (1.0 / 3.0) or 1.0
     per_unit = metres_per_unit()
-    wrap = settings()["wrap"]
+    constants = settings()
     # a volume's colour is the dipole's total diffuse reflectance (docs/subsurface.md): the body albedo
     # a thin sheet's front is cnlm_bsdf's (boundary_material): the term adds what comes through
     reflect, through = (
@@ -159,6 +173,6 @@ def subsurface_uniforms(material: Any, mesh: Mesh, model: np.ndarray) -> dict[st
         "pv_sss_centre": model[:3, :3] @ centre + model[:3, 3],
         "pv_sss_radius": radius * scale,
         "pv_sss_f0": schlick_f0(body.ior),
-        "pv_sss_wrap_gain": float(wrap["gain"]),
-        "pv_sss_wrap_max": float(wrap["max"]),
+        "pv_sss_wrap_gain": constants.wrap_gain,
+        "pv_sss_wrap_max": constants.wrap_max,
     }

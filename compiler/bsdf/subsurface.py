@@ -10,6 +10,9 @@ Translucent Materials", §4): the total diffuse reflectance of the classical dip
     Rd(α') = α'/2 · (1 + exp(−4/3 · A · sqrt(3 (1 − α')))) · exp(−sqrt(3 (1 − α'))),
     A = (1 + Fdr) / (1 − Fdr),  Fdr(η) = −1.440/η² + 0.710/η + 0.668 + 0.0636 η  (Egan & Hilgeman),
 
+(the fit only for η ≤ 2, where it holds; above, the exact integral: Fdr < 1 for every IOR,
+cnlmc.bsdf.subsurface_fresnel)
+
 increases monotonically from 0 (α' = 0) to 1 (α' = 1), so the reduced albedo α' = σs'/σt' of a
 given `color` is found by bisection (exact to 1e-12, round-trip tested), and then
 
@@ -35,6 +38,8 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from .subsurface_fresnel import diffuse_fresnel as diffuse_fresnel  # re-exported: the dipole's Fdr
+
 Array = npt.NDArray[np.float64]
 BISECTION_STEPS = 60  # halves [0, 1] down to 1e-18: below double precision
 ALBEDO_CEILING = 1.0 - 1e-9  # a reduced albedo of exactly 1 has no absorption: ℓd would be infinite
@@ -42,11 +47,6 @@ ALBEDO_CEILING = 1.0 - 1e-9  # a reduced albedo of exactly 1 has no absorption: 
 #: about 1/(3 (1 - α')) scattering events (A 0.8: 200, 0.99: 110 000, 1: endless), so a white word
 #: ('white candle', albedo 1 after its colour) is rendered as 0.99; the dataset's whitest is Cream, 0.976
 ALBEDO_MAX = 0.99
-
-
-def diffuse_fresnel(eta: float) -> float:
-    """Fdr: the boundary's reflectance for diffuse light from inside (Egan & Hilgeman's fit, η > 1)."""
-    return -1.440 / eta**2 + 0.710 / eta + 0.668 + 0.0636 * eta
 
 
 def boundary_a(eta: float) -> float:
@@ -126,8 +126,11 @@ def profile_shape(albedo: npt.ArrayLike) -> Array:
 
 def diffusion_profile(r: npt.ArrayLike, albedo: float, radius: float) -> Array:
     """R(r) in 1/m² at distance r (m) from where light entered: Christensen–Burley, ∫ R dA = albedo."""
+    distance = np.asarray(r, dtype=np.float64)
+    if not radius > 0.0:  # no path inside: all light leaves where it entered (a delta at r = 0), none at r > 0
+        return np.zeros_like(distance)
     d = radius / float(profile_shape(albedo))
-    rr = np.maximum(np.asarray(r, dtype=np.float64), 1e-12)
+    rr = np.maximum(distance, 1e-12)
     value: Array = albedo * (np.exp(-rr / d) + np.exp(-rr / (3.0 * d))) / (8.0 * np.pi * d * rr)
     return value
 
