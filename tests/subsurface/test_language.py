@@ -71,6 +71,8 @@ def test_nothing_else_has_a_medium(phrase):
 
 def test_fitzpatrick_skin_tones_are_the_datasets():
     """Skin I..VI: physicallybased_materials.json's colour, and its subsurfaceRadius (cm) in metres."""
+    if not DATA.exists():
+        pytest.skip("../shared/data is not beside this checkout")
     entries = {e["name"]: e for e in json.loads(DATA.read_text())["data"]}
     for numeral in ("I", "II", "III", "IV", "V", "VI"):
         m = material(f"skin {numeral.lower()}")

@@ -52,6 +52,8 @@ def test_the_dipole_albedo_rises_from_zero_to_one():
 def test_the_datasets_measured_media_give_back_its_colour_and_radius(name, colour_tol):
     """physicallybased.info's coefficients (per cm, Jensen et al. 2001) -> its colour and its
     subsurfaceRadius (cm): the dataset's radius is 1/sigma_tr and its colour the dipole's albedo."""
+    if not DATA.exists():
+        pytest.skip("../shared/data is not beside this checkout")
     entry = next(e for e in json.loads(DATA.read_text())["data"] if e["name"] == name)
     coefficients = entry["volumeCoefficients"]
     medium = Medium(
