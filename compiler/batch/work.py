@@ -43,9 +43,10 @@ def run_task(task: Task, root: str | None) -> Outcome:
     return outcome
 
 
-#: the option that sets a target's image size, by preference: what `--size N` sets (a target
-#: declaring neither writes no image: GLSL, IR)
-SIZE_OPTIONS = ("size", "map_size")
+#: the option that sets a target's image size in pixels, by preference: what `--size N` sets (a
+#: target declaring neither as an integer writes no image: GLSL, IR). `map_size` comes first: the
+#: exchange targets that bake maps also declare `size`, and there it is the object's size in metres.
+SIZE_OPTIONS = ("map_size", "size")
 #: the compiler's own options: the build sets seed itself and places the files itself
 SET_BY_THE_BUILD = ("output",)
 
@@ -70,7 +71,7 @@ def target_options(
             chosen[target][name] = value
     if size is not None:
         for target, instance in loaded.items():
-            declared = [o for o in SIZE_OPTIONS if _declares(instance, o)]
+            declared = [o for o in SIZE_OPTIONS if _declares_pixels(instance, o)]
             if declared:
                 chosen[target].setdefault(declared[0], size)
     return {name: _parsed(loaded[name], chosen[name]) for name in loaded}
@@ -85,6 +86,10 @@ def _target(name: str) -> Target:
 
 def _declares(target: Target, name: str) -> bool:
     return any(option.name == name for option in target.options)
+
+
+def _declares_pixels(target: Target, name: str) -> bool:
+    return any(option.name == name and option.type is int for option in target.options)
 
 
 def _option_items(pairs: Iterable[str] | Mapping[str, object]) -> list[tuple[str, object]]:

@@ -12,12 +12,15 @@ import subprocess
 import sys
 import threading
 import time
+import zipfile
 from pathlib import Path
 
 import pytest
+from PIL import Image
 
 from cnlmc.api import build
 from cnlmc.batch import build_report
+from cnlmc.batch.work import target_options
 from cnlmc.errors import UsageError
 from tests.build.conftest import USES_STEEL
 from tests.helpers import run_cnlmc
@@ -219,3 +222,21 @@ def test_a_folder_catalogue_keeps_each_file_apart(tmp_path):
     manifest = build(folder, tmp_path / "out", ["glsl"], jobs=1)
     assert manifest["catalog"] == ["b.cnl", "metals/a.cnl"]
     assert [m["outputs"]["glsl"]["folder"] for m in manifest["materials"]] == ["b/plate/glsl", "metals/a/plate/glsl"]
+
+
+def test_size_sets_pixels_never_an_objects_metres(tmp_path):
+    """`--size N` is an image size: for the exchange targets that also declare `size` (the preview
+    object's size in metres) it sets their `map_size`; a build to gltf and usdz with it succeeds."""
+    options = target_options(["maps", "gltf", "usdz"], [], 16, 0)
+    assert options["maps"]["size"] == 16
+    assert options["gltf"]["map_size"] == 16 and options["gltf"]["size"] is None
+    assert options["usdz"]["map_size"] == 16 and options["usdz"]["size"] is None
+    catalog = tmp_path / "hull.cnl"
+    catalog.write_text("rusty iron\n", encoding="utf-8")
+    result = run_cnlmc("build", str(catalog), "-o", str(tmp_path / "out"), "-t", "gltf,usdz", "--size", "16", "-j", "1")
+    assert result.returncode == 0, result.stderr
+    packages = list((tmp_path / "out").rglob("*.usdz"))
+    assert packages, "no usdz written"
+    with zipfile.ZipFile(packages[0]) as package:
+        images = [n for n in package.namelist() if n.endswith(".png")]
+        assert images and all(Image.open(package.open(n)).size == (16, 16) for n in images)
