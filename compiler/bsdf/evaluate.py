@@ -30,7 +30,7 @@ For dielectrics, ``fresnel="schlick"`` or ``"f82"`` both mean Schlick(f0_from_io
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import replace
 from typing import Any
 
@@ -224,12 +224,18 @@ def _proposal_lobes(material: Material) -> list[Alphas]:
     return [lobe for lobe in lobe_alphas(material) if lobe is not None]
 
 
+Bsdf = Callable[..., Real]
+
+
 def albedo(
     material: MaterialLike,
     mu: Any,
     n_samples: int = 4096,
     phi: float = 0.0,
     weight: Callable[[Any], Any] | None = None,
+    *,
+    bsdf: Bsdf = evaluate,
+    extra_lobes: Sequence[Alphas | None] = (),
     **kwargs: Any,
 ) -> Real:
     """Directional albedo A(μ) = ∫ f(wo, wi) cos θi dωi, RGB (3,), for the furnace test.
@@ -238,12 +244,16 @@ def albedo(
     cosine sampling and GGX visible-normal sampling of each lobe (``integrate``). ``mu``
     may be an array: one integration per value, batched (result (len(mu), 3)).
     ``weight(wi) -> (...)`` multiplies the integrand (e.g. a component of wi, for the
-    lobe's first moment). ``kwargs`` go to ``evaluate`` (fresnel, multiscatter, ward_form).
+    lobe's first moment). ``bsdf(material, wo, wi, **kwargs)`` is the BRDF integrated
+    (``evaluate``; ``flakes.evaluate_flaked``/``evaluate_full`` for the flaked/sheened one) and
+    ``extra_lobes`` its lobes beyond the base's and the coat's (None entries are skipped), which
+    MIS samples too. ``kwargs`` go to ``bsdf`` (fresnel, multiscatter, ward_form).
     """
-    material = as_material(material)
+    m = as_material(material)
     wo = dir_from_mu(mu, phi)
+    lobes = _proposal_lobes(m) + [lobe for lobe in extra_lobes if lobe is not None]
     if weight is None:
-        bsdf = lambda o, i: evaluate(material, o, i, **kwargs)
+        integrand = lambda o, i: bsdf(m, o, i, **kwargs)
     else:
-        bsdf = lambda o, i: evaluate(material, o, i, **kwargs) * np.asarray(weight(i))[..., None]
-    return albedo_mis(bsdf, wo, _proposal_lobes(material), n_samples)
+        integrand = lambda o, i: bsdf(m, o, i, **kwargs) * np.asarray(weight(i))[..., None]
+    return albedo_mis(integrand, wo, lobes, n_samples)

@@ -29,16 +29,14 @@ pixel's footprint face the half vector (docs/bsdf.md "Flakes", docs/preview.md).
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
-from .evaluate import _base_parts, albedo, coat_alpha, evaluate, lobe_alphas, local_dirs, the_coat
+from .evaluate import _base_parts, albedo, coat_alpha, evaluate, local_dirs, the_coat
 from .fresnel import fresnel_schlick
-from .geometry import Real, dir_from_mu
+from .geometry import Real
 from .inputs import MaterialLike, as_material
-from .integrate import albedo_mis
 from .layered import coated
 from .microfacet import microfacet_reflection
 from .sheen import sheen_layer
@@ -120,33 +118,15 @@ def flake_proposal(material: MaterialLike) -> tuple[Real, Real] | None:
     return a, a
 
 
-def albedo_flaked(
-    material: MaterialLike,
-    mu: Any,
-    n_samples: int = 4096,
-    phi: float = 0.0,
-    weight: Callable[[Any], Any] | None = None,
-    **kwargs: Any,
-) -> Real:
-    """``evaluate.albedo`` of the flaked base (no sheen), same arguments: what the preview's split-sum
-    tables integrate (the preview draws the sheen itself). Without flakes it is ``albedo``."""
-    m = as_material(material)
-    if not has_flakes(m):
-        return albedo(m, mu, n_samples, phi, weight, **kwargs)
-    lobes = [lobe for lobe in (*lobe_alphas(m), flake_proposal(m)) if lobe is not None]
-
-    def bsdf(o: Real, i: Real) -> Real:
-        value = evaluate_flaked(m, o, i, **kwargs)
-        return value if weight is None else value * np.asarray(weight(i))[..., None]
-
-    return albedo_mis(bsdf, dir_from_mu(mu, phi), lobes, n_samples)
+def albedo_flaked(material: MaterialLike, mu: Any, *args: Any, **kwargs: Any) -> Real:
+    """``evaluate.albedo`` of the flaked base (no sheen; MIS samples the flake lobe too): what the
+    preview's split-sum tables integrate (the preview draws the sheen itself). Same arguments."""
+    return albedo(material, mu, *args, bsdf=evaluate_flaked, extra_lobes=[flake_proposal(material)], **kwargs)
 
 
-def albedo_full(material: MaterialLike, mu: Any, n_samples: int = 4096, **kwargs: Any) -> Real:
+def albedo_full(material: MaterialLike, mu: Any, *args: Any, **kwargs: Any) -> Real:
     """Directional albedo of ``evaluate_full`` (MIS of cosine, the base, coat and flake lobes)."""
-    m = as_material(material)
-    lobes = [lobe for lobe in (*lobe_alphas(m), flake_proposal(m)) if lobe is not None]
-    return albedo_mis(lambda o, i: evaluate_full(m, o, i, **kwargs), dir_from_mu(mu), lobes, n_samples)
+    return albedo(material, mu, *args, bsdf=evaluate_full, extra_lobes=[flake_proposal(material)], **kwargs)
 
 
 __all__ = [

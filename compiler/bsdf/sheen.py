@@ -37,10 +37,10 @@ from typing import Any
 
 import numpy as np
 
-from .evaluate import evaluate, lobe_alphas
+from .evaluate import albedo, evaluate
 from .geometry import COS_EPS, Real, as_dirs, dir_from_mu, half_vector
 from .inputs import MaterialLike, as_material
-from .integrate import albedo_mis, lattice_2d
+from .integrate import lattice_2d
 
 #: The narrowest sheen lobe. Below it the fitted Λ lets the albedo exceed 1 at grazing (measured,
 #: 65 536 samples: E(μ = 0.005) = 0.99 at α = 0.07, 1.19 at 0.04, 1.56 at 0.02); Filament's
@@ -160,14 +160,10 @@ def evaluate_sheened(material: MaterialLike, wo: Any, wi: Any, **kwargs: Any) ->
     return sheen_layer(m, wo, wi, evaluate(m, wo, wi, **kwargs))
 
 
-def albedo_sheened(material: MaterialLike, mu: Any, n_samples: int = 4096, **kwargs: Any) -> Real:
-    """Directional albedo of the sheened material: the base's (``albedo``, MIS) scaled, plus the
-    sheen's, integrated over the same cosine-and-lobe proposals (the sheen is broad: cosine
-    sampling covers it)."""
-    m = as_material(material)
-    sheened = lambda o, i: evaluate_sheened(m, o, i, **kwargs)
-    lobes = [lobe for lobe in lobe_alphas(m) if lobe is not None]
-    return albedo_mis(sheened, dir_from_mu(mu), lobes, n_samples)
+def albedo_sheened(material: MaterialLike, mu: Any, *args: Any, **kwargs: Any) -> Real:
+    """Directional albedo of the sheened material: ``albedo`` of ``evaluate_sheened`` (the sheen is
+    broad: cosine sampling covers it, no extra lobe)."""
+    return albedo(material, mu, *args, bsdf=evaluate_sheened, **kwargs)
 
 
 __all__ = [
