@@ -7,7 +7,16 @@ a volume is a dielectric or rough dielectric boundary around a homogeneous mediu
 inversion of the IR's colour and radius, its scale METRES_PER_UNIT metres a unit), a thin sheet
 its blend of a two-sided diffuse front and a diffuse transmitter. The preview scene (mitsuba_scene.export_scene: camera, mesh, environment,
 key light) gets the medium as its shape's interior and the `volpathmis` integrator the export
-uses for media (spectral MIS: `volpath` is biased dark for a chromatic medium)."""
+uses for media (spectral MIS: `volpath` is biased dark for a chromatic medium).
+
+The key light. The preview's key is a directional (delta) light; Mitsuba cannot connect a delta
+light through a smooth (delta) dielectric boundary to the medium behind it, so with it a smooth
+body (milk) rendered the same with the key light on or off. Here the key light is a small far
+disk (`key_disk`): half-angle KEY_HALF_ANGLE_DEG, at KEY_DISTANCE scene units, radiance
+L = E / (pi sin^2 theta) so that its irradiance on a surface facing it equals the directional
+light's E (a uniform disk of angular radius theta gives E = pi L sin^2 theta). Paths that leave the
+body through the smooth boundary hit it by BSDF sampling; surfaces that can sample it (a rough
+boundary, an opaque material) do so as before (tests/subsurface/test_reference_key_light.py)."""
 
 from __future__ import annotations
 
@@ -22,8 +31,28 @@ from .scene import Scene
 from .shader import MaterialLike, as_material
 
 INTEGRATOR = "volpathmis"
+#: Measured: Mitsuba's `ldsampler` at 4 and 16 spp returns pixels of 1e35 for milk's deep paths
+#: (96 and 36 of 32x32 pixels above 50; `independent` at 8 and 32 spp: none above 65), so the
+#: volumetric reference samples independently at every count.
+SAMPLER = "independent"
 SHAPE_REF = re.compile(r'(<shape type="ply">\s*<string name="filename" value="mesh.ply"/>\s*<ref id=[^>]*/>)')
 INTEGRATOR_OPEN = re.compile(r'<integrator type="\w+">(\s*<integer name="max_depth" value="-?\d+"/>)?')
+DIRECTIONAL = re.compile(r'\s*<emitter type="directional">.*?</emitter>', re.S)
+#: our choice: 4 degrees (the sun is 0.27): small enough that an opaque surface's highlight and
+#: terminator match the preview's delta light (white plastic, tests), large enough that paths
+#: leaving a smooth body find it by BSDF sampling at a chart's sample counts
+KEY_HALF_ANGLE_DEG = 4.0
+#: scene units (the preview's objects fit a unit sphere): the irradiance across an object varies by
+#: (1 +- 1/KEY_DISTANCE)^2, 0.2 %; inside the camera's far clip only for secondary rays
+KEY_DISTANCE = 1000.0
+KEY_DISK = """
+    <shape type="disk">
+        <transform name="to_world">
+            <scale value="{radius:.9g}"/>
+            <lookat origin="{origin}" target="0, 0, 0" up="{up}"/>
+        </transform>
+        <emitter type="area"><rgb name="radiance" value="{radiance:.9g}"/></emitter>
+    </shape>"""
 
 
 def medium_id(materials_xml: Path) -> str | None:
@@ -45,15 +74,38 @@ def export_subsurface_scene(
     if typed.model.subsurface is None:
         raise ValueError(f"{typed.name}: the material has no subsurface body")
     out = Path(out_dir)
-    path = export_scene(typed, scene, out, width, height, spp=spp, seed=seed)
+    path = export_scene(typed, scene, out, width, height, spp=spp, seed=seed, sampler=SAMPLER)
     xml = path.read_text()
     medium = medium_id(out / "materials.xml")
     if medium is not None:
         xml = SHAPE_REF.sub(lambda m: f'{m.group(1)}\n        <ref name="interior" id="{medium}"/>', xml, count=1)
     depth = f'\n        <integer name="max_depth" value="{VOLUME_MAX_DEPTH}"/>'
     xml = INTEGRATOR_OPEN.sub(f'<integrator type="{INTEGRATOR}">{depth}', xml, count=1)
-    path.write_text(xml)
+    path.write_text(with_key_disk(xml, scene))
     return path
+
+
+def key_disk(scene: Scene) -> str:
+    """The scene's key light as a far disk emitter of the same irradiance (module docstring)."""
+    towards = scene.env.key.unit
+    theta = np.radians(KEY_HALF_ANGLE_DEG)
+    irradiance = scene.env.key.irradiance * scene.env_intensity
+    up = (1.0, 0.0, 0.0) if abs(towards[1]) > 0.99 else (0.0, 1.0, 0.0)
+    return KEY_DISK.format(
+        radius=KEY_DISTANCE * np.tan(theta),
+        origin=", ".join(f"{x:.9g}" for x in towards * KEY_DISTANCE),
+        up=", ".join(f"{x:.9g}" for x in up),
+        radiance=irradiance / (np.pi * np.sin(theta) ** 2),
+    )
+
+
+def with_key_disk(xml: str, scene: Scene) -> str:
+    """The exported preview scene with its directional key light replaced by the far disk
+    (none when the key light is off)."""
+    disk = key_disk(scene) if scene.env.key.irradiance * scene.env_intensity > 0 else ""
+    if not DIRECTIONAL.search(xml):
+        raise ValueError("the preview scene has no directional key light to replace")
+    return DIRECTIONAL.sub(lambda _: disk, xml, count=1)
 
 
 def render_subsurface(
