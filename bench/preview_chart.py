@@ -23,17 +23,14 @@ import csv
 import sys
 import tempfile
 import time
+import tomllib
 from pathlib import Path
 
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
-VARIANTS = {
-    "anisotropic": "lightly brushed, blue anodized aluminum",
-    "coat": "clear-coated red car paint",
-    "rough": "rough iron",
-    "mirror": "mirror chrome",
-}
+#: the chart's nouns and variants (label -> phrase): data, bench/data/preview_chart.toml
+CHART_MATERIALS = ROOT / "bench" / "data" / "preview_chart.toml"
 TIERS = ("analytic", "splitsum", "mc16", "fis16", "mc64", "fis64")
 VARIANT_TIERS = TIERS + ("mc256",)
 MITSUBA_SPP = (1, 4, 16, 64)
@@ -82,13 +79,22 @@ def rim_mask(alpha: np.ndarray) -> np.ndarray:
     return (shell > 0) & (core == 0)
 
 
+def chart_materials() -> tuple[list[str], dict[str, str]]:
+    """(nouns, variants label -> phrase) of the chart (bench/data/preview_chart.toml)."""
+    with open(CHART_MATERIALS, "rb") as f:
+        data = tomllib.load(f)
+    return list(data["nouns"]), dict(data["variants"])
+
+
 def materials() -> dict[str, dict]:
     from cnlmc.api import compile_source, lexicon_for
 
+    nouns, variants = chart_materials()
+    known = set(lexicon_for().all_of("nouns"))
     out = {}
-    for noun in sorted(lexicon_for().all_of("nouns")):
+    for noun in sorted(n for n in nouns if n in known):
         out[noun] = compile_source(noun + "\n").ir["materials"][0]
-    for label, phrase in VARIANTS.items():
+    for label, phrase in variants.items():
         out[f"{label}: {phrase}"] = compile_source(phrase + "\n").ir["materials"][0]
     return out
 

@@ -39,6 +39,7 @@ from cnlmc.cache import cached
 from cnlmc.material import RGB, Material
 
 from . import kernel_fit
+from .flake_tables import coated_flakes, flake_sections
 from .kernel_fit import FIT_ALPHA, kernels
 
 BSDF_SOURCES = Path(cnlmc.bsdf.__file__).parent
@@ -161,14 +162,12 @@ def _integrate(material: Material, fresnel: str, multiscatter: bool, mapped: boo
         black = _directional(black_material, options)
         white = _directional(white_material, options)
         black_lean, tint_lean = _leans(black_material, white_material, options)
-        black_rows.append(
-            np.concatenate(
-                [
-                    np.concatenate([black, black_lean[:, None]], 1),
-                    kernels(black_material, alpha, options, black_lean, fit_black, _mus()),
-                ]
-            )
+        black_kernels = (
+            flake_sections(black_material, _mus(), SAMPLES, _lean)
+            if coated_flakes(material)  # a coat's lobes are never fitted: its kernel sections hold the flakes
+            else kernels(black_material, alpha, options, black_lean, fit_black, _mus())
         )
+        black_rows.append(np.concatenate([np.concatenate([black, black_lean[:, None]], 1), black_kernels]))
         # the tint lobe is fitted only for conductors, whose black part is zero (white = tint)
         tint_rows.append(
             np.concatenate(
@@ -197,6 +196,8 @@ def albedo_tables(
                   environment lookup (`kernel_fit.kernels`);
       [2 MU, 3 MU) kernel 2: likewise. Not fitted (fitted = 0, a smooth lobe): kernel 1 is the
                   lean with weight 1, and the lobe is looked up once, at exactly α.
+    A coated paint with flakes (flake_tables.coated_flakes): the black table's kernel sections
+    hold the flakes' share of its albedo with their lean, and the flake lobe's α (flake_sections).
     Stored on disk; `TableCache` keeps them in memory too."""
     return _tables(material, fresnel, bool(multiscatter), bool(mapped_roughness))
 

@@ -14,6 +14,7 @@ import numpy as np
 
 from ..base import as_document
 from ..exchange import mitsuba, mitsuba_cnlm
+from . import reference_glass
 from .environment import mitsuba_rows, write_exr
 from .mesh_io import write_ply
 from .scene import Scene
@@ -120,6 +121,9 @@ def export_scene(
         path = out / artifact.name
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_bytes(artifact.content if isinstance(artifact.content, bytes) else artifact.content.encode())
+    if bsdf == "cnlm":  # rough glass with the light its facets block given back (reference_glass.py)
+        materials = out / "materials.xml"
+        materials.write_text(reference_glass.wrap_materials_xml(materials.read_text("utf-8")), "utf-8")
     bsdf_id = _bsdf_id(out / "materials.xml")
     write_ply(scene.mesh, out / "mesh.ply", flip_v=True)  # Mitsuba: bitmap top row at v = 0
     write_exr(out / "environment.exr", mitsuba_rows(scene.env.image))  # Mitsuba's row positions
@@ -181,6 +185,7 @@ def render_scene(
             mi.set_variant("scalar_rgb")
         return _timed_render(path, spp, seed, warm)
     mitsuba_cnlm.register()
+    reference_glass.register()
     previous = mitsuba_cnlm.set_symbolic(not uses_plugin(path))
     try:
         return _timed_render(path, spp, seed, warm)
@@ -191,7 +196,8 @@ def render_scene(
 def uses_plugin(scene_path) -> bool:
     """Does the exported scene (its materials.xml) use the `cnlm` plugin?"""
     materials = Path(scene_path).parent / "materials.xml"
-    return materials.exists() and 'type="cnlm"' in materials.read_text("utf-8")
+    text = materials.read_text("utf-8") if materials.exists() else ""
+    return 'type="cnlm"' in text or f'type="{reference_glass.PLUGIN}"' in text
 
 
 def _timed_render(path, spp, seed, warm) -> tuple[np.ndarray, float]:
