@@ -6,6 +6,7 @@ import json
 import re
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from functools import cached_property
+from json.encoder import c_make_encoder, encode_basestring  # type: ignore[attr-defined]
 from typing import Any
 
 from .conventions import alpha_of
@@ -124,7 +125,9 @@ def json_text(value: object) -> str:
     U+2028/U+2029 written as \\u escapes. The encoder leaves them raw (valid JSON), but a terminal
     reads C1 as commands (U+009B is CSI) and JavaScript reads U+2028 as a line end. They occur only
     inside strings, so escaping the text is exact."""
-    return terminal_safe(_ENCODER.encode(value))
+    if type(value) is str:
+        return terminal_safe(encode_basestring(value))  # what the encoder does with a string
+    return terminal_safe("".join(_ENCODE(value, 0)) if _ENCODE is not None else _ENCODER.encode(value))
 
 
 def terminal_safe(text: str) -> str:
@@ -156,6 +159,16 @@ def _plain(value: object) -> Any:
 #: from JSON) and has none, and the check costs a dictionary insert and delete per container,
 #: a sixth of the encoding of a material with its provenance
 _ENCODER = json.JSONEncoder(ensure_ascii=False, check_circular=False, default=_plain)
+
+#: _ENCODER's C encoder, made once: `_ENCODER.encode(value)` makes this same object anew on every
+#: call (JSONEncoder.iterencode with _one_shot) and joins what it returns; made once, a material's
+#: text costs a few microseconds less, a small value (null, a variant) about half (#13 speed).
+#: None where Python has no C accelerator (then _ENCODER.encode does it all).
+_ENCODE = (
+    c_make_encoder(None, _plain, encode_basestring, None, ": ", ", ", False, False, True)
+    if c_make_encoder is not None
+    else None
+)
 
 
 class EncodedMaterial(Mapping[str, Any]):

@@ -178,9 +178,10 @@ class _Replay:
                 variant["group"] = name
             return {**encoded, "name": unique_name(f"{name}__{variant['name']}", self.used) if variant else name}
         variant, front, rest = encoded
-        if variant is not None:
-            variant["group"] = name
-            name = unique_name(f"{name}__{variant['name']}", self.used)
+        if variant is None:  # the common case: json_text(None) written out
+            return EncodedMaterial(f'{{"name": {json_text(name)}, {front}, "variant": null, {rest}')
+        variant["group"] = name
+        name = unique_name(f"{name}__{variant['name']}", self.used)
         return EncodedMaterial(f'{{"name": {json_text(name)}, {front}, "variant": {json_text(variant)}, {rest}')
 
 
@@ -240,6 +241,10 @@ def chunk_events(source: str, ctx: Context, number: int, offset: int, end: int |
     return events
 
 
+_NAMELESS = '{"name": "", '  # how a worker's material (named by the parent) starts
+_NO_VARIANT = ', "variant": null, '
+
+
 def _encoded(material: JSONDict) -> tuple[dict[str, Any] | None, str, str] | JSONDict:
     """The material checked (as the IR writer checks it) and written as JSON text in the pieces
     around what depends on its name (the name, the variant's group): its variant, the text of
@@ -249,6 +254,10 @@ def _encoded(material: JSONDict) -> tuple[dict[str, Any] | None, str, str] | JSO
         check_material(material, "material")
     except ValueError:
         return material
+    if material["variant"] is None and material["name"] == "":  # the common case: the text cut in three
+        text = json_text(material)  # '{"name": "", FRONT, "variant": null, REST'
+        cut = text.index(_NO_VARIANT)  # the key's own: in a string every '"' is escaped
+        return None, text[len(_NAMELESS) : cut], text[cut + len(_NO_VARIANT) :]
     front = json_text({key: material[key] for key in FRONT_KEYS if key in material})
     rest = json_text({key: value for key, value in material.items() if key not in NAMED_KEYS})
     return material["variant"], front[1:-1], rest[1:]
