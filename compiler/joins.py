@@ -53,7 +53,7 @@ class Joiner:
     def joined(self, tagged: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
         """Objects and class nouns joined to their material: "oak planks" = oak, "roof tiles" =
         tiles, "planks" = wood, "walnut wood" = walnut; each with a note."""
-        if any(t.unknown for t in tagged):
+        if any(t.unknown or of_tag(t, "OF") for t in tagged):
             tagged = self._made_of(tagged, diags)
         out: list[Tagged] = []
         for k, word in enumerate(tagged):

@@ -114,6 +114,11 @@ def test_a_word_saying_what_kind_of_thing_before_an_object_has_no_effect(lexicon
         ("a tray made from teak", "teak"),
         ("planks made out of weathered oak", "weathered oak"),
         ("cufflinks crafted from sterling silver", "sterling silver"),
+        ("a sheet of brushed aluminium", "brushed aluminium"),
+        ("slab of honed granite", "honed granite"),
+        ("a pane of frosted glass", "frosted glass"),
+        ("planks of weathered oak", "weathered oak"),
+        ("a block of pine", "pine"),
     ],
 )
 def test_an_object_made_of_a_material_is_that_material(lexicon, text, meaning):
