@@ -23,6 +23,7 @@ from cnlmc.material import Material
 
 from .glass import bounding_sphere
 from .mesh import Mesh
+from .subsurface_profile import BesselK0, PreintegratedTable
 
 DATA = Path(__file__).parent / "data" / "subsurface.toml"
 FORMS = ("volume", "thin")
@@ -33,8 +34,9 @@ class Settings:
     """The approximation's constants (data/subsurface.toml), immutable: one shared copy is safe."""
 
     default_thickness_m: float
-    wrap_gain: float
-    wrap_max: float
+    profile_cos_steps: int
+    profile_rho_steps: int
+    profile_u_max: float
 
 
 @cache
@@ -44,9 +46,21 @@ def settings() -> Settings:
         table = tomllib.load(handle)
     return Settings(
         default_thickness_m=float(table["thin"]["default_thickness_m"]),
-        wrap_gain=float(table["wrap"]["gain"]),
-        wrap_max=float(table["wrap"]["max"]),
+        profile_cos_steps=int(table["profile"]["cos_steps"]),
+        profile_rho_steps=int(table["profile"]["rho_steps"]),
+        profile_u_max=float(table["profile"]["u_max"]),
     )
+
+
+@cache
+def preintegrated_table() -> PreintegratedTable:
+    """The key light's pre-integrated diffusion table (subsurface_profile.py), made once: an
+    immutable value (its array is read-only)."""
+    with DATA.open("rb") as handle:
+        bessel = tomllib.load(handle)["bessel"]
+    k0 = BesselK0(tuple(bessel["i0_small"]), tuple(bessel["k0_small"]), tuple(bessel["k0_large"]))
+    constants = settings()
+    return PreintegratedTable(constants.profile_cos_steps, constants.profile_rho_steps, constants.profile_u_max, k0)
 
 
 @dataclass(frozen=True)
@@ -146,6 +160,22 @@ def schlick_f0(ior: float) -> float:
     return ((ior - 1.0) / (ior + 1.0)) ** 2
 
 
+def entry_transmittance(ior: float) -> float:
+    """The share of diffuse light that crosses the boundary into the body: 1 - the cosine-weighted
+    mean of Schlick's Fresnel, f0 + (1 - f0) / 21 (int (1 - mu)^5 2 mu dmu = 1/21). Jensen et al.
+    2001's BSSRDF has a Fresnel transmittance where light enters as where it leaves; light that
+    reaches a point by diffusion entered at many angles, so the mean is taken."""
+    f0 = schlick_f0(ior)
+    return 1.0 - (f0 + (1.0 - f0) / 21.0)
+
+
+def profile_scale(body: TranslucentBody) -> np.ndarray:
+    """Christensen-Burley's d = l_d / s(A) per channel (metres): the unit of the pre-integrated table."""
+    from cnlmc.bsdf.subsurface import profile_shape
+
+    return np.asarray(body.radius, np.float64) / profile_shape(np.clip(body.color, 0.0, 1.0))
+
+
 def subsurface_uniforms(material: Any, mesh: Mesh, model: np.ndarray) -> dict[str, object]:
     """The subsurface uniforms for the object drawn with `model` (world = model @ object); none
     when the material has no subsurface body. Lengths are in scene units: metres divided by
@@ -157,7 +187,7 @@ def subsurface_uniforms(material: Any, mesh: Mesh, model: np.ndarray) -> dict[st
     model = np.asarray(model, np.float64)
     scale = abs(float(np.linalg.det(model[:3, :3]))) ** (1.0 / 3.0) or 1.0
     per_unit = metres_per_unit()
-    constants = settings()
+    table = preintegrated_table()
     # a volume's colour is the dipole's total diffuse reflectance (docs/subsurface.md): the body albedo
     # a thin sheet's front is cnlm_bsdf's (boundary_material): the term adds what comes through
     reflect, through = (
@@ -173,6 +203,8 @@ def subsurface_uniforms(material: Any, mesh: Mesh, model: np.ndarray) -> dict[st
         "pv_sss_centre": model[:3, :3] @ centre + model[:3, 3],
         "pv_sss_radius": radius * scale,
         "pv_sss_f0": schlick_f0(body.ior),
-        "pv_sss_wrap_gain": constants.wrap_gain,
-        "pv_sss_wrap_max": constants.wrap_max,
+        "pv_sss_entry": entry_transmittance(body.ior),
+        "pv_sss_profile_scale": np.maximum(profile_scale(body) / per_unit * scale, 1e-6),
+        "pv_sss_lut": table.values.ravel(),
+        "pv_sss_lut_u_max": table.u_max,
     }

@@ -47,6 +47,6 @@ def test_a_zero_radius_medium_writes_no_zero_attenuation_distance(tmp_path):
 def test_the_preview_constants_cannot_be_changed_by_a_caller():
     shared = settings()
     with pytest.raises(dataclasses.FrozenInstanceError):
-        shared.wrap_gain = 5.0  # type: ignore[misc]
-    assert settings() is shared and settings().wrap_gain == 1.0  # data/subsurface.toml [wrap] gain
+        shared.profile_u_max = 5.0  # type: ignore[misc]
+    assert settings() is shared and settings().profile_u_max == 0.95  # data/subsurface.toml [profile] u_max
     assert 0.0 < shared.default_thickness_m < 0.01
