@@ -32,6 +32,8 @@ def _flakes_through_coat(material: Material, wo: Any, wi: Any, **_: Any) -> np.n
     m = material
     wo, wi = local_dirs(m, wo, wi)
     p, coat = m.params, the_coat(m)
+    if coat is None:  # coated_flakes chose the material: it has a coat
+        raise ValueError(f"{m.name}: the flake sections are for a coated paint")
     density, alpha = float(p.flake_density), float(flake_alpha(p.flake_roughness))
     zeros = np.zeros(np.broadcast_shapes(np.shape(wo), np.shape(wi))[:-1] + (3,))
 

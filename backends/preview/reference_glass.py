@@ -249,11 +249,11 @@ def _plugin_class():
             out = mi.BSDFSample3f()
             out.wo = wo
             out.pdf = pdf
-            out.eta = dr.select(transmitted, dr.select(outside, self.ior, 1.0 / self.ior), 1.0)
+            out.eta = dr.select(transmitted, dr.select(outside, self.ior, 1.0 / self.ior), 1.0)  # type: ignore[assignment]
             glossy = dr.select(transmitted, +mi.BSDFFlags.GlossyTransmission, +mi.BSDFFlags.GlossyReflection)
             diffuse = dr.select(transmitted, +mi.BSDFFlags.DiffuseTransmission, +mi.BSDFFlags.DiffuseReflection)
-            out.sampled_type = mi.UInt32(dr.select(choose_ms, diffuse, glossy))
-            out.sampled_component = mi.UInt32(dr.select(choose_ms, 2, 0) + dr.select(transmitted, 1, 0))
+            out.sampled_type = mi.UInt32(dr.select(choose_ms, diffuse, glossy))  # type: ignore[assignment]
+            out.sampled_component = mi.UInt32(dr.select(choose_ms, 2, 0) + dr.select(transmitted, 1, 0))  # type: ignore[assignment]
             ok = active & (pdf > 0)
             return out, dr.select(ok, value / dr.maximum(pdf, 1e-12), 0.0)
 
