@@ -127,7 +127,11 @@ def materialx_peer(stage: Path, size: int) -> None:
     generator = mx_gen_glsl.GlslShaderGenerator.create()
     context = mx_gen.GenContext(generator)
     context.registerSourceCodeSearchPath(search)
+    colour_management = mx_gen.DefaultColorManagementSystem.create(generator.getTarget())
+    colour_management.loadLibrary(library)  # srgb_texture images decoded to linear, as MaterialXView does
+    generator.setColorManagementSystem(colour_management)
     options = context.getOptions()
+    options.targetColorSpaceOverride = "lin_rec709"
     options.hwSpecularEnvironmentMethod = mx_gen.HwSpecularEnvironmentMethod.SPECULAR_ENVIRONMENT_FIS
     options.hwMaxActiveLightSources = 1
     lights = mx.createDocument()
