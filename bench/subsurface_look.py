@@ -16,17 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-SCENE = """<?xml version="1.0" encoding="utf-8"?>
-<scene version="3.0.0">
-    <include filename="materials.xml"/>
-    <integrator type="volpathmis"><integer name="max_depth" value="{depth}"/></integrator>
-    <sensor type="perspective">
-        <float name="fov" value="34"/>
-        <transform name="to_world"><lookat origin="0, 0.9, 4.2" target="0, 0.05, 0" up="0, 1, 0"/></transform>
-        <sampler type="independent"><integer name="sample_count" value="{spp}"/></sampler>
-        <film type="hdrfilm"><integer name="width" value="{size}"/><integer name="height" value="{size}"/></film>
-    </sensor>
-    <emitter type="constant"><rgb name="radiance" value="0.05, 0.05, 0.06"/></emitter>
+CONTENT = """<emitter type="constant"><rgb name="radiance" value="0.05, 0.05, 0.06"/></emitter>
     <shape type="rectangle">
         <transform name="to_world"><scale value="1.2"/><lookat origin="{light}" target="0, 0.1, 0" up="0, 1, 0"/></transform>
         <emitter type="area"><rgb name="radiance" value="{power}, {power}, {power}"/></emitter>
@@ -34,9 +24,7 @@ SCENE = """<?xml version="1.0" encoding="utf-8"?>
     <shape type="{shape_type}">
         {shape_props}
         <ref id="{ident}"/>{interior}
-    </shape>
-</scene>
-"""
+    </shape>"""
 LIGHTS = {"front": ("1.8, 2.2, 3.0", 5.0), "back": ("0.0, 1.6, -2.4", 8.0)}
 
 
@@ -54,6 +42,7 @@ def render(phrase: str, light: str, folder: Path, args: argparse.Namespace) -> t
     import mitsuba as mi
 
     from cnlmc.api import compile_source, emit
+    from cnlmc.backends.preview.subsurface_reference import probe_scene
 
     ir = compile_source(phrase).ir
     material = ir["materials"][0]
@@ -65,16 +54,16 @@ def render(phrase: str, light: str, folder: Path, args: argparse.Namespace) -> t
     else:
         shape_type, props = "sphere", '<float name="radius" value="0.9"/>'
     origin, power = LIGHTS[light]
-    text = SCENE.format(
-        depth=args.depth,
-        spp=args.spp,
-        size=args.size,
+    content = CONTENT.format(
         light=origin,
         power=power,
         shape_type=shape_type,
         shape_props=props,
         ident=material["name"],
         interior=f'<ref name="interior" id="{material["name"]}_medium"/>' if volume else "",
+    )
+    text = probe_scene(
+        content, origin="0, 0.9, 4.2", target="0, 0.05, 0", fov=34, size=args.size, spp=args.spp, max_depth=args.depth
     )
     (folder / "scene.xml").write_text(text)
     start = time.perf_counter()

@@ -31,6 +31,9 @@ from .scene import Scene
 from .shader import MaterialLike, as_material
 
 INTEGRATOR = "volpathmis"
+#: a probe scene's path depth (probe_scene): unbounded, as the export's (a bright medium needs
+#: ~1/(3(1 - alpha')) events a path)
+VOLUME_MAX_DEPTH_PROBE = -1
 #: Measured: Mitsuba's `ldsampler` at 4 and 16 spp returns pixels of 1e35 for milk's deep paths
 #: (96 and 36 of 32x32 pixels above 50; `independent` at 8 and 32 spp: none above 65), so the
 #: volumetric reference samples independently at every count.
@@ -114,3 +117,44 @@ def render_subsurface(
     """(linear RGBA premultiplied by coverage, top row first; seconds of the render call)."""
     path = export_subsurface_scene(material, scene, out_dir, size, size, spp, seed)
     return render_scene(path, spp=spp, seed=seed, variant="vectorized")
+
+
+PROBE_SCENE = """<?xml version="1.0" encoding="utf-8"?>
+<scene version="3.0.0">
+    <include filename="materials.xml"/>
+    <integrator type="{integrator}"><integer name="max_depth" value="{max_depth}"/></integrator>
+    <sensor type="perspective">
+        <float name="fov" value="{fov:.9g}"/>
+        <transform name="to_world"><lookat origin="{origin}" target="{target}" up="0, 1, 0"/></transform>
+        <sampler type="{sampler}"><integer name="sample_count" value="{spp}"/></sampler>
+        <film type="hdrfilm"><integer name="width" value="{size}"/><integer name="height" value="{size}"/></film>
+    </sensor>
+    {content}
+</scene>
+"""
+
+
+def probe_scene(
+    content: str,
+    *,
+    origin: str,
+    fov: float,
+    size: int,
+    spp: int,
+    target: str = "0, 0, 0",
+    max_depth: int = VOLUME_MAX_DEPTH_PROBE,
+) -> str:
+    """A small Mitsuba scene around a materials.xml fragment (the tests' backlit sheets and white
+    furnace, bench/subsurface_look.py): `content` holds the emitters and shapes; a square
+    perspective camera at `origin` looking at `target`, the volume path tracer, independent samples."""
+    return PROBE_SCENE.format(
+        integrator=INTEGRATOR,
+        max_depth=max_depth,
+        fov=fov,
+        origin=origin,
+        target=target,
+        sampler=SAMPLER,
+        spp=spp,
+        size=size,
+        content=content,
+    )

@@ -19,23 +19,10 @@ pytestmark = pytest.mark.mitsuba
 
 from cnlmc.api import compile_source, emit  # noqa: E402
 
-BACKLIT = """<?xml version="1.0" encoding="utf-8"?>
-<scene version="3.0.0">
-    <include filename="materials.xml"/>
-    <integrator type="volpathmis"><integer name="max_depth" value="256"/></integrator>
-    <sensor type="perspective">
-        <float name="fov" value="8"/>
-        <transform name="to_world"><lookat origin="0, 0, 6" target="0, 0, 0" up="0, 1, 0"/></transform>
-        <sampler type="independent"><integer name="sample_count" value="16"/></sampler>
-        <film type="hdrfilm"><integer name="width" value="16"/><integer name="height" value="16"/></film>
-    </sensor>
-    <shape type="rectangle">
+LIGHT_BEHIND = """<shape type="rectangle">
         <transform name="to_world"><scale value="1.5"/><translate z="-2"/></transform>
         <emitter type="area"><rgb name="radiance" value="1, 1, 1"/></emitter>
-    </shape>
-    {shape}
-</scene>
-"""
+    </shape>"""
 SHEET = '<shape type="rectangle"><transform name="to_world"><scale value="3"/></transform><ref id="{id}"/></shape>'
 SLAB = (
     '<shape type="cube"><transform name="to_world"><scale x="3" y="3" z="{half}"/></transform>'
@@ -66,8 +53,11 @@ def fragment(ir: dict, folder) -> str:
 
 
 def render(folder, shape: str) -> np.ndarray:
+    from cnlmc.backends.preview.subsurface_reference import probe_scene
+
     mi.set_variant("scalar_rgb")
-    (folder / "scene.xml").write_text(BACKLIT.replace("{shape}", shape))
+    scene = probe_scene(f"{LIGHT_BEHIND}\n    {shape}", origin="0, 0, 6", fov=8, size=16, spp=16, max_depth=256)
+    (folder / "scene.xml").write_text(scene)
     return np.asarray(mi.render(mi.load_file(str(folder / "scene.xml"))))
 
 
@@ -104,20 +94,10 @@ def test_the_thin_sheet_transmits_about_what_the_exact_volumetric_sheet_does(tmp
     assert 0.4 < ratio < 2.5, (approximate, exact)
 
 
-FURNACE = """<?xml version="1.0" encoding="utf-8"?>
-<scene version="3.0.0">
-    <include filename="materials.xml"/>
-    <integrator type="volpathmis"><integer name="max_depth" value="1024"/></integrator>
-    <sensor type="perspective">
-        <float name="fov" value="20"/>
-        <transform name="to_world"><lookat origin="0, 0, 6" target="0, 0, 0" up="0, 1, 0"/></transform>
-        <sampler type="independent"><integer name="sample_count" value="256"/></sampler>
-        <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/></film>
-    </sensor>
-    <emitter type="constant"><rgb name="radiance" value="1, 1, 1"/></emitter>
-    <shape type="sphere"><float name="radius" value="0.7"/><ref id="{id}"/><ref name="interior" id="{id}_medium"/></shape>
-</scene>
-"""
+WHITE_WORLD = (
+    '<emitter type="constant"><rgb name="radiance" value="1, 1, 1"/></emitter>\n    '
+    '<shape type="sphere"><float name="radius" value="0.7"/><ref id="{id}"/><ref name="interior" id="{id}_medium"/></shape>'
+)
 
 
 @pytest.mark.parametrize("phrase", ["white milk", "white translucent plastic"])
@@ -131,7 +111,10 @@ def test_no_medium_creates_light_in_a_white_furnace(tmp_path, phrase):
     ident = ir["materials"][0]["name"]
     xml = emit(ir, "mitsuba", {"form": "fragment", "unit_metres": "0.000001"}).artifacts[0].content
     (tmp_path / "materials.xml").write_text(xml)
-    (tmp_path / "scene.xml").write_text(FURNACE.replace("{id}", ident))
+    from cnlmc.backends.preview.subsurface_reference import probe_scene
+
+    furnace = probe_scene(WHITE_WORLD.format(id=ident), origin="0, 0, 6", fov=20, size=8, spp=256, max_depth=1024)
+    (tmp_path / "scene.xml").write_text(furnace)
     mi.set_variant("scalar_rgb")
     image = np.asarray(mi.render(mi.load_file(str(tmp_path / "scene.xml"))))
     centre = image[2:6, 2:6].mean(axis=(0, 1))
