@@ -43,8 +43,36 @@ CYCLES = {
     "textured": ("oak", "dark oak", "light oak"),
     "glass": ("clear glass", "blue glass", "green glass"),
 }
-FRAME_LISTENER = """(canvas) => { window.bench_frames = [];
-    document.querySelector(canvas).addEventListener("frame", () => window.bench_frames.push(performance.now())); }"""
+#: the page's trace marks (static/view/trace.js), in order: each stage runs from the mark before it
+STAGES = (
+    ("change", "keystroke -> CodeMirror update"),
+    ("send", "-> edit sent (the page's debounce)"),
+    ("message", "-> answer arrives (socket, server, JSON)"),
+    ("parsed", "-> JSON parsed"),
+    ("applied", "-> editor marks and panels"),
+    ("setup", "-> view setup (program, tables, textures)"),
+    ("quick-drawn", "-> quick frame drawn"),
+    ("quick-shown", "-> quick frame on screen"),
+    ("drawn", "-> full frame drawn"),
+    ("shown", "-> full frame on screen"),
+)
+#: the server's own timing of an edit (the analysis's `timing`), in the answer's stage
+SERVER_PARTS = ("queued_ms", "analysis_ms", "view_ms", "server_ms")
+#: waits for the edit started after `start` to be on screen; its marks, ms from `start`
+TRACE_JS = """async (start) => {
+  const ours = () => performance.getEntriesByType("mark").filter((m) => m.name.startsWith("cnlmc:") && m.startTime >= start);
+  for (let i = 0; i < 2400; i++) {
+    const changes = ours().filter((m) => m.name === "cnlmc:change");
+    if (changes.length) {
+      const edit = changes[changes.length - 1].detail.edit;
+      const marks = ours().filter((m) => m.detail.edit === edit);
+      if (marks.some((m) => m.name === "cnlmc:shown"))
+        return marks.map((m) => [m.name.slice(6), m.startTime - start, m.detail]);
+    }
+    await new Promise((resolve) => setTimeout(resolve, 50));
+  }
+  return null;
+}"""
 
 
 def percentile(values: list[float], q: float) -> float:
@@ -71,72 +99,113 @@ def start_studio() -> tuple[subprocess.Popen[str], str] | None:
 class StudioPage:
     """Edits through the studio's page: select all in the editor, insert the phrase."""
 
-    canvas = "#view"
-
     def __init__(self, page: Any, url: str) -> None:
         self.page = page
         page.goto(url)
         page.wait_for_selector("body[data-ready='1']", state="attached", timeout=120_000)
-        page.evaluate(FRAME_LISTENER, self.canvas)
 
-    def edit(self, phrase: str) -> tuple[float, float]:
+    def edit(self, phrase: str) -> dict[str, Any]:
         page = self.page
-        shown = int(page.evaluate("Number(document.body.dataset.shown)"))
         page.click(".cm-content")
         page.keyboard.press("Control+A")
         start = page.evaluate("performance.now()")
         page.keyboard.insert_text(phrase + "\n")
-        # (a CSS wait: the page's Content-Security-Policy forbids evaluating strings)
-        page.wait_for_selector(f"body:not([data-shown='{shown}'])", state="attached", timeout=120_000)
-        return frames_after(page, start)
+        return traced(page, start)
 
 
-def frames_after(page: Any, start: float) -> tuple[float, float]:
-    """(first, last) frame event after `start`, ms from it: the quick frame at half size, the full one."""
-    times = page.evaluate(f"window.bench_frames.filter((t) => t > {start})")
-    return float(min(times)) - start, float(max(times)) - start
+def traced(page: Any, start: float) -> dict[str, Any]:
+    """The edit's stages: mark -> ms from just before the keystroke; `server` the server's timing."""
+    marks = page.evaluate(TRACE_JS, start)
+    if marks is None:
+        raise RuntimeError("the edit's frame did not reach the screen in 120 s")
+    out: dict[str, Any] = {"server": {}, "chars": 0, "quick_scale": 1.0, "quick_ms": 0.0, "full_ms": 0.0}
+    for name, at, detail in marks:
+        out.setdefault(name, at)
+        out["server"] = detail.get("server") or out["server"]
+        out["chars"] = detail.get("chars") or out["chars"]
+        if name == "quick-drawn":
+            out["quick_scale"], out["quick_ms"] = detail["scale"], detail["ms"]
+        if name == "drawn":
+            out["full_ms"] = detail["ms"]
+    return out
 
 
 class ViewPage:
     """Edits through material_payload and the view's test page (no editor, no debounce)."""
 
-    canvas = "#view"
-
     def __init__(self, page: Any, url: str) -> None:
         self.page = page
         page.goto(url + "/page.html?size=512")
         page.evaluate("window.viewReady")
-        page.evaluate(FRAME_LISTENER, self.canvas)
 
-    def edit(self, phrase: str) -> tuple[float, float]:
+    def edit(self, phrase: str) -> dict[str, Any]:
         start = self.page.evaluate("performance.now()")
-        self.page.evaluate("(p) => window.showPhrase(p)", phrase)
-        return frames_after(self.page, start)
+        self.page.evaluate("(p) => { window.showPhrase(p); }", phrase)
+        return traced(self.page, start)
 
 
-def latencies(driver: Any, edits: int) -> dict[str, dict[str, Any]]:
+def latencies(driver: Any, edits: int, kinds: list[str]) -> dict[str, dict[str, Any]]:
+    """Per kind: `cold` (the first cycle, new content: full frame on screen, ms) and `warm` (the traces after it)."""
     out = {}
-    for kind, cycle in CYCLES.items():
+    for kind in kinds:
+        cycle = CYCLES[kind]
         driver.edit(cycle[-1])  # the shader compiled, the page settled
-        times = [driver.edit(cycle[i % len(cycle)]) for i in range(edits)]
-        out[kind] = {
-            "cold": [full for _, full in times[: len(cycle)]],
-            "quick": [quick for quick, _ in times[len(cycle) :]],
-            "warm": [full for _, full in times[len(cycle) :]],
-        }
+        traces = [driver.edit(cycle[i % len(cycle)]) for i in range(edits)]
+        out[kind] = {"cold": [t["shown"] for t in traces[: len(cycle)]], "warm": traces[len(cycle) :]}
     return out
 
 
-def frame_times(page: Any, frames: int) -> dict[str, float]:
+def on_screen(trace: dict[str, Any]) -> tuple[float, float]:
+    """(first picture of the new material on screen, the full frame on screen), ms from the keystroke."""
+    return float(trace.get("quick-shown", trace["shown"])), float(trace["shown"])
+
+
+def stage_table(measured: dict[str, dict[str, Any]]) -> list[str]:
+    """Median ms of each stage per kind (a stage an edit skipped counts 0), the server's parts below."""
+    kinds = list(measured)
+    lines = [f"  {'stage (median ms)':46s}" + "".join(f"{k:>12s}" for k in kinds)]
+    previous = {k: [0.0] * len(measured[k]["warm"]) for k in kinds}
+    for mark, label in STAGES:
+        row = []
+        for k in kinds:
+            durations = []
+            for i, t in enumerate(measured[k]["warm"]):
+                if mark in t:
+                    durations.append(t[mark] - previous[k][i])
+                    previous[k][i] = t[mark]
+                else:
+                    durations.append(0.0)
+            row.append(percentile(durations, 50))
+        lines.append(f"  {label:46s}" + "".join(f"{v:12.1f}" for v in row))
+        if mark == "message":
+            for part in SERVER_PARTS:
+                values = {k: [t["server"].get(part) for t in measured[k]["warm"] if t["server"]] for k in kinds}
+                if any(values.values()):
+                    cells = "".join(f"{percentile([v for v in values[k] if v is not None], 50):12.1f}" for k in kinds)
+                    lines.append(f"  {'    of which server ' + part[:-3]:46s}" + cells)
+            sizes = "".join(f"{percentile([t['chars'] for t in measured[k]['warm']], 50) / 1000:11.1f}k" for k in kinds)
+            lines.append(f"  {'    answer size (characters)':46s}" + sizes)
+        if mark == "quick-drawn":
+            for key, label in (("quick_scale", "quick frame's scale"), ("quick_ms", "quick frame's draw (ms)")):
+                cells = "".join(f"{percentile([t[key] for t in measured[k]['warm']], 50):12.2f}" for k in kinds)
+                lines.append(f"  {'    ' + label:46s}" + cells)
+        if mark == "drawn":
+            cells = "".join(f"{percentile([t['full_ms'] for t in measured[k]['warm']], 50):12.1f}" for k in kinds)
+            lines.append(f"  {'    full frame draw (ms)':46s}" + cells)
+    return lines
+
+
+def frame_times(page: Any, frames: int, kinds: list[str]) -> dict[str, float]:
     out = {}
-    for kind, cycle in CYCLES.items():
+    for kind in kinds:
+        cycle = CYCLES[kind]
         page.evaluate("(p) => window.showPhrase(p)", cycle[0])
         page.evaluate("window.view.draw()")
         out[kind] = float(np.median([page.evaluate("window.view.draw()") for _ in range(frames)]))
     return out
 
 
-def preview_frame_times(frames: int) -> dict[str, float]:
+def preview_frame_times(frames: int, kinds: list[str]) -> dict[str, float]:
     """The peer: `cnlmc preview`'s splitsum frame of the same scene at 512x512 (llvmpipe, this process)."""
     from cnlmc.api import compile_source
     from cnlmc.backends.preview.render import Renderer
@@ -144,8 +213,8 @@ def preview_frame_times(frames: int) -> dict[str, float]:
     out = {}
     with Renderer(512) as renderer:
         scene = renderer.scene("sphere", "studio")
-        for kind, cycle in CYCLES.items():
-            material = compile_source(cycle[0] + "\n").ir["materials"][0]
+        for kind in kinds:
+            material = compile_source(CYCLES[kind][0] + "\n").ir["materials"][0]
             out[kind] = renderer.frame_time(scene, material, "splitsum", repeats=frames)
     return out
 
@@ -198,7 +267,11 @@ def main() -> None:
     parser.add_argument("--frames", type=int, default=7)
     parser.add_argument("--through", choices=("studio", "view"), default="studio")
     parser.add_argument("--sheet", type=Path, help="write the preview | browser picture there instead")
+    parser.add_argument("--kinds", default=",".join(CYCLES), help="which of them (comma-separated)")
+    parser.add_argument("--no-frame-times", action="store_true", help="only the keystroke latency")
+    parser.add_argument("--chromium-arg", action="append", default=[], help="another Chromium flag (repeatable)")
     args = parser.parse_args()
+    kinds = [k for k in CYCLES if k in args.kinds.split(",")]
     if args.sheet:
         sheet(args.sheet)
         return
@@ -207,7 +280,8 @@ def main() -> None:
     print(f"load average before: {' '.join(f'{x:.1f}' for x in os.getloadavg())} ({os.cpu_count()} cores)")
     studio = start_studio() if args.through == "studio" else None
     with ViewServer(Path(tempfile.mkdtemp(prefix="cnlmc-bench-studio-"))) as server, sync_playwright() as pw:
-        browser = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        browser = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS + args.chromium_arg)
+        print(f"Chromium flags: {' '.join(CHROMIUM_ARGS + args.chromium_arg)}")
         page = browser.new_page(viewport={"width": 1280, "height": 860})
         if studio is not None:
             through = "the studio's page (cnlmc serve: editor -> WebSocket -> compile -> payload -> view)"
@@ -215,19 +289,23 @@ def main() -> None:
         else:
             through = "material_payload + the view's test page (no editor)"
             driver = ViewPage(page, server.url)
-        measured = latencies(driver, args.edits)
-        view_page = browser.new_page()
-        view_page.goto(server.url + "/page.html?size=512")
-        view_page.evaluate("window.viewReady")
-        frames = frame_times(view_page, args.frames)
+        measured = latencies(driver, args.edits, kinds)
+        frames = {}
+        if not args.no_frame_times:
+            view_page = browser.new_page()
+            view_page.goto(server.url + "/page.html?size=512")
+            view_page.evaluate("window.viewReady")
+            frames = frame_times(view_page, args.frames, kinds)
         browser.close()
     if studio is not None:
         studio[0].terminate()
         studio[0].wait(20)
-    print(f"keystroke -> updated frame, through {through}:")
+    print(f"keystroke -> updated frame on screen, through {through}:")
     goals = {"untextured": 150.0, "textured": 400.0, "glass": 150.0}
     for kind, m in measured.items():
-        for label, values in (("first frame (half size)", m["quick"]), ("full frame", m["warm"])):
+        quick = [on_screen(t)[0] for t in m["warm"]]
+        full = [on_screen(t)[1] for t in m["warm"]]
+        for label, values in (("first picture", quick), ("full frame", full)):
             p50, p99 = percentile(values, 50), percentile(values, 99)
             met = "met" if p99 <= goals[kind] else "not met"
             print(
@@ -235,7 +313,12 @@ def main() -> None:
                 f"(n={len(values)}; goal p99 <= {goals[kind]:.0f} ms: {met})"
             )
         print(f"  {kind:11s} first cycle (new content), full frame: {', '.join(f'{t:.0f}' for t in m['cold'])} ms")
-    peer = preview_frame_times(args.frames)
+    print("where the time goes (each stage from the one above; ms from just before the keystroke):")
+    print("\n".join(stage_table(measured)))
+    if not frames:
+        print(f"load average after: {' '.join(f'{x:.1f}' for x in os.getloadavg())}")
+        return
+    peer = preview_frame_times(args.frames, kinds)
     print("frame time at 512x512 on SwiftShader (MaterialView.draw, median), and the peer: cnlmc preview (llvmpipe):")
     for kind, ms in frames.items():
         print(

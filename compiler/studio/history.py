@@ -18,13 +18,13 @@ def appearance(materials: list[dict[str, Any]]) -> list[dict[str, Any]]:
 
 @dataclass
 class Step:
-    """One history entry: the text, its materials' IR, a label ('darker', 'edit') and a thumbnail
-    the page made of the frame it drew (a data: URL, or '' until it sends one)."""
+    """One history entry: the text, its materials' IR, a label ('darker', 'edit') and its number in
+    the session (`id`, given by History.push: the page keeps the thumbnail it drew under it)."""
 
     text: str
     materials: list[dict[str, Any]]
     label: str
-    thumbnail: str = ""
+    id: int = 0
 
 
 @dataclass
@@ -32,6 +32,7 @@ class History:
     limit: int
     steps: list[Step] = field(default_factory=list)
     at: int = -1
+    recorded: int = 0  # steps pushed so far: the next one's id
 
     @property
     def current(self) -> Step | None:
@@ -45,6 +46,8 @@ class History:
             current.text, current.materials = step.text, step.materials  # the same look, worded anew
             return False
         del self.steps[self.at + 1 :]
+        self.recorded += 1
+        step.id = self.recorded
         self.steps.append(step)
         if len(self.steps) > self.limit:
             del self.steps[: len(self.steps) - self.limit]
@@ -67,14 +70,12 @@ class History:
         """The step before the current one (what the explain panel compares with)."""
         return self.steps[self.at - 1] if self.at >= 1 else None
 
-    def set_thumbnail(self, index: int, data_url: str) -> None:
-        if 0 <= index < len(self.steps):
-            self.steps[index].thumbnail = data_url
-
     def summary(self) -> dict[str, Any]:
+        """What the page's history strip shows: each step's id and label (its thumbnail is the
+        page's own picture of the frame it drew, kept there by id: never sent back on each edit)."""
         return {
             "at": self.at,
-            "steps": [{"label": s.label, "thumbnail": s.thumbnail} for s in self.steps],
+            "steps": [{"id": s.id, "label": s.label} for s in self.steps],
             "can_undo": self.at > 0,
             "can_redo": self.at < len(self.steps) - 1,
         }

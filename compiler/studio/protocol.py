@@ -4,19 +4,22 @@ worker thread (an analysis with its view payloads takes up to half a second): th
 free for the other tabs and for the file downloads; the refinement chips are found in the
 background and sent when ready.
 
-  edit {text}                   -> analysis {diagnostics, tokens, colours, materials, payloads, history, ok}
+  edit {text[, fresh]}          -> analysis {diagnostics, tokens, colours, materials, payloads, history, ok, timing}
   refine {words}                -> analysis {..., text}  (the document with the refinement line)
   undo / redo                   -> analysis {..., text}
   complete {text, line, character} -> completion {items}
   hover {text, line, character} -> hover {markdown, range} | hover {}
   export {key, text}            -> exported {url, name, notes}
   ar_model {text}               -> ar_model {glb, usdz, notes}
-  thumbnail {index, image}      -> (nothing: the history strip's picture of step `index`)
 and, unasked, chips {words, text} after an analysis that made a history step.
 
 Messages are read as they arrive and answered in order by one task: an edit is numbered when it
 arrives, so one that a newer edit replaced while it waited is answered {op: "skipped"} at once,
-without its analysis and payloads."""
+without its analysis and payloads.
+
+A payload's shader and tables go to a page once (SentParts): after that the payload names them by
+key (`shader`, a table's `key`) without their text; a page that lacks one (it keeps `parts_kept`,
+said in hello) sends the edit again with `fresh: true` and gets them all."""
 
 from __future__ import annotations
 
@@ -24,6 +27,7 @@ import asyncio
 import functools
 import json
 import logging
+import time
 from collections.abc import Callable
 from typing import Any
 
@@ -34,8 +38,6 @@ from .exports import ExportFailed
 from .session import Closed, Replaced, StudioSession
 
 JSONDict = dict[str, Any]
-#: a thumbnail is a small PNG data: URL; anything longer is not one
-MAX_THUMBNAIL_CHARS = 200_000
 #: requests read ahead of the one being answered (our choice: edits come one per keystroke burst;
 #: a client that sends more waits, the socket is not read meanwhile)
 QUEUED_REQUESTS = 64
@@ -48,7 +50,8 @@ class Dispatcher:
         self.socket = socket
         self.initial_text = initial_text
         self.chip_task: asyncio.Task[None] | None = None
-        self.queue: asyncio.Queue[tuple[JSONDict, int | None]] = asyncio.Queue(QUEUED_REQUESTS)
+        #: (request, its edit number or None, when it was read: time.perf_counter())
+        self.queue: asyncio.Queue[tuple[JSONDict, int | None, float]] = asyncio.Queue(QUEUED_REQUESTS)
 
     def stop(self) -> None:
         if self.chip_task is not None:
@@ -65,6 +68,7 @@ class Dispatcher:
                 "text": self.initial_text,
                 "exports": exports,
                 "view": session.view.module is not None,
+                "parts_kept": session.settings.limits.max_sent_parts,
             }
         )
 
@@ -77,17 +81,20 @@ class Dispatcher:
                     break
                 request = _parsed(message.data)
                 ticket = self.session.announce_edit() if request.get("op") == "edit" else None
-                await self.queue.put((request, ticket))
+                await self.queue.put((request, ticket, time.perf_counter()))
         finally:
             answering.cancel()
 
     async def answer_queued(self) -> None:
         while True:
-            request, ticket = await self.queue.get()
-            await self.handle(request, ticket)
+            request, ticket, read = await self.queue.get()
+            await self.handle(request, ticket, read)
 
-    async def handle(self, message: JSONDict, ticket: int | None = None) -> None:
+    async def handle(self, message: JSONDict, ticket: int | None = None, read: float | None = None) -> None:
+        """Answer one request; an analysis says how long the server took (`timing`: queued_ms from
+        reading the request to starting it, server_ms from reading it to the answer, JSON not included)."""
         op, seq = str(message.get("op", "")), message.get("seq")
+        started = time.perf_counter()
         handler = getattr(self, f"op_{op}", None)
         if handler is None:
             await self.reply(seq, {"op": "error", "message": f"unknown request '{op}'"})
@@ -101,6 +108,9 @@ class Dispatcher:
         except Exception as exc:  # never a traceback in the page
             log.error("studio: %s while answering '%s': %s", type(exc).__name__, op, exc)
             answer = {"op": "error", "message": f"the studio could not answer '{op}' ({type(exc).__name__})"}
+        if answer is not None and read is not None and isinstance(answer.get("timing"), dict):
+            answer["timing"]["queued_ms"] = round((started - read) * 1000, 2)
+            answer["timing"]["server_ms"] = round((time.perf_counter() - read) * 1000, 2)
         if answer is not None:
             await self.reply(seq, answer)
 
@@ -129,6 +139,8 @@ class Dispatcher:
 
     async def op_edit(self, message: JSONDict, ticket: int | None = None) -> JSONDict:
         self.session.check_replaced(ticket)  # skipped without a thread when already replaced
+        if message.get("fresh") is True:
+            self.session.sent.forget()
         return await self.analysed(await self.in_thread(self.session.edit, _text(message, "text"), None, ticket))
 
     async def op_refine(self, message: JSONDict) -> JSONDict:
@@ -172,12 +184,6 @@ class Dispatcher:
             "usdz": self.url(usdz.path),
             "notes": glb.notes + usdz.notes,
         }
-
-    async def op_thumbnail(self, message: JSONDict) -> None:
-        image, index = message.get("image"), message.get("index")
-        if isinstance(image, str) and image.startswith("data:image/") and len(image) <= MAX_THUMBNAIL_CHARS:
-            if isinstance(index, int):
-                self.session.history.set_thumbnail(index, image)
 
     def url(self, relative: str) -> str:
         return f"/files/{self.session.id}/{relative}"

@@ -9,6 +9,7 @@ import contextlib
 import secrets
 import shutil
 import threading
+import time
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -23,7 +24,7 @@ from .ar import ARFailed, MarkerComposer
 from .editor import EditorEngine
 from .exports import Exported, export
 from .history import History, Step
-from .payloads import PayloadCache, ViewData
+from .payloads import PayloadCache, SentParts, ViewData
 from .settings import Settings
 
 JSONDict = dict[str, Any]
@@ -37,6 +38,10 @@ def last_line(text: str) -> str:
     lines = [line.strip() for line in text.splitlines() if line.strip()]
     label = lines[-1] if lines else ""
     return label if len(label) <= LABEL_CHARS else label[: LABEL_CHARS - 1] + "…"
+
+
+def _ms(seconds: float) -> float:
+    return round(seconds * 1000, 2)
 
 
 class TooLarge(ValueError):
@@ -60,6 +65,7 @@ class StudioSession:
         self.settings = settings
         self.view = view
         self.payloads = PayloadCache(view, settings.limits.max_cached_payloads)
+        self.sent = SentParts(settings.limits.max_sent_parts)
         self.engine = EditorEngine(lexicon)
         self.history = History(settings.limits.max_history)
         self.text = ""
@@ -115,13 +121,17 @@ class StudioSession:
         (announce_edit) that a newer one replaced raises Replaced before each costly part."""
         self.check_size(text)
         self.check_replaced(ticket)
+        start = time.perf_counter()
         self.text = text
         features = self.engine.features(text)
         materials = self.materials()
         self.check_replaced(ticket)
         ok = bool(materials) and not any(d["severity"] == 1 for d in features["diagnostics"])
         recorded = ok and self.history.push(Step(text, materials, label or last_line(text)))
-        return {**features, **self.picture(materials, ok), "ok": ok, "recorded": recorded}
+        analysed = time.perf_counter()
+        picture = self.picture(materials, ok)
+        timing = {"analysis_ms": _ms(analysed - start), "view_ms": _ms(time.perf_counter() - analysed)}
+        return {**features, **picture, "ok": ok, "recorded": recorded, "timing": timing}
 
     def materials(self) -> list[JSONDict]:
         snapshot = self.engine.analyse(self.text)
@@ -146,7 +156,7 @@ class StudioSession:
             payloads = self.payloads.payloads(shown, self.folder / "view")
         return {
             "materials": panel,
-            "payloads": payloads,
+            "payloads": [self.sent.delta(p) for p in payloads],
             "not_shown": len(materials) - len(shown) if ok else 0,
             "history": self.history.summary(),
         }

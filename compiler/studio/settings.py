@@ -31,6 +31,7 @@ class Limits:
     max_completion_items: int
     max_shown_materials: int
     max_cached_payloads: int
+    max_sent_parts: int
 
 
 @dataclass(frozen=True)

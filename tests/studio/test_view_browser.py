@@ -145,7 +145,16 @@ def test_variants_mesh_environment_exposure(view_page: tuple[Any, PageLog]) -> N
     assert np.abs(frame(page).astype(int) - sphere.astype(int)).max() <= 1
     seen = page.evaluate("window.frames_seen")
     assert len(seen) >= 6 and all(f["ms"] > 0 for f in seen)
-    assert {f["scale"] for f in seen} == {0.5, 1}  # show(): a quick frame at half size, then the full one
+    assert {f["scale"] for f in seen} >= {1} and all(0.25 <= f["scale"] <= 1 for f in seen)
+    # show(): a quick frame (at most half size, smaller the slower its frames were; none when the full
+    # frame fits the budget), then the full one
+    choose = "([cost, largest]) => window.quickScaleFor(cost, 512 * 512, largest)"
+    assert page.evaluate(choose, [None, 0.5]) == 0.5  # not measured yet
+    assert page.evaluate(choose, [1e-5, 0.5]) == 1  # 2.6 ms a frame: no quick frame (a real GPU)
+    assert page.evaluate(choose, [160 / (512 * 512), 0.5]) == 0.5  # 160 ms: 40 ms at half size
+    assert abs(page.evaluate(choose, [1e-3, 0.5]) - (40 / 262.144) ** 0.5) < 1e-6  # 262 ms: 40 ms at 0.39
+    assert page.evaluate(choose, [1e-2, 0.5]) == 0.25  # 2.6 s: at the smallest (128x128)
+    assert page.evaluate(choose, [1e-3, None]) == 1  # quickScale null: the full frame only
 
 
 def test_no_console_errors(view_page: tuple[Any, PageLog]) -> None:

@@ -2,11 +2,13 @@
 // Everything the language knows comes from the server (the engine the CLI and the language
 // server use); this file only wires the page together.
 import { MaterialView } from "./view/view.js";
+import { Trace } from "./view/trace.js";
+import { PayloadParts } from "./parts.js";
 import { Connection } from "./connection.js";
 import { Editor } from "./editor.js";
 import { Problem, showChips, showExports, showHistory, showMaterials, showNotes, thumbnail } from "./panels.js";
 
-const EDIT_DELAY_MS = 60; // our choice: coalesces a burst of keys, below what a typist notices
+const THUMBNAIL_WAIT_MS = 2000; // our choice: a history thumbnail waits for an idle moment at most this long
 const $ = (id) => document.getElementById(id);
 const problem = new Problem($("problem"));
 const status = document.body.dataset; // what the page is doing, for people and for the tests
@@ -29,13 +31,18 @@ class Studio {
   constructor(connection, hello) {
     this.connection = connection;
     this.hello = hello;
-    this.editTimer = null;
+    this.changes = 0; // changes typed: each edit is numbered in the trace (view/trace.js)
+    this.editing = false; // an edit is on its way to the server and back
+    this.editAgain = false; // the text changed meanwhile: send it when the answer comes
+    this.trace = new Trace();
+    this.parts = new PayloadParts(hello.parts_kept);
+    this.pictures = new Map(); // history step id -> the thumbnail of the frame drawn for it
     this.pendingThumbnail = null;
     this.canvas = $("view");
-    this.view = new MaterialView(this.canvas, { dataUrl: hello.data_url, filesUrl: hello.files_url });
+    this.view = new MaterialView(this.canvas, { dataUrl: hello.data_url, filesUrl: hello.files_url, trace: this.trace });
     this.canvas.addEventListener("frame", (event) => this.framed(event.detail));
     this.editor = new Editor($("editor"), {
-      onChange: () => this.scheduleEdit(),
+      onChange: () => this.changed(),
       ask: (op, fields) => connection.request(op, fields),
     });
     connection.on("chips", (message) => {
@@ -48,56 +55,96 @@ class Studio {
     this.edit();
   }
 
-  scheduleEdit() {
-    clearTimeout(this.editTimer);
-    this.editTimer = setTimeout(() => this.edit(), EDIT_DELAY_MS);
+  // A change typed: sent at once when no edit is on its way (no debounce to wait out), else when
+  // that one's answer comes (the newest text only: a burst of keys costs one analysis per answer).
+  changed() {
+    this.changes += 1;
+    this.trace.mark("change", this.changes);
+    if (this.editing) this.editAgain = true;
+    else this.edit();
   }
 
-  async edit() {
-    const text = this.editor.text;
+  async edit(fresh = false) {
+    this.editing = true;
     try {
-      const analysis = await this.connection.request("edit", { text });
-      if (analysis.op !== "skipped") this.apply(analysis, text); // a newer edit replaced it: its answer comes
+      do {
+        this.editAgain = false;
+        const text = this.editor.text;
+        const number = this.changes;
+        this.trace.mark("send", number);
+        const analysis = await this.ask("edit", fresh ? { text, fresh } : { text });
+        fresh = false;
+        this.trace.mark("message", number, { startTime: analysis.arrived, chars: analysis.chars });
+        this.trace.mark("parsed", number, { startTime: analysis.parsed, server: analysis.timing });
+        if (analysis.op !== "skipped" && !this.editAgain) this.apply(analysis, text, number);
+      } while (this.editAgain);
     } catch (error) {
       fail(error);
+    } finally {
+      this.editing = false;
     }
   }
 
-  async apply(analysis, text) {
+  // A request whose answer may be an analysis: its payloads are made whole from the parts this page
+  // holds (null when it lacks one), here, in the order the answers arrive (as the server counts them).
+  async ask(op, fields = {}) {
+    const answer = await this.connection.request(op, fields);
+    if (answer.payloads) answer.payloads = this.parts.complete(answer.payloads);
+    return answer;
+  }
+
+  async apply(analysis, text, number = null) {
     if (analysis.text !== undefined) {
       this.editor.setText(analysis.text);
       text = analysis.text;
     }
     if (!this.editor.show(analysis, text)) return; // typed on since: the next analysis comes
+    if (analysis.payloads === null) {
+      this.edit(true); // a part this page no longer holds: ask for them all
+      return;
+    }
     status.analyses = String(Number(status.analyses) + 1);
     problem.clear();
     showMaterials($("materials"), analysis.materials);
     const more = $("not-shown");
     more.hidden = !analysis.not_shown;
     more.textContent = analysis.not_shown ? `${analysis.not_shown} more not shown in the view` : "";
-    showHistory($("history"), analysis.history);
-    $("undo").disabled = !analysis.history.can_undo;
-    $("redo").disabled = !analysis.history.can_redo;
+    this.showHistory(analysis.history);
     if (!analysis.ok || analysis.payloads.length === 0) return;
-    if (analysis.recorded) this.pendingThumbnail = analysis.history.at;
-    await this.view.show(analysis.payloads);
+    if (analysis.recorded) this.pendingThumbnail = analysis.history.steps[analysis.history.at].id;
+    this.trace.mark("applied", number);
+    await this.view.show(analysis.payloads, { edit: number });
     if (text === this.editor.text) status.shown = String(Number(status.shown) + 1);
   }
 
+  showHistory(history) {
+    const kept = new Set(history.steps.map((step) => step.id));
+    for (const id of this.pictures.keys()) if (!kept.has(id)) this.pictures.delete(id);
+    showHistory($("history"), history, this.pictures);
+    $("undo").disabled = !history.can_undo;
+    $("redo").disabled = !history.can_redo;
+  }
+
+  // The thumbnail of a new history step: its full frame, taken when the page is idle (off the
+  // path from a keystroke to its picture).
   framed(detail) {
     $("frame-time").textContent = `${detail.ms.toFixed(1)} ms a frame`;
-    if (this.pendingThumbnail === null) return;
-    const index = this.pendingThumbnail;
+    if (this.pendingThumbnail === null || detail.scale !== 1) return;
+    const id = this.pendingThumbnail;
+    const shown = this.view.shows;
     this.pendingThumbnail = null;
-    const image = thumbnail(this.canvas);
-    this.connection.send("thumbnail", { index, image });
-    const item = $("history").children[index];
-    if (item) item.querySelector("img").src = image;
+    requestIdleCallback(() => {
+      if (this.view.shows !== shown) return; // another material is on the canvas by now
+      const image = thumbnail(this.canvas);
+      this.pictures.set(id, image);
+      const item = $("history").querySelector(`li[data-step="${id}"] img`);
+      if (item) item.src = image;
+    }, { timeout: THUMBNAIL_WAIT_MS });
   }
 
   async refine(words) {
     try {
-      this.apply(await this.connection.request("refine", { words }), this.editor.text);
+      this.apply(await this.ask("refine", { words }), this.editor.text);
       $("refine").value = "";
     } catch (error) {
       fail(error);
@@ -106,7 +153,7 @@ class Studio {
 
   async step(op) {
     try {
-      this.apply(await this.connection.request(op), this.editor.text);
+      this.apply(await this.ask(op), this.editor.text);
     } catch (error) {
       fail(error);
     }

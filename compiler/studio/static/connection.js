@@ -9,7 +9,10 @@ export class Connection {
     this.listeners = new Map(); // op -> [fn]
     this.opened = new Promise((resolve, reject) => {
       this.socket = new WebSocket(url);
-      this.socket.addEventListener("message", (event) => this.receive(JSON.parse(event.data)));
+      this.socket.addEventListener("message", (event) => {
+        const arrived = performance.now();
+        this.receive(JSON.parse(event.data), { arrived, chars: event.data.length });
+      });
       this.socket.addEventListener("error", () => reject(new Error("the studio's server cannot be reached")));
       this.socket.addEventListener("close", () => this.closed());
       this.hello = new Promise((ready) => this.on("hello", ready));
@@ -34,12 +37,14 @@ export class Connection {
     if (this.socket.readyState === WebSocket.OPEN) this.socket.send(JSON.stringify({ op, ...fields }));
   }
 
-  receive(message) {
+  // An answer resolves its request with the message, when it arrived and was parsed
+  // (performance.now(): `arrived`, `parsed`) and its length (`chars`), for the page's trace.
+  receive(message, { arrived, chars }) {
     const pending = message.seq != null ? this.waiting.get(message.seq) : undefined;
     if (pending) {
       this.waiting.delete(message.seq);
       if (message.op === "error") pending.reject(new Error(message.message));
-      else pending.resolve(message);
+      else pending.resolve(Object.assign(message, { arrived, chars, parsed: performance.now() }));
       return;
     }
     for (const fn of this.listeners.get(message.op) || []) fn(message);

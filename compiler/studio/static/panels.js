@@ -40,17 +40,29 @@ export function showChips(container, words, onPick) {
   );
 }
 
-export function showHistory(container, summary) {
-  container.replaceChildren(
-    ...summary.steps.map((step, i) => {
-      const item = element("li", { className: i === summary.at ? "current" : "" });
-      const image = element("img");
+// The history strip: a step's item is kept while the step is (by its id), so an edit changes a
+// class and adds an item rather than rebuilding every thumbnail; `pictures`: step id -> thumbnail.
+export function showHistory(container, summary, pictures) {
+  const before = new Map([...container.children].map((item) => [item.dataset.step, item]));
+  const items = summary.steps.map((step, i) => {
+    let item = before.get(String(step.id));
+    if (!item) {
+      item = element("li");
+      item.dataset.step = String(step.id);
+      item.append(element("img"), element("span"));
+    }
+    const [image, label] = item.children;
+    if (label.textContent !== step.label) {
+      label.textContent = step.label;
       image.alt = step.label;
-      if (step.thumbnail) image.src = step.thumbnail;
-      item.append(image, element("span", { text: step.label }));
-      return item;
-    }),
-  );
+    }
+    const picture = pictures.get(step.id);
+    if (picture && image.getAttribute("src") !== picture) image.src = picture;
+    item.className = i === summary.at ? "current" : "";
+    return item;
+  });
+  const same = items.length === container.children.length && items.every((item, i) => container.children[i] === item);
+  if (!same) container.replaceChildren(...items);
 }
 
 export function showExports(container, exports, onExport) {

@@ -11,17 +11,39 @@ import { Orbit, invert } from "./camera.js";
 import { EnvironmentTextures } from "./environment.js";
 import { Targets, compileProgram, floatTexture, setUniform } from "./glutil.js";
 import { meshFromFile, environmentFromFile } from "./loaders.js";
+import { afterPaint } from "./trace.js";
 
 const IDENTITY3 = [1, 0, 0, 0, 1, 0, 0, 0, 1];
 const IDENTITY4 = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];
 const ATTRIBUTES = [["in_position", 3, 0], ["in_normal", 3, 12], ["in_tangent", 3, 24], ["in_uv", 2, 36]];
 const STRIDE = 44;
+const tableKey = (table) => table.key ?? table.data; // the server's digest, or the data itself
+// The quick frame (see show): our choices. Its draw should take at most QUICK_BUDGET_MS (of the
+// 150 ms from a keystroke to the picture, the rest is the socket, the server, the page and the
+// wait for the screen); never below MIN_QUICK_SCALE of the canvas (128² of 512²: the material
+// still reads, its highlight and edge softer — looked at for plastic, oak and glass).
+const QUICK_BUDGET_MS = 40;
+const MIN_QUICK_SCALE = 0.25;
+
+// The scale of the quick frame for a frame that costs `msPerPixel` (null: not measured yet) on
+// `pixels`: 1 (no quick frame) when the full frame fits the budget, else the size that fits it,
+// between MIN_QUICK_SCALE and `largest`.
+export function quickScaleFor(msPerPixel, pixels, largest, budgetMs = QUICK_BUDGET_MS) {
+  if (!largest || largest >= 1) return 1;
+  if (msPerPixel === null || msPerPixel === undefined) return largest;
+  const full = msPerPixel * pixels;
+  if (full <= budgetMs) return 1;
+  return Math.min(largest, Math.max(MIN_QUICK_SCALE, Math.sqrt(budgetMs / full)));
+}
 const KEPT_MAPS = 24; // our choice: 8 materials' worth of maps (512² half-float RGBA + mips: 2.7 MB each)
+const KEPT_TABLES = 64; // our choice: split-sum tables (96 x 1 or 8 texels) of 32 recent looks
 
 export class MaterialView {
-  // quickScale: show() first draws the new material at this fraction of the canvas size (stretched
-  // onto it: a software rasteriser shades 4x fewer pixels at 0.5), then the full frame; null: full only.
-  constructor(canvas, { dataUrl = "/view-data", filesUrl = "/files", quickScale = 0.5 } = {}) {
+  // quickScale: show() first draws the new material at most at this fraction of the canvas size
+  // (stretched onto it), smaller when its frames have been slower (quickScaleFor), then the full
+  // frame; null: the full frame only. (A software rasteriser shades 4x fewer pixels at 0.5.)
+  // trace: a Trace (trace.js) that show() marks its stages in, for the edit number it is given.
+  constructor(canvas, { dataUrl = "/view-data", filesUrl = "/files", quickScale = 0.5, trace = null } = {}) {
     this.canvas = canvas;
     this.dataUrl = dataUrl.replace(/\/$/, "");
     this.filesUrl = filesUrl.replace(/\/$/, "");
@@ -31,11 +53,14 @@ export class MaterialView {
     this.gl = gl;
     this.exposure = 1;
     this.quickScale = quickScale;
+    this.costs = new Map(); // the shown programs' keys -> ms per pixel of their latest frame
+    this.trace = trace;
     this.sized = new Map(); // "w x h" -> Targets
     this.orbit = new Orbit();
     this.orbit.attach(canvas, () => this.requestDraw());
-    this.programs = new Map(); // source -> program (one per shader, kept while the view lives)
+    this.programs = new Map(); // shader key (or source) -> program (one per shader, kept while the view lives)
     this.maps = new Map(); // file -> texture
+    this.tables = new Map(); // table key (or data) -> texture: a look seen before is not uploaded again
     this.entries = []; // what is shown: per variant {payload, program, textures}
     this.meshName = "sphere";
     this.envName = "studio";
@@ -58,7 +83,9 @@ export class MaterialView {
   // -- what is drawn
   // Show these payloads; resolves with the frame time, or null when a later show() overtook it
   // (edits arrive faster than their textures: the newest wins, an older one never replaces it).
-  async show(payloads) {
+  // `edit`: the number its stages are marked with in the trace.
+  async show(payloads, { edit = null } = {}) {
+    const mark = (stage, more = {}) => this.trace && this.trace.mark(stage, edit, more);
     const ticket = (this.shows = (this.shows || 0) + 1);
     await this.ready;
     const list = Array.isArray(payloads) ? payloads : [payloads];
@@ -67,44 +94,66 @@ export class MaterialView {
     await this.resolvePrefiltered(entries);
     while (entries.some((e) => e.env !== this.environment)) await this.resolvePrefiltered(entries); // changed meanwhile
     if (ticket !== this.shows) {
-      for (const entry of entries) this.releaseEntry(entry);
       return null;
     }
-    for (const old of this.entries) this.releaseEntry(old);
     this.entries = entries;
-    this.pruneMaps();
-    if (this.quickScale && this.quickScale < 1) {
-      this.draw(this.quickScale);
-      await new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0))); // shown first
+    this.pruneTextures();
+    mark("setup");
+    const pixels = this.canvas.width * this.canvas.height;
+    const quick = quickScaleFor(this.costs.get(this.shownKey()), pixels, this.quickScale);
+    if (quick < 1) {
+      mark("quick-drawn", { scale: quick, ms: this.draw(quick) });
+      await new Promise((resolve) => afterPaint(resolve)); // shown first
+      mark("quick-shown");
       if (ticket !== this.shows) return null;
     }
-    return this.draw();
+    const ms = this.draw();
+    mark("drawn", { scale: 1, ms });
+    afterPaint(() => mark("shown"));
+    return ms;
   }
 
-  // Map textures beyond the KEPT_MAPS most recently used go (a long session of textured edits
-  // would pile them up; undo and edits back and forth find the recent ones).
-  pruneMaps() {
-    const used = new Set(this.entries.flatMap((e) => Object.values(e.payload.maps).map((m) => m.file)));
-    let spare = this.maps.size - KEPT_MAPS;
-    for (const [file, tex] of this.maps) { // oldest first (mapTexture re-inserts what it hands out)
+  // Map and table textures beyond the most recently used KEPT_MAPS / KEPT_TABLES go (a long
+  // session of edits would pile them up; undo and edits back and forth find the recent ones).
+  pruneTextures() {
+    const maps = new Set(this.entries.flatMap((e) => Object.values(e.payload.maps).map((m) => m.file)));
+    const tables = new Set(this.entries.flatMap((e) => Object.values(e.payload.tables).map(tableKey)));
+    this.prune(this.maps, maps, KEPT_MAPS);
+    this.prune(this.tables, tables, KEPT_TABLES);
+  }
+
+  prune(textures, used, kept) {
+    let spare = textures.size - kept;
+    for (const [key, tex] of textures) { // oldest first (a texture handed out is re-inserted)
       if (spare <= 0) break;
-      if (used.has(file)) continue;
+      if (used.has(key)) continue;
       this.gl.deleteTexture(tex);
-      this.maps.delete(file);
+      textures.delete(key);
       spare -= 1;
     }
   }
 
+  // What the shown frame's cost depends on: its programs.
+  shownKey() {
+    return this.entries.map((e) => e.programKey).join("\u0001");
+  }
+
   async entry(payload) {
-    const gl = this.gl;
-    const program = this.program(payload.vertex, payload.fragment);
+    const [program, programKey] = this.program(payload);
     const tables = {};
-    for (const [name, t] of Object.entries(payload.tables)) {
-      tables[name] = floatTexture(gl, t.width, t.height, decodeFloats(t.data));
-    }
+    for (const [name, t] of Object.entries(payload.tables)) tables[name] = this.tableTexture(t);
     const maps = {};
     for (const [name, m] of Object.entries(payload.maps)) maps[name] = await this.mapTexture(m);
-    return { payload, program, tables, maps };
+    return { payload, program, programKey, tables, maps };
+  }
+
+  tableTexture(table) {
+    const key = tableKey(table);
+    let tex = this.tables.get(key);
+    if (!tex) tex = floatTexture(this.gl, table.width, table.height, decodeFloats(table.data));
+    this.tables.delete(key);
+    this.tables.set(key, tex); // the most recently used last
+    return tex;
   }
 
   // Each entry's environment textures prefiltered at exactly its alphas (in the current environment).
@@ -119,14 +168,11 @@ export class MaterialView {
     }
   }
 
-  releaseEntry(entry) {
-    for (const tex of Object.values(entry.tables)) this.gl.deleteTexture(tex);
-  }
-
-  program(vertex, fragment) {
-    const key = `${vertex}\u0000${fragment}`;
-    if (!this.programs.has(key)) this.programs.set(key, compileProgram(this.gl, vertex, fragment));
-    return this.programs.get(key);
+  // The payload's program and its key: made once per shader (its key from the server, or its source).
+  program(payload) {
+    const key = payload.shader ?? `${payload.vertex}\u0000${payload.fragment}`;
+    if (!this.programs.has(key)) this.programs.set(key, compileProgram(this.gl, payload.vertex, payload.fragment));
+    return [this.programs.get(key), key];
   }
 
   async mapTexture(map) {
@@ -265,6 +311,7 @@ export class MaterialView {
     }
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4)); // the frame is finished
     const ms = performance.now() - start;
+    this.costs.set(this.shownKey(), ms / (width * height));
     this.canvas.dispatchEvent(new CustomEvent("frame", { detail: { ms, scale } }));
     return ms;
   }
