@@ -1,7 +1,8 @@
 """One large document compiled on several processes (#13), with the bytes of one process.
 
 The lines are cut into chunks of CHUNK_LINES; worker k of n (a forked process) compiles chunks
-k, k+n, k+2n, ... and sends each chunk's result down its own pipe; the parent takes each chunk's
+k, k+n, k+2n, ... and sends each chunk's result down its own pipe (a thread of the worker sends it
+while the worker compiles its next chunk: _Outbox); the parent takes each chunk's
 result as soon as it is sent (up to AHEAD_CHUNKS of one worker's held, waiting for an earlier
 chunk of another) and replays them in document order (chunk j from worker j mod n). So a worker
 slowed by a busy machine does not stall the others at every chunk, and memory stays bounded. A chunk owns the materials whose line lies in it: its leading refinement lines
@@ -22,8 +23,10 @@ from __future__ import annotations
 
 import multiprocessing
 import pickle
+import queue
 import signal
 import sys
+import threading
 from collections import deque
 from collections.abc import Iterator, Mapping
 from multiprocessing.connection import Connection, wait
@@ -194,16 +197,50 @@ def _work(pipe: Connection, source: str, ctx: Context, chunks: list[tuple[int, i
     without handlers: the parent's handlers and clean-up are the parent's (cnlmc.interrupts)."""
     for signum in SIGNALS:
         signal.signal(signum, signal.SIG_DFL)
+    outbox = _Outbox(pipe)
     try:
-        try:
-            for index, number, offset, end in chunks:
-                pipe.send(chunk_events(source, ctx, number, offset, end, first=index == 0))
-        except Exception as exc:  # handed to the parent, which raises it
-            pipe.send(_sendable(exc))
-    except OSError:  # the parent has gone or stopped reading: nothing left to tell
-        pass
+        for index, number, offset, end in chunks:
+            if outbox.broken:
+                break  # the parent has gone or stopped reading: nothing left to tell
+            outbox.put(chunk_events(source, ctx, number, offset, end, first=index == 0))
+    except Exception as exc:  # handed to the parent, which raises it
+        outbox.put(_sendable(exc))
     finally:
-        pipe.close()
+        outbox.close()
+
+
+class _Outbox:
+    """A worker's sending: each result is sent down the pipe by a thread of the worker while it
+    compiles its next chunk, so a parent busy writing another worker's chunk no longer holds this
+    one up (its send waited for the parent to read); at most one result waits for the thread.
+    `broken` once the parent has gone (what is left is dropped)."""
+
+    def __init__(self, pipe: Connection) -> None:
+        self.pipe, self.broken = pipe, False
+        self.queue: queue.Queue[object] = queue.Queue(maxsize=1)
+        self.thread = threading.Thread(target=self._send_all, name="cnlmc-worker-send", daemon=True)
+        self.thread.start()
+
+    def put(self, result: object) -> None:
+        self.queue.put(result)
+
+    def close(self) -> None:
+        """Send what is left, then close the pipe."""
+        self.queue.put(_DONE)
+        self.thread.join()
+        self.pipe.close()
+
+    def _send_all(self) -> None:
+        while (result := self.queue.get()) is not _DONE:
+            if self.broken:
+                continue
+            try:
+                self.pipe.send(result)
+            except OSError:  # the parent has gone or stopped reading
+                self.broken = True
+
+
+_DONE = object()  # the end of a worker's results
 
 
 def _sendable(exc: Exception) -> Exception:
