@@ -45,3 +45,16 @@ def test_the_history_is_bounded() -> None:
         history.push(step(f"{shade} plastic"))
     assert [s.label for s in history.steps] == ["blue plastic", "yellow plastic", "white plastic"]
     assert history.at == 2
+
+
+def test_steps_keep_their_ids_when_old_ones_go() -> None:
+    """The page keeps each step's thumbnail by its id: an id is never reused, and the summary the
+    page gets on each edit carries ids and labels, not pictures."""
+    history = History(limit=2)
+    for shade in ("red", "blue", "green"):
+        history.push(step(f"{shade} plastic"))
+    summary = history.summary()
+    assert summary["steps"] == [{"id": 2, "label": "blue plastic"}, {"id": 3, "label": "green plastic"}]
+    history.undo()
+    history.push(step("white plastic"))
+    assert [s["id"] for s in history.summary()["steps"]] == [2, 4]

@@ -124,6 +124,25 @@ def test_darker_darkens_the_canvas_and_undo_restores_it(page: Any, blue: np.ndar
     steps = page.locator("#history li").all_inner_texts()
     assert steps[-1] == "darker"  # undone, kept for redo
     assert page.inner_text("#history li.current").startswith("lightly brus")
+    # each step's thumbnail is the page's own picture of its frame (taken when idle), kept by step id
+    page.wait_for_selector("#history li[data-step] img[src^='data:image/png']", state="attached", timeout=30_000)
+
+
+def test_the_page_holds_the_parts_the_server_counts_as_sent(page: Any) -> None:
+    """static/parts.js keeps payload parts as SentParts counts them (test_edit_delta.py runs the same
+    sequence on the server's side); a payload naming a part the page no longer holds comes out null
+    (the page then asks for the edit again with `fresh`)."""
+    found = page.evaluate("""async () => {
+        const { PayloadParts } = await import("/static/parts.js");
+        const parts = new PayloadParts(2);
+        const whole = (key, data) => ({ shader: "s", vertex: "v", fragment: "f", tables: { t: { key, data } } });
+        const keyed = (key) => ({ shader: "s", tables: { t: { key } } });
+        const first = parts.complete([whole("a", "A")]);
+        const again = parts.complete([keyed("a")]);
+        parts.complete([whole("b", "B")]); // s and b held: a went, the least recently named of three
+        return [first[0].tables.t.data, again[0].fragment, again[0].tables.t.data, parts.complete([keyed("a")])];
+    }""")
+    assert found == ["A", "f", "A", None]
 
 
 def test_the_refinement_chips_fit_the_material(page: Any) -> None:
