@@ -26,12 +26,32 @@ def graph_names() -> frozenset[str]:
 
 @cache
 def _graph_table(name: str) -> Mapping[str, Any]:
-    import tomllib
+    return MappingProxyType(_graph_tables().get(name, {}))
 
-    if name not in graph_names():
-        return MappingProxyType({})
-    path = package_folder("cnlmc.stdlib") / "graphs" / f"{name}.toml"
-    return MappingProxyType(tomllib.loads(path.read_text("utf-8")))
+
+@cache
+def _graph_tables() -> Mapping[str, dict[str, Any]]:
+    """Every bundled graph's table, read once per process; kept in the disk cache as plain JSON
+    (cnlmc.cache, keyed by the graph files), so a cold start does not import tomllib (#14 speed)."""
+    from .cache import cached, dump_json, load_json
+
+    folder = package_folder("cnlmc.stdlib") / "graphs"
+    paths = [folder / f"{name}.toml" for name in sorted(graph_names())]
+
+    def build() -> dict[str, dict[str, Any]]:
+        import tomllib
+
+        return {path.name[:-5]: tomllib.loads(path.read_text("utf-8")) for path in paths}
+
+    def load(payload: bytes) -> dict[str, dict[str, Any]]:
+        tables = load_json(payload)
+        if not isinstance(tables, dict) or set(tables) != graph_names():
+            raise ValueError("not the bundled graphs")
+        if not all(isinstance(table, dict) for table in tables.values()):
+            raise TypeError("a graph's table is not a table")
+        return tables
+
+    return MappingProxyType(cached("graphs", [folder, *paths], build, dump_json, load))
 
 
 @cache
