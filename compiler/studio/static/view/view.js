@@ -25,6 +25,38 @@ const tableKey = (table) => table.key ?? table.data; // the server's digest, or 
 const QUICK_BUDGET_MS = 40;
 const MIN_QUICK_SCALE = 0.25;
 
+const RECT_PAD = 2; // render.py Renderer.RECT_PAD: the edge filter reads a pixel's neighbours
+
+// The pixel rectangle [x, y, w, h] (window coordinates) holding the box [lo, hi] seen through the
+// row-major `viewProjection` drawn into `cell`, padded and clipped to the cell; the whole cell
+// when a corner is at or behind the camera (targets.screen_rect).
+export function screenRect(lo, hi, viewProjection, cell, pad = RECT_PAD) {
+  const m = viewProjection;
+  let [x0, y0, x1, y1] = [Infinity, Infinity, -Infinity, -Infinity];
+  for (const x of [lo[0], hi[0]]) {
+    for (const y of [lo[1], hi[1]]) {
+      for (const z of [lo[2], hi[2]]) {
+        const w = m[12] * x + m[13] * y + m[14] * z + m[15];
+        if (!(w > 1e-9)) return cell;
+        const px = cell[0] + ((m[0] * x + m[1] * y + m[2] * z + m[3]) / w * 0.5 + 0.5) * cell[2];
+        const py = cell[1] + ((m[4] * x + m[5] * y + m[6] * z + m[7]) / w * 0.5 + 0.5) * cell[3];
+        [x0, y0, x1, y1] = [Math.min(x0, px), Math.min(y0, py), Math.max(x1, px), Math.max(y1, py)];
+      }
+    }
+  }
+  const left = Math.max(Math.floor(x0) - pad, cell[0]), bottom = Math.max(Math.floor(y0) - pad, cell[1]);
+  const right = Math.min(Math.ceil(x1) + pad, cell[0] + cell[2]), top = Math.min(Math.ceil(y1) + pad, cell[1] + cell[3]);
+  return [left, bottom, Math.max(right - left, 0), Math.max(top - bottom, 0)];
+}
+
+// `cell` outside `rect` as up to four non-empty rectangles: below, above, left, right (strips_around).
+function stripsAround(rect, cell) {
+  const [x, y, w, h] = rect;
+  const [cx, cy, cw, ch] = cell;
+  const strips = [[cx, cy, cw, y - cy], [cx, y + h, cw, cy + ch - y - h], [cx, y, x - cx, h], [x + w, y, cx + cw - x - w, h]];
+  return strips.filter((s) => s[2] > 0 && s[3] > 0);
+}
+
 // The scale of the quick frame for a frame that costs `msPerPixel` (null: not measured yet) on
 // `pixels`: 1 (no quick frame) when the full frame fits the budget, else the size that fits it,
 // between MIN_QUICK_SCALE and `largest`.
@@ -76,6 +108,9 @@ export class MaterialView {
     this.prefilterProgram = compileProgram(gl, vertex, prefilter);
     this.backgroundProgram = compileProgram(gl, vertex, background);
     this.tonemapProgram = compileProgram(gl, vertex, tonemap);
+    // outside the object's rectangle the background alone (tonemap.frag's PV_BACKGROUND_ONLY)
+    const [version, rest] = [tonemap.slice(0, tonemap.indexOf("\n") + 1), tonemap.slice(tonemap.indexOf("\n") + 1)];
+    this.backgroundOnlyProgram = compileProgram(gl, vertex, `${version}#define PV_BACKGROUND_ONLY\n${rest}`);
     this.emptyVao = gl.createVertexArray();
     await Promise.all([this.loadMesh("sphere"), this.loadEnvironment("studio")]);
   }
@@ -302,7 +337,7 @@ export class MaterialView {
       if (this.entries[i]) this.drawObject(this.entries[i], cell, camera);
     }
     this.drawBackground(cameras);
-    this.drawTonemap();
+    this.drawTonemap(cameras.map(([cell, camera], i) => [cell, this.entries[i] ? this.objectRect(cell, camera) : null]));
     if (t.ldr) {
       gl.bindFramebuffer(gl.READ_FRAMEBUFFER, t.ldrFbo);
       gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
@@ -390,23 +425,49 @@ export class MaterialView {
     }
   }
 
-  drawTonemap() {
-    const gl = this.gl, t = this.targets, prog = this.tonemapProgram;
+  // Where the object of `cell` can be: the mesh's bounding box projected (Renderer.drawn_rect).
+  objectRect(cell, camera) {
+    return screenRect(this.mesh.lo, this.mesh.hi, camera.viewProjection, cell);
+  }
+
+  // Edge filter, background, exposure, ACES and sRGB as the preview's tonemap() runs them: the
+  // whole pass inside each cell's object rectangle, the background alone around it (no rectangle:
+  // the whole cell). `cells`: [[cell, rect or null], ...].
+  drawTonemap(cells) {
+    const gl = this.gl, t = this.targets;
     gl.bindFramebuffer(gl.FRAMEBUFFER, t.ldrFbo); // null (the canvas) for a full-size frame
     gl.viewport(0, 0, t.width, t.height);
-    gl.useProgram(prog);
     gl.activeTexture(gl.TEXTURE0);
     gl.bindTexture(gl.TEXTURE_2D, t.hdr);
     gl.activeTexture(gl.TEXTURE1);
     gl.bindTexture(gl.TEXTURE_2D, t.background);
+    gl.bindVertexArray(this.emptyVao);
+    gl.enable(gl.SCISSOR_TEST);
+    this.useTonemap(this.tonemapProgram);
+    for (const [, rect] of cells) {
+      if (rect === null || rect[2] <= 0 || rect[3] <= 0) continue;
+      gl.scissor(...rect);
+      gl.drawArrays(gl.TRIANGLES, 0, 3);
+    }
+    this.useTonemap(this.backgroundOnlyProgram);
+    for (const [cell, rect] of cells) {
+      for (const strip of rect === null ? [cell] : stripsAround(rect, cell)) {
+        gl.scissor(...strip);
+        gl.drawArrays(gl.TRIANGLES, 0, 3);
+      }
+    }
+    gl.disable(gl.SCISSOR_TEST);
+  }
+
+  useTonemap(prog) {
+    const gl = this.gl;
+    gl.useProgram(prog);
     setUniform(gl, prog, "pv_hdr", "int", 0);
     setUniform(gl, prog, "pv_background_image", "int", 1);
     setUniform(gl, prog, "pv_exposure", "float", this.exposure);
     setUniform(gl, prog, "pv_curve", "int", 0);
     setUniform(gl, prog, "pv_edge_aa", "int", 1);
     setUniform(gl, prog, "pv_background", "int", 1);
-    gl.bindVertexArray(this.emptyVao);
-    gl.drawArrays(gl.TRIANGLES, 0, 3);
   }
 
   // -- what the last frame shows
