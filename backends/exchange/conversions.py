@@ -137,15 +137,18 @@ ALBEDO_MUS = 8  # Gauss-Legendre points in mu for the hemispherical average
 ALBEDO_SAMPLES = 256  # QMC samples per direction (cnlmc.bsdf.albedo): ~1e-3 for a diffuse lobe
 
 
-def hemispherical_albedo(material: Material) -> list[float]:
-    """2 integral A(mu) mu dmu, RGB: what a sphere under a white sky averages to."""
+def hemispherical_albedo(material: Material, full: bool = False) -> list[float]:
+    """2 integral A(mu) mu dmu, RGB: what a sphere under a white sky averages to; `full`: of the
+    complete BRDF (flakes and sheen included, `cnlmc.bsdf.flakes.albedo_full`)."""
     import numpy as np
 
     from cnlmc.bsdf import albedo
+    from cnlmc.bsdf.flakes import albedo_full
 
     x, w = np.polynomial.legendre.leggauss(ALBEDO_MUS)
     mu = 0.5 * (x + 1.0)
-    return [float(v) for v in (w * mu) @ albedo(material, mu, n_samples=ALBEDO_SAMPLES)]
+    integrate = albedo_full if full else albedo
+    return [float(v) for v in (w * mu) @ integrate(material, mu, n_samples=ALBEDO_SAMPLES)]
 
 
 def without_coat(material: Material) -> Material:
@@ -188,3 +191,82 @@ def principled_clearcoat(material: Material) -> float:
     reference = coat_lobe_albedo(replace(material, params=replace(material.params, coat=smooth)))
     ratio = sum(coat_lobe_albedo(material)) / sum(reference)
     return min(FULL_CLEARCOAT * ratio, FULL_CLEARCOAT)
+
+
+# ------------------------------------------------------------------- a diffuse base's energy
+#
+# The IR puts a dielectric's diffuse base under its interface as (1 - F(theta_o)) (1 - F(theta_i)) rho
+# (docs/bsdf.md: internal reflection neglected), so a white base keeps 1 - F_avg of the light it
+# scatters. The targets layer it otherwise (each documented below); every target here takes the
+# base colour linearly, so the base colour it is given is the IR's scaled by the ratio of the two
+# diffuse energies, per channel: the same hemispherical energy, hence the same white furnace (#15).
+
+MITSUBA_TABLE_MUS = 16  # Gauss-Legendre points in mu for roughplastic's transmittance average
+MITSUBA_INTERNAL_MUS = 64  # roughplastic's own table size (MI_ROUGH_TRANSMITTANCE_RES)
+
+
+def with_base_color(material: Material, value: float) -> Material:
+    return replace(material, params=replace(material.params, base_color=(value, value, value)))
+
+
+def diffuse_energy(material: Material) -> tuple[list[float], float]:
+    """(the IR's hemispherical energy of its diffuse base per unit base colour, RGB; the specular
+    lobes' hemispherical albedo): A(white base) - A(black base), and A(black base)."""
+    white, black = (
+        hemispherical_albedo(with_base_color(material, 1.0)),
+        hemispherical_albedo(with_base_color(material, 0.0)),
+    )
+    return [w - b for w, b in zip(white, black)], float(sum(black) / 3.0)
+
+
+def layered_diffuse_scale(material: Material) -> list[float]:
+    """OpenPBR / Standard Surface (and MaterialX's `layer` of a `dielectric_bsdf` over a diffuse
+    base) scale the base by the top lobe's directional albedo, 1 - E(mu_o): its hemispherical diffuse
+    energy is 1 - E_avg (OpenPBR specification, "Dielectric base": energy-conserving albedo scaling).
+    The IR's over that, per channel (for base_weight or a base colour)."""
+    energy, specular = diffuse_energy(material)
+    return [e / max(1.0 - specular, 1e-6) for e in energy]
+
+
+def roughplastic_diffuse_energy(ior: float, alpha: float) -> float:
+    """Mitsuba 3 `roughplastic`'s hemispherical diffuse energy for diffuse_reflectance 1. Its model
+    (src/bsdfs/roughplastic.cpp, nonlinear = false): rho / (1 - R_int) / eta^2 * t(mu_i) t(mu_o) cos / pi,
+    t the rough interface's transmittance from outside (`eval_transmittance`: visible normals, (1 - F)
+    G1, separable Smith) and R_int twice the mean of its internal reflectance times mu over 64 mu in
+    [0, 1] (`eval_reflectance` at 1/eta). So (2 int t mu dmu)^2 / (eta^2 (1 - R_int))."""
+    import numpy as np
+
+    from cnlmc.bsdf.transmission import interface_albedo
+
+    x, w = np.polynomial.legendre.leggauss(MITSUBA_TABLE_MUS)
+    mu = 0.5 * (x + 1.0)
+    _, transmitted = interface_albedo(mu, ior, alpha, n=1024, g2="separable")
+    grid = np.maximum(np.linspace(0.0, 1.0, MITSUBA_INTERNAL_MUS), 1e-6)
+    inside, _ = interface_albedo(grid, 1.0 / ior, alpha, n=1024, g2="separable")
+    through = float(np.sum(w * mu * transmitted))
+    internal = 2.0 * float(np.mean(inside * grid))
+    return through * through / (ior * ior * max(1.0 - internal, 1e-6))
+
+
+def without_extras(material: Material) -> Material:
+    """The material without flakes and sheen (what a target without those lobes draws)."""
+    return replace(material, params=replace(material.params, flake_color=None, sheen_color=None))
+
+
+def diffuse_colour(material: Material, target_energy: float) -> list[float]:
+    """The constant base colour for a target whose diffuse base, of hemispherical energy
+    `target_energy` per unit colour, sits under the IR's interface: (the IR's complete hemispherical
+    albedo - its specular lobes') / target_energy, per channel. Without flakes and sheen this is the
+    base colour times the energy ratio; with them, their energy goes to the base (the target has no
+    such lobe: the look changes, the energy stays)."""
+    total = hemispherical_albedo(material, full=True)
+    specular = hemispherical_albedo(with_base_color(without_extras(material), 0.0))
+    return [max(t - s, 0.0) / max(target_energy, 1e-6) for t, s in zip(total, specular)]
+
+
+def roughplastic_diffuse_scale(material: Material, ior: float, alpha: float) -> list[float]:
+    """What roughplastic's diffuse_reflectance is multiplied by so that its diffuse energy is the IR's
+    (of `material`, whose interface has `ior` and `alpha`: the material's own, or its coat's)."""
+    energy, _ = diffuse_energy(material)
+    target = roughplastic_diffuse_energy(ior, max(alpha, 1e-3))
+    return [e / target for e in energy]

@@ -35,9 +35,12 @@ from .conversions import (
     base_under_coat,
     clip01,
     conductor_f0,
+    diffuse_colour,
     hemispherical_albedo,
     measured,
     principled_clearcoat,
+    roughplastic_diffuse_energy,
+    roughplastic_diffuse_scale,
     rounded,
 )
 from .mitsuba_subsurface import VOLUME_MAX_DEPTH, medium_entry, subsurface_bsdf
@@ -183,8 +186,40 @@ def anisotropy_of(material: Material) -> float:
     return float(material.params.anisotropy) if material.model.anisotropic else 0.0
 
 
+def roughplastic_interface(material: Material) -> tuple[float, float] | None:
+    """(ior, alpha) of the interface a roughplastic puts over the diffuse base: the plastic's own, or
+    the coat's over a paint (`coated`); None for the other plugins."""
+    plugin, params = plugin_for(material), material.params
+    if plugin in ("roughplastic", "plastic"):
+        ax, ay = alpha_pair(params)
+        return float(params.ior), max(math.sqrt(ax * ay), ALPHA_MIRROR)
+    if plugin == "coated" and params.coat is not None:
+        return float(params.coat.ior), max(float(params.coat.alpha[0]), ALPHA_MIRROR)
+    return None
+
+
+def diffuse_scale(material: Material) -> list[float] | None:
+    """roughplastic: what a baked colour map is multiplied by so that its diffuse energy is the IR's
+    (conversions.roughplastic_diffuse_scale); None for the other plugins."""
+    interface = roughplastic_interface(material)
+    return None if interface is None else roughplastic_diffuse_scale(material, *interface)
+
+
+def diffuse_reflectance(material: Material, tex: BsdfTextures) -> Prop:
+    """roughplastic's diffuse_reflectance: the baked map (scaled by `AlphaMaps`), else the constant
+    colour that gives the IR's hemispherical albedo, flakes and sheen folded in
+    (conversions.diffuse_colour over roughplastic_diffuse_energy; clipped to 1: Mitsuba's RGB
+    reflectance must be in [0, 1], so a light base under a very rough interface stays below)."""
+    interface = roughplastic_interface(material)
+    assert interface is not None, "a roughplastic has an interface"
+    if "base_color" in tex:
+        return bitmap("diffuse_reflectance", tex["base_color"])
+    return colour("diffuse_reflectance", diffuse_colour(material, roughplastic_diffuse_energy(*interface)))
+
+
 class AlphaMaps:
-    """Baked roughness (perceptual, IR convention) -> the alpha maps the chosen plugin reads.
+    """Baked maps -> what the chosen plugin reads: roughness (perceptual, IR convention) as alpha
+    maps, a roughplastic's colour map scaled to the IR's diffuse energy (`diffuse_scale`).
 
     roughplastic takes only a uniform alpha: it gets the mean of the map (`mean_alpha`).
     """
@@ -194,8 +229,12 @@ class AlphaMaps:
         self.plugin = plugin_for(material)
         self.anisotropy = anisotropy_of(material)
         self.mean_alpha: float | None = None
+        self.colour_scale = diffuse_scale(material)
 
     def __call__(self, arrays: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+        if "base_color" in arrays and self.colour_scale is not None:
+            scale = np.asarray(self.colour_scale, np.float32)
+            arrays["base_color"] = np.clip(np.asarray(arrays["base_color"], np.float32) * scale, 0.0, 1.0)
         if "roughness" not in arrays:
             return arrays
         r = np.asarray(arrays.pop("roughness"), np.float32)
@@ -234,12 +273,10 @@ def diffuse_bsdf(material: Material, tex: BsdfTextures) -> Prop:
 
 
 def plastic_bsdf(material: Material, tex: BsdfTextures, rough: bool) -> Prop:
+    """A plastic: the IR's interface over a diffuse base; the base colour scaled to the IR's diffuse
+    energy (roughplastic re-reflects inside, the IR keeps (1 - F)(1 - F): docs/bsdf.md "White furnace")."""
     params = material.params
-    props = [
-        prop("float", "int_ior", params.ior),
-        prop("float", "ext_ior", 1.0),
-        colour("diffuse_reflectance", params.base_color, tex.get("base_color")),
-    ]
+    props = [prop("float", "int_ior", params.ior), prop("float", "ext_ior", 1.0), diffuse_reflectance(material, tex)]
     return node("roughplastic" if rough else "plastic", (roughness_props(material, tex) if rough else []) + props)
 
 
@@ -317,17 +354,17 @@ def principled_sheen(material: Material) -> list[Prop]:
 def coated_bsdf(material: Material, tex: BsdfTextures) -> Prop:
     """A clear coat over a plastic or paint: Mitsuba's `roughplastic` is exactly that stack (a
     dielectric interface of the coat's IOR and alpha over a diffuse base, with internal reflection);
-    the base's own specular lobe vanishes under a coat of its index (the IR's relative IOR ~ 1), the
-    coat's colour^thickness tints what lies under it."""
-    params, coat = material.params, material.params.coat
+    the base's own specular lobe vanishes under a coat of its index (the IR's relative IOR ~ 1). The
+    base colour gives the IR's energy under the coat, per channel (`diffuse_reflectance`: the coat's
+    colour and absorption, and a paint's flakes, are in it)."""
+    coat = material.params.coat
     assert coat is not None, "plugin_for chose 'coated' for a coated material"
-    tint = [max(float(c), 0.0) ** float(coat.thickness) for c in coat.color]
     props = [
         prop("string", "distribution", "ggx"),
         prop("float", "alpha", max(float(coat.alpha[0]), ALPHA_MIRROR)),
         prop("float", "int_ior", float(coat.ior)),
         prop("float", "ext_ior", 1.0),
-        colour("diffuse_reflectance", [b * t for b, t in zip(params.base_color, tint)], tex.get("base_color")),
+        diffuse_reflectance(material, tex),
     ]
     return node("roughplastic", props)
 

@@ -18,6 +18,7 @@ from .conversions import (
     conductor_weight,
     f82_tint,
     gulbrandsen_edge,
+    layered_diffuse_scale,
     openpbr_roughness,
     rounded,
     standard_roughness,
@@ -107,6 +108,8 @@ def abstract_inputs(material: Material, surface: str) -> Inputs:
     else:
         out["base_color"] = ("color3", clip01(params.base_color))
         out["metalness"] = ("float", 0.0)
+    if base == "dielectric" and not model.coat:
+        out["base_weight"] = ("float", dielectric_base_weight(material))
     if base == "diffuse":
         out["specular_weight"] = ("float", 0.0)
     else:
@@ -122,6 +125,15 @@ def abstract_inputs(material: Material, surface: str) -> Inputs:
         out.update(_sheen_inputs(params))
     out.update(subsurface_inputs(material))  # light inside the body (subsurface_inputs.py)
     return {k: (t, _rounded(v)) for k, (t, v) in out.items()}
+
+
+def dielectric_base_weight(material: Material) -> float:
+    """OpenPBR's and Standard Surface's diffuse base lies under the specular lobe with albedo scaling
+    (1 - E(mu_o), energy-conserving: a white base gives a white furnace of 1); the IR's loses the
+    light its interface reflects back in ((1 - F)(1 - F)). base_weight = the ratio of the two diffuse
+    energies (`conversions.layered_diffuse_scale`, luminance), so the furnace is the IR's (#15)."""
+    scale = layered_diffuse_scale(material)
+    return min(max(0.2126 * scale[0] + 0.7152 * scale[1] + 0.0722 * scale[2], 0.0), 1.0)
 
 
 def _rounded(value: Value) -> Value:

@@ -272,6 +272,40 @@ def evaluate_bsdf(
     return out
 
 
+def interface_albedo(mu: Any, ior: float, alpha: float, n: int = 2048, g2: str = "correlated") -> tuple[Real, Real]:
+    """(R, T): the energy a rough dielectric interface (GGX, isotropic α) reflects and transmits
+    (importance: energy, no η² scaling) for light arriving at cos θ = mu from the side whose relative
+    index across is ``ior`` (< 1 from inside: TIR). Visible normals sampled from wo (Heitz 2018,
+    golden-ratio lattice); each reflects with F·G2/G1 or refracts with (1 − F)·G2/G1, ``g2`` the
+    masking–shadowing form ("correlated": 1/(1 + Λo + Λi); "separable": G1 G1, Mitsuba 3's).
+    Single scattering: 1 − R − T is the light the model loses (rough glass, docs/bsdf.md)."""
+    from .integrate import lattice_2d
+    from .microfacet import sample_ggx_vndf
+
+    if g2 not in ("correlated", "separable"):
+        raise ValueError(f"unknown G2 form {g2!r}; use correlated or separable")
+    a = max(float(alpha), ALPHA_MIRROR)
+    mus = np.atleast_1d(np.asarray(mu, np.float64))
+    u1, u2 = lattice_2d(n)
+    wo = np.broadcast_to(np.stack([np.sqrt(1 - mus**2), 0 * mus, mus], -1)[:, None, :], (len(mus), n, 3))
+    h = sample_ggx_vndf(wo, a, a, u1, u2)
+    c = np.clip(np.sum(wo * h, axis=-1), 0.0, 1.0)
+    fresnel = fresnel_dielectric(c, ior)
+    lam_o = smith_lambda(wo, a, a)
+    reflected = 2.0 * c[..., None] * h - wo
+    ct = np.sqrt(np.maximum(1.0 - (1.0 - c * c) / (ior * ior), 0.0))
+    refracted = -wo / ior + (c / ior - ct)[..., None] * h
+
+    def kept(w: Real, ok: Real) -> Real:
+        lam_i = smith_lambda(np.abs(w), a, a)
+        g = (1 + lam_o) / (1 + lam_o + lam_i) if g2 == "correlated" else 1.0 / (1.0 + lam_i)
+        return np.where(ok, g, 0.0)
+
+    r = np.mean(fresnel * kept(reflected, reflected[..., 2] > 0), axis=-1)
+    t = np.mean((1.0 - fresnel) * kept(refracted, refracted[..., 2] < 0), axis=-1)
+    return r, t
+
+
 __all__ = [
     "G2_FORMS",
     "MODES",
@@ -279,6 +313,7 @@ __all__ = [
     "evaluate_bsdf",
     "evaluate_transmission",
     "generalized_half_vector",
+    "interface_albedo",
     "microfacet_transmission",
     "mirror_transmittance",
     "refract",
