@@ -17,7 +17,18 @@ HERE = Path(__file__).parent
 VIEW = Path(__file__).resolve().parents[2] / "compiler" / "studio" / "static" / "view"
 #: Chromium as PLATFORM.md "Browser" says: Debian's build, WebGL2 on SwiftShader
 CHROMIUM = "/usr/bin/chromium"
-CHROMIUM_ARGS = ["--enable-unsafe-swiftshader", "--no-sandbox", "--use-angle=swiftshader", "--ignore-gpu-blocklist"]
+#: The page itself (text, panels) is rasterised on the CPU, as Chromium does on a software GPU by
+#: default: Debian's launcher adds --enable-gpu-rasterization and --ignore-gpu-blocklist kept it, so
+#: every repainted DOM tile went through SwiftShader on the GPU thread, queued before the WebGL
+#: frame (chrome://gpu: "Rasterization: Hardware accelerated on all pages"). docs/studio_view.md.
+CHROMIUM_ARGS = [
+    "--enable-unsafe-swiftshader",
+    "--no-sandbox",
+    "--use-angle=swiftshader",
+    "--ignore-gpu-blocklist",
+    "--disable-gpu-rasterization",
+    "--disable-accelerated-2d-canvas",
+]
 
 
 class ViewServer:
