@@ -16,7 +16,16 @@ import sys
 from typing import Any
 
 from .material import MAP_ROLES, Material
-from .params import BASES, COAT_PARAMS, DIFFUSE_LOBES, DISTRIBUTIONS, PARAMS, ParamSpec
+from .params import (
+    BASES,
+    COAT_PARAMS,
+    DIFFUSE_LOBES,
+    DISTRIBUTIONS,
+    PARAMS,
+    SUBSURFACE_MODELS,
+    SUBSURFACE_PARAMS,
+    ParamSpec,
+)
 
 __all__ = ["check_material"]
 
@@ -37,6 +46,8 @@ def _rules(specs: tuple[ParamSpec, ...]) -> dict[str, Rule]:
 
 _PARAM_RULES = _rules(PARAMS)
 _COAT_RULES = _rules(COAT_PARAMS)
+_SUBSURFACE_RULES = _rules(SUBSURFACE_PARAMS)
+_SUBSURFACE_MODELS = frozenset(SUBSURFACE_MODELS)
 _BASES, _DISTRIBUTIONS, _LOBES = frozenset(BASES), frozenset(DISTRIBUTIONS), frozenset(DIFFUSE_LOBES)
 _ROLES = frozenset(MAP_ROLES)
 _STRING_FIELDS = ("name", "phrase", "label")
@@ -73,6 +84,7 @@ def _model_ok(model: dict[str, Any]) -> bool:
         and _member(model.get("diffuse"), _LOBES)
         and type(model.get("anisotropic", False)) is bool
         and type(model.get("coat", False)) is bool
+        and _member(model.get("subsurface"), _SUBSURFACE_MODELS)
     )
 
 
@@ -99,7 +111,12 @@ def _params_ok(params: object, rules: dict[str, Rule]) -> bool:
         return False
     for key, value in params.items():
         rule = rules.get(key)
-        if rule is None or not _value_ok(value, rule):
+        if rule is None:
+            return False
+        if type(value) is float:  # most values: _value_ok's number case, written out
+            if rule[0] != "number" or not rule[1] <= value <= rule[2]:
+                return False
+        elif not _value_ok(value, rule):
             return False
     return True
 
@@ -118,6 +135,10 @@ def _value_ok(value: object, rule: Rule) -> bool:
         return type(value) is str
     if kind == "coat":
         return _params_ok(value, _COAT_RULES)
+    if (
+        kind == "subsurface"
+    ):  # a translucent material's medium: checked here as a coat is (from_ir took 30 % of the check)
+        return _params_ok(value, _SUBSURFACE_RULES)
     return False
 
 

@@ -28,6 +28,8 @@ PHRASES = (
     "gold",
     "polished copper with a clear coat",
     "black velvet",
+    "jade",  # a medium under the boundary (model.subsurface "volume", params.subsurface)
+    "green leaf",  # a thin sheet (model.subsurface "thin", the medium's thickness)
 )
 
 MAP_REF = {"graph": "wood", "output": "color", "params": {"grain": 0.5}, "seed": 3}  # valid under a map role
@@ -59,6 +61,8 @@ REPLACEMENTS: tuple[Any, ...] = (
     "oren_nayar",
     "conductor",
     "base_color",
+    "volume",
+    "thin",
 )
 
 
@@ -69,6 +73,7 @@ def materials() -> list[dict[str, Any]]:
     assert {m["model"]["base"] for m in found} == {"conductor", "dielectric", "glass", "diffuse"}
     assert any(m["params"].get("coat") for m in found) and any(m["maps"] for m in found)
     assert any(m["variant"] for m in found) and any("label" in m for m in found)
+    assert {m["model"].get("subsurface") for m in found} == {None, "volume", "thin"}
     return [copy.deepcopy(dict(m)) for m in found]
 
 
