@@ -17,8 +17,9 @@ CAPABILITIES: dict[str, tuple[str, str]] = {
         "approximate",
         "the environment refracted through the object (a solid's second interface is its bounding "
         "sphere: exact for the sphere mesh; glass=thin: a sheet), Beer-Lambert tint per bounding "
-        "radius, rough transmission prefiltered or sampled by tier; the key light is not transmitted "
-        "(no caustics, no shadows); docs/preview.md 'Transparent materials'",
+        "radius, rough transmission prefiltered or sampled by tier (the light the facets block leaves "
+        "diffusely, not lost); the key light only through rough exits in splitsum/analytic (no "
+        "caustics, no shadows); docs/preview.md 'Transparent materials'",
     ),
     "distribution.ggx": ("exact", ""),
     "distribution.ward": ("exact", ""),
@@ -35,8 +36,9 @@ CAPABILITIES: dict[str, tuple[str, str]] = {
     "flakes": (
         "approximate",
         "the flakes' mean lobe is in cnlm_bsdf: exact for the key light; fis/mc: the environment "
-        "sampled through it; splitsum: the flakes' energy is in the material's albedo tables but the "
-        "environment they reflect is blurred as the base lobe's (sharper than the flakes' spread); "
+        "sampled through it; splitsum: the flakes' energy is in the material's albedo tables; under a "
+        "coat their share is looked up at their own width (seen through the coat), uncoated at the "
+        "base lobe's (sharper than the flakes' spread); "
         "analytic: constant ambient. Sparkle, in every tier and for the key light only: per pixel, how "
         "many of the flakes its footprint holds at their real size face the half vector (a Poisson "
         "count with the mean lobe as its mean, capped at 64x)",

@@ -12,18 +12,21 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 #: What each kind of tier does for a glass's transmission (shaders/transmission.glsl.j2,
-#: docs/preview.md "Transparent materials"); the key light is never transmitted (through
-#: smooth glass a directional light is a delta: no caustics, no shadows).
+#: docs/preview.md "Transparent materials"); the key light is transmitted only through rough exits
+#: in the prefiltered tiers (through smooth glass a directional light is a delta: no caustics,
+#: no shadows; a sampled exit never meets it).
 TRANSMISSION = {
     "ambient": "as splitsum: the refracted path, one prefiltered lookup (the constant ambient is "
     "the reflection's only)",
     "splitsum": "the view refracted in and out along the macro normals (solid: the bounding sphere "
     "as the exit, two exits with internal and total internal reflection; thin: undeflected), "
     "exact Fresnel at each interface, Beer-Lambert tint; rough: one lookup in the environment "
-    "prefiltered at the transmitted lobe's width (fitted to mc256)",
+    "prefiltered at the transmitted lobe's width (fitted to mc256), the key light through the exit "
+    "by that lobe, and the light the facets block (1 - G1) leaving diffusely",
     "sampled": "per sample a GGX visible-normal facet at the entry and at every exit (rough "
-    "transmission sampled, not prefiltered), the same paths, Fresnel and tint; fis: the "
-    "environment's mip level from the lobe's solid angle per sample",
+    "transmission sampled, not prefiltered), the same paths, Fresnel and tint, the blocked light "
+    "leaving diffusely; no key light through the glass; fis: the environment's mip level from the "
+    "lobe's solid angle per sample",
 }
 
 
