@@ -128,57 +128,68 @@ def mitsuba_reference(material, scene, size, spp, work: Path, seed=0):
     return mitsuba_render(material, scene, size, spp, work, seed, bsdf="cnlm")
 
 
-def run(size: int, ref_spp: int, quick: bool, out_csv: Path, out_png: Path | None = None) -> list[dict]:
+FIELDS = ["material", "method", "ms", "ms512", "flip", "rmse", "run"]
+
+
+def run(
+    size: int,
+    ref_spp: int,
+    quick: bool,
+    out_csv: Path,
+    out_png: Path | None = None,
+    times_from: Path | None = None,
+    reverse: bool = False,
+) -> list[dict]:
+    """Measure every chart material. `times_from` (a previous chart's CSV): measure only the
+    errors of the tiers against the reference, and take the frame times, Mitsuba's spp curve and
+    the native_model row from that run (column `run`: "now" or that file's name) -- for a
+    machine too loaded for timings to mean anything."""
     from cnlmc.backends.preview.render import Renderer, default_scene
 
-    renderer, renderer512 = Renderer(size), Renderer(TIMING_SIZE)
+    renderer = Renderer(size)
+    renderer512 = None  # made when something is timed
+    earlier = read_rows(times_from) if times_from else []
     rows = []
     mats = materials()
+    if reverse:  # a second process from the other end (--reverse --csv ...; then --merge)
+        mats = dict(reversed(list(mats.items())))
     if quick:
         mats = {k: v for i, (k, v) in enumerate(mats.items()) if i % 6 == 0 or ":" in k}
     with open(out_csv, "w", newline="") as f:
-        writer = csv.DictWriter(f, ["material", "method", "ms", "ms512", "flip", "rmse"])
+        writer = csv.DictWriter(f, FIELDS)
         writer.writeheader()
         for label, material in mats.items():
             if material["model"].get("subsurface"):  # the translucent class: bench/preview_chart_translucent.py
                 continue
             scene = default_scene("sphere", "studio", (size, size))
             scene.background = "transparent"
-            big = default_scene("sphere", "studio", (TIMING_SIZE, TIMING_SIZE))
-            big.background = "transparent"
             with tempfile.TemporaryDirectory() as tmp:
                 ref, _ = mitsuba_reference(material, scene, size, ref_spp, Path(tmp))
                 ref_ldr = tonemap(ref)
-                native_ref, _ = mitsuba_render(material, scene, size, ref_spp, Path(tmp), seed=7)
-                native_ldr = tonemap(native_ref)
-                flip, rmse = errors(ref_ldr, native_ldr)
-                rows.append(
-                    {"material": label, "method": NATIVE_MODEL, "ms": 0.0, "ms512": 0.0, "flip": flip, "rmse": rmse}
-                )
-                writer.writerow(rows[-1])
-                for spp in MITSUBA_SPP:
-                    img, seconds = mitsuba_render(material, scene, size, spp, Path(tmp), seed=1, warm=True)
-                    _, seconds512 = mitsuba_render(
-                        material, big, TIMING_SIZE, spp, Path(tmp) / "big", seed=1, warm=True
-                    )
-                    flip, rmse = errors(native_ldr, tonemap(img))
-                    rows.append(
-                        {
-                            "material": label,
-                            "method": f"mitsuba{spp}",
-                            "ms": seconds * 1000,
-                            "ms512": seconds512 * 1000,
-                            "flip": flip,
-                            "rmse": rmse,
-                        }
-                    )
-                    writer.writerow(rows[-1])
+                before = [r for r in earlier if r["material"] == label]
+                if before and times_from:
+                    new = [dict(r, run=r.get("run") or times_from.name) for r in before if not _is_tier(r["method"])]
+                else:  # measured now (a material the earlier run did not have, too)
+                    new = mitsuba_curve(label, material, scene, size, ref_spp, ref_ldr, Path(tmp))
+                    renderer512 = renderer512 or Renderer(TIMING_SIZE)
+            for row in new:
+                rows.append(row)
+                writer.writerow(row)
             for tier in VARIANT_TIERS if ":" in label else TIERS:
                 frame = renderer.render(material, tier=tier, scene=scene, hdr=True)
-                ms = renderer.frame_time(scene, material, tier, repeats=2)
-                ms512 = renderer512.frame_time(big, material, tier, repeats=2)
                 flip, rmse = errors(ref_ldr, tonemap(frame.hdr))
-                rows.append({"material": label, "method": tier, "ms": ms, "ms512": ms512, "flip": flip, "rmse": rmse})
+                ms, ms512 = tier_times(renderer, renderer512 if not before else None, scene, material, tier, before)
+                rows.append(
+                    {
+                        "material": label,
+                        "method": tier,
+                        "ms": ms,
+                        "ms512": ms512,
+                        "flip": flip,
+                        "rmse": rmse,
+                        "run": "now",
+                    }
+                )
                 writer.writerow(rows[-1])
             f.flush()
             print(
@@ -187,6 +198,54 @@ def run(size: int, ref_spp: int, quick: bool, out_csv: Path, out_png: Path | Non
             )
             if out_png is not None:  # a partial run still leaves a chart
                 plot(summarise(rows), rows, size, ref_spp, out_png)
+    return rows
+
+
+def _is_tier(method: str) -> bool:
+    return method in VARIANT_TIERS
+
+
+def tier_times(renderer, renderer512, scene, material, tier, before: list[dict]) -> tuple[float, float]:
+    """(ms at the chart's size, ms at 512^2): measured (median of 2 warm frames) when renderer512
+    is given, else the earlier run's (`before`: its rows of this material)."""
+    if renderer512 is None:
+        old = next((r for r in before if r["method"] == tier), None)
+        return (old["ms"], old["ms512"]) if old else (0.0, 0.0)
+    from cnlmc.backends.preview.render import default_scene
+
+    big = default_scene("sphere", "studio", (TIMING_SIZE, TIMING_SIZE))
+    big.background = "transparent"
+    return renderer.frame_time(scene, material, tier, repeats=2), renderer512.frame_time(big, material, tier, repeats=2)
+
+
+def mitsuba_curve(label, material, scene, size, ref_spp, ref_ldr, work: Path) -> list[dict]:
+    """The native_model row and Mitsuba's own time/error curve (native plugins, 1..64 spp,
+    against its converged native render; timed warm at size and at 512^2)."""
+    from cnlmc.backends.preview.render import default_scene
+
+    big = default_scene("sphere", "studio", (TIMING_SIZE, TIMING_SIZE))
+    big.background = "transparent"
+    native_ref, _ = mitsuba_render(material, scene, size, ref_spp, work, seed=7)
+    native_ldr = tonemap(native_ref)
+    flip, rmse = errors(ref_ldr, native_ldr)
+    rows = [
+        {"material": label, "method": NATIVE_MODEL, "ms": 0.0, "ms512": 0.0, "flip": flip, "rmse": rmse, "run": "now"}
+    ]
+    for spp in MITSUBA_SPP:
+        img, seconds = mitsuba_render(material, scene, size, spp, work, seed=1, warm=True)
+        _, seconds512 = mitsuba_render(material, big, TIMING_SIZE, spp, work / "big", seed=1, warm=True)
+        flip, rmse = errors(native_ldr, tonemap(img))
+        rows.append(
+            {
+                "material": label,
+                "method": f"mitsuba{spp}",
+                "ms": seconds * 1000,
+                "ms512": seconds512 * 1000,
+                "flip": flip,
+                "rmse": rmse,
+                "run": "now",
+            }
+        )
     return rows
 
 
@@ -246,6 +305,8 @@ def equal_error_ms(rows: list[dict], flip: float, time_key: str = "ms") -> float
     """Mitsuba's time for this error: log-log interpolation along its spp curve (extrapolated
     with error ~ 1/sqrt(spp) below the 64-spp error); `time_key` "ms512": its times at 512^2."""
     curve = sorted(((r[time_key], r["flip"]) for r in rows if r["method"].startswith("mitsuba")), key=lambda c: c[0])
+    if not curve:  # a material the earlier run (--times-from) did not have
+        return float("nan")
     for (t0, e0), (t1, e1) in zip(curve, curve[1:]):
         if e1 <= flip <= e0:
             w = np.log(e0 / flip) / np.log(e0 / e1) if e0 > e1 else 0.0
@@ -279,7 +340,7 @@ def goals(rows: list[dict], classes: dict[str, str]) -> list[dict]:
                 "ms": best["ms"],
                 "ms512": best.get("ms512", 0.0),
                 "mitsuba_ms": mitsuba_ms,
-                "speedup": mitsuba_ms / best["ms"],
+                "speedup": mitsuba_ms / best["ms"] if best["ms"] > 0 else float("nan"),
                 "mitsuba_ms512": mitsuba_ms512,
                 "speedup512": mitsuba_ms512 / best["ms512"] if timed512 else float("nan"),
                 "native_model": native,
@@ -310,6 +371,24 @@ def print_goals(table: list[dict]) -> None:
             f"{np.median([g['speedup'] for g in gs]):8.1f} / {np.median([g['speedup512'] for g in gs]):6.1f}"
             f"          {sum(g['speedup512'] >= 100 for g in gs):2d}/{len(gs):<2d}        {tiers}"
         )
+
+
+def merge(parts: list[Path], out_csv: Path) -> None:
+    """One chart CSV from runs that measured parts of it (a material's rows from the first part
+    that has all its tiers), in the chart's material order."""
+    found: dict[str, list[dict]] = {}
+    for part in parts:
+        with open(part) as f:
+            rows = list(csv.DictReader(f))
+        for label in dict.fromkeys(r["material"] for r in rows):
+            mine = [r for r in rows if r["material"] == label]
+            if label not in found and {"analytic", "splitsum", "fis64"} <= {r["method"] for r in mine}:
+                found[label] = mine
+    with open(out_csv, "w", newline="") as f:
+        writer = csv.DictWriter(f, FIELDS)
+        writer.writeheader()
+        for label in materials():
+            writer.writerows(found.get(label, []))
 
 
 def read_rows(path: Path) -> list[dict]:
@@ -443,8 +522,17 @@ def main(argv=None) -> int:
     parser.add_argument("--skip-failures", action="store_true", help="no failure cases")
     parser.add_argument("--from-csv", action="store_true", help="re-plot and summarise docs/preview_chart.csv")
     parser.add_argument(
+        "--times-from",
+        type=Path,
+        default=None,
+        help="measure errors only; frame times, Mitsuba's curve and native_model from this earlier chart CSV",
+    )
+    parser.add_argument(
         "--translucent", action="store_true", help="the translucent class (preview_chart_translucent.py)"
     )
+    parser.add_argument("--csv", type=Path, default=None, help="write the chart's rows here (default docs/)")
+    parser.add_argument("--reverse", action="store_true", help="measure the materials last to first")
+    parser.add_argument("--merge", type=Path, nargs="+", default=None, help="merge part CSVs into docs/ and plot")
     args = parser.parse_args(argv)
     if args.translucent:
         from preview_chart_translucent import main as translucent_main
@@ -452,6 +540,9 @@ def main(argv=None) -> int:
         return translucent_main([])
     docs = ROOT / "docs"
     start = time.time()
+    if args.merge:
+        merge(args.merge, docs / "preview_chart.csv")
+        args.from_csv = True
     if args.from_csv:
         rows = read_rows(docs / "preview_chart.csv")
         plot(summarise(rows), rows, args.size, args.ref_spp, docs / "preview_chart.png")
@@ -461,7 +552,11 @@ def main(argv=None) -> int:
         print_failures(failures(args.size, args.ref_spp, docs / "preview_failures.csv"))
     if args.failures_only:
         return 0
-    rows = run(args.size, args.ref_spp, args.quick, docs / "preview_chart.csv", docs / "preview_chart.png")
+    out_csv = args.csv or docs / "preview_chart.csv"
+    out_png = docs / "preview_chart.png" if args.csv is None else None
+    rows = run(args.size, args.ref_spp, args.quick, out_csv, out_png, args.times_from, args.reverse)
+    if args.csv is not None:  # a part: --merge plots the whole
+        return 0
     summary = summarise(rows)
     plot(summary, rows, args.size, args.ref_spp, docs / "preview_chart.png")
     timed_at = TIMING_SIZE if time_key(rows) == "ms512" else args.size
