@@ -58,12 +58,16 @@ def raw_text_parser():
     return Lark(RAW_GRAMMAR, parser="lalr")
 
 
-def timed(fn, repeat: int) -> list[float]:
+def timed(fn, repeat: int, cpu: list[float] | None = None) -> list[float]:
+    """Wall seconds of each call; with `cpu`, each call's CPU seconds (time.process_time) appended
+    to it (what to compare on a busy machine: a wall time includes the waits for a CPU)."""
     out = []
     for _ in range(repeat):
-        t = time.perf_counter()
+        t, c = time.perf_counter(), time.process_time()
         fn()
         out.append(time.perf_counter() - t)
+        if cpu is not None:
+            cpu.append(time.process_time() - c)
     return out
 
 
@@ -76,18 +80,27 @@ def in_process(repeat: int = 300) -> dict:
     tagger, parser, raw = Tagger(lexicon), lark_parser(), raw_text_parser()
     shapes = lexicon.caches.shapes
     compile_times, parse_times, raw_times, unshaped_times = [], [], [], []
+    compile_cpu: list[float] = []
+    raw_cpu: list[float] = []
     for phrase in PHRASES:
         compile_source(phrase, "bench", lexicon)  # warm caches
         tagged, _ = tagger.tag_line(phrase, 1, 0)
         _tree, chosen = parse_tagged(tagged)
         tokens = [_token(t, chosen[t.span.start].tag) for t in tagged]
-        compile_times += timed(lambda: compile_source(phrase, "bench", lexicon), repeat)
+        compile_times += timed(lambda: compile_source(phrase, "bench", lexicon), repeat, compile_cpu)
         parse_times += timed(lambda: parser.parse(tokens), repeat)
-        raw_times += timed(lambda: raw.parse(phrase), repeat)
+        raw_times += timed(lambda: raw.parse(phrase), repeat, raw_cpu)
         shapes.persistent = False  # cleared means parsed again, not recalled from the stored shapes
         unshaped_times += timed(lambda: (shapes.clear(), compile_source(phrase, "bench", lexicon)), repeat // 4)
         shapes.persistent = True
-    return {"compile": compile_times, "parse": parse_times, "raw": raw_times, "unshaped": unshaped_times}
+    return {
+        "compile": compile_times,
+        "parse": parse_times,
+        "raw": raw_times,
+        "unshaped": unshaped_times,
+        "compile cpu": compile_cpu,
+        "raw cpu": raw_cpu,
+    }
 
 
 def cold_cli(runs: int = 7) -> dict[str, list[tuple[float, float]]]:
@@ -122,6 +135,7 @@ def _timed_run(command: list[str], env: dict[str, str]) -> tuple[float, float]:
 
 
 def main() -> None:
+    print(f"load average at the start: {os.getloadavg()[0]:.2f} on {os.cpu_count()} CPUs")
     stats = in_process()
     med_c, med_p = statistics.median(stats["compile"]), statistics.median(stats["parse"])
     print(f"{'stage':<32}{'median':>12}{'p99':>12}")
@@ -137,6 +151,11 @@ def main() -> None:
     print(
         f"ratio phrase->IR / lark raw-text parse: {med_c / med_r:.2f}x   "
         f"/ parse of tagged tokens: {med_c / med_p:.2f}x   phrases/s: {1 / med_c:,.0f}"
+    )
+    cpu_c, cpu_r = statistics.median(stats["compile cpu"]), statistics.median(stats["raw cpu"])
+    print(
+        f"CPU time (process_time, the same calls): phrase -> IR median {cpu_c * 1e6:.1f}us, lark raw-text parse "
+        f"{cpu_r * 1e6:.1f}us: ratio {cpu_c / cpu_r:.2f}x   load average now: {os.getloadavg()[0]:.2f}"
     )
     cold = cold_cli()
     for label, runs in cold.items():
