@@ -139,6 +139,8 @@ def run(
     out_png: Path | None = None,
     times_from: Path | None = None,
     reverse: bool = False,
+    glass_spp: int | None = None,
+    skip: int = 0,
 ) -> list[dict]:
     """Measure every chart material. `times_from` (a previous chart's CSV): measure only the
     errors of the tiers against the reference, and take the frame times, Mitsuba's spp curve and
@@ -151,6 +153,7 @@ def run(
     earlier = read_rows(times_from) if times_from else []
     rows = []
     mats = materials()
+    mats = dict(list(mats.items())[skip:])
     if reverse:  # a second process from the other end (--reverse --csv ...; then --merge)
         mats = dict(reversed(list(mats.items())))
     if quick:
@@ -164,7 +167,8 @@ def run(
             scene = default_scene("sphere", "studio", (size, size))
             scene.background = "transparent"
             with tempfile.TemporaryDirectory() as tmp:
-                ref, _ = mitsuba_reference(material, scene, size, ref_spp, Path(tmp))
+                spp = glass_spp if glass_spp and material["model"]["base"] == "glass" else ref_spp
+                ref, _ = mitsuba_reference(material, scene, size, spp, Path(tmp))
                 ref_ldr = tonemap(ref)
                 before = [r for r in earlier if r["material"] == label]
                 if before and times_from:
@@ -532,6 +536,10 @@ def main(argv=None) -> int:
     )
     parser.add_argument("--csv", type=Path, default=None, help="write the chart's rows here (default docs/)")
     parser.add_argument("--reverse", action="store_true", help="measure the materials last to first")
+    parser.add_argument("--glass-spp", type=int, default=None, help="the reference's spp for glass (path traced)")
+    parser.add_argument(
+        "--skip", type=int, default=0, help="leave out the first SKIP materials (another part has them)"
+    )
     parser.add_argument("--merge", type=Path, nargs="+", default=None, help="merge part CSVs into docs/ and plot")
     args = parser.parse_args(argv)
     if args.translucent:
@@ -554,7 +562,9 @@ def main(argv=None) -> int:
         return 0
     out_csv = args.csv or docs / "preview_chart.csv"
     out_png = docs / "preview_chart.png" if args.csv is None else None
-    rows = run(args.size, args.ref_spp, args.quick, out_csv, out_png, args.times_from, args.reverse)
+    rows = run(
+        args.size, args.ref_spp, args.quick, out_csv, out_png, args.times_from, args.reverse, args.glass_spp, args.skip
+    )
     if args.csv is not None:  # a part: --merge plots the whole
         return 0
     summary = summarise(rows)
