@@ -1,16 +1,20 @@
 """The `cnlmc` command line. Exit codes: 0 ok, 1 compile errors, 2 usage, 70 internal error.
 
-The language's own subcommands are in cnlmc.commands; a backend's subcommands (bake, sheet,
-preview, ar) are listed by the registry by name and help, and only the one that runs is imported.
-A plugin's subcommand (entry point group 'cnlmc.commands') is looked up when no other matches.
+The language's own subcommands are in cnlmc.commands (compile, explain, targets, lsp) and in the
+front ends of their areas (build, serve, listen: `FRONT_END_COMMANDS`, listed by name and help);
+a backend's subcommands (bake, sheet, preview, ar) are listed by the registry by name and help.
+Only the subcommand that runs is imported and declares its arguments: a cold `cnlmc compile`
+loads nothing of the others (docs/language.md, Speed). A plugin's subcommand (entry point group
+'cnlmc.commands') is looked up when no other matches.
 """
 
 from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
+from typing import NamedTuple
 
 from cnlmc.backends.registry import BUILTIN_COMMANDS, Command, TargetUnavailable, get_command, plugin_command
 
@@ -18,9 +22,50 @@ from .cache import freeze_long_lived
 from .commands import EXIT_INTERNAL, EXIT_OK, EXIT_USAGE, LANGUAGE_COMMANDS
 from .diagnostics import visible
 from .errors import UsageError
-from .speech.command import ListenCommand  # light: pocketsphinx loads only when `listen` runs
 
-__all__ = ["build_parser", "main"]
+__all__ = ["FRONT_END_COMMANDS", "CommandRef", "build_parser", "main"]
+
+
+def _build() -> Command:
+    from .batch.command import BuildCommand  # cnlmc.batch: catalogues to targets (#20)
+
+    return BuildCommand()
+
+
+def _serve() -> Command:
+    from .studio.command import ServeCommand  # cnlmc.studio: the web studio (#17); aiohttp loads when it runs
+
+    return ServeCommand()
+
+
+def _listen() -> Command:
+    from .speech.command import ListenCommand  # cnlmc.speech (#18); pocketsphinx loads when it runs
+
+    return ListenCommand()
+
+
+class CommandRef(NamedTuple):
+    """A language subcommand that lives in its area's front end: its name and help for the
+    parser's list, and how to make it (imports its module). tests/language/test_cli_start.py
+    checks that each name and help is what the command itself says."""
+
+    name: str
+    help: str
+    make: Callable[[], Command]
+
+
+#: After cnlmc.commands' own, in the order `cnlmc --help` lists them (backends' commands follow).
+FRONT_END_COMMANDS: tuple[CommandRef, ...] = (
+    CommandRef(
+        "build", "build every material of a catalogue to targets, incrementally, in parallel (or on Dask)", _build
+    ),
+    CommandRef(
+        "serve", "open the studio: type a phrase in the browser, see it live, refine, export, view in AR", _serve
+    ),
+    CommandRef(
+        "listen", "speak a material: the first phrase starts it, later ones refine it ('darker', 'undo')", _listen
+    ),
+)
 
 
 def chosen_command(argv: Sequence[str]) -> str | None:
@@ -29,28 +74,38 @@ def chosen_command(argv: Sequence[str]) -> str | None:
 
 
 def build_parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
-    """The parser, with the arguments of the language's subcommands and of the backend
-    subcommand `argv` names (the others are listed by name and help only)."""
+    """The parser, with the arguments of the subcommand `argv` names (the others are listed by
+    name and help only)."""
     parser = argparse.ArgumentParser(
         prog="cnlmc",
         description="Compile material phrases such as "
         "'lightly brushed, blue anodized aluminum' into renderable materials.",
     )
     sub = parser.add_subparsers(dest="command", required=True)
-    for command in (*LANGUAGE_COMMANDS, ListenCommand()):
-        _add(sub.add_parser(command.name, help=command.help), command)
     chosen = chosen_command(argv)
+    for command in LANGUAGE_COMMANDS:
+        language_parser = sub.add_parser(command.name, help=command.help)
+        if command.name == chosen:
+            _add(language_parser, command)
+    for ref in FRONT_END_COMMANDS:
+        front_end_parser = sub.add_parser(ref.name, help=ref.help)
+        if ref.name == chosen:
+            _add(front_end_parser, ref.make())
     for name, entry in BUILTIN_COMMANDS.items():
         backend_parser = sub.add_parser(name, help=entry.help)
         if name == chosen:
             with _loading():
                 _add(backend_parser, get_command(name))
-    if chosen is not None and chosen not in {c.name for c in LANGUAGE_COMMANDS} | {"listen"} | set(BUILTIN_COMMANDS):
+    if chosen is not None and chosen not in _listed():
         with _loading():
             plugin = plugin_command(chosen)
         if plugin is not None:
             _add(sub.add_parser(plugin.name, help=plugin.help), plugin)
     return parser
+
+
+def _listed() -> set[str]:
+    return {c.name for c in LANGUAGE_COMMANDS} | {r.name for r in FRONT_END_COMMANDS} | set(BUILTIN_COMMANDS)
 
 
 def _add(parser: argparse.ArgumentParser, command: Command) -> None:

@@ -8,13 +8,12 @@ Backends bring their own subcommands (`cnlmc.backends.base.Command`, listed in
 from __future__ import annotations
 
 import argparse
+import io
 import json
-import shutil
 import sys
-import tempfile
 from collections.abc import Callable, Sequence
 from dataclasses import asdict
-from typing import Any, BinaryIO, Protocol
+from typing import TYPE_CHECKING, Any, BinaryIO, Protocol, cast
 
 from cnlmc.backends.registry import (
     Artifact,
@@ -29,22 +28,23 @@ from cnlmc.backends.registry import (
 )
 
 from .api import Result, compile_source, compile_stream, cyclic_gc_paused, lexicon_for
-from .batch.command import BuildCommand
 from .diagnostics import Diagnostic, has_errors, render_all, visible
 from .document import parse_document
 from .errors import UsageError
-from .explain import explain
 from .inputs import DEFAULT_MAX_BYTES, input_name, read_text
 from .ir import terminal_safe
-from .lexicon import Lexicon
-from .lexicon_schema import LexiconError
 from .lines import iter_lines
-from .output import write_artifacts, write_streamed
-from .studio.command import ServeCommand  # light: aiohttp loads only when `serve` runs
 from .tagger import Tagger
+
+if TYPE_CHECKING:
+    from .lexicon import Lexicon
+
+# Imported where they are used, not here: a cold `cnlmc compile` to standard output needs none of
+# them (cnlmc.output and its locks and signal handling, explain, the lexicon's schema checks, tempfile).
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 STAGES = ("tokens", "ast", "ir")
+STDOUT = "-"  # `-o -`: standard output, as without -o (a file named '-' is `-o ./-`)
 
 
 # ---------------------------------------------------------------- shared by every subcommand
@@ -108,8 +108,12 @@ def option_pairs(pairs: Sequence[str]) -> dict[str, str]:
 def lexicon_of(args: argparse.Namespace) -> Lexicon:
     try:
         lexicon: Lexicon = lexicon_for(tuple(args.lexicon))
-    except LexiconError as exc:
-        raise UsageError(f"lexicon: {exc}") from None
+    except Exception as exc:
+        from .lexicon_schema import LexiconError  # loaded with the lexicon's files, not from the cache
+
+        if isinstance(exc, LexiconError):
+            raise UsageError(f"lexicon: {exc}") from None
+        raise
     return lexicon
 
 
@@ -141,7 +145,7 @@ class CompileCommand(Command):
         add_source_arguments(parser)
         parser.add_argument("--target", "-t", default="ir", help="backend: see `cnlmc targets` (default: ir)")
         parser.add_argument("--emit", choices=STAGES, help="stop at a stage and print it")
-        parser.add_argument("-o", "--output", help="output file or folder (default: stdout)")
+        parser.add_argument("-o", "--output", help="output file or folder (default, or -: stdout)")
         add_option_argument(parser, "a backend option, e.g. --option fresnel=schlick")
 
     def run(self, args: argparse.Namespace) -> int:
@@ -171,7 +175,7 @@ def run_target(target: Target, result: Result, args: argparse.Namespace) -> Emit
     """The target on the compiled document with the --option pairs (plus seed and output);
     None when it refuses a material (said on stderr); a bad option is a usage error."""
     options: dict[str, object] = {**option_pairs(args.option), "seed": args.seed}
-    if args.output:
+    if output_path(args.output):
         options.setdefault("output", args.output)
     try:
         with cyclic_gc_paused():
@@ -206,8 +210,8 @@ def compile_streamed(
 ) -> int:
     """compile to a target that writes one file a material at a time (`material_writer`, the IR
     target's): each material's IR is made, checked, written to the staged output
-    (cnlmc.output.write_streamed; a spool file on disk for stdout) and let go, so memory does not
-    grow with the document. The diagnostics go to stderr once every line is read; with an error
+    (cnlmc.output.write_streamed; for stdout a Spool: memory, then a file on disk) and let go, so
+    memory does not grow with the document. The diagnostics go to stderr once every line is read; with an error
     nothing is written (exit 1), as when the whole IR is made first."""
     stream = compile_stream(source, name, lexicon, args.seed)
 
@@ -220,7 +224,7 @@ def compile_streamed(
         if has_errors(diags):
             raise _CompileErrors
         options: dict[str, object] = {**option_pairs(args.option), "seed": args.seed}
-        if args.output:
+        if output_path(args.output):
             options["output"] = args.output
         try:
             target.parse_options(options)
@@ -230,7 +234,9 @@ def compile_streamed(
 
     try:
         with cyclic_gc_paused():
-            if args.output:
+            if output_path(args.output):
+                from .output import write_streamed
+
                 say_wrote(write_streamed("materials.ir.json", args.output, write, protect=[args.file]))
             else:
                 _to_stdout(write)
@@ -240,21 +246,17 @@ def compile_streamed(
 
 
 def _to_stdout(write: Callable[[BinaryIO], None]) -> None:
-    """`write` into a spool file on disk (in TMPDIR), then copied to stdout once it has succeeded."""
-    try:
-        spool = tempfile.TemporaryFile()
-    except OSError as exc:
-        raise _spool_error(exc) from None
-    with spool:
+    """`write` into a spool (in memory up to SPOOL_IN_MEMORY bytes, then a file on disk in TMPDIR),
+    then copied to stdout once it has succeeded."""
+    with Spool() as spool:
         try:
-            write(spool)
+            write(cast(BinaryIO, spool))  # it only writes
             spool.flush()
         except OSError as exc:
             raise _spool_error(exc) from None
-        spool.seek(0)
         try:
             sys.stdout.flush()
-            shutil.copyfileobj(spool, sys.stdout.buffer)
+            spool.copy_to(sys.stdout.buffer)
             sys.stdout.buffer.flush()
         except BrokenPipeError:
             raise
@@ -262,7 +264,67 @@ def _to_stdout(write: Callable[[BinaryIO], None]) -> None:
             raise UsageError(f"cannot write to standard output: {exc.strerror or exc}") from None
 
 
+#: What a Spool keeps in memory before it moves to a file on disk (our choice: a phrase's IR is a
+#: few KiB, a large document's many MiB; 8 MiB bounds the memory the way the file did).
+SPOOL_IN_MEMORY = 8 << 20
+COPY_CHUNK = 1 << 16
+
+
+class Spool:
+    """A write-only staging buffer: bytes in memory until they pass `limit`, then all of them in an
+    anonymous temporary file (tempfile is imported only then). `copy_to` writes what it holds."""
+
+    def __init__(self, limit: int = SPOOL_IN_MEMORY) -> None:
+        self.limit = limit
+        self.memory: io.BytesIO | None = io.BytesIO()
+        self.file: BinaryIO | None = None
+
+    def __enter__(self) -> Spool:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def write(self, data: bytes) -> int:
+        if self.memory is not None and self.memory.tell() + len(data) > self.limit:
+            self._to_disk()
+        target = self.memory if self.memory is not None else self.file
+        assert target is not None
+        return target.write(data)
+
+    def _to_disk(self) -> None:
+        import tempfile
+
+        try:
+            file = tempfile.TemporaryFile()
+        except OSError as exc:
+            raise _spool_error(exc) from None
+        assert self.memory is not None
+        file.write(self.memory.getbuffer())
+        self.memory, self.file = None, file
+
+    def flush(self) -> None:
+        if self.file is not None:
+            self.file.flush()
+
+    def copy_to(self, out: BinaryIO) -> None:
+        if self.memory is not None:
+            out.write(self.memory.getbuffer())
+            return
+        assert self.file is not None
+        self.file.seek(0)
+        while chunk := self.file.read(COPY_CHUNK):
+            out.write(chunk)
+
+    def close(self) -> None:
+        if self.file is not None:
+            self.file.close()
+        self.memory = self.file = None
+
+
 def _spool_error(exc: OSError) -> UsageError:
+    import tempfile
+
     return UsageError(
         f"cannot write the output to a temporary file in '{tempfile.gettempdir()}': {exc.strerror or exc}; "
         "give -o PATH, or set TMPDIR to a folder with room"
@@ -280,24 +342,40 @@ def say_wrote(path: object) -> None:
     print(f"wrote {visible(str(path), one_line=True)}", file=sys.stderr)
 
 
+def output_path(output: str | None) -> str | None:
+    """The -o value as a path to write, or None for standard output (no -o, or `-o -`)."""
+    return None if not output or output == STDOUT else output
+
+
 def deliver(artifacts: list[Artifact], output: str | None, protect: Sequence[str] = ()) -> int:
     """Write the files (all-or-nothing, never over an input in `protect`: cnlmc.output) where -o
-    says, or print the text ones on stdout."""
+    says, or print them on stdout (no -o, or `-o -`) when all of them are text: nothing is
+    printed when one is binary."""
     if not artifacts:
         print(
             "cnlmc: note: nothing to write: the result has no files (no material of the input has what this target writes)",
             file=sys.stderr,
         )
         return EXIT_OK
-    if output:
-        for path in write_artifacts(artifacts, output, protect):
-            say_wrote(path)
+    path = output_path(output)
+    if path:
+        from .output import write_artifacts
+
+        for written in write_artifacts(artifacts, path, protect):
+            say_wrote(written)
         return EXIT_OK
+    binary = next((a.name for a in artifacts if isinstance(a.content, bytes)), None)
+    if binary is not None and output == STDOUT:
+        raise UsageError(
+            f"-o - writes to standard output, which takes text; this result has binary files ('{binary}'): "
+            "give -o FOLDER or -o FILE to write them (a file named '-' is -o ./-)"
+        )
+    if binary is not None:
+        raise UsageError(f"'{binary}' is binary: give -o PATH")
     for artifact in artifacts:
-        if isinstance(artifact.content, bytes):
-            raise UsageError(f"'{artifact.name}' is binary: give -o PATH")
         if len(artifacts) > 1:
             print(f"// ---- {artifact.name}")
+        assert isinstance(artifact.content, str)  # (no binary: checked above)
         sys.stdout.write(artifact.content)
     return EXIT_OK
 
@@ -333,6 +411,8 @@ class ExplainCommand(Command):
         add_source_arguments(parser)
 
     def run(self, args: argparse.Namespace) -> int:
+        from .explain import explain
+
         source, name = read_source(args.file, args.max_bytes)
         result = compile_reported(source, name, args)
         sys.stdout.write(explain(result.ir))
@@ -370,12 +450,11 @@ class LspCommand(Command):
         return EXIT_OK
 
 
-#: The CLI's own subcommands, in the order `cnlmc --help` lists them (backends' commands follow).
+#: The CLI's own subcommands, in the order `cnlmc --help` lists them (then cnlmc.cli's
+#: FRONT_END_COMMANDS: build, serve, listen; then backends' commands).
 LANGUAGE_COMMANDS: tuple[Command, ...] = (
     CompileCommand(),
     ExplainCommand(),
     TargetsCommand(),
     LspCommand(),
-    BuildCommand(),  # cnlmc.batch: catalogues to targets (#20)
-    ServeCommand(),  # cnlmc.studio: the web studio (#17)
 )
