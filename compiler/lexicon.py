@@ -7,6 +7,12 @@ change one number of a noun.
 
 The model (Entry, Lexicon, ...) is cnlmc.lexicon_model's, reading files cnlmc.lexicon_load's;
 this module loads (load_lexicon), caches on disk as plain data (cached_lexicon) and re-exports.
+
+The disk cache's form (`stored_form`, read back by `from_stored`) is made for a cold start: a
+JSON header line with the settings, the keywords and the index of surface forms (StoredIndex), then
+each entry's fields as JSON, one after another; an entry's fields are decoded and checked when
+they are first read (Entry.stored), so a run that reads a few dozen entries never decodes the rest.
+`to_data` / `from_data` are the plain, editable form of the whole lexicon.
 """
 
 from __future__ import annotations
@@ -17,7 +23,7 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
-from .cache import cached, dump_json, load_json
+from .cache import CacheDamaged, cache_dir, cached, dump_json, load_json
 from .graphs import graph_names
 from .lexicon_model import (
     CATEGORY_TAGS,
@@ -26,6 +32,7 @@ from .lexicon_model import (
     Forms,
     Lexicon,
     LexiconCaches,
+    StoredIndex,
     keyword_table,
     normalise,
 )
@@ -43,10 +50,12 @@ __all__ = [
     "Overlays",
     "cached_lexicon",
     "from_data",
+    "from_stored",
     "keyword_table",
     "lexicon_sources",
     "load_lexicon",
     "normalise",
+    "stored_form",
     "to_data",
 ]
 
@@ -146,11 +155,11 @@ def _from_disk_cache(user_paths: tuple[str | Path, ...], overlay: Overlays) -> L
 
 
 def _dump(lexicon: Lexicon) -> bytes:
-    return dump_json(to_data(lexicon))
+    return stored_form(lexicon)
 
 
 def _load(payload: bytes) -> Lexicon:
-    return from_data(load_json(payload))
+    return from_stored(payload)
 
 
 def lexicon_sources(user_paths: tuple[str | Path, ...], overlay: Overlays) -> list[Path]:
@@ -206,11 +215,133 @@ def from_data(data: dict[str, Any]) -> Lexicon:
 
 def _entry_from(category: str, key: str, value: list[Any]) -> Entry:
     fields, origin = value
-    fields = _table(fields)
-    for role, ref in _table(fields.get("maps", {})).items():  # names that become paths stay checked
+    return Entry(category, _text(key), _checked_fields(category, key, fields), _text(origin))
+
+
+def _checked_fields(category: str, key: str, fields: Any) -> dict[str, Any]:
+    """An entry's fields as read from a cache: a table whose maps name map roles and bundled graphs
+    (names that become paths stay checked); ValueError or TypeError otherwise."""
+    table = _table(fields)
+    for role, ref in _table(table.get("maps", {})).items():
         if role not in MAP_ROLES or _table(ref).get("graph") not in graph_names():
             raise ValueError(f"cached {category} '{key}' has a map that is not in the schema")
-    return Entry(category, _text(key), fields, _text(origin))
+    return table
+
+
+# ---------------------------------------------------------------- the disk cache's form
+
+STORED_FORMAT = "cnlmc-lexicon 3"
+
+
+def stored_form(lexicon: Lexicon) -> bytes:
+    """The lexicon as the disk cache keeps it: a JSON header line, then the entries' fields."""
+    body = bytearray()
+    origins: dict[str, int] = {}
+    numbers: dict[tuple[str, str], int] = {}
+    table: dict[str, list[list[Any]]] = {}
+    for category, by_key in lexicon.entries.items():
+        rows = table[category] = []
+        for key, entry in by_key.items():
+            fields = dump_json(entry.data)
+            rows.append([key, len(body), len(body) + len(fields), origins.setdefault(entry.origin, len(origins))])
+            body += fields
+            numbers[(category, key)] = len(numbers)
+    head = {
+        "format": STORED_FORMAT,
+        "entries": table,
+        "origins": list(origins),
+        "forms": {" ".join(form): [numbers[(e.category, e.key)] for e in hits] for form, hits in lexicon.forms.items()},
+        "followers": {first: sorted(seconds) for first, seconds in lexicon.followers.items()},
+        "lengths": {first: list(lengths) for first, lengths in lexicon.lengths_from.items()},
+        "max_form_words": lexicon.max_form_words,
+        "settings": lexicon.settings,
+        "inflections": [list(rule) for rule in lexicon.inflections],
+        "sources": lexicon.sources,
+        "keywords": lexicon.keywords,
+        "word_formation": lexicon.word_formation,
+    }
+    return dump_json(head) + b"\n" + bytes(body)
+
+
+class StoredEntries:
+    """The entries' fields of one stored lexicon (the payload after its header line)."""
+
+    def __init__(self, body: bytes) -> None:
+        self.body = body
+
+    def fields(self, entry: Entry, start: int, end: int) -> dict[str, Any]:
+        try:
+            return _checked_fields(entry.category, entry.key, load_json(self.body[start:end]))
+        except (ValueError, TypeError) as exc:
+            raise CacheDamaged(
+                f"the cached lexicon's entry '{entry.key}' ({entry.category}) fails its check ({exc}): "
+                f"delete the cache folder {cache_dir()} (it is rebuilt), or set CNLMC_NO_CACHE=1"
+            ) from None
+
+
+def from_stored(payload: bytes) -> Lexicon:
+    """A Lexicon from stored_form's bytes; ValueError, TypeError, KeyError or IndexError for a
+    payload of any other shape (the cache then rebuilds it). Entries' fields are checked when read."""
+    head_text, newline, body = payload.partition(b"\n")
+    head = _table(load_json(head_text))
+    if not newline or head.get("format") != STORED_FORMAT:
+        raise ValueError("not a stored lexicon of this format")
+    store = StoredEntries(body)
+    origins = [_text(origin) for origin in head["origins"]]
+    entries: dict[str, dict[str, Entry]] = {}
+    order: list[Entry] = []
+    for category in CATEGORY_TAGS:
+        by_key = entries[category] = {}
+        for key, start, end, origin in head["entries"][category]:
+            if not (_whole(start) and _whole(end) and _whole(origin) and start <= end <= len(body)):
+                raise ValueError(f"a stored {category} entry has no fields")
+            entry = by_key[_text(key)] = Entry.stored(category, key, origins[origin], (store, start, end))
+            order.append(entry)
+    index = StoredIndex(
+        _stored_forms(head["forms"], len(order)),
+        order,
+        {_text(first): frozenset(_texts(seconds)) for first, seconds in _table(head["followers"]).items()},
+        {_text(first): tuple(_wholes(lengths)) for first, lengths in _table(head["lengths"]).items()},
+        _whole_number(head["max_form_words"]),
+    )
+    inflections = [(_text(s), _text(r)) for s, r in head["inflections"]]
+    sources = [_text(s) for s in head["sources"]]
+    keywords = {_text(k): _text(v) for k, v in _table(head["keywords"]).items()}
+    word_formation = [_table(layer) for layer in head["word_formation"]]
+    return Lexicon(entries, _table(head["settings"]), inflections, sources, keywords, word_formation, index=index)
+
+
+def _stored_forms(value: Any, count: int) -> dict[str, list[int]]:
+    forms = _table(value)
+    for numbers in forms.values():
+        if not isinstance(numbers, list) or not all(_whole(n) and n < count for n in numbers):
+            raise ValueError("a stored form names an entry that is not there")
+    return forms
+
+
+def _whole(value: Any) -> bool:
+    return type(value) is int and value >= 0
+
+
+def _whole_number(value: Any) -> int:
+    if not _whole(value):
+        raise TypeError(f"expected a whole number, got {value!r:.40}")
+    number: int = value
+    return number
+
+
+def _wholes(value: Any) -> list[int]:
+    return [_whole_number(n) for n in _list(value)]
+
+
+def _texts(value: Any) -> list[str]:
+    return [_text(t) for t in _list(value)]
+
+
+def _list(value: Any) -> list[Any]:
+    if not isinstance(value, list):
+        raise TypeError(f"expected a list, got {type(value).__name__}")
+    return value
 
 
 def _table(value: Any) -> dict[str, Any]:

@@ -8,10 +8,10 @@ face of both (load_lexicon, cached_lexicon) and re-exports what is defined here.
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import FrozenInstanceError
 from functools import lru_cache
 from types import MappingProxyType
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple, Protocol
 
 from .diagnostics import FailureKey, Mistake
 from .package_data import package_folder
@@ -38,12 +38,51 @@ CATEGORY_TAGS = {
 SPECIAL_FILES = ("settings", "inflections", "keywords", "word_formation")
 
 
-@dataclass(frozen=True)
+class StoredFields(Protocol):
+    """Where a stored entry's fields are (cnlmc.lexicon's disk-cache form): `fields(entry, start,
+    end)` decodes and checks them (ValueError when they fail a check)."""
+
+    def fields(self, entry: Entry, start: int, end: int) -> dict[str, Any]: ...
+
+
 class Entry:
+    """One lexicon entry: its category, key, fields (`data`) and the file it came from (`origin`).
+
+    Immutable, compared by value (as the frozen dataclass it was). An entry read from the disk
+    cache (`Entry.stored`) decodes its fields when they are first asked for: one run reads a few
+    dozen of a lexicon's ~1,700 entries (docs/language.md, Speed)."""
+
+    __slots__ = ("category", "key", "origin", "_data", "_stored")
+
     category: str
     key: str
-    data: dict[str, Any]
     origin: str
+    _data: dict[str, Any] | None
+    _stored: tuple[StoredFields, int, int] | None
+
+    def __init__(self, category: str, key: str, data: dict[str, Any], origin: str) -> None:
+        for name, value in (("category", category), ("key", key), ("origin", origin), ("_data", data)):
+            object.__setattr__(self, name, value)
+        object.__setattr__(self, "_stored", None)
+
+    @classmethod
+    def stored(cls, category: str, key: str, origin: str, where: tuple[StoredFields, int, int]) -> Entry:
+        """An entry whose fields are decoded from `where` (the store, start, end) on first use."""
+        entry = cls.__new__(cls)
+        for name, value in (("category", category), ("key", key), ("origin", origin), ("_data", None)):
+            object.__setattr__(entry, name, value)
+        object.__setattr__(entry, "_stored", where)
+        return entry
+
+    @property
+    def data(self) -> dict[str, Any]:
+        data = self._data
+        if data is None:
+            assert self._stored is not None
+            store, start, end = self._stored
+            data = store.fields(self, start, end)
+            object.__setattr__(self, "_data", data)
+        return data
 
     @property
     def tag(self) -> str:
@@ -52,8 +91,42 @@ class Entry:
     def get(self, name: str, default: Any = None) -> Any:
         return self.data.get(name, default)
 
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise FrozenInstanceError(f"cannot assign to field '{name}'")
+
+    def __delattr__(self, name: str) -> None:
+        raise FrozenInstanceError(f"cannot delete field '{name}'")
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        assert isinstance(other, Entry)
+        return (self.category, self.key, self.data, self.origin) == (
+            other.category,
+            other.key,
+            other.data,
+            other.origin,
+        )
+
+    __hash__ = None  # type: ignore[assignment]  # its fields are a dict (as the dataclass: unhashable)
+
+    def __repr__(self) -> str:
+        return f"Entry(category={self.category!r}, key={self.key!r}, data={self.data!r}, origin={self.origin!r})"
+
 
 Forms = dict[tuple[str, ...], list[Entry]]  # normalised surface form -> the entries spelled so
+
+
+class StoredIndex(NamedTuple):
+    """A lexicon's index as the disk cache keeps it (cnlmc.lexicon), so a cold start does not
+    rebuild it from every entry's aliases: each surface form ("stainless steel", its words joined
+    by one space) -> entry numbers in `order`; the multi-word followers and lengths."""
+
+    forms: dict[str, list[int]]
+    order: list[Entry]
+    followers: dict[str, frozenset[str]]
+    lengths_from: dict[str, tuple[int, ...]]
+    max_form_words: int
 
 
 def normalise(surface: str) -> tuple[str, ...]:
@@ -115,18 +188,42 @@ class Lexicon:
         sources: list[str],
         keywords: dict[str, str] | None = None,
         word_formation: list[dict[str, Any]] | None = None,
+        *,
+        index: StoredIndex | None = None,
     ) -> None:
-        self.keywords = {**keyword_table(), **(keywords or {})}
+        """`index`: the stored index of these entries (the disk cache's; `keywords` are then the
+        whole table, the bundled keywords already merged in, and grammar/keywords.toml is not read)."""
+        self.keywords = dict(keywords or {}) if index is not None else {**keyword_table(), **(keywords or {})}
         self.word_formation = word_formation or []  # each layer's word_formation table, most specific first
         self.entries = entries
         self.settings = settings
         self.inflections = inflections
         self.sources = sources
-        self.forms = _index_forms(entries)
-        self.max_form_words = max(len(f) for f in self.forms)
-        self.followers = _multi_word_followers(self.forms)
-        self.lengths_from = _multi_word_lengths(self.forms)
+        self._forms: Forms | None = None
+        self._stored: StoredIndex | None = index
+        self._found: Forms = {}  # the stored index's look-ups so far (known forms only: bounded by the index)
+        if index is None:
+            self._forms = forms = _index_forms(entries)
+            self.max_form_words = max(len(f) for f in forms)
+            self.followers = _multi_word_followers(forms)
+            self.lengths_from = _multi_word_lengths(forms)
+        else:
+            self.max_form_words = index.max_form_words
+            self.followers = index.followers
+            self.lengths_from = index.lengths_from
         self.caches = LexiconCaches()
+
+    @property
+    def forms(self) -> Forms:
+        """Every surface form (its lower-case words) -> the entries it names, in entry order."""
+        forms = self._forms
+        if forms is None:
+            stored = self._stored
+            assert stored is not None
+            order = stored.order
+            forms = {tuple(form.split(" ")): [order[n] for n in numbers] for form, numbers in stored.forms.items()}
+            self._forms = forms
+        return forms
 
     def multi_word_followers(self) -> dict[str, frozenset[str]]:
         """First word of a multi-word form -> the words that can come second ("stainless" -> {"steel"})."""
@@ -145,7 +242,20 @@ class Lexicon:
         return self.entries[category][key]
 
     def lookup(self, words: tuple[str, ...]) -> list[Entry]:
-        return self.forms.get(words, [])
+        """The entries these lower-case words name (none: an empty list)."""
+        forms = self._forms
+        if forms is not None:
+            return forms.get(words, [])
+        found = self._found.get(words)
+        if found is None:
+            stored = self._stored
+            assert stored is not None
+            form = " ".join(words)
+            numbers = stored.forms.get(form)
+            if numbers is None or form.count(" ") != len(words) - 1:  # a "word" with a space in it names nothing
+                return []
+            found = self._found[words] = [stored.order[n] for n in numbers]
+        return found
 
     def base_forms(self, word: str) -> list[str]:
         """Candidate base forms of an unknown word by the inflection rules, in order."""

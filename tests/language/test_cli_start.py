@@ -1,0 +1,164 @@
+"""A cold `cnlmc compile` (#14 speed): what it loads, the lexicon's stored form, and `-o -`.
+
+Speed itself is measured by bench/cold_start.py (numbers against a peer process, never timed
+assertions); these tests check the behaviour the fast start rests on: the same bytes out, only
+the modules a compile needs, a stored lexicon equal to the loaded one and checked when read.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from cnlmc.backends.registry import TargetUnavailable, get_target
+from cnlmc.cache import SUFFIX, encode
+from cnlmc.cli import FRONT_END_COMMANDS, build_parser
+from cnlmc.lexicon import from_stored, load_lexicon, stored_form
+from tests.helpers import run_cnlmc
+
+#: What a compile to standard output never needs: the other commands' front ends, the output
+#: writer (only -o), TOML (the lexicon, keywords and graph tables come from the disk cache),
+#: lark (stored parse shapes). (tempfile still comes with importlib.resources.)
+NOT_ON_A_COLD_COMPILE = (
+    "cnlmc.studio.command",
+    "cnlmc.batch.command",
+    "cnlmc.speech.command",
+    "cnlmc.explain",
+    "cnlmc.output",
+    "cnlmc.lexicon_load",
+    "cnlmc.lexicon_schema",
+    "socket",
+    "tomllib",
+    "lark",
+)
+
+
+def cli_env(cache_home: Path) -> dict[str, str]:
+    env = {**os.environ, "XDG_CACHE_HOME": str(cache_home)}
+    env.pop("CNLMC_NO_CACHE", None)
+    return env
+
+
+def test_a_cold_compile_with_a_warm_cache_loads_only_what_it_needs(tmp_path):
+    code = (
+        "import sys, io; from cnlmc.cli import main; sys.stdin = io.TextIOWrapper(io.BytesIO(b'white varnished oak\\n'));"
+        "code = main(['compile', '-']); "
+        "print(code, sorted(m for m in sys.modules if m in set(sys.argv[1:])), file=sys.stderr)"
+    )
+    command = [sys.executable, "-c", code, *NOT_ON_A_COLD_COMPILE]
+    env = cli_env(tmp_path)
+    first = subprocess.run(command, capture_output=True, text=True, env=env, timeout=120)  # fills the cache
+    assert first.stderr.splitlines()[-1].startswith("0 "), first.stderr
+    again = subprocess.run(command, capture_output=True, text=True, env=env, timeout=120)
+    assert again.stdout == first.stdout and json.loads(again.stdout)["materials"][0]["name"] == "white_varnished_oak"
+    assert again.stderr.splitlines()[-1] == "0 []", again.stderr
+
+
+def test_each_front_end_command_is_listed_as_it_names_itself():
+    for ref in FRONT_END_COMMANDS:
+        command = ref.make()
+        assert (command.name, command.help) == (ref.name, ref.help)
+    argv = ["build", "catalogue.cnl", "-o", "out", "--target", "ir"]
+    assert build_parser(argv).parse_args(argv).command == "build"  # its own arguments, once chosen
+
+
+def test_the_stored_lexicon_is_the_loaded_one(stdlib):
+    fresh = load_lexicon()
+    stored = from_stored(stored_form(fresh))
+    assert stored.entries == fresh.entries  # (every stored entry decodes its fields here)
+    assert stored.forms == fresh.forms
+    assert (stored.followers, stored.lengths_from, stored.max_form_words) == (
+        fresh.followers,
+        fresh.lengths_from,
+        fresh.max_form_words,
+    )
+    assert (stored.keywords, stored.settings, stored.inflections) == (fresh.keywords, fresh.settings, fresh.inflections)
+    assert stored.word_formation == json.loads(json.dumps(fresh.word_formation))  # as plain data (tuples: lists)
+
+
+def test_a_stored_lexicon_looks_words_up_as_the_loaded_one():
+    fresh = load_lexicon()
+    stored = from_stored(stored_form(fresh))
+    for words in [("stainless", "steel"), ("oak",), ("blue-grey",), ("nothing",), ("stainless steel",), ()]:
+        assert stored.lookup(words) == fresh.lookup(words), words
+    assert stored._forms is None  # looked up without building every form
+
+
+def test_a_stored_entry_that_fails_its_check_stops_the_run_naming_the_cache(tmp_path):
+    from cnlmc.cache import source_key
+    from cnlmc.lexicon import lexicon_sources
+
+    payload = stored_form(load_lexicon())
+    head, _, body = payload.partition(b"\n")
+    [(start, end)] = [(row[1], row[2]) for row in json.loads(head)["entries"]["nouns"] if row[0] == "oak"]
+    oak = body[start:end]
+    assert b'"graph":"wood"' in oak
+    forged_oak = oak.replace(b'"graph":"wood"', b'"graph":"w/.."')  # the same length: offsets stay
+    forged = head + b"\n" + body[:start] + forged_oak + body[end:]
+    key = source_key("lexicon", lexicon_sources((), ()))
+    path = tmp_path / "cnlmc" / f"lexicon-{key}{SUFFIX}"
+    path.parent.mkdir(mode=0o700)
+    path.write_bytes(encode(path.name[: -len(SUFFIX)], forged))
+    result = run_cnlmc("compile", "-", stdin="oak\n", env=cli_env(tmp_path), timeout=120)
+    assert result.returncode == 2 and result.stdout == ""
+    assert "fails its check" in result.stderr and "Traceback" not in result.stderr
+    assert "delete the cache folder" in result.stderr
+
+
+def test_a_malformed_stored_lexicon_is_refused_so_the_cache_rebuilds_it():
+    payload = stored_form(load_lexicon())
+    head, _, body = payload.partition(b"\n")
+    for bad in (b"{}", head, payload.replace(b'"max_form_words":', b'"max_form_words":-', 1), b"[]\n" + body):
+        with pytest.raises((ValueError, TypeError, KeyError, IndexError)):
+            from_stored(bad)
+
+
+@pytest.mark.parametrize("target", ["ir", "glsl"])
+def test_dash_o_dash_is_standard_output_for_a_text_target(tmp_path, target):
+    plain = run_cnlmc("compile", "-", "--target", target, stdin="glossy red plastic\n", cwd=tmp_path)
+    dashed = run_cnlmc("compile", "-", "--target", target, "-o", "-", stdin="glossy red plastic\n", cwd=tmp_path)
+    assert plain.returncode == dashed.returncode == 0, dashed.stderr
+    assert dashed.stdout == plain.stdout and dashed.stdout.strip()
+    assert list(tmp_path.iterdir()) == []  # no file named '-'
+
+
+def test_dash_o_dash_for_a_target_that_writes_binary_files_says_what_to_do(tmp_path):
+    try:
+        get_target("gltf")
+    except TargetUnavailable as exc:
+        pytest.skip(f"the gltf target is not here: {exc}")
+    result = run_cnlmc("compile", "-", "--target", "gltf", "-o", "-", stdin="red plastic\n", cwd=tmp_path)
+    assert result.returncode == 2 and result.stdout == ""
+    assert "cnlmc: error: -o - writes to standard output, which takes text" in result.stderr
+    assert "give -o FOLDER or -o FILE" in result.stderr and "Traceback" not in result.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_result_with_a_binary_file_prints_nothing_of_it_on_stdout(tmp_path):
+    try:
+        get_target("materialx")
+    except TargetUnavailable as exc:
+        pytest.skip(f"the materialx target is not here: {exc}")
+    result = run_cnlmc("compile", "-", "--target", "materialx", stdin="white varnished oak\n", cwd=tmp_path)
+    assert result.returncode == 2 and result.stdout == ""  # the .mtlx is not printed half-way
+    assert "is binary: give -o PATH" in result.stderr
+
+
+def test_the_stdout_spool_moves_to_a_file_past_its_limit():
+    from cnlmc.commands import Spool
+
+    out = io.BytesIO()
+    with Spool(limit=10) as spool:
+        spool.write(b"0123456789")
+        assert spool.file is None  # in memory up to the limit
+        spool.write(b"abc")
+        assert spool.file is not None and spool.memory is None
+        spool.flush()
+        spool.copy_to(out)
+    assert out.getvalue() == b"0123456789abc"
