@@ -62,6 +62,7 @@ def raw_tokens(line: str) -> list[tuple[str, int]]:
 
 
 RawToken = tuple[str, int]  # a word's text and 0-based column
+_COLON = (Candidate("COLON", ":", "punct"),)  # the name's colon (a Candidate is frozen)
 WordKey = tuple[str, ...]  # the lower-case words of a (multi-word) form
 
 #: How many word forms a Tagger remembers (known, inflected and unknown ones alike). An entry is
@@ -130,15 +131,18 @@ class Tagger:
         tagged: list[Tagged] = []
         diags: list[Diagnostic] = []
         i = self._name_prefix(line, raw, line_no, offset, tagged) if ":" in line else 0
-        memo, followers, count = self.memo, self.followers, len(raw)
+        remembered, followers, count = self.memo._entries, self.followers, len(raw)
         while i < count:
             text, col = raw[i]
             low = text.lower()
             seconds = followers.get(low)
             if seconds is None or i + 1 == count or raw[i + 1][0].lower() not in seconds:
-                candidates = memo.get((low,))  # the common case: a one-word entry
-                if candidates is None:
-                    candidates = self._candidates((low,))
+                key = (low,)  # the common case: a one-word entry (WordMemo.get written out)
+                candidates = remembered.get(key)
+                if candidates is not None:
+                    remembered.move_to_end(key)
+                else:
+                    candidates = self._candidates(key)
                 if candidates:
                     start = offset + col
                     tagged.append(Tagged(text, Span(start, start + len(text), line_no, col + 1), candidates))
@@ -151,6 +155,9 @@ class Tagger:
 
     def formation(self) -> WordFormation:
         """The lexicon's word formation engine (made on first use, kept in lexicon.caches)."""
+        found = self.lexicon.caches.word_formation  # WordFormation.of's own first step: most lines ask
+        if found is not None:
+            return found
         from .word_formation import WordFormation
 
         return WordFormation.of(self.lexicon, self._candidates)
@@ -176,16 +183,18 @@ class Tagger:
         """'hull: ...' -> NAME COLON; the name may be several words."""
         if ":" not in line:
             return 0
-        colon = next((j for j, (t, _c) in enumerate(raw) if t == ":"), None)
+        colon = 0
+        for j, (t, _c) in enumerate(raw):
+            if t == ":":
+                colon = j
+                break
         if not colon:
             return 0
         first_col, (last_text, last_col) = raw[0][1], raw[colon - 1]
-        text = " ".join(t for t, _c in raw[:colon])
+        text = raw[0][0] if colon == 1 else " ".join([t for t, _c in raw[:colon]])  # 'm12', 'hull', 'deck two'
         span = line_span(line_no, first_col + 1, last_col + len(last_text) - first_col, offset)
         tagged.append(Tagged(text, span, (Candidate("NAME", text, "name"),)))
-        tagged.append(
-            Tagged(":", line_span(line_no, raw[colon][1] + 1, 1, offset), (Candidate("COLON", ":", "punct"),))
-        )
+        tagged.append(Tagged(":", line_span(line_no, raw[colon][1] + 1, 1, offset), _COLON))
         return colon + 1
 
     def _tag_at(
