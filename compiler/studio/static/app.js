@@ -34,6 +34,7 @@ class Studio {
     this.changes = 0; // changes typed: each edit is numbered in the trace (view/trace.js)
     this.editing = false; // an edit is on its way to the server and back
     this.editAgain = false; // the text changed meanwhile: send it when the answer comes
+    this.fresh = false; // the next edit asks for every payload part again (parts.js)
     this.trace = new Trace();
     this.parts = new PayloadParts(hello.parts_kept);
     this.pictures = new Map(); // history step id -> the thumbnail of the frame drawn for it
@@ -60,20 +61,25 @@ class Studio {
   changed() {
     this.changes += 1;
     this.trace.mark("change", this.changes);
+    this.editSoon();
+  }
+
+  editSoon() {
     if (this.editing) this.editAgain = true;
     else this.edit();
   }
 
-  async edit(fresh = false) {
+  async edit() {
     this.editing = true;
     try {
       do {
         this.editAgain = false;
         const text = this.editor.text;
         const number = this.changes;
+        const fields = this.fresh ? { text, fresh: true } : { text };
+        this.fresh = false;
         this.trace.mark("send", number);
-        const analysis = await this.ask("edit", fresh ? { text, fresh } : { text });
-        fresh = false;
+        const analysis = await this.ask("edit", fields);
         this.trace.mark("message", number, { startTime: analysis.arrived, chars: analysis.chars });
         this.trace.mark("parsed", number, { startTime: analysis.parsed, server: analysis.timing });
         if (analysis.op !== "skipped" && !this.editAgain) this.apply(analysis, text, number);
@@ -100,7 +106,8 @@ class Studio {
     }
     if (!this.editor.show(analysis, text)) return; // typed on since: the next analysis comes
     if (analysis.payloads === null) {
-      this.edit(true); // a part this page no longer holds: ask for them all
+      this.fresh = true; // a part this page no longer holds: ask for them all
+      this.editSoon();
       return;
     }
     status.analyses = String(Number(status.analyses) + 1);
