@@ -177,8 +177,14 @@ def lexicon_sources(user_paths: tuple[str | Path, ...], overlay: Overlays) -> li
         Path(str(package.joinpath("data").joinpath("colour_rules.toml"))),  # how the survey joins the lexicon
     ]
     sources += folders  # a file added to or removed from a folder changes its time
-    sources += [p for folder in folders if folder.is_dir() for p in sorted(folder.glob("*.toml"))]
+    sources += [p for folder in folders if folder.is_dir() for p in _toml_files(folder)]
     return sources
+
+
+def _toml_files(folder: Path) -> list[Path]:
+    """The folder's *.toml entries, by name (what sorted(folder.glob("*.toml")) lists, without
+    compiling a pattern on every start)."""
+    return [folder / name for name in sorted(os.listdir(folder)) if name.endswith(".toml")]
 
 
 def _overlay_names(overlay: Overlays) -> tuple[str, ...]:
@@ -238,19 +244,25 @@ def stored_form(lexicon: Lexicon) -> bytes:
     body = bytearray()
     origins: dict[str, int] = {}
     numbers: dict[tuple[str, str], int] = {}
-    table: dict[str, list[list[Any]]] = {}
+    table: dict[str, dict[str, list[Any]]] = {}
     for category, by_key in lexicon.entries.items():
-        rows = table[category] = []
+        rows: dict[str, list[Any]] = {"keys": [], "ends": [], "origins": []}  # fields: from the last end to this one
         for key, entry in by_key.items():
-            fields = dump_json(entry.data)
-            rows.append([key, len(body), len(body) + len(fields), origins.setdefault(entry.origin, len(origins))])
-            body += fields
+            body += dump_json(entry.data)
+            rows["keys"].append(key)
+            rows["ends"].append(len(body))
+            rows["origins"].append(origins.setdefault(entry.origin, len(origins)))
             numbers[(category, key)] = len(numbers)
+        table[category] = rows
+    forms: dict[str, Any] = {}
+    for form, hits in lexicon.forms.items():
+        found = [numbers[(e.category, e.key)] for e in hits]
+        forms[" ".join(form)] = found[0] if len(found) == 1 else found
     head = {
         "format": STORED_FORMAT,
         "entries": table,
         "origins": list(origins),
-        "forms": {" ".join(form): [numbers[(e.category, e.key)] for e in hits] for form, hits in lexicon.forms.items()},
+        "forms": forms,
         "followers": {first: sorted(seconds) for first, seconds in lexicon.followers.items()},
         "lengths": {first: list(lengths) for first, lengths in lexicon.lengths_from.items()},
         "max_form_words": lexicon.max_form_words,
@@ -290,18 +302,21 @@ def from_stored(payload: bytes) -> Lexicon:
     origins = [_text(origin) for origin in head["origins"]]
     entries: dict[str, dict[str, Entry]] = {}
     order: list[Entry] = []
+    start, size = 0, len(body)
     for category in CATEGORY_TAGS:
         by_key = entries[category] = {}
-        for key, start, end, origin in head["entries"][category]:
-            if not (_whole(start) and _whole(end) and _whole(origin) and start <= end <= len(body)):
-                raise ValueError(f"a stored {category} entry has no fields")
-            entry = by_key[_text(key)] = Entry.stored(category, key, origins[origin], (store, start, end))
+        rows = _table(head["entries"][category])
+        for key, end, origin in zip(rows["keys"], rows["ends"], rows["origins"], strict=True):
+            if type(key) is not str or type(end) is not int or not start <= end <= size or not _whole(origin):
+                raise ValueError(f"a stored {category} entry is not where its fields are")
+            entry = by_key[key] = Entry.stored(category, key, origins[origin], (store, start, end))
             order.append(entry)
+            start = end
     index = StoredIndex(
-        _stored_forms(head["forms"], len(order)),
+        _table(head["forms"]),  # each form's entry numbers are checked when it is looked up
         order,
-        {_text(first): frozenset(_texts(seconds)) for first, seconds in _table(head["followers"]).items()},
-        {_text(first): tuple(_wholes(lengths)) for first, lengths in _table(head["lengths"]).items()},
+        {first: frozenset(_list(seconds)) for first, seconds in _table(head["followers"]).items()},
+        {first: tuple(_list(lengths)) for first, lengths in _table(head["lengths"]).items()},
         _whole_number(head["max_form_words"]),
     )
     inflections = [(_text(s), _text(r)) for s, r in head["inflections"]]
@@ -309,14 +324,6 @@ def from_stored(payload: bytes) -> Lexicon:
     keywords = {_text(k): _text(v) for k, v in _table(head["keywords"]).items()}
     word_formation = [_table(layer) for layer in head["word_formation"]]
     return Lexicon(entries, _table(head["settings"]), inflections, sources, keywords, word_formation, index=index)
-
-
-def _stored_forms(value: Any, count: int) -> dict[str, list[int]]:
-    forms = _table(value)
-    for numbers in forms.values():
-        if not isinstance(numbers, list) or not all(_whole(n) and n < count for n in numbers):
-            raise ValueError("a stored form names an entry that is not there")
-    return forms
 
 
 def _whole(value: Any) -> bool:
@@ -328,14 +335,6 @@ def _whole_number(value: Any) -> int:
         raise TypeError(f"expected a whole number, got {value!r:.40}")
     number: int = value
     return number
-
-
-def _wholes(value: Any) -> list[int]:
-    return [_whole_number(n) for n in _list(value)]
-
-
-def _texts(value: Any) -> list[str]:
-    return [_text(t) for t in _list(value)]
 
 
 def _list(value: Any) -> list[Any]:

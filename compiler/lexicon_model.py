@@ -13,6 +13,7 @@ from functools import lru_cache
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any, NamedTuple, Protocol
 
+from .cache import CacheDamaged
 from .diagnostics import FailureKey, Mistake
 from .package_data import package_folder
 from .syntax import ShapeCache
@@ -120,13 +121,28 @@ Forms = dict[tuple[str, ...], list[Entry]]  # normalised surface form -> the ent
 class StoredIndex(NamedTuple):
     """A lexicon's index as the disk cache keeps it (cnlmc.lexicon), so a cold start does not
     rebuild it from every entry's aliases: each surface form ("stainless steel", its words joined
-    by one space) -> entry numbers in `order`; the multi-word followers and lengths."""
+    by one space) -> the number of its entry in `order`, or a list of them when it names several
+    (checked when a form is first looked up); the multi-word followers and lengths."""
 
-    forms: dict[str, list[int]]
+    forms: dict[str, Any]
     order: list[Entry]
     followers: dict[str, frozenset[str]]
     lengths_from: dict[str, tuple[int, ...]]
     max_form_words: int
+
+    def entries(self, form: str) -> list[Entry] | None:
+        """The entries `form` names (None: it names none); CacheDamaged for a number not in `order`."""
+        numbers = self.forms.get(form)
+        if numbers is None:
+            return None
+        if type(numbers) is not list:
+            numbers = [numbers]
+        order = self.order
+        if not all(type(n) is int and 0 <= n < len(order) for n in numbers):
+            raise CacheDamaged(
+                f"the cached lexicon's form '{form}' names no entry: delete the cache folder (it is rebuilt)"
+            )
+        return [order[n] for n in numbers]
 
 
 def normalise(surface: str) -> tuple[str, ...]:
@@ -220,8 +236,11 @@ class Lexicon:
         if forms is None:
             stored = self._stored
             assert stored is not None
-            order = stored.order
-            forms = {tuple(form.split(" ")): [order[n] for n in numbers] for form, numbers in stored.forms.items()}
+            forms = {}
+            for form in stored.forms:
+                found = stored.entries(form)
+                assert found is not None
+                forms[tuple(form.split(" "))] = found
             self._forms = forms
         return forms
 
@@ -251,10 +270,10 @@ class Lexicon:
             stored = self._stored
             assert stored is not None
             form = " ".join(words)
-            numbers = stored.forms.get(form)
-            if numbers is None or form.count(" ") != len(words) - 1:  # a "word" with a space in it names nothing
+            found = stored.entries(form)
+            if found is None or form.count(" ") != len(words) - 1:  # a "word" with a space in it names nothing
                 return []
-            found = self._found[words] = [stored.order[n] for n in numbers]
+            self._found[words] = found
         return found
 
     def base_forms(self, word: str) -> list[str]:

@@ -96,7 +96,11 @@ def test_a_stored_entry_that_fails_its_check_stops_the_run_naming_the_cache(tmp_
 
     payload = stored_form(load_lexicon())
     head, _, body = payload.partition(b"\n")
-    [(start, end)] = [(row[1], row[2]) for row in json.loads(head)["entries"]["nouns"] if row[0] == "oak"]
+    table = json.loads(head)["entries"]
+    ends = [end for category in table.values() for end in category["ends"]]  # the fields lie one after another
+    before = list(table)[: list(table).index("nouns")]
+    at = sum(len(table[category]["keys"]) for category in before) + table["nouns"]["keys"].index("oak")
+    start, end = (ends[at - 1] if at else 0), ends[at]
     oak = body[start:end]
     assert b'"graph":"wood"' in oak
     forged_oak = oak.replace(b'"graph":"wood"', b'"graph":"w/.."')  # the same length: offsets stay
@@ -162,3 +166,15 @@ def test_the_stdout_spool_moves_to_a_file_past_its_limit():
         spool.flush()
         spool.copy_to(out)
     assert out.getvalue() == b"0123456789abc"
+
+
+def test_a_stored_form_that_names_no_entry_is_refused_when_looked_up():
+    from cnlmc.cache import CacheDamaged, dump_json
+
+    head, _, body = stored_form(load_lexicon()).partition(b"\n")
+    data = json.loads(head)
+    data["forms"]["oak"] = 10**6
+    stored = from_stored(dump_json(data) + b"\n" + body)
+    assert stored.lookup(("steel",))
+    with pytest.raises(CacheDamaged, match="names no entry"):
+        stored.lookup(("oak",))
