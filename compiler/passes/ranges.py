@@ -103,15 +103,14 @@ def check_finite(state: MaterialState, ctx: Context) -> MaterialState:
             _report(state, param, value, fixed)
     if coat is not None:
         for param, value in coat.items():
-            if not _finite(value):
+            if not ((type(value) is float and -big <= value <= big) or _finite(value)):
                 coat[param] = fixed = _fixed(value, COAT_RANGES.get(param), COAT_DEFAULTS.get(param))
                 _report(state, "coat." + param, value, fixed)
     for role, ref in state.maps.items():
         held = ref["params"]
-        table = graph_params(ref["graph"]) if held else {}
         for param, value in held.items():
-            if not _finite(value):
-                bounds = table.get(param)
+            if not ((type(value) is float and -big <= value <= big) or _finite(value)):
+                bounds = graph_params(ref["graph"]).get(param)  # looked up only for a value to fix
                 held[param] = fixed = _fixed(value, bounds[:2] if bounds else None, bounds[2] if bounds else None)
                 _report(state, f"maps.{role}.{param}", value, fixed)
     for name, steps in state.provenance.items():
