@@ -66,7 +66,8 @@ CAPABILITIES: Capabilities = {
     "model.dielectric": (
         "approximate",
         "roughplastic layers its diffuse base differently (rough-interface "
-        "transmittance and internal re-reflection, not (1 - F)(1 - F)); bsdf=cnlm renders cnlmc's own",
+        "transmittance and internal re-reflection, not (1 - F)(1 - F)): its diffuse_reflectance is set to "
+        "give the IR's hemispherical energy (clipped to 1); bsdf=cnlm renders cnlmc's own",
     ),
     "model.conductor": ("exact", ""),
     "model.glass": ("exact", ""),
