@@ -141,6 +141,8 @@ def run(
     reverse: bool = False,
     glass_spp: int | None = None,
     skip: int = 0,
+    curves: bool = True,
+    only: int | None = None,
 ) -> list[dict]:
     """Measure every chart material. `times_from` (a previous chart's CSV): measure only the
     errors of the tiers against the reference, and take the frame times, Mitsuba's spp curve and
@@ -153,7 +155,7 @@ def run(
     earlier = read_rows(times_from) if times_from else []
     rows = []
     mats = materials()
-    mats = dict(list(mats.items())[skip:])
+    mats = dict(list(mats.items())[skip : None if only is None else skip + only])
     if reverse:  # a second process from the other end (--reverse --csv ...; then --merge)
         mats = dict(reversed(list(mats.items())))
     if quick:
@@ -174,7 +176,7 @@ def run(
                 if before and times_from:
                     new = [dict(r, run=r.get("run") or times_from.name) for r in before if not _is_tier(r["method"])]
                 else:  # measured now (a material the earlier run did not have, too)
-                    new = mitsuba_curve(label, material, scene, size, ref_spp, ref_ldr, Path(tmp))
+                    new = mitsuba_curve(label, material, scene, size, ref_spp, ref_ldr, Path(tmp)) if curves else []
                     renderer512 = renderer512 or Renderer(TIMING_SIZE)
             for row in new:
                 rows.append(row)
@@ -537,6 +539,8 @@ def main(argv=None) -> int:
     parser.add_argument("--csv", type=Path, default=None, help="write the chart's rows here (default docs/)")
     parser.add_argument("--reverse", action="store_true", help="measure the materials last to first")
     parser.add_argument("--glass-spp", type=int, default=None, help="the reference's spp for glass (path traced)")
+    parser.add_argument("--no-curves", action="store_true", help="no Mitsuba spp curve where none is taken over")
+    parser.add_argument("--only", type=int, default=None, help="measure only ONLY materials (after --skip)")
     parser.add_argument(
         "--skip", type=int, default=0, help="leave out the first SKIP materials (another part has them)"
     )
@@ -563,7 +567,17 @@ def main(argv=None) -> int:
     out_csv = args.csv or docs / "preview_chart.csv"
     out_png = docs / "preview_chart.png" if args.csv is None else None
     rows = run(
-        args.size, args.ref_spp, args.quick, out_csv, out_png, args.times_from, args.reverse, args.glass_spp, args.skip
+        args.size,
+        args.ref_spp,
+        args.quick,
+        out_csv,
+        out_png,
+        args.times_from,
+        args.reverse,
+        args.glass_spp,
+        args.skip,
+        not args.no_curves,
+        args.only,
     )
     if args.csv is not None:  # a part: --merge plots the whole
         return 0
