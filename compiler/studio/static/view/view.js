@@ -24,6 +24,9 @@ const tableKey = (table) => table.key ?? table.data; // the server's digest, or 
 // still reads, its highlight and edge softer — looked at for plastic, oak and glass).
 const QUICK_BUDGET_MS = 40;
 const MIN_QUICK_SCALE = 0.25;
+// show()'s full frame is drawn in this many bands of rows, the page's tasks run between them (our
+// choice: a quarter of a frame, 0.1-0.2 s on SwiftShader at load 20, is what a key typed meanwhile waits)
+const FULL_FRAME_BANDS = 4;
 
 const RECT_PAD = 2; // render.py Renderer.RECT_PAD: the edge filter reads a pixel's neighbours
 
@@ -55,6 +58,12 @@ function stripsAround(rect, cell) {
   const [cx, cy, cw, ch] = cell;
   const strips = [[cx, cy, cw, y - cy], [cx, y + h, cw, cy + ch - y - h], [cx, y, x - cx, h], [x + w, y, cx + cw - x - w, h]];
   return strips.filter((s) => s[2] > 0 && s[3] > 0);
+}
+
+// `rect` cut to rows [rows[0], rows[1]) (an empty rectangle when they miss it).
+function inRows(rect, rows) {
+  const bottom = Math.max(rect[1], rows[0]), top = Math.min(rect[1] + rect[3], rows[1]);
+  return [rect[0], bottom, rect[2], Math.max(top - bottom, 0)];
 }
 
 // The scale of the quick frame for a frame that costs `msPerPixel` (null: not measured yet) on
@@ -142,7 +151,8 @@ export class MaterialView {
       mark("quick-shown");
       if (ticket !== this.shows) return null;
     }
-    const ms = this.draw();
+    const ms = await this.drawInBands(ticket);
+    if (ms === null) return null;
     mark("drawn", { scale: 1, ms });
     afterPaint(() => mark("shown"));
     return ms;
@@ -317,7 +327,31 @@ export class MaterialView {
   // Draw a frame (at `scale` of the canvas size, stretched onto it when < 1); returns its time in ms
   // and dispatches the "frame" event {ms, scale}.
   draw(scale = 1) {
-    const start = performance.now();
+    return this.frameSteps(scale, 1).next().value;
+  }
+
+  // show()'s full frame, in FULL_FRAME_BANDS bands with the page's tasks between them: a key typed
+  // meanwhile waits for a band, not the whole frame, and a newer show() stops it. Its time in ms,
+  // or null when a newer show() came; a whole frame drawn meanwhile (an orbit) counts as it.
+  async drawInBands(ticket) {
+    const steps = this.frameSteps(1, FULL_FRAME_BANDS);
+    let step = steps.next(); // the first band: the frame's number is taken there
+    const frame = this.frameNumber;
+    while (!step.done) {
+      await new Promise((resolve) => setTimeout(resolve, 0));
+      if (ticket !== this.shows) return null;
+      if (this.frameNumber !== frame) return this.lastFrameMs;
+      step = steps.next();
+    }
+    return step.value;
+  }
+
+  // A frame as `bands` steps (a generator: it yields between bands, returns the frame's ms): the
+  // clear and the background first, then per band of rows the objects and the tone map (up to the
+  // band's last row but one: the edge filter reads the next row, drawn with the next band).
+  *frameSteps(scale, bands) {
+    const frame = (this.frameNumber = (this.frameNumber || 0) + 1);
+    let start = performance.now(), ms = 0;
     const gl = this.gl;
     const width = Math.max(1, Math.round(this.canvas.width * scale));
     const height = Math.max(1, Math.round(this.canvas.height * scale));
@@ -332,26 +366,40 @@ export class MaterialView {
     for (let i = 0; i < cells; i++) {
       const x0 = Math.round((i * width) / cells), x1 = Math.round(((i + 1) * width) / cells);
       const cell = [x0, 0, x1 - x0, height];
-      const camera = this.orbit.camera(this.mesh.lo, this.mesh.hi, cell[2] / cell[3]);
-      cameras.push([cell, camera]);
-      if (this.entries[i]) this.drawObject(this.entries[i], cell, camera);
+      cameras.push([cell, this.orbit.camera(this.mesh.lo, this.mesh.hi, cell[2] / cell[3])]);
     }
+    const entries = this.entries;
     this.drawBackground(cameras);
-    this.drawTonemap(cameras.map(([cell, camera], i) => [cell, this.entries[i] ? this.objectRect(cell, camera) : null]));
-    if (t.ldr) {
-      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, t.ldrFbo);
-      gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
-      gl.blitFramebuffer(0, 0, width, height, 0, 0, this.canvas.width, this.canvas.height, gl.COLOR_BUFFER_BIT, gl.LINEAR);
-      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    const rects = cameras.map(([cell, camera], i) => [cell, entries[i] ? this.objectRect(cell, camera) : null]);
+    let toned = 0;
+    for (let band = 0; band < bands; band++) {
+      const last = band === bands - 1;
+      const rows = [Math.round((band * height) / bands), Math.round(((band + 1) * height) / bands)];
+      cameras.forEach(([cell, camera], i) => entries[i] && this.drawObject(entries[i], cell, camera, rows));
+      const upTo = last ? height : rows[1] - 1;
+      this.drawTonemap(rects, [toned, upTo]);
+      toned = upTo;
+      if (last && t.ldr) {
+        gl.bindFramebuffer(gl.READ_FRAMEBUFFER, t.ldrFbo);
+        gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
+        gl.blitFramebuffer(0, 0, width, height, 0, 0, this.canvas.width, this.canvas.height, gl.COLOR_BUFFER_BIT, gl.LINEAR);
+        gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+      }
+      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4)); // the band is finished
+      ms += performance.now() - start;
+      if (!last) {
+        yield band;
+        start = performance.now();
+      }
     }
-    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4)); // the frame is finished
-    const ms = performance.now() - start;
-    this.costs.set(this.shownKey(), ms / (width * height));
+    this.lastFrameMs = ms;
+    if (frame === this.frameNumber) this.costs.set(this.shownKey(), ms / (width * height));
     this.canvas.dispatchEvent(new CustomEvent("frame", { detail: { ms, scale } }));
     return ms;
   }
 
-  drawObject(entry, cell, camera) {
+  // The object of `entry` into `cell` (only rows [rows[0], rows[1]) when given).
+  drawObject(entry, cell, camera, rows = null) {
     const gl = this.gl;
     const { payload, program } = entry;
     const env = this.environment;
@@ -400,8 +448,13 @@ export class MaterialView {
     if (this.mesh.closed) gl.enable(gl.CULL_FACE);
     else gl.disable(gl.CULL_FACE);
     gl.bindVertexArray(this.vertexArray(program));
+    if (rows) {
+      gl.enable(gl.SCISSOR_TEST);
+      gl.scissor(cell[0], rows[0], cell[2], rows[1] - rows[0]);
+    }
     gl.drawElements(gl.TRIANGLES, this.mesh.count, gl.UNSIGNED_INT, 0);
     gl.bindVertexArray(null);
+    gl.disable(gl.SCISSOR_TEST);
     gl.disable(gl.CULL_FACE);
     gl.disable(gl.DEPTH_TEST);
   }
@@ -432,8 +485,8 @@ export class MaterialView {
 
   // Edge filter, background, exposure, ACES and sRGB as the preview's tonemap() runs them: the
   // whole pass inside each cell's object rectangle, the background alone around it (no rectangle:
-  // the whole cell). `cells`: [[cell, rect or null], ...].
-  drawTonemap(cells) {
+  // the whole cell). `cells`: [[cell, rect or null], ...]; `rows`: only rows [rows[0], rows[1]).
+  drawTonemap(cells, rows = null) {
     const gl = this.gl, t = this.targets;
     gl.bindFramebuffer(gl.FRAMEBUFFER, t.ldrFbo); // null (the canvas) for a full-size frame
     gl.viewport(0, 0, t.width, t.height);
@@ -443,15 +496,18 @@ export class MaterialView {
     gl.bindTexture(gl.TEXTURE_2D, t.background);
     gl.bindVertexArray(this.emptyVao);
     gl.enable(gl.SCISSOR_TEST);
+    const within = (r) => (rows ? inRows(r, rows) : r);
     this.useTonemap(this.tonemapProgram);
     for (const [, rect] of cells) {
-      if (rect === null || rect[2] <= 0 || rect[3] <= 0) continue;
-      gl.scissor(...rect);
+      const part = rect && within(rect);
+      if (!part || part[2] <= 0 || part[3] <= 0) continue;
+      gl.scissor(...part);
       gl.drawArrays(gl.TRIANGLES, 0, 3);
     }
     this.useTonemap(this.backgroundOnlyProgram);
     for (const [cell, rect] of cells) {
-      for (const strip of rect === null ? [cell] : stripsAround(rect, cell)) {
+      for (const strip of (rect === null ? [cell] : stripsAround(rect, cell)).map(within)) {
+        if (strip[2] <= 0 || strip[3] <= 0) continue;
         gl.scissor(...strip);
         gl.drawArrays(gl.TRIANGLES, 0, 3);
       }
