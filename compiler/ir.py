@@ -12,7 +12,7 @@ from typing import Any
 from .conventions import alpha_of
 from .diagnostics import Diagnostic
 from .flake_params import flake_params
-from .formulas import round6_list, rounded
+from .formulas import round6, round6_list, rounded
 from .lexicon import Entry
 from .params import COAT_PARAMS, Params, params_by_model
 from .sheen_colour import sheen_params
@@ -51,7 +51,10 @@ def _params(
     for k in PARAMS_BY_MODEL[base]:
         if k in p:
             value = p[k]
-            if type(value) is not list:
+            kind = type(value)
+            if kind is float:  # most values: rounded()'s first case, without its call
+                out[k] = round6(value)
+            elif kind is not list:
                 out[k] = rounded(value)
             elif noun is not None and noun.data.get(k) is value:  # straight from the lexicon: rounded once
                 out[k] = _noun_list(rounded_optics, noun, k)
