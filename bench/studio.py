@@ -59,14 +59,14 @@ STAGES = (
 #: the server's own timing of an edit (the analysis's `timing`), in the answer's stage
 SERVER_PARTS = ("queued_ms", "analysis_ms", "view_ms", "server_ms")
 #: waits for the edit started after `start` to be on screen; its marks, ms from `start`
-TRACE_JS = """async (start) => {
+TRACE_JS = """async ([start, until]) => {
   const ours = () => performance.getEntriesByType("mark").filter((m) => m.name.startsWith("cnlmc:") && m.startTime >= start);
   for (let i = 0; i < 2400; i++) {
     const changes = ours().filter((m) => m.name === "cnlmc:change");
     if (changes.length) {
       const edit = changes[changes.length - 1].detail.edit;
       const marks = ours().filter((m) => m.detail.edit === edit);
-      if (marks.some((m) => m.name === "cnlmc:shown"))
+      if (marks.some((m) => m.name === "cnlmc:" + until))
         return marks.map((m) => [m.name.slice(6), m.startTime - start, m.detail]);
     }
     await new Promise((resolve) => setTimeout(resolve, 50));
@@ -113,9 +113,9 @@ class StudioPage:
         return traced(page, start)
 
 
-def traced(page: Any, start: float) -> dict[str, Any]:
-    """The edit's stages: mark -> ms from just before the keystroke; `server` the server's timing."""
-    marks = page.evaluate(TRACE_JS, start)
+def traced(page: Any, start: float, until: str = "shown") -> dict[str, Any]:
+    """The edit's stages until mark `until`: mark -> ms from just before the keystroke; `server` the server's timing."""
+    marks = page.evaluate(TRACE_JS, [start, until])
     if marks is None:
         raise RuntimeError("the edit's frame did not reach the screen in 120 s")
     out: dict[str, Any] = {"server": {}, "chars": 0, "quick_scale": 1.0, "quick_ms": 0.0, "full_ms": 0.0}
@@ -151,13 +151,14 @@ def latencies(driver: Any, edits: int, kinds: list[str]) -> dict[str, dict[str, 
         cycle = CYCLES[kind]
         driver.edit(cycle[-1])  # the shader compiled, the page settled
         traces = [driver.edit(cycle[i % len(cycle)]) for i in range(edits)]
-        out[kind] = {"cold": [t["shown"] for t in traces[: len(cycle)]], "warm": traces[len(cycle) :]}
+        out[kind] = {"cold": [on_screen(t)[1] for t in traces[: len(cycle)]], "warm": traces[len(cycle) :]}
     return out
 
 
 def on_screen(trace: dict[str, Any]) -> tuple[float, float]:
     """(first picture of the new material on screen, the full frame on screen), ms from the keystroke."""
-    return float(trace.get("quick-shown", trace["shown"])), float(trace["shown"])
+    full = float(trace.get("shown", float("nan")))
+    return float(trace.get("quick-shown", full)), full
 
 
 def stage_table(measured: dict[str, dict[str, Any]]) -> list[str]:
