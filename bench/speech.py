@@ -95,19 +95,26 @@ def main() -> None:
     parser.add_argument("--no-held-out", action="store_true", help="skip the held-out split")
     parser.add_argument("--speeds", default=",".join(map(str, SPEEDS)), help="words a minute, e.g. 160 (default: all)")
     parser.add_argument("--prior-exponent", type=float, help="override speech.toml's (0: every word alike)")
+    parser.add_argument("--noise-floor-db", type=float, help="override speech.toml's noise floor (0: off)")
     args = parser.parse_args()
     lexicon = lexicon_for()
     t0 = time.perf_counter()
     settings = SpeechSettings.bundled()
     if args.prior_exponent is not None:
         settings = dataclasses.replace(settings, prior_exponent=args.prior_exponent)
+    if args.noise_floor_db is not None:
+        floor = dataclasses.replace(settings.noise_floor, below_speech_db=args.noise_floor_db)
+        settings = dataclasses.replace(settings, noise_floor=floor)
     speeds = tuple(int(s) for s in args.speeds.split(","))
     model = SpeechModel.of(lexicon, (), settings)
     t1 = time.perf_counter()
     recogniser = model.recogniser()
     t2 = time.perf_counter()
     words = len(model.grammar.words_used())
-    print(f"prior exponent {settings.prior_exponent}, British variants {settings.british_variants}, speeds {speeds}")
+    print(
+        f"prior exponent {settings.prior_exponent}, British variants {settings.british_variants}, speeds {speeds}, "
+        f"noise floor {settings.noise_floor.below_speech_db:g} dB under the speech, decoder {settings.decoder}"
+    )
     print(f"grammar: {model.grammar.count} states, {len(model.grammar.transitions)} arcs, {words} words")
     print(f"generate {t1 - t0:.2f} s, load {t2 - t1:.2f} s")
     phrases = Phrases.bundled(full=not args.quick)

@@ -61,40 +61,60 @@ class Votes:
 
 
 class Recogniser:
-    """One pocketsphinx decoder with the grammar loaded; decode() one utterance at a time."""
+    """The grammar loaded in pocketsphinx; decode() one utterance at a time. A first pass searches
+    with the settings' narrow beams (fast); when it reaches no complete phrase, a second pass with
+    the wide beams of `settings.retry` (made on first need) searches the utterance again."""
 
     def __init__(self, grammar: Grammar, dictionary: str, settings: SpeechSettings) -> None:
-        ps = pocketsphinx_module()
         self.settings = settings
+        self.grammar_text = grammar.fsg_text()
+        self.dictionary = dictionary
+        self.decoder, self.fsg = self._loaded(settings.decoder)
+        self.wide: Any = None
+
+    def _loaded(self, search: dict[str, float | bool]) -> tuple[Any, Any]:
+        """A decoder with the grammar and these search settings, and the grammar as it read it."""
+        ps = pocketsphinx_module()
         with tempfile.TemporaryDirectory(prefix="cnlmc-speech-") as folder:
             dict_path = Path(folder) / "words.dict"
             fsg_path = Path(folder) / "cnlmc.fsg"
-            dict_path.write_text(dictionary, "utf-8")
-            fsg_path.write_text(grammar.fsg_text(), "utf-8")  # read back: the reader closes null transitions
+            dict_path.write_text(self.dictionary, "utf-8")
+            fsg_path.write_text(self.grammar_text, "utf-8")  # read back: the reader closes null transitions
             config = ps.Config(
                 hmm=str(model_files().acoustic),
                 dict=str(dict_path),
-                samprate=settings.sample_rate,
+                samprate=self.settings.sample_rate,
                 loglevel="FATAL",
-                **settings.decoder,
+                **search,
             )
-            self.decoder = ps.Decoder(config)
-            self.fsg = self.decoder.read_fsg(str(fsg_path))
-        self.decoder.add_fsg("cnlmc", self.fsg)
-        self.decoder.activate_search("cnlmc")
+            decoder = ps.Decoder(config)
+            fsg = decoder.read_fsg(str(fsg_path))
+        decoder.add_fsg("cnlmc", fsg)
+        decoder.activate_search("cnlmc")
+        return decoder, fsg
 
     def decode(self, samples: bytes) -> Hypothesis | None:
         """16-bit mono PCM at the settings' sample rate -> the hypothesis; None when no complete
-        phrase of the grammar was heard. When the best path ends short of a complete phrase
-        (pocketsphinx then returns a partial one: 'more' for a British 'darker'), the best complete
-        phrase of the n-best list is taken instead."""
-        decoder = self.decoder
+        phrase of the grammar was heard (by either pass). The audio first gets its noise floor
+        (cnlmc.speech.noise_floor)."""
+        samples = self.settings.noise_floor.apply(samples, self.settings.sample_rate)
+        heard = self._search(self.decoder, samples)
+        if heard is None and self.settings.retry:
+            if self.wide is None:
+                self.wide = self._loaded({**self.settings.decoder, **self.settings.retry})[0]
+            heard = self._search(self.wide, samples)
+        return heard
+
+    def _search(self, decoder: Any, samples: bytes) -> Hypothesis | None:
+        """One pass. When the best path ends short of a complete phrase (pocketsphinx then returns
+        a partial one: 'more' for a British 'darker'), the best complete phrase of the n-best list
+        is taken instead."""
         decoder.start_utt()
         decoder.process_raw(samples, no_search=False, full_utt=True)
         decoder.end_utt()
         best = decoder.hyp()
         text = " ".join(best.hypstr.split()) if best is not None else ""
-        votes = self._votes()
+        votes = self._votes(decoder)
         if text and self.fsg.accept(text):
             meaning = self._meaning(text)
             votes.setdefault(meaning, Votes(text, 1))
@@ -104,11 +124,11 @@ class Recogniser:
             return None
         return Hypothesis(votes[meaning].text, *self._ranked(meaning, votes))
 
-    def _votes(self) -> dict[str, Votes]:
+    def _votes(self, decoder: Any) -> dict[str, Votes]:
         """The complete phrases of the first `nbest_paths` n-best paths, best first: meaning -> votes."""
         found: dict[str, Votes] = {}
         try:
-            for entry in itertools.islice(self.decoder.nbest() or (), self.settings.nbest_paths):
+            for entry in itertools.islice(decoder.nbest() or (), self.settings.nbest_paths):
                 text = " ".join((entry.hypstr or "").split())
                 if text and self.fsg.accept(text):
                     votes = found.setdefault(self._meaning(text), Votes(text, 0))

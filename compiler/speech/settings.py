@@ -7,6 +7,8 @@ from dataclasses import dataclass
 from importlib import resources
 from typing import Any
 
+from .noise_floor import NoiseFloor
+
 
 def speech_data(name: str) -> str:
     """The text of a bundled file of stdlib/speech/."""
@@ -35,6 +37,8 @@ class SpeechSettings:
     spellings: tuple[tuple[str, str], ...]
     nbest_paths: int
     decoder: dict[str, float | bool]
+    noise_floor: NoiseFloor
+    retry: dict[str, float | bool]  # the second pass's search settings (empty: no second pass)
 
     def same_spelling(self, one: str, other: str) -> bool:
         """Whether two forms differ only by spelling (British/American: 'aluminium', 'aluminum')."""
@@ -65,7 +69,19 @@ class SpeechSettings:
             nbest_paths=int(recogniser["nbest_paths"]),
             decoder={str(k): v if isinstance(v, bool) else float(v) for k, v in recogniser["decoder"].items()},
             spellings=tuple((str(a), str(b)) for a, b in data["vocabulary"]["spellings"]),
+            noise_floor=_noise_floor(recogniser["noise_floor"]),
+            retry={str(k): float(v) for k, v in recogniser.get("retry", {}).items()},
         )
+
+
+def _noise_floor(table: dict[str, Any]) -> NoiseFloor:
+    return NoiseFloor(
+        below_speech_db=float(table["below_speech_db"]),
+        frame_ms=float(table["frame_ms"]),
+        speech_percentile=float(table["speech_percentile"]),
+        pause_percentile=float(table["pause_percentile"]),
+        seed=int(table["seed"]),
+    )
 
 
 def _spelled(form: str, spellings: tuple[tuple[str, str], ...]) -> str:
