@@ -298,6 +298,8 @@ def material_class(material: dict) -> str:
     model = material["model"]
     if model.get("subsurface"):
         return "translucent"
+    if model["base"] == "glass":  # the goal for glass, frosted glass and water: FLIP <= 0.05
+        return "transparent"
     if model.get("coat"):
         return "coated"
     if model.get("anisotropic"):
