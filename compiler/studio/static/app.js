@@ -9,6 +9,10 @@ import { Editor } from "./editor.js";
 import { Problem, showChips, showExports, showHistory, showMaterials, showNotes, thumbnail } from "./panels.js";
 
 const THUMBNAIL_WAIT_MS = 2000; // our choice: a history thumbnail waits for an idle moment at most this long
+// `fn` when the page is idle (at most THUMBNAIL_WAIT_MS later); a browser without
+// requestIdleCallback (Safari) runs it after the current work
+const whenIdle = (fn) =>
+  window.requestIdleCallback ? requestIdleCallback(fn, { timeout: THUMBNAIL_WAIT_MS }) : setTimeout(fn, 0);
 const $ = (id) => document.getElementById(id);
 const problem = new Problem($("problem"));
 const status = document.body.dataset; // what the page is doing, for people and for the tests
@@ -140,13 +144,13 @@ class Studio {
     const id = this.pendingThumbnail;
     const shown = this.view.shows;
     this.pendingThumbnail = null;
-    requestIdleCallback(() => {
+    whenIdle(() => {
       if (this.view.shows !== shown) return; // another material is on the canvas by now
       const image = thumbnail(this.canvas);
       this.pictures.set(id, image);
       const item = $("history").querySelector(`li[data-step="${id}"] img`);
       if (item) item.src = image;
-    }, { timeout: THUMBNAIL_WAIT_MS });
+    });
   }
 
   async refine(words) {
