@@ -1,22 +1,26 @@
 """The studio's live view in headless Chromium (WebGL2 on SwiftShader): keystroke -> updated frame
-latency, and the frame time at 512x512.
+latency with where it goes, stage by stage, and the frame time at 512x512.
 
     .venv/bin/python bench/studio.py [--edits 12] [--frames 7] [--through studio|view]
+                                     [--kinds untextured,textured,glass] [--no-frame-times] [--chromium-arg=FLAG]
     .venv/bin/python bench/studio.py --sheet docs/studio_view.png   # the browser's frames under the preview's
 
 Latency: through the studio's own page (`cnlmc serve`, the CodeMirror editor, the WebSocket
-edit, the server's compile and `material_payload`, the page's debounce, MaterialView.show and
-its frames) by default; `--through view` (or when `cnlmc serve` does not start) through
-`material_payload` and the view's test page (tests/studio/view_page.html). Each edit replaces
-the phrase with the next of its cycle (one input event, as a paste or an accepted completion);
-the latency is from just before the edit to the "frame" events of the updated picture: the
-view's quick frame (drawn at half the canvas size, stretched) and its full frame. The
-first cycle includes what is made once per content (albedo tables, baked maps, the environment
-prefiltered at a new alpha, a program per shader); `cold` lists it. Goal (issue #17): p99 <= 150 ms
-untextured, <= 400 ms textured.
+edit, the server's compile and `material_payload`, MaterialView.show and its frames) by default;
+`--through view` (or when `cnlmc serve` does not start) through `material_payload` and the view's
+test page (tests/studio/view_page.html). Each edit replaces the phrase with the next of its cycle
+(one input event, as a paste or an accepted completion). The page marks each stage of an edit
+(static/view/trace.js: User Timing marks "cnlmc:<stage>"); the latency runs from just before the
+keystroke (before Playwright's insert) to the frame on screen (the task after the browser's next
+rendering update once it is drawn): the first picture (the quick frame, smaller and stretched,
+when the view draws one) and the full frame. The table under it gives each stage's median and
+the server's own timing of the analysis. The first cycle includes what is made once per content
+(albedo tables, baked maps, the environment prefiltered at a new alpha, a program per shader);
+`cold` lists it. Goal (issue #17): p99 <= 150 ms untextured, <= 400 ms textured.
 
 Frame time: MaterialView.draw() at 512x512 on the view's test page, median of --frames after a
-warm-up, per material. Prints the load average: on a shared machine the numbers are inflated.
+warm-up, per material, against `cnlmc preview`'s frame of the same scene on llvmpipe in this
+process. Prints the load average: on a shared machine the numbers are inflated.
 """
 
 from __future__ import annotations
