@@ -4,8 +4,9 @@ The language's own subcommands are in cnlmc.commands (compile, explain, targets,
 front ends of their areas (build, serve, listen: `FRONT_END_COMMANDS`, listed by name and help);
 a backend's subcommands (bake, sheet, preview, ar) are listed by the registry by name and help.
 Only the subcommand that runs is imported and declares its arguments: a cold `cnlmc compile`
-loads nothing of the others (docs/language.md, Speed). A plugin's subcommand (entry point group
-'cnlmc.commands') is looked up when no other matches.
+loads nothing of the others (docs/language.md, Speed). The modules are imported by main() with
+the cyclic garbage collector paused (they are long-lived objects and no garbage), then frozen.
+A plugin's subcommand (entry point group 'cnlmc.commands') is looked up when no other matches.
 """
 
 from __future__ import annotations
@@ -14,14 +15,12 @@ import argparse
 import sys
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
-from cnlmc.backends.registry import BUILTIN_COMMANDS, Command, TargetUnavailable, get_command, plugin_command
+from .errors import EXIT_INTERNAL, EXIT_OK, EXIT_USAGE, UsageError
 
-from .cache import freeze_long_lived
-from .commands import EXIT_INTERNAL, EXIT_OK, EXIT_USAGE, LANGUAGE_COMMANDS
-from .diagnostics import visible
-from .errors import UsageError
+if TYPE_CHECKING:
+    from cnlmc.backends.registry import Command
 
 __all__ = ["FRONT_END_COMMANDS", "CommandRef", "build_parser", "main"]
 
@@ -76,6 +75,10 @@ def chosen_command(argv: Sequence[str]) -> str | None:
 def build_parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
     """The parser, with the arguments of the subcommand `argv` names (the others are listed by
     name and help only)."""
+    from cnlmc.backends.registry import BUILTIN_COMMANDS, get_command, plugin_command
+
+    from .commands import LANGUAGE_COMMANDS
+
     parser = argparse.ArgumentParser(
         prog="cnlmc",
         description="Compile material phrases such as "
@@ -96,7 +99,11 @@ def build_parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
         if name == chosen:
             with _loading():
                 _add(backend_parser, get_command(name))
-    if chosen is not None and chosen not in _listed():
+    if chosen is not None and chosen not in {
+        *(c.name for c in LANGUAGE_COMMANDS),
+        *_front_end_names(),
+        *BUILTIN_COMMANDS,
+    }:
         with _loading():
             plugin = plugin_command(chosen)
         if plugin is not None:
@@ -104,8 +111,8 @@ def build_parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
     return parser
 
 
-def _listed() -> set[str]:
-    return {c.name for c in LANGUAGE_COMMANDS} | {r.name for r in FRONT_END_COMMANDS} | set(BUILTIN_COMMANDS)
+def _front_end_names() -> set[str]:
+    return {r.name for r in FRONT_END_COMMANDS}
 
 
 def _add(parser: argparse.ArgumentParser, command: Command) -> None:
@@ -116,6 +123,8 @@ def _add(parser: argparse.ArgumentParser, command: Command) -> None:
 @contextmanager
 def _loading() -> Iterator[None]:
     """A backend command that cannot load here is a usage error (which extra to install)."""
+    from cnlmc.backends.registry import TargetUnavailable
+
     try:
         yield
     except TargetUnavailable as exc:
@@ -125,11 +134,16 @@ def _loading() -> Iterator[None]:
 def main(argv: Sequence[str] | None = None) -> int:
     arguments = sys.argv[1:] if argv is None else list(argv)
     try:
-        args = build_parser(arguments).parse_args(arguments)
-        freeze_long_lived()  # a long-running entry point: what is loaded so far stays out of the GC's way
+        from .cache import collection_paused, freeze_long_lived
+
+        with collection_paused():  # the modules the command needs and its parser: long-lived, no garbage
+            args = build_parser(arguments).parse_args(arguments)
+            freeze_long_lived()  # a long-running entry point: what is loaded so far stays out of the GC's way
         code: int = args.handler(args)
         return code
     except UsageError as exc:
+        from .diagnostics import visible
+
         print(f"cnlmc: error: {visible(str(exc))}", file=sys.stderr)  # it may echo a file name
         return EXIT_USAGE
     except KeyboardInterrupt:
@@ -137,6 +151,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     except BrokenPipeError:
         return EXIT_OK
     except Exception as exc:  # the last line of defence: never a traceback
+        from .diagnostics import visible
+
         print(
             f"cnlmc: internal error: {type(exc).__name__}: {visible(str(exc))}\nplease report this with the input that caused it",
             file=sys.stderr,

@@ -30,6 +30,10 @@ from cnlmc.backends.registry import (
 from .api import Result, compile_source, compile_stream, cyclic_gc_paused, lexicon_for
 from .diagnostics import Diagnostic, has_errors, render_all, visible
 from .document import parse_document
+from .errors import EXIT_ERRORS as EXIT_ERRORS  # the exit codes, as the commands of every area import them
+from .errors import EXIT_INTERNAL as EXIT_INTERNAL
+from .errors import EXIT_OK as EXIT_OK
+from .errors import EXIT_USAGE as EXIT_USAGE
 from .errors import UsageError
 from .inputs import DEFAULT_MAX_BYTES, input_name, read_text
 from .ir import terminal_safe
@@ -42,7 +46,6 @@ if TYPE_CHECKING:
 # Imported where they are used, not here: a cold `cnlmc compile` to standard output needs none of
 # them (cnlmc.output and its locks and signal handling, explain, the lexicon's schema checks, tempfile).
 
-EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 STAGES = ("tokens", "ast", "ir")
 STDOUT = "-"  # `-o -`: standard output, as without -o (a file named '-' is `-o ./-`)
 
