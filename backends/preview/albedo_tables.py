@@ -38,7 +38,7 @@ from cnlmc.bsdf.flakes import albedo_flaked as albedo  # a paint's flakes are in
 from cnlmc.cache import cached
 from cnlmc.material import RGB, Material
 
-from . import kernel_fit
+from . import flake_tables, kernel_fit
 from .flake_tables import coated_flakes, flake_sections
 from .kernel_fit import FIT_ALPHA, kernels
 
@@ -129,7 +129,9 @@ def _tables(material: Material, fresnel: str, multiscatter: bool, mapped: bool) 
     and of this module): a mapped material's 8 rows take a few seconds."""
     inputs = json.dumps([_table_key(material), fresnel, multiscatter, mapped, MU_SIZE, ROWS, SAMPLES, SECTIONS])
     kind = "albedo-tables-" + hashlib.sha256(inputs.encode()).hexdigest()[:20]
-    sources = [Path(__file__), Path(kernel_fit.__file__)] + sorted(BSDF_SOURCES.glob("*.py"))
+    sources = [Path(__file__), Path(kernel_fit.__file__), Path(flake_tables.__file__)] + sorted(
+        BSDF_SOURCES.glob("*.py")
+    )
     tables: Tables = cached(
         kind, sources, lambda: _integrate(material, fresnel, multiscatter, mapped), _dump_tables, _load_tables
     )
