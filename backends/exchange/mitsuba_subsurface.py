@@ -8,11 +8,18 @@ reflectance in [0, 1]) and `scale` = that channel × METRES_PER_UNIT (σ per met
 METRES_PER_UNIT metres). The scene then uses `volpathmis` (spectral MIS: Mitsuba's `volpath` is biased dark for a chromatic medium, 0.69 instead of 1 in blue in a white furnace; volpathmis 0.96-1.02). This is exact: a path tracer of
 the medium the IR names.
 
-`thin`: Mitsuba 3 has no thin translucent slab BSDF, so the sheet is a `blendbsdf` of a two-sided
-`diffuse` of base_color (the front the eye sees) and a pure diffuse transmitter (`principledthin`,
-diff_trans 2) of the Kubelka–Munk slab's transmittance T at the IR's thickness
-(cnlmc.bsdf.subsurface.slab). This is an approximation (diffuse in, diffuse out: no forward peak
-through the sheet, no specular lobe).
+`thin`: Mitsuba 3 has no thin translucent slab BSDF and no layering, so the sheet is a `blendbsdf`
+of weight w = max T (T the Kubelka–Munk slab's transmittance at the IR's thickness,
+cnlmc.bsdf.subsurface.slab): (1 - w) a two-sided `roughplastic` (`plastic` when smooth) of the IR's
+IOR and alpha over the diffuse base_color — the waxy cuticle on both faces: GGX interface
+reflection, the diffuse base under it sees only what the interface lets in (Mitsuba's
+(1 - F)(1 - F) with internal re-reflection; the colour scaled to the IR's diffuse energy as for a
+plastic) — and w a pure diffuse transmitter (`principledthin`, diff_trans 2) of colour T / w.
+The blend gives the cuticle weight 1 - w, so its `specular_reflectance` is 1 / (1 - w) (the
+interface at full strength), bounded so that the cuticle alone returns at most 1 at every incidence
+(`interface_boost`): the sheet then returns (1 - w) x at most 1 + T <= 1 (white furnace <= 1). Limits
+of a convex blend (Mitsuba 3 has no layered BSDF): the light through is not Fresnel-attenuated, and
+where the bound binds the interface is weaker than the IR's.
 """
 
 from __future__ import annotations
@@ -22,10 +29,11 @@ from typing import Any
 import numpy as np
 
 from cnlmc.bsdf.subsurface import medium_of, slab
+from cnlmc.bsdf.transmission import interface_albedo
 from cnlmc.conventions import ALPHA_MIRROR
 from cnlmc.material import Material
 
-from .conversions import alpha_pair, rounded
+from .conversions import alpha_pair, diffuse_colour, roughplastic_diffuse_energy, rounded
 
 Prop = dict[str, Any]
 #: our choice: a preview sphere of radius 1 unit is a 10 cm ball (a candle, an apple, a teapot's
@@ -35,6 +43,11 @@ METRES_PER_UNIT = 0.05
 #: them per path (wax 200, marble 300, cream 20 000): a scene with a medium renders to any depth (-1;
 #: Russian roulette ends the paths), unbiased; `mitsuba scene.xml -D max_depth=N` caps it (darker)
 VOLUME_MAX_DEPTH = -1
+#: our choice: the margin for a diffuse base's reflectance at normal incidence over its hemispherical
+#: mean (the interface's (1 - F) entry factor peaks there), in the bound on the sheet's interface boost
+DIFFUSE_PEAK = 1.1
+#: the incidences (cos theta) at which the interface's reflectance is found for that bound, to grazing
+BOOST_MUS = np.linspace(0.01, 1.0, 25)
 
 
 def _prop(kind: str, name: str, value: Any) -> Prop:
@@ -93,23 +106,63 @@ def sheet_transmittance(material: Material) -> list[float]:
     return [float(v) for v in np.clip(transmittance, 0.0, 1.0)]
 
 
-def thin_bsdf(material: Material) -> Prop:
-    """blendbsdf: weight w = max T; (1 - w) a two-sided diffuse of base_color (the front the eye sees),
-    w a pure diffuse transmitter (principledthin, diff_trans 2) of colour T / w: it reflects
-    (1 - w) base_color and transmits T, at most 1 in every channel (T <= w)."""
-    transmittance = sheet_transmittance(material)
-    weight = max(max(transmittance), 1e-6)
-    front = _node("diffuse", [_prop("rgb", "reflectance", rounded(np.clip(material.params.base_color, 0.0, 1.0)))])
-    through = _node(
+def cuticle_bsdf(material: Material, weight: float) -> Prop:
+    """The sheet's faces: the IR's interface (IOR, alpha) over the diffuse base_color, a
+    `roughplastic` (`plastic` when smooth) whose diffuse energy is the IR's (as mitsuba.plastic_bsdf),
+    its interface boosted for the blend's weight 1 - `weight` (`interface_boost`)."""
+    params = material.params
+    alpha = float(max(alpha_pair(params)))
+    smooth = alpha < ALPHA_MIRROR
+    energy = plastic_diffuse_energy(float(params.ior), 0.0 if smooth else alpha)
+    base = np.clip(diffuse_colour(material, energy), 0.0, 1.0)
+    boost = interface_boost(float(params.ior), 0.0 if smooth else alpha, float(base.max()) * energy, weight)
+    props = [
+        _prop("float", "int_ior", params.ior),
+        _prop("float", "ext_ior", 1.0),
+        _prop("rgb", "diffuse_reflectance", rounded(base)),
+        _prop("float", "specular_reflectance", boost),
+    ]
+    if smooth:
+        return _node("plastic", props)
+    return _node("roughplastic", [_prop("string", "distribution", "ggx"), _prop("float", "alpha", alpha), *props])
+
+
+def interface_boost(ior: float, alpha: float, diffuse: float, weight: float) -> float:
+    """roughplastic's specular_reflectance in the sheet's blend: 1 / (1 - w), so that the interface
+    reflects at full strength though the blend gives the cuticle weight 1 - w; at most what keeps the
+    cuticle at or under 1 at every incidence, (1 - DIFFUSE_PEAK x its diffuse energy `diffuse`) / the
+    interface's largest reflectance (Mitsuba's separable Smith G), and at least 1. Then the sheet
+    returns (1 - w) x at most 1 + T <= 1 per channel (T <= w)."""
+    reflected, _ = interface_albedo(BOOST_MUS, ior, max(alpha, ALPHA_MIRROR), n=256, g2="separable")
+    bound = max(1.0 - DIFFUSE_PEAK * diffuse, 0.0) / max(float(np.max(reflected)), 1e-6)
+    return max(1.0, min(1.0 / max(1.0 - weight, 1e-6), bound))
+
+
+def plastic_diffuse_energy(ior: float, alpha: float) -> float:
+    """roughplastic's hemispherical diffuse energy per unit colour (a smooth plastic as alpha 1e-3)."""
+    return roughplastic_diffuse_energy(ior, max(alpha, 1e-3))
+
+
+def transmitter_bsdf(colour: list[float], ior: float) -> Prop:
+    """A pure diffuse transmitter: principledthin with all of its diffuse share transmitted."""
+    return _node(
         "principledthin",
         [
-            _prop("rgb", "base_color", rounded([t / weight for t in transmittance])),
+            _prop("rgb", "base_color", rounded(colour)),
             _prop("float", "diff_trans", 2.0),
             _prop("float", "spec_trans", 0.0),
             _prop("float", "roughness", 1.0),
-            _prop("float", "eta", material.params.ior),
+            _prop("float", "eta", ior),
         ],
     )
+
+
+def thin_bsdf(material: Material) -> Prop:
+    """blendbsdf: weight w = max T; (1 - w) the two-sided cuticle (interface over base_color),
+    w a diffuse transmitter of colour T / w: it transmits T, at most 1 in every channel (T <= w)."""
+    transmittance = sheet_transmittance(material)
+    weight = max(max(transmittance), 1e-6)
+    through = transmitter_bsdf([t / weight for t in transmittance], float(material.params.ior))
     blend = _node("blendbsdf", [_prop("float", "weight", weight)])
-    blend["children"] = [{**_node("twosided", []), "children": [front]}, through]
+    blend["children"] = [{**_node("twosided", []), "children": [cuticle_bsdf(material, weight)]}, through]
     return blend
