@@ -111,6 +111,13 @@ def build_parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
     return parser
 
 
+def _language_command_names() -> set[str]:
+    """The language's own subcommands: their extension modules (if any) load after the freeze."""
+    from .commands import LANGUAGE_COMMANDS
+
+    return {c.name for c in LANGUAGE_COMMANDS} | _front_end_names()
+
+
 def _front_end_names() -> set[str]:
     return {r.name for r in FRONT_END_COMMANDS}
 
@@ -138,7 +145,9 @@ def main(argv: Sequence[str] | None = None) -> int:
 
         with collection_paused():  # the modules the command needs and its parser: long-lived, no garbage
             args = build_parser(arguments).parse_args(arguments)
-            freeze_long_lived()  # a long-running entry point: what is loaded so far stays out of the GC's way
+            # a long-running entry point: what is loaded so far stays out of the GC's way; a backend's or
+            # a plugin's command has loaded its extension modules by now (they see their objects freed at exit)
+            freeze_long_lived(unfreeze_at_exit=chosen_command(arguments) not in _language_command_names())
         code: int = args.handler(args)
         return code
     except UsageError as exc:
