@@ -42,6 +42,7 @@ from .conversions import (
     roughplastic_diffuse_energy,
     roughplastic_diffuse_scale,
     rounded,
+    with_base_color,
 )
 from .mitsuba_subsurface import VOLUME_MAX_DEPTH, medium_entry, subsurface_bsdf
 from .naming import MaterialIdents, described, xml_text
@@ -200,10 +201,15 @@ def roughplastic_interface(material: Material) -> tuple[float, float] | None:
 
 
 def diffuse_scale(material: Material) -> list[float] | None:
-    """roughplastic: what a baked colour map is multiplied by so that its diffuse energy is the IR's
-    (conversions.roughplastic_diffuse_scale); None for the other plugins."""
+    """What a baked colour map is multiplied by so that its diffuse energy is the IR's: roughplastic
+    (conversions.roughplastic_diffuse_scale), an Oren-Nayar lobe drawn as Lambert (the lobe's
+    hemispherical albedo per unit colour, as the constant colour gets); None for the other plugins."""
     interface = roughplastic_interface(material)
-    return None if interface is None else roughplastic_diffuse_scale(material, *interface)
+    if interface is not None:
+        return roughplastic_diffuse_scale(material, *interface)
+    if plugin_for(material) == "diffuse" and material.model.diffuse == "oren_nayar":
+        return hemispherical_albedo(with_base_color(material, 1.0))
+    return None
 
 
 def diffuse_reflectance(material: Material, tex: BsdfTextures) -> Prop:
