@@ -225,7 +225,9 @@ def plot(rows: list[dict], size: int, ref_spp: int, path: Path) -> None:
     ax.axvline(GOAL_MS, color="black", lw=0.8, ls="-.", label="30 fps")
     ax.set_xscale("log")
     ax.set_ylim(bottom=0)
-    ax.set_xlabel(f"ms per {TIMING_SIZE}² frame, log (llvmpipe, loaded machine; Mitsuba llvm, 1 spp measured x spp)")
+    ax.set_xlabel(
+        f"ms per {TIMING_SIZE}² frame, log (llvmpipe; Mitsuba llvm, 1 spp measured x spp; load: docs/subsurface.md)"
+    )
     ax.set_ylabel(f"FLIP mean vs Mitsuba volumetric reference ({ref_spp} spp, {size}²)")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8, loc="upper right")
@@ -238,8 +240,8 @@ def plot(rows: list[dict], size: int, ref_spp: int, path: Path) -> None:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--size", type=int, default=64)
-    parser.add_argument("--ref-spp", type=int, default=256)
+    parser.add_argument("--size", type=int, default=64, help="FLIP image size (with --from-csv: the label only)")
+    parser.add_argument("--ref-spp", type=int, default=256, help="reference spp (with --from-csv: the label only)")
     parser.add_argument("--from-csv", action="store_true", help="re-plot docs/preview_chart_translucent.csv")
     parser.add_argument("--only", nargs="*", help="these materials (labels) only")
     parser.add_argument("--retime", action="store_true", help="with --from-csv: time the preview tiers again")
