@@ -6,16 +6,19 @@ const MAX_MARKS = 600; // our choice: ~40 edits' worth of stages, far more than 
 export class Trace {
   constructor() {
     this.kept = 0;
+    this.edit = null;
   }
 
   // Mark `stage` of edit number `edit` now, or at `startTime` (a performance.now() taken earlier);
   // `more`: what else the mark's detail holds. No edit number (a redraw no edit asked for): no mark.
   mark(stage, edit, { startTime = undefined, ...more } = {}) {
     if (edit === undefined || edit === null) return;
-    if (++this.kept > MAX_MARKS) {
-      performance.clearMarks();
-      this.kept = 1;
+    if (edit !== this.edit && this.kept >= MAX_MARKS) {
+      performance.clearMarks(); // only when a new edit begins: an edit's own marks stay together
+      this.kept = 0;
     }
+    this.edit = edit;
+    this.kept++;
     const detail = { edit, ...more };
     performance.mark(`cnlmc:${stage}`, startTime === undefined ? { detail } : { detail, startTime });
   }
