@@ -2,9 +2,7 @@
 
 from __future__ import annotations
 
-import gc
 from collections.abc import Iterable, Iterator, Mapping
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
@@ -12,6 +10,7 @@ from typing import Any
 
 from . import ast
 from .analyze import analyze, iter_material_irs, sort_diagnostics, to_ir
+from .cache import collection_paused
 from .diagnostics import Diagnostic, has_errors, render_all
 from .document import parse_document
 from .ir import document_head, document_ir
@@ -21,6 +20,10 @@ from .state import Context, MaterialState
 from .workers import worker_count
 
 JSONDict = dict[str, Any]
+
+#: the cyclic GC off while a document compiles: its many small containers live to the end and
+#: make no cycles worth collecting (reference counting frees the rest)
+cyclic_gc_paused = collection_paused
 
 
 def lexicon_for(specs: Iterable[str | Path] = ()) -> Lexicon:
@@ -56,23 +59,6 @@ class Result:
     def materials(self) -> list[JSONDict]:
         materials: list[JSONDict] = self.ir["materials"]
         return materials
-
-
-@contextmanager
-def cyclic_gc_paused() -> Iterator[None]:
-    """The cyclic garbage collector off while a document is compiled (and back on after, if it was).
-
-    Compiling makes several small containers per word that all live until the end; each
-    collection would traverse every one of them again, which made a 10k-line file several times
-    slower. Compiling makes no reference cycles worth collecting (reference counting frees the rest).
-    """
-    was_enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if was_enabled:
-            gc.enable()
 
 
 def compile_source(
