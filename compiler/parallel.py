@@ -21,6 +21,7 @@ otherwise (or with CNLMC_WORKERS=1) the document is compiled in this process.
 
 from __future__ import annotations
 
+import contextlib
 import multiprocessing
 import pickle
 import queue
@@ -238,6 +239,10 @@ class _Outbox:
                 self.pipe.send(result)
             except OSError:  # the parent has gone or stopped reading
                 self.broken = True
+            except Exception as exc:  # a result that cannot be sent: the parent is told, and no more is sent
+                self.broken = True
+                with contextlib.suppress(Exception):
+                    self.pipe.send(_sendable(exc))
 
 
 _DONE = object()  # the end of a worker's results

@@ -10,6 +10,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from cnlmc.analyze import analyze, iter_material_irs, sort_diagnostics, to_ir
 from cnlmc.api import compile_source, cyclic_gc_paused, lexicon_for
 from cnlmc.document import parse_document
@@ -338,3 +340,14 @@ def test_materials_from_workers_read_as_the_ir_objects():
         materials = list(parallel_material_irs(source, Context(lexicon_for(), filename="big.cnl"), [], 2, 7))
     assert all(isinstance(m, EncodedMaterial) for m in materials)
     assert [dict(m) for m in materials] == compile_source(source, "big.cnl").ir["materials"]
+
+
+def test_a_result_a_worker_cannot_send_is_an_error_not_a_hang(monkeypatch):
+    """A chunk's result that cannot be pickled reaches the parent as an error (the worker's
+    sending thread must not die silently, leaving the parent waiting for ever)."""
+    from cnlmc import parallel
+
+    monkeypatch.setattr(parallel, "chunk_events", lambda *args, **kwargs: [lambda: 0])  # not picklable
+    diags: list = []
+    with pytest.raises(Exception, match="pickle|lambda"):
+        list(parallel.parallel_material_irs(mixed_source(60), Context(lexicon_for()), diags, 2, 10))
