@@ -95,6 +95,10 @@ class Entry:
     def __setattr__(self, name: str, value: Any) -> None:
         raise FrozenInstanceError(f"cannot assign to field '{name}'")
 
+    def __reduce__(self) -> tuple[type[Entry], tuple[str, str, dict[str, Any], str]]:
+        """Pickled and copied as a plain entry (its fields decoded, never the stored form)."""
+        return (Entry, (self.category, self.key, self.data, self.origin))
+
     def __delattr__(self, name: str) -> None:
         raise FrozenInstanceError(f"cannot delete field '{name}'")
 

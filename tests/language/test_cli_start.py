@@ -178,3 +178,18 @@ def test_a_stored_form_that_names_no_entry_is_refused_when_looked_up():
     assert stored.lookup(("steel",))
     with pytest.raises(CacheDamaged, match="names no entry"):
         stored.lookup(("oak",))
+
+
+def test_entries_and_results_copy_and_pickle_as_plain_data():
+    """An entry read from the stored form pickles and copies as a plain entry (its fields decoded),
+    so a compile result can be deep-copied or sent to another process."""
+    import copy
+    import pickle
+
+    from cnlmc.api import compile_source, lexicon_for
+
+    entry = lexicon_for().require("nouns", "oak")
+    for twin in (copy.copy(entry), copy.deepcopy(entry), pickle.loads(pickle.dumps(entry))):
+        assert twin == entry and twin.data == entry.data and twin.origin == entry.origin
+    result = compile_source("white varnished oak\n")
+    assert copy.deepcopy(result).ir == result.ir
