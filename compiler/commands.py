@@ -257,6 +257,8 @@ def _to_stdout(write: Callable[[BinaryIO], None]) -> None:
             spool.flush()
         except OSError as exc:
             raise _spool_error(exc) from None
+        if sys.stdout is None:  # started with standard output closed (`>&-`)
+            raise UsageError("cannot write to standard output: it is closed; give -o FILE")
         try:
             sys.stdout.flush()
             spool.copy_to(sys.stdout.buffer)

@@ -351,3 +351,12 @@ def test_a_result_a_worker_cannot_send_is_an_error_not_a_hang(monkeypatch):
     diags: list = []
     with pytest.raises(Exception, match="pickle|lambda"):
         list(parallel.parallel_material_irs(mixed_source(60), Context(lexicon_for()), diags, 2, 10))
+
+
+def test_standard_output_closed_is_a_clear_usage_error():
+    """`cnlmc compile - >&-` (fd 1 closed): exit 2 and a sentence, never an internal error."""
+    command = f"echo 'white varnished oak' | '{sys.executable}' -m cnlmc compile - >&-"
+    result = subprocess.run(["bash", "-c", command], stderr=subprocess.PIPE, text=True)
+    assert result.returncode == 2, result.stderr
+    assert "cannot write to standard output: it is closed" in result.stderr
+    assert "internal error" not in result.stderr and "Traceback" not in result.stderr
