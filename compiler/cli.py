@@ -138,6 +138,19 @@ def _loading() -> Iterator[None]:
         raise UsageError(str(exc)) from None
 
 
+#: the commands whose `-o -` is standard output (the rest write images, folders or packages)
+STDOUT_COMMANDS = ("compile", "listen")
+
+
+def _check_stdout_output(args: argparse.Namespace, command: str | None) -> None:
+    """`-o -` where a command cannot write to standard output: a usage error, never a file named '-'."""
+    if getattr(args, "output", None) == "-" and command not in STDOUT_COMMANDS:
+        raise UsageError(
+            f"-o - (standard output) is for `cnlmc compile`; `cnlmc {command}` writes files: "
+            "give -o FILE or -o FOLDER (a file named '-' is -o ./-)"
+        )
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     arguments = sys.argv[1:] if argv is None else list(argv)
     try:
@@ -148,6 +161,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             # a long-running entry point: what is loaded so far stays out of the GC's way; a backend's or
             # a plugin's command has loaded its extension modules by now (they see their objects freed at exit)
             freeze_long_lived(unfreeze_at_exit=chosen_command(arguments) not in _language_command_names())
+        _check_stdout_output(args, chosen_command(arguments))
         code: int = args.handler(args)
         return code
     except UsageError as exc:

@@ -193,3 +193,13 @@ def test_entries_and_results_copy_and_pickle_as_plain_data():
         assert twin == entry and twin.data == entry.data and twin.origin == entry.origin
     result = compile_source("white varnished oak\n")
     assert copy.deepcopy(result).ir == result.ir
+
+
+@pytest.mark.parametrize("command", ["preview", "bake"])
+def test_o_dash_on_a_command_that_writes_files_is_a_usage_error(tmp_path, command):
+    """`-o -` is standard output only for compile (and listen); elsewhere it never makes a file named '-'."""
+    (tmp_path / "a.cnl").write_text("white varnished oak\n", encoding="utf-8")
+    result = run_cnlmc(command, "a.cnl", "-o", "-", cwd=tmp_path)
+    assert result.returncode == 2, result.stderr
+    assert f"`cnlmc {command}` writes files" in result.stderr and "Traceback" not in result.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.cnl"]
