@@ -315,8 +315,8 @@ def from_stored(payload: bytes) -> Lexicon:
     index = StoredIndex(
         _table(head["forms"]),  # each form's entry numbers are checked when it is looked up
         order,
-        {first: frozenset(_list(seconds)) for first, seconds in _table(head["followers"]).items()},
-        {first: tuple(_list(lengths)) for first, lengths in _table(head["lengths"]).items()},
+        {first: frozenset(map(_text, _list(seconds))) for first, seconds in _table(head["followers"]).items()},
+        {first: tuple(map(_whole_number, _list(lengths))) for first, lengths in _table(head["lengths"]).items()},
         _whole_number(head["max_form_words"]),
     )
     inflections = [(_text(s), _text(r)) for s, r in head["inflections"]]

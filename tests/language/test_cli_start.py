@@ -121,6 +121,12 @@ def test_a_malformed_stored_lexicon_is_refused_so_the_cache_rebuilds_it():
     for bad in (b"{}", head, payload.replace(b'"max_form_words":', b'"max_form_words":-', 1), b"[]\n" + body):
         with pytest.raises((ValueError, TypeError, KeyError, IndexError)):
             from_stored(bad)
+    table = json.loads(head)
+    for part, forged in (("lengths", ["x"]), ("followers", [1])):  # ill-typed derived data: refused at load
+        first = next(iter(table[part]))
+        wrong = json.dumps({**table, part: {**table[part], first: forged}}, separators=(",", ":")).encode()
+        with pytest.raises((ValueError, TypeError)):
+            from_stored(wrong + b"\n" + body)
 
 
 @pytest.mark.parametrize("target", ["ir", "glsl"])
