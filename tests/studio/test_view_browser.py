@@ -155,6 +155,18 @@ def test_variants_mesh_environment_exposure(view_page: tuple[Any, PageLog]) -> N
     assert abs(page.evaluate(choose, [1e-3, 0.5]) - (40 / 262.144) ** 0.5) < 1e-6  # 262 ms: 40 ms at 0.39
     assert page.evaluate(choose, [1e-2, 0.5]) == 0.25  # 2.6 s: at the smallest (128x128)
     assert page.evaluate(choose, [1e-3, None]) == 1  # quickScale null: the full frame only
+    # and show() follows it: a material whose full frame costs 262 ms gets a quick frame at 0.39 of the
+    # canvas first, then the full frame
+    scales = page.evaluate("""async () => {
+        const payload = await (await fetch("/payload?phrase=velvet")).json();
+        await window.view.show(payload);  // its key is the shown one now
+        const pixels = window.view.canvas.width * window.view.canvas.height;
+        window.view.costs.set(window.view.shownKey(), 262.144 / pixels);
+        window.frames_seen = [];
+        await window.view.show(payload);
+        return window.frames_seen.map((f) => f.scale);
+    }""")
+    assert len(scales) == 2 and abs(scales[0] - (40 / 262.144) ** 0.5) < 1e-6 and scales[1] == 1, scales
 
 
 def test_no_console_errors(view_page: tuple[Any, PageLog]) -> None:
