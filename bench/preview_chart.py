@@ -143,6 +143,7 @@ def run(
     skip: int = 0,
     curves: bool = True,
     only: int | None = None,
+    glass: str = "all",
 ) -> list[dict]:
     """Measure every chart material. `times_from` (a previous chart's CSV): measure only the
     errors of the tiers against the reference, and take the frame times, Mitsuba's spp curve and
@@ -160,6 +161,8 @@ def run(
         mats = dict(reversed(list(mats.items())))
     if quick:
         mats = {k: v for i, (k, v) in enumerate(mats.items()) if i % 6 == 0 or ":" in k}
+    if glass != "all":  # a part for the glass rows alone, or all but them (--glass; then --merge)
+        mats = {k: v for k, v in mats.items() if (v["model"]["base"] == "glass") == (glass == "only")}
     with open(out_csv, "w", newline="") as f:
         writer = csv.DictWriter(f, FIELDS)
         writer.writeheader()
@@ -545,6 +548,9 @@ def main(argv=None) -> int:
     parser.add_argument(
         "--skip", type=int, default=0, help="leave out the first SKIP materials (another part has them)"
     )
+    parser.add_argument(
+        "--glass", choices=("all", "only", "none"), default="all", help="measure only the glass rows, or all but them"
+    )
     parser.add_argument("--merge", type=Path, nargs="+", default=None, help="merge part CSVs into docs/ and plot")
     args = parser.parse_args(argv)
     if args.translucent:
@@ -579,6 +585,7 @@ def main(argv=None) -> int:
         args.skip,
         not args.no_curves,
         args.only,
+        args.glass,
     )
     if args.csv is not None:  # a part: --merge plots the whole
         return 0
