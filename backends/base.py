@@ -209,6 +209,8 @@ class Command:
 
     name: ClassVar[str]
     help: ClassVar[str]
+    #: whether `-o -` is standard output (the CLI refuses `-o -` for a command that writes files)
+    writes_stdout: ClassVar[bool] = False
 
     def add_arguments(self, parser: argparse.ArgumentParser) -> None:
         """Declare the subcommand's arguments on its own subparser."""

@@ -33,6 +33,7 @@ __all__ = [
     "UnknownTarget",
     "available",
     "get_command",
+    "load_command",
     "get_target",
     "plugin_command",
 ]
@@ -51,11 +52,12 @@ BUILTIN_BACKENDS = {
 
 
 class CommandEntry(NamedTuple):
-    """A CLI subcommand a backend brings: the backend (also the pip extra that installs what it
-    needs), where its Command class is, and its one-line help.
+    """A CLI subcommand listed without importing it: the pip extra that installs what it needs
+    (for a backend's command, the backend), where its Command class is, and its one-line help —
+    the one place the help is written (the class reads it from here).
     (A NamedTuple, not a dataclass: the CLI imports this module on every start.)"""
 
-    target: str
+    extra: str
     module: str
     cls: str
     help: str
@@ -127,8 +129,13 @@ def get_target(name: str) -> Target:
 
 def get_command(name: str) -> Command:
     """A fresh Command object for `cnlmc NAME`; TargetUnavailable when its backend cannot load."""
-    entry = BUILTIN_COMMANDS[name]
-    module = _import(entry.module, f"'cnlmc {name}'", entry.target)
+    return load_command(name, BUILTIN_COMMANDS[name])
+
+
+def load_command(name: str, entry: CommandEntry) -> Command:
+    """A fresh Command object from a listed entry (imports its module); TargetUnavailable when what
+    it needs is not installed."""
+    module = _import(entry.module, f"'cnlmc {name}'", entry.extra)
     command: Command = getattr(module, entry.cls)()
     return command
 

@@ -1,8 +1,9 @@
 """The `cnlmc` command line. Exit codes: 0 ok, 1 compile errors, 2 usage, 70 internal error.
 
 The language's own subcommands are in cnlmc.commands (compile, explain, targets, lsp) and in the
-front ends of their areas (build, serve, listen: `FRONT_END_COMMANDS`, listed by name and help);
-a backend's subcommands (bake, sheet, preview, ar) are listed by the registry by name and help.
+front ends of their areas (build, serve, listen: `FRONT_END_COMMANDS`); a backend's subcommands
+(bake, sheet, preview, ar) are listed by the registry (`BUILTIN_COMMANDS`): both tables list a
+command by name, module, class and help, in the same form, and load it only when it is chosen.
 Only the subcommand that runs is imported and declares its arguments: a cold `cnlmc compile`
 loads nothing of the others (docs/language.md, Speed). The modules are imported by main() with
 the cyclic garbage collector paused (they are long-lived objects and no garbage), then frozen.
@@ -13,58 +14,42 @@ from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
-from typing import TYPE_CHECKING, NamedTuple
+from typing import TYPE_CHECKING
+
+from cnlmc.backends.registry import CommandEntry
 
 from .errors import EXIT_INTERNAL, EXIT_OK, EXIT_USAGE, UsageError
 
 if TYPE_CHECKING:
     from cnlmc.backends.registry import Command
 
-__all__ = ["FRONT_END_COMMANDS", "CommandRef", "build_parser", "main"]
+__all__ = ["FRONT_END_COMMANDS", "build_parser", "main"]
 
 
-def _build() -> Command:
-    from .batch.command import BuildCommand  # cnlmc.batch: catalogues to targets (#20)
-
-    return BuildCommand()
-
-
-def _serve() -> Command:
-    from .studio.command import ServeCommand  # cnlmc.studio: the web studio (#17); aiohttp loads when it runs
-
-    return ServeCommand()
-
-
-def _listen() -> Command:
-    from .speech.command import ListenCommand  # cnlmc.speech (#18); pocketsphinx loads when it runs
-
-    return ListenCommand()
-
-
-class CommandRef(NamedTuple):
-    """A language subcommand that lives in its area's front end: its name and help for the
-    parser's list, and how to make it (imports its module). tests/language/test_cli_start.py
-    checks that each name and help is what the command itself says."""
-
-    name: str
-    help: str
-    make: Callable[[], Command]
-
-
-#: After cnlmc.commands' own, in the order `cnlmc --help` lists them (backends' commands follow).
-FRONT_END_COMMANDS: tuple[CommandRef, ...] = (
-    CommandRef(
-        "build", "build every material of a catalogue to targets, incrementally, in parallel (or on Dask)", _build
+#: The front ends of the language's areas, after cnlmc.commands' own, in the order `cnlmc --help`
+#: lists them (backends' commands follow): listed like backends' commands, imported when chosen.
+FRONT_END_COMMANDS: dict[str, CommandEntry] = {
+    "build": CommandEntry(  # cnlmc.batch: catalogues to targets (#20)
+        "build",
+        "cnlmc.batch.command",
+        "BuildCommand",
+        "build every material of a catalogue to targets, incrementally, in parallel (or on Dask)",
     ),
-    CommandRef(
-        "serve", "open the studio: type a phrase in the browser, see it live, refine, export, view in AR", _serve
+    "serve": CommandEntry(  # cnlmc.studio: the web studio (#17); aiohttp loads when it runs
+        "studio",
+        "cnlmc.studio.command",
+        "ServeCommand",
+        "open the studio: type a phrase in the browser, see it live, refine, export, view in AR",
     ),
-    CommandRef(
-        "listen", "speak a material: the first phrase starts it, later ones refine it ('darker', 'undo')", _listen
+    "listen": CommandEntry(  # cnlmc.speech (#18); pocketsphinx loads when it runs
+        "speech",
+        "cnlmc.speech.command",
+        "ListenCommand",
+        "speak a material: the first phrase starts it, later ones refine it ('darker', 'undo')",
     ),
-)
+}
 
 
 def chosen_command(argv: Sequence[str]) -> str | None:
@@ -75,7 +60,7 @@ def chosen_command(argv: Sequence[str]) -> str | None:
 def build_parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
     """The parser, with the arguments of the subcommand `argv` names (the others are listed by
     name and help only)."""
-    from cnlmc.backends.registry import BUILTIN_COMMANDS, get_command, plugin_command
+    from cnlmc.backends.registry import BUILTIN_COMMANDS, load_command, plugin_command
 
     from .commands import LANGUAGE_COMMANDS
 
@@ -90,18 +75,14 @@ def build_parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
         language_parser = sub.add_parser(command.name, help=command.help)
         if command.name == chosen:
             _add(language_parser, command)
-    for ref in FRONT_END_COMMANDS:
-        front_end_parser = sub.add_parser(ref.name, help=ref.help)
-        if ref.name == chosen:
-            _add(front_end_parser, ref.make())
-    for name, entry in BUILTIN_COMMANDS.items():
-        backend_parser = sub.add_parser(name, help=entry.help)
+    for name, entry in (*FRONT_END_COMMANDS.items(), *BUILTIN_COMMANDS.items()):
+        listed_parser = sub.add_parser(name, help=entry.help)
         if name == chosen:
             with _loading():
-                _add(backend_parser, get_command(name))
+                _add(listed_parser, load_command(name, entry))
     if chosen is not None and chosen not in {
         *(c.name for c in LANGUAGE_COMMANDS),
-        *_front_end_names(),
+        *FRONT_END_COMMANDS,
         *BUILTIN_COMMANDS,
     }:
         with _loading():
@@ -115,16 +96,14 @@ def _language_command_names() -> set[str]:
     """The language's own subcommands: their extension modules (if any) load after the freeze."""
     from .commands import LANGUAGE_COMMANDS
 
-    return {c.name for c in LANGUAGE_COMMANDS} | _front_end_names()
-
-
-def _front_end_names() -> set[str]:
-    return {r.name for r in FRONT_END_COMMANDS}
+    return {c.name for c in LANGUAGE_COMMANDS} | set(FRONT_END_COMMANDS)
 
 
 def _add(parser: argparse.ArgumentParser, command: Command) -> None:
     command.add_arguments(parser)
-    parser.set_defaults(handler=command.run)
+    parser.set_defaults(
+        handler=command.run, writes_stdout=getattr(command, "writes_stdout", False)
+    )  # a plugin may not say
 
 
 @contextmanager
@@ -138,13 +117,10 @@ def _loading() -> Iterator[None]:
         raise UsageError(str(exc)) from None
 
 
-#: the commands whose `-o -` is standard output (the rest write images, folders or packages)
-STDOUT_COMMANDS = ("compile", "listen")
-
-
 def _check_stdout_output(args: argparse.Namespace, command: str | None) -> None:
-    """`-o -` where a command cannot write to standard output: a usage error, never a file named '-'."""
-    if getattr(args, "output", None) == "-" and command not in STDOUT_COMMANDS:
+    """`-o -` where a command cannot write to standard output (its `writes_stdout` is False: it
+    writes images, folders or packages): a usage error, never a file named '-'."""
+    if getattr(args, "output", None) == "-" and not args.writes_stdout:
         raise UsageError(
             f"-o - (standard output) is for `cnlmc compile`; `cnlmc {command}` writes files: "
             "give -o FILE or -o FOLDER (a file named '-' is -o ./-)"

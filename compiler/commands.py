@@ -143,6 +143,7 @@ def compile_reported(source: str, name: str, args: argparse.Namespace) -> Result
 class CompileCommand(Command):
     name = "compile"
     help = "compile a material file (or - for stdin)"
+    writes_stdout = True
 
     def add_arguments(self, parser: argparse.ArgumentParser) -> None:
         add_source_arguments(parser)

@@ -13,6 +13,7 @@ from cnlmc.material import Document
 
 from ..base import Command
 from ..preview.commands import add_render_arguments, compiled_or_none, render_options
+from ..registry import BUILTIN_COMMANDS
 from .errors import ARError, NoMarkerFound
 from .marker import write_marker
 from .photo import ar_command
@@ -45,7 +46,7 @@ def require_opencv() -> None:
 
 class ARCommand(Command):
     name = "ar"
-    help = "place the material on a printed marker in a photo or video"
+    help = BUILTIN_COMMANDS[name].help
 
     def add_arguments(self, parser: argparse.ArgumentParser) -> None:
         parser.add_argument("photo", nargs="?", help="a photo (.jpg/.png) or video (.mp4/.avi/.mov) showing the marker")

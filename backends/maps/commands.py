@@ -13,6 +13,7 @@ from cnlmc.errors import UsageError
 from cnlmc.output import Staging, writable_destination
 
 from ..base import Command
+from ..registry import BUILTIN_COMMANDS
 from .errors import MapError
 from .service import MapBakeError, bake_files, has_maps
 from .sheet import render_contact_sheet
@@ -38,7 +39,7 @@ class ProgressBar:
 
 class BakeCommand(Command):
     name = "bake"
-    help = "bake a material's procedural maps to image files"
+    help = BUILTIN_COMMANDS[name].help
 
     def add_arguments(self, parser: argparse.ArgumentParser) -> None:
         add_source_arguments(parser)
@@ -84,7 +85,7 @@ SHEET_TILE = (16, 1024)
 
 class SheetCommand(Command):
     name = "sheet"
-    help = "a contact sheet PNG of every stdlib procedural graph"
+    help = BUILTIN_COMMANDS[name].help
 
     def add_arguments(self, parser: argparse.ArgumentParser) -> None:
         parser.add_argument("-o", "--output", default="maps_sheet.png", help="output PNG (default maps_sheet.png)")

@@ -23,6 +23,7 @@ from cnlmc.errors import UsageError
 from cnlmc.output import destination
 
 from ..base import Command
+from ..registry import BUILTIN_COMMANDS
 from . import live
 from .frames import preview_command
 from .window import Window
@@ -64,7 +65,7 @@ def compiled_or_none(source: str, name: str, args: argparse.Namespace) -> Result
 
 class PreviewCommand(Command):
     name = "preview"
-    help = "render a material file to a PNG (offscreen OpenGL)"
+    help = BUILTIN_COMMANDS[name].help
 
     def add_arguments(self, parser: argparse.ArgumentParser) -> None:
         add_source_arguments(parser)

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, TextIO
 
 from cnlmc.backends.registry import Command
 
+from ..cli import FRONT_END_COMMANDS
 from ..diagnostics import visible
 from .modes import RESULT_MODES
 
@@ -19,7 +20,7 @@ EXIT_OK, EXIT_FAILED, EXIT_INTERRUPTED = 0, 1, 130  # 130: 128 + SIGINT, as the 
 
 class BuildCommand(Command):
     name = "build"
-    help = "build every material of a catalogue to targets, incrementally, in parallel (or on Dask)"
+    help = FRONT_END_COMMANDS[name].help
 
     def add_arguments(self, parser: argparse.ArgumentParser) -> None:
         parser.add_argument("catalog", help="a catalogue: a .cnl file, or a folder of them (searched recursively)")

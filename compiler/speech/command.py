@@ -11,13 +11,15 @@ from pathlib import Path
 
 from cnlmc.backends.registry import Command, TargetUnavailable, UnknownTarget, get_target
 
+from ..cli import FRONT_END_COMMANDS
 from ..commands import EXIT_ERRORS, EXIT_OK, add_lexicon_arguments, deliver, lexicon_of, print_notes, run_target
 from ..errors import UsageError
 
 
 class ListenCommand(Command):
     name = "listen"
-    help = "speak a material: the first phrase starts it, later ones refine it ('darker', 'undo')"
+    help = FRONT_END_COMMANDS[name].help
+    writes_stdout = True
 
     def add_arguments(self, parser: argparse.ArgumentParser) -> None:
         parser.add_argument(

@@ -12,6 +12,7 @@ import sys
 from cnlmc.backends.registry import Command
 
 from ..api import lexicon_for
+from ..cli import FRONT_END_COMMANDS
 from ..errors import UsageError
 from ..inputs import read_text
 from ..lexicon_schema import LexiconError
@@ -21,7 +22,7 @@ DEFAULT_PORT = 8765  # our choice: free on common desktops (8000/8080 are taken 
 
 class ServeCommand(Command):
     name = "serve"
-    help = "open the studio: type a phrase in the browser, see it live, refine, export, view in AR"
+    help = FRONT_END_COMMANDS[name].help
 
     def add_arguments(self, parser: argparse.ArgumentParser) -> None:
         parser.add_argument("file", nargs="?", help="a material file to start from (it is read, never written)")

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from cnlmc.backends.registry import TargetUnavailable, get_target
+from cnlmc.backends.registry import TargetUnavailable, get_target, load_command
 from cnlmc.cache import SUFFIX, encode
 from cnlmc.cli import FRONT_END_COMMANDS, build_parser
 from cnlmc.lexicon import from_stored, load_lexicon, stored_form
@@ -61,9 +61,10 @@ def test_a_cold_compile_with_a_warm_cache_loads_only_what_it_needs(tmp_path):
 
 
 def test_each_front_end_command_is_listed_as_it_names_itself():
-    for ref in FRONT_END_COMMANDS:
-        command = ref.make()
-        assert (command.name, command.help) == (ref.name, ref.help)
+    for name, entry in FRONT_END_COMMANDS.items():
+        command = load_command(name, entry)
+        assert (command.name, command.help) == (name, entry.help) and not command.help.startswith(" ")
+    assert [load_command(n, e).writes_stdout for n, e in FRONT_END_COMMANDS.items()] == [False, False, True]
     argv = ["build", "catalogue.cnl", "-o", "out", "--target", "ir"]
     assert build_parser(argv).parse_args(argv).command == "build"  # its own arguments, once chosen
 
