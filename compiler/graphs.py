@@ -26,7 +26,18 @@ def graph_names() -> frozenset[str]:
 
 @cache
 def _graph_table(name: str) -> Mapping[str, Any]:
-    return MappingProxyType(_graph_tables().get(name, {}))
+    """A graph's table, read-only all the way down (it is shared by every caller in the process)."""
+    frozen: Mapping[str, Any] = _read_only(_graph_tables().get(name, {}))
+    return frozen
+
+
+def _read_only(value: Any) -> Any:
+    """`value` with its tables as read-only mappings and its arrays as tuples, at every depth."""
+    if isinstance(value, dict):
+        return MappingProxyType({key: _read_only(item) for key, item in value.items()})
+    if isinstance(value, list):
+        return tuple(_read_only(item) for item in value)
+    return value
 
 
 @cache
@@ -84,4 +95,5 @@ def all_graph_params() -> frozenset[str]:
 def graph_palette(name: str) -> Mapping[str, Any]:
     """A stdlib graph's `[palette]` table (what a colour word does to its colours: chroma cap,
     lightness range, parameters a dark colour sets; docs/maps.md); empty when it has none."""
-    return MappingProxyType(dict(_graph_table(name).get("palette", {})))
+    palette: Mapping[str, Any] = _graph_table(name).get("palette", MappingProxyType({}))
+    return palette
