@@ -225,6 +225,8 @@ class Tagger:
                     tagged[-1], text, self._span(raw, i, 1, line_no, offset), last, diags
                 )
                 return 1
+            if tagged and self._after_comparative(text, tagged[-1]):  # "lighter than oak"
+                return self._than(raw, i, line_no, offset, tagged, diags)
             reading = self.formation().read_at([t.lower() for t, _c in raw[i : i + 5]])  # "not X in the least"
             if reading is not None:
                 return self._formed(reading, raw, i, line_no, offset, tagged, diags)
@@ -255,7 +257,37 @@ class Tagger:
         diags.append(
             Diagnostic(self._span(raw, i, reading.words, line_no, offset), Severity.NOTE, NOTE_CODE, reading.note)
         )
+        if not reading.parts:  # "shiny, not rusty, iron": the words go, and one separator with them
+            return reading.words + _dropped_separator(raw, i + reading.words, tagged)
         return reading.words
+
+    def _after_comparative(self, text: str, before: Tagged) -> bool:
+        """A comparison word ('than', 'als': word formation rules) right after a comparative."""
+        if text.lower() not in self.formation().rules.comparison:
+            return False
+        return any(c.tag == "REFINE" for c in before.candidates)
+
+    def _than(
+        self, raw: list[RawToken], i: int, line_no: int, offset: int, tagged: list[Tagged], diags: list[Diagnostic]
+    ) -> int:
+        """'lighter than oak', 'a bit shinier than the brushed steel': the comparison word (and an
+        article after it) is read as the inline comparative 'lighter oak', the material named after
+        it moved as a refinement line would move it; a note says so. The word before keeps only its
+        comparative reading ('dunkler als Eiche': not the declined colour 'dunkler'). Returns the
+        words taken."""
+        comparative = tagged[-1]
+        refine = tuple(c for c in comparative.candidates if c.tag == "REFINE")
+        tagged[-1] = Tagged(comparative.text, comparative.span, refine, comparative.unknown)
+        taken = 2 if i + 1 < len(raw) and self.keywords.get(raw[i + 1][0].lower()) == "ARTICLE" else 1
+        than = raw[i][0]
+        said = comparative.text
+        note = (
+            f"read '{said} {than}' as '{said}' before the material: the material named after '{than}', "
+            f"moved as a refinement line '{said}' under it would move it"
+        )
+        span = comparative.span.to(self._span(raw, i, taken, line_no, offset))
+        diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, note))
+        return taken
 
     def _gives_way(self, raw: list[RawToken], i: int, n: int) -> bool:
         """Whether the form raw[i:i+n] gives way to a multi-word noun starting on its last word:
@@ -331,6 +363,26 @@ class Tagger:
             if found:
                 return tuple(Candidate(c.tag, c.key, c.category) for c in found)
         return tuple(Candidate(t, "", "unknown") for t in OPEN_TAGS)
+
+
+#: The readings of a separator a word with no effect leaves standing alone ("shiny, not rusty, iron").
+_SEPARATORS = frozenset(("COMMA", "AND"))
+
+
+def _is_separator(word: Tagged) -> bool:
+    return bool(word.candidates) and all(c.tag in _SEPARATORS for c in word.candidates)
+
+
+def _dropped_separator(raw: list[RawToken], after: int, tagged: list[Tagged]) -> int:
+    """After words read as having no effect ("not rusty"), the separator that set them off goes too:
+    the one before them (popped from `tagged`), else a comma right after them (returns 1: that raw
+    word is taken), so "shiny, not rusty, iron" is "shiny, iron" and "not rusty, iron" is "iron"."""
+    if tagged and _is_separator(tagged[-1]):
+        tagged.pop()
+        return 0
+    if after < len(raw) and raw[after][0] in (",", ";"):
+        return 1
+    return 0
 
 
 def _unknown_message(text: str) -> str:

@@ -99,6 +99,7 @@ class Rules:
         self.postfix = any(c["postfix"] for c in compounds)  # 'Eiche geölt': describing words after the noun
         self.made_of = tuple(dict.fromkeys(w for c in compounds for w in c["made_of"]))  # 'Dielen aus Eiche'
         self.qualifiers = frozenset(joined("qualifiers", "words"))
+        self.comparison = frozenset(joined("comparison", "words"))  # "lighter than oak"
         self.manners = frozenset(joined("compound_first", "manners"))
         self.participles = frozenset(joined("compound_first", "participles"))
         self.participle_endings = joined("compound_first", "participle_endings")

@@ -24,6 +24,7 @@ _LISTS = {
     "punctuation": ("trailing", "leading", "quotes", "number_marks"),
     "negation": ("words", "prefixes", "softeners", "emphatic", "emphatic_before"),
     "qualifiers": ("words",),
+    "comparison": ("words",),
     "properties": ("endings",),
 }
 
@@ -41,6 +42,7 @@ def empty_rules() -> dict[str, Any]:
             "soft_adverb": "",
         },
         "qualifiers": {"words": []},
+        "comparison": {"words": []},
         "properties": {"endings": []},
         "compound_first": {
             "manners": [],

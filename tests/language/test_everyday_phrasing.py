@@ -1,0 +1,214 @@
+"""Everyday phrasing categories (issue #14, package LANG): a comparative against a named material
+("lighter than oak"), negation without an opposite inside a comma list ("shiny, not rusty, iron"),
+the physicallybased.info materials people name (lemon, eggshell, blood), a coat named as the whole
+material ("satin varnish") and a noun that says where the material is used ("guitar varnish").
+None of these phrases is in tests/language/everyday.toml's held-out twin; each rule is tested on
+wording of its own, through cnlmc.api and the command line."""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from cnlmc.api import compile_source, lexicon_for
+from tests.helpers import run_cnlmc
+
+from .conftest import look
+
+LEX = lexicon_for()
+DE = lexicon_for(("de",))
+DATA = Path(__file__).resolve().parents[3] / "shared" / "data" / "physicallybased_materials.json"
+
+
+def notes(result) -> list[str]:
+    return [d.message for d in result.diagnostics if d.severity.name == "NOTE"]
+
+
+def codes(result) -> list[str]:
+    return sorted(d.code for d in result.diagnostics if d.severity.name in ("ERROR", "WARNING"))
+
+
+def meaning(result) -> list[dict]:
+    return [{k: m[k] for k in ("model", "params", "maps")} for m in result.ir["materials"]]
+
+
+# ---------------------------------------------------------------- 1. "lighter than oak"
+
+
+@pytest.mark.parametrize(
+    ("phrase", "material", "line"),
+    [
+        ("lighter than oak", "oak", "lighter"),
+        ("a bit shinier than brushed steel", "brushed steel", "a bit shinier"),
+        ("much darker than walnut veneer", "walnut veneer", "much darker"),
+        ("rougher than the concrete", "concrete", "rougher"),
+        ("slightly warmer than white marble", "white marble", "slightly warmer"),
+        ("far glossier than a satin black plastic", "satin black plastic", "far glossier"),
+    ],
+)
+def test_a_comparative_than_a_material_is_that_material_moved_as_a_refinement_line(phrase, material, line):
+    result, said = look(LEX, phrase)
+    _, refined = look(LEX, f"{material}\n{line}")
+    assert said == refined
+    assert any("than" in n and "refinement line" in n for n in notes(result)), notes(result)
+
+
+def test_german_als_after_a_comparative_is_the_same():
+    result, said = look(DE, "dunkler als Eiche")
+    _, refined = look(DE, "Eiche\ndunkler")
+    assert said == refined
+    assert any("'als'" in n for n in notes(result))
+    _, brighter = look(DE, "etwas heller als gebürsteter Stahl")
+    _, steel = look(DE, "gebürsteter Stahl\netwas heller")
+    assert brighter == steel
+
+
+def test_than_moves_the_material_the_comparative_way():
+    """Not a no-op: lighter than oak is lighter than oak, darker than walnut darker than walnut."""
+    from cnlmc.colour import linear_to_oklab
+
+    def lightness(text: str) -> float:
+        return linear_to_oklab(look(LEX, text)[1]["params"]["base_color"])[0]
+
+    assert lightness("lighter than oak") > lightness("oak") + 0.02
+    assert lightness("darker than walnut") < lightness("walnut") - 0.01
+    assert (
+        look(LEX, "rougher than polished steel")[1]["params"]["roughness"]
+        > look(LEX, "polished steel")[1]["params"]["roughness"]
+    )
+
+
+@pytest.mark.parametrize("phrase", ["oak than steel", "than oak", "oak, lighter than"])
+def test_than_without_a_comparative_before_it_is_still_an_error(phrase):
+    result = compile_source(phrase, "t.cnl", LEX)
+    assert not result.ok
+    assert "E001" in codes(result) or "E002" in codes(result)
+
+
+COMPARATIVES = ("lighter", "darker", "shinier", "rougher", "glossier", "smoother", "a bit duller", "much warmer")
+SOME_NOUNS = sorted(LEX.all_of("nouns"))[::37]
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(COMPARATIVES), st.sampled_from(SOME_NOUNS))
+def test_than_is_always_the_refinement_line(comparative, noun):
+    """For any noun and comparative: 'C than N' compiles to what 'N' refined by the line 'C' does,
+    with the same errors and warnings (a comparative that cannot move N warns in both)."""
+    said = compile_source(f"{comparative} than {noun}", "t.cnl", LEX)
+    refined = compile_source(f"{noun}\n{comparative}", "t.cnl", LEX)
+    assert codes(said) == codes(refined)
+    if said.ok:
+        assert meaning(said) == meaning(refined)
+
+
+def test_than_on_the_command_line_prints_the_note():
+    done = run_cnlmc("compile", "-", "--target", "ir", "-o", "-", stdin="a touch lighter than cherry\n")
+    assert done.returncode == 0, done.stderr
+    assert "note[N101]" in done.stderr and "'lighter than'" in done.stderr
+    assert json.loads(done.stdout)["materials"][0]["params"]["base_color"]
+
+
+# ---------------------------------------------------------------- 4. "shiny, not rusty, iron"
+
+
+@pytest.mark.parametrize(
+    ("phrase", "same_as"),
+    [
+        ("shiny, not rusty, iron", "shiny iron"),
+        ("matte, not rusty, dark grey steel", "matte dark grey steel"),
+        ("not weathered, grey slate", "grey slate"),
+        ("polished and not tarnished silver", "polished silver"),
+        ("copper, not patinated", "copper"),
+        ("glossy, not scratched, red plastic", "glossy red plastic"),
+        ("walnut; not worn; oiled", "oiled walnut"),
+    ],
+)
+def test_a_negation_with_no_opposite_in_a_list_takes_its_separator_with_it(phrase, same_as):
+    result, said = look(LEX, phrase)
+    _, plain = look(LEX, same_as)
+    assert said == plain
+    assert any(n.startswith("read 'not ") and "no effect" in n for n in notes(result)), notes(result)
+
+
+def test_a_negation_with_a_declared_opposite_in_a_list_is_still_the_opposite():
+    _, said = look(LEX, "satin, not textured, plastic")
+    _, opposite = look(LEX, "satin, smooth, plastic")
+    assert said == opposite
+
+
+def test_a_dropped_negation_never_eats_a_word_that_is_not_a_separator():
+    """'hull: not rusty, iron': the name's colon stays; the material is iron."""
+    result = compile_source("hull: not rusty, iron", "t.cnl", LEX)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert result.ir["materials"][0]["name"] == "hull"
+    assert result.ir["materials"][0]["params"] == look(LEX, "iron")[1]["params"]
+
+
+# ---------------------------------------------------------------- 5. physicallybased.info nouns
+
+#: Rows that are not a material people name: parts of the eye (anatomy; out of scope).
+NOT_EVERYDAY = {"Eye (Cornea)", "Eye (Lens)", "Eye (Sclera)"}
+
+
+def _forms(name: str) -> list[str]:
+    """A dataset name in the forms people type: 'Egg Shell (Brown)' -> 'brown egg shell', 'egg shell'."""
+    low = name.lower()
+    qualified = re.fullmatch(r"(.*) \((.*)\)", low)
+    if qualified is None:
+        return [low]
+    head, quality = qualified.groups()
+    return [f"{quality} {head}", head]
+
+
+@pytest.mark.skipif(not DATA.exists(), reason="../shared/data is not beside the checkout")
+def test_every_everyday_physicallybased_material_is_a_noun():
+    rows = json.loads(DATA.read_text("utf-8"))["data"]
+    missing = []
+    for row in rows:
+        if row["name"] in NOT_EVERYDAY:
+            continue
+        if not any(compile_source(f, "t.cnl", LEX).ok for f in _forms(row["name"])):
+            missing.append(row["name"])
+    assert not missing
+
+
+@pytest.mark.parametrize(
+    ("phrase", "row"),
+    [
+        ("lemon", "Lemon"),
+        ("orange peel", "Orange"),
+        ("egg shell", "Egg Shell (White)"),
+        ("brown eggshell", "Egg Shell (Brown)"),
+        ("blood", "Blood (Oxygenated)"),
+        ("venous blood", "Blood (Deoxygenated)"),
+        ("wine", "Wine (Red)"),
+    ],
+)
+def test_the_new_nouns_carry_the_dataset_row(phrase, row):
+    result, said = look(LEX, phrase)
+    material = result.ir["materials"][0]
+    sources = [s.get("source", "") for steps in material["provenance"].values() for s in steps]
+    assert any(f"physicallybased_materials.json '{row}'" in s for s in sources), sources
+    if DATA.exists():
+        data = {m["name"]: m for m in json.loads(DATA.read_text("utf-8"))["data"]}[row]
+        linear = next(c["color"] for c in data["color"] if c["colorSpace"] == "srgb-linear")
+        assert said["params"]["base_color"] == pytest.approx(linear, abs=5e-4)
+
+
+@pytest.mark.parametrize("colour", ["orange", "lemon", "eggshell", "blood"])
+def test_a_fruit_or_egg_before_a_material_is_still_its_colour(colour):
+    """'orange plastic' is plastic in the colour orange, not two materials."""
+    result, said = look(LEX, f"{colour} plastic")
+    _, plastic = look(LEX, "plastic")
+    assert said["params"]["base_color"] != plastic["params"]["base_color"]
+    assert result.ir["materials"][0]["provenance"]["base_color"][-1]["words"] == [colour]
+
+
+@pytest.mark.parametrize(("german", "english"), [("Zitrone", "lemon"), ("Eierschale", "eggshell"), ("Blut", "blood")])
+def test_the_new_nouns_in_german(german, english):
+    assert look(DE, german)[1] == look(LEX, english)[1]
