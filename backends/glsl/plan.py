@@ -68,6 +68,39 @@ SAMPLER_ROLES = {
 }
 #: Roles the shader reads (others go through the capability table).
 SHADER_ROLES = tuple(SAMPLER_ROLES)
+#: The body term's table (not a map: written by the target as a 16-bit PNG, docs/glsl.md "Subsurface").
+LUT_SAMPLER = (
+    "cnlm_sss_lut",
+    "subsurface_lut",
+    "linear",
+    "the pre-integrated diffusion table D(cos theta, u) in red: rows cos(theta) -1..1 (image row 0 first, "
+    "no flip), columns u = rho / (1 + rho) 0..cnlm_sss_lut_u_max; read with texelFetch (upload as float: "
+    "R16F/R32F, value = 16-bit sample / 65535)",
+)
+#: the body term's uniforms: name -> type (values from backends/preview/subsurface.py)
+BODY_UNIFORMS = {
+    "cnlm_sss_albedo": "vec3",
+    "cnlm_sss_mfp": "vec3",
+    "cnlm_sss_profile_scale": "vec3",
+    "cnlm_sss_thin": "int",
+    "cnlm_sss_wall_through": "vec3",
+    "cnlm_sss_f0": "float",
+    "cnlm_sss_entry": "float",
+    "cnlm_sss_lut_u_max": "float",
+    "cnlm_sss_centre": "vec3",
+    "cnlm_sss_radius": "float",
+    "cnlm_sss_closed": "int",
+    "cnlm_sss_unit": "float",
+}
+#: the uber form's values for a material without a body (no body: a zero albedo, no wall)
+BODY_NEUTRAL: dict[str, Any] = {
+    "cnlm_sss_mfp": 1e-3,
+    "cnlm_sss_profile_scale": 1e-3,
+    "cnlm_sss_radius": 1.0,
+    "cnlm_sss_closed": 1,
+    "cnlm_sss_unit": 0.05,
+    "cnlm_sss_lut_u_max": 0.95,
+}
 
 
 @dataclass(frozen=True)
@@ -104,6 +137,7 @@ class Plan:
     samplers: list = field(default_factory=list)
     sheen: bool = False  # the Charlie sheen over the base (snippets/sheen.glsl)
     flakes: bool = False  # the flake lobe mixed into the base under the coat (snippets/flakes.glsl)
+    subsurface: bool = False  # the body term cnlm_subsurface and its table (snippets/subsurface.glsl)
 
     @property
     def microfacet(self) -> bool:
@@ -156,11 +190,40 @@ def make_plan(material: Material, options: GlslOptions) -> Plan:
         alpha_convention=material.params.alpha_convention,
         sheen=has_sheen(material),
         flakes=has_flakes(material),
+        subsurface=has_body(material),
     )
     plan.snippets = snippet_names(plan)
     plan.uniforms = uniforms_for(plan, material)
     plan.samplers = [Sampler(SAMPLER_ROLES[r][0], r, SAMPLER_ROLES[r][1], SAMPLER_ROLES[r][2]) for r in plan.maps]
+    plan.samplers += table_samplers(plan)
     return plan
+
+
+def has_body(material: Material) -> bool:
+    """A translucent body (model.subsurface "volume" or "thin"): the library has cnlm_subsurface."""
+    return material.model.subsurface in ("volume", "thin") and material.params.subsurface is not None
+
+
+def table_samplers(plan: Plan) -> list[Sampler]:
+    """The samplers of the library's own tables (not maps): the body term's pre-integrated table."""
+    return [Sampler(*LUT_SAMPLER)] if plan.subsurface else []
+
+
+def body_values(material: Material) -> dict[str, Any]:
+    """The body term's uniform values: the material's (lengths in metres) and the object's as the
+    preview's unit sphere has them (backends/preview/subsurface.py, the preview's own source)."""
+    from ..preview.subsurface import body_uniforms, object_defaults
+
+    return {**object_defaults(), **body_uniforms(material)}
+
+
+def _body(name: str) -> UniformValue:
+    def value(material: Material, plan: Plan) -> Any:
+        found = body_values(material)[name] if has_body(material) else BODY_NEUTRAL.get(name, 0.0)
+        kind = BODY_UNIFORMS[name]
+        return _rgb(found) if kind == "vec3" else (int(found) if kind == "int" else float(found))
+
+    return value
 
 
 def snippet_names(plan: Plan) -> list[str]:
@@ -192,6 +255,8 @@ def snippet_names(plan: Plan) -> list[str]:
         names += ["ggx_isotropic", "fresnel_schlick", "flakes"]
     if plan.sheen:
         names.append("sheen")
+    if plan.subsurface:
+        names.append("subsurface")
     return list(dict.fromkeys(names))
 
 
@@ -276,6 +341,8 @@ UNIFORM_TABLE: dict[str, tuple[str | None, Callable[[Plan], bool], UniformValue]
     "cnlm_sheen_alpha": ("float", lambda p: p.sheen, lambda m, p: _sheen_alpha(m)),
     # the white sheen's albedo row at that alpha (cnlmc.bsdf.sheen.sheen_row): re-emit to change alpha
     "cnlm_sheen_albedo": ("float[32]", lambda p: p.sheen, lambda m, p: [float(e) for e in sheen_row(_sheen_alpha(m))]),
+    # the body term (snippets/subsurface.glsl): the material's, then the object's (set them for your mesh)
+    **{name: (gl_type, lambda p: p.subsurface, _body(name)) for name, gl_type in BODY_UNIFORMS.items()},
 }
 
 
@@ -341,6 +408,7 @@ UBER_SNIPPETS = (
     "normal_map",
     "flakes",
     "sheen",
+    "subsurface",
 )
 
 
@@ -370,6 +438,7 @@ def make_uber_plan(material: Material, options: GlslOptions) -> Plan:
         snippets=list(UBER_SNIPPETS),
         sheen=True,
         flakes=True,
+        subsurface=True,
     )
     selectors = [
         Uniform(name, "int", codes[getattr(plan, attribute)]) for name, (attribute, codes) in UBER_SELECTORS.items()
@@ -381,4 +450,5 @@ def make_uber_plan(material: Material, options: GlslOptions) -> Plan:
     ]
     every.uniforms = selectors + map_flags + params
     every.samplers = [Sampler(SAMPLER_ROLES[r][0], r, SAMPLER_ROLES[r][1], SAMPLER_ROLES[r][2]) for r in SHADER_ROLES]
+    every.samplers += table_samplers(every)
     return every

@@ -20,7 +20,7 @@ from .resources import Resources, source_key
 from .scene import Scene
 from .shader import MaterialShader
 from .sheen import sheen_uniforms
-from .subsurface import subsurface_uniforms
+from .subsurface import lut_image, subsurface_uniforms
 from .tiers import Tier
 
 VERTEX_ATTRIBUTES = (("in_position", 3), ("in_normal", 3), ("in_tangent", 3), ("in_uv", 2))
@@ -69,6 +69,18 @@ def object_vertex_array(resources: Resources, program_key: str, prog: Any, mesh:
     return resources.once(("vertex array", program_key, mesh.key), make)
 
 
+def subsurface_table(resources: Resources) -> Any:
+    """The body term's pre-integrated table as a one-channel float32 texture, made once per context
+    (read with texelFetch: snippets/subsurface.glsl)."""
+
+    def upload() -> Any:
+        tex = resources.float_texture(lut_image(), mipmaps=False, repeat=(False, False))
+        tex.filter = (resources.ctx.NEAREST, resources.ctx.NEAREST)
+        return tex
+
+    return resources.once(("subsurface table",), upload)
+
+
 def draw_object(
     resources: Resources,
     scene: Scene,
@@ -90,6 +102,7 @@ def draw_object(
         textures.update(split_textures(resources, material, shader.plan, res, options))
     if shader.plan.subsurface:
         textures["pv_env_irradiance"] = res.irradiance  # the body's diffuse light (subsurface.glsl.j2)
+        textures["cnlm_sss_lut"] = subsurface_table(resources)
     for unit, (name, tex) in enumerate(textures.items()):
         tex.use(unit)
         gl.set_uniform(prog, name, unit)

@@ -19,7 +19,7 @@ from cnlmc.material import Material
 from ..capabilities import check_material
 from ..glsl.emit import library_source
 from ..glsl.options import GlslOptions, parse_glsl_options
-from ..glsl.plan import MICROFACET_BASES, Plan, Sampler, make_plan
+from ..glsl.plan import MICROFACET_BASES, SHADER_ROLES, Plan, Sampler, make_plan
 from ..glsl.render import ShaderWriter
 from .albedo_tables import split_fitted
 from .capability_table import CAPABILITIES
@@ -123,4 +123,5 @@ def material_shader(material: Material, options: GlslOptions, writer: ShaderWrit
     notes: list = []
     check_material(notes, PREVIEW, CAPABILITIES, material)  # the preview's own table, not the GLSL export's
     plans = preview_plan(material, plan, specialized)
-    return MaterialShader(material.name, library, plans, tuple(plan.samplers), [n.text() for n in notes])
+    maps = tuple(s for s in plan.samplers if s.role in SHADER_ROLES)  # the library's tables are bound by name
+    return MaterialShader(material.name, library, plans, maps, [n.text() for n in notes])

@@ -176,35 +176,61 @@ def profile_scale(body: TranslucentBody) -> np.ndarray:
     return np.asarray(body.radius, np.float64) / profile_shape(np.clip(body.color, 0.0, 1.0))
 
 
-def subsurface_uniforms(material: Any, mesh: Mesh, model: np.ndarray) -> dict[str, object]:
-    """The subsurface uniforms for the object drawn with `model` (world = model @ object); none
-    when the material has no subsurface body. Lengths are in scene units: metres divided by
-    the scene's metres_per_unit (data/subsurface.toml), scaled with the model matrix."""
+def body_uniforms(material: Any) -> dict[str, object]:
+    """The body term's material uniforms (the GLSL library's cnlm_sss_*, snippets/subsurface.glsl;
+    lengths in metres); none when the material has no subsurface body. The GLSL target's plan
+    declares them with these values (glsl/plan.py), so the preview and the target read the same."""
     body = subsurface_of(material)
     if body is None:
         return {}
-    centre, radius = bounding_sphere(mesh)
-    model = np.asarray(model, np.float64)
-    scale = abs(float(np.linalg.det(model[:3, :3]))) ** (1.0 / 3.0) or 1.0
-    per_unit = metres_per_unit()
-    table = preintegrated_table()
     # a volume's colour is the dipole's total diffuse reflectance (docs/subsurface.md): the body albedo
     # a thin sheet's front is cnlm_bsdf's (boundary_material): the term adds what comes through
     reflect, through = (
         (np.zeros(3), sheet_optics(body)[1]) if body.thin else (np.clip(body.color, 0.0, 1.0), np.zeros(3))
     )
     return {
-        "pv_sss_albedo": reflect,
-        # a closed thin-walled shell (a lantern): the light from behind crosses the far wall first
-        "pv_sss_wall_through": through * (through if mesh.closed else 1.0),
-        "pv_sss_mfp": np.maximum(np.asarray(body.radius) / per_unit * scale, 1e-6),
-        "pv_sss_thin": int(body.thin),
-        "pv_sss_closed": int(mesh.closed),
-        "pv_sss_centre": model[:3, :3] @ centre + model[:3, 3],
-        "pv_sss_radius": radius * scale,
-        "pv_sss_f0": schlick_f0(body.ior),
-        "pv_sss_entry": entry_transmittance(body.ior),
-        "pv_sss_profile_scale": np.maximum(profile_scale(body) / per_unit * scale, 1e-6),
-        "pv_sss_lut": table.values.ravel(),
-        "pv_sss_lut_u_max": table.u_max,
+        "cnlm_sss_albedo": reflect,
+        "cnlm_sss_mfp": np.asarray(body.radius, np.float64),
+        "cnlm_sss_profile_scale": profile_scale(body),
+        "cnlm_sss_thin": int(body.thin),
+        # thin: the sheet's diffuse transmittance (the shader squares it on a closed mesh: two walls)
+        "cnlm_sss_wall_through": through,
+        "cnlm_sss_f0": schlick_f0(body.ior),
+        "cnlm_sss_entry": entry_transmittance(body.ior),
+        "cnlm_sss_lut_u_max": preintegrated_table().u_max,
+    }
+
+
+def object_defaults() -> dict[str, object]:
+    """The body term's object uniforms as the preview's unit sphere has them (the GLSL target's
+    initial values): the bounding sphere, a closed mesh, metres_per_unit metres a unit."""
+    return {
+        "cnlm_sss_centre": np.zeros(3),
+        "cnlm_sss_radius": 1.0,
+        "cnlm_sss_closed": 1,
+        "cnlm_sss_unit": metres_per_unit(),
+    }
+
+
+def lut_image() -> np.ndarray:
+    """The pre-integrated table as the texture cnlm_sss_lut: (cos steps, rho steps) float32, row 0
+    (texelFetch's y = 0) at cos(theta) = -1, column 0 at u = 0."""
+    return preintegrated_table().values
+
+
+def subsurface_uniforms(material: Any, mesh: Mesh, model: np.ndarray) -> dict[str, object]:
+    """The body term's object uniforms for the object drawn with `model` (world = model @ object);
+    none when the material has no subsurface body: the bounding sphere in world units, whether
+    the mesh is closed, and the metres one world unit spans (the scene's metres_per_unit over the
+    model matrix's scale). The material's own uniforms are the library's (body_uniforms)."""
+    if subsurface_of(material) is None:
+        return {}
+    centre, radius = bounding_sphere(mesh)
+    model = np.asarray(model, np.float64)
+    scale = abs(float(np.linalg.det(model[:3, :3]))) ** (1.0 / 3.0) or 1.0
+    return {
+        "cnlm_sss_centre": model[:3, :3] @ centre + model[:3, 3],
+        "cnlm_sss_radius": radius * scale,
+        "cnlm_sss_closed": int(mesh.closed),
+        "cnlm_sss_unit": metres_per_unit() / scale,
     }

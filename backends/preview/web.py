@@ -39,7 +39,7 @@ from .meshes import MESHES, UV_UNIT_M, fit, sphere
 from .scene import scene_mesh
 from .shader import material_shader
 from .sheen import sheen_uniforms
-from .subsurface import boundary_material, subsurface_uniforms
+from .subsurface import boundary_material, lut_image, subsurface_uniforms
 
 MAGIC = b"CNLV"
 #: the tier the browser draws: the preview's default (docs/preview.md), the one its tables serve
@@ -159,7 +159,7 @@ class WebScene:
             "glass": material.model.base == "glass",
             "mesh_uniforms": mesh_uniforms(material),
             "uv_unit_m": UV_UNIT_M,
-            "tables": self.split_tables(material, shader.plan.roughness_map),
+            "tables": {**self.split_tables(material, shader.plan.roughness_map), **body_tables(shader.plan)},
             "prefilter": prefilter_alphas(material, shader.plan),
             "maps": self.maps(material, shader.samplers, write, exists, notes),
             "notes": notes,
@@ -332,6 +332,13 @@ def mesh_uniforms(material: Material) -> dict[str, list[dict[str, Any]]]:
         values = {**flake_uniforms(material, mesh), **subsurface_uniforms(material, mesh, np.eye(4))}
         out[form] = [typed_uniform(name, value) for name, value in values.items()]
     return out
+
+
+def body_tables(plan: Any) -> dict[str, Any]:
+    """The body term's pre-integrated table (cnlm_sss_lut, read with texelFetch) for a translucent
+    material: a texture, as the split-sum tables are (a uniform array of 561 floats would pass
+    OpenGL ES 3.0's 224 fragment uniform vectors)."""
+    return {"cnlm_sss_lut": float_table(rgba(lut_image()))} if plan.subsurface else {}
 
 
 def prefilter_alphas(material: Material, plan: Any) -> dict[str, float]:

@@ -4,6 +4,7 @@ only, and the named assets (containers of the preview's own environment textures
 
 from __future__ import annotations
 
+import base64
 import json
 import re
 import shutil
@@ -17,6 +18,7 @@ from cnlmc.api import compile_source
 from tests.helpers import require
 
 require("moderngl", "preview")
+from cnlmc.backends.preview.subsurface import preintegrated_table  # noqa: E402
 from cnlmc.backends.preview.web import pack, parse_alpha, unpack  # noqa: E402
 from cnlmc.studio.view_payload import material_payload, static_asset  # noqa: E402
 
@@ -66,9 +68,14 @@ def test_a_translucent_body_is_drawn_as_the_preview_draws_it(tmp_path: Path) -> 
     payload = payload_of("wax", tmp_path)
     uniforms = {u["name"]: u["value"] for u in payload["uniforms"]}
     assert uniforms["cnlm_base_color"] == [0.0, 0.0, 0.0]
+    assert min(uniforms["cnlm_sss_albedo"]) > 0.3 and min(uniforms["cnlm_sss_mfp"]) > 0
     closed = {u["name"]: u["value"] for u in payload["mesh_uniforms"]["closed"]}
-    assert min(closed["pv_sss_albedo"]) > 0.3 and min(closed["pv_sss_mfp"]) > 0
-    assert {u["name"] for u in payload["mesh_uniforms"]["open"]} == set(closed)
+    opened = {u["name"]: u["value"] for u in payload["mesh_uniforms"]["open"]}
+    assert set(opened) == set(closed) and (closed["cnlm_sss_closed"], opened["cnlm_sss_closed"]) == (1, 0)
+    # the pre-integrated table is a texture (a 561-float uniform array passed WebGL2's 224 vectors)
+    table = payload["tables"]["cnlm_sss_lut"]
+    values = np.frombuffer(base64.b64decode(table["data"]), np.float32).reshape(table["height"], table["width"], 4)
+    assert np.array_equal(values[..., 0], preintegrated_table().values)
     flakes = payload_of("metallic car paint", tmp_path)["mesh_uniforms"]["closed"]
     assert {u["name"] for u in flakes} == {"pv_flake_area", "pv_light_solid_angle"}
 

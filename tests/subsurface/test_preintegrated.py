@@ -3,7 +3,6 @@ Christensen-Burley profile spread over a ring of the surface's curvature radius 
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 
 import numpy as np
@@ -12,7 +11,7 @@ import pytest
 from cnlmc.backends.preview.subsurface import preintegrated_table, settings
 from cnlmc.backends.preview.subsurface_profile import preintegrated
 
-SHADER = Path(__file__).resolve().parents[2] / "backends" / "preview" / "shaders" / "subsurface.glsl.j2"
+SHADER = Path(__file__).resolve().parents[2] / "backends" / "glsl" / "snippets" / "subsurface.glsl"
 
 
 def test_k0_matches_tabulated_values():
@@ -43,8 +42,10 @@ def test_the_table_is_read_only_and_its_lookup_is_near_the_integral():
         assert table.lookup(cos, rho) == pytest.approx(exact, abs=0.008)
 
 
-def test_the_shader_declares_the_tables_size():
+def test_the_shader_reads_the_tables_size_from_its_texture():
+    """The table is a texture (cnlm_sss_lut): the shader takes its size from it, no copy of the
+    data's steps to keep in step."""
     text = SHADER.read_text()
-    steps = {m[0]: int(m[1]) for m in re.findall(r"#define PV_SSS_(COS|RHO)_STEPS (\d+)", text)}
+    assert "textureSize(cnlm_sss_lut, 0)" in text and "#define" not in text
     constants = settings()
-    assert steps == {"COS": constants.profile_cos_steps, "RHO": constants.profile_rho_steps}
+    assert preintegrated_table().values.shape == (constants.profile_cos_steps, constants.profile_rho_steps)

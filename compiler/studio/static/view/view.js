@@ -432,8 +432,8 @@ export class MaterialView {
     for (const u of (payload.mesh_uniforms || {})[meshForm] || []) {
       // computed on a stand-in at 1 m per UV unit: this mesh's bounding sphere and UV scale go in
       const value = {
-        pv_sss_centre: this.mesh.centre,
-        pv_sss_radius: this.mesh.radius,
+        cnlm_sss_centre: this.mesh.centre,
+        cnlm_sss_radius: this.mesh.radius,
         pv_flake_area: u.value / (metresPerUv * metresPerUv),
       }[u.name] ?? u.value;
       setUniform(gl, program, u.name, u.type, value);
