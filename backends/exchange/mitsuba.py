@@ -44,6 +44,7 @@ from .conversions import (
     rounded,
     with_base_color,
 )
+from .mitsuba_principled import fabric_roughness, sheen_base
 from .mitsuba_subsurface import VOLUME_MAX_DEPTH, medium_entry, subsurface_bsdf
 from .naming import MaterialIdents, described, xml_text
 from .options import Capabilities, capabilities_for, map_options
@@ -337,7 +338,7 @@ def principled_bsdf(material: Material, tex: BsdfTextures) -> Prop:
             prop("float", "roughness", 1.0),
             prop("float", "specular", 0.0),
         ]
-    props += principled_sheen(material)
+    props = principled_sheen(material, props)
     if model.coat and params.coat is not None:
         coat_alpha = float(params.coat.alpha[0])
         gloss = min(max((0.1 - coat_alpha) / 0.099, 0.0), 1.0)  # Disney: alpha_c = lerp(0.1, 0.001, gloss)
@@ -346,16 +347,26 @@ def principled_bsdf(material: Material, tex: BsdfTextures) -> Prop:
     return node("principled", props)
 
 
-def principled_sheen(material: Material) -> list[Prop]:
-    """principled's Disney sheen for the IR's Charlie sheen: what it can match is the strength (sheen =
-    the sheen colour's brightest channel) and the colour following the base (sheen_tint 1: the IR dyes
-    the sheen with the base colour, cnlmc.sheen_colour); what it cannot: the lobe's shape and width
-    (Disney's is a (1 - cos theta_d)^5 grazing term without roughness) and the energy taken from the
-    base (Disney adds it)."""
+def principled_sheen(material: Material, props: list[Prop]) -> list[Prop]:
+    """principled's Disney sheen for the IR's Charlie sheen. Disney's lobes are added: its diffuse
+    alone returns more than a white base gets (1.07 at roughness 1) and its sheen adds to it, where the
+    IR's sheen takes the fibres' share from the base. So the base colour and sheen weight are the ones
+    whose energy is the IR's (`mitsuba_principled.sheen_base`), sheen_tint 1 (the IR dyes the sheen
+    with the base colour, cnlmc.sheen_colour). What it cannot match: the lobe's shape (Disney's is a
+    (1 - cos theta_d)^5 grazing term without roughness, ~1 % of the energy at full weight)."""
     if not has_sheen(material):
-        return []
-    weight = min(max(float(c) for c in material.params.sheen_color or (0.0,)), 1.0)
-    return [prop("float", "sheen", weight), prop("float", "sheen_tint", 1.0)]
+        return props
+    floats = {p["name"]: float(p["value"]) for p in props if p["kind"] == "float"}
+    roughness = floats.get("roughness", alpha_to_roughness(math.sqrt(math.prod(alpha_pair(material.params)))))
+    if material.model.base == "diffuse":  # a fabric: the roughness only shapes Disney's retro-reflection
+        roughness = fabric_roughness(material)
+        props = [prop("float", "roughness", roughness) if p["name"] == "roughness" else p for p in props]
+    if any(p["name"] == "base_color" and p["kind"] == "texture" for p in props):  # a colour map: as baked
+        weight = min(max(float(c) for c in material.params.sheen_color or (0.0,)), 1.0)  # not re-derived
+    else:
+        base, weight = sheen_base(material, roughness)
+        props = [colour("base_color", base) if p["name"] == "base_color" else p for p in props]
+    return props + [prop("float", "sheen", weight), prop("float", "sheen_tint", 1.0)]
 
 
 def coated_bsdf(material: Material, tex: BsdfTextures) -> Prop:

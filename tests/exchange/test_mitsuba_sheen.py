@@ -86,3 +86,56 @@ def test_cnlm_plugin_draws_the_flakes(tmp_path, cnlm_plugin):
     plain = render(without(paint, "flake_color", "flake_density"), tmp_path / "plain", bsdf="cnlm")
     luma = np.array([0.2126, 0.7152, 0.0722])
     assert (flaked[..., :3] @ luma).mean() > 1.2 * (plain[..., :3] @ luma).mean()
+
+
+def principled_albedo(props: dict, mu: float, n: int = 24) -> np.ndarray:
+    """Mitsuba's own principled under a white sky at view cosine mu: sum of bsdf.eval (cosine
+    included) over a midpoint grid of n x 4n light directions, cosine-weighted (no formula of ours)."""
+    mi.set_variant("scalar_rgb")
+    bsdf = mi.load_dict({"type": "principled", **props})
+    si = mi.SurfaceInteraction3f()
+    si.n, si.sh_frame = mi.Vector3f(0, 0, 1), mi.Frame3f(mi.Vector3f(0, 0, 1))
+    si.wi = mi.Vector3f(float(np.sqrt(1 - mu * mu)), 0.0, mu)
+    ctx, total = mi.BSDFContext(), np.zeros(3)
+    for i in range(n):  # cos theta_i = sqrt(u): cosine-weighted cells, each of measure pi / (n 4n)
+        ci = float(np.sqrt((i + 0.5) / n))
+        for j in range(4 * n):
+            phi = 2 * np.pi * (j + 0.5) / (4 * n)
+            s = float(np.sqrt(1 - ci * ci))
+            wo = mi.Vector3f(s * float(np.cos(phi)), s * float(np.sin(phi)), ci)
+            total += np.array(bsdf.eval(ctx, si, wo)) / ci
+    return total * np.pi / (4 * n * n)
+
+
+@pytest.mark.parametrize("mu", [1.0, 0.5, 0.15])
+def test_principled_lobe_albedos_are_mitsubas(mu):
+    """The exporter's Disney diffuse and sheen albedos (mitsuba_principled, from the published
+    formulas) are what Mitsuba's principled returns: the diffuse lobe's > 1 is real (1.04 at normal
+    view), so a sheen fabric's base must be dimmed to keep the IR's energy."""
+    from cnlmc.backends.exchange.mitsuba_principled import lobe_albedos
+
+    grid, _weights, diffuse, sheen = lobe_albedos(1.0)
+    white = {"base_color": {"type": "rgb", "value": [1.0, 1.0, 1.0]}, "roughness": 1.0, "specular": 0.0}
+    fibres = {**white, "base_color": {"type": "rgb", "value": [0.0, 0.0, 0.0]}, "sheen": 1.0}
+    ours_diffuse, ours_sheen = np.interp(mu, grid, diffuse), np.interp(mu, grid, sheen)
+    assert principled_albedo(white, mu)[1] == pytest.approx(ours_diffuse, rel=0.02)
+    assert principled_albedo(fibres, mu)[1] == pytest.approx(ours_sheen, rel=0.05, abs=2e-4)
+
+
+def test_sheen_export_keeps_the_irs_energy_and_stays_under_one():
+    """A fabric's principled base colour and sheen give the IR's hemispherical albedo (velvet's was
+    1.3x over the IR's Oren-Nayar one with the IR's base colour) and no view returns more than 1."""
+    from cnlmc.backends.exchange.conversions import hemispherical_albedo
+    from cnlmc.backends.exchange.mitsuba_principled import fabric_roughness, lobe_albedos, lobe_energies, sheen_base
+
+    for phrase in ("velvet", "navy blue velvet", "white felt", "denim"):
+        material = material_of(phrase)
+        roughness = fabric_roughness(material)
+        base, weight = sheen_base(material, roughness)
+        diffuse, sheen = lobe_energies(roughness)
+        tint = np.asarray(base) / max(float(np.dot(base, [0.212671, 0.715160, 0.072169])), 1e-9)
+        exported = np.asarray(base) * diffuse + weight * tint * sheen
+        assert exported == pytest.approx(hemispherical_albedo(material, full=True), abs=0.01), phrase
+        _mu, _w, d_mu, s_mu = lobe_albedos(roughness)
+        assert np.max(np.outer(d_mu, base) + weight * np.outer(s_mu, tint)) <= 1.0 + 1e-6, phrase
+        assert weight > 0.5, phrase  # the sheen is drawn, not dropped
