@@ -122,7 +122,7 @@ def traced(page: Any, start: float, until: str = "shown") -> dict[str, Any]:
     marks = page.evaluate(TRACE_JS, [start, until])
     if marks is None:
         raise RuntimeError("the edit's frame did not reach the screen in 120 s")
-    out: dict[str, Any] = {"server": {}, "chars": 0, "quick_scale": 1.0, "quick_ms": 0.0, "full_ms": 0.0}
+    out: dict[str, Any] = {"server": {}, "chars": 0, "quick_scale": 1.0, "quick_ms": 0.0, "full_ms": 0.0, "bands": 1}
     for name, at, detail in marks:
         out.setdefault(name, at)
         out["server"] = detail.get("server") or out["server"]
@@ -130,7 +130,7 @@ def traced(page: Any, start: float, until: str = "shown") -> dict[str, Any]:
         if name == "quick-drawn":
             out["quick_scale"], out["quick_ms"] = detail["scale"], detail["ms"]
         if name == "drawn":
-            out["full_ms"] = detail["ms"]
+            out["full_ms"], out["bands"] = detail["ms"], detail.get("bands", 1)
     return out
 
 
@@ -195,8 +195,9 @@ def stage_table(measured: dict[str, dict[str, Any]]) -> list[str]:
                 cells = "".join(f"{percentile([t[key] for t in measured[k]['warm']], 50):12.2f}" for k in kinds)
                 lines.append(f"  {'    ' + label:46s}" + cells)
         if mark == "drawn":
-            cells = "".join(f"{percentile([t['full_ms'] for t in measured[k]['warm']], 50):12.1f}" for k in kinds)
-            lines.append(f"  {'    full frame draw (ms)':46s}" + cells)
+            for key, label in (("full_ms", "full frame draw (ms)"), ("bands", "full frame's bands")):
+                cells = "".join(f"{percentile([t[key] for t in measured[k]['warm']], 50):12.1f}" for k in kinds)
+                lines.append(f"  {'    ' + label:46s}" + cells)
     return lines
 
 

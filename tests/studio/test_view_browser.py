@@ -147,10 +147,12 @@ def test_variants_mesh_environment_exposure(view_page: tuple[Any, PageLog]) -> N
     assert len(seen) >= 6 and all(f["ms"] > 0 for f in seen)
     assert {f["scale"] for f in seen} >= {1} and all(0.25 <= f["scale"] <= 1 for f in seen)
     # show(): a quick frame (at most half size, smaller the slower its frames were; none when the full
-    # frame fits the budget), then the full one
+    # frame itself fits the 90 ms it may take), then the full one
     choose = "([cost, largest]) => window.quickScaleFor(cost, 512 * 512, largest)"
     assert page.evaluate(choose, [None, 0.5]) == 0.5  # not measured yet
     assert page.evaluate(choose, [1e-5, 0.5]) == 1  # 2.6 ms a frame: no quick frame (a real GPU)
+    assert page.evaluate(choose, [80 / (512 * 512), 0.5]) == 1  # 80 ms: the full frame at once
+    assert page.evaluate(choose, [95 / (512 * 512), 0.5]) == 0.5  # 95 ms: a quick frame first
     assert page.evaluate(choose, [160 / (512 * 512), 0.5]) == 0.5  # 160 ms: 40 ms at half size
     assert abs(page.evaluate(choose, [1e-3, 0.5]) - (40 / 262.144) ** 0.5) < 1e-6  # 262 ms: 40 ms at 0.39
     assert page.evaluate(choose, [1e-2, 0.5]) == 0.25  # 2.6 s: at the smallest (128x128)
@@ -167,6 +169,43 @@ def test_variants_mesh_environment_exposure(view_page: tuple[Any, PageLog]) -> N
         return window.frames_seen.map((f) => f.scale);
     }""")
     assert len(scales) == 2 and abs(scales[0] - (40 / 262.144) ** 0.5) < 1e-6 and scales[1] == 1, scales
+
+
+def test_full_frame_bands(view_page: tuple[Any, PageLog]) -> None:
+    # show()'s full frame is cut into bands of ~60 ms (at most 4; 4 while its cost is unknown), the
+    # page's tasks run between them; the pixels are those of one draw() whatever the number of bands
+    page, _ = view_page
+    bands = "([cost]) => window.bandsFor(cost, 512 * 512)"
+    assert page.evaluate(bands, [None]) == 4
+    assert page.evaluate(bands, [1e-5]) == 1  # 2.6 ms
+    assert page.evaluate(bands, [59 / (512 * 512)]) == 1
+    assert page.evaluate(bands, [100 / (512 * 512)]) == 2
+    assert page.evaluate(bands, [1e-2]) == 4  # 2.6 s
+    drawn = page.evaluate("""async () => {
+        const payload = await (await fetch("/payload?phrase=" + encodeURIComponent("clear-coated red car paint"))).json();
+        await window.view.show(payload);
+        const pixels = window.view.canvas.width * window.view.canvas.height;
+        const out = [];
+        window.view.quickScale = null;
+        for (const [edit, ms] of [[9001, 1], [9002, 100], [9003, 1e4]]) {
+            window.view.costs.set(window.view.shownKey(), ms / pixels);
+            let frames = 0;
+            const counted = () => frames++;
+            window.view.canvas.addEventListener("frame", counted);
+            await window.view.show(payload, { edit });
+            window.view.canvas.removeEventListener("frame", counted);
+            const mark = performance.getEntriesByName("cnlmc:drawn").find((m) => m.detail.edit === edit);
+            out.push({ bands: mark.detail.bands, frames, pixels: Array.from(window.view.readPixels()) });
+        }
+        window.view.quickScale = 0.5;
+        window.view.draw();
+        return { shown: out, draw: Array.from(window.view.readPixels()) };
+    }""")
+    one = np.array(drawn["draw"], np.int16)
+    assert [s["bands"] for s in drawn["shown"]] == [1, 2, 4]
+    for shown in drawn["shown"]:
+        assert shown["frames"] == 1  # one frame event, whatever its bands
+        assert np.abs(np.array(shown["pixels"], np.int16) - one).max() <= 1, shown["bands"]
 
 
 def test_no_console_errors(view_page: tuple[Any, PageLog]) -> None:

@@ -24,9 +24,17 @@ const tableKey = (table) => table.key ?? table.data; // the server's digest, or 
 // still reads, its highlight and edge softer — looked at for plastic, oak and glass).
 const QUICK_BUDGET_MS = 40;
 const MIN_QUICK_SCALE = 0.25;
-// show()'s full frame is drawn in this many bands of rows, the page's tasks run between them (our
-// choice: a quarter of a frame, 0.1-0.2 s on SwiftShader at load 20, is what a key typed meanwhile waits)
-const FULL_FRAME_BANDS = 4;
+// A full frame that takes at most FULL_BUDGET_MS is drawn at once, without a quick frame first (of
+// the 150 ms from a keystroke to the picture, 30-60 ms are the editor, the socket, the server and
+// the wait for the screen): the quick frame and its trip to the screen would only delay it, by
+// 40-50 ms on SwiftShader (docs/studio_view.md, "Latency"). Our choice.
+const FULL_BUDGET_MS = 90;
+// show()'s full frame is drawn in bands of rows of about BAND_MS each (at most MAX_BANDS, as many
+// when its cost is not known yet), the page's tasks run between them: a key typed meanwhile waits
+// for one band, not the whole frame. Our choice; each band costs a read-back and the mesh again
+// (4 bands: +20-50 % of a 512² frame on SwiftShader), so a frame that fits one band is one band.
+const BAND_MS = 60;
+const MAX_BANDS = 4;
 
 const RECT_PAD = 2; // render.py Renderer.RECT_PAD: the edge filter reads a pixel's neighbours
 
@@ -69,12 +77,19 @@ function inRows(rect, rows) {
 // The scale of the quick frame for a frame that costs `msPerPixel` (null: not measured yet) on
 // `pixels`: 1 (no quick frame) when the full frame fits the budget, else the size that fits it,
 // between MIN_QUICK_SCALE and `largest`.
-export function quickScaleFor(msPerPixel, pixels, largest, budgetMs = QUICK_BUDGET_MS) {
+export function quickScaleFor(msPerPixel, pixels, largest, budgetMs = QUICK_BUDGET_MS, fullBudgetMs = FULL_BUDGET_MS) {
   if (!largest || largest >= 1) return 1;
   if (msPerPixel === null || msPerPixel === undefined) return largest;
   const full = msPerPixel * pixels;
-  if (full <= budgetMs) return 1;
+  if (full <= Math.max(budgetMs, fullBudgetMs)) return 1;
   return Math.min(largest, Math.max(MIN_QUICK_SCALE, Math.sqrt(budgetMs / full)));
+}
+
+// The number of bands of show()'s full frame for a frame that costs `msPerPixel` (null: not
+// measured yet) on `pixels`: about `bandMs` each, between 1 and MAX_BANDS.
+export function bandsFor(msPerPixel, pixels, bandMs = BAND_MS) {
+  if (msPerPixel === null || msPerPixel === undefined) return MAX_BANDS;
+  return Math.min(MAX_BANDS, Math.max(1, Math.ceil((msPerPixel * pixels) / bandMs)));
 }
 const KEPT_MAPS = 24; // our choice: 8 materials' worth of maps (512² half-float RGBA + mips: 2.7 MB each)
 const KEPT_TABLES = 64; // our choice: split-sum tables (96 x 1 or 8 texels) of 32 recent looks
@@ -144,16 +159,18 @@ export class MaterialView {
     this.pruneTextures();
     mark("setup");
     const pixels = this.canvas.width * this.canvas.height;
-    const quick = quickScaleFor(this.costs.get(this.shownKey()), pixels, this.quickScale);
+    const cost = this.costs.get(this.shownKey());
+    const quick = quickScaleFor(cost, pixels, this.quickScale);
     if (quick < 1) {
       mark("quick-drawn", { scale: quick, ms: this.draw(quick) });
       await new Promise((resolve) => afterPaint(resolve)); // shown first
       mark("quick-shown");
       if (ticket !== this.shows) return null;
     }
-    const ms = await this.drawInBands(ticket);
+    const bands = bandsFor(cost, pixels);
+    const ms = await this.drawInBands(ticket, bands);
     if (ms === null) return null;
-    mark("drawn", { scale: 1, ms });
+    mark("drawn", { scale: 1, ms, bands });
     afterPaint(() => mark("shown"));
     return ms;
   }
@@ -330,11 +347,11 @@ export class MaterialView {
     return this.frameSteps(scale, 1).next().value;
   }
 
-  // show()'s full frame, in FULL_FRAME_BANDS bands with the page's tasks between them: a key typed
+  // show()'s full frame, in `bands` bands with the page's tasks between them: a key typed
   // meanwhile waits for a band, not the whole frame, and a newer show() stops it. Its time in ms,
   // or null when a newer show() came; a whole frame drawn meanwhile (an orbit) counts as it.
-  async drawInBands(ticket) {
-    const steps = this.frameSteps(1, FULL_FRAME_BANDS);
+  async drawInBands(ticket, bands = MAX_BANDS) {
+    const steps = this.frameSteps(1, bands);
     let step = steps.next(); // the first band: the frame's number is taken there
     const frame = this.frameNumber;
     while (!step.done) {
