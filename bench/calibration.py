@@ -38,6 +38,7 @@ Sharma, Wu & Dalal 2005). Spearman: ranks with ties averaged, then Pearson on th
 
     .venv/bin/python bench/calibration.py            # both datasets, summary + per-material tables
     .venv/bin/python bench/calibration.py --summary  # the numbers only
+    .venv/bin/python bench/calibration.py --summary --surface-gamut pointer  # + ΔE2000 in Pointer's gamut
 Exit status 2 when the shared data folder is missing.
 """
 
@@ -320,7 +321,9 @@ def srgb_linear(entry: dict[str, Any]) -> list[float] | None:
     return None
 
 
-def physicallybased(data: Path, verbose: bool) -> dict[str, Any]:
+def physicallybased(data: Path, verbose: bool, gamut: str = "none") -> dict[str, Any]:
+    """The physicallybased.info comparison; with gamut "pointer" also ΔE2000 with our pigment colours
+    mapped into Pointer's gamut of real surface colours (bench/surface_gamut.py, issue #15)."""
     items = json.loads((data / "physicallybased_materials.json").read_text("utf-8"))["data"]
     rows = []
     for item in items:
@@ -344,6 +347,8 @@ def physicallybased(data: Path, verbose: bool) -> dict[str, Any]:
                 row["de2000"] = ev.delta_e2000(ev.cielab(colour), ev.cielab(ours))
                 row["de_ok"] = 100 * math.dist(ev.oklab(colour), ev.oklab(ours))
                 row["hex"], row["ours_hex"] = ev.linear_to_hex(colour), ev.linear_to_hex(ours)
+                if gamut == "pointer":
+                    row |= pointer_colour(m, colour)
         rows.append(row)
     ok = [r for r in rows if not r["error"]]
     de = [r["de2000"] for r in ok if "de2000" in r]
@@ -378,6 +383,8 @@ def physicallybased(data: Path, verbose: bool) -> dict[str, Any]:
         f"  (n = {summary['n_roughness']})"
     )
     print(f"  IOR        MAE {fmt(summary['ior_mae'])}  (n = {summary['n_ior']})")
+    if gamut == "pointer":
+        summary |= pointer_summary(ok)
     if verbose:
         print(
             f"\n  {'name':<28}{'phrase':<28}{'metal':>6}{'ours':>6}{'ΔE00':>7}{'r':>6}{'our r':>7}{'ior':>7}{'ours':>7}"
@@ -395,11 +402,51 @@ def physicallybased(data: Path, verbose: bool) -> dict[str, Any]:
     return {"summary": summary, "rows": rows}
 
 
+def pointer_colour(m: dict[str, Any], colour: Sequence[float]) -> dict[str, Any]:
+    """ΔE2000 of their colour against ours with the pigment colours in Pointer's gamut."""
+    from surface_gamut import in_surface_gamut
+
+    ours = ev.apparent_colour(in_surface_gamut(m))
+    moved = ours != ev.apparent_colour(m)
+    return {"de2000_pointer": ev.delta_e2000(ev.cielab(colour), ev.cielab(ours)), "pointer_moved": moved}
+
+
+def pointer_summary(ok: Sequence[dict[str, Any]]) -> dict[str, Any]:
+    """ΔE2000 with and without Pointer's gamut: all coloured rows, and the rows whose colour moved."""
+    rows = [r for r in ok if "de2000_pointer" in r]
+    moved = [r for r in rows if r["pointer_moved"]]
+    summary = {
+        "de2000_median_pointer": statistics.median(r["de2000_pointer"] for r in rows) if rows else math.nan,
+        "n_pointer_moved": len(moved),
+        "pointer_closer": sum(r["de2000_pointer"] < r["de2000"] for r in moved),
+        "pointer_further": sum(r["de2000_pointer"] > r["de2000"] for r in moved),
+    }
+    print(
+        f"  in Pointer's gamut: ΔE2000 median {fmt(summary['de2000_median_pointer'], 1)} (all {len(rows)} coloured);"
+        f" colour moved for {len(moved)}: {summary['pointer_closer']} closer, {summary['pointer_further']} further"
+    )
+    if moved:
+        before = statistics.median(r["de2000"] for r in moved)
+        after = statistics.median(r["de2000_pointer"] for r in moved)
+        print(f"    the moved ones: ΔE2000 median {before:.1f} -> {after:.1f}")
+    for r in sorted(moved, key=lambda r: r["de2000_pointer"] - r["de2000"]):
+        print(
+            f"    {r['name']:<28}{r['phrase']:<28}{r['hex']} vs {r['ours_hex']}: {r['de2000']:5.1f} -> {r['de2000_pointer']:5.1f}"
+        )
+    return summary
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--data", type=Path, default=DATA, help="the shared data folder (default ../shared/data)")
     ap.add_argument("--summary", action="store_true", help="the numbers only, no per-material tables")
     ap.add_argument("--json", type=Path, help="write the summaries and rows as JSON")
+    ap.add_argument(
+        "--surface-gamut",
+        choices=("none", "pointer"),
+        default="none",
+        help="pointer: also ΔE2000 with our pigment colours in Pointer's gamut (bench/surface_gamut.py)",
+    )
     args = ap.parse_args(argv)
     needed = [args.data / "merl_fits" / name for name in FITS.values()]
     needed.append(args.data / "physicallybased_materials.json")
@@ -409,7 +456,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             f"calibration: the shared data folder is missing ({', '.join(missing)}); pass --data DIR", file=sys.stderr
         )
         return 2
-    out = {"merl": merl(args.data, not args.summary), "physicallybased": physicallybased(args.data, not args.summary)}
+    out = {
+        "merl": merl(args.data, not args.summary),
+        "physicallybased": physicallybased(args.data, not args.summary, args.surface_gamut),
+    }
     if args.json:
         args.json.write_text(json.dumps(out, indent=1, ensure_ascii=False, default=float))
     return 0

@@ -18,6 +18,7 @@ same encoded images, hue and chroma removed): it separates gloss and shading fro
 
     .venv/bin/python bench/merl_render.py                 # table, medians, writes docs/merl_worst10.png
     .venv/bin/python bench/merl_render.py --size 96 --no-sheet --exposure p99
+    .venv/bin/python bench/merl_render.py --surface-gamut pointer   # also in Pointer's gamut; docs/merl_pointer.png
 Exit status 2 when the shared data folder is missing.
 """
 
@@ -147,7 +148,15 @@ def rgba8(srgb: np.ndarray) -> np.ndarray:
     return (out * 255 + 0.5).astype(np.uint8)
 
 
-def compare_all(data: Path, size: int, exposure: str = "mean") -> list[dict[str, Any]]:
+def score(ref: np.ndarray, ours: np.ndarray, coverage: np.ndarray) -> dict[str, Any]:
+    """FLIP of our encoded image against the fit's, in colour and on luma only."""
+    value, error_map = flip(ref, ours, coverage)
+    return {"flip": value, "flip_grey": flip(grey(ref), grey(ours), coverage)[0], "map": error_map, "ours_png": ours}
+
+
+def compare_all(data: Path, size: int, exposure: str = "mean", gamut: str = "none") -> list[dict[str, Any]]:
+    """Each MERL material's row; with gamut "pointer" also row["pointer"]: the score with our pigment
+    colours mapped into Pointer's gamut (bench/surface_gamut.py), and row["mapped"]: whether they moved."""
     fits = parse_low_fits(data / "merl_fits" / cal.FITS["low"])
     sphere = Sphere(size)
     rows = []
@@ -158,13 +167,29 @@ def compare_all(data: Path, size: int, exposure: str = "mean") -> list[dict[str,
         if material is not None:
             ref = exposed(fit_image(sphere, fits[name]), sphere.coverage, exposure)
             ours = exposed(ours_image(sphere, material), sphere.coverage, exposure)
-            row["flip"], row["map"] = flip(ref, ours, sphere.coverage)
-            row["flip_grey"], _ = flip(grey(ref), grey(ours), sphere.coverage)
-            row["fit_png"], row["ours_png"] = ref, ours
+            row |= score(ref, ours, sphere.coverage) | {"fit_png": ref}
+            if gamut == "pointer":
+                row |= pointer_score(sphere, material, ref, ours, exposure)
         rows.append(row)
         scores = f"{cal.fmt(row.get('flip', float('nan'))):>7}{cal.fmt(row.get('flip_grey', float('nan'))):>7}"
+        if "pointer" in row:
+            moved = "" if row["mapped"] else "  (in gamut)"
+            scores += f"{cal.fmt(row['pointer']['flip']):>9}{cal.fmt(row['pointer']['flip_grey']):>7}{moved}"
         print(f"  {name:<26}{phrase:<32}{scores}", flush=True)
     return rows
+
+
+def pointer_score(
+    sphere: Sphere, material: dict[str, Any], ref: np.ndarray, ours: np.ndarray, exposure: str
+) -> dict[str, Any]:
+    """The row's score with the pigment colours in Pointer's gamut (the same image when none moved)."""
+    from surface_gamut import in_surface_gamut
+
+    mapped = in_surface_gamut(material)
+    if mapped == material:
+        return {"mapped": False, "pointer": score(ref, ours, sphere.coverage)}
+    image = exposed(ours_image(sphere, mapped), sphere.coverage, exposure)
+    return {"mapped": True, "pointer": score(ref, image, sphere.coverage)}
 
 
 def write_sheet(rows: list[dict[str, Any]], path: Path) -> None:
@@ -184,29 +209,71 @@ def write_sheet(rows: list[dict[str, Any]], path: Path) -> None:
     print(f"wrote {path}")
 
 
+def write_pointer_sheet(rows: list[dict[str, Any]], path: Path) -> None:
+    """fit | ours as compiled | ours in Pointer's gamut | FLIP map of the latter, for the ten materials
+    whose FLIP the mapping changed most (better or worse), worst as compiled first."""
+    from cnlmc.backends.preview.sheet import label, png_bytes, sheet
+    from cnlmc.output import write_atomic
+
+    changed = sorted((r for r in rows if r.get("mapped")), key=lambda r: -abs(r["pointer"]["flip"] - r["flip"]))
+    moved = sorted(changed[:10], key=lambda r: -r["flip"])
+    tiles = [
+        [
+            label(rgba8(r["fit_png"]), f"fit: {r['name']}"),
+            label(rgba8(r["ours_png"]), f"ours {r['flip']:.3f}"),
+            label(rgba8(r["pointer"]["ours_png"]), f"Pointer {r['pointer']['flip']:.3f}"),
+            label(rgba8(magma(r["pointer"]["map"])), "FLIP map (Pointer)"),
+        ]
+        for r in moved
+    ]
+    write_atomic(path, png_bytes(sheet(tiles)))
+    print(f"wrote {path}")
+
+
+def summarise(title: str, scored: list[dict[str, Any]], total: int) -> None:
+    """Median, mean, max, the count within the goal, the luma-only median and the worst ten."""
+    scores = [r["flip"] for r in scored]
+    median = statistics.median(scores)
+    print(
+        f"  {title}: compared {len(scores)}/{total}; FLIP median {median:.3f}, mean {statistics.fmean(scores):.3f}, "
+        f"max {max(scores):.3f}; <= {GOAL}: {sum(s <= GOAL for s in scores)}; goal median <= {GOAL}: {median <= GOAL}"
+    )
+    greys = [r["flip_grey"] for r in scored]
+    print(f"    FLIP on luma only (gloss and shading, colour removed): median {statistics.median(greys):.3f}")
+    worst = sorted(scored, key=lambda r: -r["flip"])[:10]
+    print("    worst ten: " + ", ".join(f"{r['name']} {r['flip']:.3f}" for r in worst))
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--data", type=Path, default=cal.DATA, help="the shared data folder (default ../shared/data)")
     ap.add_argument("--size", type=int, default=128, help="image side in pixels (default 128)")
-    ap.add_argument("--sheet", type=Path, default=ROOT / "docs" / "merl_worst10.png")
+    ap.add_argument("--sheet", type=Path, help="the sheet (default docs/merl_worst10.png; docs/merl_pointer.png)")
     ap.add_argument("--exposure", choices=("mean", "p99"), default="mean", help="the exposure normalisation")
+    ap.add_argument(
+        "--surface-gamut",
+        choices=("none", "pointer"),
+        default="none",
+        help="pointer: also score our phrases with their pigment colours in Pointer's gamut (bench/surface_gamut.py)",
+    )
     ap.add_argument("--no-sheet", action="store_true", help="print the numbers only")
     args = ap.parse_args(argv)
     if not (args.data / "merl_fits").is_dir():
         print(f"error: {args.data / 'merl_fits'} not found; pass --data DIR (the shared data folder)")
         return 2
-    print(f"MERL: FLIP (fit | ours, exposure {args.exposure}, LDR, sphere pixels); columns: RGB, luma only")
-    rows = compare_all(args.data, args.size, args.exposure)
-    scores = [r["flip"] for r in rows if "flip" in r]
-    median = statistics.median(scores)
-    print(
-        f"  compared {len(scores)}/{len(rows)}; FLIP median {median:.3f}, mean {statistics.fmean(scores):.3f}, "
-        f"max {max(scores):.3f}; <= {GOAL}: {sum(s <= GOAL for s in scores)}; goal median <= {GOAL}: {median <= GOAL}"
-    )
-    greys = [r["flip_grey"] for r in rows if "flip_grey" in r]
-    print(f"  FLIP on luma only (gloss and shading, colour removed): median {statistics.median(greys):.3f}")
+    columns = "RGB, luma only" + ("; the same in Pointer's gamut" if args.surface_gamut == "pointer" else "")
+    print(f"MERL: FLIP (fit | ours, exposure {args.exposure}, LDR, sphere pixels); columns: {columns}")
+    rows = compare_all(args.data, args.size, args.exposure, args.surface_gamut)
+    scored = [r for r in rows if "flip" in r]
+    summarise("as compiled", scored, len(rows))
+    if args.surface_gamut == "pointer":
+        print(f"  pigment colours moved into Pointer's gamut: {sum(r['mapped'] for r in scored)}/{len(scored)}")
+        summarise("in Pointer's gamut", [r["pointer"] | {"name": r["name"]} for r in scored], len(rows))
     if not args.no_sheet:
-        write_sheet(rows, args.sheet)
+        if args.surface_gamut == "pointer":
+            write_pointer_sheet(rows, args.sheet or ROOT / "docs" / "merl_pointer.png")
+        else:
+            write_sheet(rows, args.sheet or ROOT / "docs" / "merl_worst10.png")
     return 0
 
 

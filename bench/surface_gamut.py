@@ -46,6 +46,7 @@ D65_XYZ = np.array([0.95047, 1.0, 1.08883])
 M_BFD = np.array([[0.8951, 0.2664, -0.1614], [-0.7502, 1.7135, 0.0367], [0.0389, -0.0685, 1.0296]])
 PIGMENTED_BASES = ("dielectric", "diffuse")
 PIGMENT_KEYS = ("base_color", "sheen_color")
+CHROMA_TOLERANCE = 0.01  # C*ab: a white's rounding chroma at L* 100, where the bound is 0, is not "outside"
 
 
 def xy_to_xyz(xy: Sequence[float]) -> np.ndarray:
@@ -57,7 +58,7 @@ def xy_to_xyz(xy: Sequence[float]) -> np.ndarray:
 def bradford(source_white: np.ndarray, target_white: np.ndarray) -> np.ndarray:
     """The 3×3 linear Bradford adaptation XYZ(source white) -> XYZ(target white)."""
     gain = (M_BFD @ target_white) / (M_BFD @ source_white)
-    return np.linalg.inv(M_BFD) @ np.diag(gain) @ M_BFD
+    return np.asarray(np.linalg.inv(M_BFD) @ np.diag(gain) @ M_BFD, float)
 
 
 def _f(t: np.ndarray) -> np.ndarray:
@@ -77,7 +78,7 @@ def xyz_to_lab(xyz: np.ndarray, white: np.ndarray) -> np.ndarray:
 
 def lab_to_xyz(lab: np.ndarray, white: np.ndarray) -> np.ndarray:
     fy = (lab[0] + 16) / 116
-    return white * _f_inverse(np.array([fy + lab[1] / 500, fy, fy - lab[2] / 200]))
+    return np.asarray(white * _f_inverse(np.array([fy + lab[1] / 500, fy, fy - lab[2] / 200])), float)
 
 
 @dataclass(frozen=True)
@@ -102,7 +103,7 @@ class SurfaceGamut:
 
     def adapt_in(self) -> np.ndarray:
         """Linear sRGB (D65) -> XYZ under the table's illuminant."""
-        return bradford(D65_XYZ, self.white) @ SRGB_TO_XYZ
+        return np.asarray(bradford(D65_XYZ, self.white) @ SRGB_TO_XYZ, float)
 
     def lch(self, rgb: Sequence[float]) -> tuple[float, float, float]:
         """Linear sRGB -> (L*, C*ab, h_ab degrees) in the table's CIELAB."""
@@ -113,7 +114,7 @@ class SurfaceGamut:
         """The colour with its C*ab limited to Pointer's bound (L* and h_ab kept); unchanged when inside."""
         lightness, chroma, hue = self.lch(rgb)
         limit = self.bound(lightness, hue)
-        if chroma <= limit or chroma <= 0.0:
+        if chroma <= limit + CHROMA_TOLERANCE:
             return (float(rgb[0]), float(rgb[1]), float(rgb[2]))
         h = math.radians(hue)
         lab = np.array([lightness, limit * math.cos(h), limit * math.sin(h)])
