@@ -82,7 +82,9 @@ class Renderer:
 
     # -- what a frame is made from
     def shader(self, material: MaterialLike, glsl_options: Mapping[str, Any] | None = None) -> MaterialShader:
-        """The material's shader (GLSL library and plan), made once per content and options."""
+        """The material's shader (GLSL library and plan), made once per content and options; a
+        translucent material is given as it is (its boundary is taken here: applied twice, a thin
+        sheet's front would be darkened twice)."""
         typed, options = boundary_material(as_material(material)), self.glsl_options(glsl_options)
         key = ("shader", *shader_key(typed, options))
         return self.resources.once(key, lambda: material_shader(typed, options, self.resources.shader_writer))
@@ -117,8 +119,9 @@ class Renderer:
         """Draw into the targets (no read-back); `overlay(renderer, scene)` draws extra geometry."""
         self.resources.make_current()  # ours must be the current context (another may have been made current)
         tier = parse_tier(tier) if isinstance(tier, str) else tier
-        material = boundary_material(as_material(material))  # a translucent body: its boundary (subsurface.py)
-        shader = self.shader(material, glsl_options)
+        typed = as_material(material)
+        shader = self.shader(typed, glsl_options)  # takes a translucent body's boundary itself
+        material = boundary_material(typed)  # a translucent body: its boundary (subsurface.py), once
         res = env_resources(self.resources, scene.env)
         t = targets(self.resources, self.width, self.height, self.msaa)
         model = np.eye(4) if model is None else model
@@ -168,7 +171,7 @@ class Renderer:
         """Render one material; returns the sRGB image (top row first) and the frame time."""
         scene = scene or self.scene(mesh, env)
         tier = parse_tier(tier) if isinstance(tier, str) else tier
-        material = boundary_material(as_material(material))  # a translucent body: its boundary (subsurface.py)
+        material = as_material(material)  # shader() and draw() take a translucent body's boundary, once each
         shader = self.shader(material, glsl_options)
         warm_key = (shader.key, tier.name, scene.mesh.key, scene.env.content_key, self.width, self.height)
         if self.resources.first_use(warm_key):  # the first frame compiles and uploads: drawn once untimed
@@ -191,7 +194,7 @@ class Renderer:
         repeats: int = 5,
     ) -> float:
         """Median frame time (ms) over `repeats` frames, after one warm-up frame."""
-        material = boundary_material(as_material(material))  # a translucent body: its boundary (subsurface.py)
+        material = as_material(material)  # draw() takes a translucent body's boundary, once
         self.draw(scene, material, tier, glsl_options)
         self.ctx.finish()
         times = []

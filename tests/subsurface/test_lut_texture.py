@@ -59,10 +59,9 @@ def renderer(gl_available):
         yield made
 
 
-def boundary_of(phrase: str) -> Material:
-    from cnlmc.backends.preview.subsurface import boundary_material
-
-    return boundary_material(Material.from_ir(compile_source(phrase + "\n").ir["materials"][0]))
+def material_of(phrase: str) -> Material:
+    """The phrase's material as the renderer takes it (Renderer.shader takes a body's boundary)."""
+    return Material.from_ir(compile_source(phrase + "\n").ir["materials"][0])
 
 
 def fragment_limits(program) -> tuple[int, int]:
@@ -95,7 +94,7 @@ def test_the_count_sees_an_array_element_by_element(renderer):
 def test_every_preview_program_fits_opengl_es_3(renderer, phrase):
     from cnlmc.backends.preview import gl
 
-    shader = renderer.shader(boundary_of(phrase), None)
+    shader = renderer.shader(material_of(phrase), None)
     for ibl in IBL_KINDS:
         fragment = gl.preview_fragment(shader.name, shader.library, shader.plan, ibl)
         program = renderer.ctx.program(vertex_shader=PASS_THROUGH, fragment_shader=fragment)
@@ -119,7 +118,7 @@ def test_the_texture_look_up_is_the_table_look_up(renderer):
     grid = np.stack(np.meshgrid(np.clip(cosines, -1.5, 1.5), rhos, indexing="ij"), -1).astype(np.float32)
     height, width = grid.shape[:2]
     ctx = renderer.ctx
-    library = renderer.shader(boundary_of("wax"), None).library
+    library = renderer.shader(material_of("wax"), None).library
     program = ctx.program(vertex_shader=PASS_THROUGH, fragment_shader="#version 330 core\n" + library + LOOKUP_MAIN)
     probe = ctx.texture((width, height), 4, np.concatenate([grid, np.zeros_like(grid)], -1).tobytes(), dtype="f4")
     subsurface_table(renderer.resources).use(0)
