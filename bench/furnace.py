@@ -13,8 +13,12 @@ disc mean 2 int A mu dmu is from it). What the sphere shows decides the IR's mat
 - glass: reflected plus transmitted light, R(mu) + c^2 T(mu) T_in / (1 - R_in) (c the tint per
   crossing, T_in/R_in the inside interface at the refracted angle, its inter-reflections summed):
   lossless clear glass shows ~1;
-- subsurface (a volume, a thin sheet): the surface model's A (the light inside is the SSS
-  package's; those rows are labelled `volume`/`thin`).
+- a volume: the surface model's A, whose base colour is the medium's colour (the dipole's total
+  diffuse reflectance Rd) under the IR's interface: the classical dipole BSSRDF's (1 - F(mu)) Rd
+  (1 - F_avg) plus the interface's own reflection; a colour map (marble's veins) is not in the
+  medium, so not in the number. Mitsuba renders the medium itself (`volpathmis`);
+- a thin sheet, lit from both sides: the Kubelka-Munk slab's R + T (reflected and let through), under
+  the same interface (`sheet_material`).
 Prints one row per material (IR, preview, Mitsuba, MaterialX, the ratios, the kind) and the
 counts within 5 % per target; `--all` takes every stdlib noun plus coats and variants.
 
@@ -28,7 +32,7 @@ import subprocess
 import sys
 import tempfile
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -130,7 +134,25 @@ def albedo_curve(material, grid: np.ndarray, n_samples: int = 1024) -> np.ndarra
 
     if material.model.base == "glass" and not material.model.subsurface:
         return glass_curve(material, grid)
+    if material.model.subsurface == "thin":
+        return albedo_full(sheet_material(material), grid, n_samples)
+    if material.model.subsurface == "volume":  # the medium's colour: a colour map is not in the medium
+        return albedo_full(replace(material, maps={}), grid, n_samples)
     return albedo_full(shown_material(material), grid, n_samples)
+
+
+def sheet_material(material):
+    """A thin sheet under the white sky, lit from both sides: what the sheet reflects plus what comes
+    through from behind, the Kubelka-Munk slab's R + T at the IR's thickness (its medium: the IR's
+    subsurface colour and radius), both under the same interface ((1 - F(mu)) out, (1 - F_avg) in; A
+    is linear in the colour): the surface model with R + T as its colour."""
+    from cnlmc.bsdf.subsurface import medium_of, slab
+
+    params, sub = material.params, material.params.subsurface
+    medium = medium_of(sub.color, sub.radius, float(sub.anisotropy), float(params.ior))
+    reflected, through = slab(medium, float(sub.thickness))
+    colour = tuple(float(v) for v in np.clip(reflected + through, 0.0, 1.0))
+    return replace(shown_material(material), params=replace(params, base_color=colour))
 
 
 def ir_albedo(material, n_samples: int = 1024) -> np.ndarray:
@@ -201,12 +223,18 @@ def preview_image(renderer, scene, material, tier: str) -> tuple[np.ndarray, np.
 
 
 def mitsuba_image(scene, material, size: int, spp: int) -> tuple[np.ndarray, np.ndarray]:
-    """(linear RGB, coverage) of the exported Mitsuba scene under the white sky."""
+    """(linear RGB, coverage) of the exported Mitsuba scene under the white sky; a volume or a thin
+    sheet as the export writes it, with the volume path tracer (`subsurface_reference`: the medium as
+    the sphere's interior, `volpathmis`; the surface integrator sees the boundary alone)."""
     from cnlmc.backends.preview.mitsuba_scene import export_scene, render_scene
+    from cnlmc.backends.preview.subsurface_reference import render_subsurface
 
     with tempfile.TemporaryDirectory() as folder:
-        path = export_scene(material, scene, folder, size, size, spp=spp)
-        image, _ = render_scene(path, spp=spp)
+        if material.model.subsurface:
+            image, _ = render_subsurface(material, scene, folder, size, spp)
+        else:
+            path = export_scene(material, scene, folder, size, size, spp=spp)
+            image, _ = render_scene(path, spp=spp)
     alpha = image[..., 3]
     return image[..., :3] / np.maximum(alpha, 1e-6)[..., None], alpha
 
