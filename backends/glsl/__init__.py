@@ -49,11 +49,15 @@ CAPABILITIES: dict[str, tuple[str, str]] = {
         "(flakes.glsl): the mean of the flakes; sparkle (how many flakes a pixel sees) is the renderer's",
     ),
     "subsurface.volume": (
-        "drop",
-        "no light inside the body in the exported GLSL: the dielectric boundary over base_color; the preview "
-        "draws it (docs/subsurface.md)",
+        "exact",
+        "the preview's body term, the same code (cnlm_subsurface, snippets/subsurface.glsl): cnlm_bsdf is the "
+        "boundary, the body adds pre-integrated diffusion and the light through it (docs/glsl.md 'Subsurface')",
     ),
-    "subsurface.thin": ("drop", "no transmission through the sheet in the exported GLSL: its front face only"),
+    "subsurface.thin": (
+        "exact",
+        "the preview's thin wall (cnlm_subsurface): cnlm_bsdf is the sheet's front, the body adds the Kubelka-Munk "
+        "transmittance of the light behind it",
+    ),
     "maps.base_color": ("bake", _BAKED),
     "maps.normal": ("bake", _BAKED),
     "maps.roughness": ("bake", _BAKED),
@@ -64,6 +68,15 @@ CAPABILITIES: dict[str, tuple[str, str]] = {
     ),
     "maps.metallic": ("drop", "no IR model reads a metallic map"),
 }
+
+
+def boundary_of(material: Material) -> Material:
+    """What cnlm_bsdf draws: a translucent body's boundary (a volume: its specular lobe, base colour
+    black; a thin sheet: its front), as the preview draws it; cnlm_subsurface adds the body's light.
+    Any other material as it is."""
+    from ..preview.subsurface import boundary_material
+
+    return boundary_material(material)
 
 
 class GlslTarget(Target):
@@ -81,8 +94,9 @@ class GlslTarget(Target):
         main = f"{document.materials[0].name}.glsl" if document.materials else "materials.glsl"
 
         def emit_one(material: Material) -> list[Artifact]:
-            files, images = bake_sampled_maps(material, options, main)
-            return [*emit_material(material, opts, self.writer, files), *images]
+            shaded = boundary_of(material)
+            files, images = bake_sampled_maps(shaded, options, main)
+            return [*emit_material(shaded, opts, self.writer, files), *images]
 
         return emit_each(self, document, emit_one)
 

@@ -83,7 +83,12 @@ def library_source(material: Material, options: GlslOptions, writer: ShaderWrite
 
 
 def standalone_sources(
-    material: Material, library: str, options: GlslOptions, writer: ShaderWriter, transmission: bool = False
+    material: Material,
+    library: str,
+    options: GlslOptions,
+    writer: ShaderWriter,
+    transmission: bool = False,
+    subsurface: bool = False,
 ) -> tuple[str, str]:
     profile = PROFILES[options.profile]
     common = {
@@ -97,6 +102,7 @@ def standalone_sources(
         library=library,
         main_snippets=[writer.snippet("srgb")],
         transmission=transmission,
+        subsurface=subsurface,
         **common,
     )
     return frag, writer.render("standalone.vert.j2", **common)
@@ -110,6 +116,17 @@ BTDF_RETURNS = (
     "BTDF f_t for v and l on opposite sides of n (outside = the side n points to, index 1; "
     "inside index cnlm_ior), radiance transport (includes the eta_v^2 factor: f_t(v, l)/eta_v^2 "
     "is symmetric), linear Rec.709 RGB tinted by the base colour, not multiplied by |cos(theta_l)|"
+)
+
+
+SUBSURFACE_ENTRY_POINT = (
+    "vec3 cnlm_subsurface(vec3 p, vec3 n, vec3 v, vec3 l, vec3 light, vec3 front, vec3 back, float curvature)"
+)
+SUBSURFACE_RETURNS = (
+    "the translucent body's radiance towards v (add it to cnlm_bsdf's, which is the boundary alone): p the "
+    "position in scene units of cnlm_sss_unit metres, n the unit normal, l the unit direction to the light, light "
+    "its irradiance at normal incidence, front/back the environment's irradiance / pi around n and -n, curvature "
+    "1/r in 1/scene units (cnlm_sss_curvature(n, p) in a fragment shader)"
 )
 
 
@@ -129,6 +146,8 @@ def sidecar(
 ) -> dict[str, Any]:
     maps = {role: ref.to_ir() for role, ref in material.maps.items()}
     extra = {"btdf_entry_points": BTDF_ENTRY_POINTS, "btdf_returns": BTDF_RETURNS} if plan.transmission else {}
+    if plan.subsurface:
+        extra = {**extra, "subsurface_entry_points": [SUBSURFACE_ENTRY_POINT], "subsurface_returns": SUBSURFACE_RETURNS}
     return {
         "cnlmc_glsl": 1,
         "material": material.name,
@@ -174,7 +193,7 @@ def emit_material(
     if "library" in parts:
         artifacts.append(Artifact(f"{name}.glsl", library))
     if "standalone" in parts:
-        frag, vert = standalone_sources(material, library, options, writer, plan.transmission)
+        frag, vert = standalone_sources(material, library, options, writer, plan.transmission, plan.subsurface)
         artifacts += [Artifact(f"{name}.frag", frag), Artifact(f"{name}.vert", vert)]
     files = [a.name for a in artifacts]
     meta = sidecar(material, plan, options, files, maps_files)

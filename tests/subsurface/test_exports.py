@@ -97,7 +97,7 @@ def test_gltf_validates_and_writes_diffuse_transmission_and_volume(ir, tmp_path)
     assert any("NOT ratified" in m for m in notes_about(result, "subsurface.thin"))
 
 
-def test_glsl_compiles_and_says_it_draws_no_light_inside(ir, tmp_path):
+def test_glsl_compiles_and_draws_the_light_inside(ir, tmp_path):
     glslang = shutil.which("glslangValidator")
     if glslang is None:
         pytest.skip("glslangValidator is not installed (apt-get install glslang-tools)")
@@ -109,4 +109,8 @@ def test_glsl_compiles_and_says_it_draws_no_light_inside(ir, tmp_path):
         path.write_text(artifact.content)
         done = subprocess.run([glslang, str(path)], capture_output=True, text=True, check=False)
         assert done.returncode == 0, done.stdout + done.stderr
-    assert notes_about(result, "subsurface.volume") and notes_about(result, "subsurface.thin")
+    # the body term is carried (cnlm_subsurface, as the preview draws it): no note, the table beside it
+    assert not notes_about(result, "subsurface.volume") and not notes_about(result, "subsurface.thin")
+    names = {Path(a.name).name for a in result.artifacts}
+    assert {"wax_subsurface_lut.png", "backlit_leaf_subsurface_lut.png"} <= names
+    assert "white_plastic_subsurface_lut.png" not in names
