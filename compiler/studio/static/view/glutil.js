@@ -60,14 +60,18 @@ export function framebufferFor(gl, texture, level = 0, depth = null) {
   return fbo;
 }
 
-// The frame's targets: HDR colour (half float) with depth, the quarter-size background and, for
+// The frame's targets: HDR colour (32-bit float) with depth, the quarter-size background and, for
 // a frame drawn smaller than the canvas (`scaled`), the 8-bit image that is then stretched onto it.
 export class Targets {
   constructor(gl, width, height, scaled = false) {
     this.gl = gl;
     this.width = width;
     this.height = height;
-    this.hdr = floatTexture(gl, width, height, null);
+    // the object layer in 32-bit floats, read texel by texel (the preview's is half float: SwiftShader
+    // converts each half-float texel it clears, writes and reads, 12 % of a 512² frame of red plastic)
+    this.hdr = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, this.hdr);
+    gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, width, height);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
     this.depth = gl.createRenderbuffer();
@@ -80,12 +84,19 @@ export class Targets {
     this.backgroundFbo = framebufferFor(gl, this.background);
     this.ldr = null;
     this.ldrFbo = null;
-    if (scaled) {
-      this.ldr = gl.createTexture();
-      gl.bindTexture(gl.TEXTURE_2D, this.ldr);
-      gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, width, height);
-      this.ldrFbo = framebufferFor(gl, this.ldr);
-    }
+    if (scaled) [this.ldr, this.ldrFbo] = byteTarget(gl, width, height);
+    // the background's view (MaterialView.keepBackground): what `background` was drawn for, and
+    // the whole frame's background tone-mapped (8-bit, made when a second frame has the same view)
+    this.backgroundView = null;
+    this.toned = null;
+    this.tonedFbo = null;
+    this.tonedView = null;
+  }
+
+  // The 8-bit image of the tone-mapped background (made on first use).
+  tonedTarget() {
+    if (!this.toned) [this.toned, this.tonedFbo] = byteTarget(this.gl, this.width, this.height);
+    return this.tonedFbo;
   }
 
   release() {
@@ -95,11 +106,20 @@ export class Targets {
     gl.deleteTexture(this.hdr);
     gl.deleteTexture(this.background);
     gl.deleteRenderbuffer(this.depth);
-    if (this.ldr) {
-      gl.deleteFramebuffer(this.ldrFbo);
-      gl.deleteTexture(this.ldr);
+    for (const [fbo, tex] of [[this.ldrFbo, this.ldr], [this.tonedFbo, this.toned]]) {
+      if (!tex) continue;
+      gl.deleteFramebuffer(fbo);
+      gl.deleteTexture(tex);
     }
   }
+}
+
+// An RGBA8 texture (width x height) and the framebuffer drawing into it.
+function byteTarget(gl, width, height) {
+  const tex = gl.createTexture();
+  gl.bindTexture(gl.TEXTURE_2D, tex);
+  gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, width, height);
+  return [tex, framebufferFor(gl, tex)];
 }
 
 const SETTERS = {

@@ -386,7 +386,7 @@ export class MaterialView {
       cameras.push([cell, this.orbit.camera(this.mesh.lo, this.mesh.hi, cell[2] / cell[3])]);
     }
     const entries = this.entries;
-    this.drawBackground(cameras);
+    const kept = this.keepBackground(t, cameras);
     const rects = cameras.map(([cell, camera], i) => [cell, entries[i] ? this.objectRect(cell, camera) : null]);
     let toned = 0;
     for (let band = 0; band < bands; band++) {
@@ -394,7 +394,7 @@ export class MaterialView {
       const rows = [Math.round((band * height) / bands), Math.round(((band + 1) * height) / bands)];
       cameras.forEach(([cell, camera], i) => entries[i] && this.drawObject(entries[i], cell, camera, rows));
       const upTo = last ? height : rows[1] - 1;
-      this.drawTonemap(rects, [toned, upTo]);
+      this.drawTonemap(rects, [toned, upTo], kept);
       toned = upTo;
       if (last && t.ldr) {
         gl.bindFramebuffer(gl.READ_FRAMEBUFFER, t.ldrFbo);
@@ -476,6 +476,29 @@ export class MaterialView {
     gl.disable(gl.DEPTH_TEST);
   }
 
+  // The frame's background (the blurred environment behind the objects, and around them the
+  // tone-mapped background alone) depends on the view only: the cells' cameras, the environment
+  // and the exposure, not the materials. A frame of a new view draws it; the next frame of the same
+  // view keeps the blurred image and tone-maps the whole background once into `t.toned`; from then
+  // on a frame (an edit) copies the pixels around its objects from there (the same program on the
+  // same inputs: the same pixels) instead of tone-mapping them again. True when `t.toned` holds them.
+  keepBackground(t, cameras) {
+    const view = JSON.stringify([this.exposure, cameras.map(([cell, camera]) => [cell, camera.viewProjection])]);
+    if (view !== t.backgroundView || this.environment !== t.backgroundEnv) {
+      this.drawBackground(cameras);
+      [t.backgroundView, t.backgroundEnv, t.tonedView] = [view, this.environment, null];
+      return false;
+    }
+    if (t.tonedView !== view) {
+      const gl = this.gl;
+      this.bindTonemapInputs(t.tonedTarget());
+      this.useTonemap(this.backgroundOnlyProgram);
+      gl.drawArrays(gl.TRIANGLES, 0, 3);
+      t.tonedView = view;
+    }
+    return true;
+  }
+
   drawBackground(cameras) {
     const gl = this.gl, t = this.targets, prog = this.backgroundProgram;
     gl.bindFramebuffer(gl.FRAMEBUFFER, t.backgroundFbo);
@@ -503,15 +526,10 @@ export class MaterialView {
   // Edge filter, background, exposure, ACES and sRGB as the preview's tonemap() runs them: the
   // whole pass inside each cell's object rectangle, the background alone around it (no rectangle:
   // the whole cell). `cells`: [[cell, rect or null], ...]; `rows`: only rows [rows[0], rows[1]).
-  drawTonemap(cells, rows = null) {
+  // `kept`: the background around the rectangles is copied from `targets.toned` (keepBackground).
+  drawTonemap(cells, rows = null, kept = false) {
     const gl = this.gl, t = this.targets;
-    gl.bindFramebuffer(gl.FRAMEBUFFER, t.ldrFbo); // null (the canvas) for a full-size frame
-    gl.viewport(0, 0, t.width, t.height);
-    gl.activeTexture(gl.TEXTURE0);
-    gl.bindTexture(gl.TEXTURE_2D, t.hdr);
-    gl.activeTexture(gl.TEXTURE1);
-    gl.bindTexture(gl.TEXTURE_2D, t.background);
-    gl.bindVertexArray(this.emptyVao);
+    this.bindTonemapInputs(t.ldrFbo); // null (the canvas) for a full-size frame
     gl.enable(gl.SCISSOR_TEST);
     const within = (r) => (rows ? inRows(r, rows) : r);
     this.useTonemap(this.tonemapProgram);
@@ -521,15 +539,35 @@ export class MaterialView {
       gl.scissor(...part);
       gl.drawArrays(gl.TRIANGLES, 0, 3);
     }
+    const strips = cells.flatMap(([cell, rect]) => (rect === null ? [cell] : stripsAround(rect, cell)).map(within));
+    const around = strips.filter((s) => s[2] > 0 && s[3] > 0);
+    gl.disable(gl.SCISSOR_TEST);
+    if (kept) {
+      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, t.tonedFbo);
+      for (const [x, y, w, h] of around) gl.blitFramebuffer(x, y, x + w, y + h, x, y, x + w, y + h, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+      gl.bindFramebuffer(gl.FRAMEBUFFER, t.ldrFbo);
+      return;
+    }
+    gl.enable(gl.SCISSOR_TEST);
     this.useTonemap(this.backgroundOnlyProgram);
-    for (const [cell, rect] of cells) {
-      for (const strip of (rect === null ? [cell] : stripsAround(rect, cell)).map(within)) {
-        if (strip[2] <= 0 || strip[3] <= 0) continue;
-        gl.scissor(...strip);
-        gl.drawArrays(gl.TRIANGLES, 0, 3);
-      }
+    for (const strip of around) {
+      gl.scissor(...strip);
+      gl.drawArrays(gl.TRIANGLES, 0, 3);
     }
     gl.disable(gl.SCISSOR_TEST);
+  }
+
+  // The tone map's target (`fbo`, the whole frame's viewport) and inputs: the object layer, the
+  // blurred background.
+  bindTonemapInputs(fbo) {
+    const gl = this.gl, t = this.targets;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
+    gl.viewport(0, 0, t.width, t.height);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, t.hdr);
+    gl.activeTexture(gl.TEXTURE1);
+    gl.bindTexture(gl.TEXTURE_2D, t.background);
+    gl.bindVertexArray(this.emptyVao);
   }
 
   useTonemap(prog) {
