@@ -45,3 +45,22 @@ def glass_uniforms(mesh: Mesh, model: np.ndarray, form: str = "auto") -> dict[st
         "pv_glass_reference": radius * scale,
         "pv_glass_thin": int(glass_form(mesh, form) == "thin"),
     }
+
+
+#: rows of each half of the internal-paths texture, over sqrt(alpha) in [0, 1] (a roughness map's
+#: alpha varies)
+PATH_ROWS = 16
+
+
+def internal_paths(ior: float) -> np.ndarray:
+    """The (2 PATH_ROWS, cosines, 4) texture of the light leaving a rough ball, for this index
+    (glass_paths.py), row r of each half at alpha = (r / (PATH_ROWS - 1))^2. First half: the share
+    that leaves after the first exit, its mean direction's angle, its spread as a prefilter alpha,
+    its mean path in radii; second half: its mean cosine, and the first exit's angle, spread and
+    mean cosine."""
+    from .glass_paths import KEYS, rows_for
+
+    rows = np.stack([rows_for(ior, (r / (PATH_ROWS - 1)) ** 2) for r in range(PATH_ROWS)])
+    first = [KEYS.index(k) for k in ("more", "angle", "spread", "length")]
+    second = [KEYS.index(k) for k in ("mean_cos", "first_angle", "first_spread", "first_mean_cos")]
+    return np.concatenate([rows[..., first], rows[..., second]]).astype(np.float32)

@@ -13,7 +13,7 @@ from ..glsl.options import GlslOptions
 from . import gl
 from .environment_pass import EnvResources, bind_environment
 from .flakes import flake_uniforms
-from .glass import glass_uniforms
+from .glass import glass_uniforms, internal_paths
 from .material_textures import map_textures, split_textures
 from .mesh import Mesh
 from .resources import Resources, source_key
@@ -103,6 +103,11 @@ def draw_object(
     if shader.plan.subsurface:
         textures["pv_env_irradiance"] = res.irradiance  # the body's diffuse light (subsurface.glsl.j2)
         textures["cnlm_sss_lut"] = subsurface_table(resources)
+    if material.model.base == "glass":  # what a rough ball keeps inside (transmission.glsl.j2)
+        ior = float(material.params.ior)
+        textures["pv_glass_paths"] = resources.once(
+            ("glass paths", ior), lambda: resources.float_texture(internal_paths(ior), False, (False, False))
+        )
     for unit, (name, tex) in enumerate(textures.items()):
         tex.use(unit)
         gl.set_uniform(prog, name, unit)
