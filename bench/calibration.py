@@ -125,6 +125,7 @@ PB_PHRASES = {
     "Eye (Cornea)": "cornea",
     "Eye (Lens)": "eye lens",
     "Eye (Sclera)": "white of the eye",
+    "Orange": "orange peel",  # plain 'orange' is the colour
     "Plastic (Acrylic)": "clear acrylic",
     "Plastic (PC)": "clear polycarbonate",
     "Plastic (PET)": "clear PET plastic",

@@ -58,6 +58,8 @@ class Joiner:
         out: list[Tagged] = []
         for k, word in enumerate(tagged):
             before = out[-1] if out else None
+            if word.unknown and self._names_use(word, tagged[k + 1 :], diags):  # "guitar varnish", "boat paint"
+                continue
             if word.unknown or (before is not None and before.unknown):  # its tags are guesses: E001 says so
                 if before is not None and self._is_artifact_after(before, word, tagged[k + 1 :]):
                     out[-1] = self._artifact(before, word, diags)
@@ -103,6 +105,8 @@ class Joiner:
                 out.append(word)
         if len(out) > 2 and self._is_coat_finish(out):
             self._coat_after(out, diags)
+        elif out and self._coat_alone(out) is not None:
+            self._coat_on_substrate(out, diags)
         _feature_colour_list(out, diags)
         if len(out) > 1:
             _feature_first(out, diags, self.lexicon)
@@ -188,6 +192,42 @@ class Joiner:
             return word[:-3] + "y"
         return None
 
+    def _names_use(self, word: Tagged, rest: list[Tagged], diags: list[Diagnostic]) -> bool:
+        """An unknown word WordNet 3.0 lists as an artifact, before a material noun or coat (maybe
+        after more such words: 'table top laminate'), says where or on what the material is used
+        ('guitar varnish', 'boat paint'): it goes, its E001 with it, and a note says how it was read.
+        A word that is not a WordNet noun ('blu', 'brushd') keeps its E001 and "did you mean"; a noun one
+        edit from a describing word ('bike': the colour 'bile') says so in the note's hint."""
+        name = self._artifact_name(word.text.lower()) if word.text.isalpha() else None
+        if name is None:
+            return False
+        j = 0
+        while (
+            j < len(rest) and rest[j].unknown and rest[j].text.isalpha() and self._artifact_name(rest[j].text.lower())
+        ):
+            j += 1
+        if j == len(rest) or rest[j].unknown or not any(c.tag in _USED_ON for c in rest[j].candidates):
+            return False
+        error = next((d for d in diags if d.span == word.span and d.code == "E001"), None)
+        near = () if error is None else self._near_describing(word.text.lower(), error.suggestions)
+        diags[:] = [d for d in diags if d is not error]
+        note = (
+            f"read '{word.text}' as where the material is used: no effect on the look "
+            f"(WordNet 3.0 lists '{name}' as an artifact)"
+        )
+        hints = (f"did you mean '{near[0]}'?",) if near else ()
+        diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note, hints, near))
+        return True
+
+    def _near_describing(self, word: str, suggestions: tuple[str, ...]) -> tuple[str, ...]:
+        """The suggestions one edit from `word` that are describing words ('bike': the colour 'bice'):
+        a real noun is read as a noun, but the note still offers them."""
+        return tuple(
+            s
+            for s in suggestions
+            if _one_edit(word, s) and any(e.tag in DESCRIBING for e in self.lexicon.lookup(tuple(s.split())))
+        )
+
     def _artifact(self, before: Tagged, word: Tagged, diags: list[Diagnostic]) -> Tagged:
         """The material, with a note saying WordNet named the thing; the word's E001 goes."""
         diags[:] = [d for d in diags if not (d.span == word.span and d.code == "E001")]
@@ -220,6 +260,47 @@ class Joiner:
         note = f"read '{coat_text} {head.text} {noun.text}' as '{noun.text} with {coat_text}' (the coat is the finish)"
         diags.append(Diagnostic(coat_words[0].span.to(noun.span), Severity.NOTE, NOTE_CODE, note))
         out[start:] = [noun, with_word, *coat_words]
+
+    def _coat_alone(self, out: list[Tagged]) -> str | None:
+        """The substrate of a coat named as the whole material ('satin varnish', 'red powder coating',
+        'glossy clear lacquer'): a coat last (not also a noun: 'wax'), describing words before it (a
+        word that may describe: 'satin'; no 'with'), and the coat's entry declares the noun it is
+        usually on (coats.toml `substrate`)."""
+        last = out[-1]
+        coats = of_tag(last, "COAT")
+        if not coats or last.unknown or of_tag(last, "NOUN"):
+            return None
+        if not all(not t.unknown and any(c.tag in _BEFORE_A_COAT for c in t.candidates) for t in out[:-1]):
+            return None
+        entry = self.lexicon.entry("coats", coats[0].key)
+        return None if entry is None else entry.get("substrate")
+
+    def _coat_on_substrate(self, out: list[Tagged], diags: list[Diagnostic]) -> None:
+        """'satin varnish' = 'wood with a satin varnish': the coat's usual substrate, then the coat
+        with its describing words in a 'with' clause; a note says so (a name before stays first)."""
+        substrate = self._coat_alone(out)
+        assert substrate is not None
+        start = next((k + 1 for k, t in enumerate(out) if of_tag(t, "COLON")), 0)
+        coat = out[-1]
+        words = out[start:]
+        said = "".join(t.text if of_tag(t, "COMMA") else f" {t.text}" for t in words).strip()
+        s = coat.span  # the added words' spans: empty, where no word starts (the parser keys words by start)
+        noun = Tagged(
+            substrate, Span(s.end, s.end, s.line, s.col + s.end - s.start), (Candidate("NOUN", substrate, "nouns"),)
+        )
+        adjective = self.lexicon.require("coats", of_tag(coat, "COAT")[0].key).get("adjective")
+        if adjective is not None:  # 'red powder coating' = red powder-coated steel: the pigment is the surface
+            reading = f"{said.removesuffix(coat.text)}{adjective} {substrate}"
+            out[start:] = [*words[:-1], Tagged(coat.text, s, (Candidate("ADJ", adjective, "adjectives"),)), noun]
+        else:
+            reading = f"{substrate} with {said}"
+            with_word = Tagged("with", Span(s.start + 1, s.start + 1, s.line, s.col + 1), _WITH)
+            out[start:] = [noun, with_word, *words]
+        note = (
+            f"read '{said}' as '{reading}' (a coat named alone: on {substrate}, what it is usually on; "
+            "name the material to choose another)"
+        )
+        diags.append(Diagnostic(words[0].span.to(coat.span), Severity.NOTE, NOTE_CODE, note))
 
     def _join(
         self, a: Tagged, b: Tagged, candidates: tuple[Candidate, ...], reading: str, diags: list[Diagnostic]
@@ -358,9 +439,29 @@ class Joiner:
 
 
 _COMMA = (Candidate("COMMA", ",", "keyword"),)
+_WITH = (Candidate("WITH", "with", "keyword"),)
+#: The readings of the words that may come before a coat named as the whole material ('a glossy, red powder coat').
+_BEFORE_A_COAT = frozenset(("ADV", "ADJ", "COLOR", "SHADE", "ARTICLE", "COMMA", "AND", "OR", "NAME", "COLON", "PROP"))
 
 #: The readings of describing words a plating ('nickel plated', from 'nickel finish') may move before.
 DESCRIBING = frozenset(("ADV", "ADJ", "COLOR", "SHADE"))
+
+
+#: The readings of the word after a noun that says where the material is used ('guitar varnish').
+_USED_ON = frozenset(("NOUN", "COAT", "OBJECT"))
+
+
+def _one_edit(a: str, b: str) -> bool:
+    """Whether b is a (one letter inserted, deleted, replaced or two swapped) from a."""
+    if a == b or abs(len(a) - len(b)) > 1:
+        return False
+    if len(a) == len(b):
+        diff = [k for k in range(len(a)) if a[k] != b[k]]
+        return len(diff) == 1 or (
+            len(diff) == 2 and diff[1] == diff[0] + 1 and a[diff[0]] == b[diff[1]] and a[diff[1]] == b[diff[0]]
+        )
+    short, long_ = (a, b) if len(a) < len(b) else (b, a)
+    return any(long_[:k] + long_[k + 1 :] == short for k in range(len(long_)))
 
 
 def _plating_first(out: list[Tagged]) -> None:
@@ -514,6 +615,10 @@ def may_join(tagged: list[Tagged]) -> bool:
         return False
     if final.unknown:
         return noun_before_last
+    if any(c.tag == "COAT" for c in final.candidates) and not any(of_tag(t, "WITH") for t in tagged):
+        return True  # "satin varnish": a coat named as the whole material
+    if any(t.unknown for t in tagged):
+        return True  # "bike paint": an unknown word may say where the material is used
     return plain and noun_seen and any(c.tag == "ADJ" for c in final.candidates)
 
 

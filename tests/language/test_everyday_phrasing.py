@@ -167,10 +167,13 @@ def _forms(name: str) -> list[str]:
 
 @pytest.mark.skipif(not DATA.exists(), reason="../shared/data is not beside the checkout")
 def test_every_everyday_physicallybased_material_is_a_noun():
+    """Its name compiles (plain or qualified), or a noun cites its row ('Orange': 'orange peel', since
+    plain 'orange' is the colour)."""
     rows = json.loads(DATA.read_text("utf-8"))["data"]
+    cited = " ".join(str(LEX.require("nouns", key).get("source")) for key in LEX.all_of("nouns"))
     missing = []
     for row in rows:
-        if row["name"] in NOT_EVERYDAY:
+        if row["name"] in NOT_EVERYDAY or f"physicallybased_materials.json '{row['name']}'" in cited:
             continue
         if not any(compile_source(f, "t.cnl", LEX).ok for f in _forms(row["name"])):
             missing.append(row["name"])
@@ -200,7 +203,7 @@ def test_the_new_nouns_carry_the_dataset_row(phrase, row):
         assert said["params"]["base_color"] == pytest.approx(linear, abs=5e-4)
 
 
-@pytest.mark.parametrize("colour", ["orange", "lemon", "eggshell", "blood"])
+@pytest.mark.parametrize("colour", ["orange", "lemon", "eggshell", "blood"])  # 'orange' alone is the colour only
 def test_a_fruit_or_egg_before_a_material_is_still_its_colour(colour):
     """'orange plastic' is plastic in the colour orange, not two materials."""
     result, said = look(LEX, f"{colour} plastic")
@@ -212,3 +215,114 @@ def test_a_fruit_or_egg_before_a_material_is_still_its_colour(colour):
 @pytest.mark.parametrize(("german", "english"), [("Zitrone", "lemon"), ("Eierschale", "eggshell"), ("Blut", "blood")])
 def test_the_new_nouns_in_german(german, english):
     assert look(DE, german)[1] == look(LEX, english)[1]
+
+
+# ---------------------------------------------------------------- 3. a coat named as the whole material
+
+
+@pytest.mark.parametrize(
+    ("phrase", "same_as"),
+    [
+        ("satin varnish", "wood with a satin varnish"),
+        ("a matte clear lacquer", "wood with a matte lacquer"),
+        ("glossy clear coat", "steel with a glossy clear coat"),
+        ("clear wax", "wood with a wax"),
+        ("blue powder coating", "blue powder-coated steel"),
+        ("a satin, dark green powder coat", "satin dark green powder-coated steel"),
+        ("glossy white enamel coat", "glossy white enameled steel"),
+        ("red gelcoat", "fiberglass with a red gel coat"),
+    ],
+)
+def test_a_coat_named_alone_is_that_coat_on_its_usual_substrate(phrase, same_as):
+    result, said = look(LEX, phrase)
+    _, spelled = look(LEX, same_as)
+    assert said == spelled
+    assert any("a coat named alone" in n for n in notes(result)), notes(result)
+
+
+def test_every_substrate_is_a_noun_and_every_coat_adjective_an_adjective():
+    for key in LEX.all_of("coats"):
+        entry = LEX.require("coats", key)
+        if entry.get("substrate") is not None:
+            assert LEX.entry("nouns", entry.get("substrate")) is not None, key
+        if entry.get("adjective") is not None:
+            assert LEX.entry("adjectives", entry.get("adjective")) is not None, key
+
+
+def test_a_pigmented_coat_alone_is_opaque_paint_not_a_tint_over_metal():
+    """'red powder coating': the pigment is the surface (a red dielectric), not bare steel under a red film."""
+    material = look(LEX, "red powder coating")[0].ir["materials"][0]
+    assert material["model"]["base"] == "dielectric"
+    red, green, blue = material["params"]["base_color"]
+    assert red > 4 * max(green, blue, 0.01)
+
+
+def test_a_name_before_a_coat_alone_stays_the_name():
+    result = compile_source("deck: glossy varnish", "t.cnl", LEX)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert result.ir["materials"][0]["name"] == "deck"
+    assert meaning(result) == meaning(compile_source("wood with a glossy varnish", "t.cnl", LEX))
+
+
+@pytest.mark.parametrize("phrase", ["glossy coat", "oak with a varnish", "wax", "lacquer"])
+def test_what_is_not_a_coat_alone_reads_as_before(phrase):
+    """The generic coat names no substrate; a 'with' clause has its material; wax and lacquer are nouns."""
+    result = compile_source(phrase, "t.cnl", LEX)
+    assert not any("a coat named alone" in n for n in notes(result))
+
+
+def test_a_coat_alone_in_german():
+    _, said = look(DE, "glänzender Klarlack")
+    _, spelled = look(LEX, "steel with a glossy clear coat")
+    assert said == spelled
+    assert look(DE, "rote Pulverbeschichtung")[1] == look(LEX, "red powder coating")[1]
+
+
+# ---------------------------------------------------------------- 2. "guitar varnish": where it is used
+
+
+@pytest.mark.parametrize(
+    ("phrase", "same_as", "used"),
+    [
+        ("boat paint", "paint", "boat"),
+        ("guitar varnish", "wood with a varnish", "guitar"),
+        ("piano lacquer", "lacquer", "piano"),
+        ("glossy yacht paint", "glossy paint", "yacht"),
+        ("skateboard deck maple", "maple", "skateboard"),
+        ("red bicycle paint", "red paint", "bicycle"),
+        ("oxidised canoe aluminium", "oxidised aluminium", "canoe"),
+    ],
+)
+def test_a_noun_that_says_where_the_material_is_used_is_read_with_a_note(phrase, same_as, used):
+    result, said = look(LEX, phrase)
+    _, plain = look(LEX, same_as)
+    assert said == plain
+    assert any(n.startswith(f"read '{used}") for n in notes(result)), notes(result)
+
+
+@pytest.mark.parametrize(
+    ("phrase", "wanted"),
+    [("blu boat paint", "blue"), ("brushd steel", "brushed"), ("shny guitar lacquer", "shiny")],
+)
+def test_a_misspelling_still_gets_its_did_you_mean(phrase, wanted):
+    result = compile_source(phrase, "t.cnl", LEX)
+    errors = [d for d in result.diagnostics if d.code == "E001"]
+    assert errors and any(wanted in d.suggestions for d in errors), [(d.message, d.suggestions) for d in errors]
+
+
+@pytest.mark.parametrize("phrase", ["guitar", "the guitar", "glossy guitar"])
+def test_a_use_noun_with_no_material_after_it_is_still_unknown(phrase):
+    result = compile_source(phrase, "t.cnl", LEX)
+    assert "E001" in codes(result)
+
+
+def test_a_colour_or_adjective_before_the_use_noun_keeps_its_meaning():
+    _, said = look(LEX, "dark green boat paint")
+    _, plain = look(LEX, "dark green paint")
+    assert said == plain
+
+
+def test_the_use_note_on_the_command_line():
+    done = run_cnlmc("compile", "-", "--target", "ir", "-o", "-", stdin="trumpet lacquer\n")
+    assert done.returncode == 0, done.stderr
+    assert "read 'trumpet' as where the material is used" in done.stderr
