@@ -138,6 +138,7 @@ class Plan:
     sheen: bool = False  # the Charlie sheen over the base (snippets/sheen.glsl)
     flakes: bool = False  # the flake lobe mixed into the base under the coat (snippets/flakes.glsl)
     subsurface: bool = False  # the body term cnlm_subsurface and its table (snippets/subsurface.glsl)
+    body: dict = field(default_factory=dict)  # the body term's uniform values (body_values), made once
 
     @property
     def microfacet(self) -> bool:
@@ -192,6 +193,7 @@ def make_plan(material: Material, options: GlslOptions) -> Plan:
         flakes=has_flakes(material),
         subsurface=has_body(material),
     )
+    plan.body = body_values(material) if plan.subsurface else {}
     plan.snippets = snippet_names(plan)
     plan.uniforms = uniforms_for(plan, material)
     plan.samplers = [Sampler(SAMPLER_ROLES[r][0], r, SAMPLER_ROLES[r][1], SAMPLER_ROLES[r][2]) for r in plan.maps]
@@ -214,12 +216,13 @@ def body_values(material: Material) -> dict[str, Any]:
     preview's unit sphere has them (backends/preview/subsurface.py, the preview's own source)."""
     from ..preview.subsurface import body_uniforms, object_defaults
 
-    return {**object_defaults(), **body_uniforms(material)}
+    values = {**object_defaults(), **body_uniforms(material)}
+    return {name: _rgb(v) if np.size(v) == 3 else v for name, v in values.items()}  # plain Python values
 
 
 def _body(name: str) -> UniformValue:
     def value(material: Material, plan: Plan) -> Any:
-        found = body_values(material)[name] if has_body(material) else BODY_NEUTRAL.get(name, 0.0)
+        found = plan.body[name] if plan.body else BODY_NEUTRAL.get(name, 0.0)
         kind = BODY_UNIFORMS[name]
         return _rgb(found) if kind == "vec3" else (int(found) if kind == "int" else float(found))
 
@@ -439,6 +442,7 @@ def make_uber_plan(material: Material, options: GlslOptions) -> Plan:
         sheen=True,
         flakes=True,
         subsurface=True,
+        body=plan.body,
     )
     selectors = [
         Uniform(name, "int", codes[getattr(plan, attribute)]) for name, (attribute, codes) in UBER_SELECTORS.items()

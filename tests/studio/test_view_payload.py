@@ -108,7 +108,11 @@ def test_every_uniform_of_the_shader_is_given_a_value(tmp_path: Path, phrase: st
     """A feature the preview adds (a new uniform its object pass sets) must reach the payload:
     otherwise the browser draws it with zeros."""
     payload = payload_of(phrase, tmp_path)
-    declared = set(re.findall(r"^uniform\s+\w+\s+(\w+)", payload["fragment"] + payload["vertex"], re.M))
+    declared = set(
+        re.findall(
+            r"^uniform\s+(?:(?:lowp|mediump|highp)\s+)?\w+\s+(\w+)", payload["fragment"] + payload["vertex"], re.M
+        )
+    )
     given = {u["name"] for u in payload["uniforms"]} | {u["name"] for u in payload["mesh_uniforms"]["closed"]}
     given |= set(payload["tables"]) | set(payload["prefilter"]) | set(payload["maps"]) | VIEW_SETS
     assert {"pv_key_irradiance", "pv_env_irradiance"} <= declared  # the declarations were found
