@@ -39,6 +39,10 @@ def _at_most_one(x: Any) -> Any:
 
 def alpha_of(roughness: Any, anisotropy: float = 0.0, convention: str = "squared") -> list[Any]:
     """[alpha_x, alpha_y] of roughness r (a float, or a numpy array per lane), at most 1."""
+    if type(roughness) is float and type(anisotropy) is float and convention == "squared":
+        alpha = roughness * roughness  # every IR material: the steps below, without their calls
+        s = math.sqrt(1.0 - 0.9 * min(max(anisotropy, 0.0), 1.0))
+        return [min(alpha / s, 1.0), min(alpha * s, 1.0)]
     alpha = alpha_isotropic(roughness, convention)
     s = anisotropy_stretch(anisotropy)
     return [_at_most_one(alpha / s), _at_most_one(alpha * s)]

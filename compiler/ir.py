@@ -16,7 +16,7 @@ from .formulas import round6, round6_list, rounded
 from .lexicon import Entry
 from .params import COAT_PARAMS, Params, params_by_model
 from .sheen_colour import sheen_params
-from .state import MaterialState, WordLists, step_json
+from .state import MaterialState, WordLists, words_key
 from .subsurface import subsurface_ir
 
 JSONDict = dict[str, Any]
@@ -95,8 +95,22 @@ def _provenance(state: MaterialState) -> dict[str, list[JSONDict]]:
     """param -> its steps in JSON form; steps naming the same words share their word lists."""
     shared: dict[int | tuple[int, ...], WordLists] = {}
     out = {}
-    for param, steps in state.provenance.items():  # most parameters have a single step
-        out[param] = [step_json(steps[0], shared)] if len(steps) == 1 else [step_json(s, shared) for s in steps]
+    for param, steps in state.provenance.items():
+        made = out[param] = []
+        for step in steps:  # state.step_json, written out: a material has a dozen steps
+            words = step.words
+            key = words[0].span.start if len(words) == 1 else words_key(words)
+            lists = shared.get(key)
+            if lists is None:
+                lists = shared[key] = ([w.text for w in words], [w.span.as_list() for w in words])
+            value = step.value
+            if step.source:  # lexicon values are exact
+                made.append(
+                    {"rule": step.rule, "words": lists[0], "spans": lists[1], "value": value, "source": step.source}
+                )
+            else:
+                value = round6(value) if type(value) is float else rounded(value)
+                made.append({"rule": step.rule, "words": lists[0], "spans": lists[1], "value": value})
     return out
 
 

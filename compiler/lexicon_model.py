@@ -90,7 +90,8 @@ class Entry:
         return CATEGORY_TAGS[self.category]
 
     def get(self, name: str, default: Any = None) -> Any:
-        return self.data.get(name, default)
+        data = self._data  # the data property's common case, without its call (the passes ask often)
+        return (self.data if data is None else data).get(name, default)
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise FrozenInstanceError(f"cannot assign to field '{name}'")
@@ -174,6 +175,8 @@ class LexiconCaches:
     - noun_plans: noun key -> what apply_noun sets from that noun, read from its entry once (passes/base.py)
     - pattern_colours: (linear RGB, graph) -> the colour a pattern of that graph can carry and the
       OKLab numbers its provenance names (passes/textured_colour.py)
+    - coat_facts: adjective key -> (its entry, whether it lays a coat, whether it is a finish word
+      that only sets the gloss) (passes/order.py: gloss_on_coat)
     """
 
     MAX_ENTRIES = 4096  # a memo this full starts over
@@ -192,6 +195,7 @@ class LexiconCaches:
         self.stage_orders: dict[tuple[tuple[str, str | None, bool], ...], tuple[tuple[int, str], ...]] = {}
         self.noun_plans: dict[str, Any] = {}
         self.pattern_colours: dict[tuple[tuple[float, ...], str], Any] = {}
+        self.coat_facts: dict[str, tuple[Entry, bool, bool]] = {}
 
 
 class Lexicon:

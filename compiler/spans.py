@@ -33,7 +33,8 @@ class Span:
         return Span(self.start, max(self.end, other.end), self.line, self.col)
 
     def as_list(self) -> list[int]:
-        return [self.line, self.col, self.end_col]
+        col = self.col
+        return [self.line, col, col + (self.end - self.start)]  # end_col, without its call
 
 
 def line_span(line: int, col: int, length: int, line_offset: int) -> Span:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 import sys
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from typing import Any
 
 from ..diagnostics import warning
@@ -48,7 +48,15 @@ def check_ranges(state: MaterialState, ctx: Context) -> MaterialState:
 def _check_all(
     state: MaterialState, holder: dict[str, Any], ranges: Mapping[str, Sequence[float]], prefix: str
 ) -> None:
-    """`ranges`: param -> (low, high, ...)."""
+    """`ranges`: param -> (low, high, ...). Clamps are made in the order of `ranges`."""
+    for param, value in holder.items():  # the common case, one pass over what is set: nothing to clamp
+        bounds = ranges.get(param)
+        if bounds is None or value is None or (type(value) is float and bounds[0] <= value <= bounds[1]):
+            continue
+        if not _in_range(value, bounds[0], bounds[1]):
+            break
+    else:
+        return
     for param, bounds in ranges.items():
         value = holder.get(param)
         if value is None or (type(value) is float and bounds[0] <= value <= bounds[1]):
@@ -97,6 +105,8 @@ def check_finite(state: MaterialState, ctx: Context) -> MaterialState:
     Within a range: +inf -> high, -inf and NaN -> low. Without one: +-inf -> +-the largest finite
     float (the limit the words were heading to), NaN -> the parameter's default (it has no direction)."""
     params, coat, big = state.params, state.coat, BIGGEST
+    if _all_finite(state):
+        return state  # the common case: nothing to replace or report
     for param, value in params.items():
         if not ((type(value) is float and -big <= value <= big) or _finite(value)):
             params[param] = fixed = _fixed(value, RANGES.get(param), DEFAULTS.get(param))
@@ -120,6 +130,56 @@ def check_finite(state: MaterialState, ctx: Context) -> MaterialState:
                 step.value = _fixed(value, *_bounds_of(state, name))
                 _report(state, name, value, step.value, step)
     return state
+
+
+def _all_finite(state: MaterialState) -> bool:
+    """Whether every number check_finite looks at is finite (False: maybe not; check_finite sees)."""
+    if not _values_finite(state.params.values()):
+        return False
+    if state.coat is not None and not _values_finite(state.coat.values()):
+        return False
+    for ref in state.maps.values():
+        if not _values_finite(ref["params"].values()):
+            return False
+    big = BIGGEST
+    for steps in state.provenance.values():
+        for step in steps:
+            value = step.value
+            kind = type(value)
+            if kind is float:
+                if not -big <= value <= big:  # NaN fails both
+                    return False
+            elif kind is list:
+                try:
+                    total = sum(value)
+                except TypeError:
+                    return False
+                if not -big <= total <= big:
+                    return False
+            elif kind is dict:
+                return False
+    return True
+
+
+def _values_finite(values: Iterable[Any]) -> bool:
+    """_finite of each value, its common cases written out (False where it is not sure: a dict, a
+    list of anything but numbers, a sum that overflows)."""
+    big = BIGGEST
+    for value in values:
+        kind = type(value)
+        if kind is float:
+            if not -big <= value <= big:  # NaN fails both
+                return False
+        elif kind is list:
+            try:
+                total = sum(value)  # one C loop: a NaN or an infinity anywhere makes the sum one too
+            except TypeError:
+                return False
+            if not -big <= total <= big:
+                return False
+        elif kind is dict:
+            return False
+    return True
 
 
 def _finite(value: Any) -> bool:
