@@ -210,7 +210,7 @@ class Tagger:
                 if candidates:
                     tagged.append(
                         Tagged(
-                            " ".join(t for t, _c in raw[i : i + n]), self._span(raw, i, n, line_no, offset), candidates
+                            " ".join([t for t, _c in raw[i : i + n]]), self._span(raw, i, n, line_no, offset), candidates
                         )
                     )
                     return n
@@ -225,7 +225,7 @@ class Tagger:
                     tagged[-1], text, self._span(raw, i, 1, line_no, offset), last, diags
                 )
                 return 1
-            if tagged and self._after_comparative(text, tagged[-1]):  # "lighter than oak"
+            if tagged and self._after_comparative(text, tagged):  # "lighter than oak", "less glossy than glass"
                 return self._than(raw, i, line_no, offset, tagged, diags)
             reading = self.formation().read_at([t.lower() for t, _c in raw[i : i + 5]])  # "not X in the least"
             if reading is not None:
@@ -261,11 +261,18 @@ class Tagger:
             return reading.words + _dropped_separator(raw, i + reading.words, tagged)
         return reading.words
 
-    def _after_comparative(self, text: str, before: Tagged) -> bool:
-        """A comparison word ('than', 'als': word formation rules) right after a comparative."""
+    def _after_comparative(self, text: str, tagged: list[Tagged]) -> bool:
+        """A comparison word ('than', 'als': word formation rules) right after a comparative, or
+        after a comparative and its target ('less glossy than', 'more grain than')."""
         if text.lower() not in self.formation().rules.comparison:
             return False
-        return any(c.tag == "REFINE" for c in before.candidates)
+        if any(c.tag == "REFINE" for c in tagged[-1].candidates):
+            return True
+        return (
+            len(tagged) > 1
+            and any(c.tag == "REFINE" for c in tagged[-2].candidates)
+            and any(c.tag in _COMPARED for c in tagged[-1].candidates)
+        )
 
     def _than(
         self, raw: list[RawToken], i: int, line_no: int, offset: int, tagged: list[Tagged], diags: list[Diagnostic]
@@ -275,12 +282,16 @@ class Tagger:
         it moved as a refinement line would move it; a note says so. The word before keeps only its
         comparative reading ('dunkler als Eiche': not the declined colour 'dunkler'). Returns the
         words taken."""
-        comparative = tagged[-1]
-        refine = tuple(c for c in comparative.candidates if c.tag == "REFINE")
-        tagged[-1] = Tagged(comparative.text, comparative.span, refine, comparative.unknown)
+        at = len(tagged) - 1 if any(c.tag == "REFINE" for c in tagged[-1].candidates) else len(tagged) - 2
+        for k, tags in ((at, ("REFINE",)), (at + 1, _COMPARED)):  # the comparative, then its target if any
+            if k < len(tagged):
+                word = tagged[k]
+                kept = tuple(c for c in word.candidates if c.tag in tags)
+                tagged[k] = Tagged(word.text, word.span, kept, word.unknown)
+        comparative = tagged[at]
         taken = 2 if i + 1 < len(raw) and self.keywords.get(raw[i + 1][0].lower()) == "ARTICLE" else 1
         than = raw[i][0]
-        said = comparative.text
+        said = " ".join(t.text for t in tagged[at:])
         note = (
             f"read '{said} {than}' as '{said}' before the material: the material named after '{than}', "
             f"moved as a refinement line '{said}' under it would move it"
@@ -364,6 +375,9 @@ class Tagger:
                 return tuple(Candidate(c.tag, c.key, c.category) for c in found)
         return tuple(Candidate(t, "", "unknown") for t in OPEN_TAGS)
 
+
+#: The readings of a comparative's target before 'than' ('less glossy than glass', 'more grain than pine').
+_COMPARED = frozenset(("COLOR", "ADJ", "PROP"))
 
 #: The readings of a separator a word with no effect leaves standing alone ("shiny, not rusty, iron").
 _SEPARATORS = frozenset(("COMMA", "AND"))

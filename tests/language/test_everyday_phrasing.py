@@ -49,6 +49,9 @@ def meaning(result) -> list[dict]:
         ("rougher than the concrete", "concrete", "rougher"),
         ("slightly warmer than white marble", "white marble", "slightly warmer"),
         ("far glossier than a satin black plastic", "satin black plastic", "far glossier"),
+        ("less glossy than glass", "glass", "less glossy"),
+        ("a lot more grain than pine", "pine", "a lot more grain"),
+        ("slightly more matte than the white ceramic", "white ceramic", "slightly more matte"),
     ],
 )
 def test_a_comparative_than_a_material_is_that_material_moved_as_a_refinement_line(phrase, material, line):
@@ -63,6 +66,8 @@ def test_german_als_after_a_comparative_is_the_same():
     _, refined = look(DE, "Eiche\ndunkler")
     assert said == refined
     assert any("'als'" in n for n in notes(result))
+    _, duller = look(DE, "weniger glänzend als Glas")
+    assert duller == look(DE, "Glas\nweniger glänzend")[1]
     _, brighter = look(DE, "etwas heller als gebürsteter Stahl")
     _, steel = look(DE, "gebürsteter Stahl\netwas heller")
     assert brighter == steel
@@ -90,7 +95,17 @@ def test_than_without_a_comparative_before_it_is_still_an_error(phrase):
     assert "E001" in codes(result) or "E002" in codes(result)
 
 
-COMPARATIVES = ("lighter", "darker", "shinier", "rougher", "glossier", "smoother", "a bit duller", "much warmer")
+COMPARATIVES = (
+    "lighter",
+    "darker",
+    "shinier",
+    "rougher",
+    "a bit duller",
+    "much warmer",
+    "less glossy",
+    "more matte",
+    "more grain",
+)
 SOME_NOUNS = sorted(LEX.all_of("nouns"))[::37]
 
 
