@@ -78,18 +78,19 @@ def _plainly_valid(d: object) -> bool:
 
 
 def _model_ok(model: dict[str, Any]) -> bool:
-    return (
-        _member(model.get("base"), _BASES)
-        and _member(model.get("distribution"), _DISTRIBUTIONS)
-        and _member(model.get("diffuse"), _LOBES)
-        and type(model.get("anisotropic", False)) is bool
-        and type(model.get("coat", False)) is bool
-        and _member(model.get("subsurface"), _SUBSURFACE_MODELS)
-    )
+    for key, choices in _MODEL_CHOICES:  # _member of each, written out
+        value = model.get(key)
+        if not ((value is None or type(value) is str) and value in choices):
+            return False
+    return type(model.get("anisotropic", False)) is bool and type(model.get("coat", False)) is bool
 
 
-def _member(value: object, choices: frozenset[Any]) -> bool:
-    return (value is None or type(value) is str) and value in choices
+_MODEL_CHOICES = (
+    ("base", _BASES),
+    ("distribution", _DISTRIBUTIONS),
+    ("diffuse", _LOBES),
+    ("subsurface", _SUBSURFACE_MODELS),
+)
 
 
 def _variant_ok(variant: object) -> bool:
@@ -113,9 +114,17 @@ def _params_ok(params: object, rules: dict[str, Rule]) -> bool:
         rule = rules.get(key)
         if rule is None:
             return False
-        if type(value) is float:  # most values: _value_ok's number case, written out
+        kind = type(value)
+        if kind is float:  # most values: _value_ok's number case, written out
             if rule[0] != "number" or not rule[1] <= value <= rule[2]:
                 return False
+        elif kind is list and (rule[0] == "rgb" or rule[0] == "alpha"):  # _value_ok's lists, written out
+            if len(value) != (3 if rule[0] == "rgb" else 2):
+                return False
+            low, high = rule[1], rule[2]
+            for v in value:
+                if type(v) not in _KINDS_OF_NUMBER or not low <= v <= high:
+                    return False
         elif not _value_ok(value, rule):
             return False
     return True
@@ -158,17 +167,16 @@ def _maps_ok(maps: object) -> bool:
         if role not in _ROLES or type(ref) is not dict:
             return False
         params = ref.get("params", {})
-        if type(params) is not dict or not all(_number_ok(v) for v in params.values()):
+        if type(params) is not dict:
             return False
+        for v in params.values():  # _number_ok, written out
+            if type(v) not in _KINDS_OF_NUMBER or not -_BIGGEST <= v <= _BIGGEST:
+                return False
         if type(ref.get("seed", 0)) is not int or type(ref.get("graph")) is not str:
             return False
         if type(ref.get("output")) is not str:
             return False
     return True
-
-
-def _number_ok(value: object) -> bool:
-    return type(value) in _KINDS_OF_NUMBER and -_BIGGEST <= value <= _BIGGEST  # type: ignore[operator]
 
 
 def _provenance_ok(provenance: object) -> bool:

@@ -210,7 +210,9 @@ class Tagger:
                 if candidates:
                     tagged.append(
                         Tagged(
-                            " ".join([t for t, _c in raw[i : i + n]]), self._span(raw, i, n, line_no, offset), candidates
+                            " ".join([t for t, _c in raw[i : i + n]]),
+                            self._span(raw, i, n, line_no, offset),
+                            candidates,
                         )
                     )
                     return n

@@ -36,7 +36,7 @@ def rules() -> Mapping[str, Any]:
 
 def colour_compounds(groups: Sequence[ast.Group], lexicon: Lexicon, diags: list[Diagnostic]) -> Sequence[ast.Group]:
     """The groups with each 'particular colour + its basic term' pair read as the particular colour."""
-    if sum(1 for g in groups if g.kind == "colour") < 2:
+    if len(groups) < 2 or [g.kind for g in groups].count("colour") < 2:
         return groups
     out: list[ast.Group] = []
     for group in groups:

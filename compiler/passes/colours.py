@@ -84,4 +84,4 @@ def _pull(ctx: Context, shade_key: str) -> tuple[float, float]:
 
 
 def colour_text(c: ast.Colour) -> str:
-    return " ".join(w.text for w in c.words)
+    return " ".join([w.text for w in c.words])

@@ -64,7 +64,7 @@ def gloss_on_coat(groups: Sequence[ast.Group], lexicon: Lexicon, coated: bool) -
     if not groups:
         return ()
     facts = [_coat_facts(g, lexicon) for g in groups]
-    if not coated and not any(lays for lays, _gloss in facts):
+    if not coated and (True, False) not in facts and (True, True) not in facts:  # no group lays a coat
         return ()
     return tuple([g for g, (_lays, gloss) in zip(groups, facts, strict=True) if gloss])
 
