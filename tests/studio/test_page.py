@@ -128,6 +128,28 @@ def test_darker_darkens_the_canvas_and_undo_restores_it(page: Any, blue: np.ndar
     page.wait_for_selector("#history li[data-step] img[src^='data:image/png']", state="attached", timeout=30_000)
 
 
+def test_the_canvas_draws_the_pixels_the_page_shows(page: Any, blue: np.ndarray) -> None:
+    # the drawing buffer follows the canvas's size on the page (CSS pixels x devicePixelRatio, at
+    # most 512²): in a narrower window the material is drawn again, at the size it is shown
+    sizes = "(() => { const c = document.getElementById('view'); return [c.width, c.height, c.clientWidth]; })()"
+    assert page.evaluate(sizes) == [512, 512, 512]
+    try:
+        page.set_viewport_size({"width": 760, "height": 860})
+        page.wait_for_function(
+            "(() => { const c = document.getElementById('view'); return c.clientWidth < 512 && c.width === c.clientWidth; })()",
+            timeout=DRAW_SECONDS * 1000,
+        )
+        width, height, shown = page.evaluate(sizes)
+        assert width == height == shown < 512
+        page.wait_for_function(
+            f"document.getElementById('view').dataset.side === '{width}'", timeout=DRAW_SECONDS * 1000
+        )
+        assert blue_body(canvas_pixels(page)).mean() > 0.05  # the blue material, drawn again
+    finally:
+        page.set_viewport_size({"width": 1280, "height": 860})
+    page.wait_for_function("document.getElementById('view').width === 512", timeout=DRAW_SECONDS * 1000)
+
+
 def test_the_page_holds_the_parts_the_server_counts_as_sent(page: Any) -> None:
     """static/parts.js keeps payload parts as SentParts counts them (test_edit_delta.py runs the same
     sequence on the server's side); a payload naming a part the page no longer holds comes out null

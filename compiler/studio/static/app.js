@@ -8,6 +8,11 @@ import { Connection } from "./connection.js";
 import { Editor } from "./editor.js";
 import { Problem, showChips, showExports, showHistory, showMaterials, showNotes, thumbnail } from "./panels.js";
 
+// The canvas's drawing buffer follows its size on the page (CSS pixels x devicePixelRatio), at most
+// the 512² the page lays it out at on a desktop (the sphere is tessellated for it; a software
+// renderer's frame costs its pixels): a narrower window draws no pixels the screen does not show.
+const MAX_CANVAS = 512;
+const MIN_CANVAS = 64;
 const THUMBNAIL_WAIT_MS = 2000; // our choice: a history thumbnail waits for an idle moment at most this long
 // `fn` when the page is idle (at most THUMBNAIL_WAIT_MS later); a browser without
 // requestIdleCallback (Safari) runs it after the current work
@@ -46,6 +51,7 @@ class Studio {
     this.canvas = $("view");
     this.view = new MaterialView(this.canvas, { dataUrl: hello.data_url, filesUrl: hello.files_url, trace: this.trace });
     this.canvas.addEventListener("frame", (event) => this.framed(event.detail));
+    new ResizeObserver(() => this.fitCanvas()).observe(this.canvas);
     this.editor = new Editor($("editor"), {
       onChange: () => this.changed(),
       ask: (op, fields) => connection.request(op, fields),
@@ -58,6 +64,19 @@ class Studio {
     this.wireControls();
     this.editor.setText(hello.text || "");
     this.edit();
+  }
+
+  fitCanvas() {
+    const shown = Math.round(this.canvas.clientWidth * (window.devicePixelRatio || 1));
+    if (shown <= 0) return; // not laid out (hidden)
+    const side = Math.min(MAX_CANVAS, Math.max(MIN_CANVAS, shown));
+    if (side === this.canvas.width && side === this.canvas.height) return;
+    this.canvas.width = this.canvas.height = side; // clears it: drawn again
+    this.view.ready.then(() => {
+      if (this.canvas.width !== side) return; // resized again meanwhile: that one draws
+      this.view.draw();
+      this.canvas.dataset.side = String(side); // drawn at this size (the tests wait on it)
+    });
   }
 
   // A change typed: sent at once when no edit is on its way (no debounce to wait out), else when

@@ -328,13 +328,17 @@ export class MaterialView {
     });
   }
 
-  // The targets of a frame this size, made once (the full size and the quick one).
+  // The targets of a frame this size, made once: one set for the canvas's size, one for the latest
+  // quick frame's (a quick frame of another size, or a resized canvas, replaces its kind's: each
+  // quick size made its own and kept it while the view lived).
   targetsFor(width, height) {
     const scaled = width !== this.canvas.width || height !== this.canvas.height;
-    const key = `${width}x${height}`;
+    const key = `${width}x${height}${scaled ? " scaled" : ""}`;
     if (!this.sized.has(key)) {
-      if (!scaled) {
-        for (const [k, t] of this.sized) if (!t.ldr) { t.release(); this.sized.delete(k); } // the canvas was resized
+      for (const [k, t] of this.sized) {
+        if (Boolean(t.ldr) !== scaled) continue;
+        t.release();
+        this.sized.delete(k);
       }
       this.sized.set(key, new Targets(this.gl, width, height, scaled));
     }
