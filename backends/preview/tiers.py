@@ -20,9 +20,12 @@ TRANSMISSION = {
     "the reflection's only)",
     "splitsum": "the view refracted in and out along the macro normals (solid: the bounding sphere "
     "as the exit, two exits with internal and total internal reflection; thin: undeflected), "
-    "exact Fresnel at each interface, Beer-Lambert tint; rough: one lookup in the environment "
-    "prefiltered at the transmitted lobe's width (fitted to mc256), the key light through the exit "
-    "by that lobe, and the light the facets block (1 - G1) leaving diffusely",
+    "exact Fresnel at each interface, Beer-Lambert tint; a rough solid: two lobes from a table traced "
+    "through a rough ball (glass_paths.py), what leaves at the first exit and what stays inside and "
+    "leaves later (total internal reflection on tilted facets), each looked up around its mean "
+    "direction at its spread, the key light through each as a von Mises-Fisher lobe; a rough sheet: "
+    "one lookup at the transmitted lobe's width (fitted to mc256); the light the entry's facets block "
+    "(1 - G1) leaving diffusely",
     "sampled": "per sample a GGX visible-normal facet at the entry and at every exit (rough "
     "transmission sampled, not prefiltered), the same paths, Fresnel and tint, the blocked light "
     "leaving diffusely; no key light through the glass; fis: the environment's mip level from the "
