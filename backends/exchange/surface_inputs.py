@@ -6,7 +6,10 @@ per-shader differences (input names, roughness fit, metal edge colour) are table
 
 from __future__ import annotations
 
+import functools
 import math
+
+import numpy as np
 
 from cnlmc.material import Coat, Material, Params
 
@@ -18,11 +21,13 @@ from .conversions import (
     conductor_weight,
     f82_tint,
     gulbrandsen_edge,
+    hemispherical_albedo,
     layered_diffuse_scale,
     openpbr_roughness,
     rounded,
     standard_roughness,
     weighted_f0,
+    without_extras,
 )
 from .subsurface_inputs import subsurface_inputs
 
@@ -119,10 +124,12 @@ def abstract_inputs(material: Material, surface: str) -> Inputs:
         out["transmission_color"] = ("color3", clip01(params.base_color))
     if model.diffuse == "oren_nayar":
         out["diffuse_roughness"] = ("float", min(max(float(params.diffuse_roughness), 0.0), 1.0))
+        if base == "diffuse" and surface == "open_pbr_surface":
+            out["base_weight"] = ("float", oren_nayar_base_weight(material))
     if model.coat and params.coat is not None:
         out.update(_coat_inputs(params.coat))
     if params.sheen_color is not None and max(params.sheen_color) > 0.0:
-        out.update(_sheen_inputs(params))
+        out.update(_sheen_inputs(params, surface))
     out.update(subsurface_inputs(material))  # light inside the body (subsurface_inputs.py)
     return {k: (t, _rounded(v)) for k, (t, v) in out.items()}
 
@@ -134,6 +141,36 @@ def dielectric_base_weight(material: Material) -> float:
     energies (`conversions.layered_diffuse_scale`, luminance), so the furnace is the IR's (#15)."""
     scale = layered_diffuse_scale(material)
     return min(max(0.2126 * scale[0] + 0.7152 * scale[1] + 0.0722 * scale[2], 0.0), 1.0)
+
+
+#: OpenPBR's energy-compensated Oren-Nayar as MaterialX draws it under an environment
+#: (libraries/pbrlib/genglsl/lib/mx_microfacet_diffuse.glsl, 1.39: Fujii's directional albedo E and its
+#: average E_avg; the multiple-scattering colour c^2 E_avg / (1 - c (1 - E_avg)))
+FUJII_1, FUJII_2 = 0.5 - 2.0 / (3.0 * math.pi), 2.0 / 3.0 - 28.0 / (15.0 * math.pi)
+
+
+def openpbr_oren_nayar_albedo(colour: float, roughness: float) -> float:
+    """The hemispherical albedo of OpenPBR's compensated Oren-Nayar of `colour` (one channel):
+    mix(c_ms, c, E(mu)) averaged over 2 mu dmu = c E_avg + c_ms (1 - E_avg), E_avg the mean of E."""
+    a = 1.0 / (1.0 + FUJII_1 * roughness)
+    e_avg = a * (1.0 + FUJII_2 * roughness)
+    multiple = colour * colour * e_avg / max(1.0 - colour * (1.0 - e_avg), 1e-9)
+    return colour * e_avg + multiple * (1.0 - e_avg)
+
+
+def oren_nayar_base_weight(material: Material) -> float:
+    """OpenPBR's Oren-Nayar is energy-compensated (a white base returns 1; a colour c returns
+    c E_avg + c_ms (1 - E_avg), not linear in c), the IR's is the qualitative one, which loses the
+    light its single bounce does not return. base_weight = the IR lobe's hemispherical albedo over
+    OpenPBR's for the exported colour and roughness (luminance, at most 1), so the furnace is the
+    IR's (#15 item 6: baize 1.12 in MaterialX's render)."""
+    params = material.params
+    roughness = min(max(float(params.diffuse_roughness), 0.0), 1.0)
+    ir = hemispherical_albedo(without_extras(material))
+    target = [openpbr_oren_nayar_albedo(c, roughness) for c in clip01(params.base_color)]
+    luma = (0.2126, 0.7152, 0.0722)
+    ratio = sum(w * v for w, v in zip(luma, ir)) / max(sum(w * v for w, v in zip(luma, target)), 1e-9)
+    return min(max(ratio, 0.0), 1.0)
 
 
 def _rounded(value: Value) -> Value:
@@ -167,15 +204,48 @@ def _coat_inputs(coat: Coat) -> Inputs:
     }
 
 
-def _sheen_inputs(params: Params) -> Inputs:
+def _sheen_inputs(params: Params, surface: str) -> Inputs:
     """The IR's sheen (docs/bsdf.md "Sheen") as a weight (its brightest channel) times a colour; the
-    width as the lobe's alpha = r^2 (MaterialX's sheen_bsdf takes the lobe width itself)."""
+    width: Standard Surface's sheen is the Charlie lobe, so its roughness is the lobe's alpha = r^2;
+    OpenPBR's fuzz is Zeltner's LTC sheen, whose roughness is the one with the Charlie lobe's energy
+    (`zeltner_roughness`: at alpha 0.25, velvet's, alpha itself returns 1/6 of it)."""
     weight = max(float(c) for c in params.sheen_color or (0.0, 0.0, 0.0))
+    alpha = float(params.sheen_roughness) ** 2
     return {
         "sheen": ("float", weight),
         "sheen_color": ("color3", clip01([float(c) / weight for c in params.sheen_color or ()])),
-        "sheen_roughness": ("float", float(params.sheen_roughness) ** 2),
+        "sheen_roughness": ("float", zeltner_roughness(alpha) if surface == "open_pbr_surface" else alpha),
     }
+
+
+#: MaterialX's fit of Zeltner et al. 2022's sheen directional albedo, E(mu, roughness)
+#: (libraries/pbrlib/genglsl/lib/mx_microfacet_sheen.glsl, mx_zeltner_sheen_dir_albedo, 1.39)
+ZELTNER_ROUGHNESS = (0.01, 1.0)  # the range MaterialX clamps it to
+SHEEN_ENERGY_MUS = 32  # Gauss-Legendre points of 2 int E mu dmu
+
+
+def zeltner_albedo(mu: np.ndarray, y: float) -> np.ndarray:
+    s = y * (0.0206607 + 1.58491 * y) / (0.0379424 + y * (1.32227 + y))
+    m = y * (-0.193854 + y * (-1.14885 + y * (1.7932 - 0.95943 * y * y))) / (0.046391 + y)
+    o = y * (0.000654023 + (-0.0207818 + 0.119681 * y) * y) / (1.26264 + y * (-1.92021 + y))
+    result: np.ndarray = np.exp(-0.5 * ((mu - m) / s) ** 2) / (s * math.sqrt(2.0 * math.pi)) + o
+    return result
+
+
+@functools.lru_cache(maxsize=256)
+def zeltner_roughness(alpha: float) -> float:
+    """The fuzz roughness whose hemispherical sheen energy (2 int E mu dmu) is the IR's Charlie lobe's
+    of width `alpha` (cnlmc.bsdf.sheen), by bisection (the energy rises with the roughness)."""
+    from cnlmc.bsdf.sheen import sheen_albedo, sheen_alpha
+
+    x, w = np.polynomial.legendre.leggauss(SHEEN_ENERGY_MUS)
+    mu, weight = 0.5 * (x + 1.0), w * 0.5 * (x + 1.0)  # 2 mu dmu over [0, 1]: w mu
+    target = float(weight @ sheen_albedo(mu, float(sheen_alpha(math.sqrt(alpha)))))
+    low, high = ZELTNER_ROUGHNESS
+    for _ in range(40):
+        middle = 0.5 * (low + high)
+        low, high = (middle, high) if float(weight @ zeltner_albedo(mu, middle)) < target else (low, middle)
+    return round(0.5 * (low + high), 6)
 
 
 def surface_inputs(material: Material, surface: str = "open_pbr_surface") -> Inputs:

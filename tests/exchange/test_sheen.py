@@ -5,9 +5,12 @@ with every stdlib noun in test_gltf.py.)"""
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from cnlmc.api import compile_source, emit
+from cnlmc.backends.exchange.surface_inputs import zeltner_albedo
+from cnlmc.bsdf.sheen import sheen_albedo_direct
 
 MaterialX = pytest.importorskip("MaterialX")
 
@@ -46,7 +49,15 @@ def test_velvet_writes_its_sheen(surface):
     sheen = params["sheen_color"]
     assert weight == pytest.approx(max(sheen), abs=1e-6)
     assert [weight * c for c in colour] == pytest.approx(sheen, abs=1e-5)
-    assert roughness == pytest.approx(params["sheen_roughness"] ** 2, abs=1e-6)  # the lobe's alpha
+    alpha = params["sheen_roughness"] ** 2
+    if surface == "standard_surface":
+        assert roughness == pytest.approx(alpha, abs=1e-6)  # the Charlie lobe's alpha
+    else:  # Zeltner's LTC sheen: the roughness with the Charlie lobe's energy (2 int E mu dmu)
+        x, w = np.polynomial.legendre.leggauss(16)
+        mu, weight = 0.5 * (x + 1.0), w * 0.5 * (x + 1.0)
+        charlie = weight @ sheen_albedo_direct(mu, alpha, n=8192)
+        assert weight @ zeltner_albedo(mu, roughness) == pytest.approx(charlie, rel=0.03)
+        assert weight @ zeltner_albedo(mu, alpha) < 0.5 * charlie  # alpha itself returns far less
     validated(doc)
 
 
