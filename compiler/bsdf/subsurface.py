@@ -118,9 +118,10 @@ def appearance(medium: Medium, eta: float) -> tuple[Array, Array]:
 
 
 def profile_shape(albedo: npt.ArrayLike) -> Array:
-    """Christensen–Burley's s for the diffuse mean free path (searchlight configuration)."""
+    """Christensen–Burley's s for the diffuse mean free path ℓd (searchlight configuration):
+    s = 3.5 + 100 (A − 0.33)⁴, d = ℓd / s."""
     a = np.asarray(albedo, dtype=np.float64)
-    shape: Array = 1.9 - a + 3.5 * (a - 0.8) ** 2
+    shape: Array = 3.5 + 100.0 * (a - 0.33) ** 4
     return shape
 
 
