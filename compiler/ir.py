@@ -37,7 +37,7 @@ def material_ir(state: MaterialState, convention: str, rounded_optics: dict[tupl
         "variant": state.variant,
         "model": model,
         "params": _params(state, model, convention, rounded_optics),
-        "maps": rounded(state.maps),
+        "maps": rounded(state.maps) if state.maps else {},
         "provenance": _provenance(state),
     }
 
@@ -70,9 +70,12 @@ def _params(
         out["anisotropy"] = rounded(p["anisotropy"])
         out["anisotropy_rotation"] = rounded(p.get("anisotropy_rotation", Params.anisotropy_rotation))
     out["coat"] = rounded(_coat(state.coat, convention)) if model["coat"] else None
-    out.update(sheen_params(p))
-    out.update(subsurface_ir(p))
-    out.update(flake_params(p))
+    if p.get("sheen_color") is not None:  # each of the three adds nothing without its own parameters
+        out.update(sheen_params(p))
+    if p.get("subsurface") is not None:
+        out.update(subsurface_ir(p))
+    if p.get("flake_color") is not None:
+        out.update(flake_params(p))
     return out
 
 
@@ -109,7 +112,8 @@ def _provenance(state: MaterialState) -> dict[str, list[JSONDict]]:
                     {"rule": step.rule, "words": lists[0], "spans": lists[1], "value": value, "source": step.source}
                 )
             else:
-                value = round6(value) if type(value) is float else rounded(value)
+                kind = type(value)
+                value = round6(value) if kind is float else round6_list(value) if kind is list else rounded(value)
                 made.append({"rule": step.rule, "words": lists[0], "spans": lists[1], "value": value})
     return out
 

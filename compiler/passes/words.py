@@ -39,6 +39,8 @@ DEGREE_PARAMS = ("roughness", "anisotropy", DIFFUSE_SIGMA)  # scales whose set l
 
 def group_weight(group: ast.Group, ctx: Context) -> float:
     """The adverbs' weight: "very lightly" = lightly ** very (compiler/degrees.py)."""
+    if not group.adverbs:
+        return 1.0  # compose_weights([]), without the calls: most groups have no adverb
     return compose_weights([ctx.lexicon.require("adverbs", a.key).get("weight") for a in group.adverbs])
 
 
@@ -100,12 +102,14 @@ def apply_colour(state: MaterialState, ctx: Context, c: ast.Colour, adverbs: Wor
     param, holder = _colour_slot(state, target)
     current = holder.get(param)
     rgb = resolve_colour(c, ctx, start=current, weight=weight)
-    if target == "base" and c.words:
-        rgb = keep_pattern_visible(state, ctx, rgb, c.words, noun_of(state).key)
+    words = c.words
+    if target == "base" and words:
+        rgb = keep_pattern_visible(state, ctx, rgb, words, noun_of(state).key)
     _warn_opposed_shades(state, ctx, c)
     _warn_second_colour(state, param if target == "base" else "coat.color", c)
     holder[param] = rgb
-    state.note(param if target == "base" else "coat.color", rgb, f"colours: {colour_text(c)}", (*adverbs, *c.words))
+    text = " ".join([w.text for w in words])  # colour_text(c)
+    state.note(param if target == "base" else "coat.color", rgb, f"colours: {text}", (*adverbs, *words))
 
 
 def _warn_opposed_shades(state: MaterialState, ctx: Context, c: ast.Colour) -> None:
