@@ -94,6 +94,8 @@ class Joiner:
             elif of_tag(word, "OBJECT"):
                 if k + 1 < len(tagged) and of_tag(tagged[k + 1], "NOUN"):
                     out.append(word)  # "roof tiles": joined to the noun next
+                elif not others(word) and self._coat_alone(tagged[k + 1 :]) is not None:
+                    out.extend(self._coat_on_object(word, tagged[k + 1 :], diags))  # "floor varnish"
                 elif not others(word) and any(
                     of_tag(t, "NOUN") or of_tag(t, "OBJECT") for t in _main_words(tagged[k + 1 :])
                 ):
@@ -105,7 +107,7 @@ class Joiner:
                 out.append(word)
         if len(out) > 2 and self._is_coat_finish(out):
             self._coat_after(out, diags)
-        elif out and self._coat_alone(out) is not None:
+        elif self._coat_alone(out) is not None:
             self._coat_on_substrate(out, diags)
         _feature_colour_list(out, diags)
         if len(out) > 1:
@@ -266,6 +268,8 @@ class Joiner:
         'glossy clear lacquer'): a coat last (not also a noun: 'wax'), describing words before it (a
         word that may describe: 'satin'; no 'with'), and the coat's entry declares the noun it is
         usually on (coats.toml `substrate`)."""
+        if not out:
+            return None
         last = out[-1]
         coats = of_tag(last, "COAT")
         if not coats or last.unknown or of_tag(last, "NOUN"):
@@ -274,6 +278,17 @@ class Joiner:
             return None
         entry = self.lexicon.entry("coats", coats[0].key)
         return None if entry is None else entry.get("substrate")
+
+    def _coat_on_object(self, word: Tagged, rest: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
+        """'floor varnish', 'car clear coat': an object before a coat named alone is what the coat is on,
+        its usual material: 'wood with varnish' (the object's material and a 'with'; the coat follows)."""
+        material = self.lexicon.require("objects", of_tag(word, "OBJECT")[0].key).data["material"]
+        said = " ".join(t.text for t in rest)
+        note = f"read '{word.text} {said}' as '{material} with {said}' (the usual material of '{word.text}', coated)"
+        diags.append(Diagnostic(word.span.to(rest[-1].span), Severity.NOTE, NOTE_CODE, note))
+        s = rest[0].span  # the 'with': empty, inside the next word (the parser keys words by start)
+        with_word = Tagged("with", Span(s.start + 1, s.start + 1, s.line, s.col + 1), _WITH)
+        return [Tagged(word.text, word.span, (Candidate("NOUN", material, "nouns"),)), with_word]
 
     def _coat_on_substrate(self, out: list[Tagged], diags: list[Diagnostic]) -> None:
         """'satin varnish' = 'wood with a satin varnish': the coat's usual substrate, then the coat

@@ -316,6 +316,15 @@ def test_a_noun_that_says_where_the_material_is_used_is_read_with_a_note(phrase,
 
 
 @pytest.mark.parametrize(
+    ("phrase", "same_as"),
+    [("floor varnish", "wood with a varnish"), ("car clear coat", "car paint with a clear coat"), ("planks", "wood")],
+)
+def test_an_object_before_a_coat_alone_is_what_the_coat_is_on(phrase, same_as):
+    """'floor varnish': the floor's usual material with the coat; an object alone is still its material."""
+    assert look(LEX, phrase)[1] == look(LEX, same_as)[1]
+
+
+@pytest.mark.parametrize(
     ("phrase", "wanted"),
     [("blu boat paint", "blue"), ("brushd steel", "brushed"), ("shny guitar lacquer", "shiny")],
 )
@@ -341,3 +350,19 @@ def test_the_use_note_on_the_command_line():
     done = run_cnlmc("compile", "-", "--target", "ir", "-o", "-", stdin="trumpet lacquer\n")
     assert done.returncode == 0, done.stderr
     assert "read 'trumpet' as where the material is used" in done.stderr
+
+
+# ---------------------------------------------------------------- every rule together, never a traceback
+
+WORDS = (
+    "than", "als", "not", "rusty", ",", "and", "a", "the", "lighter", "less", "glossy", "satin", "varnish",
+    "powder coating", "clear coat", "gel coat", "floor", "planks", "guitar", "boat", "blu", "oak", "steel",
+    "lemon", "orange", "blood", "with", "red", "very", "paint", "deck:", "more", "grain",
+)  # fmt: skip
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.sampled_from(WORDS), min_size=1, max_size=7))
+def test_any_line_of_these_words_compiles_or_reports_without_a_traceback(words):
+    result = compile_source(" ".join(words), "t.cnl", LEX)
+    assert result.ok or any(d.severity.name == "ERROR" and d.span is not None for d in result.diagnostics)
