@@ -160,7 +160,8 @@ def materialx_peer(stage: Path, size: int) -> None:
     near = 0.01
     top = near * float(np.tan(np.radians(values[13]) / 2))
     camera.setProjectionMatrix(mx_render.Camera.createPerspectiveMatrix(-top, top, -top, top, near, 100.0))
-    for job in sorted(p for p in stage.iterdir() if p.is_dir() and not (p / "render.hdr").exists()):
+    done = ("render.hdr", "error.txt")  # a restarted peer goes on after the job it died on
+    for job in sorted(p for p in stage.iterdir() if p.is_dir() and not any((p / n).exists() for n in done)):
         try:
             doc = mx.createDocument()
             mx.readFromXmlFile(doc, str(job / "materials.mtlx"))

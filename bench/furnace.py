@@ -28,7 +28,6 @@ counts within 5 % per target; `--all` takes every stdlib noun plus coats and var
 from __future__ import annotations
 
 import argparse
-import subprocess
 import sys
 import tempfile
 import time
@@ -255,11 +254,18 @@ def sheet_driver():
 class MaterialXRenders:
     """MaterialX's own GLSL render (MaterialXRenderGlsl under xvfb-run) of each exported .mtlx on
     the same sphere, camera and white sky, through the appearance sheet's driver; started first,
-    it renders while the preview and Mitsuba do (one peer process, every job in `stage`)."""
+    it renders while the preview and Mitsuba do (one peer process, every job in `stage`).
+
+    A job costs 4-130 s of wall time here (llvmpipe, shared cores): the bench waits as long as jobs
+    keep finishing (`STALL_S` without one ends the wait), and a peer that dies on a job (a driver
+    crash) is restarted after it, the job marked with the exit status; every other job renders."""
+
+    STALL_S = 900.0  # no job finished for this long: the peer is stuck
+    RESTARTS = 8
 
     def __init__(self, scene, materials, size: int, stage: Path):
         driver = sheet_driver()
-        self.stage, self.size = stage, size
+        self.stage, self.size, self.count = stage, size, len(materials)
         driver.write_materialx_stage(scene, stage)
         for index, material in enumerate(materials):
             driver.write_materialx_job(material, scene, self.job(index))
@@ -268,14 +274,36 @@ class MaterialXRenders:
     def job(self, index: int) -> Path:
         return self.stage / f"{index:04d}"
 
-    def wait(self, timeout: float) -> None:
-        if self.peer is None:
-            return
-        try:
-            self.peer.wait(timeout)
-        except subprocess.TimeoutExpired:
-            self.peer.terminate()
-            self.reason = f"not rendered within {timeout:.0f} s"
+    def finished(self) -> int:
+        return sum(
+            (self.job(i) / "render.hdr").exists() or (self.job(i) / "error.txt").exists() for i in range(self.count)
+        )
+
+    def wait(self, log=print) -> None:
+        """Until every job has a render or an error (restarting a dead peer), or STALL_S pass idle."""
+        restarts, last, changed = 0, -1, time.monotonic()
+        while self.peer is not None and self.finished() < self.count:
+            done = self.finished()
+            if done != last:
+                last, changed = done, time.monotonic()
+            if time.monotonic() - changed > self.STALL_S:
+                self.peer.terminate()
+                self.reason = f"no MaterialX job finished within {self.STALL_S:.0f} s"
+                return
+            code = self.peer.poll()
+            if code is None:
+                time.sleep(1.0)
+                continue
+            left = [i for i in range(self.count) if not (self.job(i) / "render.hdr").exists()]
+            left = [i for i in left if not (self.job(i) / "error.txt").exists()]
+            if not left or restarts >= self.RESTARTS:
+                return
+            (self.job(left[0]) / "error.txt").write_text(f"the MaterialX peer died on this job (exit {code})")
+            log(f"  MaterialX peer exited {code} on job {left[0]}: restarted", file=sys.stderr, flush=True)
+            self.peer, self.reason = sheet_driver().start_materialx(self.stage, self.size)
+            restarts += 1
+        if self.peer is not None:
+            self.peer.wait()
 
     def image(self, index: int) -> np.ndarray | None:
         """Linear RGB (size, size, 3), or None where it did not render (`error` says why)."""
@@ -321,16 +349,24 @@ def scaled(ir_ref: float, pair: tuple[float, float]) -> float:
 
 
 def spread(kinds: list[str], count: int) -> list[int]:
-    """Up to `count` row indices taken round-robin over the kinds (the first rows of each kind first):
-    MaterialX's GLSL render costs ~16 s of CPU a material on llvmpipe, so --all renders a subset."""
+    """Up to `count` row indices, a stratified sample: each kind gets count / kinds rows (what a small
+    kind leaves goes to the others), evenly spaced through its rows (alphabetical: not only its
+    first letters). MaterialX's GLSL render costs 4-130 s of wall time a material on llvmpipe
+    here, so --all renders a sample."""
     queues: dict[str, list[int]] = {}
     for index, kind in enumerate(kinds):
         queues.setdefault(kind, []).append(index)
+    shares = dict.fromkeys(queues, 0)
+    left = min(count, len(kinds))
+    while left > 0:  # round-robin shares, so small kinds give their surplus to the others
+        for kind, queue in queues.items():
+            if left > 0 and shares[kind] < len(queue):
+                shares[kind] += 1
+                left -= 1
     chosen: list[int] = []
-    while len(chosen) < count and any(queues.values()):
-        for queue in queues.values():
-            if queue and len(chosen) < count:
-                chosen.append(queue.pop(0))
+    for kind, queue in queues.items():
+        n = shares[kind]
+        chosen += [queue[int((j + 0.5) * len(queue) / n)] for j in range(n)] if n else []
     return sorted(chosen)
 
 
@@ -370,7 +406,7 @@ def measure(
                 coverages.append((ir, coverage))
                 log(f"  {phrase[:36]:36s} at {time.perf_counter() - started:7.1f} s", file=sys.stderr, flush=True)
         if peer is not None:
-            peer.wait(max(120.0, 60.0 * len(chosen)))
+            peer.wait(log)
             for index, row_index in enumerate(rendered):
                 row, (ir, coverage) = rows[row_index], coverages[row_index]
                 image = peer.image(index)
