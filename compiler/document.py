@@ -42,7 +42,7 @@ def iter_items(source: str, lexicon: Lexicon, diags: list[Diagnostic]) -> Iterat
         before = len(diags)
         node = parse_line(text, number, offset, tagger, diags)
         if node is not None:
-            yield node, any(d.is_error for d in diags[before:])
+            yield node, len(diags) > before and any(d.is_error for d in diags[before:])
     save_shapes(lexicon.caches.shapes)  # the shapes read here, for the next run (nothing new: no write)
 
 

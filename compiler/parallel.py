@@ -321,7 +321,7 @@ def _item(
     before = len(diags)
     node = parse_line(text, number, offset, tagger, diags)
     if node is not None:
-        yield node, any(d.is_error for d in diags[before:])
+        yield node, len(diags) > before and any(d.is_error for d in diags[before:])
 
 
 def _owned_groups(

@@ -181,13 +181,14 @@ class Tagger:
 
     def _name_prefix(self, line: str, raw: list[RawToken], line_no: int, offset: int, tagged: list[Tagged]) -> int:
         """'hull: ...' -> NAME COLON; the name may be several words."""
-        if ":" not in line:
-            return 0
         colon = 0
-        for j, (t, _c) in enumerate(raw):
-            if t == ":":
-                colon = j
-                break
+        if len(raw) > 1 and raw[1][0] == ":":
+            colon = 1  # 'm12: ...', the common case
+        else:
+            for j, (t, _c) in enumerate(raw):
+                if t == ":":
+                    colon = j
+                    break
         if not colon:
             return 0
         first_col, (last_text, last_col) = raw[0][1], raw[colon - 1]
