@@ -84,6 +84,7 @@ BODY_UNIFORMS = {
     "cnlm_sss_profile_scale": "vec3",
     "cnlm_sss_thin": "int",
     "cnlm_sss_wall_through": "vec3",
+    "cnlm_sss_wall_reflect": "vec3",
     "cnlm_sss_f0": "float",
     "cnlm_sss_entry": "float",
     "cnlm_sss_lut_u_max": "float",

@@ -176,9 +176,23 @@ def profile_scale(body: TranslucentBody) -> np.ndarray:
     return np.asarray(body.radius, np.float64) / profile_shape(np.clip(body.color, 0.0, 1.0))
 
 
+def wall_reflectance(boundary: Any, body: TranslucentBody) -> np.ndarray:
+    """A thin wall's diffuse reflectance seen from inside a closed shell (the cavity's light comes
+    back from it; the sheet is two-sided): the interface's mean reflectance for diffuse light,
+    1 - t_in (entry_transmittance), plus what enters it and comes back from the front colour as
+    cnlm_bsdf draws it, t_in x the boundary's base_color (boundary_material: base_color x (1 - max T)),
+    at most 1 - T (the wall reflects no more than it does not let through: R + T <= 1)."""
+    _, through = sheet_optics(body)
+    t_in = entry_transmittance(body.ior)
+    front = np.asarray(_field(_field(boundary, "params"), "base_color", 0.0), np.float64)
+    reflect = (1.0 - t_in) + t_in * np.clip(front, 0.0, 1.0)
+    return np.clip(np.minimum(reflect, 1.0 - through), 0.0, 1.0)
+
+
 def body_uniforms(material: Any) -> dict[str, object]:
     """The body term's material uniforms (the GLSL library's cnlm_sss_*, snippets/subsurface.glsl;
-    lengths in metres); none when the material has no subsurface body. The GLSL target's plan
+    lengths in metres) of `material` as cnlm_bsdf draws it (its boundary_material: what the preview
+    and the GLSL target make their plan from); none when the material has no subsurface body. The GLSL target's plan
     declares them with these values (glsl/plan.py), so the preview and the target read the same."""
     body = subsurface_of(material)
     if body is None:
@@ -189,6 +203,8 @@ def body_uniforms(material: Any) -> dict[str, object]:
         (np.zeros(3), sheet_optics(body)[1]) if body.thin else (np.clip(body.color, 0.0, 1.0), np.zeros(3))
     )
     return {
+        # thin: what the wall reflects back into a closed shell's cavity (wall_reflectance)
+        "cnlm_sss_wall_reflect": wall_reflectance(material, body) if body.thin else np.zeros(3),
         "cnlm_sss_albedo": reflect,
         "cnlm_sss_mfp": np.asarray(body.radius, np.float64),
         "cnlm_sss_profile_scale": profile_scale(body),

@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from cnlmc.backends import glsl
+from cnlmc.material import Material
 
 from .conftest import GLSLANG, material_of, run_glslang
 
@@ -38,12 +39,12 @@ def read_table(png: bytes) -> np.ndarray:
 
 @pytest.mark.parametrize("phrase", PHRASES)
 def test_the_header_and_sidecar_carry_the_body(phrase):
-    from cnlmc.backends.preview.subsurface import body_uniforms, preintegrated_table
+    from cnlmc.backends.preview.subsurface import body_uniforms, boundary_material, preintegrated_table
 
     files = emitted(phrase)
     sidecar = json.loads(files[f"{phrase}.glsl.json"])
     uniforms = {u["name"]: u["value"] for u in sidecar["uniforms"]}
-    expected = body_uniforms(material_of(phrase))
+    expected = body_uniforms(boundary_material(Material.from_ir(material_of(phrase))))  # the plan is made from it
     for name, value in expected.items():
         assert np.allclose(uniforms[name], value, rtol=1e-12), name
         assert f" {name} = " in files[f"{phrase}.glsl"]  # listed in the header, with its value

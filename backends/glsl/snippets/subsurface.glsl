@@ -3,21 +3,22 @@
 // (backends/preview/shaders/subsurface.glsl.j2 calls cnlm_subsurface) both use this code.
 // cnlm_bsdf is the boundary alone (a volume: its specular lobe, base colour black; a thin sheet:
 // its front, base colour x (1 - max T)); the body adds the radiance
-//   c t_in (1 - F(n.v)) x [ (1 - T_n) (D(n.l, d / r) E_light / pi + E_front / pi)   front: reflected
-//                           + T_n E_back / pi + T_l max(-n.l, 0) E_light / pi ]     back: transmitted
-// c = cnlm_sss_albedo (the dipole's total diffuse reflectance of the medium behind its boundary),
-// t_in = cnlm_sss_entry (the boundary's mean diffuse transmittance where light enters: Jensen et al.
-// 2001's BSSRDF has a Fresnel transmittance at both ends), T = exp(-d / l_d), l_d = cnlm_sss_mfp
-// (the diffuse mean free path 1/sigma_tr) per channel: the share that crosses the body instead of
-// coming back near where it entered; d = the path through the body, along -n (T_n) and towards the
-// light (T_l): the chord through the sphere of the surface's own curvature radius touching it here
-// (a thin part is thin, a thick part thick), at most the chord to the object's bounding sphere
+//   t_in (1 - F(n.v)) x [ R(e_n) (D(n.l, d / r) E_light / pi + E_front / pi)       front: reflected
+//                         + T(e_n) E_back / pi + T(e_l) max(-n.l, 0) E_light / pi ] back: transmitted
+// the body a Kubelka-Munk slab whose reflectance when thick is c = cnlm_sss_albedo (the dipole's total
+// diffuse reflectance of the medium behind its boundary): R(e) = c (1 - e^2) / (1 - c^2 e^2) comes
+// back, T(e) = (1 - c^2) e / (1 - c^2 e^2) crosses (session 9 had c (1 - e) and c e: a backlit body
+// let 2-5x too much through), e = exp(-d / l_d), l_d = cnlm_sss_mfp (the diffuse mean free path
+// 1/sigma_tr) per channel; t_in = cnlm_sss_entry (the boundary's mean diffuse transmittance where
+// light enters: Jensen et al. 2001's BSSRDF has a Fresnel transmittance at both ends); d = the path
+// through the body, along -n (e_n) and towards the light (e_l): the chord through the sphere of the
+// surface's own curvature radius touching it here (a thin part is thin, a thick part thick), at most the chord to the object's bounding sphere
 // (cnlm_sss_centre, cnlm_sss_radius). D is the light's cosine pre-integrated over the
 // Christensen-Burley profile around the curvature radius r (Penner 2011): the table cnlm_sss_lut
 // (rows cos(theta) in [-1, 1], columns u = rho / (1 + rho) in [0, cnlm_sss_lut_u_max], rho = d / r,
 // d = cnlm_sss_profile_scale), read with texelFetch and interpolated bilinearly here.
 // A thin wall (cnlm_sss_thin == 1) transmits T_d = cnlm_sss_wall_through (the Kubelka-Munk slab of
-// its medium at its thickness; squared on a closed mesh: two walls) of the light behind it.
+// its medium at its thickness) of the light behind it; a closed shell's cavity (cnlm_sss_cavity).
 // Lengths: cnlm_sss_mfp and cnlm_sss_profile_scale in metres, positions in scene units of
 // cnlm_sss_unit metres each.
 
@@ -47,8 +48,26 @@ float cnlm_sss_path(vec3 p, vec3 n, vec3 d, float curvature) {
     return min(max(local, 0.0), cnlm_sss_chord(p, d));
 }
 
+// exp(-d / l_d) per channel: d the path from p along the direction `d` through the body.
 vec3 cnlm_sss_crossing(vec3 p, vec3 n, vec3 d, float curvature) {
     return exp(-cnlm_sss_path(p, n, d, curvature) / cnlm_sss_in_units(cnlm_sss_mfp));
+}
+
+// The body as a Kubelka-Munk slab whose infinitely thick reflectance is the IR's colour c, of optical
+// depth d / l_d (e = exp(-d / l_d), cnlm_sss_crossing): what it reflects (R) and what it lets through (T)
+//   R = c (1 - e^2) / (1 - c^2 e^2),  T = (1 - c^2) e / (1 - c^2 e^2)      (R + T <= 1; thick: R = c)
+vec3 cnlm_sss_slab_denominator(vec3 e) {
+    vec3 c = min(cnlm_sss_albedo, vec3(0.9999));
+    return max(1.0 - c * c * e * e, vec3(1e-4));
+}
+
+vec3 cnlm_sss_slab_reflected(vec3 e) {
+    return min(cnlm_sss_albedo, vec3(0.9999)) * (1.0 - e * e) / cnlm_sss_slab_denominator(e);
+}
+
+vec3 cnlm_sss_slab_through(vec3 e) {
+    vec3 c = min(cnlm_sss_albedo, vec3(0.9999));
+    return (1.0 - c * c) * e / cnlm_sss_slab_denominator(e);
 }
 
 float cnlm_sss_exit(vec3 n, vec3 v) {
@@ -76,14 +95,22 @@ vec3 cnlm_sss_diffused(float curvature, float nl) {
 }
 
 // A thin wall: what it transmits diffusely (T_d) of the light behind it; its front is cnlm_bsdf's.
+// A closed shell (a lantern, a leaf-skinned ball): light crosses a wall into the cavity, where it is
+// uniform (a sphere's: any diffuse source on it lights its inside evenly; a convex shell's
+// approximately), comes back from the walls (cnlm_sss_wall_reflect, R_in) and leaves through them:
+// radiance out = T x T E_out / (pi (1 - R_in)), E_out the irradiance on the outside averaged over
+// the shell: the mean of the light on both sides and a quarter of the light's (a convex body's
+// cross-section over its area, Cauchy). Energy: T / (1 - R_in) <= 1 as R_in + T <= 1.
+vec3 cnlm_sss_cavity(vec3 light, vec3 front, vec3 back) {
+    vec3 gain = cnlm_sss_wall_through / max(1.0 - cnlm_sss_wall_reflect, vec3(1e-4));
+    return cnlm_sss_wall_through * gain * (0.5 * (front + back) + 0.25 * light / CNLM_PI);
+}
+
 vec3 cnlm_sss_thin_wall(vec3 n, vec3 v, vec3 l, vec3 light, vec3 front, vec3 back) {
-    vec3 through = cnlm_sss_closed == 1 ? cnlm_sss_wall_through * cnlm_sss_wall_through : cnlm_sss_wall_through;
-    vec3 behind = cnlm_sss_closed == 1
-        // a closed shell (a lantern): its cavity holds what came in anywhere, the mean of the light
-        // on both sides and a quarter of the light's (a sphere's cross-section over its area)
-        ? 0.5 * (front + back) + 0.25 * light / CNLM_PI
-        : back + max(-dot(n, l), 0.0) * light / CNLM_PI;
-    return cnlm_sss_exit(n, v) * through * behind;
+    vec3 through = cnlm_sss_closed == 1
+        ? cnlm_sss_cavity(light, front, back)
+        : cnlm_sss_wall_through * (back + max(-dot(n, l), 0.0) * light / CNLM_PI);
+    return cnlm_sss_exit(n, v) * through;
 }
 
 // A thick volume: what enters near here comes back (1 - T_n) or crosses the body (T_n, T_l).
@@ -91,9 +118,9 @@ vec3 cnlm_sss_volume(vec3 p, vec3 n, vec3 v, vec3 l, vec3 light, vec3 front, vec
     float nl = dot(n, l);
     vec3 through_n = cnlm_sss_crossing(p, n, -n, curvature);
     vec3 through_l = cnlm_sss_crossing(p, n, l, curvature);
-    vec3 reflected = (1.0 - through_n) * (cnlm_sss_diffused(curvature, nl) * light / CNLM_PI + front);
-    vec3 crossed = through_n * back + through_l * max(-nl, 0.0) * light / CNLM_PI;
-    return cnlm_sss_albedo * cnlm_sss_entry * cnlm_sss_exit(n, v) * (reflected + crossed);
+    vec3 reflected = cnlm_sss_slab_reflected(through_n) * (cnlm_sss_diffused(curvature, nl) * light / CNLM_PI + front);
+    vec3 crossed = cnlm_sss_slab_through(through_n) * back + cnlm_sss_slab_through(through_l) * max(-nl, 0.0) * light / CNLM_PI;
+    return cnlm_sss_entry * cnlm_sss_exit(n, v) * (reflected + crossed);
 }
 
 // The body's radiance towards v at p (scene units), n the unit shading normal, l the unit direction
