@@ -573,9 +573,21 @@ class WordFormation:
         found = self._resolved(words[1])
         adjective = next((c for c in found if c.tag == "ADJ"), None)
         if adjective is None:
-            return None
+            return self._negated_unknown(words, found)
         reading = self._opposite_reading(f"{words[0]} {words[1]}", 1, adjective, words[1])
         return Reading(tuple(Part(0, 1, 0, None, p.candidates) for p in reading.parts), reading.words, reading.note)
+
+    def _negated_unknown(self, words: Sequence[str], found: Sequence[Candidate]) -> Reading | None:
+        """'white, not yellowed, plastic', 'grey, not red, slate': 'not' and a word that is no
+        adjective (a colour, or a word the lexicon does not know), set off by a comma as a list item,
+        is "without X": no effect, noted (an unknown word's spelling suggestions with it)."""
+        if len(words) < 3 or words[2] not in _LIST_MARKS or not words[1].isalpha():
+            return None
+        suggestions = [] if found else self.lexicon.suggest(words[1])[:2]
+        meant = f" (did you mean {' or '.join(repr(w) for w in suggestions)}?)" if suggestions else ""
+        said = "" if found else ", a word the lexicon does not know"
+        note = f"read '{words[0]} {words[1]}' as without '{words[1]}'{said}: no effect{meant}"
+        return Reading((), 2, note)
 
     def _prefixed_word(self, first: str, adverb: str, second: str) -> Reading | None:
         found = self._prefix_target(second, self.rules.prefix_endings[first])
@@ -583,6 +595,10 @@ class WordFormation:
             return self.read(first)
         parts = (Part(0, 0, 0, None, self._adverb(adverb)), Part(1, 1, 0, None, found))
         return Reading(parts, 2, f"read '{first} {second}' as '{adverb} {found[0].key}' ({first}: {adverb})")
+
+
+#: What sets a negated list item off after it ('white, not yellowed, plastic').
+_LIST_MARKS = frozenset((",", ";", ")", "]"))
 
 
 def _merged_wordnet(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:

@@ -141,19 +141,33 @@ def test_than_on_the_command_line_prints_the_note():
         ("copper, not patinated", "copper"),
         ("glossy, not scratched, red plastic", "glossy red plastic"),
         ("walnut; not worn; oiled", "oiled walnut"),
+        ("white, not yellowed, plastic", "white plastic"),
+        ("grey, not red, slate", "grey slate"),
+        ("black, not grungy, rubber", "black rubber"),
+        ("shiny, but not rusty, iron", "shiny iron"),
     ],
 )
 def test_a_negation_with_no_opposite_in_a_list_takes_its_separator_with_it(phrase, same_as):
     result, said = look(LEX, phrase)
     _, plain = look(LEX, same_as)
     assert said == plain
-    assert any(n.startswith("read 'not ") and "no effect" in n for n in notes(result)), notes(result)
+    assert any(n.startswith("read '") and "not " in n and "no effect" in n for n in notes(result)), notes(result)
 
 
 def test_a_negation_with_a_declared_opposite_in_a_list_is_still_the_opposite():
     _, said = look(LEX, "satin, not textured, plastic")
     _, opposite = look(LEX, "satin, smooth, plastic")
     assert said == opposite
+    assert look(LEX, "smooth, but not glossy, marble")[1] == look(LEX, "smooth, matte, marble")[1]
+    assert look(LEX, "grey but not shiny steel")[1] == look(LEX, "grey dull steel")[1]
+
+
+def test_not_before_an_unknown_word_outside_a_list_is_still_an_error():
+    """'not yellowed plastic' (no comma): 'not' has nothing it can negate, E002 as before; in a list
+    the unknown word is noted with its spelling suggestions."""
+    assert "E002" in codes(compile_source("not yellowed plastic", "t.cnl", LEX))
+    result, _ = look(LEX, "white, not grungy, tiles")
+    assert any("a word the lexicon does not know" in n for n in notes(result))
 
 
 def test_a_dropped_negation_never_eats_a_word_that_is_not_a_separator():
