@@ -149,21 +149,14 @@ def _all_finite(state: MaterialState) -> bool:
             if kind is float:
                 if not -big <= value <= big:  # NaN fails both
                     return False
-            elif kind is list:
-                try:
-                    total = sum(value)
-                except TypeError:
-                    return False
-                if not -big <= total <= big:
-                    return False
-            elif kind is dict:
+            elif (kind is list or kind is dict) and not _values_finite((value,)):
                 return False
     return True
 
 
 def _values_finite(values: Iterable[Any]) -> bool:
-    """_finite of each value, its common cases written out (False where it is not sure: a dict, a
-    list of anything but numbers, a sum that overflows)."""
+    """_finite of each value, its common cases written out (False where it is not sure: a sum
+    that overflows)."""
     big = BIGGEST
     for value in values:
         kind = type(value)
@@ -173,11 +166,13 @@ def _values_finite(values: Iterable[Any]) -> bool:
         elif kind is list:
             try:
                 total = sum(value)  # one C loop: a NaN or an infinity anywhere makes the sum one too
-            except TypeError:
-                return False
+            except TypeError:  # not all numbers (a coat's aliases): each one
+                if not _values_finite(value):
+                    return False
+                continue
             if not -big <= total <= big:
                 return False
-        elif kind is dict:
+        elif kind is dict and not _values_finite(value.values()):
             return False
     return True
 
