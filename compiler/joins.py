@@ -107,6 +107,8 @@ class Joiner:
                 out.append(word)
         if len(out) > 2 and self._is_coat_finish(out):
             self._coat_after(out, diags)
+        elif len(out) > 2 and _layer_of(out, diags) and self._coat_alone(out) is not None:
+            self._coat_on_substrate(out, diags)  # "a coat of satin varnish"
         elif self._coat_alone(out) is not None:
             self._coat_on_substrate(out, diags)
         _feature_colour_list(out, diags)
@@ -137,6 +139,8 @@ class Joiner:
                     j += 1
                 if j == len(tagged) or tagged[j].unknown or not of_tag(tagged[j], "NOUN"):
                     continue
+                if of_tag(tagged[-1], "COAT") and any(c.key == _LAYER for c in of_tag(thing, "COAT")):
+                    continue  # 'a coat of satin varnish': a layer of a coat (_layer_of), not satin
                 return self._made_of_join(tagged, k - 1, k + len(words), j, diags)
         return tagged
 
@@ -477,6 +481,26 @@ def _one_edit(a: str, b: str) -> bool:
         )
     short, long_ = (a, b) if len(a) < len(b) else (b, a)
     return any(long_[:k] + long_[k + 1 :] == short for k in range(len(long_)))
+
+
+#: The generic coat entry: 'a coat of varnish' names the layer of the coat after 'of'.
+_LAYER = "coat"
+
+
+def _layer_of(out: list[Tagged], diags: list[Diagnostic]) -> bool:
+    """'a coat of varnish', 'a coat of satin lacquer': the generic coat word and 'of' before a line
+    that ends in another coat go (the coat after 'of' is the layer), with a note; True when they did."""
+    last = out[-1]
+    if not any(c.tag == "COAT" and c.key != _LAYER for c in last.candidates):
+        return False
+    for k in range(len(out) - 2):
+        if any(c.tag == "COAT" and c.key == _LAYER for c in out[k].candidates) and of_tag(out[k + 1], "OF"):
+            said = " ".join(t.text for t in out[k:])
+            note = f"read '{said}' as '{' '.join(t.text for t in out[k + 2 :])}' (a layer of it)"
+            diags.append(Diagnostic(out[k].span.to(last.span), Severity.NOTE, NOTE_CODE, note))
+            del out[k : k + 2]
+            return True
+    return False
 
 
 def _plating_first(out: list[Tagged]) -> None:

@@ -260,6 +260,10 @@ def test_the_new_nouns_in_german(german, english):
         ("a satin, dark green powder coat", "satin dark green powder-coated steel"),
         ("glossy white enamel coat", "glossy white enameled steel"),
         ("red gelcoat", "fiberglass with a red gel coat"),
+        ("spar varnish", "wood with a varnish"),
+        ("satin shellac", "wood with a satin varnish"),
+        ("a coat of varnish", "wood with a varnish"),
+        ("a coat of satin varnish", "wood with a satin varnish"),
     ],
 )
 def test_a_coat_named_alone_is_that_coat_on_its_usual_substrate(phrase, same_as):
@@ -284,6 +288,11 @@ def test_a_pigmented_coat_alone_is_opaque_paint_not_a_tint_over_metal():
     assert material["model"]["base"] == "dielectric"
     red, green, blue = material["params"]["base_color"]
     assert red > 4 * max(green, blue, 0.01)
+
+
+def test_a_coat_of_a_coat_after_with_is_that_coat():
+    assert look(LEX, "oak with a coat of glossy lacquer")[1] == look(LEX, "oak with a glossy lacquer")[1]
+    assert look(LEX, "a coat of red paint")[1] == look(LEX, "red paint")[1]  # paint: a material, as before
 
 
 def test_a_name_before_a_coat_alone_stays_the_name():
