@@ -47,6 +47,7 @@ def _params(
 ) -> JSONDict:
     """The parameters the model uses, rounded."""
     p, base, noun = state.params, model["base"], state.noun
+    noun_data = noun.data if noun is not None else {}
     out: JSONDict = {}
     for k in PARAMS_BY_MODEL[base]:
         if k in p:
@@ -56,7 +57,7 @@ def _params(
                 out[k] = round6(value)
             elif kind is not list:
                 out[k] = rounded(value)
-            elif noun is not None and noun.data.get(k) is value:  # straight from the lexicon: rounded once
+            elif noun is not None and noun_data.get(k) is value:  # straight from the lexicon: rounded once
                 out[k] = _noun_list(rounded_optics, noun, k)
             else:
                 out[k] = round6_list(value)

@@ -323,8 +323,11 @@ class Tagger:
         return False
 
     def _candidates(self, words: tuple[str, ...]) -> tuple[Candidate, ...]:
-        cached = self.memo.get(words)
-        if cached is None:
+        entries = self.memo._entries  # WordMemo.get written out: a multi-word entry asks for several forms
+        cached = entries.get(words)
+        if cached is not None:
+            entries.move_to_end(words)
+        else:
             cached = self._find_candidates(words)
             self.memo.put(words, cached)
         return cached

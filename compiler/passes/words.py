@@ -205,9 +205,10 @@ def effects_for(adjective: Entry, state: MaterialState) -> list[Effect]:
 def effect_source(adjective: Entry, state: MaterialState) -> tuple[str, list[Effect]]:
     """effects_for, with where in the entry the list is ('on.<noun>', 'on.<class>' or 'effects'); a
     transparent noun of another class (plexiglass: a plastic whose model is glass) takes 'on.glass'."""
-    data, noun = adjective.data, noun_of(state)
+    data = adjective.data
     on = data.get("on")
     if on:
+        noun = noun_of(state)
         for name in (noun.key, noun.data.get("class"), noun.data.get("model")):
             if on.get(name):
                 return f"on.{name}", on[name]
