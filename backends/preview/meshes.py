@@ -14,7 +14,7 @@ import numpy as np
 from .mesh import Mesh, MeshError, make_mesh, normalized, vertex_normals
 from .mesh_io import load_mesh
 
-__all__ = ["MESHES", "Mesh", "MeshError", "fit", "make_mesh", "mesh_by_name", "shader_ball", "sphere", "teapot"]
+__all__ = ["MESHES", "Mesh", "MeshError", "fit", "leaf", "make_mesh", "mesh_by_name", "shader_ball", "sphere", "teapot"]
 
 DATA = Path(__file__).parent / "data"
 
@@ -28,6 +28,7 @@ UV_UNIT_M = math.pi * 0.05
 SPHERE_DIAMETER_M = 0.10  # a 10 cm ball (issue #15)
 SHADER_BALL_UNIT_M = 0.06  # profile units -> metres: a 9.6 cm ball on a pedestal, 11.4 cm tall
 TEAPOT_UNIT_M = 0.04  # one unit of Newell's data: 26 cm spout to handle, 12.6 cm tall (a ~1 l teapot)
+LEAF_UNIT_M = 0.05  # a 10 cm leaf blade, 4.2 cm wide
 
 
 def grid_indices(rows: int, cols: int, offset: int = 0) -> np.ndarray:
@@ -213,8 +214,27 @@ def fit(mesh: Mesh, stand: bool = True) -> Mesh:
     return Mesh(pos.astype("f4"), mesh.normals, mesh.tangents, mesh.uvs, mesh.indices, mesh.metres_per_uv)
 
 
+def leaf(rows: int = 48, cols: int = 24) -> Mesh:
+    """An open, gently curved leaf blade facing +z (the camera): 2 units long on y, its half-width
+    0.42 (1 - s^2)^0.75 tapering to both tips, bent back into a trough along its midrib
+    (z = 0.35 x^2 + 0.12 y^2). A thin sheet on it is lit from one side and seen from the other,
+    as a leaf is (a closed mesh holds a cavity: docs/subsurface.md). UVs in UV_UNIT_M at
+    LEAF_UNIT_M metres a unit (a 10 cm leaf)."""
+    s = np.linspace(-1.0, 1.0, rows + 1)[:, None]
+    t = np.linspace(-1.0, 1.0, cols + 1)[None, :]
+    x = t * 0.42 * (1.0 - s**2) ** 0.75
+    y = s * np.ones_like(t)
+    pos = np.stack([x, y, 0.35 * x**2 + 0.12 * y**2], -1).reshape(-1, 3)
+    nor = np.stack([-0.7 * x, -0.24 * y, np.ones_like(x)], -1).reshape(-1, 3)  # (-dz/dx, -dz/dy, 1)
+    uvs = np.stack([x, y], -1).reshape(-1, 2) * (LEAF_UNIT_M / UV_UNIT_M)
+    idx = grid_indices(rows, cols)[:, [0, 2, 1]]  # counter-clockwise seen from +z
+    return make_mesh(pos, idx, nor, uvs, metres_per_uv=UV_UNIT_M)
+
+
 #: name -> generator (no arguments). `load_mesh` also accepts a path to an OBJ/PLY file.
-MESHES: dict[str, Callable[[], Mesh]] = {"sphere": sphere, "shader_ball": shader_ball, "teapot": teapot}
+MESHES: dict[str, Callable[[], Mesh]] = {"sphere": sphere, "shader_ball": shader_ball, "teapot": teapot, "leaf": leaf}
+#: the generated meshes that are open sheets, not solids (no inside: a thin material has no cavity)
+OPEN_MESHES = ("leaf",)
 
 
 def mesh_by_name(name_or_path: str) -> Mesh:

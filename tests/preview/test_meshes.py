@@ -26,12 +26,23 @@ def test_generated_meshes_are_sound(name):
     assert np.allclose(np.linalg.norm(mesh.normals, axis=1), 1, atol=1e-5)
     assert np.allclose(np.linalg.norm(mesh.tangents, axis=1), 1, atol=1e-5)
     assert np.abs(np.sum(mesh.normals * mesh.tangents, axis=1)).max() < 1e-4
-    assert M.signed_volume(mesh.positions, mesh.indices) > 0  # outward winding
     fn = face_normals(mesh.positions.astype(float), mesh.indices.astype(int))
     vn = mesh.normals[mesh.indices].mean(1)
     assert (np.einsum("ij,ij->i", fn, vn) >= 0).mean() > 0.99  # normals agree with winding
+    if name in M.OPEN_MESHES:
+        return
+    assert M.signed_volume(mesh.positions, mesh.indices) > 0  # outward winding
     edges = len(mesh.indices) * 3 / 2
     assert open_edges(mesh) < 0.02 * edges  # watertight-ish
+
+
+def test_the_leaf_is_an_open_sheet_facing_the_camera():
+    """A thin material on it is seen on the side away from the light (docs/subsurface.md)."""
+    mesh = M.leaf()
+    assert not mesh.closed and open_edges(mesh) > 0
+    assert (mesh.normals[:, 2] > 0.5).all()  # towards +z, where the preview's camera is
+    lo, hi = mesh.bounds
+    assert np.allclose(hi[:2] - lo[:2], [0.84, 2.0], atol=0.02)  # 10 cm x 4.2 cm at LEAF_UNIT_M
 
 
 def test_sphere_is_watertight_and_round():
