@@ -31,6 +31,7 @@ import argparse
 import sys
 import tempfile
 import time
+from collections.abc import Collection
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -371,16 +372,26 @@ def spread(kinds: list[str], count: int) -> list[int]:
 
 
 def measure(
-    phrases, size: int, spp: int, tier: str, mitsuba: bool = True, materialx: int = 1 << 30, log=print
+    phrases,
+    size: int,
+    spp: int,
+    tier: str,
+    mitsuba: bool = True,
+    materialx: int | Collection[str] = 1 << 30,
+    log=print,
 ) -> list[Row]:
     """One Row per phrase: the IR and each target under the white sky (see the module doc);
-    MaterialX renders at most `materialx` of them (spread over the model kinds)."""
+    MaterialX renders at most `materialx` of them (a number: spread over the model kinds), or the
+    phrases named (a collection)."""
     from cnlmc.backends.preview.render import Renderer
 
     scene = white_scene(size)
     mus = view_cosines(scene, size)
     materials = [material_of(phrase) for phrase in phrases]
-    rendered = spread([kind_of(m) for m in materials], materialx)
+    if isinstance(materialx, int):
+        rendered = spread([kind_of(m) for m in materials], materialx)
+    else:
+        rendered = [i for i, phrase in enumerate(phrases) if phrase in materialx]
     rows, coverages = [], []
     with tempfile.TemporaryDirectory() as folder:
         chosen = [materials[i] for i in rendered]
