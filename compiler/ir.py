@@ -103,10 +103,18 @@ def _provenance(state: MaterialState) -> dict[str, list[JSONDict]]:
         made = out[param] = []
         for step in steps:  # state.step_json, written out: a material has a dozen steps
             words = step.words
-            key = words[0].span.start if len(words) == 1 else words_key(words)
-            lists = shared.get(key)
-            if lists is None:
-                lists = shared[key] = ([w.text for w in words], [w.span.as_list() for w in words])
+            if len(words) == 1:  # most steps: one word (words_key and Span.as_list written out)
+                word = words[0]
+                span = word.span
+                lists = shared.get(span.start)
+                if lists is None:
+                    col = span.col
+                    lists = shared[span.start] = ([word.text], [[span.line, col, col + (span.end - span.start)]])
+            else:
+                key = words_key(words)
+                lists = shared.get(key)
+                if lists is None:
+                    lists = shared[key] = ([w.text for w in words], [w.span.as_list() for w in words])
             value = step.value
             if step.source:  # lexicon values are exact
                 made.append(

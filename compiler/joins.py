@@ -303,10 +303,9 @@ class Joiner:
         coat = out[-1]
         words = out[start:]
         said = "".join(t.text if of_tag(t, "COMMA") else f" {t.text}" for t in words).strip()
-        s = coat.span  # the added words' spans: empty, where no word starts (the parser keys words by start)
-        noun = Tagged(
-            substrate, Span(s.end, s.end, s.line, s.col + s.end - s.start), (Candidate("NOUN", substrate, "nouns"),)
-        )
+        s = coat.span  # the added words start inside the coat's word, where no word starts (the parser keys
+        # words by start); the noun ends where the coat does, so a 'with' put after it (_feature_first) is free
+        noun = Tagged(substrate, Span(s.start + 2, s.end, s.line, s.col + 2), (Candidate("NOUN", substrate, "nouns"),))
         adjective = self.lexicon.require("coats", of_tag(coat, "COAT")[0].key).get("adjective")
         if adjective is not None:  # 'red powder coating' = red powder-coated steel: the pigment is the surface
             reading = f"{said.removesuffix(coat.text)}{adjective} {substrate}"
@@ -626,11 +625,13 @@ def may_join(tagged: list[Tagged]) -> bool:
     a COAT or FEATURE reading) before another word or after a noun (see Joiner.joined); or ends in
     an unknown word after a noun ("pewter tankard") or, with no 'with' or comma, in a describing
     word after a noun ("Eiche geölt")."""
-    noun_before = noun_seen = noun_before_last = described_noun = False
+    noun_before = noun_seen = noun_before_last = described_noun = with_seen = unknown_seen = False
     plain = True  # no 'with', no comma
     final = tagged[-1] if tagged else None
     for word in tagged:
         noun = head = describing = False
+        if word.unknown:
+            unknown_seen = True
         for candidate in word.candidates:
             tag = candidate.tag
             if tag == "OBJECT":
@@ -642,8 +643,10 @@ def may_join(tagged: list[Tagged]) -> bool:
             elif tag == "ADJ":
                 describing = True
             elif tag == "WITH" or tag == "COMMA":
-                if tag == "WITH" and described_noun and plain:  # "Marmor poliert mit grauen Adern"
-                    return True
+                if tag == "WITH":
+                    if described_noun and plain:  # "Marmor poliert mit grauen Adern"
+                        return True
+                    with_seen = True
                 plain = False
         if (noun and noun_before) or (head and (word is not final or noun_before)):
             return True
@@ -654,11 +657,12 @@ def may_join(tagged: list[Tagged]) -> bool:
         return False
     if final.unknown:
         return noun_before_last
-    if any(c.tag == "COAT" for c in final.candidates) and not any(of_tag(t, "WITH") for t in tagged):
+    final_tags = [c.tag for c in final.candidates]
+    if "COAT" in final_tags and not with_seen:
         return True  # "satin varnish": a coat named as the whole material
-    if any(t.unknown for t in tagged):
+    if unknown_seen:
         return True  # "bike paint": an unknown word may say where the material is used
-    return plain and noun_seen and any(c.tag == "ADJ" for c in final.candidates)
+    return plain and noun_seen and "ADJ" in final_tags
 
 
 def _more_things(out: list[Tagged], word: Tagged, said: list[Tagged]) -> bool:

@@ -149,7 +149,16 @@ def _all_finite(state: MaterialState) -> bool:
             if kind is float:
                 if not -big <= value <= big:  # NaN fails both
                     return False
-            elif (kind is list or kind is dict) and not _values_finite((value,)):
+            elif kind is list:
+                try:
+                    total = sum(value)  # a colour: _values_finite's list case, without its call
+                except TypeError:
+                    if not _values_finite(value):
+                        return False
+                    continue
+                if not -big <= total <= big:
+                    return False
+            elif kind is dict and not _values_finite(value.values()):
                 return False
     return True
 
