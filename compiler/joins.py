@@ -278,10 +278,15 @@ class Joiner:
         coats = of_tag(last, "COAT")
         if not coats or last.unknown or of_tag(last, "NOUN"):
             return None
-        if not all(not t.unknown and any(c.tag in _BEFORE_A_COAT for c in t.candidates) for t in out[:-1]):
-            return None
         entry = self.lexicon.entry("coats", coats[0].key)
-        return None if entry is None else entry.get("substrate")
+        if entry is None:
+            return None
+        # before a pigmented coat read as its adjective a feature may stand ('speckled powder coat':
+        # _feature_first makes it a clause); in a 'with' clause only describing words do
+        allowed = _BEFORE_A_COAT | {"FEATURE"} if entry.get("adjective") else _BEFORE_A_COAT - {"PROP"}
+        if not all(not t.unknown and any(c.tag in allowed for c in t.candidates) for t in out[:-1]):
+            return None
+        return entry.get("substrate")
 
     def _coat_on_object(self, word: Tagged, rest: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
         """'floor varnish', 'car clear coat': an object before a coat named alone is what the coat is on,

@@ -545,7 +545,9 @@ class WordFormation:
 
     def _emphatic_negation(self, words: Sequence[str]) -> Reading | None:
         """'gar nicht X', 'überhaupt nicht X' = 'nicht X': the emphatic word before the negation is
-        taken along with it."""
+        taken along with it ('but not' with nothing after it: no reading)."""
+        if len(words) < 3:
+            return None
         found = self._negated_words(words[1:])
         if found is None:
             return None

@@ -162,6 +162,17 @@ def test_a_negation_with_a_declared_opposite_in_a_list_is_still_the_opposite():
     assert look(LEX, "grey but not shiny steel")[1] == look(LEX, "grey dull steel")[1]
 
 
+def test_a_negation_in_a_german_list():
+    assert look(DE, "glänzend, nicht rostig, Eisen")[1] == look(DE, "glänzendes Eisen")[1]
+    assert look(DE, "matt, aber nicht rau, Kunststoff")[1] == look(LEX, "matte, smooth, plastic")[1]
+
+
+@pytest.mark.parametrize(("phrase", "lexicon"), [("but not", LEX), ("oak, yet not", LEX), ("gar nicht", DE)])
+def test_a_conjunction_and_not_with_nothing_after_is_an_error_not_a_traceback(phrase, lexicon):
+    result = compile_source(phrase, "t.cnl", lexicon)
+    assert not result.ok and all(d.span is not None for d in result.diagnostics if d.severity.name == "ERROR")
+
+
 def test_not_before_an_unknown_word_outside_a_list_is_still_an_error():
     """'not yellowed plastic' (no comma): 'not' has nothing it can negate, E002 as before; in a list
     the unknown word is noted with its spelling suggestions."""
@@ -264,6 +275,8 @@ def test_the_new_nouns_in_german(german, english):
         ("satin shellac", "wood with a satin varnish"),
         ("a coat of varnish", "wood with a varnish"),
         ("a coat of satin varnish", "wood with a satin varnish"),
+        ("fine grain powder coating", "powder-coated steel with fine grain"),
+        ("speckled powder coat", "powder-coated steel with speckles"),
     ],
 )
 def test_a_coat_named_alone_is_that_coat_on_its_usual_substrate(phrase, same_as):
