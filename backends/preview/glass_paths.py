@@ -260,7 +260,7 @@ def _bracket(grid: np.ndarray, x: float) -> tuple[int, int, float]:
 def main() -> int:
     data = build()
     TABLE.parent.mkdir(parents=True, exist_ok=True)
-    np.savez_compressed(TABLE, **data)
+    np.savez_compressed(TABLE, **data)  # type: ignore[arg-type]
     print(f"wrote {TABLE}")
     return 0
 
