@@ -98,9 +98,10 @@ def _coat(coat: JSONDict | None, convention: str) -> JSONDict:
 def _provenance(state: MaterialState) -> dict[str, list[JSONDict]]:
     """param -> its steps in JSON form; steps naming the same words share their word lists."""
     shared: dict[int | tuple[int, ...], WordLists] = {}
-    out = {}
+    out: dict[str, list[JSONDict]] = {}
     for param, steps in state.provenance.items():
-        made = out[param] = []
+        made: list[JSONDict] = []
+        out[param] = made
         for step in steps:  # state.step_json, written out: a material has a dozen steps
             words = step.words
             if len(words) == 1:  # most steps: one word (words_key and Span.as_list written out)

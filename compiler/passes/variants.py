@@ -66,8 +66,12 @@ ChoicePoint = tuple[ast.Colour, ...] | tuple[ast.Word, ...]
 def choice_points(material: ast.Material) -> list[ChoicePoint]:
     """The alternatives of a phrase in phrase order: each group's colours then adjectives, then nouns."""
     points: list[ChoicePoint] = []
-    clauses = tuple(g for f in material.features for g in f.groups)  # 'with grey or white veins'
-    for group in material.groups + (material.coat.groups if material.coat else ()) + clauses:
+    groups = material.groups
+    if material.coat:
+        groups += material.coat.groups
+    if material.features:  # 'with grey or white veins'
+        groups += tuple([g for f in material.features for g in f.groups])
+    for group in groups:
         for options in (group.colours, group.adjectives):
             if len(options) > 1:
                 points.append(options)
