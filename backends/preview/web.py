@@ -32,7 +32,7 @@ from .albedo_tables import TableCache
 from .environment import environment
 from .environment_pass import IRRADIANCE_SAMPLES, IRRADIANCE_SIZE, PREFILTER_LEVELS, PREFILTER_SAMPLES
 from .flakes import flake_uniforms
-from .glass import bounding_sphere
+from .glass import bounding_sphere, internal_paths
 from .material_textures import MAP_SIZE, bake_maps, encode_map
 from .mesh import Mesh, make_mesh
 from .meshes import MESHES, UV_UNIT_M, fit, sphere
@@ -159,7 +159,11 @@ class WebScene:
             "glass": material.model.base == "glass",
             "mesh_uniforms": mesh_uniforms(material),
             "uv_unit_m": UV_UNIT_M,
-            "tables": {**self.split_tables(material, shader.plan.roughness_map), **body_tables(shader.plan)},
+            "tables": {
+                **self.split_tables(material, shader.plan.roughness_map),
+                **body_tables(shader.plan),
+                **glass_tables(material),
+            },
             "prefilter": prefilter_alphas(material, shader.plan),
             "maps": self.maps(material, shader.samplers, write, exists, notes),
             "notes": notes,
@@ -339,6 +343,14 @@ def body_tables(plan: Any) -> dict[str, Any]:
     material: a texture, as the split-sum tables are (a uniform array of 561 floats would pass
     OpenGL ES 3.0's 224 fragment uniform vectors)."""
     return {"cnlm_sss_lut": float_table(rgba(lut_image()))} if plan.subsurface else {}
+
+
+def glass_tables(material: Material) -> dict[str, Any]:
+    """A glass's table of the light leaving a rough ball (pv_glass_paths, transmission.glsl.j2), as
+    object_pass binds it: a texture like the split-sum tables."""
+    if material.model.base != "glass":
+        return {}
+    return {"pv_glass_paths": float_table(internal_paths(float(material.params.ior)))}
 
 
 def prefilter_alphas(material: Material, plan: Any) -> dict[str, float]:
