@@ -136,18 +136,19 @@ def test_the_canvas_draws_the_pixels_the_page_shows(page: Any, blue: np.ndarray)
     try:
         page.set_viewport_size({"width": 760, "height": 860})
         page.wait_for_function(
-            "(() => { const c = document.getElementById('view'); return c.clientWidth < 512 && c.width === c.clientWidth; })()",
+            "() => { const c = document.getElementById('view'); return c.clientWidth < 512 && c.width === c.clientWidth; }",
             timeout=DRAW_SECONDS * 1000,
         )
         width, height, shown = page.evaluate(sizes)
         assert width == height == shown < 512
         page.wait_for_function(
-            f"document.getElementById('view').dataset.side === '{width}'", timeout=DRAW_SECONDS * 1000
+            f"() => document.getElementById('view').dataset.side === '{width}'", timeout=DRAW_SECONDS * 1000
         )
         assert blue_body(canvas_pixels(page)).mean() > 0.05  # the blue material, drawn again
     finally:
         page.set_viewport_size({"width": 1280, "height": 860})
-    page.wait_for_function("document.getElementById('view').width === 512", timeout=DRAW_SECONDS * 1000)
+    # (a function, not an expression: polling an expression is an eval, which the page's CSP refuses)
+    page.wait_for_function("() => document.getElementById('view').width === 512", timeout=DRAW_SECONDS * 1000)
 
 
 def test_the_page_holds_the_parts_the_server_counts_as_sent(page: Any) -> None:

@@ -32,7 +32,7 @@ const FULL_BUDGET_MS = 90;
 // show()'s full frame is drawn in bands of rows of about BAND_MS each (at most MAX_BANDS, as many
 // when its cost is not known yet), the page's tasks run between them: a key typed meanwhile waits
 // for one band, not the whole frame. Our choice; each band costs a read-back and the mesh again
-// (4 bands: +20-50 % of a 512² frame on SwiftShader), so a frame that fits one band is one band.
+// (4 bands: +20-75 % of a 512² frame on SwiftShader), so a frame that fits one band is one band.
 const BAND_MS = 60;
 const MAX_BANDS = 4;
 
@@ -75,8 +75,8 @@ function inRows(rect, rows) {
 }
 
 // The scale of the quick frame for a frame that costs `msPerPixel` (null: not measured yet) on
-// `pixels`: 1 (no quick frame) when the full frame fits the budget, else the size that fits it,
-// between MIN_QUICK_SCALE and `largest`.
+// `pixels`: 1 (no quick frame) when the full frame fits `fullBudgetMs` (or the quick budget), else
+// the size whose frame fits `budgetMs`, between MIN_QUICK_SCALE and `largest`.
 export function quickScaleFor(msPerPixel, pixels, largest, budgetMs = QUICK_BUDGET_MS, fullBudgetMs = FULL_BUDGET_MS) {
   if (!largest || largest >= 1) return 1;
   if (msPerPixel === null || msPerPixel === undefined) return largest;
