@@ -43,6 +43,7 @@ from .conversions import (
     roughplastic_diffuse_scale,
     rounded,
     with_base_color,
+    without_extras,
 )
 from .mitsuba_principled import fabric_roughness, sheen_base
 from .mitsuba_subsurface import VOLUME_MAX_DEPTH, medium_entry, subsurface_bsdf
@@ -285,7 +286,46 @@ def plastic_bsdf(material: Material, tex: BsdfTextures, rough: bool) -> Prop:
     energy (roughplastic re-reflects inside, the IR keeps (1 - F)(1 - F): docs/bsdf.md "White furnace")."""
     params = material.params
     props = [prop("float", "int_ior", params.ior), prop("float", "ext_ior", 1.0), diffuse_reflectance(material, tex)]
-    return node("roughplastic" if rough else "plastic", (roughness_props(material, tex) if rough else []) + props)
+    plastic = node("roughplastic" if rough else "plastic", (roughness_props(material, tex) if rough else []) + props)
+    return with_lambert_share(material, tex, plastic)
+
+
+def lambert_share(material: Material) -> tuple[float, list[float]] | None:
+    """(blend weight w, Lambert colour) when roughplastic cannot return the IR's energy: its diffuse
+    energy per unit colour falls with the interface's roughness (the rough transmittance in and out,
+    `roughplastic_diffuse_energy`: 0.43 of the IR's at matte white plastic's alpha), so the colour that
+    would match exceeds 1, which Mitsuba refuses. Then a `blendbsdf` gives w of a Lambert of the
+    colour that makes up the rest, per channel: (1 - w) roughplastic (colour clipped to 1, its
+    specular lobe taken as the IR's) + w Lambert = the IR's hemispherical albedo, w the least that
+    keeps the Lambert colour <= 1. A convex blend of two BSDFs each <= 1: <= 1 at every view.
+    None when roughplastic reaches the IR's energy (every other material)."""
+    interface = roughplastic_interface(material)
+    if interface is None:
+        return None
+    needed = diffuse_colour(material, roughplastic_diffuse_energy(*interface))
+    if max(needed) <= 1.0:
+        return None
+    per_unit = roughplastic_diffuse_energy(*interface)
+    total = hemispherical_albedo(material, full=True)
+    specular = hemispherical_albedo(with_base_color(without_extras(material), 0.0))
+    plastic = [min(s + per_unit * min(n, 1.0), 1.0) for s, n in zip(specular, needed)]
+    weight = max(min(max((t - p) / max(1.0 - p, 1e-6) for t, p in zip(total, plastic)), 1.0), 0.0)
+    if weight <= 1e-4:
+        return None
+    colour = [min(max((t - (1.0 - weight) * p) / weight, 0.0), 1.0) for t, p in zip(total, plastic)]
+    return weight, colour
+
+
+def with_lambert_share(material: Material, tex: BsdfTextures, plastic: Prop) -> Prop:
+    """The roughplastic as is, or blended with a Lambert that carries the energy it cannot
+    (`lambert_share`; a colour map stays as baked, clipped)."""
+    share = None if "base_color" in tex else lambert_share(material)
+    if share is None:
+        return plastic
+    weight, colour_of = share
+    return node(
+        "blendbsdf", [prop("float", "weight", weight)], [plastic, node("diffuse", [colour("reflectance", colour_of)])]
+    )
 
 
 def conductor_bsdf(material: Material, tex: BsdfTextures, rough: bool) -> Prop:
@@ -384,7 +424,7 @@ def coated_bsdf(material: Material, tex: BsdfTextures) -> Prop:
         prop("float", "ext_ior", 1.0),
         diffuse_reflectance(material, tex),
     ]
-    return node("roughplastic", props)
+    return with_lambert_share(material, tex, node("roughplastic", props))
 
 
 BUILDERS: Mapping[str, Callable[[Material, BsdfTextures], Prop]] = {

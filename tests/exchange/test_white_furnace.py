@@ -21,6 +21,7 @@ SIZE, SPP = 48, 16
 KINDS = {
     "white paper": {"preview": 0.05, "Mitsuba": 0.05},  # Oren-Nayar: Mitsuba's Lambert of its albedo
     "white plastic": {"preview": 0.05, "Mitsuba": 0.05, "MaterialX": 0.05},  # roughplastic / base_weight
+    "matte white plastic": {"preview": 0.05, "Mitsuba": 0.05},  # roughplastic blended with a Lambert
     "baize": {"preview": 0.05, "Mitsuba": 0.05, "MaterialX": 0.05},  # OpenPBR's compensated Oren-Nayar
     "gold": {"preview": 0.05, "Mitsuba": 0.05},
     "brushed aluminium": {"preview": 0.05, "Mitsuba": 0.05},  # Ward as anisotropic GGX
