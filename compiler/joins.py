@@ -286,7 +286,8 @@ class Joiner:
         allowed = _BEFORE_A_COAT | {"FEATURE"} if entry.get("adjective") else _BEFORE_A_COAT - {"PROP"}
         if not all(not t.unknown and any(c.tag in allowed for c in t.candidates) for t in out[:-1]):
             return None
-        return entry.get("substrate")
+        substrate = entry.get("substrate")
+        return None if substrate is None else str(substrate)
 
     def _coat_on_object(self, word: Tagged, rest: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
         """'floor varnish', 'car clear coat': an object before a coat named alone is what the coat is on,
