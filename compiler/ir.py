@@ -12,7 +12,7 @@ from typing import Any
 from .conventions import alpha_of
 from .diagnostics import Diagnostic
 from .flake_params import flake_params
-from .formulas import round6, round6_list, rounded
+from .formulas import ROUNDING, round6, round6_list, rounded
 from .lexicon import Entry
 from .params import COAT_PARAMS, Params, params_by_model
 from .sheen_colour import sheen_params
@@ -53,12 +53,19 @@ def _params(
         if k in p:
             value = p[k]
             kind = type(value)
-            if kind is float:  # most values: rounded()'s first case, without its call
+            if kind is float:  # most values: round6, its common case written out (as round6_list has it)
+                y = value * 1e6
+                if -1e12 < y < 1e12:
+                    n = (y + ROUNDING) - ROUNDING
+                    if -0.499 < y - n < 0.499:
+                        out[k] = n / 1e6
+                        continue
                 out[k] = round6(value)
             elif kind is not list:
                 out[k] = rounded(value)
             elif noun is not None and noun_data.get(k) is value:  # straight from the lexicon: rounded once
-                out[k] = _noun_list(rounded_optics, noun, k)
+                found = rounded_optics.get((noun.key, k))  # _noun_list's common case, without its call
+                out[k] = list(found) if found is not None else _noun_list(rounded_optics, noun, k)
             else:
                 out[k] = round6_list(value)
     if model["diffuse"] == "oren_nayar":
@@ -123,7 +130,12 @@ def _provenance(state: MaterialState) -> dict[str, list[JSONDict]]:
                 )
             else:
                 kind = type(value)
-                value = round6(value) if kind is float else round6_list(value) if kind is list else rounded(value)
+                if kind is float:
+                    value = round6(value)
+                elif kind is list:
+                    value = round6_list(value)
+                elif kind is not str:  # a graph's or a coat's name is kept as it is
+                    value = rounded(value)
                 made.append({"rule": step.rule, "words": lists[0], "spans": lists[1], "value": value})
     return out
 

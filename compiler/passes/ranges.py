@@ -51,8 +51,21 @@ def _check_all(
     """`ranges`: param -> (low, high, ...). Clamps are made in the order of `ranges`."""
     for param, value in holder.items():  # the common case, one pass over what is set: nothing to clamp
         bounds = ranges.get(param)
-        if bounds is None or value is None or (type(value) is float and bounds[0] <= value <= bounds[1]):
+        if bounds is None or value is None:
             continue
+        kind = type(value)
+        if kind is float:
+            if bounds[0] <= value <= bounds[1]:
+                continue
+            break
+        if kind is list:  # a colour: _in_range's list case, without its call
+            low, high = bounds[0], bounds[1]
+            for v in value:
+                if not ((type(v) is float or type(v) is int) and low <= v <= high):
+                    break
+            else:
+                continue
+            break
         if not _in_range(value, bounds[0], bounds[1]):
             break
     else:
