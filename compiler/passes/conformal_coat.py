@@ -18,7 +18,7 @@ UNTINTED = 0.999  # a base colour channel at or above this leaves the metal's ow
 
 
 def lay_conformal_coats(state: MaterialState, ctx: Context) -> MaterialState:
-    film = ctx.settings.get("metal_colour_coat")
+    film = ctx.lexicon.settings.get("metal_colour_coat")  # ctx.settings, without the property's call
     if film and state.kind == "conductor" and state.coat is None and _coloured_by_words(state):
         words = tuple(w for step in state.provenance.get("base_color", []) for w in step.words)
         apply_coat_entry(state, ctx, film, f"settings.metal_colour_coat: a colour on a metal is a film ({film})", words)

@@ -12,7 +12,7 @@ Settings = dict[str, Any]
 
 
 def select_model(state: MaterialState, ctx: Context) -> MaterialState:
-    settings = ctx.settings
+    settings = ctx.lexicon.settings  # ctx.settings, without the property's call
     base = _base_model(state, settings)
     anisotropic = base != "diffuse" and state.params.get("anisotropy", 0.0) > 0
     if base == "diffuse" and state.params.get("anisotropy", 0.0) > 0:

@@ -221,9 +221,9 @@ COAT_CLASS = "plastic"  # a coat is a clear polymer film (coats.toml: PMMA lacqu
 def _applies(state: MaterialState, adjective: Entry, word: ast.Word, target: str = "base") -> bool:
     """Whether the adjective applies to its material; in a coat clause, to the coat ('a clear lacquer')."""
     classes = adjective.data.get("applies_to")
-    noun = noun_of(state)
     if not classes or (target == "coat" and COAT_CLASS in classes):
         return True
+    noun = noun_of(state)
     if target != "coat" and (noun.data.get("class") in classes or noun.key in classes):
         return True
     note = adjective.get("applies_note", f"it applies to {', '.join(classes)}")
