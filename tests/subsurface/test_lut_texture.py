@@ -135,3 +135,59 @@ def test_the_texture_look_up_is_the_table_look_up(renderer):
     assert want.std() > 0.1  # the grid spans the table, not one value
     for made in (vao, quad, target, probe, program):
         made.release()
+
+
+#: session 9's form of the look-up: the table as a uniform array (desktop GL allows it; ES 3.0 does not)
+ARRAY_LOOK_UP = """uniform float pv_sss_lut[LUT_SIZE];
+float cnlm_sss_preintegrated(float nl, float rho) {
+    float row = (clamp(nl, -1.0, 1.0) + 1.0) * 0.5 * float(COS_STEPS - 1);
+    float col = clamp(rho / (1.0 + rho) / cnlm_sss_lut_u_max, 0.0, 1.0) * float(RHO_STEPS - 1);
+    int r0 = min(int(row), COS_STEPS - 2);
+    int c0 = min(int(col), RHO_STEPS - 2);
+    float fr = row - float(r0), fc = col - float(c0);
+    float top = mix(pv_sss_lut[r0 * RHO_STEPS + c0], pv_sss_lut[r0 * RHO_STEPS + c0 + 1], fc);
+    float bottom = mix(pv_sss_lut[(r0 + 1) * RHO_STEPS + c0], pv_sss_lut[(r0 + 1) * RHO_STEPS + c0 + 1], fc);
+    return mix(top, bottom, fr);
+}
+"""
+
+
+def with_array_look_up(source: str) -> str:
+    """The fragment with cnlm_sss_preintegrated read from a uniform array instead of the texture."""
+    from cnlmc.backends.preview.subsurface import settings
+
+    start = source.index("float cnlm_sss_preintegrated(")
+    depth, end = 0, source.index("{", start)
+    for at in range(end, len(source)):
+        depth += {"{": 1, "}": -1}.get(source[at], 0)
+        if depth == 0:
+            end = at
+            break
+    cos_steps, rho_steps = settings().profile_cos_steps, settings().profile_rho_steps
+    old = ARRAY_LOOK_UP.replace("LUT_SIZE", str(cos_steps * rho_steps))
+    old = old.replace("COS_STEPS", str(cos_steps)).replace("RHO_STEPS", str(rho_steps))
+    return source[:start] + old + source[end + 1 :]
+
+
+@pytest.mark.parametrize("phrase", ["wax", "milk"])
+def test_the_picture_is_the_one_the_uniform_array_drew(gl_available, monkeypatch, phrase):
+    """Before/after: the teapot (curvature from thin spout to thick belly) drawn with the table as a
+    texture and with session 9's uniform array, in one process: the same image (measured: identical)."""
+    from cnlmc.backends.preview import gl, object_pass
+    from cnlmc.backends.preview.render import Renderer
+    from cnlmc.backends.preview.subsurface import preintegrated_table
+
+    material = material_of(phrase)
+    with Renderer(64) as texture:
+        now = texture.render(material, mesh="teapot", tier="splitsum", hdr=True).hdr
+    fragment, uniforms = gl.preview_fragment, object_pass.subsurface_uniforms
+    monkeypatch.setattr(gl, "preview_fragment", lambda *args: with_array_look_up(fragment(*args)))
+    monkeypatch.setattr(
+        object_pass,
+        "subsurface_uniforms",
+        lambda *args: {**uniforms(*args), "pv_sss_lut": preintegrated_table().values.ravel()},
+    )
+    with Renderer(64) as array:
+        before = array.render(material, mesh="teapot", tier="splitsum", hdr=True).hdr
+    assert before[..., :3].max() > 0.1  # the body is drawn
+    assert np.abs(now - before).max() <= 1e-3 * np.abs(before).max()
