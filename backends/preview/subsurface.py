@@ -189,7 +189,7 @@ def wall_reflectance(boundary: Any, body: TranslucentBody) -> np.ndarray:
     return np.clip(np.minimum(reflect, 1.0 - through), 0.0, 1.0)
 
 
-def body_uniforms(material: Any) -> dict[str, object]:
+def body_uniforms(material: Any) -> dict[str, Any]:
     """The body term's material uniforms (the GLSL library's cnlm_sss_*, snippets/subsurface.glsl;
     lengths in metres) of `material` as cnlm_bsdf draws it (its boundary_material: what the preview
     and the GLSL target make their plan from); none when the material has no subsurface body. The GLSL target's plan
