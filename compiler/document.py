@@ -47,7 +47,8 @@ def iter_items(source: str, lexicon: Lexicon, diags: list[Diagnostic]) -> Iterat
 
 
 def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Item | None:
-    if not text.strip() or text.lstrip().startswith("#"):
+    stripped = text.lstrip()
+    if not stripped or stripped[0] == "#":  # blank, or a comment
         return None
     if len(text) > MAX_LINE_CHARS:
         diags.append(
