@@ -275,6 +275,8 @@ def test_the_new_nouns_in_german(german, english):
         ("satin shellac", "wood with a satin varnish"),
         ("a coat of varnish", "wood with a varnish"),
         ("a coat of satin varnish", "wood with a satin varnish"),
+        ("two coats of spar varnish", "wood with a varnish"),
+        ("a thick layer of red powder coating", "red powder-coated steel"),
         ("fine grain powder coating", "powder-coated steel with fine grain"),
         ("speckled powder coat", "powder-coated steel with speckles"),
     ],
