@@ -359,12 +359,23 @@ def _sheen_alpha(material: Material) -> float:
 
 
 def uniforms_for(plan: Plan, material: Material) -> list[Uniform]:
-    """The uniforms the plan's code reads, with the material's values."""
+    """The uniforms the plan's code reads, with the material's values (to a float's 9 digits)."""
     return [
-        Uniform(name, gl_type or plan.alpha_type, value(material, plan))
+        Uniform(name, gl_type or plan.alpha_type, _to_float32_digits(value(material, plan)))
         for name, (gl_type, needed, value) in UNIFORM_TABLE.items()
         if needed(plan)
     ]
+
+
+def _to_float32_digits(value: Any) -> Any:
+    """A uniform's value to 9 significant digits, what a 32-bit GLSL float holds exactly: the
+    computed ones (a sheen albedo row, the body's inverted medium) otherwise differ in their last
+    of 17 digits from one CPU's vector code to another's, and the emitted files with them."""
+    if isinstance(value, float):
+        return float(format(value, ".9g"))
+    if isinstance(value, (list, tuple)):
+        return type(value)(_to_float32_digits(v) for v in value)
+    return value
 
 
 # ---- the all-features ("uber") form: option specialize=off ----

@@ -15,13 +15,13 @@
 //   float cnlm_alpha = 0.04
 //   vec3 cnlm_eta = vec3(2.4186, 2.0224, 1.654)
 //   vec3 cnlm_k = vec3(4.1917, 3.6424, 3.0709)
-//   vec3 cnlm_ms_favg = vec3(0.6561136396950547, 0.6312842023251942, 0.5992492847782146)
+//   vec3 cnlm_ms_favg = vec3(0.65611364, 0.631284202, 0.599249285)
 // samplers: none
 uniform vec3 cnlm_base_color = vec3(1.0, 1.0, 1.0);
 uniform float cnlm_alpha = 0.04;
 uniform vec3 cnlm_eta = vec3(2.4186, 2.0224, 1.654);
 uniform vec3 cnlm_k = vec3(4.1917, 3.6424, 3.0709);
-uniform vec3 cnlm_ms_favg = vec3(0.6561136396950547, 0.6312842023251942, 0.5992492847782146);
+uniform vec3 cnlm_ms_favg = vec3(0.65611364, 0.631284202, 0.599249285);
 // cnlm common: constants and helpers of the local shading frame (n = +z, t = +x).
 const float CNLM_PI = 3.14159265358979;
 // cos(theta) below this counts as on/below the horizon: every lobe is 0 there.
