@@ -26,6 +26,7 @@ from ..base import Command
 from ..registry import BUILTIN_COMMANDS
 from . import live
 from .frames import preview_command
+from .meshes import MESH_FORMATS, mesh_choices
 from .window import Window
 
 #: options that have a flag of their own (--mesh, --size, ...) besides --option KEY=VALUE
@@ -34,7 +35,7 @@ RENDER_FLAGS = ("mesh", "size", "tier", "budget_ms", "env")
 
 def add_render_arguments(parser: argparse.ArgumentParser, size: bool = True) -> None:
     """The render flags; `size`: whether the image size is one (AR renders at the photo's size)."""
-    parser.add_argument("--mesh", help="sphere, shader_ball, teapot, or an .obj/.ply/.gltf/.glb file")
+    parser.add_argument("--mesh", help=f"{mesh_choices()}, or an {MESH_FORMATS} file")
     if size:
         parser.add_argument("--size", help="image size in pixels (preview default 512)")
     parser.add_argument("--tier", help="quality tier: analytic, splitsum, fisN, mcN (see docs/preview.md)")

@@ -26,6 +26,7 @@ from cnlmc.diagnostics import did_you_mean, render
 from cnlmc.material import Material
 
 from .frames import preview_command
+from .meshes import mesh_choices
 from .options import parse_options
 from .resources import Resources
 from .window import Window
@@ -35,7 +36,7 @@ COMMANDS = {
     ":help": "this list",
     ":undo": "drop the last refinement",
     ":tier NAME": "switch the quality tier",
-    ":mesh NAME": "switch the preview mesh (sphere, shader_ball, teapot, a file)",
+    ":mesh NAME": f"switch the preview mesh ({mesh_choices()}, a file)",
     ":show": "the current material's parameters",
     ":quit": "leave (also end of input)",
 }

@@ -192,7 +192,7 @@ LOADERS = {".obj": load_obj, ".ply": load_ply, ".gltf": load_gltf, ".glb": load_
 def load_mesh(path) -> Mesh:
     path = Path(path)
     if not path.exists():
-        raise MeshError(f"mesh file {path} does not exist (or use one of: sphere, shader_ball, teapot)")
+        raise MeshError(f"mesh file {path} does not exist")
     loader = LOADERS.get(path.suffix.lower())
     if loader is None:
         raise MeshError(f"{path}: unsupported mesh format {path.suffix!r} (known: {', '.join(LOADERS)})")

@@ -235,9 +235,17 @@ def leaf(rows: int = 48, cols: int = 24) -> Mesh:
 MESHES: dict[str, Callable[[], Mesh]] = {"sphere": sphere, "shader_ball": shader_ball, "teapot": teapot, "leaf": leaf}
 #: the generated meshes that are open sheets, not solids (no inside: a thin material has no cavity)
 OPEN_MESHES = ("leaf",)
+MESH_FORMATS = ".obj/.ply/.gltf/.glb"
+
+
+def mesh_choices() -> str:
+    """The built-in meshes as help and error messages list them (from MESHES, never by hand)."""
+    return ", ".join(MESHES)
 
 
 def mesh_by_name(name_or_path: str) -> Mesh:
     if name_or_path in MESHES:
         return MESHES[name_or_path]()
+    if not Path(name_or_path).exists():
+        raise MeshError(f"mesh file {name_or_path} does not exist (or use one of: {mesh_choices()})")
     return load_mesh(name_or_path)

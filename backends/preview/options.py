@@ -12,6 +12,7 @@ from ..base import Option, OptionError, Options
 from ..base import parse_options as parse_declared
 from ..glsl.options import OPTIONS as GLSL_OPTIONS
 from .glass import GLASS_FORMS
+from .meshes import MESH_FORMATS, mesh_choices
 from .tiers import DEFAULT_TIER, TIERS, Tier, TierError, parse_tier, select_tier
 
 #: the GLSL backend's options the preview passes on (they change the BSDF it renders)
@@ -20,7 +21,7 @@ SIZE_RANGE = (8, 8192)
 
 OPTIONS: tuple[Option, ...] = (
     Option("size", int, 512, doc=f"image size in pixels ({SIZE_RANGE[0]} ... {SIZE_RANGE[1]})"),
-    Option("mesh", str, "sphere", doc="sphere, shader_ball, teapot, or a path to an .obj/.ply/.gltf/.glb file"),
+    Option("mesh", str, "sphere", doc=f"{mesh_choices()}, or a path to an {MESH_FORMATS} file"),
     Option("tier", str, None, doc=f"quality tier: {', '.join(TIERS)}, mcN or fisN (default {DEFAULT_TIER})"),
     Option(
         "budget_ms",

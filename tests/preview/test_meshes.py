@@ -102,3 +102,19 @@ def test_bad_mesh_files_name_the_problem(tmp_path):
     broken.write_text("v 0 0 x\nf 1 2 3\n")
     with pytest.raises(MeshError, match="broken.obj:1"):
         load_obj(broken)
+
+
+def test_help_and_the_unknown_mesh_error_list_every_mesh_of_the_table(tmp_path):
+    """`cnlmc preview --help` and the unknown-mesh error name every built-in mesh (the table's,
+    leaf included), read from MESHES rather than written by hand."""
+    import subprocess
+    import sys
+
+    help_text = subprocess.run(
+        [sys.executable, "-m", "cnlmc", "preview", "--help"], capture_output=True, text=True, check=True
+    ).stdout
+    with pytest.raises(MeshError) as error:
+        M.mesh_by_name(str(tmp_path / "no_such_mesh"))
+    for name in M.MESHES:
+        assert name in " ".join(help_text.split()), name
+        assert name in str(error.value), name
