@@ -98,8 +98,10 @@ CAPABILITIES: Capabilities = {
     ),
     "sheen": (
         "approximate",
-        "principled's sheen is Disney's (a (1 - cos)^5 grazing term, no roughness): sheen = the IR's sheen "
-        "weight, sheen_tint towards its colour; bsdf=cnlm draws the Charlie sheen",
+        "principled's sheen is Disney's (a (1 - cos)^5 grazing term, no roughness), weight at most 1 "
+        "(Burley's range), sheen_tint 1: at full weight it returns ~1 % of the light where the IR's fibres "
+        "return up to ~11 %, so the rest of the fibres' energy is in the base colour: the hemispherical "
+        "energy is the IR's, the rim is dimmer and the face brighter than the IR's; bsdf=cnlm draws the Charlie sheen",
     ),
     "flakes": (
         "drop",
@@ -393,7 +395,8 @@ def principled_sheen(material: Material, props: list[Prop]) -> list[Prop]:
     IR's sheen takes the fibres' share from the base. So the base colour and sheen weight are the ones
     whose energy is the IR's (`mitsuba_principled.sheen_base`), sheen_tint 1 (the IR dyes the sheen
     with the base colour, cnlmc.sheen_colour). What it cannot match: the lobe's shape (Disney's is a
-    (1 - cos theta_d)^5 grazing term without roughness, ~1 % of the energy at full weight)."""
+    (1 - cos theta_d)^5 grazing term without roughness, ~1 % of the energy at its full weight of 1:
+    the fibres' energy beyond that is in the base colour)."""
     if not has_sheen(material):
         return props
     floats = {p["name"]: float(p["value"]) for p in props if p["kind"] == "float"}

@@ -96,16 +96,32 @@ def energy_left(material: Material) -> np.ndarray:
     return np.maximum(total - specular, 0.0)
 
 
-def sheen_base(material: Material, roughness: float) -> tuple[list[float], float]:
-    """(principled's base_color, sheen) for the IR's sheened material, given principled's roughness.
-    The energy left to the two lobes is `energy_left`; the sheen weight gives the IR's sheen lobe's energy (luminance; c_tint has luminance 1), lowered until
-    no view returns more than 1 (Disney's sheen rises towards grazing far faster than the Charlie
-    lobe) and to at most the energy left; the base colour takes the rest (`split`)."""
-    roughness = float(roughness)
-    _d_energy, s_energy = lobe_energies(roughness)
+#: principled's largest sheen weight: Burley's parameter is 0-1. Past 1 the energy can still be kept
+#: under 1 (`split`), but the grazing response is several times Disney's and a consumer that clamps
+#: the parameter to its range changes the material's energy.
+SHEEN_MAX = 1.0
+
+
+def sheen_weight(material: Material, roughness: float) -> float:
+    """principled's sheen weight before the peak check: the one whose lobe has the IR's sheen lobe's
+    energy (luminance; c_tint has luminance 1), at most the energy left to the two lobes and at most
+    SHEEN_MAX. A Disney sheen of weight 1 returns ~1 % of the light where the IR's fibres return up to
+    ~11 %, so a fabric's sheen is mostly capped: the base colour carries the rest (`split`), which
+    keeps the hemispherical energy and moves the capped share from the rim to the whole sphere."""
+    _d_energy, s_energy = lobe_energies(float(roughness))
     left = energy_left(material)
     fibres = np.asarray(hemispherical_albedo(with_base_color(material, 0.0), full=True))  # the sheen lobe
-    weight = min(float(LUMINANCE @ fibres), float(LUMINANCE @ left)) / s_energy
+    return min(float(LUMINANCE @ fibres) / s_energy, float(LUMINANCE @ left) / s_energy, SHEEN_MAX)
+
+
+def sheen_base(material: Material, roughness: float) -> tuple[list[float], float]:
+    """(principled's base_color, sheen) for the IR's sheened material, given principled's roughness:
+    the sheen weight of `sheen_weight`, lowered until no view returns more than 1 (Disney's sheen
+    rises towards grazing far faster than the Charlie lobe); the base colour takes the rest of the
+    energy left to the two lobes (`energy_left`, `split`)."""
+    roughness = float(roughness)
+    left = energy_left(material)
+    weight = sheen_weight(material, roughness)
     if split(left, weight, roughness)[2] > 1.0:
         low, high = 0.0, weight
         for _ in range(30):  # the largest weight whose peak is <= 1 (the peak rises with the weight)

@@ -139,3 +139,56 @@ def test_sheen_export_keeps_the_irs_energy_and_stays_under_one():
         _mu, _w, d_mu, s_mu = lobe_albedos(roughness)
         assert np.max(np.outer(d_mu, base) + weight * np.outer(s_mu, tint)) <= 1.0 + 1e-6, phrase
         assert weight > 0.5, phrase  # the sheen is drawn, not dropped
+        assert weight <= 1.0, phrase  # Burley's range
+
+
+def sheened_nouns() -> list[str]:
+    from cnlmc.api import lexicon_for
+    from cnlmc.bsdf.sheen import has_sheen
+
+    nouns = sorted(lexicon_for().all_of("nouns"))
+    return [n for n in nouns if (m := compile_source(n + "\n").document.materials) and has_sheen(m[0])]
+
+
+def principled_props(phrase: str) -> dict:
+    """The exported principled's float and rgb parameters, as Mitsuba's load_dict takes them."""
+    import xml.etree.ElementTree as ET
+
+    text = emit(compile_source(phrase + "\n").ir, "mitsuba", {"form": "fragment"}).artifacts[0].content
+    (node,) = [b for b in ET.fromstring(text).iter("bsdf") if b.get("type") == "principled"]
+    props: dict = {}
+    for child in node:
+        if child.tag == "float":
+            props[child.get("name")] = float(child.get("value"))
+        elif child.tag == "rgb":
+            props[child.get("name")] = {"type": "rgb", "value": [float(v) for v in child.get("value").split(",")]}
+    return props
+
+
+def test_every_fabric_exports_a_sheen_weight_in_burleys_range():
+    """Every stdlib fibre noun's principled sheen is in 0-1 (it was 2.2-5.7: Disney's grazing term
+    up to 5.7x its own at full weight) and still drawn; the IR's fibre energy beyond it is in the base,
+    so the export's hemispherical energy stays the IR's (the lobes' energies from the published formulas)."""
+    from cnlmc.backends.exchange.conversions import hemispherical_albedo
+    from cnlmc.backends.exchange.mitsuba_principled import LUMINANCE, lobe_energies
+
+    nouns = sheened_nouns()
+    assert {"velvet", "microfiber", "felt", "silk"} <= set(nouns)
+    for phrase in nouns:
+        props = principled_props(phrase)
+        assert 0.5 < props["sheen"] <= 1.0, (phrase, props["sheen"])
+        base = np.asarray(props["base_color"]["value"])
+        diffuse, sheen = lobe_energies(props["roughness"])
+        tint = base / max(float(LUMINANCE @ base), 1e-9) if base.any() else np.ones(3)
+        exported = base * diffuse + props["sheen"] * tint * sheen
+        material = compile_source(phrase + "\n").document.materials[0]
+        if material.model.base == "diffuse":  # a dielectric's specular lobe is principled's own
+            assert exported == pytest.approx(hemispherical_albedo(material, full=True), abs=0.01), phrase
+
+
+def test_capped_sheen_keeps_mitsubas_grazing_view_under_one():
+    """The fabric whose sheen weight was highest (microfiber, 5.7): Mitsuba's own principled with the
+    exported parameters returns at most what it receives at a grazing view and at normal view."""
+    props = principled_props("microfiber")
+    for mu in (0.15, 1.0):
+        assert np.all(principled_albedo(props, mu) <= 1.0 + 1e-3), mu
