@@ -94,7 +94,11 @@ class Joiner:
             elif of_tag(word, "OBJECT"):
                 if k + 1 < len(tagged) and of_tag(tagged[k + 1], "NOUN"):
                     out.append(word)  # "roof tiles": joined to the noun next
-                elif not others(word) and self._coat_alone(tagged[k + 1 :]) is not None:
+                elif (
+                    not others(word)
+                    and _describes_a_coat(tagged[k + 1 :])  # not 'floor, varnish' nor 'floor and varnish'
+                    and self._coat_alone(tagged[k + 1 :]) is not None
+                ):
                     out.extend(self._coat_on_object(word, tagged[k + 1 :], diags))  # "floor varnish"
                 elif not others(word) and any(
                     of_tag(t, "NOUN") or of_tag(t, "OBJECT") for t in _main_words(tagged[k + 1 :])
@@ -284,7 +288,10 @@ class Joiner:
         # before a pigmented coat read as its adjective a feature may stand ('speckled powder coat':
         # _feature_first makes it a clause); in a 'with' clause only describing words do
         allowed = _BEFORE_A_COAT | {"FEATURE"} if entry.get("adjective") else _BEFORE_A_COAT - {"PROP"}
-        if not all(not t.unknown and any(c.tag in allowed for c in t.candidates) for t in out[:-1]):
+        first = _comparative_at(out)  # 'lighter than satin varnish': the comparative the tagger kept
+        if any(t.unknown or of_tag(t, "COAT") for t in out[:-1]):
+            return None  # 'varnish varnish': a coat is not a describing word of another
+        if not all(any(c.tag in allowed for c in t.candidates) for k, t in enumerate(out[:-1]) if k != first):
             return None
         substrate = entry.get("substrate")
         return None if substrate is None else str(substrate)
@@ -306,6 +313,9 @@ class Joiner:
         substrate = self._coat_alone(out)
         assert substrate is not None
         start = next((k + 1 for k, t in enumerate(out) if of_tag(t, "COLON")), 0)
+        comparative = _comparative_at(out)
+        if comparative is not None:  # 'lighter than satin varnish': the comparative stays before the substrate
+            start = self._past_target(out, comparative)
         coat = out[-1]
         words = out[start:]
         said = "".join(t.text if of_tag(t, "COMMA") else f" {t.text}" for t in words).strip()
@@ -325,6 +335,16 @@ class Joiner:
             "name the material to choose another)"
         )
         diags.append(Diagnostic(words[0].span.to(coat.span), Severity.NOTE, NOTE_CODE, note))
+
+    def _past_target(self, out: list[Tagged], comparative: int) -> int:
+        """Where the words after a comparative start, past its target when it takes one ('more
+        yellow than satin varnish': 'yellow'; 'lighter' names its own)."""
+        entries = [self.lexicon.entry("refinements", c.key) for c in of_tag(out[comparative], "REFINE")]
+        takes_one = any(e is not None and e.get("target") == "any" for e in entries)
+        after = comparative + 1
+        if takes_one and after < len(out) - 1 and any(c.tag in _COMPARED for c in out[after].candidates):
+            return after + 1
+        return after
 
     def _join(
         self, a: Tagged, b: Tagged, candidates: tuple[Candidate, ...], reading: str, diags: list[Diagnostic]
@@ -466,6 +486,29 @@ _COMMA = (Candidate("COMMA", ",", "keyword"),)
 _WITH = (Candidate("WITH", "with", "keyword"),)
 #: The readings of the words that may come before a coat named as the whole material ('a glossy, red powder coat').
 _BEFORE_A_COAT = frozenset(("ADV", "ADJ", "COLOR", "SHADE", "ARTICLE", "COMMA", "AND", "OR", "NAME", "COLON", "PROP"))
+
+#: The readings of a comparative's target the tagger keeps before 'than' (tagger._COMPARED).
+_COMPARED = frozenset(("COLOR", "ADJ", "PROP"))
+#: The readings of the words a comparative at the start of a line may follow ('m1: a bit lighter').
+_BEFORE_A_COMPARATIVE = frozenset(("NAME", "COLON", "ADV", "ARTICLE"))
+
+
+def _comparative_at(out: list[Tagged]) -> int | None:
+    """Where a comparative (only a REFINE reading, as the tagger keeps it before 'than') stands at the
+    start of the material, after a name and adverbs only; None when there is none."""
+    for k, word in enumerate(out):
+        if word.candidates and all(c.tag == "REFINE" for c in word.candidates):  # 'glänzender': also declined
+            return k
+        if not all(c.tag in _BEFORE_A_COMPARATIVE for c in word.candidates):
+            return None
+    return None
+
+
+def _describes_a_coat(rest: list[Tagged]) -> bool:
+    """Whether the first word after an object may start a coat named alone: a describing word or
+    the coat itself ('floor varnish', 'car clear coat', 'floor satin varnish'), not a separator."""
+    return bool(rest) and any(c.tag in DESCRIBING or c.tag in ("COAT", "PROP") for c in rest[0].candidates)
+
 
 #: The readings of describing words a plating ('nickel plated', from 'nickel finish') may move before.
 DESCRIBING = frozenset(("ADV", "ADJ", "COLOR", "SHADE"))

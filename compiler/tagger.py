@@ -301,7 +301,25 @@ class Tagger:
         )
         span = comparative.span.to(self._span(raw, i, taken, line_no, offset))
         diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, note))
+        comparison = self.formation().rules.comparison
+        if i + taken < len(raw) and raw[i + taken][0].lower() in comparison:  # 'lighter than than oak'
+            twice = self._span(raw, i + taken, 1, line_no, offset)
+            hint = f"write '{than}' once"
+            diags.append(error(twice, "E002", f"'{raw[i + taken][0]}' a second time", (hint,)))
+            return taken + 1
+        if not any(self._may_name_material(t) for t, _c in raw[i + taken :]):  # 'lighter than', 'lighter than red'
+            where = self._span(raw, i, 1, line_no, offset)
+            message = f"'{said} {than}' compares with a material, and none is named after '{than}'"
+            diags.append(error(where, "E003", message, (f"name the material after '{than}'",)))
         return taken
+
+    def _may_name_material(self, word: str) -> bool:
+        """Whether a word after a comparison word may name (or be part of) the material compared with:
+        a noun, an object or a coat, or a word the lexicon does not know (read later: E001 or a note)."""
+        if not word[0].isalpha():
+            return False
+        found = self._candidates((word.lower(),))
+        return not found or any(c.tag in _MATERIAL_WORDS for c in found)
 
     def _gives_way(self, raw: list[RawToken], i: int, n: int) -> bool:
         """Whether the form raw[i:i+n] gives way to a multi-word noun starting on its last word:
@@ -384,6 +402,9 @@ class Tagger:
 
 #: The readings of a comparative's target before 'than' ('less glossy than glass', 'more grain than pine').
 _COMPARED = frozenset(("COLOR", "ADJ", "PROP"))
+
+#: The readings of a word that may name the material after a comparison word ('lighter than oak').
+_MATERIAL_WORDS = frozenset(("NOUN", "OBJECT", "COAT"))
 
 #: The readings of a separator a word with no effect leaves standing alone ("shiny, not rusty, iron").
 _SEPARATORS = frozenset(("COMMA", "AND"))

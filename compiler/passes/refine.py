@@ -30,23 +30,29 @@ __all__ = ["apply_inline_refinements", "apply_refinement", "apply_refinement_lin
 
 def apply_inline_refinements(state: MaterialState, ctx: Context) -> MaterialState:
     """'shinier aluminum', 'lighter oak': a comparative written before the material is one
-    refinement of the material the rest of the phrase names. The word after the comparative is
-    part of the material too where the material needs it: any word after a comparative that names
+    refinement of the material the rest of the phrase names. A comparative whose target a
+    comparison word follows ('more yellow than white plastic', 'dunkler als Eiche') moves the
+    material named after that word as the refinement line would: its target is only what it
+    changes. Otherwise the word after the comparative is part of the material too where the
+    material needs it: any word after a comparative that names
     its own target ('brighter red plastic' = red plastic, then brighter), a colour after 'more'
     ('deeper blue velvet' = blue velvet, then more blue) and a treatment ('more brushed steel' =
     brushed steel, then more brushed). A colour after 'less' is what is taken from the material
     ('less yellow gold' is gold, less yellow) and a gloss word after 'more' / 'less' is only the
     refinement's target ('less glossy plastic' is plastic, a step less glossy)."""
     for item in state.selection.refinements:
-        if item.target is not None and _describes_material(ctx, item):
+        if item.target is not None and _describes_material(state, ctx, item):
             apply_group(state, ctx, _as_group(item.target), target="base")
         if not add_missing_map(state, ctx, item):  # 'rustier iron' = slightly rusty iron
             apply_refinement(state, ctx, item)
     return state
 
 
-def _describes_material(ctx: Context, item: ast.RefineItem) -> bool:
+def _describes_material(state: MaterialState, ctx: Context, item: ast.RefineItem) -> bool:
     target = item.target
+    assert target is not None
+    if _compared(state.selection, ctx, target.span.end):
+        return False  # 'more yellow than white plastic': white plastic, then the line 'more yellow'
     entry = ctx.lexicon.require("refinements", item.word.key)
     if isinstance(target, ast.Colour):  # 'deeper blue velvet' is blue velvet; 'less yellow gold' is gold
         return bool(entry.get("target") != "any" or entry.get("direction") > 0)
@@ -56,6 +62,18 @@ def _describes_material(ctx: Context, item: ast.RefineItem) -> bool:
     if entry.get("target") != "any":
         return True
     return brings_treatment(ctx.lexicon.require("adjectives", target.key))
+
+
+def _compared(material: ast.Material, ctx: Context, end: int) -> bool:
+    """Whether the word after offset `end` of the phrase is a comparison word ('than', 'als': the
+    word formation rules; the tagger read it as the inline comparative and dropped it)."""
+    line_start = material.span.start - material.span.col + 1  # `text` is the whole line
+    after = material.text[end - line_start :].split(None, 1)
+    if not after:
+        return False
+    from ..tagger import Tagger  # the tagger's rules, kept with the lexicon
+
+    return after[0].lower() in Tagger.of(ctx.lexicon).formation().rules.comparison
 
 
 def _as_group(target: ast.Word | ast.Colour) -> ast.Group:

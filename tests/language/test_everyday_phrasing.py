@@ -128,6 +128,79 @@ def test_than_on_the_command_line_prints_the_note():
     assert json.loads(done.stdout)["materials"][0]["params"]["base_color"]
 
 
+COLOUR_COMPARATIVES = ("more yellow", "less red", "more blue", "bluer", "lighter", "a bit darker", "warmer")
+SOME_COLOURED = ("white plastic", "blue plastic", "red ceramic", "green glass", "black rubber", "plastic", "oak")
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(COLOUR_COMPARATIVES), st.sampled_from(SOME_COLOURED))
+def test_a_colour_comparative_than_a_coloured_material_is_the_refinement_line(comparative, material):
+    """'more yellow than white plastic' is white plastic moved by the line 'more yellow': the colour
+    before 'than' is what changes, not a second colour of the material (no W105)."""
+    said = compile_source(f"{comparative} than {material}", "t.cnl", LEX)
+    refined = compile_source(f"{material}\n{comparative}", "t.cnl", LEX)
+    assert codes(said) == codes(refined)
+    assert meaning(said) == meaning(refined)
+
+
+def test_more_yellow_than_white_plastic_is_white_plastic_made_more_yellow():
+    said = compile_source("m: more yellow than white plastic", "t.cnl", LEX)
+    assert "W105" not in codes(said)
+    red, green, blue = said.ir["materials"][0]["params"]["base_color"]
+    assert blue > 0.5 and min(red, green) > blue  # a yellowish white, not pure yellow
+    red, green, blue = compile_source("more red than blue plastic", "t.cnl", LEX).ir["materials"][0]["params"][
+        "base_color"
+    ]
+    assert blue > red  # still blue plastic, a step towards red
+
+
+@pytest.mark.parametrize(
+    ("phrase", "lexicon"),
+    [
+        ("lighter than", LEX),
+        ("lighter than red", LEX),
+        ("a bit darker than the", LEX),
+        ("dunkler als", DE),
+        ("dunkler als rot", DE),
+    ],
+)
+def test_a_comparison_word_with_no_material_after_it_is_an_error_with_a_caret(phrase, lexicon):
+    result = compile_source(phrase, "t.cnl", lexicon)
+    assert not result.ok
+    (error,) = [d for d in result.diagnostics if d.code == "E003"]
+    than = "als" if lexicon is DE else "than"
+    assert error.span.col == phrase.index(than) + 1 and error.hints
+    overlay = ("-L", "de") if lexicon is DE else ()
+    done = run_cnlmc("compile", *overlay, "-", "-o", "-", stdin=f"{phrase}\n")
+    assert done.returncode != 0 and "^" in done.stderr and "error[E003]" in done.stderr
+
+
+@pytest.mark.parametrize(
+    ("phrase", "same_as", "lexicon"),
+    [
+        ("lighter than satin varnish", "wood with a satin varnish\nlighter", LEX),
+        ("a bit lighter than glossy varnish", "wood with a glossy varnish\na bit lighter", LEX),
+        ("lighter than guitar varnish", "wood with a varnish\nlighter", LEX),
+        ("darker than red powder coating", "red powder coating\ndarker", LEX),
+        ("dunkler als Klarlack", "Stahl mit Klarlack\ndunkler", DE),
+    ],
+)
+def test_a_comparative_than_a_coat_alone_is_the_coat_on_its_substrate_refined(phrase, same_as, lexicon):
+    said = compile_source(phrase, "t.cnl", lexicon)
+    assert said.ok, [d.message for d in said.diagnostics]
+    assert meaning(said) == meaning(compile_source(same_as, "t.cnl", lexicon))
+
+
+@pytest.mark.parametrize(
+    ("phrase", "lexicon", "word"), [("lighter than than oak", LEX, "than"), ("dunkler als als Eiche", DE, "als")]
+)
+def test_a_comparison_word_twice_is_an_error_on_the_second(phrase, lexicon, word):
+    result = compile_source(phrase, "t.cnl", lexicon)
+    assert not result.ok
+    (error,) = [d for d in result.diagnostics if d.code == "E002"]
+    assert error.span.col == phrase.index(f"{word} {word}") + len(word) + 2
+
+
 # ---------------------------------------------------------------- 4. "shiny, not rusty, iron"
 
 
@@ -322,6 +395,24 @@ def test_what_is_not_a_coat_alone_reads_as_before(phrase):
     """The generic coat names no substrate; a 'with' clause has its material; wax and lacquer are nouns."""
     result = compile_source(phrase, "t.cnl", LEX)
     assert not any("a coat named alone" in n for n in notes(result))
+
+
+@pytest.mark.parametrize("phrase", ["floor, varnish", "floor and varnish"])
+def test_an_object_then_a_separator_is_not_the_coat_s_substrate(phrase):
+    """'floor, varnish' was varnish_floor (the floor's wood, varnished) before the coat-alone rule:
+    an object is what a coat is on only when a describing word or the coat itself follows it."""
+    result = compile_source(phrase, "t.cnl", LEX)
+    assert not any("with ," in n or "with and" in n for n in notes(result)), notes(result)
+    if phrase == "floor, varnish":
+        assert result.ok, [d.message for d in result.diagnostics]
+        assert result.ir["materials"][0]["name"] == "varnish_floor"
+
+
+@pytest.mark.parametrize("phrase", ["varnish varnish", "satin varnish varnish", "lacquer varnish"])
+def test_a_coat_before_a_coat_alone_is_not_its_describing_word(phrase):
+    result = compile_source(phrase, "t.cnl", LEX)
+    assert not any("a coat named alone" in n for n in notes(result)), notes(result)
+    assert "W102" not in codes(result)
 
 
 def test_a_coat_alone_in_german():
