@@ -187,7 +187,7 @@ def run_target(target: Target, result: Result, args: argparse.Namespace) -> Emit
     except BackendRefused as exc:
         print(f"error[E201]: {exc}", file=sys.stderr)
         return None
-    except ValueError as exc:
+    except (ValueError, TargetUnavailable) as exc:  # TargetUnavailable: a library it needs is not installed
         raise UsageError(str(exc)) from None
 
 

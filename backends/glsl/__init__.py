@@ -16,6 +16,8 @@ from cnlmc.material import Document, Material
 
 from ..base import Artifact, Options, Target, emit_each
 from ..capabilities import EmitResult
+from ..exchange.options import capabilities_for
+from ..registry import TargetUnavailable
 from .emit import emit_material
 from .maps import bake_sampled_maps
 from .options import OPTIONS, glsl_options
@@ -79,6 +81,18 @@ def boundary_of(material: Material) -> Material:
     return boundary_material(material)
 
 
+def images_of(material: Material, options: Options, main: str) -> tuple[dict[str, str], list[Artifact]]:
+    """The maps and tables the library samples (bake_sampled_maps); an image library that is not
+    installed (OpenImageIO writes the PNGs) is a usage error naming the extra, not an internal error."""
+    try:
+        return bake_sampled_maps(material, options, main)
+    except ImportError as exc:
+        raise TargetUnavailable(
+            f"target 'glsl' cannot write {material.name}'s images: {exc}; install it with: pip install 'cnlmc[glsl]' "
+            "(or --option maps=none: no images)"
+        ) from None
+
+
 class GlslTarget(Target):
     name = "glsl"
     description = "GLSL 330 / ES 300 BRDF library + standalone preview shaders (docs/glsl.md)"
@@ -95,10 +109,11 @@ class GlslTarget(Target):
 
         def emit_one(material: Material) -> list[Artifact]:
             shaded = boundary_of(material)
-            files, images = bake_sampled_maps(shaded, options, main)
+            files, images = images_of(shaded, options, main)
             return [*emit_material(shaded, opts, self.writer, files), *images]
 
-        return emit_each(self, document, emit_one)
+        # maps=none bakes no map: its notes say so (capabilities_for), as the files are
+        return emit_each(self, document, emit_one, lambda material: capabilities_for(self.capabilities, options.maps))
 
 
 TARGET = GlslTarget()

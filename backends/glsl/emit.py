@@ -6,6 +6,8 @@ import json
 import re
 from typing import Any
 
+import numpy as np
+
 from cnlmc.material import Material
 
 from ..base import Artifact
@@ -62,7 +64,21 @@ def library_context(material: Material, plan: Plan, options: GlslOptions, writer
         "snippets": [writer.snippet(name) for name in plan.snippets],
         "ms": writer.multiscatter_tables if plan.multiscatter else None,
         "fallback": fallback_values(material),
+        "sss_lut": lut_constant(plan),
     }
+
+
+def lut_constant(plan: Plan) -> dict[str, Any] | None:
+    """The body's pre-integrated table as the library's const array (maps=none: no image): its size and
+    its samples, row-major from row 0 (cos(theta) = -1), quantized as the 16-bit PNG stores them."""
+    if not plan.lut_const:
+        return None
+    from ..preview.subsurface import lut_image
+
+    table = np.asarray(lut_image(), np.float64)
+    values = [f"{v:.9g}" for v in (np.round(np.clip(table, 0.0, 1.0) * 65535.0) / 65535.0).ravel()]
+    lines = [", ".join(values[i : i + 8]) for i in range(0, len(values), 8)]
+    return {"rows": table.shape[0], "columns": table.shape[1], "lines": lines}
 
 
 def fallback_values(material: Material) -> dict[str, str]:

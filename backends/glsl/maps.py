@@ -1,7 +1,8 @@
 """The images a GLSL library samples, written beside the shaders: the maps (option maps=bake, the
 default) as `textures/<first material>.glsl/<material>_<role>.png`, colour sRGB-encoded (upload as
 GL_SRGB8), data raw; and a translucent body's pre-integrated table (`<material>_subsurface_lut.png`,
-16-bit, always: the body term needs it). The sidecar names each sampler's file."""
+16-bit; with maps=none no image at all: the library then holds the table as a const array, emit.py
+lut_constant). The sidecar names each sampler's file."""
 
 from __future__ import annotations
 
@@ -28,7 +29,7 @@ def bake_sampled_maps(material: Material, options: Options, main: str) -> tuple[
 def body_table_image(material: Material, options: Options, main: str) -> tuple[dict[str, str], list[Artifact]]:
     """The pre-integrated table cnlm_sss_lut of a translucent body as a one-channel 16-bit PNG
     (value = sample / 65535, row 0 at the top: cos(theta) = -1), written by the maps' own writer."""
-    if not has_body(material):
+    if not has_body(material) or options.maps == "none":  # maps=none: the library holds it as a const array
         return {}, []
     from ..preview.subsurface import lut_image
 

@@ -57,6 +57,7 @@ class GlslOptions:
     profile: str = "330"
     form: str = "both"
     specialize: bool = True
+    maps: str = "bake"  # none: no image (a translucent body's table is then a const array in the library)
 
     def as_dict(self) -> dict[str, str]:
         """The options as the sidecar records them."""
@@ -77,6 +78,7 @@ def glsl_options(options: Options) -> GlslOptions:
         profile=options.profile,
         form=options.form,
         specialize=options.specialize == "on",
+        maps=options.maps,
     )
 
 

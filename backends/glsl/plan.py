@@ -140,6 +140,10 @@ class Plan:
     flakes: bool = False  # the flake lobe mixed into the base under the coat (snippets/flakes.glsl)
     subsurface: bool = False  # the body term cnlm_subsurface and its table (snippets/subsurface.glsl)
     body: dict = field(default_factory=dict)  # the body term's uniform values (body_values), made once
+    # a volume's base-colour map colours its body (cnlm_sss_mapped_albedo), not its black boundary
+    body_map: bool = False
+    # the body's table as a const array in the library (maps=none: no image), not the sampler cnlm_sss_lut
+    lut_const: bool = False
 
     @property
     def microfacet(self) -> bool:
@@ -193,7 +197,9 @@ def make_plan(material: Material, options: GlslOptions) -> Plan:
         sheen=has_sheen(material),
         flakes=has_flakes(material),
         subsurface=has_body(material),
+        lut_const=has_body(material) and options.maps == "none",
     )
+    plan.body_map = plan.subsurface and material.model.subsurface == "volume" and "base_color" in plan.maps
     plan.body = body_values(material) if plan.subsurface else {}
     plan.snippets = snippet_names(plan)
     plan.uniforms = uniforms_for(plan, material)
@@ -209,7 +215,7 @@ def has_body(material: Material) -> bool:
 
 def table_samplers(plan: Plan) -> list[Sampler]:
     """The samplers of the library's own tables (not maps): the body term's pre-integrated table."""
-    return [Sampler(*LUT_SAMPLER)] if plan.subsurface else []
+    return [Sampler(*LUT_SAMPLER)] if plan.subsurface and not plan.lut_const else []
 
 
 def body_values(material: Material) -> dict[str, Any]:
@@ -261,6 +267,8 @@ def snippet_names(plan: Plan) -> list[str]:
         names.append("sheen")
     if plan.subsurface:
         names.append("subsurface")
+    if plan.body_map:
+        names.append("subsurface_map")
     return list(dict.fromkeys(names))
 
 
@@ -290,7 +298,11 @@ def _coat(material: Material) -> Coat:
 UniformValue = Callable[[Material, Plan], Any]
 #: uniform name -> (type, when it is needed, its value). Read by `uniforms_for`.
 UNIFORM_TABLE: dict[str, tuple[str | None, Callable[[Plan], bool], UniformValue]] = {
-    "cnlm_base_color": ("vec3", lambda p: "base_color" not in p.maps, lambda m, p: _rgb(m.params.base_color)),
+    "cnlm_base_color": (
+        "vec3",
+        lambda p: "base_color" not in p.maps or p.body_map,  # a volume's map colours its body, not cnlm_bsdf
+        lambda m, p: [0.0, 0.0, 0.0] if p.body_map else _rgb(m.params.base_color),  # a volume's boundary: black
+    ),
     "cnlm_alpha": (
         None,
         lambda p: p.microfacet and "roughness" not in p.maps,  # float or vec2
@@ -424,6 +436,7 @@ UBER_SNIPPETS = (
     "flakes",
     "sheen",
     "subsurface",
+    "subsurface_map",
 )
 
 
@@ -455,11 +468,16 @@ def make_uber_plan(material: Material, options: GlslOptions) -> Plan:
         flakes=True,
         subsurface=True,
         body=plan.body,
+        body_map=plan.body_map,
+        lut_const=plan.lut_const,
     )
     selectors = [
         Uniform(name, "int", codes[getattr(plan, attribute)]) for name, (attribute, codes) in UBER_SELECTORS.items()
     ]
-    map_flags = [Uniform(f"cnlm_use_map_{role}", "int", int(role in plan.maps)) for role in SHADER_ROLES]
+    # a volume's base-colour map colours its body (cnlm_sss_use_map), not its boundary (cnlm_use_map_base_color 0)
+    drawn = [role for role in plan.maps if not (plan.body_map and role == "base_color")]
+    map_flags = [Uniform(f"cnlm_use_map_{role}", "int", int(role in drawn)) for role in SHADER_ROLES]
+    map_flags.append(Uniform("cnlm_sss_use_map", "int", int(plan.body_map)))
     full = complete_material(material)
     params = [
         Uniform(name, gl_type or "vec2", value(full, every)) for name, (gl_type, _, value) in UNIFORM_TABLE.items()

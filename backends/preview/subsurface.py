@@ -120,21 +120,21 @@ def has_subsurface(material: Any) -> bool:
 
 def boundary_material(material: Material) -> Material:
     """What the preview draws with cnlm_bsdf for a translucent material. A volume: its boundary
-    alone, the base colour black and without a base-colour map (the body's light is the subsurface
-    term; the IR's base_color is the colour the eye sees, for exports without subsurface). A thin
-    sheet: its front as the Mitsuba export draws it, base_color x (1 - w), w the largest channel
-    of the sheet's transmittance (the blend's weight; the subsurface term adds what comes
-    through). Any other material is returned as it is."""
+    alone, the base colour black (the body's light is the subsurface term; the IR's base_color is
+    the colour the eye sees, for exports without subsurface). A volume with a base-colour map keeps
+    the map and its params (the map's graph reads base_color as its input): the map colours the
+    body, not the boundary, and the shader's plan draws the boundary black (glsl plan.body_map,
+    snippets/subsurface_map.glsl: marble's veins). A thin sheet: its front as the Mitsuba export
+    draws it, base_color x (1 - w), w the largest channel of the sheet's transmittance (the blend's
+    weight; the subsurface term adds what comes through). Any other material is returned as it is."""
     body = subsurface_of(material)
-    if body is None:
+    if body is None or (not body.thin and "base_color" in material.maps):
         return material
     if body.thin:
         _, through = sheet_optics(body)
         front = _triple(np.asarray(material.params.base_color, np.float64) * (1.0 - float(through.max())))
         return dataclasses.replace(material, params=dataclasses.replace(material.params, base_color=front))
-    params = dataclasses.replace(material.params, base_color=(0.0, 0.0, 0.0))
-    maps = {role: ref for role, ref in material.maps.items() if role != "base_color"}
-    return dataclasses.replace(material, params=params, maps=maps)
+    return dataclasses.replace(material, params=dataclasses.replace(material.params, base_color=(0.0, 0.0, 0.0)))
 
 
 def metres_per_unit() -> float:

@@ -56,18 +56,18 @@ vec3 cnlm_sss_crossing(vec3 p, vec3 n, vec3 d, float curvature) {
 // The body as a Kubelka-Munk slab whose infinitely thick reflectance is the IR's colour c, of optical
 // depth d / l_d (e = exp(-d / l_d), cnlm_sss_crossing): what it reflects (R) and what it lets through (T)
 //   R = c (1 - e^2) / (1 - c^2 e^2),  T = (1 - c^2) e / (1 - c^2 e^2)      (R + T <= 1; thick: R = c)
-vec3 cnlm_sss_slab_denominator(vec3 e) {
-    vec3 c = min(cnlm_sss_albedo, vec3(0.9999));
+// c the body's colour where the light leaves: cnlm_sss_albedo, or the base-colour map's there
+// (cnlm_sss_mapped_albedo, docs/subsurface.md "Veins").
+vec3 cnlm_sss_slab_denominator(vec3 e, vec3 c) {
     return max(1.0 - c * c * e * e, vec3(1e-4));
 }
 
-vec3 cnlm_sss_slab_reflected(vec3 e) {
-    return min(cnlm_sss_albedo, vec3(0.9999)) * (1.0 - e * e) / cnlm_sss_slab_denominator(e);
+vec3 cnlm_sss_slab_reflected(vec3 e, vec3 c) {
+    return c * (1.0 - e * e) / cnlm_sss_slab_denominator(e, c);
 }
 
-vec3 cnlm_sss_slab_through(vec3 e) {
-    vec3 c = min(cnlm_sss_albedo, vec3(0.9999));
-    return (1.0 - c * c) * e / cnlm_sss_slab_denominator(e);
+vec3 cnlm_sss_slab_through(vec3 e, vec3 c) {
+    return (1.0 - c * c) * e / cnlm_sss_slab_denominator(e, c);
 }
 
 float cnlm_sss_exit(vec3 n, vec3 v) {
@@ -75,16 +75,36 @@ float cnlm_sss_exit(vec3 n, vec3 v) {
     return 1.0 - (cnlm_sss_f0 + (1.0 - cnlm_sss_f0) * m * m * m * m * m);
 }
 
-// The pre-integrated table, bilinear (subsurface_profile.PreintegratedTable.lookup does the same).
+// The pre-integrated table: the sampler cnlm_sss_lut, or (maps=none: no image) the const array
+// cnlm_sss_lut_values the library declares behind CNLM_SSS_LUT_CONST (a const array is not a uniform).
+#ifdef CNLM_SSS_LUT_CONST
+ivec2 cnlm_sss_lut_size() {
+    return ivec2(CNLM_SSS_LUT_COLUMNS, CNLM_SSS_LUT_ROWS);
+}
+
+float cnlm_sss_lut_at(ivec2 texel) {
+    return cnlm_sss_lut_values[texel.y * CNLM_SSS_LUT_COLUMNS + texel.x];
+}
+#else
+ivec2 cnlm_sss_lut_size() {
+    return textureSize(cnlm_sss_lut, 0);
+}
+
+float cnlm_sss_lut_at(ivec2 texel) {
+    return texelFetch(cnlm_sss_lut, texel, 0).r;
+}
+#endif
+
+// The table, bilinear (subsurface_profile.PreintegratedTable.lookup does the same).
 float cnlm_sss_preintegrated(float nl, float rho) {
-    ivec2 steps = textureSize(cnlm_sss_lut, 0);  // (rho steps, cos steps)
+    ivec2 steps = cnlm_sss_lut_size();  // (rho steps, cos steps)
     float row = (clamp(nl, -1.0, 1.0) + 1.0) * 0.5 * float(steps.y - 1);
     float col = clamp(rho / (1.0 + rho) / cnlm_sss_lut_u_max, 0.0, 1.0) * float(steps.x - 1);
     int r0 = min(int(row), steps.y - 2);
     int c0 = min(int(col), steps.x - 2);
     float fr = row - float(r0), fc = col - float(c0);
-    float top = mix(texelFetch(cnlm_sss_lut, ivec2(c0, r0), 0).r, texelFetch(cnlm_sss_lut, ivec2(c0 + 1, r0), 0).r, fc);
-    float bottom = mix(texelFetch(cnlm_sss_lut, ivec2(c0, r0 + 1), 0).r, texelFetch(cnlm_sss_lut, ivec2(c0 + 1, r0 + 1), 0).r, fc);
+    float top = mix(cnlm_sss_lut_at(ivec2(c0, r0)), cnlm_sss_lut_at(ivec2(c0 + 1, r0)), fc);
+    float bottom = mix(cnlm_sss_lut_at(ivec2(c0, r0 + 1)), cnlm_sss_lut_at(ivec2(c0 + 1, r0 + 1)), fc);
     return mix(top, bottom, fr);
 }
 
@@ -113,22 +133,31 @@ vec3 cnlm_sss_thin_wall(vec3 n, vec3 v, vec3 l, vec3 light, vec3 front, vec3 bac
     return cnlm_sss_exit(n, v) * through;
 }
 
-// A thick volume: what enters near here comes back (1 - T_n) or crosses the body (T_n, T_l).
-vec3 cnlm_sss_volume(vec3 p, vec3 n, vec3 v, vec3 l, vec3 light, vec3 front, vec3 back, float curvature) {
+// A thick volume: what enters near here comes back (1 - T_n) or crosses the body (T_n, T_l); `albedo`
+// its colour c here (at most 0.9999: a lossless body has no finite answer).
+vec3 cnlm_sss_volume(vec3 p, vec3 n, vec3 v, vec3 l, vec3 light, vec3 front, vec3 back, float curvature, vec3 albedo) {
+    vec3 c = min(albedo, vec3(0.9999));
     float nl = dot(n, l);
     vec3 through_n = cnlm_sss_crossing(p, n, -n, curvature);
     vec3 through_l = cnlm_sss_crossing(p, n, l, curvature);
-    vec3 reflected = cnlm_sss_slab_reflected(through_n) * (cnlm_sss_diffused(curvature, nl) * light / CNLM_PI + front);
-    vec3 crossed = cnlm_sss_slab_through(through_n) * back + cnlm_sss_slab_through(through_l) * max(-nl, 0.0) * light / CNLM_PI;
+    vec3 reflected = cnlm_sss_slab_reflected(through_n, c) * (cnlm_sss_diffused(curvature, nl) * light / CNLM_PI + front);
+    vec3 crossed = cnlm_sss_slab_through(through_n, c) * back + cnlm_sss_slab_through(through_l, c) * max(-nl, 0.0) * light / CNLM_PI;
     return cnlm_sss_entry * cnlm_sss_exit(n, v) * (reflected + crossed);
+}
+
+// The body's radiance with its colour `albedo` at p (a thick volume's; a thin wall has none of its own).
+vec3 cnlm_sss_body(vec3 p, vec3 n, vec3 v, vec3 l, vec3 light, vec3 front, vec3 back, float curvature, vec3 albedo) {
+    return cnlm_sss_thin == 1
+        ? cnlm_sss_thin_wall(n, v, l, light, front, back)
+        : cnlm_sss_volume(p, n, v, l, light, front, back, curvature, albedo);
 }
 
 // The body's radiance towards v at p (scene units), n the unit shading normal, l the unit direction
 // towards the light, `light` its irradiance at normal incidence (RGB), `front` and `back` the
 // environment's irradiance / pi around n and around -n (a uniform ambient radiance L: both L),
-// `curvature` 1/r in 1/scene units (cnlm_sss_curvature(n, p) in a fragment shader).
+// `curvature` 1/r in 1/scene units (cnlm_sss_curvature(n, p) in a fragment shader). The body's colour
+// is the uniform cnlm_sss_albedo; the library's overload with a last argument `vec2 uv` colours a
+// volume by its base-colour map where the material has one (the veins of marble).
 vec3 cnlm_subsurface(vec3 p, vec3 n, vec3 v, vec3 l, vec3 light, vec3 front, vec3 back, float curvature) {
-    return cnlm_sss_thin == 1
-        ? cnlm_sss_thin_wall(n, v, l, light, front, back)
-        : cnlm_sss_volume(p, n, v, l, light, front, back, curvature);
+    return cnlm_sss_body(p, n, v, l, light, front, back, curvature, cnlm_sss_albedo);
 }
