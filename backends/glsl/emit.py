@@ -68,6 +68,12 @@ def library_context(material: Material, plan: Plan, options: GlslOptions, writer
     }
 
 
+def float_literal(value: float) -> str:
+    """A GLSL float literal (ES has no implicit int -> float: 1 is written 1.0)."""
+    text = f"{value:.9g}"
+    return text if any(c in text for c in ".en") else text + ".0"
+
+
 def lut_constant(plan: Plan) -> dict[str, Any] | None:
     """The body's pre-integrated table as the library's const array (maps=none: no image): its size and
     its samples, row-major from row 0 (cos(theta) = -1), quantized as the 16-bit PNG stores them."""
@@ -76,7 +82,7 @@ def lut_constant(plan: Plan) -> dict[str, Any] | None:
     from ..preview.subsurface import lut_image
 
     table = np.asarray(lut_image(), np.float64)
-    values = [f"{v:.9g}" for v in (np.round(np.clip(table, 0.0, 1.0) * 65535.0) / 65535.0).ravel()]
+    values = [float_literal(v) for v in (np.round(np.clip(table, 0.0, 1.0) * 65535.0) / 65535.0).ravel()]
     lines = [", ".join(values[i : i + 8]) for i in range(0, len(values), 8)]
     return {"rows": table.shape[0], "columns": table.shape[1], "lines": lines}
 

@@ -8,6 +8,9 @@ from __future__ import annotations
 
 import io
 import json
+import re
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -27,6 +30,7 @@ def emitted(phrase: str, **options: str) -> dict[str, str | bytes]:
     ir = {"ir_version": 1, "materials": [material_of(phrase)], "diagnostics": []}
     result = glsl.emit(ir, {"map_size": "8", **options})
     assert not [n for n in result.notes if n.feature.startswith("subsurface")], result.notes
+    assert len({a.name for a in result.artifacts}) == len(result.artifacts)
     return {a.name.rsplit("/", 1)[-1]: a.content for a in result.artifacts}
 
 
@@ -68,6 +72,12 @@ def test_glslang_accepts_every_stage_and_profile():
                 files = emitted(phrase, profile=profile, specialize=specialize)
                 stem = f"{phrase}_{profile}_{specialize}"
                 sources += [(f"{stem}.frag", files[f"{phrase}.frag"]), (f"{stem}.vert", files[f"{phrase}.vert"])]
+    for profile in ("330", "es300"):  # a body coloured by its map (marble), and the table as a const array
+        for specialize in ("on", "off"):
+            for phrase, maps in (("marble", "bake"), ("marble", "none"), ("wax", "none")):
+                files = emitted(phrase, profile=profile, specialize=specialize, maps=maps)
+                stem = f"{phrase}_{maps}_{profile}_{specialize}"
+                sources += [(f"{stem}.frag", files[f"{phrase}.frag"]), (f"{stem}.vert", files[f"{phrase}.vert"])]
     failures = [(name, out) for name, code, out in run_glslang(sources) if code != 0]
     assert not failures, failures
 
@@ -86,10 +96,11 @@ class Standalone:
         for u in sidecar["uniforms"]:  # as a host of the es300 profile must (330 has them as initialisers)
             value = u["value"]
             self.program[u["name"]].value = tuple(value) if isinstance(value, list) else value
-        [lut] = [s for s in sidecar["samplers"] if s["name"] == "cnlm_sss_lut"]
-        table = read_table(files[lut["file"].rsplit("/", 1)[-1]]).astype("f4")
-        self.lut = ctx.texture((table.shape[1], table.shape[0]), 1, table.tobytes(), dtype="f4")
-        self.lut.filter = (ctx.NEAREST, ctx.NEAREST)
+        self.lut = None  # with maps=none the library holds the table (a const array): nothing to bind
+        for lut in [s for s in sidecar["samplers"] if s["name"] == "cnlm_sss_lut"]:
+            table = read_table(files[lut["file"].rsplit("/", 1)[-1]]).astype("f4")
+            self.lut = ctx.texture((table.shape[1], table.shape[0]), 1, table.tobytes(), dtype="f4")
+            self.lut.filter = (ctx.NEAREST, ctx.NEAREST)
 
     def draw(self, scene, ambient: np.ndarray) -> np.ndarray:
         from cnlmc.backends.preview.glass import bounding_sphere
@@ -114,8 +125,9 @@ class Standalone:
         for name, value in values.items():
             if name in prog:
                 prog[name].value = value
-        self.lut.use(0)
-        prog["cnlm_sss_lut"].value = 0
+        if self.lut is not None:
+            self.lut.use(0)
+            prog["cnlm_sss_lut"].value = 0
         width, height = SIZE, SIZE
         target = ctx.framebuffer(
             color_attachments=[ctx.texture((width, height), 4, dtype="f4")],
@@ -178,3 +190,107 @@ def test_the_standalone_draws_what_the_preview_draws(renderer, phrase, mesh, beh
     assert error.max() <= TOLERANCE, (error.max(), np.unravel_index(error.argmax(), error.shape))
     # the body is what is compared: without it the picture is far off
     assert np.median(preview.max(-1)) > 0.02
+
+
+def translucent_nouns() -> list[str]:
+    import tomllib
+    from pathlib import Path
+
+    import cnlmc
+
+    path = Path(cnlmc.__file__).parent / "stdlib" / "lexicon" / "nouns_translucent.toml"
+    if not path.exists():  # the source checkout's layout
+        path = Path(__file__).parents[2] / "stdlib" / "lexicon" / "nouns_translucent.toml"
+    with path.open("rb") as handle:
+        return sorted(tomllib.load(handle))
+
+
+def cnlmc_cli(*args: str, source: str, **kwargs) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [sys.executable, "-m", "cnlmc", *args], input=source, capture_output=True, text=True, **kwargs
+    )
+
+
+def test_every_baked_note_has_its_file(tmp_path):
+    """Issue #19 review 2: for every translucent noun, each W202 'baked' map role the target notes
+    has its sampler's file in the sidecar and on disk, and no image is written that no note names
+    (besides the body's table); with maps=none no image at all and no W202."""
+    nouns = translucent_nouns()
+    assert {"marble", "jade", "wax", "leaf"} <= set(nouns)
+    source = "".join(f"{noun}\n" for noun in nouns)
+    done = cnlmc_cli(
+        "compile", "-", "-t", "glsl", "-o", str(tmp_path / "out.glsl"), "--option", "map_size=8", source=source
+    )
+    assert done.returncode == 0, done.stderr
+    baked = re.findall(r"W202\]: glsl: (\S+): maps\.(\w+):", done.stderr)
+    assert ("marble", "base_color") in baked and ("jade", "base_color") in baked
+    written = {p.relative_to(tmp_path).as_posix() for p in tmp_path.rglob("*.png")}
+    named = set()
+    for name, role in baked:
+        sidecar = json.loads((tmp_path / f"{name}.glsl.json").read_text())
+        [sampler] = [s for s in sidecar["samplers"] if s["role"] == role]
+        assert sampler["file"] in written, (name, role, sampler["file"])
+        named.add(sampler["file"])
+    assert {f for f in written if not f.endswith("_subsurface_lut.png")} == named
+    none = cnlmc_cli("compile", "-", "-t", "glsl", "--option", "maps=none", source="marble\n")
+    assert none.returncode == 0 and "W202" not in none.stderr and "W203" in none.stderr, none.stderr
+
+
+SECTION = re.compile(r"^// ---- (\S+\.(?:frag|vert))$", re.M)
+
+
+@pytest.mark.skipif(GLSLANG is None, reason="glslangValidator is not installed")
+@pytest.mark.parametrize("phrase", ["wax", "marble", "leaf"])
+def test_maps_none_writes_no_image_to_stdout(phrase):
+    """Issue #19 review 3: maps=none promises no images: to stdout, rc 0, the table a const array
+    in the library (no sampler cnlm_sss_lut), the standalone pair glslangValidator-clean."""
+    done = cnlmc_cli("compile", "-", "-t", "glsl", "--option", "maps=none", source=f"{phrase}\n")
+    assert done.returncode == 0, done.stderr
+    assert "#define CNLM_SSS_LUT_CONST" in done.stdout and "uniform highp sampler2D cnlm_sss_lut" not in done.stdout
+    cuts = list(SECTION.finditer(done.stdout))
+    assert [m.group(1) for m in cuts] == [f"{phrase}.frag", f"{phrase}.vert"]
+    ends = [m.start() for m in cuts[1:]] + [done.stdout.index(f"// ---- {phrase}.glsl.json")]
+    sources = [(m.group(1), done.stdout[m.end() : end].lstrip("\n")) for m, end in zip(cuts, ends, strict=True)]
+    failures = [(name, out) for name, code, out in run_glslang(sources) if code != 0]
+    assert not failures, failures
+
+
+def test_a_missing_image_library_is_a_usage_error_naming_the_extra():
+    """Issue #19 review 3: without OpenImageIO (made unimportable here) a textured or translucent
+    material is a usage error (rc 2) naming the glsl extra, never an internal error (rc 70); maps=none
+    needs no image library."""
+    hide = "import sys, runpy; sys.modules['OpenImageIO'] = None; sys.argv[0] = 'cnlmc'; runpy.run_module('cnlmc', run_name='__main__')"
+    for phrase in ("wax", "oak"):
+        done = subprocess.run(
+            [sys.executable, "-c", hide, "compile", "-", "-t", "glsl", "-o", "/dev/null/x.glsl"],
+            input=f"{phrase}\n",
+            capture_output=True,
+            text=True,
+        )
+        assert done.returncode == 2 and "cnlmc[glsl]" in done.stderr, (phrase, done.returncode, done.stderr)
+    none = subprocess.run(
+        [sys.executable, "-c", hide, "compile", "-", "-t", "glsl", "--option", "maps=none"],
+        input="wax\n",
+        capture_output=True,
+        text=True,
+    )
+    assert none.returncode == 0, none.stderr
+
+
+@pytest.mark.parametrize("mesh", ["sphere", "teapot"])
+def test_the_const_table_and_the_uniform_path_draw_the_same(renderer, mesh):
+    """With maps=none the standalone reads the table from its const array: the same picture as
+    from the PNG (within 1e-6); and a body without a map drawn through the uv overload is the uniform
+    body term (the 8-argument cnlm_subsurface) to 1e-6: uniform materials did not change."""
+    scene = renderer.scene(mesh, "studio")
+    ambient = np.full(3, 0.05)
+    files = emitted("wax")
+    baked = Standalone(renderer.ctx, files, "wax").draw(scene, ambient)
+    const = Standalone(renderer.ctx, emitted("wax", maps="none"), "wax").draw(scene, ambient)
+    call = "cnlm_sss_curvature(n, v_position), v_uv);"
+    assert call in files["wax.frag"]
+    uniform = {**files, "wax.frag": files["wax.frag"].replace(call, "cnlm_sss_curvature(n, v_position));")}
+    plain = Standalone(renderer.ctx, uniform, "wax").draw(scene, ambient)
+    assert (baked[..., 3] > 0.5).sum() > 0.1 * SIZE * SIZE
+    assert np.abs(const - baked).max() <= 1e-6
+    assert np.abs(plain - baked).max() <= 1e-6
