@@ -455,6 +455,20 @@ def cnlm_bsdf(material: Material, tex: BsdfTextures) -> Prop:
     return node("cnlm", props)
 
 
+#: a volume's base-colour map (marble's veins): Mitsuba's homogeneous medium has one albedo per channel
+MEDIUM_MAP_DROPPED = (
+    "drop",
+    "Mitsuba's homogeneous medium cannot be textured: the body takes the IR's uniform subsurface colour and "
+    "the base-colour map (veins) is not drawn (the preview and the GLSL target colour the body by it)",
+)
+
+
+def untextured_medium(material: Material) -> bool:
+    """A volume with a base-colour map, exported natively: the map would colour its body, which a
+    homogeneous medium cannot be."""
+    return material.model.subsurface == "volume" and "base_color" in material.maps
+
+
 def uses_cnlm(material: Material, options: Options) -> bool:
     """bsdf=cnlm applies to every reflective model; glass keeps roughdielectric (its exact match)."""
     return bool(options.bsdf == "cnlm" and material.model.base != "glass")
@@ -578,13 +592,19 @@ class MitsubaScene:
         self.entries: list[dict[str, Any]] = []
 
     def capabilities_of(self, material: Material) -> Capabilities:
-        return self.cnlm if uses_cnlm(material, self.options) else self.native
+        if uses_cnlm(material, self.options):
+            return self.cnlm
+        if untextured_medium(material) and self.options.maps != "none":
+            return {**self.native, "maps.base_color": MEDIUM_MAP_DROPPED}
+        return self.native
 
     def add(self, material: Material) -> list[Artifact]:
         """The material's BSDF entry; returns its baked bitmaps."""
         ident, cnlm = self.idents[material], uses_cnlm(material, self.options)
         alpha_maps = None if cnlm else AlphaMaps(material)
         roles = CNLM_MAPS if cnlm else USED_MAPS
+        if not cnlm and untextured_medium(material):  # the medium takes one colour: its map is not baked
+            roles = tuple(role for role in roles if role != "base_color")
         main = main_file(self.options)
         textures, images = bake_textures(material, ident, self.options, roles=roles, derive=alpha_maps, main=main)
         tex: BsdfTextures = dict(textures)
