@@ -51,7 +51,8 @@ def test_a_colour_change_keeps_the_shader_source(tmp_path: Path) -> None:
 
 @pytest.mark.skipif(GLSLANG is None, reason="glslangValidator is not installed (scripts/setup.sh)")
 @pytest.mark.parametrize(
-    "phrase", ["lightly brushed, blue anodized aluminum", "clear glass", "velvet", "oak", "wax", "metallic car paint"]
+    "phrase",
+    ["lightly brushed, blue anodized aluminum", "clear glass", "velvet", "oak", "wax", "marble", "metallic car paint"],
 )
 def test_every_kind_of_shader_compiles_as_glsl_es(tmp_path: Path, phrase: str) -> None:
     payload = payload_of(phrase, tmp_path)
@@ -76,6 +77,10 @@ def test_a_translucent_body_is_drawn_as_the_preview_draws_it(tmp_path: Path) -> 
     table = payload["tables"]["cnlm_sss_lut"]
     values = np.frombuffer(base64.b64decode(table["data"]), np.float32).reshape(table["height"], table["width"], 4)
     assert np.array_equal(values[..., 0], preintegrated_table().values)
+    # a volume's base-colour map colours its body (marble's veins): bound, with the boundary still black
+    marble = payload_of("marble", tmp_path)
+    assert "cnlm_map_base_color" in marble["maps"] and "cnlm_sss_mapped_albedo(uv, p)" in marble["fragment"]
+    assert {u["name"]: u["value"] for u in marble["uniforms"]}["cnlm_base_color"] == [0.0, 0.0, 0.0]
     flakes = payload_of("metallic car paint", tmp_path)["mesh_uniforms"]["closed"]
     assert {u["name"] for u in flakes} == {"pv_flake_area", "pv_light_solid_angle"}
 
@@ -102,7 +107,7 @@ VIEW_SETS = {
 
 
 @pytest.mark.parametrize(
-    "phrase", ["clear glass", "velvet", "wax", "metallic car paint", "oak", "clear-coated red car paint"]
+    "phrase", ["clear glass", "velvet", "wax", "marble", "metallic car paint", "oak", "clear-coated red car paint"]
 )
 def test_every_uniform_of_the_shader_is_given_a_value(tmp_path: Path, phrase: str) -> None:
     """A feature the preview adds (a new uniform its object pass sets) must reach the payload:
