@@ -329,16 +329,21 @@ class Tagger:
         return bool(self._candidates(before)) and self._noun_starts_inside(raw, i + n - 1)
 
     def _noun_starts_inside(self, raw: list[RawToken], j: int) -> bool:
-        """Whether a multi-word noun starts at raw[j] and runs past it to the end of the line or
-        a separator: then a form ending at raw[j] gives way to it (the material is what a phrase
-        names; a shorter form before it still tags)."""
+        """Whether a multi-word noun starts at raw[j] and runs past it to where a noun ends (the end
+        of the line, a separator, or a word that follows a noun: 'with', 'or', 'and'): then a form
+        ending at raw[j] gives way to it (the material is what a phrase names; a shorter form
+        before it still tags): 'fine silver leaf with an anodic oxide' is 'fine' + 'silver leaf'."""
         for m in self.lengths_from.get(raw[j][0].lower(), ()):
             end = j + m
-            if m > 1 and end <= len(raw) and (end == len(raw) or not raw[end][0][0].isalpha()):
+            if m > 1 and end <= len(raw) and (end == len(raw) or self._ends_a_noun(raw[end][0])):
                 found = self._candidates(tuple([t.lower() for t, _c in raw[j:end]]))
                 if any(c.tag == "NOUN" for c in found):
                     return True
         return False
+
+    def _ends_a_noun(self, word: str) -> bool:
+        """Whether `word` is a separator or a keyword that follows a noun (NOUN_FOLLOWERS)."""
+        return not word[0].isalpha() or self.keywords.get(word.lower()) in NOUN_FOLLOWERS
 
     def _candidates(self, words: tuple[str, ...]) -> tuple[Candidate, ...]:
         entries = self.memo._entries  # WordMemo.get written out: a multi-word entry asks for several forms
@@ -408,6 +413,8 @@ _MATERIAL_WORDS = frozenset(("NOUN", "OBJECT", "COAT"))
 
 #: The readings of a separator a word with no effect leaves standing alone ("shiny, not rusty, iron").
 _SEPARATORS = frozenset(("COMMA", "AND"))
+#: keywords that may follow a noun: a multi-word noun that runs to one of them is a whole noun
+NOUN_FOLLOWERS = frozenset(("WITH", "OR", "AND"))
 
 
 def _is_separator(word: Tagged) -> bool:

@@ -495,3 +495,14 @@ WORDS = (
 def test_any_line_of_these_words_compiles_or_reports_without_a_traceback(words):
     result = compile_source(" ".join(words), "t.cnl", LEX)
     assert result.ok or any(d.severity.name == "ERROR" and d.span is not None for d in result.diagnostics)
+
+
+@pytest.mark.parametrize("line", ["fine silver leaf with an anodic oxide", "fine silver leaf or gold"])
+def test_a_multi_word_noun_before_a_clause_or_a_join_is_the_noun(line):
+    """A form gives way to a multi-word noun that starts on its last word and runs to where a noun
+    ends: a separator or 'with' / 'or' / 'and', as at the end of the line: 'fine' (nothing to
+    modify, W103) + 'silver leaf', not the noun 'fine silver' followed by a stray 'leaf'."""
+    result = compile_source(line + "\n")
+    assert [d.code for d in result.diagnostics if d.severity.name == "ERROR"] == []
+    plain = compile_source(line.removeprefix("fine ") + "\n")
+    assert [m["params"] for m in result.ir["materials"]] == [m["params"] for m in plain.ir["materials"]]
