@@ -25,8 +25,8 @@ from .view_server import ViewServer
 ROOT = Path(__file__).resolve().parents[2]
 SIZE = 128
 #: from the preview chart (bench/preview_chart.py): its anisotropic variant (a coated metal with a normal
-#: map), a glass, a sheen and a textured noun (a roughness map: the fitted kernel pair's rows)
-CHART = ["lightly brushed, blue anodized aluminum", "clear glass", "velvet", "oak"]
+#: map), a glass, a sheen and a textured noun (a roughness map: the fitted kernel pair's rows); marble: a translucent body coloured by its map (#19)
+CHART = ["lightly brushed, blue anodized aluminum", "clear glass", "velvet", "oak", "marble"]
 FLIP_LIMIT = 0.05  # issue #17, "Fidelity"
 
 
