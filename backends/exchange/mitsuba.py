@@ -602,7 +602,7 @@ class MitsubaScene:
         """The material's BSDF entry; returns its baked bitmaps."""
         ident, cnlm = self.idents[material], uses_cnlm(material, self.options)
         alpha_maps = None if cnlm else AlphaMaps(material)
-        roles = CNLM_MAPS if cnlm else USED_MAPS
+        roles: tuple[str, ...] = CNLM_MAPS if cnlm else USED_MAPS
         if not cnlm and untextured_medium(material):  # the medium takes one colour: its map is not baked
             roles = tuple(role for role in roles if role != "base_color")
         main = main_file(self.options)
