@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from cnlmc.backends.preview import PreviewOptionError, parse_options
-from cnlmc.backends.preview.environment import Environment, pixel_directions
+from cnlmc.backends.preview.environment import Environment, KeyLight, pixel_directions
 
 from .conftest import material_of
 
@@ -112,6 +112,33 @@ def test_no_glass_pixel_is_nan_in_any_tier(glass_renderer, tier, glass):
         assert np.isfinite(frame.hdr).all(), (phrase, tier, glass)
         covered = frame.rgba[..., 3] > 128
         assert frame.hdr[covered, :3].max(axis=-1).mean() > 0.1, f"{phrase} ({tier}, {glass}) is black"
+
+
+def light_behind_environment() -> Environment:
+    """Black but for a bright disc (radiance 40, 25 degrees) on the camera's line of sight through the
+    object, and no key light: every direction on the camera's side is dark, where a rough ball's later
+    lobe looks (back towards the viewer)."""
+    d = pixel_directions(128, 256)
+    sight = np.array([0.0, -np.sin(np.radians(18.0)), -np.cos(np.radians(18.0))])
+    image = np.where((d @ sight > np.cos(np.radians(25.0)))[..., None], (40.0, 40.0, 40.0), 0.0).astype(np.float32)
+    return Environment("light-behind", image, KeyLight(irradiance=0.0))
+
+
+@pytest.mark.parametrize("tier", ["splitsum", "analytic"])
+def test_rough_glass_over_a_dark_direction_is_never_negative(glass_renderer, tier):
+    """The later lobe's order-1 environment estimate L_mean (1 - 1.5 m) + 1.5 m E(d) is negative past
+    mean cosine m = 2/3 where E(d) < L_mean (1 - 2 / (3 m)) (here E ~ 0 on the camera's side; slightly
+    rough glass has m 0.7-0.9 near the centre), before the blend to the GGX lookup takes over at 0.8:
+    floored at 0 in the shader. The frame is finite, shows the light through the ball, and has no
+    negative pixel (preview.frag floors its output too: a negative lobe would take light from the
+    others, at most 0.25 % of L_mean over the glass_paths table)."""
+    env = light_behind_environment()
+    for phrase in ("slightly rough glass", "lightly frosted glass", "frosted glass"):
+        frame = render(glass_renderer, phrase, env, tier)
+        assert np.isfinite(frame.hdr).all(), (phrase, tier)
+        covered = frame.rgba[..., 3] > 128
+        assert frame.hdr[covered, :3].max() > 1.0, (phrase, tier)  # the light is seen through it
+        assert frame.hdr[..., :3].min() >= 0.0, (phrase, tier, float(frame.hdr[..., :3].min()))
 
 
 def test_glass_option_is_declared_and_checked():
