@@ -394,9 +394,11 @@ def emit_stage(stage: str, source: str, name: str, lexicon: Lexicon) -> int:
             tagged, _diags = tagger.tag_line(text, number, offset)
             for t in tagged:
                 tags = "|".join(c.tag for c in t.candidates) or "?"
+                span = t.span if t.implied_by is None else t.implied_by  # an implied word: where its implier is
                 print(
-                    f"{t.span.line}:{t.span.col}\t{tags}\t{visible(t.text, one_line=True)}"
+                    f"{span.line}:{span.col}\t{tags}\t{visible(t.text, one_line=True)}"
                     + ("\t(unknown)" if t.unknown else "")
+                    + ("\t(implied)" if t.implied_by is not None else "")
                 )
         return EXIT_OK
     doc = parse_document(source, lexicon, name)

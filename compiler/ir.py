@@ -16,7 +16,7 @@ from .formulas import ROUNDING, round6, round6_list, rounded
 from .lexicon import Entry
 from .params import COAT_PARAMS, Params, params_by_model
 from .sheen_colour import sheen_params
-from .state import MaterialState, WordLists, words_key
+from .state import MaterialState, WordLists, same_texts, words_key
 from .subsurface import subsurface_ir
 
 JSONDict = dict[str, Any]
@@ -115,13 +115,13 @@ def _provenance(state: MaterialState) -> dict[str, list[JSONDict]]:
                 word = words[0]
                 span = word.span
                 lists = shared.get(span.start)
-                if lists is None:
+                if lists is None or lists[0][0] != word.text:  # an implied word starts where its implier does
                     col = span.col
                     lists = shared[span.start] = ([word.text], [[span.line, col, col + (span.end - span.start)]])
             else:
                 key = words_key(words)
                 lists = shared.get(key)
-                if lists is None:
+                if lists is None or not same_texts(lists[0], words):
                     lists = shared[key] = ([w.text for w in words], [w.span.as_list() for w in words])
             value = step.value
             if step.source:  # lexicon values are exact

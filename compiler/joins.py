@@ -22,6 +22,7 @@ from .tagged import NOTE_CODE, Candidate, Tagged
 if TYPE_CHECKING:
     from .lexicon import Lexicon
     from .resemblance import Resemblance
+    from .spoken import Spoken
     from .word_formation import Rules
 
 __all__ = ["HEAD_HOLDERS", "Joiner", "may_join", "of_tag", "others", "others_of"]
@@ -34,13 +35,22 @@ class Joiner:
     """Joins the tagged words of a line by the lexicon's objects, noun classes and word formation
     rules (`rules` gives them; they are made on first use)."""
 
-    __slots__ = ("artifacts", "lexicon", "resembling", "rules")
+    __slots__ = ("artifacts", "lexicon", "resembling", "rules", "spoken_words")
 
     def __init__(self, lexicon: Lexicon, rules: Callable[[], Rules]) -> None:
         self.lexicon = lexicon
         self.rules = rules
         self.resembling: Resemblance | None = None  # made on first use
         self.artifacts: frozenset[str] | None = None  # WordNet's artifact nouns, read on first use
+        self.spoken_words: Spoken | None = None  # made on first use
+
+    def spoken(self) -> Spoken:
+        """The document language's words for what a note adds ('Stahl mit': cnlmc.spoken)."""
+        if self.spoken_words is None:
+            from .spoken import Spoken
+
+            self.spoken_words = Spoken(self.lexicon)
+        return self.spoken_words
 
     def resemblance(self) -> Resemblance:
         """What a noun lends when it describes another material (cnlmc.resemblance)."""
@@ -117,7 +127,7 @@ class Joiner:
             self._coat_on_substrate(out, diags)
         _feature_colour_list(out, diags)
         if len(out) > 1:
-            _feature_first(out, diags, self.lexicon)
+            _feature_first(out, diags, self.lexicon, self.spoken().with_word)
         if len(out) > 1 and _ends_in_describing(out) and self.rules().postfix:
             self._postfix(out, diags)
         return out
@@ -177,7 +187,7 @@ class Joiner:
             return
         first = out[start]
         at = first.span.start - 1  # the space before the word: a span of its own (the parser keys words by start)
-        comma = Tagged(",", Span(at, at + 1, first.span.line, first.span.col - 1), _COMMA)
+        comma = Tagged(",", Span(at, at + 1, first.span.line, first.span.col - 1), _COMMA, implied_by=first.span)
         said = " ".join(t.text for t in out[start:end])
         noun = out[start - 1].text
         note = f"read '{noun} {said}' as '{noun}, {said}' (describing words after the noun)"
@@ -267,7 +277,8 @@ class Joiner:
         coat_words = out[start:-2]
         with_word = Tagged(head.text, head.span, (Candidate("WITH", "with", "keyword"),))
         coat_text = " ".join(t.text for t in coat_words)
-        note = f"read '{coat_text} {head.text} {noun.text}' as '{noun.text} with {coat_text}' (the coat is the finish)"
+        reading = f"{noun.text} {self.spoken().with_word} {coat_text}"
+        note = f"read '{coat_text} {head.text} {noun.text}' as '{reading}' (the coat is the finish)"
         diags.append(Diagnostic(coat_words[0].span.to(noun.span), Severity.NOTE, NOTE_CODE, note))
         out[start:] = [noun, with_word, *coat_words]
 
@@ -301,10 +312,12 @@ class Joiner:
         its usual material: 'wood with varnish' (the object's material and a 'with'; the coat follows)."""
         material = self.lexicon.require("objects", of_tag(word, "OBJECT")[0].key).data["material"]
         said = " ".join(t.text for t in rest)
-        note = f"read '{word.text} {said}' as '{material} with {said}' (the usual material of '{word.text}', coated)"
+        spoken = self.spoken()
+        reading = f"{spoken.word('nouns', material)} {spoken.with_word} {said}"
+        note = f"read '{word.text} {said}' as '{reading}' (the usual material of '{word.text}', coated)"
         diags.append(Diagnostic(word.span.to(rest[-1].span), Severity.NOTE, NOTE_CODE, note))
         s = rest[0].span  # the 'with': empty, inside the next word (the parser keys words by start)
-        with_word = Tagged("with", Span(s.start + 1, s.start + 1, s.line, s.col + 1), _WITH)
+        with_word = Tagged("with", Span(s.start + 1, s.start + 1, s.line, s.col + 1), _WITH, implied_by=rest[-1].span)
         return [Tagged(word.text, word.span, (Candidate("NOUN", material, "nouns"),)), with_word]
 
     def _coat_on_substrate(self, out: list[Tagged], diags: list[Diagnostic]) -> None:
@@ -321,17 +334,20 @@ class Joiner:
         said = "".join(t.text if of_tag(t, "COMMA") else f" {t.text}" for t in words).strip()
         s = coat.span  # the added words start inside the coat's word, where no word starts (the parser keys
         # words by start); the noun ends where the coat does, so a 'with' put after it (_feature_first) is free
-        noun = Tagged(substrate, Span(s.start + 2, s.end, s.line, s.col + 2), (Candidate("NOUN", substrate, "nouns"),))
+        noun_span = Span(s.start + 2, s.end, s.line, s.col + 2)
+        noun = Tagged(substrate, noun_span, (Candidate("NOUN", substrate, "nouns"),), implied_by=s)
         adjective = self.lexicon.require("coats", of_tag(coat, "COAT")[0].key).get("adjective")
+        spoken = self.spoken()
+        on = spoken.word("nouns", substrate)
         if adjective is not None:  # 'red powder coating' = red powder-coated steel: the pigment is the surface
-            reading = f"{said.removesuffix(coat.text)}{adjective} {substrate}"
+            reading = f"{said.removesuffix(coat.text)}{spoken.word('adjectives', adjective)} {on}"
             out[start:] = [*words[:-1], Tagged(coat.text, s, (Candidate("ADJ", adjective, "adjectives"),)), noun]
         else:
-            reading = f"{substrate} with {said}"
-            with_word = Tagged("with", Span(s.start + 1, s.start + 1, s.line, s.col + 1), _WITH)
+            reading = f"{on} {spoken.with_word} {said}"
+            with_word = Tagged("with", Span(s.start + 1, s.start + 1, s.line, s.col + 1), _WITH, implied_by=s)
             out[start:] = [noun, with_word, *words]
         note = (
-            f"read '{said}' as '{reading}' (a coat named alone: on {substrate}, what it is usually on; "
+            f"read '{said}' as '{reading}' (a coat named alone: on {on}, what it is usually on; "
             "name the material to choose another)"
         )
         diags.append(Diagnostic(words[0].span.to(coat.span), Severity.NOTE, NOTE_CODE, note))
@@ -447,7 +463,7 @@ class Joiner:
             return Tagged(word.text, word.span, kept, word.unknown)
         key = of_tag(word, "OBJECT")[0].key
         material = self.lexicon.require("objects", key).data["material"]
-        note = f"read '{word.text}' as '{material}' (the usual material of '{word.text}')"
+        note = f"read '{word.text}' as '{self.spoken().word('nouns', material)}' (the usual material of '{word.text}')"
         diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))
         return Tagged(word.text, word.span, (Candidate("NOUN", material, "nouns"),), word.unknown)
 
@@ -484,6 +500,7 @@ class Joiner:
 
 _COMMA = (Candidate("COMMA", ",", "keyword"),)
 _WITH = (Candidate("WITH", "with", "keyword"),)
+_AND = (Candidate("AND", "and", "keyword"),)
 #: The readings of the words that may come before a coat named as the whole material ('a glossy, red powder coat').
 _BEFORE_A_COAT = frozenset(("ADV", "ADJ", "COLOR", "SHADE", "ARTICLE", "COMMA", "AND", "OR", "NAME", "COLON", "PROP"))
 
@@ -606,7 +623,7 @@ FEATURE_WORDS = frozenset(("ADV", "COLOR", "SHADE"))
 MATERIAL_WORDS = frozenset(("ADV", "COLOR", "SHADE", "ADJ"))
 
 
-def _feature_first(out: list[Tagged], diags: list[Diagnostic], lexicon: Lexicon) -> None:
+def _feature_first(out: list[Tagged], diags: list[Diagnostic], lexicon: Lexicon, with_text: str = "with") -> None:
     """'fine grain walnut', 'gold vein marble', 'speckled granite': a feature (with its degree or colour
     words) right before the material noun, before any 'with', is the feature clause ('walnut with fine
     grain'), put first among the clauses after the noun ('speckled granite with a polished finish' =
@@ -635,17 +652,17 @@ def _feature_first(out: list[Tagged], diags: list[Diagnostic], lexicon: Lexicon)
         return  # 'more grain oak': the comparative's target
     words, own = out[start : f + 1], out[f + 1 : n]
     said = " ".join(t.text for t in words)
-    named = " ".join(t.text for t in (*own, noun))
-    note = f"read '{said} {named}' as '{named} with {said}' (a feature named before the material)"
+    typed = (*own, noun) if noun.implied_by is None else own  # 'fine grain powder coating': no 'steel' typed
+    named = " ".join(t.text for t in typed)
+    note = f"read '{said} {named}' as '{named} {with_text} {said}' (a feature named before the material)"
     diags.append(Diagnostic(words[0].span.to(noun.span), Severity.NOTE, NOTE_CODE, note))
     at, col = noun.span.end, noun.span.col + noun.span.end - noun.span.start  # the clause's 'with': at the noun's end
-    with_word = Tagged("with", Span(at, at, noun.span.line, col), (Candidate("WITH", "with", "keyword"),))
+    said_span = words[0].span.to(words[-1].span)
+    with_word = Tagged("with", Span(at, at, noun.span.line, col), _WITH, implied_by=said_span)
     joint = []
     if rest:  # 'and' before the clauses that follow: a span of its own (inside that 'with': no word starts there)
         w = rest[0].span
-        joint = [
-            Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), (Candidate("AND", "and", "keyword"),))
-        ]
+        joint = [Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), _AND, implied_by=said_span)]
     out[start:] = [*own, noun, with_word, *words, *joint, *rest]
 
 

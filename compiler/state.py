@@ -40,12 +40,19 @@ def words_key(words: Words) -> int | tuple[int, ...]:
     return words[0].span.start if len(words) == 1 else tuple([w.span.start for w in words])
 
 
+def same_texts(texts: list[str], words: Words) -> bool:
+    """Whether remembered word texts are those of `words` ('wood' implied by 'varnish' starts where it does)."""
+    if len(words) == 1:
+        return texts[0] == words[0].text
+    return texts == [w.text for w in words]
+
+
 def step_json(step: Step, shared: dict[int | tuple[int, ...], WordLists]) -> JSONDict:
     """A step's JSON form; `shared` (words_key -> their texts and spans) is filled as it goes."""
     words = step.words
     key = words[0].span.start if len(words) == 1 else words_key(words)  # words_key, its common case inline
     lists = shared.get(key)
-    if lists is None:
+    if lists is None or not same_texts(lists[0], words):  # an implied word shares its implier's start
         lists = shared[key] = ([w.text for w in words], [w.span.as_list() for w in words])
     if step.source:  # lexicon values are exact
         return {"rule": step.rule, "words": lists[0], "spans": lists[1], "value": step.value, "source": step.source}

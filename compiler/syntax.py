@@ -16,6 +16,7 @@ A plan never holds text from the line: each build reads the words of the line it
 """
 
 from collections.abc import Sequence
+from dataclasses import replace
 from typing import TYPE_CHECKING, NamedTuple
 
 from . import ast
@@ -207,11 +208,26 @@ class Shape:
         """The AST of a line whose words carry this shape's tags; picks[i] is word i's reading."""
         make = ast.Word
         made = []
+        implied = False
         for i in self.used:
             t, c = tagged[i], picks[i]
-            made.append(make(t.text, c.key, c.category, t.span, t.unknown))
+            if t.implied_by is None:
+                made.append(make(t.text, c.key, c.category, t.span, t.unknown))
+            else:  # a word no one typed ('wood' in 'satin varnish'): the span of the word that implies it
+                made.append(make(t.text, c.key, c.category, t.implied_by, t.unknown))
+                implied = True
         words = tuple(made)
-        return self.root.build(words, tagged, text)
+        if not implied:
+            return self.root.build(words, tagged, text)
+        shown = _shown(tagged)
+        item = self.root.build(words, shown, text)
+        if isinstance(item, ast.Material):  # from its first typed word to its last ('satin varnish')
+            spans = [shown[i].span for i in self.used]
+            first = min(spans, key=lambda s: s.start)
+            end = max(s.end for s in spans)
+            if (first.start, end) != (item.span.start, item.span.end):
+                item = replace(item, span=Span(first.start, end, first.line, first.col))
+        return item
 
 
 class ShapeCache(dict[ShapeKey, tuple[Shape, tuple[int, ...] | None]]):
@@ -237,3 +253,8 @@ class ShapeCache(dict[ShapeKey, tuple[Shape, tuple[int, ...] | None]]):
             self.clear()
         self[key] = (shape, choice)
         self.fresh += fresh
+
+
+def _shown(tagged: Sequence[Tagged]) -> list[Tagged]:
+    """The words of a line with an implied word's span that of the word implying it (the tree's spans)."""
+    return [t if t.implied_by is None else Tagged(t.text, t.implied_by, t.candidates, t.unknown) for t in tagged]

@@ -23,6 +23,10 @@ class Tagged:
     """A word (or multi-word entry) of a line with its candidate tags; made once, never changed."""
 
     text: str
-    span: Span
+    span: Span  # where it stands: each word of a line starts at its own offset (the parser keys words by start)
     candidates: tuple[Candidate, ...]
     unknown: bool = False
+    # a word no one typed ('wood' and 'with' in 'satin varnish' = wood with a satin varnish): the span of
+    # the word that implies it, which the syntax tree, the IR and the editor show (`span` then lies inside
+    # that word, only to keep its place in the line)
+    implied_by: Span | None = None

@@ -29,6 +29,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from .resemblance import Resemblance
+from .spoken import Spoken
 from .tagged import NOTE_CODE, Candidate
 
 if TYPE_CHECKING:  # imported when first needed: the tagger imports this module only for an unknown word
@@ -129,6 +130,7 @@ class WordFormation:
         self.memo: dict[str, Reading | None] = {}
         self.wordnet_readings: WordNet | None = None  # read on first use
         self.resemblance = Resemblance(lexicon, self.rules.resemblance)
+        self.spoken_words: Spoken | None = None  # made on first use
 
     @classmethod
     def of(cls, lexicon: Lexicon, lookup: Lookup) -> WordFormation:
@@ -264,7 +266,14 @@ class WordFormation:
         if opposite is None:
             return Reading((), last + 1, f"read '{text}' as without '{word}' (no declared opposite): no effect")
         part = Part(0, last, 0, None, (Candidate("ADJ", opposite, "adjectives"),))
-        return Reading((part,), last + 1, f"read '{text}' as '{opposite}' (the declared opposite of '{adjective.key}')")
+        said, of = self.spoken().word("adjectives", opposite), self.spoken().word("adjectives", adjective.key)
+        return Reading((part,), last + 1, f"read '{text}' as '{said}' (the declared opposite of '{of}')")
+
+    def spoken(self) -> Spoken:
+        """The document language's words for what a note adds (cnlmc.spoken), made on first use."""
+        if self.spoken_words is None:
+            self.spoken_words = Spoken(self.lexicon)
+        return self.spoken_words
 
     def _resolved(self, word: str) -> tuple[Candidate, ...]:
         """The candidates of a known word, or of a one-part reading of it."""

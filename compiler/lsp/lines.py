@@ -29,9 +29,12 @@ def tag_text(text: str, lexicon: Lexicon) -> list[Tagged]:
 
 def line_words(snapshot: Snapshot, line: int, lexicon: Lexicon) -> list[LineWord]:
     text = snapshot.index.lines[line]
-    chosen = {col: word for word, col in snapshot.words_on(line)}
+    # an implied word ('wood' in 'satin varnish') has the span of the word implying it: that word is shown
+    chosen = {col: word for word, col in snapshot.words_on(line) if text.startswith(word.text, col)}
     out = []
     for t in tag_text(text, lexicon):
+        if t.implied_by is not None:
+            continue  # no one typed it
         start, end = t.span.start, t.span.end
         tags = tuple(c.tag for c in t.candidates)
         if start in chosen and not chosen[start].unknown:

@@ -415,6 +415,73 @@ def test_a_coat_before_a_coat_alone_is_not_its_describing_word(phrase):
     assert "W102" not in codes(result)
 
 
+IMPLYING = [
+    "satin varnish",
+    "red powder coating",
+    "fine grain powder coating",
+    "floor varnish",
+    "lighter than satin varnish",
+]
+
+
+@pytest.mark.parametrize("phrase", [*IMPLYING, "speckled granite with a polished finish"])
+def test_every_provenance_span_covers_whole_typed_words(phrase):
+    """A word the rules add ('wood' in 'satin varnish') is credited to the word that implies it, so
+    every span in the IR starts and ends on a word boundary of what the user typed."""
+    result = compile_source(phrase, "t.cnl", LEX)
+    assert result.ok, [d.message for d in result.diagnostics]
+    for steps in result.ir["materials"][0]["provenance"].values():
+        for step in steps:
+            for (_line, col, end), word in zip(step["spans"], step["words"]):
+                assert col == 1 or phrase[col - 2] == " ", (phrase, word, col)
+                assert end - 1 == len(phrase) or phrase[end - 1] in " ,", (phrase, word, end)
+
+
+def test_an_implied_word_has_the_span_of_the_word_implying_it():
+    material = compile_source("satin varnish", "t.cnl", LEX).ir["materials"][0]
+    (wood,) = [s for s in material["provenance"]["base_color"] if s["words"] == ["wood"]]
+    assert wood["spans"] == [[1, 7, 14]]  # 'varnish'
+    (coat,) = material["provenance"]["coat"]
+    assert coat["words"] == ["varnish"] and coat["spans"] == [[1, 7, 14]]
+    done = run_cnlmc("compile", "-", "--emit", "tokens", stdin="satin varnish\n")
+    assert "1:7\tNOUN\twood\t(implied)" in done.stdout.splitlines()
+    explained = run_cnlmc("explain", "-", stdin="satin varnish\n")
+    assert explained.returncode == 0, explained.stderr
+    (coat_row,) = [line.split() for line in explained.stdout.splitlines() if line.split()[:1] == ["coat"]]
+    assert coat_row[2] == "varnish"  # set by the word typed, not the substrate it implies
+
+
+ENGLISH_READINGS = {"steel", "wood", "with", "matte", "glossy", "powder-coated"}
+
+
+@pytest.mark.parametrize(
+    ("phrase", "reading"),
+    [
+        ("rote Pulverbeschichtung", "rote pulverbeschichtet Stahl"),
+        ("Klarlack", "Stahl mit Klarlack"),
+        ("Boden Klarlack", "Holz mit Klarlack"),
+        ("Stahl, aber nicht glänzender", "matt"),
+        ("Dielen", "Holz"),
+    ],
+)
+def test_german_notes_quote_the_german_lexicon_s_words(phrase, reading):
+    """A note's readings are in the document's language: the German lexicon's own nouns, adjectives
+    and 'mit' (stdlib/overlays/de), not the entries' English keys."""
+    said = notes(compile_source(phrase, "t.cnl", DE))
+    assert any(f"as '{reading}'" in n for n in said), said
+    quoted = {w for n in said for q in re.findall(r"'([^']*)'", n) for w in q.split()}
+    assert not quoted & ENGLISH_READINGS, said
+
+
+@pytest.mark.parametrize(("phrase", "lexicon"), [(p, LEX) for p in IMPLYING] + [("rote Pulverbeschichtung", DE)])
+def test_a_note_reads_only_what_the_user_typed(phrase, lexicon):
+    """'read X as Y': X is always words of the line ('fine grain powder coating' is never quoted as
+    'fine grain powder coating steel')."""
+    for note in notes(compile_source(phrase, "t.cnl", lexicon)):
+        said = re.match(r"read '([^']*)'", note)
+        assert said is None or said.group(1) in phrase, note
+
+
 def test_a_coat_alone_in_german():
     _, said = look(DE, "glänzender Klarlack")
     _, spelled = look(LEX, "steel with a glossy clear coat")

@@ -84,6 +84,19 @@ async def test_hover_on_a_word_shows_doc_and_effect(client):
     assert hover.range.start == position_of(text, "anodized aluminum")
 
 
+async def test_hover_on_a_coat_named_alone_shows_the_coat_not_its_implied_substrate(client):
+    """'satin varnish' is wood with a satin varnish: 'wood' has the span of 'varnish', and hover
+    over 'varnish' still shows the coat the user typed."""
+    uri, text = fresh_uri("implied"), "satin varnish"
+    open_document(client, uri, text)
+    await wait_diagnostics(client, uri, 1)
+    hover = await client.text_document_hover_async(
+        types.HoverParams(text_document=doc_id(uri), position=position_of(text, "varnish", offset=3))
+    )
+    assert "**varnish**" in hover.contents.value and "**wood**" not in hover.contents.value
+    assert hover.range.start == position_of(text, "varnish")
+
+
 async def test_hover_on_a_material_line_shows_the_explain_table(client):
     uri, text, _ = await open_fixture(client, "materials.cnl")
     hover = await client.text_document_hover_async(
