@@ -67,13 +67,12 @@ def _describes_material(state: MaterialState, ctx: Context, item: ast.RefineItem
 def _compared(material: ast.Material, ctx: Context, end: int) -> bool:
     """Whether the word after offset `end` of the phrase is a comparison word ('than', 'als': the
     word formation rules; the tagger read it as the inline comparative and dropped it)."""
+    formation = ctx.lexicon.caches.word_formation
+    if formation is None:
+        return False  # the tagger reads a comparison word by these rules, so none was read
     line_start = material.span.start - material.span.col + 1  # `text` is the whole line
     after = material.text[end - line_start :].split(None, 1)
-    if not after:
-        return False
-    from ..tagger import Tagger  # the tagger's rules, kept with the lexicon
-
-    return after[0].lower() in Tagger.of(ctx.lexicon).formation().rules.comparison
+    return bool(after) and after[0].lower() in formation.rules.comparison
 
 
 def _as_group(target: ast.Word | ast.Colour) -> ast.Group:
