@@ -38,7 +38,6 @@ import contextlib
 import errno
 import os
 import stat
-import tempfile
 from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path, PurePosixPath
 from typing import BinaryIO, Protocol
@@ -256,18 +255,29 @@ class Staging:
         try:
             _make_parents(real.parent, self.made)
             self._lock(real.parent)
-            suffix = real.suffix if 0 < len(real.suffix) <= MAX_TEMP_SUFFIX else ".tmp"
-            fd, tmp = tempfile.mkstemp(prefix=temp_prefix(real.name), suffix=suffix, dir=real.parent)
-            os.close(fd)
+            temp = self._new_temp(real, Path(path))
         except OSError as exc:
             raise os_error(path, exc) from None
-        temp = Path(tmp)
-        self.staged.append((temp, real, Path(path)))  # before the write: a failed one is removed too
         try:
             write(temp)
             os.chmod(temp, usual_mode())  # mkstemp makes 0600
         except OSError as exc:
             raise os_error(path, exc) from None
+
+    def _new_temp(self, real: Path, shown: Path) -> Path:
+        """An empty temp beside `real`, staged BEFORE it exists: a signal at any moment leaves no
+        temp the clean-up does not know (with mkstemp, one between the file's creation and its
+        recording was left behind). The name carries this process's id and 64 random bits, so a
+        name staged but not yet created is no other file's."""
+        suffix = real.suffix if 0 < len(real.suffix) <= MAX_TEMP_SUFFIX else ".tmp"
+        while True:
+            temp = real.parent / f"{temp_prefix(real.name)}{os.urandom(8).hex()}{suffix}"
+            self.staged.append((temp, real, shown))  # before the write: a failed one is removed too
+            try:
+                os.close(os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600))
+                return temp
+            except FileExistsError:
+                self.staged.pop()  # not ours: another name
 
     def own(self, folder: Path, names: Iterable[str]) -> None:
         """The result owns `folder`: `names` are its files there now (already added). The commit

@@ -23,9 +23,11 @@ from tests.helpers import run_cnlmc
 pytestmark = pytest.mark.oiio
 pytest.importorskip("OpenImageIO")
 
-#: many materials with maps: a bake that runs long enough (tens of seconds) to be interrupted
-#: between two of them; the tests stop it as soon as its first maps are staged
-SLOW = "heavily rusted iron\n" * 100
+#: many materials with maps: a bake that runs long enough (a minute and more) to be interrupted
+#: between two of them, even when this test's process gets the CPU late; the tests stop it as soon
+#: as its first maps are staged (100 lines took ~3 s on a fast machine: a starved test signalled a
+#: bake that had already finished)
+SLOW = "heavily rusted iron\n" * 1000
 KEEP = b"a file that was there before"
 
 
@@ -218,3 +220,24 @@ def test_a_signal_right_after_a_rename_is_rolled_back(tmp_path: Path, monkeypatc
         output.write_files(files)
     monkeypatch.setattr(os, "replace", real_replace)
     assert entries(tmp_path) == {"a.glsl": b"old a.glsl", "b.frag": b"old b.frag"}
+
+
+def test_a_signal_right_after_a_temp_is_created_leaves_no_temp(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The temp is staged before it exists: a signal the moment the file appears (before `add`
+    returns) is cleaned up like any other (with mkstemp, that moment's temp was left behind)."""
+    real_close = os.close
+
+    def close_then_signal(fd: int) -> None:
+        real_close(fd)
+        if any(TEMP_MARK in p.name for p in tmp_path.iterdir()):
+            os.kill(os.getpid(), signal.SIGTERM)  # raises Interrupted at the next bytecode
+
+    with pytest.raises(SystemExit) as raised, output.Staging() as staging:
+        monkeypatch.setattr(os, "close", close_then_signal)
+        staging.add(tmp_path / "a.json", lambda temp: temp.write_text("never"))
+    monkeypatch.undo()
+    assert raised.value.code == 128 + signal.SIGTERM
+    assert "nothing was written" in capsys.readouterr().err
+    assert entries(tmp_path) == {}
