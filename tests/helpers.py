@@ -6,6 +6,7 @@ tables live here, imported as ``from tests.helpers import run_cnlmc``.
 
 from __future__ import annotations
 
+import importlib
 import importlib.util
 import subprocess
 import sys
@@ -122,3 +123,14 @@ def load_module(name: str, path: Path) -> ModuleType:
     sys.modules[name] = module
     spec.loader.exec_module(module)
     return module
+
+
+def bench_modules(*names: str) -> tuple[ModuleType, ...]:
+    """Modules of bench/ imported by name (bench/ on the path while they load, so they find each
+    other as they do when run as scripts)."""
+    folder = str(Path(__file__).resolve().parents[1] / "bench")
+    sys.path.insert(0, folder)
+    try:
+        return tuple(importlib.import_module(name) for name in names)
+    finally:
+        sys.path.remove(folder)

@@ -1,11 +1,12 @@
 """The Löw 2012 Cook–Torrance of the MERL fits (bench/merl_model.py): finite, reciprocal, and the
 value bbm's definition gives at normal incidence."""
 
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+
+from tests.helpers import bench_modules
 
 ROOT = Path(__file__).resolve().parents[2]
 FITS = ROOT.parent / "shared" / "data" / "merl_fits" / "low_cooktorrance_E2.fit"
@@ -13,11 +14,7 @@ FITS = ROOT.parent / "shared" / "data" / "merl_fits" / "low_cooktorrance_E2.fit"
 
 @pytest.fixture(scope="module")
 def merl_model():
-    sys.path.insert(0, str(ROOT / "bench"))
-    try:
-        import merl_model as module
-    finally:
-        sys.path.remove(str(ROOT / "bench"))
+    (module,) = bench_modules("merl_model")
     return module
 
 

@@ -4,7 +4,6 @@ compiled material it touches, and that measured colours of real materials lie in
 
 import json
 import math
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -12,19 +11,15 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from tests.helpers import bench_modules
+
 ROOT = Path(__file__).resolve().parents[2]
 MEASURED = ROOT.parent / "shared" / "data" / "physicallybased_materials.json"
 
 
 @pytest.fixture(scope="module")
 def bench():
-    sys.path.insert(0, str(ROOT / "bench"))
-    try:
-        import calibration
-        import surface_gamut
-    finally:
-        sys.path.remove(str(ROOT / "bench"))
-    return surface_gamut, calibration
+    return bench_modules("surface_gamut", "calibration")
 
 
 @pytest.fixture(scope="module")

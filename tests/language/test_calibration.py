@@ -5,10 +5,11 @@ copy, so these tests skip there."""
 
 import contextlib
 import io
-import sys
 from pathlib import Path
 
 import pytest
+
+from tests.helpers import bench_modules
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT.parent / "shared" / "data"
@@ -18,11 +19,7 @@ pytestmark = pytest.mark.skipif(not (DATA / "merl_fits").is_dir(), reason="../sh
 
 @pytest.fixture(scope="module")
 def calibration():
-    sys.path.insert(0, str(ROOT / "bench"))
-    try:
-        import calibration as bench
-    finally:
-        sys.path.remove(str(ROOT / "bench"))
+    (bench,) = bench_modules("calibration")
     with contextlib.redirect_stdout(io.StringIO()):
         return {"merl": bench.merl(DATA, False), "physicallybased": bench.physicallybased(DATA, False)}
 
