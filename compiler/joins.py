@@ -13,7 +13,7 @@ runs on every line; only lines it accepts are looked at further.
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from .diagnostics import Diagnostic, Severity
 from .spans import Span
@@ -125,6 +125,8 @@ class Joiner:
             self._coat_on_substrate(out, diags)  # "a coat of satin varnish"
         elif self._coat_alone(out) is not None:
             self._coat_on_substrate(out, diags)
+        elif (finish := self._finish_alone(out)) is not None:
+            self._finish_on_substrate(out, finish, diags)  # "blue glaze", "red enamel"
         _feature_colour_list(out, diags)
         if len(out) > 1:
             _feature_first(out, diags, self.lexicon, self.spoken().with_word)
@@ -352,6 +354,61 @@ class Joiner:
         )
         diags.append(Diagnostic(words[0].span.to(coat.span), Severity.NOTE, NOTE_CODE, note))
 
+    def _finish_alone(self, out: list[Tagged]) -> tuple[str, str] | None:
+        """The adjective and substrate of a finish substance named as the whole material ('blue glaze',
+        'red enamel', 'Glasur'): the last word is a describing word whose entry declares the words
+        naming its substance and the noun it is usually on (adjectives `substances`, `substrate`), or
+        a feature drawn by such an adjective; only describing words before it."""
+        if not out or out[-1].unknown or of_tag(out[-1], "NOUN") or of_tag(out[-1], "COAT"):
+            return None
+        start = next((k + 1 for k, t in enumerate(out) if of_tag(t, "COLON")), 0)
+        if not all(_describes_a_finish(t) for t in out[start:-1]):
+            return None
+        return self._substance(out[-1])
+
+    def _substance(self, word: Tagged) -> tuple[str, str] | None:
+        """(adjective, substrate) when `word` names a finish substance, else None."""
+        text = word.text.lower().split("-")[0]  # 'glaze-finished': the word formation's 'glaze'
+        keys = [c.key for c in of_tag(word, "ADJ") if text in self._adjective_field(c.key, "substances")]
+        for c in of_tag(word, "FEATURE"):  # 'glaze', 'Glasur', 'Beize': the feature names the substance
+            feature = self.lexicon.entry("features", c.key)
+            if feature is not None and feature.get("adjective"):
+                keys.append(str(feature.get("adjective")))
+        for key in keys:
+            substrate = self._adjective_field(key, "substrate")
+            if substrate:
+                return key, str(substrate)
+        return None
+
+    def _adjective_field(self, key: str, field: str) -> Any:
+        entry = self.lexicon.entry("adjectives", key)
+        return () if entry is None or entry.get(field) is None else entry.get(field)
+
+    def _finish_on_substrate(self, out: list[Tagged], finish: tuple[str, str], diags: list[Diagnostic]) -> None:
+        """'blue glaze' = 'blue glazed ceramic': the finish word is its adjective, on the noun it is
+        usually on (after it, with the span of the word implying it); a note says so."""
+        adjective, substrate = finish
+        start = next((k + 1 for k, t in enumerate(out) if of_tag(t, "COLON")), 0)
+        last = out[-1]
+        s = last.span
+        at = min(s.start + 2, s.end)  # inside the word, where no word starts (the parser keys words by start)
+        noun = Tagged(
+            substrate,
+            Span(at, s.end, s.line, s.col + at - s.start),
+            (Candidate("NOUN", substrate, "nouns"),),
+            implied_by=s,
+        )
+        said = "".join(t.text if of_tag(t, "COMMA") else f" {t.text}" for t in out[start:]).strip()
+        spoken = self.spoken()
+        on = spoken.word("nouns", substrate)
+        reading = f"{said.removesuffix(last.text)}{spoken.word('adjectives', adjective)} {on}"
+        note = (
+            f"read '{said}' as '{reading}' (a finish named alone: on {on}, what it is usually on; "
+            "name the material to choose another)"
+        )
+        diags.append(Diagnostic(out[start].span.to(s), Severity.NOTE, NOTE_CODE, note))
+        out[-1:] = [Tagged(last.text, s, (Candidate("ADJ", adjective, "adjectives"),)), noun]
+
     def _past_target(self, out: list[Tagged], comparative: int) -> int:
         """Where the words after a comparative start, past its target when it takes one ('more
         yellow than satin varnish': 'yellow'; 'lighter' names its own)."""
@@ -519,6 +576,15 @@ def _comparative_at(out: list[Tagged]) -> int | None:
         if not all(c.tag in _BEFORE_A_COMPARATIVE for c in word.candidates):
             return None
     return None
+
+
+def _describes_a_finish(word: Tagged) -> bool:
+    """Whether a word before a finish substance named alone describes it: every reading a describing
+    word, or one among them ('cream enamel', 'satin glaze': 'cream' and 'satin' are also nouns)."""
+    if word.unknown:
+        return False
+    tags = [c.tag for c in word.candidates]
+    return any(tag in DESCRIBING for tag in tags) or all(tag in _BEFORE_A_COAT for tag in tags)
 
 
 def _describes_a_coat(rest: list[Tagged]) -> bool:
@@ -728,6 +794,8 @@ def may_join(tagged: list[Tagged]) -> bool:
         return True  # "satin varnish": a coat named as the whole material
     if unknown_seen:
         return True  # "bike paint": an unknown word may say where the material is used
+    if not noun_seen and not with_seen and ("ADJ" in final_tags or "FEATURE" in final_tags):
+        return True  # "blue glaze": perhaps a finish substance named as the whole material
     return plain and noun_seen and "ADJ" in final_tags
 
 
