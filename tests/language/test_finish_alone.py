@@ -110,3 +110,21 @@ def test_degree_look_and_colour_before_a_substance_compile_with_the_note(degree,
     result = compile_source(phrase, "t.cnl", LEX)
     assert result.ok, (phrase, [d.message for d in result.diagnostics])
     assert any("a finish named alone" in n for n in notes(result)), phrase
+
+
+def test_the_implied_substrate_is_marked_implied_in_the_tokens():
+    done = run_cnlmc("compile", "--emit", "tokens", "-", stdin="cobalt blue glaze\n")
+    assert done.returncode == 0, done.stderr
+    rows = [line.split("\t") for line in done.stdout.splitlines()]
+    assert ["1:13", "ADJ", "glaze"] in rows
+    assert ["1:13", "NOUN", "ceramic", "(implied)"] in rows
+
+
+@pytest.mark.parametrize(
+    ("phrase", "rule"),
+    [("satin varnish", "a coat named alone"), ("glossy white enamel coat", "a coat named alone")],
+)
+def test_a_coat_named_alone_keeps_its_own_rule(phrase, rule):
+    result, _ = look(LEX, phrase)
+    assert any(rule in n for n in notes(result))
+    assert not any("a finish named alone" in n for n in notes(result))
