@@ -17,6 +17,8 @@ from __future__ import annotations
 import signal
 import sys
 import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
 from types import FrameType, TracebackType
 from typing import Any
 
@@ -83,3 +85,19 @@ class SignalGuard:
                 "(temporary files removed, replaced files put back)",
                 file=sys.stderr,
             )
+
+
+@contextmanager
+def signals_deferred() -> Iterator[None]:
+    """SIGTERM, SIGHUP and SIGINT held back while a C library writes one file (an image encoder
+    interrupted between its calls leaves a half-open file that complains on stderr when it is
+    finalised: 'libpng error: No IDATs written'); a signal that arrives meanwhile is delivered, and
+    a guard's clean-up runs, as soon as the block ends. Main thread only (elsewhere a no-op)."""
+    if threading.current_thread() is not threading.main_thread() or not hasattr(signal, "pthread_sigmask"):
+        yield
+        return
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, SIGNALS)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)

@@ -13,7 +13,7 @@ from cnlmc.scratch import scratch_folder
 
 from ..base import Artifact, Options
 from ..exchange.textures import bake_textures
-from ..maps.writer import write_maps
+from ..maps.writer import image_library, write_maps
 from .plan import LUT_SAMPLER, SHADER_ROLES, has_body
 
 
@@ -35,6 +35,7 @@ def body_table_image(material: Material, options: Options, main: str) -> tuple[d
 
     role = LUT_SAMPLER[1]
     folder = texture_folder(options.output, main)
+    image_library()  # before the signal guard (maps.writer.image_library)
     with SignalGuard(), scratch_folder("maps") as tmp:
         [path] = write_maps({role: lut_image()}, tmp, "png16", stem=material.name)
         name = f"{folder}/{path.name}"

@@ -18,6 +18,7 @@ from .errors import MapError
 from .service import MapBakeError, bake_files, has_maps
 from .sheet import render_contact_sheet
 from .target import TARGET
+from .writer import image_library
 
 
 class ProgressBar:
@@ -59,6 +60,10 @@ class BakeCommand(Command):
         if not result.ok:
             return EXIT_ERRORS
         progress, paths = ProgressBar(), []
+        try:
+            image_library()  # loaded before the staging's signal guard (writer.image_library)
+        except ImportError as exc:
+            raise UsageError(f"bake cannot write images: {exc}; install it with: pip install 'cnlmc[maps]'") from None
         # every material's maps, or none of them; the folder locked against a concurrent writer
         with Staging(protect=[args.file], root=args.output) as staging:
             staging.claim(args.output)

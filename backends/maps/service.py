@@ -29,7 +29,7 @@ from cnlmc.scratch import scratch_folder
 from ..base import Artifact
 from .bake import OnProgress, bake
 from .errors import MapError
-from .writer import write_maps
+from .writer import image_library, write_maps
 
 Arrays = dict[str, np.ndarray]
 Derive = Callable[[Arrays], Arrays]
@@ -120,6 +120,7 @@ def bake_images(
     scratch folder that a signal (SIGTERM, SIGHUP, SIGINT) removes too."""
     prefix = f"{folder}/" if folder else ""
     name, arrays = _derived(material, size, seed, roles, derive)
+    image_library()  # before the signal guard (writer.image_library)
     with SignalGuard(), scratch_folder("maps") as tmp:
         try:
             paths = write_maps(arrays, tmp, fmt, stem=stem or name)

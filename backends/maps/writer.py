@@ -11,10 +11,12 @@ from __future__ import annotations
 import contextlib
 import functools
 from pathlib import Path
+from types import ModuleType
 
 import numpy as np
 
 from cnlmc.filenames import fit_name
+from cnlmc.interrupts import signals_deferred
 from cnlmc.output import Staging
 
 from .colour import linear_to_srgb
@@ -38,8 +40,18 @@ def encode(role: str, array: np.ndarray, extension: str) -> tuple[np.ndarray, st
     return (array * 0.5 + 0.5 if role == "normal" else array), data_space
 
 
-def write_image(path: Path, pixels: np.ndarray, pixel_type: str, colour_space: str) -> None:
+def image_library() -> ModuleType:
+    """OpenImageIO (the 'maps' extra), imported on first need. A writer that stages images inside a
+    signal guard (cnlmc.interrupts) loads it BEFORE entering the guard: a SIGTERM during the first
+    import of this nanobind extension aborted the process (SIGABRT, temps left) instead of cleaning
+    up (tests/language/test_signals, a fresh clone without bytecode)."""
     import OpenImageIO as oiio
+
+    return oiio
+
+
+def write_image(path: Path, pixels: np.ndarray, pixel_type: str, colour_space: str) -> None:
+    oiio = image_library()
 
     pixels = pixels[..., None] if pixels.ndim == 2 else pixels  # OIIO misreads 2-D arrays
     height, width, channels = pixels.shape
@@ -47,13 +59,14 @@ def write_image(path: Path, pixels: np.ndarray, pixel_type: str, colour_space: s
     spec.attribute("oiio:ColorSpace", colour_space)
     if path.suffix == ".exr":
         spec.attribute("compression", "zip")
-    output = oiio.ImageOutput.create(str(path))
-    if output is None or not output.open(str(path), spec):
-        raise MapError(f"cannot write {path}: {oiio.geterror()}")
-    ok = output.write_image(np.ascontiguousarray(pixels, np.float32))
-    error = output.geterror()  # PNG: a failed write (a full disk) is reported here, not by ok (#13)
-    closed = output.close()
-    error = error or output.geterror()
+    with signals_deferred():  # one image is written whole or not at all (cnlmc.interrupts)
+        output = oiio.ImageOutput.create(str(path))
+        if output is None or not output.open(str(path), spec):
+            raise MapError(f"cannot write {path}: {oiio.geterror()}")
+        ok = output.write_image(np.ascontiguousarray(pixels, np.float32))
+        error = output.geterror()  # PNG: a failed write (a full disk) is reported here, not by ok (#13)
+        closed = output.close()
+        error = error or output.geterror()
     if not ok or not closed or error:
         raise MapError(f"cannot write {path}: {error.strip() or 'the image writer failed'}")
 
@@ -76,6 +89,7 @@ def write_maps(
     extension, pixel_type = FORMATS[fmt]
     out_dir = Path(out_dir)
     paths = []
+    image_library()  # before the staging's signal guard (see image_library)
     with contextlib.nullcontext(staging) if staging is not None else Staging(root=out_dir) as files:
         for role, array in arrays.items():
             pixels, colour_space = encode(role, np.asarray(array, np.float32), extension)

@@ -241,3 +241,25 @@ def test_a_signal_right_after_a_temp_is_created_leaves_no_temp(
     assert raised.value.code == 128 + signal.SIGTERM
     assert "nothing was written" in capsys.readouterr().err
     assert entries(tmp_path) == {}
+
+
+def test_the_image_library_is_loaded_before_any_signal_guard(tmp_path: Path) -> None:
+    """A SIGTERM during the first import of OpenImageIO (a nanobind extension) aborted the process
+    (SIGABRT, temps left: a fresh clone's CI); bake loads it before its staging guards signals."""
+    source = tmp_path / "one.cnl"
+    source.write_text("hammered copper\n")
+    code = (
+        "import sys; from cnlmc import interrupts; from cnlmc.cli import main\n"
+        "seen = []\n"
+        "enter = interrupts.SignalGuard.__enter__\n"
+        "def recording(self):\n"
+        "    seen.append('OpenImageIO' in sys.modules)\n"
+        "    return enter(self)\n"
+        "interrupts.SignalGuard.__enter__ = recording\n"
+        f"code = main(['bake', {str(source)!r}, '-o', {str(tmp_path / 'maps')!r}, '--size', '16'])\n"
+        "print(code, seen)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert done.stdout.split(" ", 1)[0] == "0", done.stderr
+    seen = done.stdout.split(" ", 1)[1].strip()
+    assert seen.startswith("[True") and "False" not in seen, (seen, done.stderr)
