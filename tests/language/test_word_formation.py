@@ -108,7 +108,7 @@ def test_un_before_an_unknown_word_stays_unknown(lexicon):
         ("coppery plastic", "copper plastic", "'copper'"),
         ("roughish slate", "slightly rough slate", "'slightly rough'"),
         ("matte-ish rubber", "slightly matte rubber", "'slightly matte'"),
-        ("waxy pine", "waxed pine", "'wax'"),
+        ("oily pine", "oiled pine", "'oil'"),
         ("glossy-white ceramic", "glossy white ceramic", "'glossy white'"),
         ("brushed-steel", "brushed steel", "'brushed steel'"),
         ("hand-polished brass", "polished brass", "'polished'"),

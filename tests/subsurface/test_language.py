@@ -30,10 +30,22 @@ VOLUME = [
     "cream",
     "translucent white plastic",
     "milky plastic",
+    "waxy white plastic",
+    "wax-like soap",
     "backlit marble",
 ]
 THIN = ["leaf", "backlit leaf", "thin paper", "thin white paper", "backlit paper"]
-NONE = ["oak", "white plastic", "copper", "clear glass", "honey", "gold leaf", "cream leather", "chrome with scratches"]
+NONE = [
+    "oak",
+    "white plastic",
+    "copper",
+    "clear glass",
+    "honey",
+    "gold leaf",
+    "cream leather",
+    "chrome with scratches",
+    "waxed oak",
+]
 
 
 def material(phrase: str) -> dict:
