@@ -45,6 +45,14 @@ def wait_for_count(page: Any, name: str, above: int, seconds: float = DRAW_SECON
         time.sleep(0.05)
 
 
+def wait_for_texts(locator: Any, expected: list[str], seconds: float) -> None:
+    """Until the elements' texts are `expected` (the page shows the analysis of the last edit)."""
+    deadline = time.monotonic() + seconds
+    while (texts := locator.all_inner_texts()) != expected:
+        assert time.monotonic() < deadline, f"the page shows {texts}, not {expected}"
+        time.sleep(0.05)
+
+
 def canvas_pixels(page: Any) -> np.ndarray:
     """The canvas as the page shows it, as sRGB floats 0..1 (height, width, 3)."""
     from PIL import Image
@@ -179,9 +187,9 @@ def test_a_misspelling_is_squiggled_at_its_columns_and_the_fix_repairs_it(page: 
     analyses = count(page, "analyses")
     set_text(page, "glossy bleu plastic")
     wait_for_count(page, "analyses", analyses, 30)
-    page.wait_for_selector(".cm-lintRange-error", timeout=30_000)
     squiggles = page.locator(".cm-lintRange-error")
-    assert squiggles.all_inner_texts() == ["bleu"]
+    # the analysis of a half-typed line ('glos') may be shown first: wait for the whole line's
+    wait_for_texts(squiggles, ["bleu"], 30)
     squiggles.first.hover()
     fix = page.locator(".cm-diagnosticAction", has_text="Replace 'bleu' with 'blue'")
     fix.wait_for(timeout=30_000)
