@@ -12,6 +12,7 @@ from functools import cache
 from types import MappingProxyType
 from typing import Any
 
+from .material import freeze_json
 from .package_data import package_folder
 
 
@@ -27,17 +28,8 @@ def graph_names() -> frozenset[str]:
 @cache
 def _graph_table(name: str) -> Mapping[str, Any]:
     """A graph's table, read-only all the way down (it is shared by every caller in the process)."""
-    frozen: Mapping[str, Any] = _read_only(_graph_tables().get(name, {}))
+    frozen: Mapping[str, Any] = freeze_json(_graph_tables().get(name, {}))
     return frozen
-
-
-def _read_only(value: Any) -> Any:
-    """`value` with its tables as read-only mappings and its arrays as tuples, at every depth."""
-    if isinstance(value, dict):
-        return MappingProxyType({key: _read_only(item) for key, item in value.items()})
-    if isinstance(value, list):
-        return tuple(_read_only(item) for item in value)
-    return value
 
 
 @cache

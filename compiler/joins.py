@@ -244,10 +244,12 @@ class Joiner:
     def _near_describing(self, word: str, suggestions: tuple[str, ...]) -> tuple[str, ...]:
         """The suggestions one edit from `word` that are describing words ('bike': the colour 'bice'):
         a real noun is read as a noun, but the note still offers them."""
+        from rapidfuzz.distance import OSA  # loaded already: the suggestions came from it (cnlmc.suggest)
+
         return tuple(
             s
             for s in suggestions
-            if _one_edit(word, s) and any(e.tag in DESCRIBING for e in self.lexicon.lookup(tuple(s.split())))
+            if OSA.distance(word, s) == 1 and any(e.tag in DESCRIBING for e in self.lexicon.lookup(tuple(s.split())))
         )
 
     def _artifact(self, before: Tagged, word: Tagged, diags: list[Diagnostic]) -> Tagged:
@@ -415,7 +417,7 @@ class Joiner:
         entries = [self.lexicon.entry("refinements", c.key) for c in of_tag(out[comparative], "REFINE")]
         takes_one = any(e is not None and e.get("target") == "any" for e in entries)
         after = comparative + 1
-        if takes_one and after < len(out) - 1 and any(c.tag in _COMPARED for c in out[after].candidates):
+        if takes_one and after < len(out) - 1 and any(c.tag in COMPARED for c in out[after].candidates):
             return after + 1
         return after
 
@@ -561,8 +563,8 @@ _AND = (Candidate("AND", "and", "keyword"),)
 #: The readings of the words that may come before a coat named as the whole material ('a glossy, red powder coat').
 _BEFORE_A_COAT = frozenset(("ADV", "ADJ", "COLOR", "SHADE", "ARTICLE", "COMMA", "AND", "OR", "NAME", "COLON", "PROP"))
 
-#: The readings of a comparative's target the tagger keeps before 'than' (tagger._COMPARED).
-_COMPARED = frozenset(("COLOR", "ADJ", "PROP"))
+#: The readings of a comparative's target the tagger keeps before 'than' (also read by the tagger).
+COMPARED = frozenset(("COLOR", "ADJ", "PROP"))
 #: The readings of the words a comparative at the start of a line may follow ('m1: a bit lighter').
 _BEFORE_A_COMPARATIVE = frozenset(("NAME", "COLON", "ADV", "ARTICLE"))
 
@@ -599,19 +601,6 @@ DESCRIBING = frozenset(("ADV", "ADJ", "COLOR", "SHADE"))
 
 #: The readings of the word after a noun that says where the material is used ('guitar varnish').
 _USED_ON = frozenset(("NOUN", "COAT", "OBJECT"))
-
-
-def _one_edit(a: str, b: str) -> bool:
-    """Whether b is a (one letter inserted, deleted, replaced or two swapped) from a."""
-    if a == b or abs(len(a) - len(b)) > 1:
-        return False
-    if len(a) == len(b):
-        diff = [k for k in range(len(a)) if a[k] != b[k]]
-        return len(diff) == 1 or (
-            len(diff) == 2 and diff[1] == diff[0] + 1 and a[diff[0]] == b[diff[1]] and a[diff[1]] == b[diff[0]]
-        )
-    short, long_ = (a, b) if len(a) < len(b) else (b, a)
-    return any(long_[:k] + long_[k + 1 :] == short for k in range(len(long_)))
 
 
 #: The generic coat entry: 'a coat of varnish' names the layer of the coat after 'of'.

@@ -118,20 +118,20 @@ def _object(value: object, path: str) -> Mapping[str, Any]:
 _LEAVES = (str, float, int, bool, type(None))
 
 
-def _freeze(value: JSON) -> JSON:
+def freeze_json(value: JSON) -> JSON:
     """JSON -> read-only: objects become mapping proxies, arrays tuples (exact type tests first)."""
     kind = type(value)
     if kind in _LEAVES:
         return value
     if kind is dict or isinstance(value, Mapping):
-        return MappingProxyType({k: _freeze(v) for k, v in value.items()})
+        return MappingProxyType({k: freeze_json(v) for k, v in value.items()})
     if kind is list or kind is tuple:
-        return tuple([_freeze(v) for v in value])
+        return tuple([freeze_json(v) for v in value])
     return value
 
 
 def _thaw(value: JSON) -> JSON:
-    """The inverse of _freeze (or a copy of plain JSON): fresh dicts and lists the caller may change."""
+    """The inverse of freeze_json (or a copy of plain JSON): fresh dicts and lists the caller may change."""
     kind = type(value)
     if kind in _LEAVES:
         return value
@@ -356,7 +356,7 @@ class Provenance(Mapping[str, tuple[Step, ...]]):
 
     def _view(self) -> Mapping[str, tuple[Step, ...]]:
         if self._frozen is None:
-            self._frozen = _freeze(self._json)
+            self._frozen = freeze_json(self._json)
         return self._frozen
 
     def __getitem__(self, param: str) -> tuple[Step, ...]:
@@ -470,7 +470,7 @@ class Document:
             lexicon=tuple(lexicon),
             colour_space=_choice(d["colour_space"], (COLOUR_SPACE,), "colour_space"),
             materials=tuple(Material.from_ir(m, f"materials[{i}]") for i, m in enumerate(materials)),
-            diagnostics=tuple(_freeze(x) for x in diagnostics),
+            diagnostics=tuple(freeze_json(x) for x in diagnostics),
         )
 
     def to_ir(self) -> dict[str, JSON]:

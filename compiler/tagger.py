@@ -18,7 +18,7 @@ from collections import OrderedDict
 from typing import TYPE_CHECKING
 
 from .diagnostics import Diagnostic, Severity, did_you_mean, error
-from .joins import Joiner, may_join, others_of
+from .joins import COMPARED, Joiner, may_join, others_of
 from .lexicon import Lexicon
 from .spans import Span, line_span
 from .tagged import NOTE_CODE, Candidate, Tagged
@@ -274,7 +274,7 @@ class Tagger:
         return (
             len(tagged) > 1
             and any(c.tag == "REFINE" for c in tagged[-2].candidates)
-            and any(c.tag in _COMPARED for c in tagged[-1].candidates)
+            and any(c.tag in COMPARED for c in tagged[-1].candidates)
         )
 
     def _than(
@@ -286,7 +286,7 @@ class Tagger:
         comparative reading ('dunkler als Eiche': not the declined colour 'dunkler'). Returns the
         words taken."""
         at = len(tagged) - 1 if any(c.tag == "REFINE" for c in tagged[-1].candidates) else len(tagged) - 2
-        for k, tags in ((at, ("REFINE",)), (at + 1, _COMPARED)):  # the comparative, then its target if any
+        for k, tags in ((at, ("REFINE",)), (at + 1, COMPARED)):  # the comparative, then its target if any
             if k < len(tagged):
                 word = tagged[k]
                 kept = tuple(c for c in word.candidates if c.tag in tags)
@@ -406,7 +406,6 @@ class Tagger:
 
 
 #: The readings of a comparative's target before 'than' ('less glossy than glass', 'more grain than pine').
-_COMPARED = frozenset(("COLOR", "ADJ", "PROP"))
 
 #: The readings of a word that may name the material after a comparison word ('lighter than oak').
 _MATERIAL_WORDS = frozenset(("NOUN", "OBJECT", "COAT"))
