@@ -304,10 +304,10 @@ def lambert_share(material: Material) -> tuple[float, list[float]] | None:
     interface = roughplastic_interface(material)
     if interface is None:
         return None
-    needed = diffuse_colour(material, roughplastic_diffuse_energy(*interface))
+    per_unit = roughplastic_diffuse_energy(*interface)
+    needed = diffuse_colour(material, per_unit)
     if max(needed) <= 1.0:
         return None
-    per_unit = roughplastic_diffuse_energy(*interface)
     total = hemispherical_albedo(material, full=True)
     specular = hemispherical_albedo(with_base_color(without_extras(material), 0.0))
     plastic = [min(s + per_unit * min(n, 1.0), 1.0) for s, n in zip(specular, needed)]

@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 
+from cnlmc.colour import luminance
 from cnlmc.material import Coat, Material, Params
 
 from .conversions import (
@@ -168,8 +169,7 @@ def oren_nayar_base_weight(material: Material) -> float:
     roughness = min(max(float(params.diffuse_roughness), 0.0), 1.0)
     ir = hemispherical_albedo(without_extras(material))
     target = [openpbr_oren_nayar_albedo(c, roughness) for c in clip01(params.base_color)]
-    luma = (0.2126, 0.7152, 0.0722)
-    ratio = sum(w * v for w, v in zip(luma, ir)) / max(sum(w * v for w, v in zip(luma, target)), 1e-9)
+    ratio = luminance(ir) / max(luminance(target), 1e-9)
     return min(max(ratio, 0.0), 1.0)
 
 

@@ -21,6 +21,7 @@ from ..registry import TargetUnavailable
 from .emit import emit_material
 from .maps import bake_sampled_maps
 from .options import OPTIONS, glsl_options
+from .plan import has_body
 from .render import ShaderWriter
 
 _BAKED = (
@@ -75,7 +76,9 @@ CAPABILITIES: dict[str, tuple[str, str]] = {
 def boundary_of(material: Material) -> Material:
     """What cnlm_bsdf draws: a translucent body's boundary (a volume: its specular lobe, base colour
     black; a thin sheet: its front), as the preview draws it; cnlm_subsurface adds the body's light.
-    Any other material as it is."""
+    Any other material as it is (without loading the preview package)."""
+    if not has_body(material):
+        return material
     from ..preview.subsurface import boundary_material
 
     return boundary_material(material)
