@@ -80,11 +80,31 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
     try:
         shape, picks = parse_line_shape(words, tagger.lexicon.caches.shapes)
     except ParseFailure as failure:
-        from .teach import teach_syntax_error
-
-        diags.append(teach_syntax_error(_syntax_error(failure, words, tagger.lexicon), words, tagger.lexicon))
-        return None
+        return _failed_line(failure, words, text, tagger.lexicon, diags)
     return shape.build(words, picks, text)
+
+
+def _failed_line(
+    failure: ParseFailure, words: list[Tagged], text: str, lexicon: Lexicon, diags: list[Diagnostic]
+) -> ast.Item | None:
+    """The taught error of a line that does not parse, or the line read with its implied material
+    when it only describes one ('matte black': cnlmc.implied)."""
+    from .implied import implied_material
+    from .teach import teach_syntax_error
+
+    taught = teach_syntax_error(_syntax_error(failure, words, lexicon), words, lexicon)
+    implied = implied_material(taught, words, lexicon)
+    if implied is not None:
+        with_noun, note = implied
+        try:
+            shape, picks = parse_line_shape(with_noun, lexicon.caches.shapes)
+        except ParseFailure:
+            pass
+        else:
+            diags.append(note)
+            return shape.build(with_noun, picks, text)
+    diags.append(taught)
+    return None
 
 
 def _syntax_error(failure: ParseFailure, words: list[Tagged], lexicon: Lexicon) -> Diagnostic:

@@ -156,10 +156,15 @@ def _no_noun(diag: Diagnostic, words: Sequence[Tagged], main: list[Tagged], lexi
 
 def _misspelt_nouns(word: str, lexicon: Lexicon, colour: bool) -> list[str]:
     """The nouns a colour alone may be a typo of ('terracota' -> 'terracotta'); not a longer noun
-    that starts with the very word ('black' is not a typo of 'black ash')."""
+    that starts with the very word ('black' is not a typo of 'black ash', nor 'dark brown' of 'dark brown skin')."""
     if not colour:
         return []
-    return [n for n in lexicon.suggest(word, ("nouns",)) if n.lower().split()[0] != word.lower()]
+    said = word.lower()
+    return [
+        n
+        for n in lexicon.suggest(word, ("nouns",))
+        if n.lower().split()[0] != said and not n.lower().startswith(f"{said} ")
+    ]
 
 
 def _everyday_phrases(written: str, main: Sequence[Tagged], lexicon: Lexicon) -> list[str]:

@@ -320,7 +320,7 @@ def test_a_noun_then_an_adjective_alone_still_says_the_order(compile_text):
     (d,) = compile_text("chrome hammered").diagnostics
     assert d.message == "'hammered' comes after the noun: describing words come before it"
     (d,) = compile_text("heavily hammered").diagnostics
-    assert d.code == "E003"
+    assert d.message == "no material named: read 'heavily hammered' as 'heavily hammered copper'"
 
 
 # ---------------------------------------------------------------- describing words after the noun

@@ -25,6 +25,8 @@ PHRASES = [
     "tin hammered",
     "aluminum brushed",
     "gneis",
+    "very",
+    "very, lightly",
 ]
 
 
@@ -97,13 +99,22 @@ def test_the_first_word_of_a_known_form_offers_the_form(stdlib):
         ("khaki", "a colour", "khaki fabric"),  # WordNet: khaki is a kind of fabric
     ],
 )
-def test_a_phrase_without_a_noun_says_the_role_and_offers_a_phrase_that_compiles(compile_text, text, role, phrase):
+def test_a_phrase_without_a_noun_is_read_as_the_first_phrase_offered_with_a_note(compile_text, text, role, phrase):
+    result = compile_text(text)
+    assert result.ok, role
+    (note,) = [d for d in result.diagnostics if d.message.startswith("no material named")]
+    assert note.message == f"no material named: read '{text}' as '{phrase}'"
+    assert note.hints[0].startswith("name the material to choose another: '")
+    assert result.materials[0]["params"] == compile_text(phrase).materials[0]["params"]
+
+
+@pytest.mark.parametrize(("text", "role"), [("very", "an adverb"), ("very, lightly", "an adverb")])
+def test_a_phrase_with_nothing_that_describes_a_surface_still_names_no_material(compile_text, text, role):
     (e,) = errors(compile_text, text)
     assert (e.code, e.message) == ("E003", "this phrase names no material: end it with a noun")
     word = text.split()[-1]
-    assert e.hints[0].startswith(f"'{word}' is {role} here — did you mean '{phrase}'")
-    assert e.suggestions[0] == phrase
-    assert compile_text(phrase).ok
+    assert e.hints[0].startswith(f"'{word}' is {role} here — did you mean '")
+    assert compile_text(e.suggestions[0]).ok
 
 
 def test_a_coat_alone_is_offered_on_a_material(compile_text, stdlib):
@@ -133,10 +144,11 @@ def test_the_learned_hint_stays_when_it_already_shows_the_phrase(compile_text):
 
 
 def test_teaching_errors_through_the_cli():
-    proc = run_cnlmc("compile", "-", stdin="periwinkle\nclear tinn\n")
+    proc = run_cnlmc("compile", "-", stdin="very\nclear tinn\nperiwinkle\n")
     assert proc.returncode != 0
     assert "<stdin>:1:1: error[E003]: this phrase names no material: end it with a noun" in proc.stderr
-    assert "= 'periwinkle' is a colour here — did you mean 'periwinkle paint'" in proc.stderr
+    assert "= 'very' is an adverb here — did you mean 'very glossy plastic'" in proc.stderr
+    assert "<stdin>:3:1: note[N101]: no material named: read 'periwinkle' as 'periwinkle paint'" in proc.stderr
     assert "<stdin>:2:7: error[E001]: unknown word 'tinn'" in proc.stderr
     assert "= did you mean 'tin'?" in proc.stderr
 
@@ -227,13 +239,19 @@ def test_a_refinement_line_typo_gets_its_refinement(compile_text):
     "text,phrase",
     [
         ("gently", "gently brushed brass"),  # an adverb's alias finishes as its entry's example does
-        ("glossy with a wax", "glossy red plastic with a wax"),  # the 'with' clause stays in the offer
+        ("very with a wax", "very glossy plastic with a wax"),  # the 'with' clause stays in the offer
     ],
 )
 def test_the_offer_finishes_the_phrase_as_written(compile_text, text, phrase):
     (e,) = errors(compile_text, text)
     assert e.suggestions[0] == phrase
     assert compile_text(phrase).ok
+
+
+def test_an_implied_material_keeps_the_with_clause(compile_text):
+    result = compile_text("glossy with a wax")
+    assert result.ok
+    assert result.materials[0]["params"] == compile_text("glossy paint with a wax").materials[0]["params"]
 
 
 def test_a_describing_word_after_the_noun_moves_before_it(compile_text):

@@ -1,0 +1,115 @@
+"""A material implied by describing words alone ('matte black', 'slate blue', 'a little rusty').
+
+A line of describing words that names no material is not an error a person made: it describes a
+surface and leaves the material to the compiler. Its material is the first phrase the teaching
+offers for it that only adds a noun after the words as written (cnlmc.teach: a colour's WordNet
+kind, 'khaki' -> khaki fabric; else the everyday nouns every word applies to, paint first; for a
+describing word its own example's noun first, 'very hammered' -> copper); every offer compiles
+without a warning. An offer that puts a noun in place of a known colour ('teak' for 'teal') is not
+taken: the colour is what was said, and the offer stays in the note as another choice. The noun is
+added as an implied word (the span of the word that implies it), and a note says what was read
+and how to choose another material.
+
+A line with a comparison ('lighter than'), a refinement word or an unknown word keeps its error:
+there the missing noun is a mistake, not a choice left to us. Runs only for a line that failed to
+parse (the hot path never reaches it)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+from .colour import linear_to_oklab
+from .diagnostics import Diagnostic, Severity
+from .lexicon import Lexicon
+from .spans import Span
+from .tagged import NOTE_CODE, Candidate, Tagged
+
+__all__ = ["implied_material"]
+
+NOT_DESCRIBING = frozenset({"REFINE", "NAME", "OF", "NOUN", "OBJECT"})  # a line with one of these keeps its error
+
+
+def implied_material(
+    taught: Diagnostic, words: Sequence[Tagged], lexicon: Lexicon
+) -> tuple[list[Tagged], Diagnostic] | None:
+    """The line's words with the implied noun added, and the note saying so; None to keep `taught`."""
+    if taught.code not in ("E002", "E003") or not taught.suggestions or not words:
+        return None
+    if any(w.unknown for w in words):
+        return None
+    main = [w for w in words if w.text[:1].isalpha()]
+    with_at = next((i for i, w in enumerate(main) if any(c.tag == "WITH" for c in w.candidates)), len(main))
+    said, tail = main[:with_at], main[with_at:]  # a 'with' clause may name a colour by a noun ('gold flakes')
+    if not said or any(c.tag in NOT_DESCRIBING for w in said for c in w.candidates):
+        return None
+    chosen = _first_added_noun(taught.suggestions, said, tail, lexicon)
+    if chosen is None:
+        return None
+    offer, key, written = chosen
+    last = said[-1]
+    at = words.index(last) + 1
+    implied = [*words[:at], _implied_noun(key, last), *words[at:]]
+    return implied, _note(said, written, [o for o in taught.suggestions if o != offer])
+
+
+def _first_added_noun(
+    offers: Sequence[str], said: Sequence[Tagged], tail: Sequence[Tagged], lexicon: Lexicon
+) -> tuple[str, str, str] | None:
+    """The noun of the first offer that only adds one (an offer that puts a noun in place of a known
+    colour, 'teak' for 'teal', stays in the note as another choice: the colour is what was said);
+    None when the first offer is a noun one edit from the colour and of its colour ('terracota', a
+    spelling the colour survey kept, is terracotta misspelt: the error offers it)."""
+    if offers and _misspelt_noun_of_that_colour(offers[0], said, lexicon):
+        return None
+    for offer in offers:
+        added = _added_noun(offer, said, tail, lexicon)
+        if added is not None:
+            return (offer, *added)
+    return None
+
+
+SAME_COLOUR = 0.1  # OKLab distance under which a colour and a noun's own colour are the same family
+
+
+def _misspelt_noun_of_that_colour(offer: str, said: Sequence[Tagged], lexicon: Lexicon) -> bool:
+    written = [w.text for w in said]
+    words = offer.split()
+    if len(words) != sum(len(t.split()) for t in written) or offer.lower() == " ".join(written).lower():
+        return False
+    colours = [c for c in said[-1].candidates if c.tag == "COLOR"]
+    nouns = [e for e in lexicon.lookup((words[-1].lower(),)) if e.category == "nouns"]
+    colour = lexicon.entry("colours", colours[0].key) if colours else None
+    own = (nouns[0].get("base_color") or nouns[0].get("f0")) if nouns else None
+    if colour is None or colour.get("rgb") is None or not isinstance(own, list):
+        return False
+    return math.dist(linear_to_oklab(colour.get("rgb")), linear_to_oklab(own)) < SAME_COLOUR
+
+
+def _added_noun(offer: str, said: Sequence[Tagged], tail: Sequence[Tagged], lexicon: Lexicon) -> tuple[str, str] | None:
+    """The noun (key, as written) the offer adds after the words as written (None: it changes them)."""
+    head = " ".join(w.text for w in said) + " "
+    end = "".join(f" {w.text}" for w in tail)
+    if not offer.startswith(head) or not offer.endswith(end):
+        return None
+    added = offer[len(head) : len(offer) - len(end)].strip()
+    nouns = [e for e in lexicon.lookup(tuple(added.lower().split())) if e.category == "nouns"]
+    return (nouns[0].key, added) if nouns and added else None
+
+
+def _implied_noun(noun: str, last: Tagged) -> Tagged:
+    """The noun as a word inside the last written word's span (the parser keys words by start,
+    and no written word starts there), implied by it."""
+    s = last.span
+    at = min(s.start + 1, s.end)
+    return Tagged(
+        noun, Span(at, s.end, s.line, s.col + at - s.start), (Candidate("NOUN", noun, "nouns"),), implied_by=s
+    )
+
+
+def _note(said: Sequence[Tagged], noun: str, others: Sequence[str]) -> Diagnostic:
+    written = " ".join(w.text for w in said)
+    choose = f": {', '.join(repr(o) for o in others[:2])}" if others else ""
+    message = f"no material named: read '{written}' as '{written} {noun}'"
+    hint = f"name the material to choose another{choose}"
+    return Diagnostic(said[0].span.to(said[-1].span), Severity.NOTE, NOTE_CODE, message, (hint,))
