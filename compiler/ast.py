@@ -179,6 +179,7 @@ class Refinement:
     text: str
     coat: Coat | None = None  # a line of 'with' clauses: 'with a glossy varnish' adds a coat
     features: tuple[Feature, ...] = ()  # ... or features: 'with fine scratches'
+    groups: tuple[Group, ...] = ()  # a change of describing words: 'make it blue', 'turn it matte black'
 
     def __init__(
         self,
@@ -188,6 +189,7 @@ class Refinement:
         text: str,
         coat: Coat | None = None,
         features: tuple[Feature, ...] = (),
+        groups: tuple[Group, ...] = (),
     ) -> None:
         fields = self.__dict__
         fields["name"] = name
@@ -196,6 +198,7 @@ class Refinement:
         fields["text"] = text
         fields["coat"] = coat
         fields["features"] = features
+        fields["groups"] = groups
 
 
 Item = Material | Refinement

@@ -88,8 +88,9 @@ def _failed_line(
     failure: ParseFailure, words: list[Tagged], text: str, lexicon: Lexicon, diags: list[Diagnostic]
 ) -> ast.Item | None:
     """The taught error of a line that does not parse, or the line read with its implied material
-    when it only describes one ('matte black': cnlmc.implied)."""
-    from .implied import implied_material
+    when it only describes one ('matte black'), or as a change of the material above when it
+    starts with a change phrase ('make it blue'): cnlmc.implied."""
+    from .implied import as_change, implied_material, starts_with_change
     from .teach import teach_syntax_error
 
     taught = teach_syntax_error(_syntax_error(failure, words, lexicon), words, lexicon)
@@ -101,8 +102,13 @@ def _failed_line(
         except ParseFailure:
             pass
         else:
+            material = shape.build(with_noun, picks, text)
+            if isinstance(material, ast.Material) and starts_with_change(text):
+                change, note = as_change(material, words)
+                diags.append(note)
+                return change
             diags.append(note)
-            return shape.build(with_noun, picks, text)
+            return material
     diags.append(taught)
     return None
 

@@ -19,13 +19,14 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
+from . import ast
 from .colour import linear_to_oklab
 from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
 from .spans import Span
 from .tagged import NOTE_CODE, Candidate, Tagged
 
-__all__ = ["implied_material"]
+__all__ = ["as_change", "implied_material", "starts_with_change"]
 
 NOT_DESCRIBING = frozenset({"REFINE", "NAME", "OF", "NOUN", "OBJECT"})  # a line with one of these keeps its error
 
@@ -113,3 +114,30 @@ def _note(said: Sequence[Tagged], noun: str, others: Sequence[str]) -> Diagnosti
     message = f"no material named: read '{written}' as '{written} {noun}'"
     hint = f"name the material to choose another{choose}"
     return Diagnostic(said[0].span.to(said[-1].span), Severity.NOTE, NOTE_CODE, message, (hint,))
+
+
+def starts_with_change(text: str) -> bool:
+    """Whether the line starts with a change phrase ('make it', 'turn it': teaching.toml
+    [politeness] changes), then a space or a mark."""
+    from .suggest import teaching
+
+    said = " ".join(text.lower().split())
+    return any(
+        said.startswith(phrase) and said[len(phrase) : len(phrase) + 1] in ("", " ", *MARKS)
+        for phrase in teaching()["politeness"]["changes"]
+    )
+
+
+MARKS = (",", "!", ".", ":", ";")
+
+
+def as_change(material: ast.Material, words: Sequence[Tagged]) -> tuple[ast.Refinement, Diagnostic]:
+    """'make it blue': the described words as a change line of the material above (its groups and
+    'with' clauses; the implied noun is dropped), and the note saying so."""
+    said = [w for w in words if w.text[:1].isalpha() and w.implied_by is None]
+    change = ast.Refinement(
+        None, (), material.span, material.text, material.coat, material.features, groups=material.groups
+    )
+    written = " ".join(w.text for w in said)
+    message = f"read '{written}' as a change of the material above: its words apply to it"
+    return change, Diagnostic(said[0].span.to(said[-1].span), Severity.NOTE, NOTE_CODE, message)

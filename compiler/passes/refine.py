@@ -23,7 +23,7 @@ from .refine_effects import brings_treatment, refine_adjective
 from .refine_missing_map import add_missing_map
 from .refine_property import refine_property
 from .refine_target import refine_weight
-from .words import apply_group
+from .words import apply_described, apply_group
 
 __all__ = ["apply_inline_refinements", "apply_refinement", "apply_refinement_line", "refine_property"]
 
@@ -86,6 +86,8 @@ def apply_refinement_line(state: MaterialState, ctx: Context, line: ast.Refineme
     ('with a glossy varnish' below 'walnut' adds the coat; passes/coats.py)."""
     for item in line.items:
         apply_refinement(state, ctx, item)
+    if line.groups:  # 'make it blue': the describing words apply to the material as it is
+        apply_described(state, ctx, line.groups)
     if line.coat is not None or line.features:
         apply_clauses(state, ctx, line.coat, line.features)
 

@@ -8,6 +8,7 @@ formulas saturate inside each parameter's range (compiler/degrees.py).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from types import MappingProxyType
 from typing import Any
 
@@ -45,7 +46,14 @@ def group_weight(group: ast.Group, ctx: Context) -> float:
 
 
 def apply_groups(state: MaterialState, ctx: Context) -> MaterialState:
-    groups = colour_compounds(state.selection.groups, ctx.lexicon, state.diagnostics)
+    apply_described(state, ctx, state.selection.groups)
+    return state
+
+
+def apply_described(state: MaterialState, ctx: Context, said: Sequence[ast.Group]) -> None:
+    """Describing groups applied in the canonical order (passes/order.py), gloss words on the
+    coat the look comes from: the phrase's own, or a change line's ('make it glossy red')."""
+    groups = colour_compounds(said, ctx.lexicon, state.diagnostics)
     ordered = canonical_groups(groups, ctx.lexicon)
     on_coat = gloss_on_coat(ordered, ctx.lexicon, state.coat is not None and not state.coat.get("follows_base"))
     for group in ordered:
@@ -53,7 +61,6 @@ def apply_groups(state: MaterialState, ctx: Context) -> MaterialState:
             apply_group(state, ctx, group, target="base")
     for group in on_coat:  # "matte varnished oak": the gloss one sees is the varnish's
         apply_group(state, ctx, group, target="coat")
-    return state
 
 
 def apply_group(state: MaterialState, ctx: Context, group: ast.Group, target: str) -> None:
@@ -137,6 +144,8 @@ def _warn_second_colour(state: MaterialState, param: str, c: ast.Colour) -> None
         return
     for step in reversed(state.provenance.get(param, ())):  # the last colour step, if any
         if step.rule.startswith("colours: "):
+            if step.words and step.words[-1].span.line != c.span.line:
+                return  # a colour of a line above: 'make it blue' below 'red leather' changes it
             state.diagnostics.append(
                 warning(
                     c.span,

@@ -1,0 +1,113 @@
+"""Describing words alone (cnlmc.implied): a line that only describes names its material by the
+first phrase the teaching offers ('matte black' = matte black paint), with a note; a line that
+starts with a change phrase ('make it blue', 'turn it green') changes the material above; 'add'
+starts a clause line ('add some scratches'). The phrases here are not in tests/language/everyday.toml."""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from cnlmc.api import compile_source, lexicon_for
+from tests.helpers import run_cnlmc
+
+LEX = lexicon_for()
+PHRASES = ["glossy teal", "very pale lavender", "satin charcoal", "turn it teal", "paint it lavender", "add fine scratches"]
+
+
+def compiled(text: str):
+    return compile_source(text, "t.cnl", LEX)
+
+
+def notes(result) -> list[str]:
+    return [d.message for d in result.diagnostics if d.severity.name == "NOTE"]
+
+
+def params(text: str) -> list[dict]:
+    result = compiled(text)
+    assert result.ok, [d.message for d in result.diagnostics]
+    return [m["params"] for m in result.materials]
+
+
+def test_the_phrases_here_are_not_in_the_everyday_set():
+    data = tomllib.loads(Path(__file__).with_name("everyday.toml").read_text("utf-8"))
+    assert not {row["text"].lower() for row in data["phrase"]} & {p.lower() for p in PHRASES}
+
+
+@pytest.mark.parametrize(
+    ("text", "reading"),
+    [("glossy teal", "glossy teal paint"), ("very pale lavender", "very pale lavender paint"), ("satin charcoal", None)],
+)
+def test_describing_words_alone_are_the_first_offer_with_a_note(text, reading):
+    result = compiled(text)
+    assert result.ok
+    said = [n for n in notes(result) if n.startswith("no material named")]
+    if reading is None:  # 'charcoal' is a material too: the line names it
+        assert not said
+        return
+    assert said == [f"no material named: read '{text}' as '{reading}'"]
+    assert params(text) == params(reading)
+
+
+def test_the_implied_material_keeps_the_words_in_its_name_and_phrase():
+    (material,) = compiled("glossy teal").materials
+    assert material["phrase"] == "glossy teal"
+    assert material["name"].startswith("glossy_teal")
+
+
+def test_a_change_line_applies_its_words_to_the_material_above():
+    (before,) = params("red leather")
+    (after,) = params("red leather\nturn it teal")
+    (teal,) = params("teal leather")
+    assert after["base_color"] == teal["base_color"] != before["base_color"]
+    result = compiled("red leather\npaint it lavender")
+    assert "read 'lavender' as a change of the material above: its words apply to it" in notes(result)
+    assert not [d for d in result.diagnostics if d.code == "W105"]  # a change, not a second colour
+    assert len(result.materials) == 1
+
+
+def test_a_change_line_of_gloss_words_moves_the_roughness():
+    (matte,) = params("matte red plastic")
+    (changed,) = params("matte red plastic\nmake it glossy")
+    assert changed["roughness"] < matte["roughness"]
+
+
+def test_a_change_line_alone_needs_a_material_above():
+    result = compiled("turn it teal")
+    assert not result.materials
+    assert [d.code for d in result.diagnostics if d.severity.name == "WARNING"] == ["W104"]
+
+
+def test_add_starts_a_clause_line():
+    plain = compiled("polished steel").materials[0]
+    added = compiled("polished steel\nadd fine scratches").materials[0]
+    assert added["maps"] != plain["maps"]
+    assert added["maps"] == compiled("polished steel\nwith fine scratches").materials[0]["maps"]
+
+
+def test_a_second_colour_in_one_phrase_still_warns():
+    result = compiled("red blue leather")
+    assert [d.code for d in result.diagnostics if d.code == "W105"] == ["W105"]
+
+
+COLOURS = ["teal", "lavender", "navy", "mint", "rose", "maroon", "ochre", "periwinkle"]
+FINISHES = ["", "glossy ", "matte ", "shiny ", "very glossy ", "slightly matte "]  # not "satin": a fabric too
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(st.sampled_from(FINISHES), st.sampled_from(COLOURS))
+def test_any_finish_and_colour_alone_compiles_as_paint_without_a_warning(finish, colour):
+    text = f"{finish}{colour}"
+    result = compiled(text)
+    assert result.ok and not [d for d in result.diagnostics if d.severity.name in ("WARNING", "ERROR")]
+    assert result.materials[0]["params"] == compiled(f"{text} paint").materials[0]["params"]
+
+
+def test_through_the_cli():
+    done = run_cnlmc("compile", "-", "--target", "ir", "-o", "-", stdin="glossy teal\nmake it darker\n")
+    assert done.returncode == 0, done.stderr
+    assert "note[N101]: no material named: read 'glossy teal' as 'glossy teal paint'" in done.stderr
