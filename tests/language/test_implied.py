@@ -16,7 +16,14 @@ from cnlmc.api import compile_source, lexicon_for
 from tests.helpers import run_cnlmc
 
 LEX = lexicon_for()
-PHRASES = ["glossy teal", "very pale lavender", "satin charcoal", "turn it teal", "paint it lavender", "add fine scratches"]
+PHRASES = [
+    "glossy teal",
+    "very pale lavender",
+    "satin charcoal",
+    "turn it teal",
+    "paint it lavender",
+    "add fine scratches",
+]
 
 
 def compiled(text: str):
@@ -40,7 +47,11 @@ def test_the_phrases_here_are_not_in_the_everyday_set():
 
 @pytest.mark.parametrize(
     ("text", "reading"),
-    [("glossy teal", "glossy teal paint"), ("very pale lavender", "very pale lavender paint"), ("satin charcoal", None)],
+    [
+        ("glossy teal", "glossy teal paint"),
+        ("very pale lavender", "very pale lavender paint"),
+        ("satin charcoal", None),
+    ],
 )
 def test_describing_words_alone_are_the_first_offer_with_a_note(text, reading):
     result = compiled(text)
