@@ -110,9 +110,7 @@ class Joiner:
                     and self._coat_alone(tagged[k + 1 :]) is not None
                 ):
                     out.extend(self._coat_on_object(word, tagged[k + 1 :], diags))  # "floor varnish"
-                elif not others(word) and any(
-                    of_tag(t, "NOUN") or of_tag(t, "OBJECT") for t in _main_words(tagged[k + 1 :])
-                ):
+                elif not others(word) and self._named_later(word, _main_words(tagged[k + 1 :])):
                     note = f"read '{word.text}' as saying how or what for, not what: the material is named later"
                     diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))  # "wire brushed oak"
                 else:
@@ -514,6 +512,17 @@ class Joiner:
         noun_span = Span(s.start, s.start + len(noun_text), s.line, s.col)
         head_span = Span(head_start, s.end, s.line, s.col + head_start - s.start)
         return [Tagged(noun_text, noun_span, (noun,)), Tagged(head_text, head_span, (candidate,)), word]
+
+    def _named_later(self, word: Tagged, rest: list[Tagged]) -> bool:
+        """Whether an object says how or what for while a later word names the material ('wire
+        brushed oak', 'car window'): a noun follows, or an object follows one that is not a building
+        product ('butcher block countertop': the product names the countertop's material)."""
+        if any(of_tag(t, "NOUN") for t in rest):
+            return True
+        if not any(of_tag(t, "OBJECT") for t in rest):
+            return False
+        entries = [self.lexicon.entry(c.category, c.key) for c in of_tag(word, "OBJECT")]
+        return not any(e is not None and e.get("product") for e in entries)
 
     def _object_alone(self, word: Tagged, diags: list[Diagnostic]) -> Tagged:
         """An object with no material noun beside it: its other readings, else its material."""

@@ -242,10 +242,21 @@ def _applies(state: MaterialState, adjective: Entry, word: ast.Word, target: str
     return False
 
 
+def _opposed(first: Entry, then: Entry) -> bool:
+    """Whether two adjectives contradict: one `opposes` the other, or one is the other's declared
+    `opposite` (the antonym 'not X' is read as: 'clear' and 'frosted', 'transparent opaque')."""
+    return (
+        first.key in then.get("opposes", [])
+        or then.key in first.get("opposes", [])
+        or then.get("opposite") == first.key
+        or first.get("opposite") == then.key
+    )
+
+
 def _check_opposition(state: MaterialState, ctx: Context, adjective: Entry, word: ast.Word) -> None:
     for earlier_key, earlier in state.applied:
         first = ctx.lexicon.require("adjectives", earlier_key)
-        if earlier_key in adjective.get("opposes", []) or adjective.key in first.get("opposes", []):
+        if _opposed(first, adjective):
             state.diagnostics.append(
                 warning(
                     word.span,
