@@ -87,10 +87,15 @@ class References:
         self._names(entry, key, "applies_to", self.noun_names, "noun or noun class")
         self._names(entry, key, "opposes", self.raw["adjectives"], "adjective")
         self._name(entry, key, "opposite", self.raw["adjectives"], "adjective")  # what 'not X' reads as
-        for target in entry.data.get("on", {}):
-            if target not in self.noun_names:
-                hint = did_you_mean(target, self.noun_names)
-                entry.checker("on").fail((key, "on", target), f"no noun or noun class named '{target}'{hint}")
+        for field in ("on", "features_on"):
+            for target in entry.data.get(field, {}):
+                if target not in self.noun_names:
+                    hint = did_you_mean(target, self.noun_names)
+                    entry.checker(field).fail((key, field, target), f"no noun or noun class named '{target}'{hint}")
+        for target, feature in entry.data.get("features_on", {}).items():
+            if feature not in self.raw["features"]:
+                hint = did_you_mean(str(feature), self.raw["features"])
+                entry.checker("features_on").fail((key, "features_on", target), f"no feature named '{feature}'{hint}")
         metal = entry.data.get("material")
         if metal is not None:
             self._name(entry, key, "material", self.raw["nouns"], "noun")

@@ -215,8 +215,20 @@ def _draw_maps(
 ) -> bool:
     """Draw the entry's maps; a graph the material already has keeps its map, scaled by the weight.
     Returns whether the clause's colour went to the maps."""
+    draw_feature_maps(state, ctx, entry, weight, (*_adverbs_of(clause), clause.word))
+    if colour is None or entry.get("colour") != "map":
+        return False
+    for graph in _graphs_of(entry):
+        _name_colour(state, ctx, entry, graph, colour, clause)
+    return True
+
+
+def draw_feature_maps(
+    state: MaterialState, ctx: Context, entry: Entry, weight: float, words: tuple[ast.Word, ...]
+) -> None:
+    """The feature's maps at the weight (a graph the material already has keeps its map, scaled),
+    each noted as drawn by `words` (a clause's, or an adjective's own: adjectives `features_on`)."""
     rule = f"features.{entry.key}.maps (weight {weight:g})"
-    words = (*_adverbs_of(clause), clause.word)
     for graph in _graphs_of(entry):
         if not _scale_existing(state, graph, entry, weight):
             for role, ref in entry.get("maps").items():
@@ -224,11 +236,6 @@ def _draw_maps(
                     state.maps[role] = _map_ref(weighted_map(ref, weight), ctx)
         for role in _roles_of(state, graph):
             state.note(f"maps.{role}", graph, rule, words)
-    if colour is None or entry.get("colour") != "map":
-        return False
-    for graph in _graphs_of(entry):
-        _name_colour(state, ctx, entry, graph, colour, clause)
-    return True
 
 
 def _graphs_of(entry: Entry) -> list[str]:

@@ -193,8 +193,27 @@ def apply_adjective(
         _apply_maps(state, ctx, adjective, weight, words)
     if data.get("coat"):
         _apply_adjective_coat(state, ctx, adjective, words)
+    if data.get("features_on"):
+        _draw_feature_on(state, ctx, adjective, weight, words)
     for c in group.colours:
         _apply_qualifier(state, ctx, adjective, c, group.adverbs, colour_weight)
+
+
+def _draw_feature_on(state: MaterialState, ctx: Context, adjective: Entry, weight: float, words: Words) -> None:
+    """The feature the adjective draws on this noun or its class ('weathered copper': a patina)."""
+    noun = noun_of(state)
+    table = adjective.get("features_on")
+    key = table.get(noun.key) or table.get(noun.data.get("class"))
+    if key is None:
+        return
+    from .features import draw_feature_maps  # features imports this module
+
+    entry = ctx.lexicon.require("features", key)
+    if entry.get("maps"):
+        draw_feature_maps(state, ctx, entry, weight, words)
+    elif entry.get("adjective"):  # 'rust spots': what 'rusty' draws, at the feature's weight
+        drawn = ctx.lexicon.require("adjectives", str(entry.get("adjective")))
+        _apply_maps(state, ctx, drawn, weight * float(entry.get("weight", 1.0)), words)
 
 
 def _note_unchanged_look(state: MaterialState, word: ast.Word) -> None:

@@ -320,6 +320,12 @@ SCHEMA_CASES = [
         "no adjective named 'polishd' (did you mean 'polished'?)",
     ),
     ("adjectives_x.toml", '[brushed]\ncoat = "varnsh"\n', "no coat named 'varnsh' (did you mean 'varnish'?)"),
+    (
+        "adjectives_x.toml",
+        '[brushed]\nfeatures_on = { copper = "patna" }\n',
+        "no feature named 'patna' (did you mean 'patina'?)",
+    ),
+    ("adjectives_x.toml", '[brushed]\nfeatures_on = { copr = "patina" }\n', "no noun or noun class named 'copr'"),
     ("adjectives_x.toml", '[brushed]\nmaterial = "oak"\n', "'oak' is not a metal"),
     (
         "adjectives_x.toml",
