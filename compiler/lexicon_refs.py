@@ -87,11 +87,11 @@ class References:
         self._names(entry, key, "applies_to", self.noun_names, "noun or noun class")
         self._names(entry, key, "opposes", self.raw["adjectives"], "adjective")
         self._name(entry, key, "opposite", self.raw["adjectives"], "adjective")  # what 'not X' reads as
-        for field in ("on", "features_on"):
-            for target in entry.data.get(field, {}):
+        for table in ("on", "features_on"):
+            for target in entry.data.get(table, {}):
                 if target not in self.noun_names:
                     hint = did_you_mean(target, self.noun_names)
-                    entry.checker(field).fail((key, field, target), f"no noun or noun class named '{target}'{hint}")
+                    entry.checker(table).fail((key, table, target), f"no noun or noun class named '{target}'{hint}")
         for target, feature in entry.data.get("features_on", {}).items():
             if feature not in self.raw["features"]:
                 hint = did_you_mean(str(feature), self.raw["features"])
