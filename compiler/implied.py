@@ -118,14 +118,24 @@ def _note(said: Sequence[Tagged], noun: str, others: Sequence[str]) -> Diagnosti
 
 def starts_with_change(text: str) -> bool:
     """Whether the line starts with a change phrase ('make it', 'turn it': teaching.toml
-    [politeness] changes), then a space or a mark."""
+    [politeness] changes), then a space or a mark, after any other politeness ('now make it')."""
     from .suggest import teaching
 
+    table = teaching()["politeness"]
     said = " ".join(text.lower().split())
-    return any(
-        said.startswith(phrase) and said[len(phrase) : len(phrase) + 1] in ("", " ", *MARKS)
-        for phrase in teaching()["politeness"]["changes"]
-    )
+    while True:
+        if _starts_with_one_of(said, table["changes"]):
+            return True
+        polite = _starts_with_one_of(said, table["leading"])
+        if not polite:
+            return False
+        said = said[len(polite) :].lstrip(" ,!.:;")
+
+
+def _starts_with_one_of(said: str, phrases: Sequence[str]) -> str:
+    """The longest of the phrases the text starts with (then a space, a mark or its end), or ''."""
+    found = [p for p in phrases if said.startswith(p) and said[len(p) : len(p) + 1] in ("", " ", *MARKS)]
+    return max(found, key=len, default="")
 
 
 MARKS = (",", "!", ".", ":", ";")

@@ -11,7 +11,7 @@ beside them (`marks`: "Hi! brushed steel"); a word inside the phrase is never dr
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from .diagnostics import Diagnostic, Severity
 from .spans import Span
@@ -21,13 +21,25 @@ from .tagged import NOTE_CODE, Tagged
 __all__ = ["without_politeness"]
 
 
-def without_politeness(diags: list[Diagnostic], words: Sequence[Tagged]) -> tuple[list[Diagnostic], list[Tagged]]:
+def without_politeness(
+    diags: list[Diagnostic], words: Sequence[Tagged], tag: Callable[[str], Tagged | None] | None = None
+) -> tuple[list[Diagnostic], list[Tagged]]:
     """The line's words without the politeness at its edges, and its diagnostics without the
-    unknown-word errors of the dropped words plus one note per dropped phrase."""
+    unknown-word errors of the dropped words plus one note per dropped phrase. A leading phrase
+    listed in `rewrites` ('give it' -> 'with', 'tone down the' -> 'less') leaves its word in its
+    place, tagged by `tag` (the lexicon's reading of that word)."""
     table = teaching()["politeness"]
     marks = frozenset(table["marks"])
+    rewrites: dict[str, str] = table["rewrites"]
     kept = list(words)
     dropped: list[list[Tagged]] = []
+    put: Tagged | None = None
+    taken = _edge_phrase(kept, list(rewrites), marks, at_start=True) if tag is not None and len(kept) > 1 else 0
+    if taken:
+        run, kept = kept[:taken], kept[taken:]
+        said = " ".join(w.text.lower() for w in run if w.text[:1].isalnum())
+        put = _rewritten(run, tag(rewrites[said])) if tag is not None and said in rewrites else None
+        dropped.append(run)
     for at_start, phrases in ((True, table["leading"]), (False, table["trailing"])):
         while len(kept) > 1:
             taken = _edge_phrase(kept, phrases, marks, at_start)
@@ -39,11 +51,25 @@ def without_politeness(diags: list[Diagnostic], words: Sequence[Tagged]) -> tupl
         return diags, kept
     spans = [w.span for run in dropped for w in run]
     out = [d for d in diags if not _inside(d, spans)]  # their unknown words, stray marks, readings
-    for run in dropped:
+    for k, run in enumerate(dropped):
         text = " ".join(w.text for w in run if w.text[:1].isalnum())
-        note = f"read past '{text}': a phrase names the material only, so politeness is left out"
+        if k == 0 and put is not None:
+            note = f"read '{text}' as '{put.text}'"
+        else:
+            note = f"read past '{text}': a phrase names the material only, so politeness is left out"
         out.append(Diagnostic(run[0].span.to(run[-1].span), Severity.NOTE, NOTE_CODE, note))
-    return out, kept
+    return out, ([put] if put is not None else []) + kept
+
+
+def _rewritten(run: Sequence[Tagged], word: Tagged | None) -> Tagged | None:
+    """The rewrite's word in place of the phrase: inside its last word's span (the parser keys
+    words by start, and no written word starts there), implied by the phrase."""
+    if word is None:
+        return None
+    s = run[-1].span
+    at = min(s.start + 1, s.end)
+    whole = run[0].span.to(s)
+    return Tagged(word.text, Span(at, s.end, s.line, s.col + at - s.start), word.candidates, implied_by=whole)
 
 
 def _inside(diag: Diagnostic, spans: Sequence[Span]) -> bool:

@@ -37,7 +37,7 @@ def fit_unknown_words(
     """The tagger's diagnostics and words, each unknown word's suggestions redrawn from the
     categories of its slot, and its guessed readings those of the slot (so the parser does not
     report a second error for a guess that does not fit: 'tinn glass' is not 'tin glass')."""
-    diags, words = without_politeness(diags, words)
+    diags, words = without_politeness(diags, words, lambda word: _tagged_word(word, lexicon))
     out, fitted = [], list(words)
     for diag in diags:
         index = _unknown_index(diag, words)
@@ -49,6 +49,14 @@ def fit_unknown_words(
         out.append(replace(diag, hints=did_you_mean(suggestions), suggestions=tuple(suggestions)))
         fitted[index] = _guessed(words[index], categories)
     return out, fitted
+
+
+def _tagged_word(word: str, lexicon: Lexicon) -> Tagged | None:
+    """One word as the lexicon tags it alone (a politeness rewrite's 'with', 'less')."""
+    from .tagger import Tagger
+
+    tagged, diags = Tagger.of(lexicon).tag_line(word, 1, 0)
+    return tagged[0] if len(tagged) == 1 and not diags else None
 
 
 def _form_typos(words: Sequence[Tagged], index: int, lexicon: Lexicon) -> list[str]:

@@ -274,6 +274,8 @@ def _opposed(first: Entry, then: Entry) -> bool:
 
 def _check_opposition(state: MaterialState, ctx: Context, adjective: Entry, word: ast.Word) -> None:
     for earlier_key, earlier in state.applied:
+        if earlier.span.line != word.span.line:
+            continue  # a word of a line above: 'go matte' below 'shiny red plastic' changes it
         first = ctx.lexicon.require("adjectives", earlier_key)
         if _opposed(first, adjective):
             state.diagnostics.append(

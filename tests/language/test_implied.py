@@ -122,3 +122,44 @@ def test_through_the_cli():
     done = run_cnlmc("compile", "-", "--target", "ir", "-o", "-", stdin="glossy teal\nmake it darker\n")
     assert done.returncode == 0, done.stderr
     assert "note[N101]: no material named: read 'glossy teal' as 'glossy teal paint'" in done.stderr
+
+
+# ---------------------------------------------------------------- conversational change lines
+
+CONVERSATION = ["walnut\ndial down the gloss", "bronze\ngive it a patina", "white ceramic\nok now make it teal"]
+
+
+def test_the_conversation_here_is_not_in_the_everyday_set():
+    data = tomllib.loads(Path(__file__).with_name("everyday.toml").read_text("utf-8"))
+    said = {line.lower() for text in CONVERSATION for line in text.split("\n")[1:]}
+    assert not {row["text"].lower() for row in data["phrase"]} & said
+
+
+def test_a_rewritten_opening_is_the_word_it_stands_for():
+    (walnut,) = params("walnut")
+    (duller,) = params("walnut\ndial down the gloss")
+    assert duller["roughness"] > walnut["roughness"]
+    result = compiled("bronze\ngive it a patina")
+    assert "read 'give it' as 'with'" in notes(result)
+    assert result.materials[0]["maps"] == compiled("bronze\nwith a patina").materials[0]["maps"] != {}
+
+
+def test_politeness_before_a_change_phrase_keeps_it_a_change():
+    result = compiled("white ceramic\nok now make it teal")
+    assert len(result.materials) == 1
+    assert result.materials[0]["params"]["base_color"] == params("teal ceramic")[0]["base_color"]
+
+
+def test_a_change_does_not_contradict_the_words_of_the_line_above():
+    result = compiled("glossy teal plastic\ngo matte")
+    assert not [d for d in result.diagnostics if d.code == "W101"]
+    assert result.materials[0]["params"]["roughness"] > params("glossy teal plastic")[0]["roughness"]
+
+
+def test_german_politeness_before_a_refinement():
+    de = lexicon_for(("de",))
+    result = compile_source("grauer Granit\nbitte heller", "t.cnl", de)
+    plain = compile_source("grauer Granit", "t.cnl", de)
+    assert result.ok
+    lighter, grey = result.materials[0]["params"]["base_color"], plain.materials[0]["params"]["base_color"]
+    assert sum(lighter) > sum(grey)
