@@ -51,6 +51,9 @@ TAG_PREFERENCE = {
 
 def raw_tokens(line: str) -> list[tuple[str, int]]:
     """(text, 0-based column) of each word or punctuation mark; '#' starts a comment."""
+    plain = _plain_words(line)
+    if plain is not None:
+        return plain
     if "#" not in line:
         return [(match.group(), match.start()) for match in TOKEN_RE.finditer(line)]
     out = []
@@ -58,6 +61,21 @@ def raw_tokens(line: str) -> list[tuple[str, int]]:
         if match.group() == "#":
             break
         out.append((match.group(), match.start()))
+    return out
+
+
+def _plain_words(line: str) -> list[tuple[str, int]] | None:
+    """raw_tokens of a line of letter-only words between single spaces ('blue anodized aluminum',
+    most phrases), without the regular expression; None for any other line. Exact: a run of
+    letters (str.isalpha, the same Unicode test as the pattern's [^\\W\\d_]) is one TOKEN_RE word,
+    and a space is no token."""
+    out = []
+    col = 0
+    for word in line.split(" "):
+        if not word.isalpha():  # punctuation, a digit, '#', another space or white space: the pattern
+            return None
+        out.append((word, col))
+        col += len(word) + 1
     return out
 
 
