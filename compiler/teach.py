@@ -17,6 +17,7 @@ from types import MappingProxyType
 
 from .diagnostics import Diagnostic, did_you_mean
 from .lexicon import CATEGORY_TAGS, Lexicon
+from .measures import without_measures
 from .politeness import without_politeness
 from .suggest import allowed_edits, teaching
 from .tagged import Candidate, Tagged
@@ -37,6 +38,7 @@ def fit_unknown_words(
     """The tagger's diagnostics and words, each unknown word's suggestions redrawn from the
     categories of its slot, and its guessed readings those of the slot (so the parser does not
     report a second error for a guess that does not fit: 'tinn glass' is not 'tin glass')."""
+    diags, words = without_measures(diags, words)
     diags, words = without_politeness(diags, words, lambda word: _tagged_word(word, lexicon))
     out, fitted = [], list(words)
     for diag in diags:
