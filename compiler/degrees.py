@@ -63,7 +63,9 @@ def weighted_formula(
             return exact
     if op == "set" and (isinstance(value, str) or x is None):
         return value
-    if op == "blend" or bounds is None:  # blend never leaves [x, value]; an unbounded value keeps the paper's rule
+    if (
+        op in ("blend", "mix") or bounds is None
+    ):  # blend never leaves [x, value]; an unbounded value keeps the paper's rule
         return apply_op(op, x, value, weight, amount)
     if op == "set" and weight > 1.0:
         return intensified_level(x, value, weight, bounds) if degree and not isinstance(value, list) else value

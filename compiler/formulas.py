@@ -4,8 +4,11 @@
     mul f             x -> x (1 + w (f - 1))
     add d             x -> x + w d
     blend v, amount t x -> x + min(1, w t) (v - x)
+    mix v, amount t   x -> the same move in OKLab (colours only): a colour fading toward a grey
+                      keeps its hue and a share of its chroma ('faded navy' stays blue), where
+                      the linear blend toward a lighter grey drains a dark colour's chroma first
 
-Values may be scalars or RGB lists; lists are handled per channel.
+Values may be scalars or RGB lists; lists are handled per channel (mix: as one colour).
 """
 
 from __future__ import annotations
@@ -15,6 +18,13 @@ from typing import Any
 
 Value = Any  # a number, an RGB list, or (for 'set') a string such as a model name
 Channel = Callable[[float, float], float]
+
+
+def _mix(x: Value, v: Value, t: float) -> Value:
+    """x moved t of the way to v in OKLab (t < 0: away from it), kept in the sRGB gamut."""
+    from .colour import clamp01, mix_oklab
+
+    return clamp01(mix_oklab(x, v, t))
 
 
 def _per_channel(fn: Channel, x: Value, v: Value) -> Value:
@@ -47,6 +57,8 @@ CHANNEL_OPS: dict[str, Callable[[float, float, float], float]] = {
 def apply_op(op: str, x: Value, value: Value, weight: float = 1.0, amount: float | None = None) -> Value:
     if op == "set" and (isinstance(value, str) or x is None):
         return value
+    if op == "mix":
+        return _mix(x, value, min(1.0, weight * (1.0 if amount is None else amount)))
     fn = CHANNEL_OPS.get(op)
     if fn is None:
         raise ValueError(f"unknown formula op '{op}'")
@@ -64,6 +76,8 @@ def invert_op(op: str, x: Value, value: Value, weight: float = 1.0, amount: floa
         return _per_channel(lambda a, b: a / (1 + weight * (b - 1)) if 1 + weight * (b - 1) else a, x, value)
     if op == "add":
         return _per_channel(lambda a, b: a - weight * b, x, value)
+    if op == "mix":
+        return _mix(x, value, -min(1.0, weight * (1.0 if amount is None else amount)))
     if op in ("set", "blend"):
         t = weight if op == "set" else min(1.0, weight * (1.0 if amount is None else amount))
         return _per_channel(lambda a, b: a - t * (b - a), x, value)
@@ -78,8 +92,9 @@ def describe(effect: dict[str, Any], weight: float) -> str:
     op, value = effect["op"], effect.get("value")
     if op in OP_SIGNS:
         text = f"{OP_SIGNS[op]} {value}"
-    elif op == "blend":
-        text = f"blend to {value} by {effect.get('amount', 1.0)}"
+    elif op in ("blend", "mix"):
+        space = " in OKLab" if op == "mix" else ""
+        text = f"blend to {value} by {effect.get('amount', 1.0)}{space}"
     else:
         raise KeyError(op)
     suffix = f" (weight {weight:g})" if weight != 1.0 else ""

@@ -31,7 +31,8 @@ MAX_ITEMS = 256  # formulas, shade operations or aliases in one list
 MAX_TEXT = 4096  # characters in one string field
 #: what a formula's `param = "model"` may set (a metal needs a noun's optics: `material = "copper"`)
 EFFECT_MODELS = ("dielectric", "glass")
-FORMULA_OPS = ("set", "mul", "add", "blend")
+FORMULA_OPS = ("set", "mul", "add", "blend")  # a refinement step's
+EFFECT_OPS = (*FORMULA_OPS, "mix")  # an adjective's: 'mix' is blend in OKLab, for a colour (compiler/formulas.py)
 SHADE_OPS = {
     "saturate": ("amount",),
     "blend": ("value", "amount"),
@@ -256,10 +257,12 @@ def check_effect(c: Checker, raw: object, path: Path_) -> None:
     effect = c.table(raw, path, "a formula table { param = ..., op = ..., value = ... }")
     c.known_keys(effect, ("param", "op", "value", "amount"), path)
     param = c.choice(c.required(effect, "param", path), EFFECT_PARAMS, (*path, "param"), "parameter")
-    op = c.choice(c.required(effect, "op", path), FORMULA_OPS, (*path, "op"), "formula op")
+    op = c.choice(c.required(effect, "op", path), EFFECT_OPS, (*path, "op"), "formula op")
+    if op == "mix" and PARAM_SPECS.get(param) is not None and PARAM_SPECS[param].kind != "rgb":
+        c.fail((*path, "op"), f"op = 'mix' blends colours in OKLab: '{param}' is not a colour")
     if "amount" in effect:
-        if op != "blend":
-            c.fail((*path, "amount"), f"'amount' belongs to op = 'blend' only (this formula's op is '{op}')")
+        if op not in ("blend", "mix"):
+            c.fail((*path, "amount"), f"'amount' belongs to op = 'blend' or 'mix' only (this formula's op is '{op}')")
         c.number(effect["amount"], (*path, "amount"), 0.0, 1.0)
     value = c.required(effect, "value", path)
     if param == "model":

@@ -277,7 +277,7 @@ SCHEMA_CASES = [
     (
         "adjectives_x.toml",
         '[brushed]\neffects = [{ param = "roughness", op = "mul", value = 1, amount = 1 }]\n',
-        "'amount' belongs to op = 'blend' only",
+        "'amount' belongs to op = 'blend' or 'mix' only",
     ),
     (
         "adjectives_x.toml",
@@ -326,6 +326,11 @@ SCHEMA_CASES = [
         "no feature named 'patna' (did you mean 'patina'?)",
     ),
     ("adjectives_x.toml", '[brushed]\nfeatures_on = { copr = "patina" }\n', "no noun or noun class named 'copr'"),
+    (
+        "adjectives_x.toml",
+        '[brushed]\neffects = [{ param = "roughness", op = "mix", value = 0.5 }]\n',
+        "op = 'mix' blends colours in OKLab: 'roughness' is not a colour",
+    ),
     ("adjectives_x.toml", '[brushed]\nmaterial = "oak"\n', "'oak' is not a metal"),
     (
         "adjectives_x.toml",

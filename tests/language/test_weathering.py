@@ -11,8 +11,10 @@ from pathlib import Path
 import pytest
 
 from cnlmc.api import compile_source, lexicon_for
+from tests.helpers import load_module
 
 LEX = lexicon_for()
+EVERYDAY = load_module("everyday_bench", Path(__file__).resolve().parents[2] / "bench" / "everyday.py")
 PHRASES = ["weathered bronze", "very weathered brass", "old wrought iron", "weathered aluminum", "weathered pine"]
 
 
@@ -47,3 +49,23 @@ def test_a_stronger_degree_covers_more():
 @pytest.mark.parametrize("text", ["weathered aluminum", "weathered stainless steel", "weathered pine"])
 def test_no_patina_or_rust_where_weather_does_not_grow_one(text):
     assert not graphs(material(text)) & {"patina", "rust"}
+
+
+# ---------------------------------------------------------------- fading keeps the hue (op 'mix')
+
+
+@pytest.mark.parametrize(
+    "colour", ["navy", "maroon", "forest green", "purple", "teal", "chocolate brown", "denim blue"]
+)
+def test_a_faded_dye_keeps_its_hue_and_pales(colour):
+    dyed = material(f"{colour} cotton")["params"]["base_color"]
+    faded = material(f"faded {colour} cotton")["params"]["base_color"]
+    assert EVERYDAY.hue_family(faded) == EVERYDAY.hue_family(dyed), (dyed, faded)
+    assert EVERYDAY.oklab(faded)[0] > EVERYDAY.oklab(dyed)[0]
+
+
+def test_less_faded_moves_back_toward_the_dye():
+    faded = material("faded navy cotton")["params"]["base_color"]
+    result = compile_source("faded navy cotton\nless faded", "t.cnl", LEX)
+    assert result.ok
+    assert sum(result.materials[0]["params"]["base_color"]) < sum(faded)
