@@ -15,7 +15,7 @@ from .passes.base import apply_noun
 from .passes.coats import apply_coat_clause
 from .passes.conformal_coat import lay_conformal_coats
 from .passes.model import select_model
-from .passes.ranges import check_finite, check_ranges
+from .passes.ranges import check_values
 from .passes.refine import apply_inline_refinements, apply_refinement_line
 from .passes.subsurface import apply_subsurface, select_subsurface
 from .passes.variants import expand, identifier
@@ -23,7 +23,7 @@ from .passes.words import apply_groups
 from .state import Context, MaterialState
 
 BUILD_PASSES = (apply_noun, apply_groups, apply_subsurface, apply_coat_clause, apply_inline_refinements)
-FINAL_PASSES = (lay_conformal_coats, select_model, select_subsurface, check_ranges, check_finite)
+FINAL_PASSES = (lay_conformal_coats, select_model, select_subsurface, check_values)
 
 
 def attach_refinements(doc: ast.Document) -> list[tuple[ast.Material, list[ast.Refinement]]]:

@@ -35,23 +35,46 @@ def clamp(value: Any, low: float, high: float) -> Any:
     return min(max(float(value), low), high)
 
 
+def check_values(state: MaterialState, ctx: Context) -> MaterialState:
+    """check_ranges, then check_finite. The range check looks at every parameter, coat and map value
+    anyway: where it clamps nothing it also tells whether they are all finite (a value in its range
+    is), so that check_finite's own look at them is not needed, only at the provenance steps."""
+    if _checked_ranges(state) and _steps_finite(state):
+        return state  # the common case: nothing to replace or report
+    return check_finite(state, ctx)
+
+
 def check_ranges(state: MaterialState, ctx: Context) -> MaterialState:
-    _check_all(state, state.params, RANGES, "")
+    _checked_ranges(state)
+    return state
+
+
+def _checked_ranges(state: MaterialState) -> bool:
+    """check_ranges; whether every parameter, coat and map value is now known to be finite (False:
+    maybe not, check_finite sees)."""
+    finite = _check_all(state, state.params, RANGES, "")
     if state.coat is not None:
-        _check_all(state, state.coat, COAT_RANGES, "coat.")
+        finite = _check_all(state, state.coat, COAT_RANGES, "coat.") and finite
     for role, ref in state.maps.items():
         if ref["params"]:  # a map without parameters of its own has nothing to check
-            _check_all(state, ref["params"], graph_params(ref["graph"]), f"maps.{role}.")
-    return state
+            finite = _check_all(state, ref["params"], graph_params(ref["graph"]), f"maps.{role}.") and finite
+    return finite
 
 
 def _check_all(
     state: MaterialState, holder: dict[str, Any], ranges: Mapping[str, Sequence[float]], prefix: str
-) -> None:
-    """`ranges`: param -> (low, high, ...). Clamps are made in the order of `ranges`."""
+) -> bool:
+    """`ranges`: param -> (low, high, ...). Clamps are made in the order of `ranges`. True when
+    nothing was clamped and every value is finite (_finite): a value in its range is; one without
+    a range is looked at here; False after a clamp."""
+    finite = True
     for param, value in holder.items():  # the common case, one pass over what is set: nothing to clamp
         bounds = ranges.get(param)
-        if bounds is None or value is None:
+        if bounds is None:
+            if finite and not ((type(value) is float and -BIGGEST <= value <= BIGGEST) or _finite(value)):
+                finite = False  # (check_finite's test of a value)
+            continue
+        if value is None:
             continue
         kind = type(value)
         if kind is float:
@@ -69,13 +92,14 @@ def _check_all(
         if not _in_range(value, bounds[0], bounds[1]):
             break
     else:
-        return
+        return finite
     for param, bounds in ranges.items():
         value = holder.get(param)
         if value is None or (type(value) is float and bounds[0] <= value <= bounds[1]):
             continue  # absent, or a number in range: the common cases, checked without a call
         if not _in_range(value, bounds[0], bounds[1]):
             _clamp(state, holder, param, prefix + param, bounds[0], bounds[1])
+    return False
 
 
 def _in_range(value: Any, low: float, high: float) -> bool:
@@ -154,6 +178,11 @@ def _all_finite(state: MaterialState) -> bool:
     for ref in state.maps.values():
         if not _values_finite(ref["params"].values()):
             return False
+    return _steps_finite(state)
+
+
+def _steps_finite(state: MaterialState) -> bool:
+    """Whether every provenance step's value is finite (False: maybe not; check_finite sees)."""
     big = BIGGEST
     for steps in state.provenance.values():
         for step in steps:
