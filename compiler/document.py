@@ -94,7 +94,7 @@ def _failed_line(
     from .teach import teach_syntax_error
 
     taught = teach_syntax_error(_syntax_error(failure, words, lexicon), words, lexicon)
-    implied = implied_material(taught, words, lexicon)
+    implied = implied_material(taught, words, lexicon, text)
     if implied is not None:
         with_noun, note = implied
         try:

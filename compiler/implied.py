@@ -28,13 +28,15 @@ from .tagged import NOTE_CODE, Candidate, Tagged
 
 __all__ = ["as_change", "implied_material", "starts_with_change"]
 
-NOT_DESCRIBING = frozenset({"REFINE", "NAME", "OF", "NOUN", "OBJECT"})  # a line with one of these keeps its error
+NOT_DESCRIBING = frozenset({"NAME", "OF", "NOUN", "OBJECT"})  # a line with one of these keeps its error
 
 
 def implied_material(
-    taught: Diagnostic, words: Sequence[Tagged], lexicon: Lexicon
+    taught: Diagnostic, words: Sequence[Tagged], lexicon: Lexicon, text: str
 ) -> tuple[list[Tagged], Diagnostic] | None:
-    """The line's words with the implied noun added, and the note saying so; None to keep `taught`."""
+    """The line's words with the implied noun added, and the note saying so; None to keep `taught`.
+    An inline comparative may stand first ('a slightly lighter grey' = one step lighter than grey
+    paint), but not a comparison ('lighter than red': what is compared is missing)."""
     if taught.code not in ("E002", "E003") or not taught.suggestions or not words:
         return None
     if any(w.unknown for w in words):
@@ -44,6 +46,8 @@ def implied_material(
     said, tail = main[:with_at], main[with_at:]  # a 'with' clause may name a colour by a noun ('gold flakes')
     if not said or any(c.tag in NOT_DESCRIBING for w in said for c in w.candidates):
         return None
+    if any(c.tag == "REFINE" for w in said for c in w.candidates) and _compares(text, lexicon):
+        return None
     chosen = _first_added_noun(taught.suggestions, said, tail, lexicon)
     if chosen is None:
         return None
@@ -52,6 +56,14 @@ def implied_material(
     at = words.index(last) + 1
     implied = [*words[:at], _implied_noun(key, last), *words[at:]]
     return implied, _note(said, written, [o for o in taught.suggestions if o != offer])
+
+
+def _compares(text: str, lexicon: Lexicon) -> bool:
+    """Whether the line has a comparison word ('than', 'als': the word formation rules), which the
+    tagger read into its comparative and dropped."""
+    formation = lexicon.caches.word_formation
+    comparison = formation.rules.comparison if formation is not None else ()
+    return any(word.lower() in comparison for word in text.split())
 
 
 def _first_added_noun(

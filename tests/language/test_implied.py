@@ -163,3 +163,22 @@ def test_german_politeness_before_a_refinement():
     assert result.ok
     lighter, grey = result.materials[0]["params"]["base_color"], plain.materials[0]["params"]["base_color"]
     assert sum(lighter) > sum(grey)
+
+
+@pytest.mark.parametrize(
+    ("text", "plain"),
+    [("a slightly paler teal", "teal paint"), ("a much darker lavender", "lavender paint")],
+)
+def test_an_inline_comparative_before_a_colour_alone_implies_the_material_too(text, plain):
+    result = compiled(text)
+    assert result.ok
+    assert [n for n in notes(result) if n.startswith("no material named")] == [
+        f"no material named: read '{text}' as '{text} paint'"
+    ]
+    assert result.materials[0]["params"] == compiled(f"{text} paint").materials[0]["params"]
+    assert result.materials[0]["params"] != compiled(plain).materials[0]["params"]
+
+
+def test_a_comparison_with_nothing_compared_keeps_its_error():
+    result = compiled("paler than teal")
+    assert not result.ok and [d.code for d in result.diagnostics if d.is_error] == ["E003"]
