@@ -77,7 +77,7 @@ def _params(
     if model["anisotropic"]:
         out["anisotropy"] = rounded(p["anisotropy"])
         out["anisotropy_rotation"] = rounded(p.get("anisotropy_rotation", Params.anisotropy_rotation))
-    out["coat"] = rounded(_coat(state.coat, convention)) if model["coat"] else None
+    out["coat"] = _coat(state.coat, convention) if model["coat"] else None
     if p.get("sheen_color") is not None:  # each of the three adds nothing without its own parameters
         out.update(sheen_params(p))
     if p.get("subsurface") is not None:
@@ -95,11 +95,18 @@ def _noun_list(rounded_optics: dict[tuple[str, str], list[float]], noun: Entry, 
     return list(found)  # a copy: whoever reads the IR may change it
 
 
+COAT_NAMES = tuple(s.name for s in COAT_PARAMS)  # the coat's IR fields, in the table's order
+
+
 def _coat(coat: JSONDict | None, convention: str) -> JSONDict:
-    """The coat's table entries; its alpha from its roughness in the material's convention."""
+    """The coat's table entries, rounded; its alpha from its roughness in the material's convention."""
     assert coat is not None, "a model with a coat has the coat's values"
     alpha = alpha_of(coat["roughness"], 0.0, convention)
-    return {s.name: alpha if s.name == "alpha" else coat[s.name] for s in COAT_PARAMS}
+    out: JSONDict = {}
+    for name in COAT_NAMES:  # rounded() of the entries as they are read: no dict made to be rounded again
+        value = alpha if name == "alpha" else coat[name]
+        out[name] = round6(value) if type(value) is float else rounded(value)
+    return out
 
 
 def _provenance(state: MaterialState) -> dict[str, list[JSONDict]]:
