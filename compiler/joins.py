@@ -63,7 +63,7 @@ class Joiner:
     def joined(self, tagged: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
         """Objects and class nouns joined to their material: "oak planks" = oak, "roof tiles" =
         tiles, "planks" = wood, "walnut wood" = walnut; each with a note."""
-        if any(t.unknown or of_tag(t, "OF") for t in tagged):
+        if any(t.unknown or of_tag(t, "OF") or of_tag(t, "WITH") for t in tagged):
             tagged = self._made_of(tagged, diags)
         out: list[Tagged] = []
         for k, word in enumerate(tagged):
@@ -142,8 +142,8 @@ class Joiner:
                 thing, said = tagged[k - 1], tagged[k : k + len(words)]
                 if not of_tag(thing, "OBJECT") or tuple(t.text.lower() for t in said) != words:
                     continue
-                if not all(t.unknown or of_tag(t, "OF") for t in said):
-                    continue
+                if not all(t.unknown or of_tag(t, "OF") or of_tag(t, "WITH") for t in said):
+                    continue  # 'in' is a 'with' word elsewhere ('steel in charcoal'), here the material's
                 j = k + len(words)
                 while (
                     j < len(tagged)

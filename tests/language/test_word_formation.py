@@ -125,6 +125,7 @@ def test_un_before_an_unknown_word_stays_unknown(lexicon):
         ("exterior oak", "oak", "where or what for"),
         ("car window", "glass", "what for"),
         ("beadboard wainscot", "pine", "material of the wainscot"),  # a building product names the material
+        ("a bench in teak", "teak", "material of the bench"),  # 'in' after an object: its material
         ("steel door handle", "steel", "material of the"),
         ("leather-look vinyl", "vinyl", "look of leather is not drawn"),
         ("marble-effect porcelain", "porcelain", "look of marble is not drawn"),
