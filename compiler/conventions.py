@@ -41,6 +41,9 @@ def alpha_of(roughness: Any, anisotropy: float = 0.0, convention: str = "squared
     """[alpha_x, alpha_y] of roughness r (a float, or a numpy array per lane), at most 1."""
     if type(roughness) is float and type(anisotropy) is float and convention == "squared":
         alpha = roughness * roughness  # every IR material: the steps below, without their calls
+        if anisotropy == 0.0:  # isotropic (most materials, every coat): s = 1, and x / 1 = x * 1 = x
+            alpha = min(alpha, 1.0)
+            return [alpha, alpha]
         s = math.sqrt(1.0 - 0.9 * min(max(anisotropy, 0.0), 1.0))
         return [min(alpha / s, 1.0), min(alpha * s, 1.0)]
     alpha = alpha_isotropic(roughness, convention)
