@@ -14,18 +14,18 @@ from typing import Any
 
 from .. import ast
 from ..colour import linear_to_oklab
-from ..degrees import weighted_map_value
 from ..diagnostics import Diagnostic, Severity, warning
 from ..graphs import graph_params
 from ..lexicon import Entry
 from ..lexicon_model import normalise
 from ..state import Context, MaterialState
-from .base import _map_ref, noun_of
+from .base import noun_of
 from .coat_layer import apply_coat
 from .colours import colour_text, resolve_colour
 from .feature_colour import meet, plain_colour, with_shades
+from .feature_maps import draw_feature_maps, graphs_of, roles_of
 from .noun_words import apply_noun_colour, noun_colour
-from .words import COAT_CLASS, apply_adjective, apply_coat_entry, apply_group, group_weight, weighted_map
+from .words import COAT_CLASS, apply_adjective, apply_coat_entry, apply_group, group_weight
 
 MISSING = "W120"  # a feature nothing in the stdlib draws yet
 SECOND_COAT = "W121"  # a second coat clause
@@ -218,47 +218,8 @@ def _draw_maps(
     draw_feature_maps(state, ctx, entry, weight, (*_adverbs_of(clause), clause.word))
     if colour is None or entry.get("colour") != "map":
         return False
-    for graph in _graphs_of(entry):
+    for graph in graphs_of(entry):
         _name_colour(state, ctx, entry, graph, colour, clause)
-    return True
-
-
-def draw_feature_maps(
-    state: MaterialState, ctx: Context, entry: Entry, weight: float, words: tuple[ast.Word, ...]
-) -> None:
-    """The feature's maps at the weight (a graph the material already has keeps its map, scaled),
-    each noted as drawn by `words` (a clause's, or an adjective's own: adjectives `features_on`)."""
-    rule = f"features.{entry.key}.maps (weight {weight:g})"
-    for graph in _graphs_of(entry):
-        if not _scale_existing(state, graph, entry, weight):
-            for role, ref in entry.get("maps").items():
-                if ref["graph"] == graph:
-                    state.maps[role] = _map_ref(weighted_map(ref, weight), ctx)
-        for role in _roles_of(state, graph):
-            state.note(f"maps.{role}", graph, rule, words)
-
-
-def _graphs_of(entry: Entry) -> list[str]:
-    return list(dict.fromkeys(ref["graph"] for ref in entry.get("maps").values()))
-
-
-def _roles_of(state: MaterialState, graph: str) -> list[str]:
-    return [role for role, ref in state.maps.items() if ref["graph"] == graph]
-
-
-def _scale_existing(state: MaterialState, graph: str, entry: Entry, weight: float) -> bool:
-    """Scale the weighted parameters of the material's own maps of `graph`; False if it has none."""
-    roles = _roles_of(state, graph)
-    if not roles:
-        return False
-    weighted = {name for ref in entry.get("maps").values() if ref["graph"] == graph for name in ref.get("weighted", [])}
-    ranges = graph_params(graph)
-    for role in roles:
-        params = dict(state.maps[role].get("params", {}))
-        for name in weighted:
-            low, high, default = ranges[name]
-            params[name] = min(high, max(low, weighted_map_value(params.get(name, default), weight, (low, high))))
-        state.maps[role] = {**state.maps[role], "params": params}
     return True
 
 
@@ -277,7 +238,7 @@ def _name_colour(
     if named is None:
         return  # the own colour as it is: the map keeps its texture
     rgb = [min(1.0, max(0.0, float(v))) for v in named]
-    for role in _roles_of(state, graph):
+    for role in roles_of(state, graph):
         params: dict[str, Any] = dict(state.maps[role].get("params", {}))
         params.update(zip(COLOUR_PARAMS, rgb, strict=True))
         params["color_amount"] = 1.0

@@ -13,10 +13,9 @@ from types import MappingProxyType
 from typing import Any
 
 from .. import ast
-from ..degrees import compose_weights, weighted_formula, weighted_map_value
+from ..degrees import compose_weights, weighted_formula
 from ..diagnostics import Diagnostic, Severity, warning
 from ..formulas import apply_op, describe
-from ..graphs import graph_params
 from ..lexicon import Entry, LexiconCaches
 from ..params import COAT_PARAMS, PARAMS, ranges
 from ..state import Context, MaterialState
@@ -24,6 +23,7 @@ from .base import _map_ref, noun_of
 from .colour_compounds import colour_compounds
 from .colours import colour_text, opposed_shades, resolve_colour
 from .diffuse_sigma import DIFFUSE_SIGMA, PARAM_BOUNDS, move_sigma
+from .feature_maps import draw_feature_maps, weighted_map
 from .order import canonical_groups, gloss_on_coat, stage_of
 from .textured_colour import keep_pattern_visible
 
@@ -206,8 +206,6 @@ def _draw_feature_on(state: MaterialState, ctx: Context, adjective: Entry, weigh
     key = table.get(noun.key) or table.get(noun.data.get("class"))
     if key is None:
         return
-    from .features import draw_feature_maps  # features imports this module
-
     entry = ctx.lexicon.require("features", key)
     if entry.get("maps"):
         draw_feature_maps(state, ctx, entry, weight, words)
@@ -402,18 +400,6 @@ def _kept_params(before: dict[str, Any] | None, drawn: dict[str, Any]) -> dict[s
     if before is None or (before.get("graph"), before.get("output")) != (drawn.get("graph"), drawn.get("output")):
         return drawn
     return {**drawn, "params": {**before.get("params", {}), **drawn.get("params", {})}}
-
-
-def weighted_map(ref: dict[str, Any], weight: float) -> dict[str, Any]:
-    """A map reference with its weighted parameters scaled by the adverb weight, inside their ranges."""
-    if weight == 1.0 or not ref.get("weighted"):
-        return ref
-    bounds = graph_params(ref["graph"])
-    params = dict(ref.get("params", {}))
-    for name in ref["weighted"]:
-        limits = bounds.get(name)
-        params[name] = weighted_map_value(params.get(name, 1.0), weight, limits[:2] if limits else None)
-    return {**ref, "params": params, "weighted": []}
 
 
 def _apply_adjective_coat(state: MaterialState, ctx: Context, adjective: Entry, words: Words) -> None:
