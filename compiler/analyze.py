@@ -117,7 +117,14 @@ def iter_states(doc: ast.Document, ctx: Context, diags: list[Diagnostic]) -> Ite
     are made: a caller that keeps no state keeps no tree."""
     pairs = attach_refinements(doc)  # may add W104 to the document's diagnostics
     diags += doc.diagnostics
-    return _states(pairs, {d.span.line for d in diags if d.is_error and d.span}, ctx, diags)
+    return _states(pairs, _error_lines(diags), ctx, diags)
+
+
+def _error_lines(diags: list[Diagnostic]) -> set[int]:
+    """The lines with an error (most documents have no diagnostic at all: no set comprehension run)."""
+    if not diags:
+        return set()
+    return {d.span.line for d in diags if d.is_error and d.span}
 
 
 def _states(
@@ -130,7 +137,8 @@ def _states(
         material, refinements = pairs.pop()
         if material.span.line in bad_lines:
             continue  # reported already; half-understood materials are not emitted
-        refinements = [r for r in refinements if r.span.line not in bad_lines]
+        if bad_lines and refinements:
+            refinements = [r for r in refinements if r.span.line not in bad_lines]
         for state in build_states(material, refinements, ctx, material_name(material, used), diags):
             _report_new(state.diagnostics, seen, diags)
             yield _variant_named(state, used)
@@ -199,6 +207,8 @@ def _material_groups(
 
 
 def sort_diagnostics(diags: list[Diagnostic]) -> list[Diagnostic]:
+    if len(diags) < 2:  # most documents: nothing to order (a new list all the same, as sorted gives)
+        return list(diags)
     return sorted(diags, key=lambda d: (d.span.line, d.span.col) if d.span else (0, 0))
 
 
