@@ -388,10 +388,28 @@ def _hide_maps(state: MaterialState, adjective: Entry, words: Words) -> None:
 
 
 def _apply_maps(state: MaterialState, ctx: Context, adjective: Entry, weight: float, words: Words) -> None:
-    for role, ref in adjective.get("maps", {}).items():
+    maps = adjective.get("maps", {})
+    for role, ref in maps.items():
+        if role == "normal" and len(maps) > 1 and _keeps_own_relief(state, ref):
+            continue
         drawn = _map_ref(weighted_map(ref, weight), ctx)
         state.maps[role] = _kept_params(state.maps.get(role), drawn)
         state.note(f"maps.{role}", ref["graph"], f"adjectives.{adjective.key}.maps (weight {weight:g})", words)
+
+
+def _keeps_own_relief(state: MaterialState, ref: dict[str, Any]) -> bool:
+    """Whether the noun's own relief stays ('distressed leather' keeps the leather grain): a material
+    shows one pattern per map, and a word drawing another relief over the pattern that names the
+    material (its noun's normal map) would leave scratched plastic, not leather. The word's other
+    maps still draw it (the scratches in the roughness); the provenance shows which map is whose."""
+    current = state.maps.get("normal")
+    steps = state.provenance.get("maps.normal", ())
+    return (
+        current is not None
+        and current.get("graph") != ref["graph"]
+        and bool(steps)
+        and steps[-1].rule.startswith("nouns.")
+    )
 
 
 def _kept_params(before: dict[str, Any] | None, drawn: dict[str, Any]) -> dict[str, Any]:

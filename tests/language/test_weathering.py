@@ -69,3 +69,18 @@ def test_less_faded_moves_back_toward_the_dye():
     result = compile_source("faded navy cotton\nless faded", "t.cnl", LEX)
     assert result.ok
     assert sum(result.materials[0]["params"]["base_color"]) < sum(faded)
+
+
+# ---------------------------------------------------------------- the noun's own relief stays
+
+
+@pytest.mark.parametrize("text", ["distressed aniline leather", "scratched leather", "battered cowhide leather"])
+def test_a_wear_word_keeps_the_leather_grain_and_shows_in_the_roughness(text):
+    m = material(text)
+    assert m["maps"]["normal"]["graph"] == "leather"
+    assert m["maps"]["roughness"]["graph"] == "scratched"
+
+
+def test_a_wear_word_on_a_material_without_its_own_relief_draws_its_own():
+    m = material("scratched walnut")
+    assert m["maps"]["normal"]["graph"] == "scratched"
