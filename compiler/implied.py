@@ -24,6 +24,7 @@ from .colour import linear_to_oklab
 from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
 from .spans import Span
+from .suggest import teaching
 from .tagged import NOTE_CODE, Candidate, Tagged
 
 __all__ = ["as_change", "implied_material", "starts_with_change"]
@@ -58,6 +59,16 @@ def implied_material(
     return implied, _note(said, written, [o for o in taught.suggestions if o != offer])
 
 
+def _apply_to_anything(said: Sequence[Tagged], lexicon: Lexicon) -> bool:
+    """Whether the words are describing words none of which is limited to some materials (gloss,
+    roughness and degree words: no colour, no `applies_to`)."""
+    readings = [c for w in said for c in w.candidates]
+    if any(c.tag == "COLOR" for c in readings):
+        return False
+    adjectives = [lexicon.entry("adjectives", c.key) for c in readings if c.tag == "ADJ"]
+    return bool(adjectives) and not any(a is None or a.get("applies_to") for a in adjectives)
+
+
 def _compares(text: str, lexicon: Lexicon) -> bool:
     """Whether the line has a comparison word ('than', 'als': the word formation rules), which the
     tagger read into its comparative and dropped."""
@@ -72,9 +83,16 @@ def _first_added_noun(
     """The noun of the first offer that only adds one (an offer that puts a noun in place of a known
     colour, 'teak' for 'teal', stays in the note as another choice: the colour is what was said);
     None when the first offer is a noun one edit from the colour and of its colour ('terracota', a
-    spelling the colour survey kept, is terracotta misspelt: the error offers it)."""
+    spelling the colour survey kept, is terracotta misspelt: the error offers it). Describing
+    words that apply to any material take an everyday noun first ('not glossy' = not glossy paint,
+    where the teaching offers the word's own example first: 'dull steel'); a word for some
+    materials keeps its example's ('very hammered' = very hammered copper, 'lightly brushed' =
+    lightly brushed aluminum)."""
     if offers and _misspelt_noun_of_that_colour(offers[0], said, lexicon):
         return None
+    if _apply_to_anything(said, lexicon):
+        everyday = {noun: k for k, noun in enumerate(teaching()["completions"]["nouns"])}  # most common first
+        offers = sorted(offers, key=lambda o: everyday.get(o.split()[-1], len(everyday)))
     for offer in offers:
         added = _added_noun(offer, said, tail, lexicon)
         if added is not None:
@@ -131,8 +149,6 @@ def _note(said: Sequence[Tagged], noun: str, others: Sequence[str]) -> Diagnosti
 def starts_with_change(text: str) -> bool:
     """Whether the line starts with a change phrase ('make it', 'turn it': teaching.toml
     [politeness] changes), then a space or a mark, after any other politeness ('now make it')."""
-    from .suggest import teaching
-
     table = teaching()["politeness"]
     said = " ".join(text.lower().split())
     while True:

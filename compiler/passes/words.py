@@ -403,11 +403,12 @@ def _keeps_own_relief(state: MaterialState, ref: dict[str, Any]) -> bool:
     material (its noun's normal map) would leave scratched plastic, not leather. The word's other
     maps still draw it (the scratches in the roughness); the provenance shows which map is whose."""
     current = state.maps.get("normal")
-    steps = state.provenance.get("maps.normal", ())
+    steps = state.provenance.get("maps.normal")
     return (
         current is not None
         and current.get("graph") != ref["graph"]
         and bool(steps)
+        and steps is not None
         and steps[-1].rule.startswith("nouns.")
     )
 

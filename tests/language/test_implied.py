@@ -182,3 +182,13 @@ def test_an_inline_comparative_before_a_colour_alone_implies_the_material_too(te
 def test_a_comparison_with_nothing_compared_keeps_its_error():
     result = compiled("paler than teal")
     assert not result.ok and [d.code for d in result.diagnostics if d.is_error] == ["E003"]
+
+
+@pytest.mark.parametrize(("text", "reading"), [("zero shine", "dull"), ("no gloss", "matte")])
+def test_no_and_zero_negate_and_a_gloss_word_alone_is_read_on_paint(text, reading):
+    result = compiled(text)
+    assert result.ok
+    assert f"read '{text}' as '{reading}' (the declared opposite of " in " ".join(notes(result))
+    assert [n for n in notes(result) if n.startswith("no material named")] == [
+        f"no material named: read '{text}' as '{text} paint'"
+    ]
