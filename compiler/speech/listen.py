@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from ..api import Result, compile_source
 from ..diagnostics import render_all
 from ..lexicon import Lexicon
+from ..said_refinement import refined
 from .recogniser import Hypothesis
 
 SOURCE_NAME = "<speech>"
@@ -62,12 +63,17 @@ class Listener:
         return Heard(hypothesis, True, (f"{said}: dropped '{dropped}'",))
 
     def _apply(self, hypothesis: Hypothesis, said: str) -> Heard:
-        source = self.source((hypothesis.text,))
-        result = compile_source(source, SOURCE_NAME, self.lexicon, self.seed)
+        """The first utterance starts the material; a later one refines it ('purple' after a
+        material is the change 'make it purple': cnlmc.said_refinement)."""
+        if self.lines:
+            source, result = refined(self.source(), hypothesis.text, self.lexicon, SOURCE_NAME, self.seed)
+        else:
+            source = hypothesis.text
+            result = compile_source(source, SOURCE_NAME, self.lexicon, self.seed)
         shown = tuple(render_all(result.diagnostics, source, SOURCE_NAME))
         if not result.ok or not result.materials:
             reason = "" if result.materials else " (it names no material yet: start with one, e.g. 'brushed aluminum')"
             return Heard(hypothesis, False, (f"{said}: not applied{reason}", *shown))
-        self.lines.append(hypothesis.text)
+        self.lines.append(source.rsplit("\n", 1)[-1])
         self.result = result
         return Heard(hypothesis, True, (f"{said}: line {len(self.lines)}", *shown))

@@ -20,6 +20,7 @@ from ..colour import linear_to_hex
 from ..diagnostics import Severity
 from ..explain import explain_material
 from ..lexicon import Lexicon
+from ..said_refinement import refined
 from .ar import ARFailed, MarkerComposer
 from .editor import EditorEngine
 from .exports import Exported, export
@@ -169,9 +170,9 @@ class StudioSession:
         words = " ".join(words.split())
         if not words:
             raise ValueError("type a refinement such as 'darker' or 'less grain'")
-        text = self.text.rstrip("\n") + "\n" + words
+        self.check_size(self.text.rstrip("\n") + "\n" + words)
+        text, trial = refined(self.text, words, self.lexicon, "<studio>")  # 'purple': 'make it purple'
         self.check_size(text)
-        trial = compile_source(text, "<studio>", self.lexicon)
         errors = [d.message for d in trial.diagnostics if d.severity == Severity.ERROR]
         if errors or not trial.materials:
             raise ValueError(f"'{words}' cannot refine this material: " + ("; ".join(errors) or "no material"))

@@ -169,6 +169,17 @@ async def test_refine_undo_redo(client: TestClient[Any, Any]) -> None:
     await socket.close()
 
 
+async def test_describing_words_said_as_a_refinement_change_the_material(client: TestClient[Any, Any]) -> None:
+    socket = await client.ws_connect("/ws")
+    await socket.receive_json()
+    first = await ask(socket, "edit", text=PHRASE)
+    purple = await ask(socket, "refine", words="purple")  # alone it would imply a material: purple paint
+    assert purple["text"] == PHRASE + "\nmake it purple"
+    assert len(purple["materials"]) == len(first["materials"]) == 1
+    assert purple["materials"][0]["hex"] != first["materials"][0]["hex"]
+    await socket.close()
+
+
 async def test_exports_are_the_clis_with_its_warnings(client: TestClient[Any, Any], tmp_path: Path) -> None:
     socket = await client.ws_connect("/ws")
     hello = await socket.receive_json()
