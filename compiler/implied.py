@@ -152,12 +152,18 @@ def starts_with_change(text: str) -> bool:
     table = teaching()["politeness"]
     said = " ".join(text.lower().split())
     while True:
-        if _starts_with_one_of(said, table["changes"]):
+        if _starts_with_one_of(said, table["changes"]) or _second_word_is_a_pronoun(said, table["pronouns"]):
             return True
         polite = _starts_with_one_of(said, table["leading"])
         if not polite:
             return False
         said = said[len(polite) :].lstrip(" ,!.:;")
+
+
+def _second_word_is_a_pronoun(said: str, pronouns: Sequence[str]) -> bool:
+    """'polish it', 'frost them a little': a pronoun for the material above after the first word."""
+    words = said.split()
+    return len(words) > 1 and words[1].strip(",.!;:") in pronouns
 
 
 def _starts_with_one_of(said: str, phrases: Sequence[str]) -> str:

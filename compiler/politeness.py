@@ -27,7 +27,8 @@ def without_politeness(
     """The line's words without the politeness at its edges, and its diagnostics without the
     unknown-word errors of the dropped words plus one note per dropped phrase. A leading phrase
     listed in `rewrites` ('give it' -> 'with', 'tone down the' -> 'less') leaves its word in its
-    place, tagged by `tag` (the lexicon's reading of that word)."""
+    place, tagged by `tag` (the lexicon's reading of that word); a pronoun after the first word
+    ('polish it') is read as the material above, the verb as its describing word."""
     table = teaching()["politeness"]
     marks = frozenset(table["marks"])
     rewrites: dict[str, str] = table["rewrites"]
@@ -47,18 +48,48 @@ def without_politeness(
                 break
             dropped.append(kept[:taken] if at_start else kept[-taken:])
             kept = kept[taken:] if at_start else kept[:-taken]
+    kept, pronoun, read_as = _without_pronoun(kept, table["pronouns"], tag)
+    if pronoun is not None:
+        dropped.append([pronoun])
     if not dropped:
         return diags, kept
-    spans = [w.span for run in dropped for w in run]
+    spans = [w.span for run in dropped for w in run] + read_as
     out = [d for d in diags if not _inside(d, spans)]  # their unknown words, stray marks, readings
     for k, run in enumerate(dropped):
         text = " ".join(w.text for w in run if w.text[:1].isalnum())
         if k == 0 and put is not None:
             note = f"read '{text}' as '{put.text}'"
+        elif run[0] is pronoun:
+            note = f"read '{text}' as the material above"
         else:
             note = f"read past '{text}': a phrase names the material only, so politeness is left out"
         out.append(Diagnostic(run[0].span.to(run[-1].span), Severity.NOTE, NOTE_CODE, note))
     return out, ([put] if put is not None else []) + kept
+
+
+def _without_pronoun(
+    kept: list[Tagged], pronouns: Sequence[str], tag: Callable[[str], Tagged | None] | None
+) -> tuple[list[Tagged], Tagged | None, list[Span]]:
+    """'polish it', 'sand them': a verb then a pronoun for the material above. The words without
+    the pronoun (the verb read as its describing word: 'sand' is sanded, not the material sand),
+    the pronoun, and the span whose errors go with the verb's reading."""
+    if len(kept) < 2 or kept[1].text.lower() not in pronouns:
+        return kept, None, []
+    verb = _participle(kept[0], tag)
+    return [verb or kept[0], *kept[2:]], kept[1], [verb.span] if verb is not None else []
+
+
+def _participle(word: Tagged, tag: Callable[[str], Tagged | None] | None) -> Tagged | None:
+    """The describing word a verb before 'it' names ('sand' -> sanded, 'wax' -> waxed, 'age' ->
+    aged, 'dye' -> dyed), tagged, in the verb's place; None when no such adjective is known."""
+    if tag is None:
+        return None
+    text = word.text.lower()
+    for form in (f"{text}ed", f"{text}d", f"{text[:-1]}ied", f"{text}{text[-1:]}ed"):
+        found = tag(form)
+        if found is not None and any(c.tag == "ADJ" for c in found.candidates):
+            return Tagged(found.text, word.span, tuple(c for c in found.candidates if c.tag == "ADJ"))
+    return None
 
 
 def _rewritten(run: Sequence[Tagged], word: Tagged | None) -> Tagged | None:

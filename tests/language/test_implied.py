@@ -192,3 +192,13 @@ def test_no_and_zero_negate_and_a_gloss_word_alone_is_read_on_paint(text, readin
     assert [n for n in notes(result) if n.startswith("no material named")] == [
         f"no material named: read '{text}' as '{text} paint'"
     ]
+
+
+def test_a_describing_word_then_a_pronoun_changes_the_material_above():
+    (walnut,) = params("walnut")
+    result = compiled("walnut\nsand it")  # 'sand' reads as sanded: the pronoun is the walnut
+    assert "read 'it' as the material above" in notes(result)
+    assert len(result.materials) == 1
+    (frosted,) = params("clear acrylic\nfrost them")
+    assert frosted["roughness"] > params("clear acrylic")[0]["roughness"]
+    assert walnut != result.materials[0]["params"]
