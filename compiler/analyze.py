@@ -10,6 +10,7 @@ from .default_name import name_words
 from .diagnostics import Diagnostic, warning
 from .document import iter_items
 from .ir import JSONDict, document_ir, material_ir
+from .lexicon import Lexicon
 from .params import Params
 from .passes.base import apply_noun
 from .passes.coats import apply_coat_clause
@@ -26,7 +27,7 @@ BUILD_PASSES = (apply_noun, apply_groups, apply_subsurface, apply_coat_clause, a
 FINAL_PASSES = (lay_conformal_coats, select_model, select_subsurface, check_values)
 
 
-def attach_refinements(doc: ast.Document) -> list[tuple[ast.Material, list[ast.Refinement]]]:
+def attach_refinements(doc: ast.Document, lexicon: Lexicon) -> list[tuple[ast.Material, list[ast.Refinement]]]:
     """Pair each material line with the refinement lines below it."""
     pairs: list[tuple[ast.Material, list[ast.Refinement]]] = []
     for item in doc.items:
@@ -35,8 +36,24 @@ def attach_refinements(doc: ast.Document) -> list[tuple[ast.Material, list[ast.R
         elif pairs:
             pairs[-1][1].append(item)
         else:
-            doc.diagnostics.append(orphan_refinement(item))
+            material = orphan_line(item, lexicon, doc.diagnostics)
+            if material is not None:
+                pairs.append((material, []))
     return pairs
+
+
+def orphan_line(item: ast.Item, lexicon: Lexicon, diags: list[Diagnostic]) -> ast.Material | None:
+    """A refinement line with no material above: a comparison of a colour describes its own
+    material ('paler blue': cnlmc.implied, with a note); any other gets W104."""
+    if isinstance(item, ast.Refinement) and item.items:
+        from .implied import first_line_comparison  # a first-line refinement is rare
+
+        found = first_line_comparison(item, lexicon)
+        if found is not None:
+            diags.append(found[1])
+            return found[0]
+    diags.append(orphan_refinement(item))
+    return None
 
 
 def orphan_refinement(item: ast.Item) -> Diagnostic:
@@ -115,7 +132,7 @@ def iter_states(doc: ast.Document, ctx: Context, diags: list[Diagnostic]) -> Ite
     diagnostics first, then each state's new ones as it is made (variants of one phrase repeat the
     same warnings: each is reported once). Each material's syntax tree is let go once its states
     are made: a caller that keeps no state keeps no tree."""
-    pairs = attach_refinements(doc)  # may add W104 to the document's diagnostics
+    pairs = attach_refinements(doc, ctx.lexicon)  # may add W104 to the document's diagnostics
     diags += doc.diagnostics
     return _states(pairs, _error_lines(diags), ctx, diags)
 
@@ -176,7 +193,7 @@ def _streamed_states(source: str, ctx: Context, diags: list[Diagnostic]) -> Iter
     seen: set[Diagnostic] = set()
     used: dict[str, int] = {}
     mark = 0
-    for material, refinements in _material_groups(iter_items(source, ctx.lexicon, diags), diags):
+    for material, refinements in _material_groups(iter_items(source, ctx.lexicon, diags), diags, ctx.lexicon):
         seen.update(diags[mark:])  # the parser's since the last material: a state repeating one is not added
         for state in build_states(material, refinements, ctx, material_name(material, used), diags):
             _report_new(state.diagnostics, seen, diags)
@@ -185,7 +202,7 @@ def _streamed_states(source: str, ctx: Context, diags: list[Diagnostic]) -> Iter
 
 
 def _material_groups(
-    items: Iterator[tuple[ast.Item, bool]], diags: list[Diagnostic]
+    items: Iterator[tuple[ast.Item, bool]], diags: list[Diagnostic], lexicon: Lexicon
 ) -> Iterator[tuple[ast.Material, list[ast.Refinement]]]:
     """Each material without an error on its line, with the error-free refinement lines below it,
     once the next material (or the end) is reached; a material with an error is left out with its
@@ -198,8 +215,11 @@ def _material_groups(
             if material is not None and material_ok:
                 yield material, refinements
             material, refinements, material_ok = item, [], not has_error
-        elif material is None:
+        elif material is None and has_error:
             diags.append(orphan_refinement(item))
+        elif material is None:
+            material = orphan_line(item, lexicon, diags)  # 'paler blue' first: its own material
+            material_ok = material is not None
         elif not has_error:
             refinements.append(item)
     if material is not None and material_ok:

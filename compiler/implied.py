@@ -27,7 +27,7 @@ from .spans import Span
 from .suggest import teaching
 from .tagged import NOTE_CODE, Candidate, Tagged
 
-__all__ = ["as_change", "implied_material", "starts_with_change"]
+__all__ = ["as_change", "first_line_comparison", "implied_material", "starts_with_change"]
 
 NOT_DESCRIBING = frozenset({"NAME", "OF", "NOUN", "OBJECT"})  # a line with one of these keeps its error
 
@@ -185,3 +185,34 @@ def as_change(material: ast.Material, words: Sequence[Tagged]) -> tuple[ast.Refi
     written = " ".join(w.text for w in said)
     message = f"read '{written}' as a change of the material above: its words apply to it"
     return change, Diagnostic(said[0].span.to(said[-1].span), Severity.NOTE, NOTE_CODE, message)
+
+
+def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
+    """'paler blue', 'a bit warmer grey' with no material above: a comparison as the first line
+    describes a material one step from its colour on the everyday noun colours go on ('paler blue'
+    = one step paler than blue paint), with a note; None for any other refinement (it keeps W104)."""
+    if not item.items or item.coat is not None or item.features or item.groups:
+        return None
+    if not isinstance(item.items[-1].target, ast.Colour):
+        return None
+    from .parser import ParseFailure, parse_line_shape
+    from .tagger import Tagger
+
+    start = item.span.start - (item.span.col - 1)  # the line's offset: its text is the whole line
+    words, diags = Tagger.of(lexicon).tag_line(item.text, item.span.line, start)
+    if diags or not words:
+        return None
+    noun = str(teaching()["completions"]["nouns"][0])
+    with_noun = [*words, _implied_noun(noun, words[-1])]
+    try:
+        shape, picks = parse_line_shape(with_noun, lexicon.caches.shapes)
+    except ParseFailure:
+        return None
+    material = shape.build(with_noun, picks, item.text)
+    if not isinstance(material, ast.Material):
+        return None
+    said = [w for w in words if w.text[:1].isalpha()]
+    written = " ".join(w.text for w in said)
+    message = f"no material named: read '{written}' as '{written} {noun}' (a comparison as the first line)"
+    hint = "name the material to choose another, or write the material first and this line below it"
+    return material, Diagnostic(said[0].span.to(said[-1].span), Severity.NOTE, NOTE_CODE, message, (hint,))

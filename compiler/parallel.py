@@ -34,12 +34,13 @@ from multiprocessing.connection import Connection, wait
 from typing import Any
 
 from . import ast
-from .analyze import base_name, build_states, orphan_refinement, unique_name
+from .analyze import base_name, build_states, orphan_line, orphan_refinement, unique_name
 from .diagnostics import Diagnostic
 from .document import parse_line
 from .interrupts import SIGNALS
 from .ir import EncodedMaterial, JSONDict, json_text, material_ir
 from .ir_check import check_material
+from .lexicon import Lexicon
 from .lines import LINE_END
 from .params import Params
 from .state import Context
@@ -266,7 +267,7 @@ def chunk_events(source: str, ctx: Context, number: int, offset: int, end: int |
     convention = ctx.settings.get("alpha_convention", Params.alpha_convention)
     rounded_optics = ctx.lexicon.caches.rounded_optics
     items = _items(source, number, offset, Tagger.of(ctx.lexicon), diags)
-    for material, refinements in _owned_groups(items, diags, end, first):
+    for material, refinements in _owned_groups(items, diags, end, first, ctx.lexicon):
         events += [(ADD, d) for d in diags[flushed:]]
         events.append((BEGIN,))
         flushed = len(diags)
@@ -325,7 +326,7 @@ def _item(
 
 
 def _owned_groups(
-    items: Iterator[tuple[ast.Item, bool]], diags: list[Diagnostic], end: int | None, first: bool
+    items: Iterator[tuple[ast.Item, bool]], diags: list[Diagnostic], end: int | None, first: bool, lexicon: Lexicon
 ) -> Iterator[tuple[ast.Material, list[ast.Refinement]]]:
     """analyze._material_groups over the materials whose line is before `end`: the chunk's
     leading lines up to its first material's, and their diagnostics, are dropped unless it is the
@@ -344,9 +345,13 @@ def _owned_groups(
             elif material is not None and material_ok:
                 yield material, refinements
             material, refinements, material_ok = item, [], not has_error
+        elif material is None and first and has_error:
+            diags.append(orphan_refinement(item))
+        elif material is None and first:
+            material = orphan_line(item, lexicon, diags)  # 'paler blue' first: its own material
+            material_ok = material is not None
         elif material is None:
-            if first:
-                diags.append(orphan_refinement(item))
+            pass  # before the chunk's first material: the chunk before reports it
         elif not has_error:
             refinements.append(item)
     if material is not None and material_ok:

@@ -202,3 +202,33 @@ def test_a_describing_word_then_a_pronoun_changes_the_material_above():
     (frosted,) = params("clear acrylic\nfrost them")
     assert frosted["roughness"] > params("clear acrylic")[0]["roughness"]
     assert walnut != result.materials[0]["params"]
+
+
+@pytest.mark.parametrize(
+    ("text", "step_from"), [("paler teal", "teal paint"), ("a bit warmer lavender", "lavender paint")]
+)
+def test_a_first_line_comparison_of_a_colour_is_its_own_material(text, step_from):
+    result = compiled(text)
+    assert result.ok and len(result.materials) == 1
+    assert [n for n in notes(result) if "first line" in n] == [
+        f"no material named: read '{text}' as '{text} paint' (a comparison as the first line)"
+    ]
+    assert result.materials[0]["params"] == compiled(f"{text} paint").materials[0]["params"]
+    assert result.materials[0]["params"] != compiled(step_from).materials[0]["params"]
+
+
+def test_a_comparison_below_a_material_still_refines_it_and_one_with_nothing_to_compare_warns():
+    assert len(compiled("red leather\npaler teal").materials) == 1
+    result = compiled("glossier")
+    assert not result.materials and [d.code for d in result.diagnostics] == ["W104"]
+
+
+def test_a_first_line_comparison_compiles_the_same_in_two_workers():
+    text = "paler teal\nglossier\n" + "red leather\npaler teal\n" * 700
+    one = compile_source(text, "t.cnl", LEX, keep_stages=False)
+    from cnlmc.api import compile_stream
+
+    two = compile_stream(text, "t.cnl", LEX, workers=2)
+    names = [m["name"] for m in two.materials]
+    assert names == [m["name"] for m in one.materials] and len(names) == 701
+    assert two.sorted_diagnostics() == one.diagnostics

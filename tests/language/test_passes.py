@@ -30,7 +30,7 @@ def run_until(pass_name: str, phrase: str, lexicon) -> MaterialState:
     doc = parse_document(phrase, lexicon, "fixture.cnl")
     assert not doc.diagnostics, [d.message for d in doc.diagnostics]
     ctx = Context(lexicon)
-    material, refinements = attach_refinements(doc)[0]
+    material, refinements = attach_refinements(doc, lexicon)[0]
     selection, variant = expand(material, "m", [])[0]
     state = MaterialState("m", phrase, selection, variant)
     stop = ORDER.index(pass_name)
