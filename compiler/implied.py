@@ -42,6 +42,9 @@ def implied_material(
         return None
     if any(w.unknown for w in words):
         return None
+    plating = _plating_alone(words, lexicon)
+    if plating is not None:
+        return plating
     main = [w for w in words if w.text[:1].isalpha()]
     with_at = next((i for i, w in enumerate(main) if any(c.tag == "WITH" for c in w.candidates)), len(main))
     said, tail = main[:with_at], main[with_at:]  # a 'with' clause may name a colour by a noun ('gold flakes')
@@ -57,6 +60,34 @@ def implied_material(
     at = words.index(last) + 1
     implied = [*words[:at], _implied_noun(key, last), *words[at:]]
     return implied, _note(said, written, [o for o in taught.suggestions if o != offer])
+
+
+def _plating_alone(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], Diagnostic] | None:
+    """'chrome-plated', 'gold plated': a metal and a describing word that puts it on the surface
+    (colour_target = 'material'), with nothing under it: the surface its example names ('gold
+    plated steel': steel), with a note."""
+    main = [w for w in words if w.text[:1].isalpha()]
+    if len(main) < 2 or main[-1] is not words[-1]:
+        return None
+    metals = [c for c in main[-2].candidates if c.tag == "NOUN"]
+    entries = [lexicon.entry("adjectives", c.key) for c in main[-1].candidates if c.tag == "ADJ"]
+    plating = next((e for e in entries if e is not None and e.get("colour_target") == "material"), None)
+    metal = lexicon.entry("nouns", metals[0].key) if metals else None
+    if plating is None or metal is None or metal.get("model") != "conductor":
+        return None
+    example = str(plating.get("example", "")).split()
+    under = lexicon.entry("nouns", example[-1]) if example else None
+    if under is None:
+        return None
+    written = " ".join(w.text for w in main)
+    note = Diagnostic(
+        main[0].span.to(main[-1].span),
+        Severity.NOTE,
+        NOTE_CODE,
+        f"no material named: read '{written}' as '{written} {under.key}'",
+        ("name the surface under the plating to choose another, e.g. 'gold plated brass'",),
+    )
+    return [*words, _implied_noun(under.key, words[-1])], note
 
 
 def _apply_to_anything(said: Sequence[Tagged], lexicon: Lexicon) -> bool:

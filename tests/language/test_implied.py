@@ -232,3 +232,16 @@ def test_a_first_line_comparison_compiles_the_same_in_two_workers():
     names = [m["name"] for m in two.materials]
     assert names == [m["name"] for m in one.materials] and len(names) == 701
     assert two.sorted_diagnostics() == one.diagnostics
+
+
+@pytest.mark.parametrize("text", ["copper-plated", "silver plated", "Chrome Plated"])
+def test_a_plating_alone_is_on_its_examples_surface(text):
+    result = compiled(text)
+    assert result.ok
+    written = " ".join(text.replace("-", " ").split())
+    assert any(n == f"no material named: read '{written}' as '{written} steel'" for n in notes(result)), notes(result)
+    assert result.materials[0]["params"] == compiled(f"{written} steel").materials[0]["params"]
+
+
+def test_a_plating_word_after_a_noun_that_is_not_a_metal_keeps_its_error():
+    assert not compiled("walnut plated").ok
