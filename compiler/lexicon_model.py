@@ -166,8 +166,9 @@ class LexiconCaches:
     - mistakes: parser failure key -> the friendly message learned from grammar/bad_examples.toml
       (None until a line first fails to parse; mistakes.known_mistake)
     - colour_phrases: (phrase, CIELAB) of every colour and shade+colour (the LSP's colour picker)
-    - effect_rules: (rule, where the effect list is, effect index, weight) -> the provenance text
-      of that lexicon effect (passes/words.py)
+    - adjective_plans: (adjective key, noun key) -> the adjective's effect list on that noun, each
+      formula read once for the material and for a coat, with its provenance texts by adverb
+      weight (passes/words.py: AdjectivePlan)
     - rounded_optics: (noun key, parameter) -> the noun's list value rounded for the IR (ir.py)
     - word_formation: the rules of word_formation*.toml, compiled on first use (cnlmc.word_formation)
     - stage_orders: the describing groups' (kind, adjective key, has a colour) -> the canonical order
@@ -188,7 +189,7 @@ class LexiconCaches:
         self.suggestion_index: FormIndex | None = None
         self.shapes = ShapeCache()
         self.mistakes: dict[FailureKey, Mistake] | None = None
-        self.effect_rules: dict[tuple[str, str, int, float], str] = {}
+        self.adjective_plans: dict[tuple[str, str], Any] = {}
         self.colour_phrases: tuple[tuple[str, tuple[float, float, float]], ...] | None = None
         self.rounded_optics: dict[tuple[str, str], list[float]] = {}
         self.word_formation: WordFormation | None = None

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from types import MappingProxyType
-from typing import Any
+from typing import Any, NamedTuple
 
 from .. import ast
 from ..degrees import compose_weights, weighted_formula
@@ -174,17 +174,14 @@ def apply_adjective(
     if group.colours:  # "very dark brushed": the adverb stands before, and modifies, the colour
         weight, colour_weight = 1.0, weight
         words = (word,)
-    holder = state.coat if target == "coat" and state.coat is not None else state.params
-    rule, data = f"adjectives.{adjective.key}", adjective.data
-    where, effects = effect_source(adjective, state)
-    if (
-        not effects
-        and not group.colours
-        and not any(data.get(k) for k in ("maps", "coat", "material", "hides", "subsurface"))
-    ):
+    plan, data = adjective_plan(adjective, noun_of(state), ctx.lexicon.caches), adjective.data
+    holder, effects = state.params, plan.on_base
+    if target == "coat" and state.coat is not None:
+        holder, effects = state.coat, plan.on_coat
+    if plan.changes_nothing and not group.colours:
         _note_unchanged_look(state, word)
-    for index, effect in enumerate(effects):
-        _apply_effect(state, ctx, holder, effect, weight, (rule, where, index), words)
+    for effect in effects:
+        _apply_effect(state, ctx, holder, effect, weight, words)
     if data.get("material"):
         _apply_material(state, ctx, adjective, words)
     if data.get("hides"):
@@ -231,10 +228,13 @@ def effects_for(adjective: Entry, state: MaterialState) -> list[Effect]:
 def effect_source(adjective: Entry, state: MaterialState) -> tuple[str, list[Effect]]:
     """effects_for, with where in the entry the list is ('on.<noun>', 'on.<class>' or 'effects'); a
     transparent noun of another class (plexiglass: a plastic whose model is glass) takes 'on.glass'."""
+    return _effect_list(adjective, noun_of(state))
+
+
+def _effect_list(adjective: Entry, noun: Entry) -> tuple[str, list[Effect]]:
     data = adjective.data
     on = data.get("on")
     if on:
-        noun = noun_of(state)
         for name in (noun.key, noun.data.get("class"), noun.data.get("model")):
             if on.get(name):
                 return f"on.{name}", on[name]
@@ -296,39 +296,100 @@ def _why_it_wins(first_stage: str, last_stage: str, first: str, last: str) -> st
 
 
 def _apply_effect(
-    state: MaterialState, ctx: Context, holder: Holder, effect: Effect, weight: float, place: EffectPlace, words: Words
+    state: MaterialState, ctx: Context, holder: Holder, effect: EffectPlan, weight: float, words: Words
 ) -> None:
-    rule, param = place[0], effect["param"]
-    if param == "model":
-        _switch_kind(state, effect["value"], rule, words)
+    if effect.param == "model":
+        _switch_kind(state, effect.effect["value"], effect.place[0], words)
         return
-    current = holder.get(param, PARAM_DEFAULTS.get(param, 0.0))
-    bounds = (PARAM_BOUNDS if holder is state.params else COAT_BOUNDS).get(param)
-    degree = param in DEGREE_PARAMS
-    value = weighted_formula(effect["op"], current, effect.get("value"), weight, effect.get("amount"), bounds, degree)
-    holder[param] = value
-    name = param if holder is state.params else f"coat.{param}"
-    rule = _effect_rule(ctx.lexicon.caches, place, effect, weight)
-    state.note(name, value, rule, words)
-    if param == "roughness" and holder is state.params:
-        move_sigma(state, ctx, effect, weight, rule, words, (current, value))
+    current = holder.get(effect.param, effect.default)
+    value = weighted_formula(effect.op, current, effect.value, weight, effect.amount, effect.bounds, effect.degree)
+    holder[effect.param] = value
+    rule = _effect_rule(effect, weight)
+    state.note(effect.name, value, rule, words)
+    if effect.moves_sigma:
+        move_sigma(state, ctx, effect.effect, weight, rule, words, (current, value))
 
 
 EffectPlace = tuple[str, str, int]  # (rule, where the effect list is in the entry, index in it)
 
 
-def _effect_rule(caches: LexiconCaches, place: EffectPlace, effect: Effect, weight: float) -> str:
+class EffectPlan(NamedTuple):
+    """One formula of an adjective's effect list for one holder (the material's parameters or its
+    coat's), read once per lexicon: what _apply_effect would otherwise look up for every phrase."""
+
+    effect: Effect  # the lexicon's formula itself (move_sigma and the rule text read it)
+    param: str
+    op: Any
+    value: Any
+    amount: Any
+    default: Any  # what the formula starts from when the holder lacks the parameter
+    bounds: tuple[float, float] | None  # where the weighted formula saturates
+    degree: bool  # a degree scale, whose set levels intensify ("very glossy")
+    name: str  # the provenance name: the parameter, or 'coat.<parameter>' on a coat
+    place: EffectPlace
+    moves_sigma: bool  # a roughness formula on the material moves the Oren-Nayar sigma too
+    rules: dict[float, str]  # adverb weight -> the provenance text (_effect_rule)
+
+
+class AdjectivePlan(NamedTuple):
+    """What apply_adjective reads from one adjective on one noun, once per lexicon
+    (LexiconCaches.adjective_plans): the effect list effect_source picks, planned for each holder."""
+
+    adjective: Entry  # the entries it was read from
+    noun: Entry
+    on_base: tuple[EffectPlan, ...]
+    on_coat: tuple[EffectPlan, ...]
+    changes_nothing: bool  # no formula, map, coat, material, hidden map or medium: _note_unchanged_look
+
+
+def adjective_plan(adjective: Entry, noun: Entry, caches: LexiconCaches) -> AdjectivePlan:
+    plans = caches.adjective_plans
+    plan: AdjectivePlan | None = plans.get((adjective.key, noun.key))
+    if plan is None or plan.adjective is not adjective or plan.noun is not noun:
+        where, effects = _effect_list(adjective, noun)
+        rule, data = f"adjectives.{adjective.key}", adjective.data
+        if len(plans) >= LexiconCaches.MAX_ENTRIES:
+            plans.clear()
+        plan = plans[(adjective.key, noun.key)] = AdjectivePlan(
+            adjective,
+            noun,
+            tuple(_effect_plan(effect, (rule, where, i), on_coat=False) for i, effect in enumerate(effects)),
+            tuple(_effect_plan(effect, (rule, where, i), on_coat=True) for i, effect in enumerate(effects)),
+            not effects and not any(data.get(k) for k in ("maps", "coat", "material", "hides", "subsurface")),
+        )
+    return plan
+
+
+def _effect_plan(effect: Effect, place: EffectPlace, on_coat: bool) -> EffectPlan:
+    param = effect["param"]
+    if param == "model":  # a switch of kind: _switch_kind reads the value and the rule only
+        return EffectPlan(effect, param, None, None, None, None, None, False, param, place, False, {})
+    return EffectPlan(
+        effect,
+        param,
+        effect["op"],
+        effect.get("value"),
+        effect.get("amount"),
+        PARAM_DEFAULTS.get(param, 0.0),
+        (COAT_BOUNDS if on_coat else PARAM_BOUNDS).get(param),
+        param in DEGREE_PARAMS,
+        f"coat.{param}" if on_coat else param,
+        place,
+        param == "roughness" and not on_coat,
+        {},
+    )
+
+
+def _effect_rule(effect: EffectPlan, weight: float) -> str:
     """'adjectives.brushed: roughness *= 1.2 (weight 0.5)', made once per lexicon effect and weight."""
-    rule = place[0]
     if not weight > 0:  # -0.0 would share 0.0's entry but prints differently; NaN never matches
-        return f"{rule}: {describe(effect, weight)}"
-    key = (*place, weight)
-    memo = caches.effect_rules
-    found = memo.get(key)
+        return f"{effect.place[0]}: {describe(effect.effect, weight)}"
+    memo = effect.rules
+    found = memo.get(weight)
     if found is None:
         if len(memo) >= LexiconCaches.MAX_ENTRIES:
             memo.clear()
-        found = memo[key] = f"{rule}: {describe(effect, weight)}"
+        found = memo[weight] = f"{effect.place[0]}: {describe(effect.effect, weight)}"
     return found
 
 
