@@ -169,6 +169,7 @@ class LexiconCaches:
     - adjective_plans: (adjective key, noun key) -> the adjective's effect list on that noun, each
       formula read once for the material and for a coat, with its provenance texts by adverb
       weight (passes/words.py: AdjectivePlan)
+    - subsurface_tables: adjective key -> its `subsurface` table or None (passes/subsurface.py)
     - rounded_optics: (noun key, parameter) -> the noun's list value rounded for the IR (ir.py)
     - word_formation: the rules of word_formation*.toml, compiled on first use (cnlmc.word_formation)
     - stage_orders: the describing groups' (kind, adjective key, has a colour) -> the canonical order
@@ -190,6 +191,7 @@ class LexiconCaches:
         self.shapes = ShapeCache()
         self.mistakes: dict[FailureKey, Mistake] | None = None
         self.adjective_plans: dict[tuple[str, str], Any] = {}
+        self.subsurface_tables: dict[str, dict[str, Any] | None] = {}
         self.colour_phrases: tuple[tuple[str, tuple[float, float, float]], ...] | None = None
         self.rounded_optics: dict[tuple[str, str], list[float]] = {}
         self.word_formation: WordFormation | None = None

@@ -43,21 +43,29 @@ def apply_subsurface(state: MaterialState, ctx: Context) -> MaterialState:
     if medium is not None:
         state.record("subsurface", dict(medium), f"nouns.{noun.key}", (noun_word(state),), noun.data.get("source"))
     for key, word in state.applied:
-        adjective = ctx.lexicon.require("adjectives", key)
-        if adjective.get("subsurface"):
-            _apply_word(state, adjective, word)
+        table = _subsurface_table(ctx, key)
+        if table:
+            _apply_word(state, key, table, word)
     return state
 
 
-def _apply_word(state: MaterialState, adjective: Entry, word: ast.Word) -> None:
-    table: dict[str, Any] = adjective.get("subsurface")
+def _subsurface_table(ctx: Context, key: str) -> dict[str, Any] | None:
+    """The adjective's `subsurface` table, or None; read once per lexicon and key
+    (LexiconCaches.subsurface_tables): most applied words have none."""
+    tables = ctx.lexicon.caches.subsurface_tables
+    if key not in tables:
+        tables[key] = ctx.lexicon.require("adjectives", key).get("subsurface")
+    return tables[key]
+
+
+def _apply_word(state: MaterialState, key: str, table: dict[str, Any], word: ast.Word) -> None:
     if state.kind in ("conductor", "glass"):
         if state.kind == "conductor":
             state.diagnostics.append(_no_light_in(state, word))
         return
     current = state.params.get("subsurface")
     medium = _changed(current, table, state) if isinstance(current, dict) else _new(table, state)
-    state.record("subsurface", medium, f"adjectives.{adjective.key}.subsurface", (word,))
+    state.record("subsurface", medium, f"adjectives.{key}.subsurface", (word,))
 
 
 def _changed(current: Medium, table: dict[str, Any], state: MaterialState) -> Medium:
