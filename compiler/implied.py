@@ -48,6 +48,8 @@ def implied_material(
     main = [w for w in words if w.text[:1].isalpha()]
     with_at = next((i for i, w in enumerate(main) if any(c.tag == "WITH" for c in w.candidates)), len(main))
     said, tail = main[:with_at], main[with_at:]  # a 'with' clause may name a colour by a noun ('gold flakes')
+    if said and not tail and _describes_after_a_noun(said):
+        return _as_described(words, said, lexicon)
     if not said or any(c.tag in NOT_DESCRIBING for w in said for c in w.candidates):
         return None
     if any(c.tag == "REFINE" for w in said for c in w.candidates) and _compares(text, lexicon):
@@ -60,6 +62,43 @@ def implied_material(
     at = words.index(last) + 1
     implied = [*words[:at], _implied_noun(key, last), *words[at:]]
     return implied, _note(said, written, [o for o in taught.suggestions if o != offer])
+
+
+def _describes_after_a_noun(said: Sequence[Tagged]) -> bool:
+    """'satin black', 'terracotta orange': a word that is a noun and also a describing word (a
+    finish, a colour), then describing words: read as describing words all."""
+    first, rest = said[0], said[1:]
+    return (
+        bool(rest)
+        and any(c.tag == "NOUN" for c in first.candidates)
+        and any(c.tag in ("ADJ", "COLOR") for c in first.candidates)
+        and all(c.tag in ("ADJ", "COLOR", "SHADE", "ADV") for w in rest for c in w.candidates)
+        and any(c.tag == "COLOR" for c in rest[-1].candidates)  # it ends in a colour: 'satin black'
+    )
+
+
+def _as_described(
+    words: Sequence[Tagged], said: Sequence[Tagged], lexicon: Lexicon
+) -> tuple[list[Tagged], Diagnostic] | None:
+    """The words with their noun readings left out and the first everyday noun after them
+    ('satin black' = satin black paint), when that parses; None otherwise."""
+    from .parser import ParseFailure, parse_line_shape
+
+    everyday = [str(n) for n in teaching()["completions"]["nouns"]]
+    noun = everyday[0]
+    described = [
+        Tagged(w.text, w.span, tuple(c for c in w.candidates if c.tag != "NOUN"), w.unknown, w.implied_by)
+        if w is said[0]
+        else w
+        for w in words
+    ]
+    with_noun = [*described, _implied_noun(noun, said[-1])]
+    try:
+        parse_line_shape(with_noun, lexicon.caches.shapes)
+    except ParseFailure:
+        return None
+    written = " ".join(w.text for w in said)
+    return with_noun, _note(said, noun, [f"{written} {other}" for other in everyday[1:3]])
 
 
 def _plating_alone(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], Diagnostic] | None:

@@ -245,3 +245,11 @@ def test_a_plating_alone_is_on_its_examples_surface(text):
 
 def test_a_plating_word_after_a_noun_that_is_not_a_metal_keeps_its_error():
     assert not compiled("walnut plated").ok
+
+
+@pytest.mark.parametrize("text", ["satin navy", "terracotta red", "ivory white"])
+def test_a_word_that_is_a_noun_and_a_colour_or_finish_then_colours_describes_paint(text):
+    result = compiled(text)
+    assert result.ok
+    assert f"no material named: read '{text}' as '{text} paint'" in notes(result)
+    assert len(result.materials) == 1 and result.materials[0]["model"]["base"] != "conductor"
