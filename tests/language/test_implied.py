@@ -234,7 +234,7 @@ def test_a_first_line_comparison_compiles_the_same_in_two_workers():
     assert two.sorted_diagnostics() == one.diagnostics
 
 
-@pytest.mark.parametrize("text", ["copper-plated", "silver plated", "Chrome Plated"])
+@pytest.mark.parametrize("text", ["copper-plated", "silver plated", "Chrome Plated", "brass-clad"])
 def test_a_plating_alone_is_on_its_examples_surface(text):
     result = compiled(text)
     assert result.ok
