@@ -64,16 +64,18 @@ def implied_material(
     return implied, _note(said, written, [o for o in taught.suggestions if o != offer])
 
 
+DESCRIBING = ("ADJ", "COLOR", "SHADE", "ADV")
+
+
 def _describes_after_a_noun(said: Sequence[Tagged]) -> bool:
-    """'satin black', 'terracotta orange': a word that is a noun and also a describing word (a
-    finish, a colour), then describing words: read as describing words all."""
-    first, rest = said[0], said[1:]
+    """'satin black', 'terracotta orange', 'matte, silver grey': words each of which describes (a
+    finish, a colour), one of them a noun too, ending in a colour: read as describing words all."""
     return (
-        bool(rest)
-        and any(c.tag == "NOUN" for c in first.candidates)
-        and any(c.tag in ("ADJ", "COLOR") for c in first.candidates)
-        and all(c.tag in ("ADJ", "COLOR", "SHADE", "ADV") for w in rest for c in w.candidates)
-        and any(c.tag == "COLOR" for c in rest[-1].candidates)  # it ends in a colour: 'satin black'
+        len(said) > 1
+        and any(c.tag == "NOUN" for w in said[:-1] for c in w.candidates)
+        and all(any(c.tag in DESCRIBING for c in w.candidates) for w in said)
+        and all(c.tag in (*DESCRIBING, "NOUN") for w in said for c in w.candidates)
+        and any(c.tag == "COLOR" for c in said[-1].candidates)  # it ends in a colour: 'satin black'
     )
 
 
@@ -88,7 +90,7 @@ def _as_described(
     noun = everyday[0]
     described = [
         Tagged(w.text, w.span, tuple(c for c in w.candidates if c.tag != "NOUN"), w.unknown, w.implied_by)
-        if w is said[0]
+        if any(w is s for s in said)
         else w
         for w in words
     ]

@@ -90,4 +90,7 @@ def _agrees(particular: Sequence[float], basic: Sequence[float], basic_key: str)
 def _note(first: ast.Colour, second: ast.Colour) -> Diagnostic:
     a, b = first.words[-1].text, second.words[-1].text
     span = first.span.to(second.span)
-    return Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read '{a} {b}' as the colour '{a}' (a {b}), not two colours")
+    article = "an" if b[:1].lower() in "aeiou" else "a"  # 'an orange', 'a grey'
+    return Diagnostic(
+        span, Severity.NOTE, NOTE_CODE, f"read '{a} {b}' as the colour '{a}' ({article} {b}), not two colours"
+    )

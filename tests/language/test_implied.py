@@ -253,3 +253,16 @@ def test_a_word_that_is_a_noun_and_a_colour_or_finish_then_colours_describes_pai
     assert result.ok
     assert f"no material named: read '{text}' as '{text} paint'" in notes(result)
     assert len(result.materials) == 1 and result.materials[0]["model"]["base"] != "conductor"
+
+
+def test_describing_words_with_a_colour_that_is_also_a_noun_describe_paint_after_a_negation():
+    result = compiled("glossy, certainly not metallic, silver-grey")
+    assert result.ok and len(result.materials) == 1
+    assert result.materials[0]["model"]["base"] != "conductor"
+    assert any(n.startswith("read 'silver grey' as the colour 'silver'") for n in notes(result))
+
+
+def test_the_colour_compound_note_says_an_before_a_vowel():
+    assert "read 'terracotta orange' as the colour 'terracotta' (an orange), not two colours" in notes(
+        compiled("terracotta orange paint")
+    )
