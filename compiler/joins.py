@@ -718,7 +718,8 @@ def _feature_first(out: list[Tagged], diags: list[Diagnostic], lexicon: Lexicon,
     said = " ".join(t.text for t in words)
     typed = (*own, noun) if noun.implied_by is None else own  # 'fine grain powder coating': no 'steel' typed
     named = " ".join(t.text for t in typed)
-    note = f"read '{said} {named}' as '{named} {with_text} {said}' (a feature named before the material)"
+    as_clause = " ".join(_feature_noun(t, entry.key) if t is feature else t.text for t in words)
+    note = f"read '{said} {named}' as '{named} {with_text} {as_clause}' (a feature named before the material)"
     diags.append(Diagnostic(words[0].span.to(noun.span), Severity.NOTE, NOTE_CODE, note))
     at, col = noun.span.end, noun.span.col + noun.span.end - noun.span.start  # the clause's 'with': at the noun's end
     said_span = words[0].span.to(words[-1].span)
@@ -728,6 +729,12 @@ def _feature_first(out: list[Tagged], diags: list[Diagnostic], lexicon: Lexicon,
         w = rest[0].span
         joint = [Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), _AND, implied_by=said_span)]
     out[start:] = [*own, noun, with_word, *words, *joint, *rest]
+
+
+def _feature_noun(word: Tagged, key: str) -> str:
+    """How the note names a feature said as a participle: 'marbled', 'speckled' -> its own noun
+    ('veins', 'speckles'); a noun form stays as written ('grain', 'gold vein')."""
+    return key if word.text.lower().endswith("ed") else word.text
 
 
 def _is_joint(word: Tagged) -> bool:

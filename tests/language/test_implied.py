@@ -266,3 +266,12 @@ def test_the_colour_compound_note_says_an_before_a_vowel():
     assert "read 'terracotta orange' as the colour 'terracotta' (an orange), not two colours" in notes(
         compiled("terracotta orange paint")
     )
+
+
+def test_marbled_is_the_veins_feature_and_the_note_names_it_so():
+    result = compiled("marbled white paper")
+    assert result.ok
+    assert "read 'marbled white paper' as 'white paper with veins' (a feature named before the material)" in notes(
+        result
+    )
+    assert {ref["graph"] for ref in result.materials[0]["maps"].values()} == {"marble"}
