@@ -120,15 +120,8 @@ def _plating_alone(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagg
     under = lexicon.entry("nouns", example[-1]) if example else None
     if under is None:
         return None
-    written = " ".join(w.text for w in main)
-    note = Diagnostic(
-        main[0].span.to(main[-1].span),
-        Severity.NOTE,
-        NOTE_CODE,
-        f"no material named: read '{written}' as '{written} {under.key}'",
-        ("name the surface under the plating to choose another, e.g. 'gold plated brass'",),
-    )
-    return [*words, _implied_noun(under.key, words[-1])], note
+    hint = "name the surface under the plating to choose another, e.g. 'gold plated brass'"
+    return [*words, _implied_noun(under.key, words[-1])], _note(main, under.key, [], hint=hint)
 
 
 def _apply_to_anything(said: Sequence[Tagged], lexicon: Lexicon) -> bool:
@@ -210,12 +203,18 @@ def _implied_noun(noun: str, last: Tagged) -> Tagged:
     )
 
 
-def _note(said: Sequence[Tagged], noun: str, others: Sequence[str]) -> Diagnostic:
+def _note(said: Sequence[Tagged], noun: str, others: Sequence[str], why: str = "", hint: str = "") -> Diagnostic:
+    """N101 'no material named: read X as X NOUN', with the other offers (or `hint`) to choose from."""
     written = " ".join(w.text for w in said)
     choose = f": {', '.join(repr(o) for o in others[:2])}" if others else ""
-    message = f"no material named: read '{written}' as '{written} {noun}'"
-    hint = f"name the material to choose another{choose}"
-    return Diagnostic(said[0].span.to(said[-1].span), Severity.NOTE, NOTE_CODE, message, (hint,))
+    message = f"no material named: read '{written}' as '{written} {noun}'{why}"
+    return Diagnostic(
+        said[0].span.to(said[-1].span),
+        Severity.NOTE,
+        NOTE_CODE,
+        message,
+        (hint or f"name the material to choose another{choose}",),
+    )
 
 
 def starts_with_change(text: str) -> bool:
@@ -229,22 +228,20 @@ def starts_with_change(text: str) -> bool:
         polite = _starts_with_one_of(said, table["leading"])
         if not polite:
             return False
-        said = said[len(polite) :].lstrip(" ,!.:;")
+        said = said[len(polite) :].lstrip(" " + "".join(table["marks"]))
 
 
 def _second_word_is_a_pronoun(said: str, pronouns: Sequence[str]) -> bool:
     """'polish it', 'frost them a little': a pronoun for the material above after the first word."""
     words = said.split()
-    return len(words) > 1 and words[1].strip(",.!;:") in pronouns
+    return len(words) > 1 and words[1].strip("".join(teaching()["politeness"]["marks"])) in pronouns
 
 
 def _starts_with_one_of(said: str, phrases: Sequence[str]) -> str:
     """The longest of the phrases the text starts with (then a space, a mark or its end), or ''."""
-    found = [p for p in phrases if said.startswith(p) and said[len(p) : len(p) + 1] in ("", " ", *MARKS)]
+    ends = ("", " ", *teaching()["politeness"]["marks"])
+    found = [p for p in phrases if said.startswith(p) and said[len(p) : len(p) + 1] in ends]
     return max(found, key=len, default="")
-
-
-MARKS = (",", "!", ".", ":", ";")
 
 
 def as_change(material: ast.Material, words: Sequence[Tagged]) -> tuple[ast.Refinement, Diagnostic]:
@@ -284,7 +281,5 @@ def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.M
     if not isinstance(material, ast.Material):
         return None
     said = [w for w in words if w.text[:1].isalpha()]
-    written = " ".join(w.text for w in said)
-    message = f"no material named: read '{written}' as '{written} {noun}' (a comparison as the first line)"
     hint = "name the material to choose another, or write the material first and this line below it"
-    return material, Diagnostic(said[0].span.to(said[-1].span), Severity.NOTE, NOTE_CODE, message, (hint,))
+    return material, _note(said, noun, [], why=" (a comparison as the first line)", hint=hint)

@@ -9,10 +9,9 @@ from __future__ import annotations
 
 from .api import Result, compile_source
 from .lexicon import Lexicon
+from .suggest import teaching
 
-__all__ = ["CHANGE_PHRASE", "refined"]
-
-CHANGE_PHRASE = "make it"
+__all__ = ["refined"]
 
 
 def refined(document: str, words: str, lexicon: Lexicon, name: str, seed: int = 0) -> tuple[str, Result]:
@@ -21,6 +20,6 @@ def refined(document: str, words: str, lexicon: Lexicon, name: str, seed: int = 
     text = f"{base}\n{words}"
     trial = compile_source(text, name, lexicon, seed)
     if len(trial.materials) > len(compile_source(base, name, lexicon, seed).materials):
-        text = f"{base}\n{CHANGE_PHRASE} {words}"
+        text = f"{base}\n{teaching()['politeness']['changes'][0]} {words}"  # 'make it': the first listed
         trial = compile_source(text, name, lexicon, seed)
     return text, trial
