@@ -90,9 +90,20 @@ def _failed_line(
     """The taught error of a line that does not parse, or the line read with its implied material
     when it only describes one ('matte black'), or as a change of the material above when it
     starts with a change phrase ('make it blue'): cnlmc.implied."""
+    from .hedges import finish_dropped, read_past, reread, with_implied
     from .implied import as_change, implied_material, starts_with_change
     from .teach import teach_syntax_error
 
+    hedged, notes = reread(words, lexicon)  # 'a touch of sheen' = 'slightly sheen'
+    for attempt in _rereadings(hedged, notes, with_implied(hedged) or finish_dropped(hedged, lexicon)):
+        node = _parsed(attempt[0], text, lexicon)
+        if node is not None:
+            diags[:] = [d for d in diags if not read_past(d, attempt[1])]  # 'loads' of 'loads of'
+            diags.extend(attempt[1])
+            return node
+    if notes:  # still no parse: the rest reads the words as reread, and says so
+        words, failure = hedged, _failure_of(hedged, lexicon) or failure
+        diags.extend(notes)
     taught = teach_syntax_error(_syntax_error(failure, words, lexicon), words, lexicon)
     implied = implied_material(taught, words, lexicon, text)
     if implied is not None:
@@ -110,6 +121,34 @@ def _failed_line(
             diags.append(note)
             return material
     diags.append(taught)
+    return None
+
+
+def _rereadings(
+    hedged: list[Tagged], notes: list[Diagnostic], clause: tuple[list[Tagged], Diagnostic] | None
+) -> Iterator[tuple[list[Tagged], list[Diagnostic]]]:
+    """The line read with its quantity phrases as degrees (when it had any), then as a clause with
+    an implied 'with' ('a subtle sheen') or as the comparatives of a finish ('a glossier finish'):
+    each with its notes (cnlmc.hedges)."""
+    if notes:
+        yield hedged, notes
+    if clause is not None:
+        yield clause[0], [*notes, clause[1]]
+
+
+def _parsed(words: list[Tagged], text: str, lexicon: Lexicon) -> ast.Item | None:
+    try:
+        shape, picks = parse_line_shape(words, lexicon.caches.shapes)
+    except ParseFailure:
+        return None
+    return shape.build(words, picks, text)
+
+
+def _failure_of(words: list[Tagged], lexicon: Lexicon) -> ParseFailure | None:
+    try:
+        parse_line_shape(words, lexicon.caches.shapes)
+    except ParseFailure as failure:
+        return failure
     return None
 
 

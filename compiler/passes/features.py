@@ -15,6 +15,7 @@ from typing import Any
 from .. import ast
 from ..colour import linear_to_oklab
 from ..diagnostics import Diagnostic, Severity, warning
+from ..formulas import apply_op
 from ..graphs import graph_params
 from ..lexicon import Entry
 from ..lexicon_model import normalise
@@ -60,6 +61,10 @@ def apply_feature(state: MaterialState, ctx: Context, entry: Entry, clause: ast.
         degree = _shade_degree(state, ctx, colour, clause)
         if degree is not None:  # 'light scratches', 'a deep grain': a shade is how strong, not a colour
             weight, colour = weight * degree, None
+    if entry.get("share") is not None and colour is not None and colour.base is not None and not _see_through(state):
+        _mix_in(state, ctx, entry, clause, weight, colour)  # 'grey with a blue tint': a bluish grey
+        _report_other_colours(state, clause)
+        return
     used_colour = False
     if entry.get("adjective"):
         used_colour = _apply_adjective(state, ctx, entry, clause, weight, colour)
@@ -185,6 +190,31 @@ def _entry_named_by(ctx: Context, word: ast.Word, category: str) -> Entry | None
 
 def _adjective_named_by(ctx: Context, word: ast.Word) -> Entry | None:
     return _entry_named_by(ctx, word, "adjectives")
+
+
+# ---------------------------------------------------------------- a colour mixed in
+
+
+def _mix_in(
+    state: MaterialState, ctx: Context, entry: Entry, clause: ast.Feature, weight: float, colour: ast.Colour
+) -> None:
+    """The clause's colour mixed into an opaque material's base colour in OKLab by the feature's
+    share at the clause's and the feature's weight ('a blue tint' moves grey 0.35 of the way to
+    blue, 'a hint of' 0.105): the material keeps its own colour, tinted."""
+    current = state.params.get("base_color")
+    target = resolve_colour(colour, ctx, start=current)
+    if not isinstance(current, list):
+        current = target
+    amount, weight = float(entry.get("share")), weight * entry.get("weight", 1.0)
+    value = apply_op("mix", current, target, weight, amount)
+    words = (*_adverbs_of(clause), *colour.words, clause.word)
+    rule = f"features.{entry.key}: {min(1.0, amount * weight):.3g} of the way to '{colour_text(colour)}' in OKLab"
+    state.record("base_color", value, rule, words)
+
+
+def _see_through(state: MaterialState) -> bool:
+    """A glass model's base colour is its transmittance: a tint is all the colour it has."""
+    return state.params.get("model", noun_of(state).get("model")) == "glass"
 
 
 # ---------------------------------------------------------------- a feature an adjective draws

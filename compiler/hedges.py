@@ -1,0 +1,202 @@
+"""Hedged and clipped speech (issue #14): 'a touch of sheen', 'a bit of rust', 'loads of patina',
+'a subtle sheen' said without its 'with'.
+
+A quantity said before a feature or a describing word is that word's degree (stdlib/data/
+teaching.toml [hedges] quantities: 'a touch of' = 'slightly', 'just a hint of' = 'barely', 'a lot
+of' = 'many'), read with a note. Before a colour alone the phrase is kept ('a hint of blue' is the
+hint feature: a slight tint). A clause said without 'with' ('a subtle sheen', 'some patina',
+'fine scratches') is read with an implied 'with': under a material it adds the clause to it; as a
+first line its material is the one the feature's example names ('some patina' = copper with some
+patina), or paint for a feature of any surface (teaching.toml [hedges] any_surface).
+
+Runs only for a line that failed to parse (cnlmc.document): the hot path never reaches it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from . import ast
+from .diagnostics import Diagnostic, Severity
+from .lexicon import Lexicon
+from .spans import Span
+from .suggest import teaching
+from .tagged import NOTE_CODE, Candidate, Tagged
+
+__all__ = ["finish_dropped", "first_line_clause", "read_past", "reread", "with_implied"]
+
+DEGREE_TARGETS = frozenset({"FEATURE", "COAT", "ADJ", "PROP", "REFINE", "SHADE"})
+NOT_A_CLAUSE = frozenset({"WITH", "NAME", "OBJECT", "REFINE"})  # a line with one of these is not a bare clause
+
+
+def reread(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], list[Diagnostic]]:
+    """The words with each quantity phrase before a feature or describing word read as its degree
+    word, and a note for each; the words as they were (and no note) when there is none."""
+    table: dict[str, str] = teaching()["hedges"]["quantities"]
+    out: list[Tagged] = []
+    notes: list[Diagnostic] = []
+    i = 0
+    while i < len(words):
+        n = _quantity_at(words, i, table)
+        if n and _degree_target(words, i + n, _names_a_feature(words[i : i + n])):
+            said = _joined(words[i : i + n])
+            word = _degree_word(table[said], words[i : i + n], lexicon)
+            if word is not None:
+                out.append(word)
+                notes.append(_read_as(words[i : i + n], word.text))
+                i += n
+                continue
+        out.append(words[i])
+        i += 1
+    return out, notes
+
+
+def with_implied(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | None:
+    """A clause said without 'with' ('a subtle sheen', 'slightly sheen' after reread): the words
+    after an implied 'with', and the note; None for any other line."""
+    main = [w for w in words if w.text[:1].isalpha()]
+    if not main or not any(c.tag == "FEATURE" for w in main for c in w.candidates):
+        return None  # a coat alone has its own reading ('varnish' = wood with varnish: cnlmc.implied)
+    if any(c.tag in NOT_A_CLAUSE for w in main for c in w.candidates):
+        return None
+    if any(all(c.tag == "NOUN" for c in w.candidates) for w in main):
+        return None  # a material is named: its error is a mistake, not a clause
+    clause = next(w for w in main if any(c.tag == "FEATURE" for c in w.candidates))
+    written = " ".join(w.text for w in main)
+    note = Diagnostic(main[0].span.to(main[-1].span), Severity.NOTE, NOTE_CODE, f"read '{written}' as 'with {written}'")
+    return [_implied("with", Candidate("WITH", "with", "keywords"), clause, 1), *words], note
+
+
+def finish_dropped(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], Diagnostic] | None:
+    """'a glossier finish', 'a smoother, glossier finish': comparatives said of the finish are the
+    comparatives (a change line); the words without the article and the finish word, and the note."""
+    main = [w for w in words if w.text[:1].isalpha()]
+    if len(main) < 2 or not any(c.tag == "REFINE" for w in main for c in w.candidates):
+        return None
+    last = main[-1]
+    finish = next((c for c in last.candidates if c.tag == "FEATURE"), None)
+    entry = lexicon.entry("features", finish.key) if finish is not None else None
+    if entry is None or not entry.get("finish"):
+        return None
+    kept = [w for w in words if w is not last and not (w is words[0] and _is_article(w))]
+    said = " ".join(w.text for w in main)
+    read = " ".join(w.text for w in kept if w.text[:1].isalpha())
+    return kept, Diagnostic(main[0].span.to(last.span), Severity.NOTE, NOTE_CODE, f"read '{said}' as '{read}'")
+
+
+def _is_article(word: Tagged) -> bool:
+    return any(c.tag == "ARTICLE" for c in word.candidates)
+
+
+def first_line_clause(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
+    """A clause line with no material above ('with a subtle sheen', 'some patina'): the material
+    the feature's example names, or paint for a feature of any surface, with the clause; a note."""
+    if item.items or item.groups or not (item.features or item.coat):
+        return None
+    from .parser import ParseFailure, parse_line_shape
+    from .tagger import Tagger
+
+    start = item.span.start - (item.span.col - 1)  # the line's offset: its text is the whole line
+    words, diags = Tagger.of(lexicon).tag_line(item.text, item.span.line, start)
+    words, notes = reread([w for w in words if w.candidates], lexicon)
+    if not words or any(not read_past(d, notes) for d in diags):
+        return None
+    if not any(c.tag == "WITH" for w in words for c in w.candidates):
+        implied = with_implied(words)
+        if implied is None:
+            return None
+        words = implied[0]
+    head = item.coat.coat if item.coat is not None else item.features[0].word
+    noun = _noun_for(head, lexicon)
+    clause = next(w for w in words if w.span.start == head.span.start)
+    with_noun = [_implied(noun, Candidate("NOUN", noun, "nouns"), clause, 2), *words]
+    try:
+        shape, picks = parse_line_shape(with_noun, lexicon.caches.shapes)
+    except ParseFailure:
+        return None
+    material = shape.build(with_noun, picks, item.text)
+    if not isinstance(material, ast.Material):
+        return None
+    said = [w for w in words if w.text[:1].isalpha() and w.implied_by is None]
+    written = " ".join(w.text for w in said)
+    joined = written if any(c.tag == "WITH" for w in said for c in w.candidates) else f"with {written}"
+    message = f"no material named: read '{written}' as '{noun} {joined}'"
+    hint = f"name the material first to choose another, e.g. 'oak {written}'"
+    return material, Diagnostic(item.span, Severity.NOTE, NOTE_CODE, message, (hint,))
+
+
+def read_past(diag: Diagnostic, notes: Sequence[Diagnostic]) -> bool:
+    """Whether `diag` is an unknown word inside a phrase a note read as something else ('loads' of
+    'loads of')."""
+    at = diag.span
+    return (
+        diag.code == "E001"
+        and at is not None
+        and any(n.span is not None and n.span.start <= at.start and at.end <= n.span.end for n in notes)
+    )
+
+
+def _noun_for(head: ast.Word, lexicon: Lexicon) -> str:
+    """The noun of the feature's (or coat's) example, or paint for a feature of any surface."""
+    paint = str(teaching()["completions"]["nouns"][0])
+    if head.category == "features" and head.key in teaching()["hedges"]["any_surface"]:
+        return paint
+    entry = lexicon.entry(head.category, head.key)
+    example = str(entry.get("example") or "") if entry is not None else ""
+    before = example.split(" with ")[0].split()
+    nouns = [e for e in lexicon.lookup((before[-1].lower(),)) if e.category == "nouns"] if before else []
+    return nouns[0].key if nouns else paint
+
+
+def _quantity_at(words: Sequence[Tagged], i: int, table: dict[str, str]) -> int:
+    """How many words from i make a listed quantity phrase (the longest), or 0."""
+    found = 0
+    for n in range(1, min(5, len(words) - i) + 1):
+        if _joined(words[i : i + n]) in table:
+            found = n
+    return found
+
+
+def _degree_target(words: Sequence[Tagged], j: int, feature_said: bool) -> bool:
+    """Whether what follows a quantity phrase takes a degree: the first word after any further
+    degree words and colours is a feature, coat, describing word or property; or a colour ends
+    the line and the phrase has no feature of its own ('a bit of blue' = slightly blue, but 'a
+    hint of blue' keeps its hint feature: a slight tint)."""
+    for word in words[j:]:
+        tags = {c.tag for c in word.candidates}
+        if tags & DEGREE_TARGETS:
+            return True
+        if not tags & {"ADV", "COLOR", "ARTICLE"}:
+            return False
+    return not feature_said and j < len(words)
+
+
+def _names_a_feature(run: Sequence[Tagged]) -> bool:
+    """Whether the phrase is an article, a feature word and 'of' ('a hint of', 'a touch of')."""
+    return len(run) == 3 and any(c.tag == "FEATURE" for c in run[1].candidates)
+
+
+def _degree_word(key: str, run: Sequence[Tagged], lexicon: Lexicon) -> Tagged | None:
+    """The degree word `key` (an adverb) in the phrase's place: inside its last word's span (the
+    parser keys words by start, and no written word starts there), implied by the phrase."""
+    entry = lexicon.entry("adverbs", key)
+    if entry is None:
+        return None
+    return _implied(key, Candidate("ADV", key, "adverbs"), run[-1], 1, whole=run[0].span.to(run[-1].span))
+
+
+def _implied(text: str, candidate: Candidate, inside: Tagged, step: int, whole: Span | None = None) -> Tagged:
+    """A word no one typed, placed `step` characters into `inside`'s span (each implied word of a
+    line at its own step, so each keeps its own start), implied by `whole` (default: that word)."""
+    s = inside.span
+    at = min(s.start + step, s.end)
+    return Tagged(text, Span(at, s.end, s.line, s.col + at - s.start), (candidate,), implied_by=whole or s)
+
+
+def _joined(words: Sequence[Tagged]) -> str:
+    return " ".join(w.text.lower() for w in words)
+
+
+def _read_as(run: Sequence[Tagged], word: str) -> Diagnostic:
+    said = " ".join(w.text for w in run)
+    return Diagnostic(run[0].span.to(run[-1].span), Severity.NOTE, NOTE_CODE, f"read '{said}' as '{word}'")

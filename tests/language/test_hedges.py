@@ -1,0 +1,114 @@
+"""Hedged and clipped speech (issue #14, cnlmc.hedges): a quantity before a feature is its degree,
+a clause said without 'with' is a clause, a tint keeps the material's own colour."""
+
+from __future__ import annotations
+
+import pytest
+
+from cnlmc.api import compile_source, lexicon_for
+from cnlmc.colour import linear_to_oklab
+
+LEX = lexicon_for()
+
+
+def compiled(text: str):
+    result = compile_source(text + "\n", "t.cnl", LEX)
+    return result, [d for d in result.diagnostics if d.is_error]
+
+
+def material(text: str) -> dict:
+    result, errors = compiled(text)
+    assert not errors, [e.message for e in errors]
+    assert not [d for d in result.diagnostics if d.code.startswith("W")], [d.message for d in result.diagnostics]
+    return result.ir["materials"][-1]
+
+
+def notes(text: str) -> list[str]:
+    return [d.message for d in compiled(text)[0].diagnostics if d.code == "N101"]
+
+
+def rough(text: str) -> float:
+    return material(text)["params"]["roughness"]
+
+
+@pytest.mark.parametrize(
+    ("hedged", "plain"),
+    [
+        ("pine with a touch of sheen", "pine with a slight sheen"),
+        ("iron with a bit of rust", "iron with slightly rust"),
+        ("bronze with just a hint of patina", "bronze with barely patina"),
+        ("bronze with heaps of patina", "bronze with many patina"),
+        ("slate with a trace of sheen", "slate with barely sheen"),
+    ],
+)
+def test_a_quantity_before_a_feature_is_its_degree(hedged, plain):
+    assert material(hedged)["params"] == material(plain)["params"]
+    said = hedged.split(" with ", 1)[1].rsplit(" ", 1)[0]
+    assert any(n.startswith(f"read '{said}' as '") for n in notes(hedged)), notes(hedged)
+
+
+def test_the_quantity_orders_the_degree():
+    """barely < slightly < (the feature) < many: more rust, more roughness on iron."""
+    rs = [rough(f"iron with {q} rust") for q in ("just a hint of", "a bit of", "some", "loads of")]
+    assert rs == sorted(rs) and len(set(rs)) == 4, rs
+
+
+def test_a_quantity_word_the_lexicon_does_not_know_is_read_with_its_phrase():
+    result, errors = compiled("bronze with tons of patina")
+    assert not errors and not [d for d in result.diagnostics if d.code == "E001"]
+
+
+def test_a_clause_without_with_under_a_material_adds_the_clause():
+    with_it = material("matte grey plastic\nwith a faint sheen")
+    without = material("matte grey plastic\na faint sheen")
+    assert without["params"] == with_it["params"]
+    assert "read 'a faint sheen' as 'with a faint sheen'" in notes("matte grey plastic\na faint sheen")
+
+
+@pytest.mark.parametrize(
+    ("line", "noun"),
+    [
+        ("a faint sheen", "paint"),
+        ("some patina", "copper"),
+        ("with dark veins", "marble"),
+        ("a few rust spots", "steel"),
+    ],
+)
+def test_a_clause_as_the_first_line_takes_its_example_material(line, noun):
+    """A feature of any surface goes on paint; a feature with its own material on that material."""
+    said = material(line)
+    assert said["name"].startswith(noun + "_with"), said["name"]
+    assert any(n.startswith(f"no material named: read '{line}' as '{noun} ") for n in notes(line)), notes(line)
+
+
+def test_a_finish_compared_is_a_change_line():
+    changed = material("red plastic\na smoother, shinier finish")
+    assert changed["params"] == material("red plastic\nsmoother, shinier")["params"]
+    assert changed["params"]["roughness"] < material("red plastic")["params"]["roughness"]
+
+
+def _oklab(text: str) -> list[float]:
+    return linear_to_oklab(material(text)["params"]["base_color"])
+
+
+def test_a_tint_keeps_the_own_colour():
+    """'grey with a green tint' is a greenish grey: lighter and less saturated than green, its hue green's."""
+    grey, green, tinted = _oklab("grey paint"), _oklab("green paint"), _oklab("grey paint with a green tint")
+    assert abs(tinted[0] - grey[0]) < abs(green[0] - grey[0])
+    chroma = [(c[1] ** 2 + c[2] ** 2) ** 0.5 for c in (grey, green, tinted)]
+    assert chroma[0] < chroma[2] < chroma[1] / 2
+    assert tinted[1] * green[1] > 0 and tinted[2] * green[2] > 0  # the same quadrant of hue
+
+
+def test_a_hint_is_less_than_a_tint_and_says_no_second_colour():
+    white = _oklab("white paint")
+    hint, tint = _oklab("white paint with a hint of red"), _oklab("white paint with a red tint")
+    assert 0 < hint[1] - white[1] < tint[1] - white[1]
+    assert white[0] - hint[0] < 0.05  # a blush, not a pink
+    result, _ = compiled("white paint with a hint of red")
+    assert "W105" not in {d.code for d in result.diagnostics}
+
+
+def test_glass_takes_a_tint_as_its_colour():
+    """A glass's colour is its transmittance: 'a blue tint' is blue glass, as 'blue tinted glass'."""
+    assert material("glass with a blue tint")["params"]["base_color"] == material("blue glass")["params"]["base_color"]
