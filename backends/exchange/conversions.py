@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable
 from dataclasses import replace
+from typing import Any
 
 from cnlmc.material import RGB, Material, Params
 
@@ -197,9 +198,11 @@ def principled_clearcoat(material: Material) -> float:
 #
 # The IR puts a dielectric's diffuse base under its interface as (1 - F(theta_o)) (1 - F(theta_i)) rho
 # (docs/bsdf.md: internal reflection neglected), so a white base keeps 1 - F_avg of the light it
-# scatters. The targets layer it otherwise (each documented below); every target here takes the
-# base colour linearly, so the base colour it is given is the IR's scaled by the ratio of the two
-# diffuse energies, per channel: the same hemispherical energy, hence the same white furnace (#15).
+# scatters; under a coat it sums the light trapped under it, rho / (eta^2 (1 - rho K))
+# (cnlmc.bsdf.layered). The targets layer it otherwise (each documented below); the base colour a
+# target is given is the one that gives the IR's diffuse energy, per channel: the same hemispherical
+# energy, hence the same white furnace (#15). Linear targets get the IR's colour scaled by the
+# ratio of the two energies; Mitsuba's coat (`roughplastic`, nonlinear) the solved `roughplastic_colour`.
 
 MITSUBA_TABLE_MUS = 16  # Gauss-Legendre points in mu for roughplastic's transmittance average
 MITSUBA_INTERNAL_MUS = 64  # roughplastic's own table size (MI_ROUGH_TRANSMITTANCE_RES)
@@ -233,7 +236,27 @@ def roughplastic_diffuse_energy(ior: float, alpha: float) -> float:
     (src/bsdfs/roughplastic.cpp, nonlinear = false): rho / (1 - R_int) / eta^2 * t(mu_i) t(mu_o) cos / pi,
     t the rough interface's transmittance from outside (`eval_transmittance`: visible normals, (1 - F)
     G1, separable Smith) and R_int twice the mean of its internal reflectance times mu over 64 mu in
-    [0, 1] (`eval_reflectance` at 1/eta). So (2 int t mu dmu)^2 / (eta^2 (1 - R_int))."""
+    [0, 1] (`eval_reflectance` at 1/eta). So (2 int t mu dmu)^2 / (eta^2 (1 - R_int)); the same at
+    rho = 1 with nonlinear = true (rho / (1 - rho R_int) in place of rho / (1 - R_int))."""
+    through, internal = roughplastic_terms(ior, alpha)
+    return through * through / (ior * ior * max(1.0 - internal, 1e-6))
+
+
+def roughplastic_colour(energy: Any, ior: float, alpha: float) -> Any:
+    """The diffuse_reflectance of a `roughplastic` with nonlinear = true whose hemispherical diffuse
+    energy is `energy` (per channel, or an array of texels): T^2 rho / (eta^2 (1 - rho R_int)) = E
+    solved for rho = E eta^2 / (T^2 + E eta^2 R_int) (`roughplastic_terms`; not clipped). This is the
+    IR's own form of a diffuse base under a coat (cnlmc.bsdf.layered: rho / (eta^2 (1 - rho K))), so
+    a colour map keeps its texels' energies, not only its mean's."""
+    import numpy as np
+
+    through, internal = roughplastic_terms(ior, max(alpha, 1e-3))
+    e = np.maximum(np.asarray(energy, np.float64), 0.0) * ior * ior
+    return e / (through * through + e * internal)
+
+
+def roughplastic_terms(ior: float, alpha: float) -> tuple[float, float]:
+    """(2 int t mu dmu, R_int) of Mitsuba 3's `roughplastic` (`roughplastic_diffuse_energy`)."""
     import numpy as np
 
     from cnlmc.bsdf.transmission import interface_albedo
@@ -245,7 +268,7 @@ def roughplastic_diffuse_energy(ior: float, alpha: float) -> float:
     inside, _ = interface_albedo(grid, 1.0 / ior, alpha, n=1024, g2="separable")
     through = float(np.sum(w * mu * transmitted))
     internal = 2.0 * float(np.mean(inside * grid))
-    return through * through / (ior * ior * max(1.0 - internal, 1e-6))
+    return through, internal
 
 
 def without_extras(material: Material) -> Material:

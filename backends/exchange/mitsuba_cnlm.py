@@ -29,7 +29,7 @@ import numpy as np
 from cnlmc.bsdf.alpha import alpha_from_roughness
 from cnlmc.bsdf.diffuse import lambert
 from cnlmc.bsdf.evaluate import lobe_alphas
-from cnlmc.bsdf.flakes import evaluate_full  # the base, its flakes under the coat, the sheen over it (docs/bsdf.md)
+from cnlmc.bsdf.flakes import coat_trap, evaluate_full  # the base, its flakes under the coat, the sheen over it
 from cnlmc.bsdf.sampling import lobe_shares, mixture_pdf, sample_mixture, sampled_weight
 from cnlmc.material import RGB, Material
 
@@ -127,6 +127,7 @@ class LaneModel:
         model = material.model
         self.shares = lobe_shares(model.base, bool(model.coat and material.params.coat is not None))
         self.coat_alpha = lobe_alphas(material)[1] or (1.0, 1.0)
+        self.trap = coat_trap(material)  # the coat's round trip per unit colour (0: f affine in the colour)
 
     def params_at(self, si: Any, active: Any) -> Material:
         """The material with α per lane when a roughness map is bound."""
@@ -143,7 +144,9 @@ class LaneModel:
         return lobe_alphas(material)[0] or (1.0, 1.0)
 
     def f(self, si: Any, material: Material, wo: np.ndarray, wi: np.ndarray, active: Any) -> np.ndarray:
-        """f(wo, wi), RGB (N, 3): affine in the base colour, so a colour map costs two calls."""
+        """f(wo, wi), RGB (N, 3): a colour map costs two calls, f = black + (white - black) g(colour),
+        g(c) = c (1 - t) / (1 - c t) (affine, g(c) = c, but under a coat, where the light trapped
+        under it makes the diffuse base non-linear in its colour: cnlmc.bsdf.layered)."""
         if "base_color" not in self.textures:
             value = evaluate_full(material, wo, wi)
             albedo = np.asarray(material.params.base_color, np.float64)
@@ -151,7 +154,8 @@ class LaneModel:
             albedo = _lanes(self.textures["base_color"].eval(si, active))
             black = evaluate_full(_with_colour(material, (0.0, 0.0, 0.0)), wo, wi)
             white = evaluate_full(_with_colour(material, (1.0, 1.0, 1.0)), wo, wi)
-            value = black + (white - black) * albedo
+            trap = np.clip(self.trap, 0.0, 1.0 - 1e-9)
+            value = black + (white - black) * albedo * (1.0 - trap) / (1.0 - albedo * trap)
         if "mask" in self.textures:
             mask = np.clip(_lanes(self.textures["mask"].eval_1(si, active)), 0.0, 1.0)[:, None]
             value = value * (1.0 - mask) + lambert(wo, wi, np.ones(3)) * albedo * mask

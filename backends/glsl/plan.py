@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from cnlmc.bsdf import coat_alpha, conductor_fresnel, f0_conductor, fresnel_average, material_alpha
-from cnlmc.bsdf.flakes import flake_alpha, has_flakes
+from cnlmc.bsdf.flakes import coat_trap, flake_alpha, has_flakes
 from cnlmc.bsdf.sheen import has_sheen, sheen_alpha, sheen_row
 from cnlmc.material import Coat, Material, Params
 
@@ -341,6 +341,13 @@ UNIFORM_TABLE: dict[str, tuple[str | None, Callable[[Plan], bool], UniformValue]
         "float",
         lambda p: p.coat,
         lambda m, p: float(coat_alpha(_coat(m), m.params.alpha_convention)[0]),
+    ),
+    # per unit base colour, what the coat sends back to the diffuse base in one round trip
+    # (cnlmc.bsdf.flakes.coat_trap): the diffuse part is diff / (eta^2 (1 - base colour * trap))
+    "cnlm_coat_trap": (
+        "vec3",
+        lambda p: p.coat and p.base != "conductor",
+        lambda m, p: _rgb(coat_trap(m, p.fresnel or "exact")),
     ),
     "cnlm_coat_color": ("vec3", lambda p: p.coat_color, lambda m, p: _rgb(_coat(m).color)),
     "cnlm_coat_thickness": (

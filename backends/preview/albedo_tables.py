@@ -9,7 +9,10 @@ what the tier shows:
 
     black(μ) = ∫ f(wo, wi; ρ = 0) cos θi dωi                 (dielectric lobe, coat)
     tint(μ)  = ∫ f(wo, wi; ρ = 1) cos θi dωi − black(μ)      (diffuse, or the conductor lobe)
-f is affine in the base colour ρ, so f(ρ) = black + ρ · tint exactly.
+f is affine in the base colour ρ, so f(ρ) = black + ρ · tint exactly; except under a coat, where
+the diffuse base's light trapped under the coat makes it ρ / (1 − ρ t) (cnlmc.bsdf.layered): there
+f(ρ) = black + ρ (1 − t) / (1 − ρ t) · tint, exactly (t = ``cnlmc.bsdf.flakes.coat_trap``, the
+shader's ``cnlm_coat_trap``; 0 for a metal).
 
 The *shape* of a rough lobe changes with the view: towards grazing it leans towards the
 normal, stretches in the plane of incidence, is clipped by the horizon and keeps a long tail

@@ -45,7 +45,8 @@ def _flakes_through_coat(material: Material, wo: Any, wi: Any, **_: Any) -> np.n
 
     color = np.broadcast_to(np.asarray(coat.color, np.float64), (3,))
     args = (float(coat.ior), coat_alpha(coat), color, float(coat.thickness))
-    return coated(wo, wi, flakes, *args) - coated(wo, wi, nothing, *args)
+    rho = np.zeros(3)  # the flakes are a directional part: the diffuse part's series does not see them
+    return coated(wo, wi, flakes, *args, rho) - coated(wo, wi, nothing, *args, rho)
 
 
 def flake_sections(material: Material, mus: np.ndarray, samples: int, lean: Any) -> np.ndarray:

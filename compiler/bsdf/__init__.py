@@ -23,7 +23,7 @@ from .fresnel import (
 )
 from .geometry import COS_EPS, dir_from_mu, rotate_tangent, spherical_dir
 from .integrate import albedo_cosine, albedo_mis
-from .layered import coated, refract_into_coat
+from .layered import coated, diffuse_reflectance, fresnel_diffuse_reflectance, internal_reflectance, refract_into_coat
 from .microfacet import (
     ggx_d,
     ggx_d_common_form,
@@ -79,6 +79,9 @@ __all__ = [
     "albedo_cosine",
     "albedo_mis",
     "coated",
+    "diffuse_reflectance",
+    "fresnel_diffuse_reflectance",
+    "internal_reflectance",
     "refract_into_coat",
     "ggx_d",
     "ggx_d_common_form",

@@ -33,7 +33,7 @@ from typing import Any
 
 import numpy as np
 
-from .evaluate import _base_parts, albedo, coat_alpha, evaluate, local_dirs, the_coat
+from .evaluate import _base_parts, albedo, coat_alpha, coat_reflectance, coat_trap_of, evaluate, local_dirs, the_coat
 from .fresnel import fresnel_schlick
 from .geometry import Real
 from .inputs import MaterialLike, as_material
@@ -98,7 +98,20 @@ def evaluate_flaked(
     ior = float(coat.ior)
     base = _flaked_parts(m, fresnel, multiscatter, ward_form, ior)
     color = np.broadcast_to(np.asarray(coat.color, np.float64), (3,))
-    return coated(wo, wi, base, ior, coat_alpha(coat), color, float(coat.thickness))
+    rho = coat_reflectance(m, lambda mm: _flaked_parts(mm, fresnel, multiscatter, ward_form, ior))
+    series = m.model.base != "conductor"
+    return coated(wo, wi, base, ior, coat_alpha(coat), color, float(coat.thickness), rho, series)
+
+
+def coat_trap(material: MaterialLike, fresnel: str = "exact") -> np.ndarray:
+    """t, RGB (3,): the coat's round trip per unit base colour (``evaluate.coat_trap_of``), with a
+    paint's flakes (they hide part of the diffuse base). Zero without a coat."""
+    m = as_material(material)
+    coat = the_coat(m)
+    ior = float(coat.ior) if coat is not None else 1.0
+    if not has_flakes(m):
+        return coat_trap_of(m, lambda mm: lambda o, i: _base_parts(mm, o, i, fresnel, False, "gmd", ior))
+    return coat_trap_of(m, lambda mm: _flaked_parts(mm, fresnel, False, "gmd", ior))
 
 
 def evaluate_full(material: MaterialLike, wo: Any, wi: Any, **kwargs: Any) -> Real:
@@ -133,6 +146,7 @@ __all__ = [
     "FLAKE_ALPHA_MIN",
     "albedo_flaked",
     "albedo_full",
+    "coat_trap",
     "evaluate_flaked",
     "evaluate_full",
     "flake_alpha",

@@ -10,6 +10,7 @@ import pytest
 
 from cnlmc.backends.preview.albedo_tables import FIT_ALPHA, MU_SIZE, ROWS, SECTIONS, albedo_tables, split_fitted
 from cnlmc.bsdf.evaluate import albedo
+from cnlmc.bsdf.flakes import coat_trap
 from cnlmc.material import Material
 
 from .conftest import material_of
@@ -26,15 +27,20 @@ def section(table: np.ndarray, index: int) -> np.ndarray:
 
 @pytest.mark.parametrize("phrase", ["terracotta", "gold", "clear-coated red car paint", "glossy blue plastic"])
 def test_black_plus_colour_times_tint_is_the_albedo_of_that_colour(phrase):
-    """f is affine in the base colour, so black + rho * tint reproduces any rho's albedo."""
+    """f is affine in the base colour, so black + rho * tint reproduces any rho's albedo; under a
+    coat the diffuse base is rho (1 - t) / (1 - rho t) (the light trapped under the coat, t =
+    coat_trap: what split.glsl.j2 does with cnlm_coat_trap)."""
     m = material_of(phrase)
     black, tint = albedo_tables(m)
     assert black.shape == tint.shape == (1, SECTIONS * MU_SIZE, 4)
     column = 20
     mu = (column + 0.5) / MU_SIZE
     rho = np.array([0.7, 0.3, 0.1])
+    t = coat_trap(m)
+    assert (np.max(t) > 0.3) == (phrase == "clear-coated red car paint")
     want = albedo(with_colour(m, rho), mu, 512)
-    np.testing.assert_allclose(black[0, column, :3] + rho * tint[0, column, :3], want, rtol=1e-4, atol=1e-5)
+    colour = rho * (1.0 - t) / (1.0 - rho * t)
+    np.testing.assert_allclose(black[0, column, :3] + colour * tint[0, column, :3], want, rtol=1e-4, atol=1e-5)
 
 
 def test_an_uncoated_conductor_is_all_tint_and_a_diffuse_one_has_no_specular_part():

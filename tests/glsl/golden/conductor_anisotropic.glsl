@@ -204,7 +204,8 @@ void cnlm_base(vec3 wo, vec3 wi, vec3 albedo, vec2 alpha, float outside,
 vec3 cnlm_bsdf_local(vec3 wo, vec3 wi, vec2 uv) {
     vec3 albedo = cnlm_surface_albedo(uv);
     vec3 spec, diff;
-    // Weidlich-Wilkie coat over the base.
+    // The coat over the base (cnlmc.bsdf.layered): Weidlich-Wilkie for the directional part,
+    // a metal's compensation lobe as it is (no inter-reflection).
     float eta = cnlm_coat_ior;
     vec3 wo_in = cnlm_refract_into_coat(wo, eta);
     vec3 wi_in = cnlm_refract_into_coat(wi, eta);

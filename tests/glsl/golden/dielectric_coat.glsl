@@ -14,6 +14,7 @@
 //   float cnlm_ior = 1.472
 //   float cnlm_coat_ior = 1.5
 //   float cnlm_coat_alpha = 0.01
+//   vec3 cnlm_coat_trap = vec3(0.31303199, 1.03196408e-304, 1.03196408e-304)
 //   vec3 cnlm_coat_color = vec3(0.783538, 0.0, 0.0)
 //   float cnlm_coat_thickness = 1.0
 // samplers: (bind baked maps; see the sidecar)
@@ -22,6 +23,7 @@
 uniform float cnlm_ior = 1.472;
 uniform float cnlm_coat_ior = 1.5;
 uniform float cnlm_coat_alpha = 0.01;
+uniform vec3 cnlm_coat_trap = vec3(0.31303199, 1.03196408e-304, 1.03196408e-304);
 uniform vec3 cnlm_coat_color = vec3(0.783538, 0.0, 0.0);
 uniform float cnlm_coat_thickness = 1.0;
 uniform sampler2D cnlm_map_base_color;
@@ -169,12 +171,13 @@ void cnlm_base(vec3 wo, vec3 wi, vec3 albedo, float alpha, float outside,
 vec3 cnlm_bsdf_local(vec3 wo, vec3 wi, vec2 uv) {
     vec3 albedo = cnlm_surface_albedo(uv);
     vec3 spec, diff;
-    // Weidlich-Wilkie coat over the base.
+    // The coat over the base (cnlmc.bsdf.layered): Weidlich-Wilkie for the directional part,
+    // the diffuse part with the light trapped under the coat summed: rho / (eta^2 (1 - rho K)).
     float eta = cnlm_coat_ior;
     vec3 wo_in = cnlm_refract_into_coat(wo, eta);
     vec3 wi_in = cnlm_refract_into_coat(wi, eta);
     cnlm_base(wo_in, wi_in, albedo, cnlm_surface_alpha(uv), eta, spec, diff);
-    vec3 under = spec / (eta * eta) + diff;
+    vec3 under = (spec + diff / (vec3(1.0) - albedo * cnlm_coat_trap)) / (eta * eta);
     under *= cnlm_coat_absorption(wo_in, wi_in, cnlm_coat_color, cnlm_coat_thickness);
     vec3 h = cnlm_half_vector(wo, wi);
     float coat_dv = cnlm_ggx_dv(wo, wi, h, cnlm_coat_alpha);
