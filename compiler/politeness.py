@@ -76,7 +76,13 @@ def _without_pronoun(
     if len(kept) < 2 or kept[1].text.lower() not in pronouns:
         return kept, None, []
     verb = _participle(kept[0], tag)
-    return [verb or kept[0], *kept[2:]], kept[1], [verb.span] if verb is not None else []
+    rest, past = kept[2:], [verb.span] if verb is not None else []
+    if rest and rest[0].text.lower() in teaching()["politeness"]["particles"]:
+        rest, past = rest[1:], [*past, rest[0].span]  # 'polish it up': the particle goes with the pronoun
+    said = verb or kept[0]
+    if verb is not None and rest and all(any(c.tag == "ADV" for c in w.candidates) for w in rest):
+        return [*rest, said], kept[1], past  # 'polish it a bit' = 'a bit polished'
+    return [said, *rest], kept[1], past
 
 
 def _participle(word: Tagged, tag: Callable[[str], Tagged | None] | None) -> Tagged | None:

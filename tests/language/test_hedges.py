@@ -112,3 +112,38 @@ def test_a_hint_is_less_than_a_tint_and_says_no_second_colour():
 def test_glass_takes_a_tint_as_its_colour():
     """A glass's colour is its transmittance: 'a blue tint' is blue glass, as 'blue tinted glass'."""
     assert material("glass with a blue tint")["params"]["base_color"] == material("blue glass")["params"]["base_color"]
+
+
+@pytest.mark.parametrize(
+    ("said", "meant"),
+    [
+        ("keep the colour, make it glossier", "glossier"),
+        ("same colour but rougher", "rougher"),
+        ("keep everything else, just make it matte", "make it matte"),
+        ("more towards green", "more green"),
+    ],
+)
+def test_a_change_line_says_what_stays_and_what_changes(said, meant):
+    """What is kept is read past with a note; the change is made."""
+    first = "satin blue ceramic\n"
+    changed, plain = material(first + said), material(first + meant)
+    assert changed["params"] == plain["params"]
+    assert changed["params"] != material(first.strip())["params"]
+
+
+def test_a_verb_with_a_particle_and_a_degree_after_the_pronoun():
+    """'polish it up a bit' = 'polish it a bit' = a bit polished; the particle is read past."""
+    first = "brushed aluminium\n"
+    up, plain = material(first + "polish it up a bit"), material(first + "polish it a bit")
+    assert up["params"] == plain["params"] and up["maps"] == plain["maps"]
+    rough = [material(first + line)["params"]["roughness"] for line in ("polish it", "polish it a bit")]
+    assert rough[0] < rough[1] < material(first.strip())["params"]["roughness"]
+
+
+def test_whole_milk_is_whiter_and_less_deep_than_skim_milk():
+    """Jensen et al. 2001: whole milk scatters about three times as much as skim milk."""
+    whole, skim = material("full-fat milk")["params"], material("skim milk")["params"]
+    assert linear_to_oklab(whole["base_color"])[0] > linear_to_oklab(skim["base_color"])[0]
+    whole_ir, skim_ir = material("full-fat milk"), material("skim milk")
+    radii = [m["params"]["subsurface"]["radius"] for m in (whole_ir, skim_ir)]
+    assert all(w < s for w, s in zip(*radii)), radii

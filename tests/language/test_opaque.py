@@ -35,6 +35,20 @@ def test_opaque_after_clear_contradicts_and_wins():
     assert result.materials[0]["model"]["base"] == "dielectric"
 
 
-def test_opaque_glass_is_frosted():
-    said, frosted = material("opaque window glass").materials[0], material("frosted glass").materials[0]
-    assert said["params"]["roughness"] == frosted["params"]["roughness"]
+def test_opaque_glass_is_opal_glass():
+    """Opaque glass is opal (milk) glass: a glossy surface over a body that lets no light through."""
+    said = material("opaque window glass").materials[0]
+    assert said["model"]["base"] == "dielectric"
+    assert said["params"]["roughness"] <= 0.05
+    assert min(said["params"]["base_color"]) > 0.7  # white unless a colour is named
+    green = material("opaque green glass").materials[0]
+    assert (
+        green["model"]["base"] == "dielectric"
+        and green["params"]["base_color"][1] > 2 * green["params"]["base_color"][0]
+    )
+
+
+def test_not_transparent_is_opaque_not_frosted():
+    said = material("not transparent glass").materials[0]
+    assert said["model"]["base"] == "dielectric"
+    assert said["params"] == material("opaque glass").materials[0]["params"]
