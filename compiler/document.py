@@ -103,6 +103,7 @@ def _failed_line(
             return node
     if notes:  # still no parse: the rest reads the words as reread, and says so
         words, failure = hedged, _failure_of(hedged, lexicon) or failure
+        diags[:] = [d for d in diags if not read_past(d, notes)]
         diags.extend(notes)
     taught = teach_syntax_error(_syntax_error(failure, words, lexicon), words, lexicon)
     implied = implied_material(taught, words, lexicon, text)

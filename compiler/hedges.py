@@ -23,7 +23,7 @@ from .spans import Span
 from .suggest import teaching
 from .tagged import NOTE_CODE, Candidate, Tagged
 
-__all__ = ["finish_dropped", "first_line_clause", "read_past", "reread", "with_implied"]
+__all__ = ["colour_between", "finish_dropped", "first_line_clause", "read_past", "reread", "with_implied"]
 
 DEGREE_TARGETS = frozenset({"FEATURE", "COAT", "ADJ", "PROP", "REFINE", "SHADE"})
 NOT_A_CLAUSE = frozenset({"WITH", "NAME", "OBJECT", "REFINE"})  # a line with one of these is not a bare clause
@@ -49,6 +49,46 @@ def reread(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], lis
         out.append(words[i])
         i += 1
     return out, notes
+
+
+def colour_between(
+    diags: list[Diagnostic], words: Sequence[Tagged], lexicon: Lexicon
+) -> tuple[list[Diagnostic], list[Tagged]]:
+    """'somewhere between beige and grey': the colour 'beige-grey' in the words' place, the unknown
+    words of the phrase read past and a note; all as they were when the compound is not a colour.
+    Runs on the unknown-word path ('between' is not a word of the language)."""
+    kept, notes = _between(words, lexicon)
+    if not notes:
+        return diags, list(words)
+    return [d for d in diags if not read_past(d, notes)] + notes, kept
+
+
+def _between(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], list[Diagnostic]]:
+    """'somewhere between beige and grey' -> the colour 'beige-grey' (a note says so); the words as
+    they were when the compound is not a colour."""
+    table = teaching()["hedges"]
+    texts = [w.text.lower() for w in words]
+    if table["between"] not in texts:
+        return list(words), []
+    at = texts.index(table["between"])
+    if at + 3 >= len(words) or texts[at + 2] != "and":
+        return list(words), []
+    first, second = words[at + 1], words[at + 3]
+    start = at - 1 if at and _joined(words[:at]).endswith(tuple(table["between_lead"])) else at
+    while start > 0 and _joined(words[start - 1 : at]) in table["between_lead"]:
+        start -= 1
+    if start < at and _joined(words[start:at]) not in table["between_lead"]:
+        start = at
+    from .tagger import Tagger
+
+    tagged, unknown = Tagger.of(lexicon).tag_line(f"{first.text.lower()}-{second.text.lower()}", 1, 0)
+    compound = tagged[0] if len(tagged) == 1 and not unknown else None
+    if compound is None or not any(c.tag == "COLOR" for c in compound.candidates):
+        return list(words), []
+    run = words[start : at + 4]
+    word = _implied(compound.text, next(c for c in compound.candidates if c.tag == "COLOR"), run[-1], 1)
+    word = Tagged(word.text, word.span, word.candidates, implied_by=run[0].span.to(run[-1].span))
+    return [*words[:start], word, *words[at + 4 :]], [_read_as(run, compound.text)]
 
 
 def with_implied(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | None:

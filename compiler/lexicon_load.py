@@ -243,7 +243,8 @@ def add_survey_colours(builder: Builder, names: dict[str, Any], source: SourceTe
     colours = builder.raw["colours"]
     others = {f for c, by in builder.raw.items() if c != "colours" for k, e in by.items() for f in _forms(k, e)}
     others -= {*rules["noun_colours"], *rules["ish_colours"]}
-    known = {f for k, e in colours.items() for f in _forms(k, e)}
+    named = {f: k for k, e in colours.items() for f in _forms(k, e)}  # form -> the entry it names
+    known = set(named)
     added: set[str] = set()
     for name, row in names.items():
         if row.get("source") != "xkcd":
@@ -294,7 +295,8 @@ def add_survey_colours(builder: Builder, names: dict[str, Any], source: SourceTe
             if (
                 a == b
                 or spaced in colours
-                or spaced.replace("grey", "gray") in known
+                or named.get(spaced.replace("grey", "gray"), name) != name  # another entry's name (a layer's own
+                # alias of this compound, such as German's 'beige gold' of 'beige-gold', is not)
                 or a not in colours
                 or b not in colours
             ):

@@ -16,6 +16,7 @@ from importlib import resources
 from types import MappingProxyType
 
 from .diagnostics import Diagnostic, did_you_mean
+from .hedges import colour_between
 from .lexicon import CATEGORY_TAGS, Lexicon
 from .measures import without_measures
 from .politeness import without_politeness
@@ -39,6 +40,7 @@ def fit_unknown_words(
     categories of its slot, and its guessed readings those of the slot (so the parser does not
     report a second error for a guess that does not fit: 'tinn glass' is not 'tin glass')."""
     diags, words = without_measures(diags, words)
+    diags, words = colour_between(diags, words, lexicon)
     diags, words = without_politeness(diags, words, lambda word: _tagged_word(word, lexicon))
     out, fitted = [], list(words)
     for diag in diags:

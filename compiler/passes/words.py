@@ -261,12 +261,33 @@ def _applies(state: MaterialState, adjective: Entry, word: ast.Word, target: str
 
 def _opposed(first: Entry, then: Entry) -> bool:
     """Whether two adjectives contradict: one `opposes` the other, or one is the other's declared
-    `opposite` (the antonym 'not X' is read as: 'clear' and 'frosted', 'transparent opaque')."""
+    `opposite` (the antonym 'not X' is read as: 'clear' and 'frosted', 'transparent opaque'), or
+    both are finishes that set one parameter far apart ('satin high-gloss')."""
     return (
         first.key in then.get("opposes", [])
         or then.key in first.get("opposes", [])
         or then.get("opposite") == first.key
         or first.get("opposite") == then.key
+        or _set_apart(first, then)
+    )
+
+
+SET_APART = 0.2  # our choice: two finish words that set one parameter this far apart name two finishes
+
+
+def _set_apart(first: Entry, then: Entry) -> bool:
+    """Two finish words that each set the same parameter, to values more than SET_APART apart
+    ('satin high-gloss': roughness 0.35 and 0.08): the later replaces the earlier, so they contradict."""
+    if stage_of(first) != "finish" or stage_of(then) != "finish" or first.key == then.key:
+        return False
+    earlier = {e["param"]: e["value"] for e in first.get("effects", []) if e.get("op") == "set"}
+    return any(
+        e["param"] in earlier
+        and isinstance(e["value"], (int, float))
+        and isinstance(earlier[e["param"]], (int, float))
+        and abs(e["value"] - earlier[e["param"]]) > SET_APART
+        for e in then.get("effects", [])
+        if e.get("op") == "set"
     )
 
 

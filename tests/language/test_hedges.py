@@ -147,3 +147,28 @@ def test_whole_milk_is_whiter_and_less_deep_than_skim_milk():
     whole_ir, skim_ir = material("full-fat milk"), material("skim milk")
     radii = [m["params"]["subsurface"]["radius"] for m in (whole_ir, skim_ir)]
     assert all(w < s for w, s in zip(*radii)), radii
+
+
+@pytest.mark.parametrize(
+    ("said", "compound"),
+    [
+        ("somewhere between khaki and grey", "khaki-grey"),
+        ("halfway between teal and navy velvet", "teal-navy velvet"),
+        ("a colour between lilac and grey, matte", "lilac-grey, matte"),
+    ],
+)
+def test_between_two_colours_is_their_compound(said, compound):
+    result, errors = compiled(said)
+    assert not errors, [e.message for e in errors]
+    assert result.ir["materials"][0]["params"] == material(compound)["params"]
+    assert any(n.startswith("read '") and n.endswith(f" as '{compound.split()[0].rstrip(',')}'") for n in notes(said))
+
+
+def test_a_hyphenated_pair_of_everyday_colours_is_their_oklab_midpoint():
+    """'taupe-green' is one colour between taupe and green (no second-colour warning); spaced apart,
+    two colours still warn."""
+    pair = _oklab("taupe-green paint")
+    ends = [_oklab(f"{c} paint") for c in ("taupe", "green")]
+    assert all(min(a, b) - 1e-6 <= m <= max(a, b) + 1e-6 for m, a, b in zip(pair, *ends))
+    result, _ = compiled("cream navy paint")
+    assert "W105" in {d.code for d in result.diagnostics}
