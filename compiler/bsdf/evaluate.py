@@ -231,7 +231,8 @@ def coat_trap_of(material: Material, parts: Callable[[Material], Callable[[Any, 
         return np.zeros(3)
     unit = replace(material, params=replace(material.params, base_color=(1.0, 1.0, 1.0)))
     rho = coat_reflectance(unit, parts)
-    return rho * internal_reflectance(float(coat.ior), _rgb(coat.color), float(coat.thickness))
+    trap: np.ndarray = rho * internal_reflectance(float(coat.ior), _rgb(coat.color), float(coat.thickness))
+    return trap
 
 
 def coat_trap(material: MaterialLike, fresnel: str = "exact") -> np.ndarray:

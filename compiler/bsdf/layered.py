@@ -117,7 +117,8 @@ def internal_reflectance(ior: float, color: Real = (1.0, 1.0, 1.0), thickness: f
     def crossing(mu_in: np.ndarray) -> np.ndarray:  # color^(thickness/μ'), (n, 3); 1 for thickness 0
         if thickness == 0.0:
             return np.ones(mu_in.shape + (3,))
-        return np.exp(log_c * (thickness / np.maximum(mu_in, 1e-12))[:, None])
+        out: np.ndarray = np.exp(log_c * (thickness / np.maximum(mu_in, 1e-12))[:, None])
+        return out
 
     mu_c = np.sqrt(max(1.0 - 1.0 / (eta * eta), 0.0))
     trapped = np.zeros(3)
@@ -127,7 +128,8 @@ def internal_reflectance(ior: float, color: Real = (1.0, 1.0, 1.0), thickness: f
     mu, w = _nodes(0.0, 1.0, INTERNAL_NODES)
     mu_in = np.sqrt(np.maximum(1.0 - (1.0 - mu * mu) / (eta * eta), 0.0))
     escaping = 2.0 / (eta * eta) * np.sum((w * mu * fresnel_dielectric(mu, eta))[:, None] * crossing(mu_in), axis=0)
-    return trapped + escaping
+    total: np.ndarray = trapped + escaping
+    return total
 
 
 def diffuse_reflectance(diffuse: Callable[[Real, Real], Real], n: int = REFLECTANCE_NODES) -> np.ndarray:
@@ -142,7 +144,8 @@ def diffuse_reflectance(diffuse: Callable[[Real, Real], Real], n: int = REFLECTA
     wo, wi = np.broadcast_arrays(wo, wi[None, :, :, :])
     f = np.broadcast_to(np.asarray(diffuse(wo, wi), np.float64), (n, n, n, 3))
     weight = (w * mu)[:, None, None] * (w * mu)[None, :, None] * (2.0 * np.pi / n)
-    return 2.0 * np.einsum("abc,abcd->d", weight, f)
+    rho: np.ndarray = 2.0 * np.einsum("abc,abcd->d", weight, f)
+    return rho
 
 
 def coat_gain(ior: float, reflectance: Real, internal: Real) -> np.ndarray:

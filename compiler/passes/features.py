@@ -214,7 +214,7 @@ def _mix_in(
 
 def _see_through(state: MaterialState) -> bool:
     """A glass model's base colour is its transmittance: a tint is all the colour it has."""
-    return state.params.get("model", noun_of(state).get("model")) == "glass"
+    return bool(state.params.get("model", noun_of(state).get("model")) == "glass")
 
 
 # ---------------------------------------------------------------- a feature an adjective draws

@@ -37,9 +37,10 @@ def under_albedo(base, eta, rho=None, mus=MUS, color=(1.0, 1.0, 1.0), thickness=
     """The albedo of the coated BRDF without the coat's own lobe (what comes up from the base)."""
 
     def f(o, i):
-        return coated(o, i, base, eta, (alpha, alpha), color, thickness, rho) - coat_specular(
-            o, i, eta, alpha, alpha
-        )[..., None]
+        return (
+            coated(o, i, base, eta, (alpha, alpha), color, thickness, rho)
+            - coat_specular(o, i, eta, alpha, alpha)[..., None]
+        )
 
     return albedo_mis(f, dir_from_mu(mus), [], SAMPLES)
 
@@ -90,8 +91,11 @@ def test_series_is_the_closed_form():
     eta, rho = 1.5, np.array([0.2, 0.5, 0.9])
     got = under_albedo(lambert_base(rho), eta)
     k = internal_reflectance(eta)
-    want = (1.0 - fresnel_dielectric(MUS, eta))[:, None] * (1.0 - fresnel_diffuse_reflectance(eta)) * rho / (
-        eta**2 * (1.0 - rho * k)
+    want = (
+        (1.0 - fresnel_dielectric(MUS, eta))[:, None]
+        * (1.0 - fresnel_diffuse_reflectance(eta))
+        * rho
+        / (eta**2 * (1.0 - rho * k))
     )
     assert got == pytest.approx(want, rel=2e-3)
 
