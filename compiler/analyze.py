@@ -45,12 +45,15 @@ def attach_refinements(doc: ast.Document, lexicon: Lexicon) -> list[tuple[ast.Ma
 def orphan_line(item: ast.Item, lexicon: Lexicon, diags: list[Diagnostic]) -> ast.Material | None:
     """A refinement line with no material above: a comparison of a colour describes its own
     material ('paler blue': cnlmc.implied, with a note), so does a clause ('with a subtle sheen' =
-    paint with a subtle sheen: cnlmc.hedges); any other gets W104."""
+    paint with a subtle sheen: cnlmc.hedges), so do comparatives of a finish ('a glossier finish');
+    any other gets W104."""
     if isinstance(item, ast.Refinement) and (item.items or item.features or item.coat is not None):
-        from .hedges import first_line_clause  # a first-line refinement is rare
+        from .hedges import first_line_clause, first_line_finish  # a first-line refinement is rare
         from .implied import first_line_comparison
 
-        found = first_line_comparison(item, lexicon) or first_line_clause(item, lexicon)
+        found = (
+            first_line_comparison(item, lexicon) or first_line_clause(item, lexicon) or first_line_finish(item, lexicon)
+        )
         if found is not None:
             diags.append(found[1])
             return found[0]

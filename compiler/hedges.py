@@ -23,7 +23,15 @@ from .spans import Span
 from .suggest import teaching
 from .tagged import NOTE_CODE, Candidate, Tagged
 
-__all__ = ["colour_between", "finish_dropped", "first_line_clause", "read_past", "reread", "with_implied"]
+__all__ = [
+    "colour_between",
+    "finish_dropped",
+    "first_line_clause",
+    "first_line_finish",
+    "read_past",
+    "reread",
+    "with_implied",
+]
 
 DEGREE_TARGETS = frozenset({"FEATURE", "COAT", "ADJ", "PROP", "REFINE", "SHADE"})
 NOT_A_CLAUSE = frozenset({"WITH", "NAME", "OBJECT", "REFINE"})  # a line with one of these is not a bare clause
@@ -174,6 +182,36 @@ def read_past(diag: Diagnostic, notes: Sequence[Diagnostic]) -> bool:
         and at is not None
         and any(n.span is not None and n.span.start <= at.start and at.end <= n.span.end for n in notes)
     )
+
+
+def first_line_finish(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
+    """'a glossier finish' with no material above: the comparatives on paint, one step from it (as
+    'glossier paint'), with a note; None for any other line."""
+    if not item.items or item.features or item.coat is not None:
+        return None
+    from .parser import ParseFailure, parse_line_shape
+    from .tagger import Tagger
+
+    start = item.span.start - (item.span.col - 1)
+    words, diags = Tagger.of(lexicon).tag_line(item.text, item.span.line, start)
+    dropped = finish_dropped(words, lexicon) if not diags else None
+    if dropped is None:
+        return None
+    kept = [w for w in dropped[0] if w.text[:1].isalnum()]
+    paint = str(teaching()["completions"]["nouns"][0])
+    with_noun = [*kept, _implied(paint, Candidate("NOUN", paint, "nouns"), kept[-1], 1)]
+    try:
+        shape, picks = parse_line_shape(with_noun, lexicon.caches.shapes)
+    except ParseFailure:
+        return None
+    material = shape.build(with_noun, picks, item.text)
+    if not isinstance(material, ast.Material):
+        return None
+    said = " ".join(w.text for w in words if w.text[:1].isalpha())
+    read = " ".join(w.text for w in kept)
+    message = f"no material named: read '{said}' as '{read} {paint}'"
+    hint = "name the material to choose another, or write the material first and this line below it"
+    return material, Diagnostic(item.span, Severity.NOTE, NOTE_CODE, message, (hint,))
 
 
 def _noun_for(head: ast.Word, lexicon: Lexicon) -> str:

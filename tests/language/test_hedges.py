@@ -172,3 +172,14 @@ def test_a_hyphenated_pair_of_everyday_colours_is_their_oklab_midpoint():
     assert all(min(a, b) - 1e-6 <= m <= max(a, b) + 1e-6 for m, a, b in zip(pair, *ends))
     result, _ = compiled("cream navy paint")
     assert "W105" in {d.code for d in result.diagnostics}
+
+
+def test_a_finish_compared_as_the_first_line_is_paint_one_step_along():
+    said = material("a shinier finish")
+    assert said["params"] == material("shinier paint")["params"]
+    assert said["params"]["roughness"] < material("paint")["params"]["roughness"]
+
+
+@pytest.mark.parametrize(("serving", "liquid"), [("a glass of cola", "cola"), ("a pint of lager", "lager")])
+def test_a_serving_of_a_liquid_is_the_liquid(serving, liquid):
+    assert material(serving)["params"] == material(liquid)["params"]
