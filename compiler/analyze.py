@@ -33,6 +33,8 @@ def attach_refinements(doc: ast.Document, lexicon: Lexicon) -> list[tuple[ast.Ma
     for item in doc.items:
         if isinstance(item, ast.Material):
             pairs.append((item, []))
+        elif pairs and item.material is not None and (changed := changed_material(pairs[-1][0], item, lexicon)):
+            pairs[-1] = (changed, pairs[-1][1])  # 'make it walnut': the material above, now walnut
         elif pairs:
             pairs[-1][1].append(item)
         else:
@@ -42,11 +44,55 @@ def attach_refinements(doc: ast.Document, lexicon: Lexicon) -> list[tuple[ast.Ma
     return pairs
 
 
+def changed_material(material: ast.Material, change: ast.Refinement, lexicon: Lexicon) -> ast.Material | None:
+    """The material above changed to the one a change line names: of the same kind ('make it
+    walnut' under 'white varnished oak') the new noun with the describing words and clauses of
+    both (the line's after), its coat if it names one, the name and span kept; of another kind
+    ('switch to brass' under red plastic) the new material itself. None where the named material is
+    of another kind and is also a colour ('make it cream' under red plastic): the line then applies
+    as the colour (its groups)."""
+    assert change.material is not None, "only a change to a material"
+    new = change.material
+    if _kind(new, lexicon) != _kind(material, lexicon):
+        return (
+            None
+            if change.groups
+            else ast.Material(
+                material.name,
+                new.groups,
+                new.nouns,
+                new.coat,
+                material.span,
+                material.text,
+                new.refinements,
+                new.features,
+            )
+        )
+    return ast.Material(
+        material.name,
+        (*material.groups, *new.groups),
+        new.nouns,
+        new.coat or material.coat,
+        material.span,
+        material.text,
+        material.refinements,
+        (*material.features, *new.features),
+    )
+
+
+def _kind(material: ast.Material, lexicon: Lexicon) -> str:
+    noun = material.nouns[0]
+    entry = lexicon.entry("nouns", noun.key)
+    return str(entry.get("class", noun.key)) if entry is not None else noun.key
+
+
 def orphan_line(item: ast.Item, lexicon: Lexicon, diags: list[Diagnostic]) -> ast.Material | None:
     """A refinement line with no material above: a comparison of a colour describes its own
     material ('paler blue': cnlmc.implied, with a note), so does a clause ('with a subtle sheen' =
     paint with a subtle sheen: cnlmc.hedges), so do comparatives of a finish ('a glossier finish');
     any other gets W104."""
+    if isinstance(item, ast.Refinement) and item.material is not None:
+        return item.material  # 'switch to brass' first: brass
     if isinstance(item, ast.Refinement) and (item.items or item.features or item.coat is not None):
         from .hedges import first_line_clause, first_line_finish  # a first-line refinement is rare
         from .implied import first_line_comparison
@@ -225,6 +271,8 @@ def _material_groups(
         elif material is None:
             material = orphan_line(item, lexicon, diags)  # 'paler blue' first: its own material
             material_ok = material is not None
+        elif not has_error and item.material is not None and (changed := changed_material(material, item, lexicon)):
+            material = changed
         elif not has_error:
             refinements.append(item)
     if material is not None and material_ok:

@@ -180,6 +180,7 @@ class Refinement:
     coat: Coat | None = None  # a line of 'with' clauses: 'with a glossy varnish' adds a coat
     features: tuple[Feature, ...] = ()  # ... or features: 'with fine scratches'
     groups: tuple[Group, ...] = ()  # a change of describing words: 'make it blue', 'turn it matte black'
+    material: Material | None = None  # a change to another material: 'make it walnut', 'switch to brass'
 
     def __init__(
         self,
@@ -190,6 +191,7 @@ class Refinement:
         coat: Coat | None = None,
         features: tuple[Feature, ...] = (),
         groups: tuple[Group, ...] = (),
+        material: Material | None = None,
     ) -> None:
         fields = self.__dict__
         fields["name"] = name
@@ -199,6 +201,7 @@ class Refinement:
         fields["coat"] = coat
         fields["features"] = features
         fields["groups"] = groups
+        fields["material"] = material
 
 
 Item = Material | Refinement

@@ -81,7 +81,15 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
         shape, picks = parse_line_shape(words, tagger.lexicon.caches.shapes)
     except ParseFailure as failure:
         return _failed_line(failure, words, text, tagger.lexicon, diags)
-    return shape.build(words, picks, text)
+    node = shape.build(words, picks, text)
+    if tag_diags and isinstance(node, ast.Material):  # a change phrase read past: 'make it walnut'
+        from .implied import material_change
+
+        change = material_change(node, words, text, tagger.lexicon)
+        if change is not None:
+            diags.append(change[1])
+            return change[0]
+    return node
 
 
 def _failed_line(

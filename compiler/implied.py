@@ -27,7 +27,7 @@ from .spans import Span
 from .suggest import teaching
 from .tagged import NOTE_CODE, Candidate, Tagged
 
-__all__ = ["as_change", "first_line_comparison", "implied_material", "starts_with_change"]
+__all__ = ["as_change", "first_line_comparison", "implied_material", "material_change", "starts_with_change"]
 
 NOT_DESCRIBING = frozenset({"NAME", "OF", "NOUN", "OBJECT"})  # a line with one of these keeps its error
 
@@ -254,6 +254,51 @@ def as_change(material: ast.Material, words: Sequence[Tagged]) -> tuple[ast.Refi
     written = " ".join(w.text for w in said)
     message = f"read '{written}' as a change of the material above: its words apply to it"
     return change, Diagnostic(said[0].span.to(said[-1].span), Severity.NOTE, NOTE_CODE, message)
+
+
+def material_change(
+    node: ast.Material, words: Sequence[Tagged], text: str, lexicon: Lexicon
+) -> tuple[ast.Refinement, Diagnostic] | None:
+    """'make it walnut', 'switch to brass', 'can you make it gold instead': a change line that names
+    a material. The change carries the material (cnlmc.analyze.changed_material: a material of the
+    same kind as the one above takes its place, its describing words kept; another kind replaces
+    it) and, for a noun that is also a colour ('make it cream' under red plastic), the colour
+    reading, used when the kinds differ. None for any other line."""
+    if node.name is not None or len(node.nouns) != 1 or not starts_with_change(text):
+        return None
+    noun = node.nouns[0]
+    said = next((w for w in words if w.span.start == noun.span.start), None)
+    colours = tuple(c for c in said.candidates if c.tag == "COLOR") if said is not None else ()
+    as_colour = _colour_change(words, said, colours, text, lexicon) if said is not None and colours else None
+    kind = lexicon.require("nouns", noun.key).get("class", noun.key)
+    if as_colour is not None:
+        change = ast.Refinement(
+            None, (), node.span, node.text, as_colour.coat, as_colour.features, as_colour.groups, material=node
+        )
+        message = (
+            f"read '{noun.text}' as a change of the material above: {noun.key} if it is {kind} too, else the colour"
+        )
+    else:
+        change = ast.Refinement(None, (), node.span, node.text, material=node)
+        message = f"read '{noun.text}' as a change of the material above: now {noun.key} (its describing words kept if it is {kind} too)"
+    return change, Diagnostic(noun.span, Severity.NOTE, NOTE_CODE, message)
+
+
+def _colour_change(
+    words: Sequence[Tagged], said: Tagged, colours: tuple[Candidate, ...], text: str, lexicon: Lexicon
+) -> ast.Refinement | None:
+    """The change line with its noun read as the colour it also is."""
+    from .parser import ParseFailure, parse_line_shape
+
+    as_colour = [Tagged(w.text, w.span, colours) if w is said else w for w in words]
+    noun = str(teaching()["completions"]["nouns"][0])
+    with_noun = [*as_colour, _implied_noun(noun, as_colour[-1])]
+    try:
+        shape, picks = parse_line_shape(with_noun, lexicon.caches.shapes)
+    except ParseFailure:
+        return None
+    material = shape.build(with_noun, picks, text)
+    return as_change(material, with_noun)[0] if isinstance(material, ast.Material) else None
 
 
 def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:

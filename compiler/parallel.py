@@ -34,7 +34,7 @@ from multiprocessing.connection import Connection, wait
 from typing import Any
 
 from . import ast
-from .analyze import base_name, build_states, orphan_line, orphan_refinement, unique_name
+from .analyze import base_name, build_states, changed_material, orphan_line, orphan_refinement, unique_name
 from .diagnostics import Diagnostic
 from .document import parse_line
 from .interrupts import SIGNALS
@@ -352,6 +352,8 @@ def _owned_groups(
             material_ok = material is not None
         elif material is None:
             pass  # before the chunk's first material: the chunk before reports it
+        elif not has_error and item.material is not None and (changed := changed_material(material, item, lexicon)):
+            material = changed
         elif not has_error:
             refinements.append(item)
     if material is not None and material_ok:

@@ -1,0 +1,66 @@
+"""A change line that names a material (issue #14): 'make it walnut' under 'white varnished oak' is
+white varnished walnut; another kind of material replaces the one above; a noun that is also a
+colour is the colour where the kinds differ ('make it cream' under red plastic)."""
+
+from __future__ import annotations
+
+import pytest
+
+from cnlmc import api
+
+LEX = api.lexicon_for()
+
+
+def session(first: str, *lines: str) -> api.Session:
+    s = api.Session(first, LEX)
+    for line in lines:
+        s.refine(line)
+    return s
+
+
+def compiled(text: str) -> dict:
+    result = api.compile_source(text + "\n", "t.cnl", LEX)
+    assert result.ok and len(result.materials) == 1, [d.message for d in result.diagnostics]
+    return result.materials[0]
+
+
+@pytest.mark.parametrize(
+    ("first", "line", "same_as"),
+    [
+        ("white varnished oak", "make it walnut", "white varnished walnut"),
+        ("brushed aluminum", "can you make it copper instead", "brushed copper"),
+        ("matte red plastic", "switch to nylon", "matte red nylon"),
+        ("glossy red plastic", "change it to steel", "steel"),
+    ],
+)
+def test_a_change_line_naming_a_material_changes_the_material(first, line, same_as):
+    s = session(first, line)
+    assert len(s.result.materials) == 1
+    assert s.material["params"] == compiled(same_as)["params"]
+    assert s.material["maps"] == compiled(same_as)["maps"]
+
+
+def test_refinements_before_the_change_still_apply():
+    s = session("oak", "darker", "make it walnut")
+    assert s.material["params"] == compiled("walnut\ndarker")["params"]
+
+
+def test_a_material_that_is_also_a_colour_is_the_colour_on_another_kind():
+    s = session("red plastic", "make it cream")
+    plain = compiled("red plastic\nmake it cream")
+    assert s.material["model"] == compiled("red plastic")["model"]
+    assert (
+        s.material["params"]["base_color"]
+        == plain["params"]["base_color"]
+        != compiled("red plastic")["params"]["base_color"]
+    )
+
+
+def test_the_note_says_what_was_read():
+    result = api.compile_source("oak\nmake it walnut\n", "t.cnl", LEX)
+    assert any("as a change of the material above" in d.message for d in result.diagnostics if d.code == "N101")
+
+
+def test_a_change_to_a_material_as_the_first_line_is_that_material():
+    result = api.compile_source("switch to brass\n", "t.cnl", LEX)
+    assert result.ok and result.materials[0]["params"] == compiled("brass")["params"]
