@@ -39,6 +39,7 @@ CATEGORIES = {
     "species",
     "clause",
     "german",
+    "hedge",
 }
 
 
