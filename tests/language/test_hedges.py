@@ -183,3 +183,13 @@ def test_a_finish_compared_as_the_first_line_is_paint_one_step_along():
 @pytest.mark.parametrize(("serving", "liquid"), [("a glass of cola", "cola"), ("a pint of lager", "lager")])
 def test_a_serving_of_a_liquid_is_the_liquid(serving, liquid):
     assert material(serving)["params"] == material(liquid)["params"]
+
+
+@pytest.mark.parametrize(
+    ("food", "looks_as"),
+    [("a pint of porter", "cola"), ("oat milk", "milk"), ("raspberry jam", "cranberry juice"), ("royal icing", "toothpaste")],
+)
+def test_food_and_drink_look_as_the_measured_material_they_resemble(food, looks_as):
+    """nouns_food.toml: each takes the dataset values of what it looks like, saying so in its source."""
+    said, like = material(food), material(looks_as)
+    assert said["params"] == like["params"] and said["model"] == like["model"]
