@@ -30,22 +30,28 @@ def material_ir(state: MaterialState, convention: str, rounded_optics: dict[tupl
     """One material's IR; `rounded_optics` (the lexicon's, see LexiconCaches) keeps its nouns' lists rounded."""
     model = state.model
     assert model is not None, "select_model runs before the IR is made"
+    rounded_lists: dict[str, list[float]] = {}
     return {
         "name": state.name,
         **({"label": state.label} if state.label else {}),
         "phrase": state.phrase,
         "variant": state.variant,
         "model": model,
-        "params": _params(state, model, convention, rounded_optics),
+        "params": _params(state, model, convention, rounded_optics, rounded_lists),
         "maps": rounded(state.maps) if state.maps else {},
-        "provenance": _provenance(state),
+        "provenance": _provenance(state, rounded_lists),
     }
 
 
 def _params(
-    state: MaterialState, model: JSONDict, convention: str, rounded_optics: dict[tuple[str, str], list[float]]
+    state: MaterialState,
+    model: JSONDict,
+    convention: str,
+    rounded_optics: dict[tuple[str, str], list[float]],
+    rounded_lists: dict[str, list[float]],
 ) -> JSONDict:
-    """The parameters the model uses, rounded."""
+    """The parameters the model uses, rounded; `rounded_lists` gets each list parameter rounded here
+    (param -> its rounded list), for the provenance step that set it (_provenance)."""
     p, base, noun = state.params, model["base"], state.noun
     noun_data = noun.data if noun is not None else {}
     out: JSONDict = {}
@@ -67,7 +73,7 @@ def _params(
                 found = rounded_optics.get((noun.key, k))  # _noun_list's common case, without its call
                 out[k] = list(found) if found is not None else _noun_list(rounded_optics, noun, k)
             else:
-                out[k] = round6_list(value)
+                out[k] = rounded_lists[k] = round6_list(value)
     if model["diffuse"] == "oren_nayar":
         out["diffuse_roughness"] = rounded(p.get("diffuse_roughness", Params.diffuse_roughness))
     if base != "diffuse":
@@ -109,10 +115,14 @@ def _coat(coat: JSONDict | None, convention: str) -> JSONDict:
     return out
 
 
-def _provenance(state: MaterialState) -> dict[str, list[JSONDict]]:
-    """param -> its steps in JSON form; steps naming the same words share their word lists."""
+def _provenance(state: MaterialState, rounded_lists: dict[str, list[float]]) -> dict[str, list[JSONDict]]:
+    """param -> its steps in JSON form; steps naming the same words share their word lists. A step
+    whose value is its parameter's own list (the last colour step of the base colour) takes a copy
+    of what _params rounded (`rounded_lists`) instead of rounding the list again: the same object
+    rounds to the same list."""
     shared: dict[int | tuple[int, ...], WordLists] = {}
     out: dict[str, list[JSONDict]] = {}
+    params = state.params
     for param, steps in state.provenance.items():
         made: list[JSONDict] = []
         out[param] = made
@@ -140,7 +150,8 @@ def _provenance(state: MaterialState) -> dict[str, list[JSONDict]]:
                 if kind is float:
                     value = round6(value)
                 elif kind is list:
-                    value = round6_list(value)
+                    done = rounded_lists.get(param) if value is params.get(param) else None
+                    value = list(done) if done is not None else round6_list(value)
                 elif kind is not str:  # a graph's or a coat's name is kept as it is
                     value = rounded(value)
                 made.append({"rule": step.rule, "words": lists[0], "spans": lists[1], "value": value})
