@@ -141,6 +141,42 @@ def emit(ir: JSONDict | Document, target: str, options: dict[str, object] | None
     return get_target(target).emit_ir(ir, options or {})
 
 
+def refined(
+    document: str, words: str, lexicon: Lexicon, name: str, seed: int = 0, before: Result | None = None
+) -> tuple[str, Result]:
+    """The document with `words` added as a refinement line, and its compile result. Describing
+    words alone start a material of their own (cnlmc.implied: 'purple' = purple paint), but said as
+    a refinement they mean a change of the material there: they are added as the change line
+    'make it purple' (teaching.toml [politeness] changes, the first listed). Anything else is added
+    as it was said. `before`: the document's own result, when the caller has it."""
+    from .suggest import teaching
+
+    base = document.rstrip("\n")
+    words = _complaint_as_change(words, teaching()["politeness"])
+    text = f"{base}\n{words}"
+    trial = compile_source(text, name, lexicon, seed)
+    known = before if before is not None else compile_source(base, name, lexicon, seed)
+    if len(trial.materials) > len(known.materials):
+        text = f"{base}\n{teaching()['politeness']['changes'][0]} {words}"
+        trial = compile_source(text, name, lexicon, seed)
+    return text, trial
+
+
+def _complaint_as_change(words: str, table: Mapping[str, Any]) -> str:
+    """'too dark', "it's way too shiny": the change a complaint asks for ('less dark', 'much less
+    shiny'); any other words as they are."""
+    said = " ".join(words.split())
+    low = said.lower()
+    for opener in sorted(table["complaint_openers"], key=len, reverse=True):
+        if low.startswith(opener + " "):
+            said, low = said[len(opener) + 1 :], low[len(opener) + 1 :]
+            break
+    for complaint in sorted(table["complaints"], key=len, reverse=True):
+        if low.startswith(complaint + " "):
+            return f"{table['complaints'][complaint]} {said[len(complaint) + 1 :]}"
+    return words
+
+
 class Session:
     """Interactive refinement: session.refine("darker") changes the material, as in the paper."""
 
@@ -160,16 +196,22 @@ class Session:
 
     def trial(self, words: str) -> Result:
         """What adding the refinement line would compile to; the session is left as it is."""
-        return compile_source(self.text([words]), self.filename, self.lexicon, self.seed)
+        return self._refined(words)[1]
 
     def refine(self, words: str) -> JSONDict:
-        """Apply a refinement line; a line that fails leaves the material as it was."""
-        result = self.trial(words)
+        """Apply a refinement line; a line that fails leaves the material as it was. Describing
+        words alone change the material ('matte', 'too dark': `refined`), as every line said in a
+        session refines it."""
+        line, result = self._refined(words)
         if not result.ok:
             raise ValueError("; ".join(d.message for d in result.diagnostics if d.is_error))
-        self.lines.append(words)
+        self.lines.append(line)
         self.result = result
         return self.material
+
+    def _refined(self, words: str) -> tuple[str, Result]:
+        text, result = refined(self.text(), words, self.lexicon, self.filename, self.seed, self.result)
+        return text.rsplit("\n", 1)[-1], result
 
     def undo(self) -> JSONDict:
         """Drop the last refinement line (ValueError when there is none); returns the material."""

@@ -219,9 +219,12 @@ def _note(said: Sequence[Tagged], noun: str, others: Sequence[str], why: str = "
 
 def starts_with_change(text: str) -> bool:
     """Whether the line starts with a change phrase ('make it', 'turn it': teaching.toml
-    [politeness] changes), then a space or a mark, after any other politeness ('now make it')."""
+    [politeness] changes), then a space or a mark, after any other politeness ('now make it'), or
+    ends with one ('matte instead': `changes_at_end`)."""
     table = teaching()["politeness"]
     said = " ".join(text.lower().split())
+    if said.rstrip(" " + "".join(table["marks"])).endswith(tuple(f" {p}" for p in table["changes_at_end"])):
+        return True
     while True:
         if _starts_with_one_of(said, table["changes"]) or _second_word_is_a_pronoun(said, table["pronouns"]):
             return True
@@ -264,13 +267,16 @@ def material_change(
     same kind as the one above takes its place, its describing words kept; another kind replaces
     it) and, for a noun that is also a colour ('make it cream' under red plastic), the colour
     reading, used when the kinds differ. None for any other line."""
-    if node.name is not None or len(node.nouns) != 1 or not starts_with_change(text):
+    if node.name is not None or len(node.nouns) != 1 or node.nouns[0].unknown or not starts_with_change(text):
         return None
     noun = node.nouns[0]
+    entry = lexicon.entry("nouns", noun.key)
+    if entry is None:
+        return None
     said = next((w for w in words if w.span.start == noun.span.start), None)
     colours = tuple(c for c in said.candidates if c.tag == "COLOR") if said is not None else ()
     as_colour = _colour_change(words, said, colours, text, lexicon) if said is not None and colours else None
-    kind = lexicon.require("nouns", noun.key).get("class", noun.key)
+    kind = entry.get("class", noun.key)
     if as_colour is not None:
         change = ast.Refinement(
             None, (), node.span, node.text, as_colour.coat, as_colour.features, as_colour.groups, material=node

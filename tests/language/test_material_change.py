@@ -64,3 +64,31 @@ def test_the_note_says_what_was_read():
 def test_a_change_to_a_material_as_the_first_line_is_that_material():
     result = api.compile_source("switch to brass\n", "t.cnl", LEX)
     assert result.ok and result.materials[0]["params"] == compiled("brass")["params"]
+
+
+@pytest.mark.parametrize("line", ["tone it down", "make it zorbly", "switch to flimflam"])
+def test_a_change_line_with_an_unknown_word_is_an_unknown_word_not_a_crash(line):
+    result = api.compile_source(f"glossy red plastic\n{line}\n", "t.cnl", LEX)
+    assert [d.code for d in result.diagnostics if d.is_error] == ["E001"]
+
+
+@pytest.mark.parametrize(
+    ("line", "same_as"),
+    [
+        ("satin", "make it satin"),
+        ("too glossy", "less glossy"),
+        ("it's way too red", "much less red"),
+        ("that is a bit too dark", "a bit less dark"),
+    ],
+)
+def test_a_session_line_always_refines_the_material(line, same_as):
+    """In a session every line refines: describing words alone are a change ('satin' = make it
+    satin, not a second material), a complaint asks for less ('too glossy' = less glossy)."""
+    said, meant = session("glossy red plastic", line), session("glossy red plastic", same_as)
+    assert len(said.result.materials) == 1
+    assert said.material["params"] == meant.material["params"]
+    assert said.material["params"] != session("glossy red plastic").material["params"]
+
+
+def test_too_in_a_description_is_still_a_booster():
+    assert compiled("too glossy plastic")["params"]["roughness"] < compiled("glossy plastic")["params"]["roughness"]
