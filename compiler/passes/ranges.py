@@ -71,8 +71,12 @@ def _check_all(
     for param, value in holder.items():  # the common case, one pass over what is set: nothing to clamp
         bounds = ranges.get(param)
         if bounds is None:
-            if finite and not ((type(value) is float and -BIGGEST <= value <= BIGGEST) or _finite(value)):
-                finite = False  # (check_finite's test of a value)
+            if finite:  # check_finite's test of a value (_finite); a name or a flag is no number, no call
+                kind = type(value)
+                if kind is float:
+                    finite = -BIGGEST <= value <= BIGGEST  # NaN fails both
+                elif kind is list or kind is dict:
+                    finite = _finite(value)
             continue
         if value is None:
             continue
@@ -182,11 +186,16 @@ def _all_finite(state: MaterialState) -> bool:
 
 
 def _steps_finite(state: MaterialState) -> bool:
-    """Whether every provenance step's value is finite (False: maybe not; check_finite sees)."""
-    big = BIGGEST
-    for steps in state.provenance.values():
+    """Whether every provenance step's value is finite (False: maybe not; check_finite sees). Both
+    callers have found every parameter value finite first, so a step whose value is its parameter's
+    value itself (the step that set it last, most often) is not looked at again."""
+    big, params = BIGGEST, state.params
+    for name, steps in state.provenance.items():
+        current = params.get(name)
         for step in steps:
             value = step.value
+            if value is current:
+                continue
             kind = type(value)
             if kind is float:
                 if not -big <= value <= big:  # NaN fails both
