@@ -179,6 +179,8 @@ class LexiconCaches:
       OKLab numbers its provenance names (passes/textured_colour.py)
     - coat_facts: adjective key -> (its entry, whether it lays a coat, whether it is a finish word
       that only sets the gloss) (passes/order.py: gloss_on_coat)
+    - coat_fields: coat key -> (its entry, the fields a material's coat starts from) (passes/words.py:
+      apply_coat_entry)
     """
 
     MAX_ENTRIES = 4096  # a memo this full starts over
@@ -199,6 +201,7 @@ class LexiconCaches:
         self.noun_plans: dict[str, Any] = {}
         self.pattern_colours: dict[tuple[tuple[float, ...], str], Any] = {}
         self.coat_facts: dict[str, tuple[Entry, bool, bool]] = {}
+        self.coat_fields: dict[str, tuple[Entry, dict[str, Any]]] = {}
 
 
 class Lexicon:

@@ -510,9 +510,22 @@ def _apply_adjective_coat(state: MaterialState, ctx: Context, adjective: Entry, 
 
 def apply_coat_entry(state: MaterialState, ctx: Context, coat_key: str, rule: str, words: Words) -> None:
     entry = ctx.lexicon.require("coats", coat_key)
-    state.coat = {k: v for k, v in entry.data.items() if k not in ("aliases", "doc", "example")}
-    state.coat["name"] = coat_key
+    fields = ctx.lexicon.caches.coat_fields.get(coat_key)
+    if fields is None or fields[0] is not entry:
+        fields = _coat_fields(coat_key, entry, ctx.lexicon.caches)
+    state.coat = dict(fields[1])  # the material's own copy: passes change its values
     state.note("coat", coat_key, rule, words)
+
+
+def _coat_fields(coat_key: str, entry: Entry, caches: LexiconCaches) -> tuple[Entry, dict[str, Any]]:
+    """The coat's fields as a material holds them (its entry's, but for aliases, doc and example,
+    with its name), read once per lexicon (LexiconCaches.coat_fields)."""
+    fields = {k: v for k, v in entry.data.items() if k not in ("aliases", "doc", "example")}
+    fields["name"] = coat_key
+    if len(caches.coat_fields) >= LexiconCaches.MAX_ENTRIES:
+        caches.coat_fields.clear()
+    caches.coat_fields[coat_key] = (entry, fields)
+    return entry, fields
 
 
 def _apply_qualifier(
