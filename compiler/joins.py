@@ -66,6 +66,7 @@ class Joiner:
         if any(t.unknown or of_tag(t, "OF") or of_tag(t, "WITH") for t in tagged):
             tagged = self._made_of(tagged, diags)
         out: list[Tagged] = []
+        formed: list[tuple[Tagged, Tagged]] = []  # (the joined noun, its object word): 'marble tiles'
         for k, word in enumerate(tagged):
             before = out[-1] if out else None
             if word.unknown and self._names_use(word, tagged[k + 1 :], diags):  # "guitar varnish", "boat paint"
@@ -84,9 +85,11 @@ class Joiner:
                 continue
             if before is not None and of_tag(before, "OBJECT") and not others(before) and nouns:
                 out[-1] = self._join(before, word, nouns, f"'{word.text}' ('{before.text}' names the object)", diags)
+                formed.append((out[-1], word if of_tag(word, "OBJECT") else before))  # 'floor tiles': the tiles
             elif before is not None and of_tag(word, "OBJECT") and of_tag(before, "NOUN"):
                 made = of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' (the material of the {word.text})", diags)
+                formed.append((out[-1], word))
             elif before is not None and self.is_head(before, word.text, k + 1 == len(tagged), out):
                 out[-1] = self.with_head(before, word.text, word.span, k + 1 == len(tagged), diags)
             elif before is not None and nouns and self._finish_noun(before) is not None:
@@ -115,8 +118,11 @@ class Joiner:
                     diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))  # "wire brushed oak"
                 else:
                     out.append(self._object_alone(word, diags))
+                    formed.append((out[-1], word))
             else:
                 out.append(word)
+        for noun, thing in formed:
+            self._form_feature(out, noun, thing, diags)
         if len(out) > 2 and self._is_coat_finish(out):
             self._coat_after(out, diags)
         elif len(out) > 2 and _layer_of(out, diags) and self._coat_alone(out) is not None:
@@ -418,6 +424,37 @@ class Joiner:
         if takes_one and after < len(out) - 1 and any(c.tag in COMPARED for c in out[after].candidates):
             return after + 1
         return after
+
+    def _form_feature(self, out: list[Tagged], noun: Tagged, thing: Tagged, diags: list[Diagnostic]) -> None:
+        """An object whose form is a pattern ('tiles': objects.toml `feature` = grout) draws it: the
+        feature clause after its material noun ('marble tiles' = marble with grout), first among the
+        clauses, when the noun ends the material part of the line."""
+        objects = of_tag(thing, "OBJECT")
+        entry = self.lexicon.entry("objects", objects[0].key) if objects else None
+        key = entry.get("feature") if entry is not None else None
+        if key is None or noun not in out or not of_tag(noun, "NOUN"):
+            return
+        n = out.index(noun)
+        rest = out[n + 1 :]
+        if (rest and not of_tag(rest[0], "WITH")) or any(of_tag(t, "FEATURE") and t.text == key for t in rest):
+            return
+        at, col = noun.span.end, noun.span.col + noun.span.end - noun.span.start
+        inside = min(noun.span.start + 1, noun.span.end - 1)
+        clause = [
+            Tagged("with", Span(at, at, noun.span.line, col), _WITH, implied_by=thing.span),
+            Tagged(
+                key,
+                Span(inside, inside, noun.span.line, noun.span.col + inside - noun.span.start),
+                (Candidate("FEATURE", key, "features"),),
+                implied_by=thing.span,
+            ),
+        ]
+        if rest:
+            w = rest[0].span
+            clause.append(Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), _AND, implied_by=thing.span))
+        out[n + 1 : n + 1] = clause
+        note = f"read '{thing.text}' as laid {thing.text}: with {key}"
+        diags.append(Diagnostic(thing.span, Severity.NOTE, NOTE_CODE, note))
 
     def _join(
         self, a: Tagged, b: Tagged, candidates: tuple[Candidate, ...], reading: str, diags: list[Diagnostic]

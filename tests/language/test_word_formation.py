@@ -116,7 +116,7 @@ def test_un_before_an_unknown_word_stays_unknown(lexicon):
         ("bead-polished chrome", "polished chrome", "'polished'"),
         ("matte look plastic", "matte plastic", "'look'"),
         ("brushed brass look", "brushed brass", "'look'"),
-        ("marble effect tiles", "marble", "'effect'"),
+        ("marble effect tiles", "marble tiles", "'effect'"),
         ("rough-hewn pine", "rough pine", "first part"),
         ("wire brushed ash", "brushed ash", "saying how"),
         ("walnut-veneer", "walnut", "material of the veneer"),
@@ -204,7 +204,7 @@ def test_wordnet_adjectives_are_only_the_visual_ones(lexicon):
         ("granite stone", "granite", "its class"),
         ("planks", "wood", "usual material"),
         ("pipes", "steel", "usual material"),
-        ("floor tiles", "tiles", "names the object"),
+        ("floor tiles", "tiles with grout", "names the object"),
         ("cinder blocks", "cinder block", ""),
         ("paving stones", "paving stone", ""),
     ],
@@ -383,8 +383,9 @@ def test_every_object_after_a_noun_is_that_noun_and_alone_its_material(lexicon):
         for form in (key, *entry.get("aliases", ())):
             if " " in form or lexicon.lookup((form,)) != [entry]:
                 continue  # multi-word forms and words with other readings are tested above
-            assert look_of(lexicon, f"copper {form}") == look_of(lexicon, "copper"), form
-            assert look_of(lexicon, form) == look_of(lexicon, entry.get("material")), form
+            drawn = f" with {entry.get('feature')}" if entry.get("feature") else ""  # 'copper tiles': laid, with grout
+            assert look_of(lexicon, f"copper {form}") == look_of(lexicon, f"copper{drawn}"), form
+            assert look_of(lexicon, form) == look_of(lexicon, f"{entry.get('material')}{drawn}"), form
 
 
 # ---------------------------------------------------------------- resemblance ([resemblance], cnlmc.resemblance)
@@ -520,3 +521,12 @@ def test_a_metal_tone_is_its_colour_not_a_metal(lexicon):
     _plain, plastic = compiled(lexicon, "plastic")
     assert look["model"] == plastic["model"]
     assert oklab_distance(look["params"]["base_color"], apparent_colour(lexicon, "titanium")) < 0.06
+
+
+def test_tiles_are_drawn_laid_with_grout_lines(lexicon):
+    """objects.toml `feature`: 'marble tiles' is marble with the tiles graph's grid, as 'marble with grout'."""
+    tiles, _ = compiled(lexicon, "marble tiles")
+    plain, _ = compiled(lexicon, "marble")
+    graphs = {m.get("graph") for m in tiles.materials[0]["maps"].values()}
+    assert "tiles" in graphs and "tiles" not in {m.get("graph") for m in plain.materials[0]["maps"].values()}
+    assert "read 'tiles' as laid tiles: with grout" in notes(tiles)
