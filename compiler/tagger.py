@@ -54,6 +54,11 @@ def raw_tokens(line: str) -> list[tuple[str, int]]:
     plain = _plain_words(line)
     if plain is not None:
         return plain
+    return _pattern_tokens(line)
+
+
+def _pattern_tokens(line: str) -> list[tuple[str, int]]:
+    """raw_tokens by the regular expression (any line that is not plain words)."""
     if "#" not in line:
         return [(match.group(), match.start()) for match in TOKEN_RE.finditer(line)]
     out = []
@@ -143,12 +148,16 @@ class Tagger:
 
     def tag_line(self, line: str, line_no: int, offset: int) -> tuple[list[Tagged], list[Diagnostic]]:
         """Return (tagged words, diagnostics) for one line of source."""
-        raw = raw_tokens(line)
-        if raw and not (raw[-1][0][0].isalnum() and raw[0][0][0].isalpha()):
-            raw = self._undecorated(raw)
         tagged: list[Tagged] = []
         diags: list[Diagnostic] = []
-        i = self._name_prefix(line, raw, line_no, offset, tagged) if ":" in line else 0
+        raw = _plain_words(line)  # raw_tokens' common case: letters only, no mark to drop, no name
+        i = 0
+        if raw is None:
+            raw = _pattern_tokens(line)
+            if raw and not (raw[-1][0][0].isalnum() and raw[0][0][0].isalpha()):
+                raw = self._undecorated(raw)
+            if ":" in line:
+                i = self._name_prefix(line, raw, line_no, offset, tagged)
         remembered, followers, count = self.memo._entries, self.followers, len(raw)
         while i < count:
             text, col = raw[i]
