@@ -102,6 +102,10 @@ def _failed_line(
     from .implied import as_change, implied_material, starts_with_change
     from .teach import teach_syntax_error
 
+    polite = _politely(words, lexicon)  # 'more of a teal', 'ok, a bit darker': known words, a rewrite
+    if polite is not None and (node := _parsed(polite[1], text, lexicon)) is not None:
+        diags.extend(polite[0])
+        return node
     hedged, notes = reread(words, lexicon)  # 'a touch of sheen' = 'slightly sheen'
     for attempt in _rereadings(hedged, notes, with_implied(hedged) or finish_dropped(hedged, lexicon)):
         node = _parsed(attempt[0], text, lexicon)
@@ -131,6 +135,16 @@ def _failed_line(
             return material
     diags.append(taught)
     return None
+
+
+def _politely(words: list[Tagged], lexicon: Lexicon) -> tuple[list[Diagnostic], list[Tagged]] | None:
+    """The line read without its politeness and with its rewrites (cnlmc.politeness), as a line
+    with an unknown word is: its notes and words; None when nothing is read past or rewritten."""
+    from .politeness import without_politeness
+    from .teach import tagged_word
+
+    notes, kept = without_politeness([], words, lambda word: tagged_word(word, lexicon))
+    return (notes, kept) if notes else None
 
 
 def _rereadings(

@@ -470,6 +470,8 @@ class Joiner:
         the line ("brushed steel look") — never after a 'with': there the clause's feature reads it
         ("steel with a walnut finish", "oak with a glossy finish and fine scratches")."""
         low = text.lower()
+        if before.unknown:
+            return False  # its readings are guesses ('please tone': no colour named 'please')
         if low in self.rules().colour_heads:  # "sand coloured", "cream colored": before a noun or at the end
             return any(c.tag in ("COLOR", "NOUN") for c in before.candidates)
         if low in self.rules().like_heads:  # "leather like vinyl", "mirror like steel"

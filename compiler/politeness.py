@@ -35,14 +35,17 @@ def without_politeness(
     kept = list(words)
     dropped: list[list[Tagged]] = []
     put: Tagged | None = None
-    taken = _edge_phrase(kept, list(rewrites), marks, at_start=True) if tag is not None and len(kept) > 1 else 0
-    if taken:
-        run, kept = kept[:taken], kept[taken:]
-        said = " ".join(w.text.lower() for w in run if w.text[:1].isalnum())
-        put = _rewritten(run, tag(rewrites[said])) if tag is not None and said in rewrites else None
-        dropped.append(run)
+    rewritten: list[Tagged] | None = None
     for at_start, phrases in ((True, table["leading"]), (False, table["trailing"])):
         while len(kept) > 1:
+            if at_start and rewritten is None and tag is not None:  # 'ok, more of a teal': after the politeness
+                taken = _edge_phrase(kept, list(rewrites), marks, at_start=True)
+                if taken:
+                    rewritten, kept = kept[:taken], kept[taken:]
+                    said = " ".join(w.text.lower() for w in rewritten if w.text[:1].isalnum())
+                    put = _rewritten(rewritten, tag(rewrites[said])) if said in rewrites else None
+                    dropped.append(rewritten)
+                    break
             taken = _edge_phrase(kept, phrases, marks, at_start)
             if not taken:
                 break
@@ -55,9 +58,9 @@ def without_politeness(
         return diags, kept
     spans = [w.span for run in dropped for w in run] + read_as
     out = [d for d in diags if not _inside(d, spans)]  # their unknown words, stray marks, readings
-    for k, run in enumerate(dropped):
+    for run in dropped:
         text = " ".join(w.text for w in run if w.text[:1].isalnum())
-        if k == 0 and put is not None:
+        if run is rewritten and put is not None:
             note = f"read '{text}' as '{put.text}'"
         elif run[0] is pronoun:
             note = f"read '{text}' as the material above"

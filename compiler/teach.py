@@ -41,7 +41,7 @@ def fit_unknown_words(
     report a second error for a guess that does not fit: 'tinn glass' is not 'tin glass')."""
     diags, words = without_measures(diags, words)
     diags, words = colour_between(diags, words, lexicon)
-    diags, words = without_politeness(diags, words, lambda word: _tagged_word(word, lexicon))
+    diags, words = without_politeness(diags, words, lambda word: tagged_word(word, lexicon))
     out, fitted = [], list(words)
     for diag in diags:
         index = _unknown_index(diag, words)
@@ -55,7 +55,7 @@ def fit_unknown_words(
     return out, fitted
 
 
-def _tagged_word(word: str, lexicon: Lexicon) -> Tagged | None:
+def tagged_word(word: str, lexicon: Lexicon) -> Tagged | None:
     """One word as the lexicon tags it alone (a politeness rewrite's 'with', 'less')."""
     from .tagger import Tagger
 

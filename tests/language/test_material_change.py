@@ -92,3 +92,21 @@ def test_a_session_line_always_refines_the_material(line, same_as):
 
 def test_too_in_a_description_is_still_a_booster():
     assert compiled("too glossy plastic")["params"]["roughness"] < compiled("glossy plastic")["params"]["roughness"]
+
+
+@pytest.mark.parametrize(
+    ("line", "same_as"),
+    [
+        ("more of a teal", "more teal"),
+        ("ok, more of a teal", "more teal"),
+        ("please, tone down the shine", "less shine"),
+    ],
+)
+def test_politeness_and_rewrites_are_read_on_a_line_of_known_words_too(line, same_as):
+    said, meant = session("navy blue velvet", line), session("navy blue velvet", same_as)
+    assert said.material["params"] == meant.material["params"] != session("navy blue velvet").material["params"]
+
+
+def test_an_unknown_word_before_a_head_word_is_not_a_colour():
+    result = api.compile_source("glossy red plastic\nplease tone down the shine\n", "t.cnl", LEX)
+    assert not any("as the colour ''" in d.message for d in result.diagnostics)
