@@ -110,3 +110,15 @@ def test_politeness_and_rewrites_are_read_on_a_line_of_known_words_too(line, sam
 def test_an_unknown_word_before_a_head_word_is_not_a_colour():
     result = api.compile_source("glossy red plastic\nplease tone down the shine\n", "t.cnl", LEX)
     assert not any("as the colour ''" in d.message for d in result.diagnostics)
+
+
+def test_a_german_complaint_asks_for_less():
+    de = api.lexicon_for(("de",))
+    said, meant = api.Session("glänzender roter Kunststoff", de), api.Session("glänzender roter Kunststoff", de)
+    said.refine("viel zu glänzend")
+    meant.refine("viel weniger glänzend")
+    assert said.material["params"] == meant.material["params"]
+    assert (
+        said.material["params"]["roughness"]
+        > api.Session("glänzender roter Kunststoff", de).material["params"]["roughness"]
+    )
