@@ -530,3 +530,19 @@ def test_tiles_are_drawn_laid_with_grout_lines(lexicon):
     graphs = {m.get("graph") for m in tiles.materials[0]["maps"].values()}
     assert "tiles" in graphs and "tiles" not in {m.get("graph") for m in plain.materials[0]["maps"].values()}
     assert "read 'tiles' as laid tiles: with grout" in notes(tiles)
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [("sandstone pavers", "sandstone"), ("wool blend", "wool"), ("anthracite grey paint", "charcoal grey paint")],
+)
+def test_trade_words_read_as_the_material(lexicon, said, same_as):
+    """A paver is a shape (objects_building.toml), a blend names its fibre (a head word), anthracite
+    grey is the survey's charcoal grey."""
+    assert look_of(lexicon, said) == look_of(lexicon, same_as)
+
+
+def test_primed_is_a_flat_off_white_undercoat(lexicon):
+    primed, _ = compiled(lexicon, "primed MDF")
+    p = primed.materials[0]["params"]
+    assert p["roughness"] >= 0.8 and min(p["base_color"]) > 0.7 and not primed.materials[0]["maps"]
