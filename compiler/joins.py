@@ -427,12 +427,13 @@ class Joiner:
 
     def _form_feature(self, out: list[Tagged], noun: Tagged, thing: Tagged, diags: list[Diagnostic]) -> None:
         """An object whose form is a pattern ('tiles': objects.toml `feature` = grout) draws it: the
-        feature clause after its material noun ('marble tiles' = marble with grout), first among the
-        clauses, when the noun ends the material part of the line."""
+        feature clause after its material noun ('white tiles' = ceramic tile with grout), first among
+        the clauses, when the noun ends the material part of the line and the material has no colour
+        pattern of its own ('marble tiles' keep marble's veins)."""
         objects = of_tag(thing, "OBJECT")
         entry = self.lexicon.entry("objects", objects[0].key) if objects else None
         key = entry.get("feature") if entry is not None else None
-        if key is None or noun not in out or not of_tag(noun, "NOUN"):
+        if key is None or noun not in out or not of_tag(noun, "NOUN") or self._own_pattern(noun):
             return
         n = out.index(noun)
         rest = out[n + 1 :]
@@ -455,6 +456,13 @@ class Joiner:
         out[n + 1 : n + 1] = clause
         note = f"read '{thing.text}' as laid {thing.text}: with {key}"
         diags.append(Diagnostic(thing.span, Severity.NOTE, NOTE_CODE, note))
+
+    def _own_pattern(self, noun: Tagged) -> bool:
+        """Whether the material draws a colour pattern of its own (marble's veins, granite's grains):
+        a map slot holds one graph, so its own pattern is kept and the laying pattern left out."""
+        entry = self.lexicon.entry("nouns", of_tag(noun, "NOUN")[0].key)
+        maps = entry.get("maps") if entry is not None else None
+        return bool(maps and "base_color" in maps)
 
     def _join(
         self, a: Tagged, b: Tagged, candidates: tuple[Candidate, ...], reading: str, diags: list[Diagnostic]

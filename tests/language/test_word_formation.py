@@ -116,7 +116,7 @@ def test_un_before_an_unknown_word_stays_unknown(lexicon):
         ("bead-polished chrome", "polished chrome", "'polished'"),
         ("matte look plastic", "matte plastic", "'look'"),
         ("brushed brass look", "brushed brass", "'look'"),
-        ("marble effect tiles", "marble tiles", "'effect'"),
+        ("marble effect tiles", "marble", "'effect'"),
         ("rough-hewn pine", "rough pine", "first part"),
         ("wire brushed ash", "brushed ash", "saying how"),
         ("walnut-veneer", "walnut", "material of the veneer"),
@@ -524,12 +524,14 @@ def test_a_metal_tone_is_its_colour_not_a_metal(lexicon):
 
 
 def test_tiles_are_drawn_laid_with_grout_lines(lexicon):
-    """objects.toml `feature`: 'marble tiles' is marble with the tiles graph's grid, as 'marble with grout'."""
-    tiles, _ = compiled(lexicon, "marble tiles")
-    plain, _ = compiled(lexicon, "marble")
+    """objects.toml `feature`: 'terracotta tiles' is terracotta with the tiles graph's grid, as
+    'terracotta with grout'; a material with a colour pattern of its own keeps it ('marble tiles')."""
+    tiles, _ = compiled(lexicon, "terracotta tiles")
+    plain, _ = compiled(lexicon, "terracotta")
     graphs = {m.get("graph") for m in tiles.materials[0]["maps"].values()}
     assert "tiles" in graphs and "tiles" not in {m.get("graph") for m in plain.materials[0]["maps"].values()}
     assert "read 'tiles' as laid tiles: with grout" in notes(tiles)
+    assert look_of(lexicon, "marble tiles") == look_of(lexicon, "marble")
 
 
 @pytest.mark.parametrize(
