@@ -187,7 +187,12 @@ def test_a_serving_of_a_liquid_is_the_liquid(serving, liquid):
 
 @pytest.mark.parametrize(
     ("food", "looks_as"),
-    [("a pint of porter", "cola"), ("oat milk", "milk"), ("raspberry jam", "cranberry juice"), ("royal icing", "toothpaste")],
+    [
+        ("a pint of porter", "cola"),
+        ("oat milk", "milk"),
+        ("raspberry jam", "cranberry juice"),
+        ("royal icing", "toothpaste"),
+    ],
 )
 def test_food_and_drink_look_as_the_measured_material_they_resemble(food, looks_as):
     """nouns_food.toml: each takes the dataset values of what it looks like, saying so in its source."""
