@@ -10,7 +10,7 @@ from . import ast
 from .diagnostics import Diagnostic, error
 from .lexicon import Lexicon
 from .lines import iter_lines
-from .parser import ParseFailure, describe_expected, parse_line_shape
+from .parser import ParseFailure, describe_expected, parse_line_shape, parsed_item
 from .shape_store import save_shapes
 from .spans import Span
 from .tagged import Tagged
@@ -160,11 +160,7 @@ def _rereadings(
 
 
 def _parsed(words: list[Tagged], text: str, lexicon: Lexicon) -> ast.Item | None:
-    try:
-        shape, picks = parse_line_shape(words, lexicon.caches.shapes)
-    except ParseFailure:
-        return None
-    return shape.build(words, picks, text)
+    return parsed_item(words, text, lexicon.caches.shapes)
 
 
 def _failure_of(words: list[Tagged], lexicon: Lexicon) -> ParseFailure | None:

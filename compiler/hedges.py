@@ -141,7 +141,7 @@ def first_line_clause(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Mater
     the feature's example names, or paint for a feature of any surface, with the clause; a note."""
     if item.items or item.groups or not (item.features or item.coat):
         return None
-    from .parser import ParseFailure, parse_line_shape
+    from .parser import parsed_material
     from .tagger import Tagger
 
     start = item.span.start - (item.span.col - 1)  # the line's offset: its text is the whole line
@@ -158,12 +158,8 @@ def first_line_clause(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Mater
     noun = _noun_for(head, lexicon)
     clause = next(w for w in words if w.span.start == head.span.start)
     with_noun = [_implied(noun, Candidate("NOUN", noun, "nouns"), clause, 2), *words]
-    try:
-        shape, picks = parse_line_shape(with_noun, lexicon.caches.shapes)
-    except ParseFailure:
-        return None
-    material = shape.build(with_noun, picks, item.text)
-    if not isinstance(material, ast.Material):
+    material = parsed_material(with_noun, item.text, lexicon.caches.shapes)
+    if material is None:
         return None
     said = [w for w in words if w.text[:1].isalpha() and w.implied_by is None]
     written = " ".join(w.text for w in said)
@@ -189,7 +185,7 @@ def first_line_finish(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Mater
     'glossier paint'), with a note; None for any other line."""
     if not item.items or item.features or item.coat is not None:
         return None
-    from .parser import ParseFailure, parse_line_shape
+    from .parser import parsed_material
     from .tagger import Tagger
 
     start = item.span.start - (item.span.col - 1)
@@ -200,12 +196,8 @@ def first_line_finish(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Mater
     kept = [w for w in dropped[0] if w.text[:1].isalnum()]
     paint = str(teaching()["completions"]["nouns"][0])
     with_noun = [*kept, _implied(paint, Candidate("NOUN", paint, "nouns"), kept[-1], 1)]
-    try:
-        shape, picks = parse_line_shape(with_noun, lexicon.caches.shapes)
-    except ParseFailure:
-        return None
-    material = shape.build(with_noun, picks, item.text)
-    if not isinstance(material, ast.Material):
+    material = parsed_material(with_noun, item.text, lexicon.caches.shapes)
+    if material is None:
         return None
     said = " ".join(w.text for w in words if w.text[:1].isalpha())
     read = " ".join(w.text for w in kept)

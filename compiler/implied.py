@@ -294,17 +294,13 @@ def _colour_change(
     words: Sequence[Tagged], said: Tagged, colours: tuple[Candidate, ...], text: str, lexicon: Lexicon
 ) -> ast.Refinement | None:
     """The change line with its noun read as the colour it also is."""
-    from .parser import ParseFailure, parse_line_shape
+    from .parser import parsed_material
 
     as_colour = [Tagged(w.text, w.span, colours) if w is said else w for w in words]
     noun = str(teaching()["completions"]["nouns"][0])
     with_noun = [*as_colour, _implied_noun(noun, as_colour[-1])]
-    try:
-        shape, picks = parse_line_shape(with_noun, lexicon.caches.shapes)
-    except ParseFailure:
-        return None
-    material = shape.build(with_noun, picks, text)
-    return as_change(material, with_noun)[0] if isinstance(material, ast.Material) else None
+    material = parsed_material(with_noun, text, lexicon.caches.shapes)
+    return as_change(material, with_noun)[0] if material is not None else None
 
 
 def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
@@ -315,7 +311,7 @@ def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.M
         return None
     if not isinstance(item.items[-1].target, ast.Colour):
         return None
-    from .parser import ParseFailure, parse_line_shape
+    from .parser import parsed_material
     from .tagger import Tagger
 
     start = item.span.start - (item.span.col - 1)  # the line's offset: its text is the whole line
@@ -324,12 +320,8 @@ def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.M
         return None
     noun = str(teaching()["completions"]["nouns"][0])
     with_noun = [*words, _implied_noun(noun, words[-1])]
-    try:
-        shape, picks = parse_line_shape(with_noun, lexicon.caches.shapes)
-    except ParseFailure:
-        return None
-    material = shape.build(with_noun, picks, item.text)
-    if not isinstance(material, ast.Material):
+    material = parsed_material(with_noun, item.text, lexicon.caches.shapes)
+    if material is None:
         return None
     said = [w for w in words if w.text[:1].isalpha()]
     hint = "name the material to choose another, or write the material first and this line below it"

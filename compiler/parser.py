@@ -19,6 +19,7 @@ from functools import lru_cache
 from importlib import resources
 from typing import TYPE_CHECKING, Any, TypedDict
 
+from . import ast
 from .diagnostics import FailureKey
 from .shape_store import recall_shape
 from .syntax import Shape, ShapeCache, ShapeKey
@@ -117,6 +118,21 @@ def parse_tagged(tagged: list[Tagged]) -> tuple[Tree[Token], Chosen]:
     if all(len(t.candidates) == 1 for t in words):
         return _parse_direct(words), {t.span.start: t.candidates[0] for t in words}
     return _parse_search(words)
+
+
+def parsed_item(words: list[Tagged], text: str, shapes: ShapeCache) -> ast.Item | None:
+    """The line's node when the words parse, else None (a reading tried on a line that failed)."""
+    try:
+        shape, picks = parse_line_shape(words, shapes)
+    except ParseFailure:
+        return None
+    return shape.build(words, picks, text)
+
+
+def parsed_material(words: list[Tagged], text: str, shapes: ShapeCache) -> ast.Material | None:
+    """parsed_item, only when the line is a material."""
+    node = parsed_item(words, text, shapes)
+    return node if isinstance(node, ast.Material) else None
 
 
 def parse_line_shape(words: list[Tagged], shapes: ShapeCache) -> tuple[Shape, list[Candidate]]:
