@@ -548,3 +548,11 @@ def test_primed_is_a_flat_off_white_undercoat(lexicon):
     primed, _ = compiled(lexicon, "primed MDF")
     p = primed.materials[0]["params"]
     assert p["roughness"] >= 0.8 and min(p["base_color"]) > 0.7 and not primed.materials[0]["maps"]
+
+
+def test_chalk_paint_is_paint_not_chalk_and_flatter_than_matte_paint(lexicon):
+    chalky, _ = compiled(lexicon, "sage green chalk paint")
+    matte, _ = compiled(lexicon, "sage green matte paint")
+    c, m = chalky.materials[0], matte.materials[0]
+    assert c["params"]["base_color"] == m["params"]["base_color"]
+    assert c["model"]["diffuse"] == "oren_nayar" and c["model"]["base"] == "diffuse"
