@@ -199,8 +199,8 @@ def _mix_in(
     state: MaterialState, ctx: Context, entry: Entry, clause: ast.Feature, weight: float, colour: ast.Colour
 ) -> None:
     """The clause's colour mixed into an opaque material's base colour in OKLab by the feature's
-    share at the clause's and the feature's weight ('a blue tint' moves grey 0.35 of the way to
-    blue, 'a hint of' 0.105): the material keeps its own colour, tinted."""
+    share at the clause's and the feature's weight ('a blue tint' moves grey 0.2 of the way to
+    blue, 'a hint of' 0.1): the material keeps its own colour, tinted."""
     current = state.params.get("base_color")
     target = resolve_colour(colour, ctx, start=current)
     if not isinstance(current, list):
