@@ -147,8 +147,8 @@ def refined(
     """The document with `words` added as a refinement line, and its compile result. Describing
     words alone start a material of their own (cnlmc.implied: 'purple' = purple paint), but said as
     a refinement they mean a change of the material there: they are added as the change line
-    'make it purple' (teaching.toml [politeness] changes, the first listed). Anything else is added
-    as it was said. `before`: the document's own result, when the caller has it."""
+    'make it purple' ('mach es lila' in German: teaching.toml [politeness] change_phrase). Anything
+    else is added as it was said. `before`: the document's own result, when the caller has it."""
     from .suggest import teaching
 
     base = document.rstrip("\n")
@@ -157,9 +157,19 @@ def refined(
     trial = compile_source(text, name, lexicon, seed)
     known = before if before is not None else compile_source(base, name, lexicon, seed)
     if len(trial.materials) > len(known.materials):
-        text = f"{base}\n{teaching()['politeness']['changes'][0]} {words}"
+        text = f"{base}\n{_change_phrase(lexicon, teaching()['politeness'])} {words}"
         trial = compile_source(text, name, lexicon, seed)
     return text, trial
+
+
+def _change_phrase(lexicon: Lexicon, table: Mapping[str, Any]) -> str:
+    """'make it', or the change phrase of the lexicon's language (an overlay folder named for it)."""
+    phrases: Mapping[str, str] = table["change_phrase"]
+    for source in lexicon.sources:
+        language = Path(source).name
+        if language in phrases:
+            return phrases[language]
+    return phrases["en"]
 
 
 def _complaint_as_change(words: str, table: Mapping[str, Any]) -> str:

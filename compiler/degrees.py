@@ -40,14 +40,25 @@ EDGE = 1e-3  # logit positions are taken at least this share of the range inside
 MIDDLE_HALF = 0.25  # a set level closer than this share of the range to its middle is not a degree
 
 
+LOG_WEIGHT_LIMIT = (
+    20.0  # a chain's weight stays within e^-20 .. e^20: 'very very ... glossy' saturates, never overflows
+)
+
+
 def compose_weights(weights: Sequence[float]) -> float:
-    """The weight of a chain of adverbs, the last one nearest the adjective: w_n ** (w_1 * ... * w_n-1)."""
+    """The weight of a chain of adverbs, the last one nearest the adjective: w_n ** (w_1 * ... * w_n-1),
+    computed in log space and held within e^±LOG_WEIGHT_LIMIT (fifty 'very's are as strong as the
+    scale allows, not a numeric overflow)."""
     if not weights:
         return 1.0
-    exponent = 1.0
-    for w in weights[:-1]:
-        exponent *= w
-    return float(weights[-1] ** exponent)
+    last = weights[-1]
+    if last <= 0.0:
+        return 0.0
+    log_exponent = sum(math.log(w) for w in weights[:-1] if w > 0.0)
+    if any(w <= 0.0 for w in weights[:-1]):
+        return 1.0  # a zero weight before it: w_n ** 0
+    log_weight = math.log(last) * math.exp(min(log_exponent, LOG_WEIGHT_LIMIT))
+    return float(math.exp(max(-LOG_WEIGHT_LIMIT, min(LOG_WEIGHT_LIMIT, log_weight))))
 
 
 def weighted_formula(

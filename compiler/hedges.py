@@ -21,7 +21,7 @@ from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
 from .spans import Span
 from .suggest import teaching
-from .tagged import NOTE_CODE, Candidate, Tagged
+from .tagged import NOTE_CODE, Candidate, Tagged, written_span
 
 __all__ = [
     "colour_between",
@@ -111,7 +111,7 @@ def with_implied(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | N
         return None  # a material is named: its error is a mistake, not a clause
     clause = next(w for w in main if any(c.tag == "FEATURE" for c in w.candidates))
     written = " ".join(w.text for w in main)
-    note = Diagnostic(main[0].span.to(main[-1].span), Severity.NOTE, NOTE_CODE, f"read '{written}' as 'with {written}'")
+    note = Diagnostic(written_span(main), Severity.NOTE, NOTE_CODE, f"read '{written}' as 'with {written}'")
     return [_implied("with", Candidate("WITH", "with", "keywords"), clause, 1), *words], note
 
 
@@ -166,7 +166,7 @@ def first_line_clause(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Mater
     joined = written if any(c.tag == "WITH" for w in said for c in w.candidates) else f"with {written}"
     message = f"no material named: read '{written}' as '{noun} {joined}'"
     hint = f"name the material first to choose another, e.g. 'oak {written}'"
-    return material, Diagnostic(item.span, Severity.NOTE, NOTE_CODE, message, (hint,))
+    return material, Diagnostic(written_span(said), Severity.NOTE, NOTE_CODE, message, (hint,))
 
 
 def read_past(diag: Diagnostic, notes: Sequence[Diagnostic]) -> bool:
@@ -203,7 +203,8 @@ def first_line_finish(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Mater
     read = " ".join(w.text for w in kept)
     message = f"no material named: read '{said}' as '{read} {paint}'"
     hint = "name the material to choose another, or write the material first and this line below it"
-    return material, Diagnostic(item.span, Severity.NOTE, NOTE_CODE, message, (hint,))
+    typed = [w for w in words if w.text[:1].isalpha()]
+    return material, Diagnostic(written_span(typed), Severity.NOTE, NOTE_CODE, message, (hint,))
 
 
 def _noun_for(head: ast.Word, lexicon: Lexicon) -> str:

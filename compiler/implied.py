@@ -25,7 +25,7 @@ from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
 from .spans import Span
 from .suggest import teaching
-from .tagged import NOTE_CODE, Candidate, Tagged
+from .tagged import NOTE_CODE, Candidate, Tagged, written_span
 
 __all__ = ["as_change", "first_line_comparison", "implied_material", "material_change", "starts_with_change"]
 
@@ -209,7 +209,7 @@ def _note(said: Sequence[Tagged], noun: str, others: Sequence[str], why: str = "
     choose = f": {', '.join(repr(o) for o in others[:2])}" if others else ""
     message = f"no material named: read '{written}' as '{written} {noun}'{why}"
     return Diagnostic(
-        said[0].span.to(said[-1].span),
+        written_span(said),
         Severity.NOTE,
         NOTE_CODE,
         message,
@@ -250,13 +250,14 @@ def _starts_with_one_of(said: str, phrases: Sequence[str]) -> str:
 def as_change(material: ast.Material, words: Sequence[Tagged]) -> tuple[ast.Refinement, Diagnostic]:
     """'make it blue': the described words as a change line of the material above (its groups and
     'with' clauses; the implied noun is dropped), and the note saying so."""
-    said = [w for w in words if w.text[:1].isalpha() and w.implied_by is None]
+    typed = [w for w in words if w.text[:1].isalpha() and w.implied_by is None]
+    said = typed or [w for w in words if w.text[:1].isalpha()]  # 'between beige and grey': one implied colour
     change = ast.Refinement(
         None, (), material.span, material.text, material.coat, material.features, groups=material.groups
     )
     written = " ".join(w.text for w in said)
     message = f"read '{written}' as a change of the material above: its words apply to it"
-    return change, Diagnostic(said[0].span.to(said[-1].span), Severity.NOTE, NOTE_CODE, message)
+    return change, Diagnostic(written_span(said), Severity.NOTE, NOTE_CODE, message)
 
 
 def material_change(

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from .spans import Span
@@ -30,3 +31,10 @@ class Tagged:
     # the word that implies it, which the syntax tree, the IR and the editor show (`span` then lies inside
     # that word, only to keep its place in the line)
     implied_by: Span | None = None
+
+
+def written_span(words: Sequence[Tagged]) -> Span:
+    """From the first word to the last as the user wrote them: a word no one typed stands for the
+    words that imply it (its `implied_by`), so a note never points inside a word."""
+    first, last = words[0], words[-1]
+    return (first.implied_by or first.span).to(last.implied_by or last.span)

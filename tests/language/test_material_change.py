@@ -122,3 +122,31 @@ def test_a_german_complaint_asks_for_less():
         said.material["params"]["roughness"]
         > api.Session("glänzender roter Kunststoff", de).material["params"]["roughness"]
     )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "red plastic\nmake it between beige and grey",
+        "between beige and grey instead",
+        "red plastic\n" + "too " * 20 + "glossy",
+        "very " * 50 + "glossy paint",
+    ],
+)
+def test_odd_change_lines_compile_without_a_traceback(text):
+    result = api.compile_source(text + "\n", "t.cnl", LEX)
+    assert all(d.code != "E999" for d in result.diagnostics)
+    for m in result.materials:
+        assert all(isinstance(v, float) and v == v for v in m["params"].get("base_color", []))
+
+
+def test_too_much_shine_asks_for_less_and_a_lot_of_shine_for_more():
+    less, more = session("glossy paint", "too much shine"), session("glossy paint", "a lot of shine")
+    plain = session("glossy paint").material["params"]["roughness"]
+    assert less.material["params"]["roughness"] > plain > more.material["params"]["roughness"]
+
+
+def test_a_german_session_changes_in_german():
+    s = api.Session("rotes Plastik", api.lexicon_for(("de",)))
+    s.refine("matt")
+    assert s.lines[-1] == "mach es matt" and len(s.result.materials) == 1
