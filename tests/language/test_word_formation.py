@@ -556,3 +556,30 @@ def test_chalk_paint_is_paint_not_chalk_and_flatter_than_matte_paint(lexicon):
     c, m = chalky.materials[0], matte.materials[0]
     assert c["params"]["base_color"] == m["params"]["base_color"]
     assert c["model"]["diffuse"] == "oren_nayar" and c["model"]["base"] == "diffuse"
+
+
+def test_moody_is_darker_and_greyer_and_moodier_a_step_of_it(lexicon):
+    from cnlmc.colour import linear_to_oklab
+
+    def lch(text):
+        result, _ = compiled(lexicon, text)
+        L, a, b = linear_to_oklab(result.materials[-1]["params"]["base_color"])
+        return L, (a * a + b * b) ** 0.5
+
+    plain, moody, moodier = lch("green paint"), lch("moody green paint"), lch("green paint\nmoodier")
+    assert moody[0] < moodier[0] < plain[0] and moody[1] < moodier[1] < plain[1]
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [("absolute black granite", "black granite"), ("peeling paint", "distressed paint")],
+)
+def test_stone_and_paint_trade_words(lexicon, said, same_as):
+    assert look_of(lexicon, said) == look_of(lexicon, same_as)
+
+
+def test_leathered_stone_is_rougher_than_honed_and_has_a_relief(lexicon):
+    leathered, _ = compiled(lexicon, "leathered granite")
+    honed, _ = compiled(lexicon, "honed granite")
+    lm, hm = leathered.materials[0], honed.materials[0]
+    assert lm["params"]["roughness"] > hm["params"]["roughness"] and "normal" in lm["maps"]
