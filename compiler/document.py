@@ -106,6 +106,9 @@ def _failed_line(
     if polite is not None and (node := _parsed(polite[1], text, lexicon)) is not None:
         diags.extend(polite[0])
         return node
+    bare = _without_article(words)  # 'a darker, moodier green': a line of comparatives
+    if bare is not None and isinstance(node := _parsed(bare, text, lexicon), ast.Refinement):
+        return node
     hedged, notes = reread(words, lexicon)  # 'a touch of sheen' = 'slightly sheen'
     for attempt in _rereadings(hedged, notes, with_implied(hedged) or finish_dropped(hedged, lexicon)):
         node = _parsed(attempt[0], text, lexicon)
@@ -135,6 +138,16 @@ def _failed_line(
             return material
     diags.append(taught)
     return None
+
+
+def _without_article(words: list[Tagged]) -> list[Tagged] | None:
+    """'a darker, moodier green': the comparatives without the article before them, or None."""
+    main = [w for w in words if w.text[:1].isalpha()]
+    if len(main) < 2 or not any(c.tag == "ARTICLE" for c in main[0].candidates):
+        return None
+    if not any(c.tag == "REFINE" for c in main[1].candidates):
+        return None
+    return [w for w in words if w is not main[0]]
 
 
 def _politely(words: list[Tagged], lexicon: Lexicon) -> tuple[list[Diagnostic], list[Tagged]] | None:

@@ -304,6 +304,25 @@ def _colour_change(
     return as_change(material, with_noun)[0] if material is not None else None
 
 
+def _compared_list(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
+    """'darker, moodier green' first: paint with every comparative as an inline one, the one that
+    names the colour first (the colour is the material's, the others then move it)."""
+    from .parser import parsed_material
+
+    noun = str(teaching()["completions"]["nouns"][0])
+    last = item.items[-1]
+    implied = Tagged(noun, last.span, (Candidate("NOUN", noun, "nouns"),), implied_by=item.span)
+    bare = parsed_material([implied], item.text, lexicon.caches.shapes)
+    if bare is None:
+        return None
+    ordered = (*[i for i in item.items if i.target is not None], *[i for i in item.items if i.target is None])
+    material = ast.Material(None, (), bare.nouns, None, item.span, item.text, ordered)
+    said = " ".join(i.word.text for i in item.items)
+    message = f"no material named: read '{item.text.strip()}' as {noun}, then '{said}' (comparisons as the first line)"
+    hint = "name the material to choose another, or write the material first and these lines below it"
+    return material, Diagnostic(item.span, Severity.NOTE, NOTE_CODE, message, (hint,))
+
+
 def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
     """'paler blue', 'a bit warmer grey' with no material above: a comparison as the first line
     describes a material one step from its colour on the everyday noun colours go on ('paler blue'
@@ -312,6 +331,8 @@ def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.M
         return None
     if not isinstance(item.items[-1].target, ast.Colour):
         return None
+    if len(item.items) > 1:
+        return _compared_list(item, lexicon)
     from .parser import parsed_material
     from .tagger import Tagger
 

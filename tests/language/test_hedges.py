@@ -198,3 +198,11 @@ def test_food_and_drink_look_as_the_measured_material_they_resemble(food, looks_
     """nouns_food.toml: each takes the dataset values of what it looks like, saying so in its source."""
     said, like = material(food), material(looks_as)
     assert said["params"] == like["params"] and said["model"] == like["model"]
+
+
+def test_comparatives_listed_as_the_first_line_move_their_colour_on_paint():
+    """'a darker, moodier green': green paint, then darker, then moodier (the colour first)."""
+    listed = _oklab("a darker, moodier green")
+    green, darker = _oklab("green paint"), _oklab("darker green paint")
+    assert listed[0] < darker[0] < green[0]
+    assert any("comparisons as the first line" in n for n in notes("a darker, moodier green"))
