@@ -583,3 +583,11 @@ def test_leathered_stone_is_rougher_than_honed_and_has_a_relief(lexicon):
     honed, _ = compiled(lexicon, "honed granite")
     lm, hm = leathered.materials[0], honed.materials[0]
     assert lm["params"]["roughness"] > hm["params"]["roughness"] and "normal" in lm["maps"]
+
+
+def test_a_slash_between_materials_is_or_and_in_a_fraction_a_size(lexicon):
+    slash = compile_source("copper/brass", "wf.cnl", lexicon)
+    spelled = compile_source("copper or brass", "wf.cnl", lexicon)
+    assert len(slash.materials) == 2
+    assert [m["params"] for m in slash.materials] == [m["params"] for m in spelled.materials]
+    assert look_of(lexicon, "3/4 inch oak plywood") == look_of(lexicon, "oak plywood")
