@@ -591,3 +591,17 @@ def test_a_slash_between_materials_is_or_and_in_a_fraction_a_size(lexicon):
     assert len(slash.materials) == 2
     assert [m["params"] for m in slash.materials] == [m["params"] for m in spelled.materials]
     assert look_of(lexicon, "3/4 inch oak plywood") == look_of(lexicon, "oak plywood")
+
+
+def test_corten_is_steel_under_a_nearly_whole_rust(lexicon):
+    corten, _ = compiled(lexicon, "corten steel")
+    maps = corten.materials[0]["maps"]
+    assert maps["base_color"]["graph"] == "rust" and maps["base_color"]["params"]["coverage"] > 0.9
+    assert look_of(lexicon, "Weathering Steel (Corten)")[0]["maps"]["base_color"]["graph"] == "rust"
+
+
+def test_smoked_plastic_is_transparent_grey_and_duck_egg_is_the_survey_colour(lexicon):
+    smoked, _ = compiled(lexicon, "smoked acrylic")
+    assert smoked.materials[0]["model"]["base"] == "glass"
+    assert look_of(lexicon, "duck-egg paint") == look_of(lexicon, "duck egg blue paint")
+    assert look_of(lexicon, "sort of a dusty blue paint") == look_of(lexicon, "somewhat dusty blue paint")
