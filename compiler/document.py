@@ -98,7 +98,7 @@ def _failed_line(
     """The taught error of a line that does not parse, or the line read with its implied material
     when it only describes one ('matte black'), or as a change of the material above when it
     starts with a change phrase ('make it blue'): cnlmc.implied."""
-    from .hedges import finish_dropped, read_past, reread, with_implied
+    from .hedges import finish_dropped, postfix_finish, read_past, reread, with_implied
     from .implied import as_change, implied_material, starts_with_change
     from .teach import teach_syntax_error
 
@@ -110,7 +110,8 @@ def _failed_line(
     if bare is not None and isinstance(node := _parsed(bare, text, lexicon), ast.Refinement):
         return node
     hedged, notes = reread(words, lexicon)  # 'a touch of sheen' = 'slightly sheen'
-    for attempt in _rereadings(hedged, notes, with_implied(hedged) or finish_dropped(hedged, lexicon)):
+    clause = postfix_finish(hedged, lexicon) or with_implied(hedged) or finish_dropped(hedged, lexicon)
+    for attempt in _rereadings(hedged, notes, clause):
         node = _parsed(attempt[0], text, lexicon)
         if node is not None:
             diags[:] = [d for d in diags if not read_past(d, attempt[1])]  # 'loads' of 'loads of'

@@ -132,6 +132,25 @@ def finish_dropped(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagg
     return kept, Diagnostic(main[0].span.to(last.span), Severity.NOTE, NOTE_CODE, f"read '{said}' as '{read}'")
 
 
+def postfix_finish(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], Diagnostic] | None:
+    """'oak, matte finish', 'Oak - Natural Finish': describing words after the noun and a comma,
+    ending in a finish word, are those describing words ('oak, matte'); the note says so."""
+    main = [w for w in words if w.text[:1].isalpha()]
+    if len(main) < 3 or not any(c.tag == "COMMA" for w in words for c in w.candidates):
+        return None
+    if any(c.tag == "REFINE" for w in main for c in w.candidates):
+        return None  # 'a smoother, shinier finish': comparatives of the finish (finish_dropped)
+    last = main[-1]
+    finish = next((c for c in last.candidates if c.tag == "FEATURE"), None)
+    entry = lexicon.entry("features", finish.key) if finish is not None else None
+    if entry is None or not entry.get("finish") or any(c.tag == "WITH" for w in words for c in w.candidates):
+        return None
+    kept = [w for w in words if w is not last]
+    said = " ".join(w.text for w in main)
+    read = " ".join(w.text for w in kept if w.text[:1].isalpha())
+    return kept, Diagnostic(written_span(main), Severity.NOTE, NOTE_CODE, f"read '{said}' as '{read}'")
+
+
 def _is_article(word: Tagged) -> bool:
     return any(c.tag == "ARTICLE" for c in word.candidates)
 

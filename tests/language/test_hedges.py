@@ -206,3 +206,10 @@ def test_comparatives_listed_as_the_first_line_move_their_colour_on_paint():
     green, darker = _oklab("green paint"), _oklab("darker green paint")
     assert listed[0] < darker[0] < green[0]
     assert any("comparisons as the first line" in n for n in notes("a darker, moodier green"))
+
+
+@pytest.mark.parametrize(
+    ("listing", "plain"), [("walnut, oiled finish", "oiled walnut"), ("Oak - Natural Finish", "natural oak")]
+)
+def test_a_product_listing_finish_after_the_noun_is_its_describing_word(listing, plain):
+    assert material(listing)["params"] == material(plain)["params"]
