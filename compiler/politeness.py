@@ -58,12 +58,15 @@ def without_politeness(
         return diags, kept
     spans = [w.span for run in dropped for w in run] + read_as
     out = [d for d in diags if not _inside(d, spans)]  # their unknown words, stray marks, readings
+    changing = frozenset((*table["changes"], *table["changes_at_end"]))  # 'make it', 'instead': not courtesy
     for run in dropped:
         text = " ".join(w.text for w in run if w.text[:1].isalnum())
         if run is rewritten and put is not None:
             note = f"read '{text}' as '{put.text}'"
         elif run[0] is pronoun:
             note = f"read '{text}' as the material above"
+        elif text.lower() in changing:
+            note = f"read past '{text}': a change phrase (the line's words change the material above, if any)"
         else:
             note = f"read past '{text}': a phrase names the material only, so politeness is left out"
         out.append(Diagnostic(run[0].span.to(run[-1].span), Severity.NOTE, NOTE_CODE, note))

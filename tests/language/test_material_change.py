@@ -150,3 +150,11 @@ def test_a_german_session_changes_in_german():
     s = api.Session("rotes Plastik", api.lexicon_for(("de",)))
     s.refine("matt")
     assert s.lines[-1] == "mach es matt" and len(s.result.materials) == 1
+
+
+def test_a_change_phrase_is_noted_as_a_change_not_as_courtesy():
+    result = api.compile_source("red plastic\nmatte instead\nmake it blue\n", "t.cnl", LEX)
+    said = [d.message for d in result.diagnostics]
+    assert "read past 'instead': a change phrase (the line's words change the material above, if any)" in said
+    assert "read past 'make it': a change phrase (the line's words change the material above, if any)" in said
+    assert not any("politeness" in m for m in said)
