@@ -53,30 +53,19 @@ def changed_material(material: ast.Material, change: ast.Refinement, lexicon: Le
     as the colour (its groups)."""
     assert change.material is not None, "only a change to a material"
     new = change.material
-    if _kind(new, lexicon) != _kind(material, lexicon):
-        return (
-            None
-            if change.groups
-            else ast.Material(
-                material.name,
-                new.groups,
-                new.nouns,
-                new.coat,
-                material.span,
-                material.text,
-                new.refinements,
-                new.features,
-            )
-        )
+    same_kind = _kind(new, lexicon) == _kind(material, lexicon)
+    if not same_kind and change.groups:
+        return None
+    kept = material if same_kind else ast.Material(None, (), (), None, material.span, material.text)
     return ast.Material(
         material.name,
-        (*material.groups, *new.groups),
+        (*kept.groups, *new.groups),
         new.nouns,
-        new.coat or material.coat,
+        new.coat or kept.coat,
         material.span,
         material.text,
-        material.refinements,
-        (*material.features, *new.features),
+        (*kept.refinements, *new.refinements),
+        (*kept.features, *new.features),
     )
 
 
