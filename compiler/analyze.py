@@ -21,6 +21,7 @@ from .passes.refine import apply_inline_refinements, apply_refinement_line
 from .passes.subsurface import apply_subsurface, select_subsurface
 from .passes.variants import expand, identifier
 from .passes.words import apply_groups
+from .removed import without_words
 from .state import Context, MaterialState
 
 BUILD_PASSES = (apply_noun, apply_groups, apply_subsurface, apply_coat_clause, apply_inline_refinements)
@@ -33,7 +34,7 @@ def attach_refinements(doc: ast.Document, lexicon: Lexicon) -> list[tuple[ast.Ma
     for item in doc.items:
         if isinstance(item, ast.Material):
             pairs.append((item, []))
-        elif pairs and item.material is not None and (changed := changed_material(pairs[-1][0], item, lexicon)):
+        elif pairs and item.changes_material and (changed := changed_material(pairs[-1][0], item, lexicon)):
             pairs[-1] = (changed, pairs[-1][1])  # 'make it walnut': the material above, now walnut
         elif pairs:
             pairs[-1][1].append(item)
@@ -51,6 +52,8 @@ def changed_material(material: ast.Material, change: ast.Refinement, lexicon: Le
     ('switch to brass' under red plastic) the new material itself. None where the named material is
     of another kind and is also a colour ('make it cream' under red plastic): the line then applies
     as the colour (its groups)."""
+    if change.removed:
+        return without_words(material, change.removed, lexicon)
     assert change.material is not None, "only a change to a material"
     new = change.material
     same_kind = _kind(new, lexicon) == _kind(material, lexicon)
@@ -59,7 +62,7 @@ def changed_material(material: ast.Material, change: ast.Refinement, lexicon: Le
     kept = material if same_kind else ast.Material(None, (), (), None, material.span, material.text)
     return ast.Material(
         material.name,
-        (*kept.groups, *new.groups),
+        (*_without_colour(kept.groups, new.groups), *new.groups),
         new.nouns,
         new.coat or kept.coat,
         material.span,
@@ -67,6 +70,20 @@ def changed_material(material: ast.Material, change: ast.Refinement, lexicon: Le
         (*kept.refinements, *new.refinements),
         (*kept.features, *new.features),
     )
+
+
+def _without_colour(kept: tuple[ast.Group, ...], said: tuple[ast.Group, ...]) -> tuple[ast.Group, ...]:
+    """The kept describing groups without their colours when the change names one ('more like a
+    dark cherry' under pale oak: dark, not pale and dark); the adjectives stay."""
+    if not any(g.colours for g in said):
+        return kept
+    out = []
+    for group in kept:
+        if not group.colours:
+            out.append(group)
+        elif group.adjectives:
+            out.append(ast.Group("adjective", group.adverbs, (), group.adjectives, group.span))
+    return tuple(out)
 
 
 def _kind(material: ast.Material, lexicon: Lexicon) -> str:
@@ -260,7 +277,7 @@ def _material_groups(
         elif material is None:
             material = orphan_line(item, lexicon, diags)  # 'paler blue' first: its own material
             material_ok = material is not None
-        elif not has_error and item.material is not None and (changed := changed_material(material, item, lexicon)):
+        elif not has_error and item.changes_material and (changed := changed_material(material, item, lexicon)):
             material = changed
         elif not has_error:
             refinements.append(item)

@@ -181,6 +181,7 @@ class Refinement:
     features: tuple[Feature, ...] = ()  # ... or features: 'with fine scratches'
     groups: tuple[Group, ...] = ()  # a change of describing words: 'make it blue', 'turn it matte black'
     material: Material | None = None  # a change to another material: 'make it walnut', 'switch to brass'
+    removed: tuple[Word, ...] = ()  # words taken off the material above: 'lose the brushed look', 'no rust'
 
     def __init__(
         self,
@@ -192,6 +193,7 @@ class Refinement:
         features: tuple[Feature, ...] = (),
         groups: tuple[Group, ...] = (),
         material: Material | None = None,
+        removed: tuple[Word, ...] = (),
     ) -> None:
         fields = self.__dict__
         fields["name"] = name
@@ -202,6 +204,13 @@ class Refinement:
         fields["features"] = features
         fields["groups"] = groups
         fields["material"] = material
+        fields["removed"] = removed
+
+    @property
+    def changes_material(self) -> bool:
+        """The line makes the material above another one (a change to a named material, or words
+        taken off it) rather than refining its values."""
+        return self.material is not None or bool(self.removed)
 
 
 Item = Material | Refinement

@@ -5,12 +5,15 @@ Lines end as cnlmc.lines says (CRLF, LF or a lone CR); `iter_lines` is re-export
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import replace
 
 from . import ast
 from .diagnostics import Diagnostic, error
 from .lexicon import Lexicon
+from .line_parts import PART_MARKS, by_parts
 from .lines import iter_lines
 from .parser import ParseFailure, describe_expected, parse_line_shape, parsed_item
+from .removal import removal_line
 from .shape_store import save_shapes
 from .spans import Span
 from .tagged import Tagged
@@ -59,7 +62,33 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
             )
         )
         return None
+    return _parsed_line(text, number, offset, tagger, diags)
+
+
+def _removal(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Refinement | None:
+    """The line as one that takes words off the material above (cnlmc.removal: 'lose the brushed
+    look', 'no rust'), with the line's plain reading as its comparatives ('lose the shine' = less
+    shine) for a material that has none of them (cnlmc.passes.refine); None for any other line.
+    Asked only of a line with an unknown or rule-read word or one that does not parse."""
+    removal = removal_line(text, number, offset, tagger)
+    if removal is None:
+        return None
+    refinement, note = removal
+    plain_diags: list[Diagnostic] = []
+    plain = _parsed_line(text, number, offset, tagger, plain_diags, removals=False)
+    if isinstance(plain, ast.Refinement) and plain.items and not any(d.is_error for d in plain_diags):
+        refinement = replace(refinement, items=plain.items)
+    diags.append(note)
+    return refinement
+
+
+def _parsed_line(
+    text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic], removals: bool = True
+) -> ast.Item | None:
     words, tag_diags = tagger.tag_line(text, number, offset)
+    if tag_diags and removals and (removal := _removal(text, number, offset, tagger, diags)) is not None:
+        return removal
+    mark = len(diags)
     if tag_diags:  # only unknown words and characters may lack candidates
         from .teach import fit_unknown_words  # the teaching modules load only for a line with a problem
 
@@ -80,8 +109,13 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
     try:
         shape, picks = parse_line_shape(words, tagger.lexicon.caches.shapes)
     except ParseFailure as failure:
+        if removals and (removal := _removal(text, number, offset, tagger, diags)) is not None:
+            return removal
         return _failed_line(failure, words, text, tagger.lexicon, diags)
     node = shape.build(words, picks, text)
+    if tag_diags and any(d.is_error for d in diags[mark:]) and (parts := _by_parts(words, text, tagger.lexicon)):
+        diags[mark:] = parts[1]  # 'deeper, closer to burgundy': 'to' is read with its part
+        return parts[0]
     if tag_diags and isinstance(node, ast.Material):  # a change phrase read past: 'make it walnut'
         from .implied import material_change
 
@@ -117,6 +151,11 @@ def _failed_line(
             diags[:] = [d for d in diags if not read_past(d, attempt[1])]  # 'loads' of 'loads of'
             diags.extend(attempt[1])
             return node
+    parts = _by_parts(words, text, lexicon)  # 'deeper, more of a burgundy': each part its own way
+    if parts is not None:
+        diags[:] = [d for d in diags if not read_past(d, parts[1])]  # 'same' of 'same colour'
+        diags.extend(parts[1])
+        return parts[0]
     if notes:  # still no parse: the rest reads the words as reread, and says so
         words, failure = hedged, _failure_of(hedged, lexicon) or failure
         diags[:] = [d for d in diags if not read_past(d, notes)]
@@ -139,6 +178,21 @@ def _failed_line(
             return material
     diags.append(taught)
     return None
+
+
+def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Refinement, list[Diagnostic]] | None:
+    """The line as one refinement of its comma-separated parts, each read as a line of its own
+    where it stands (cnlmc.line_parts): the other parts blanked, so columns stay the line's."""
+    if not any(w.text in PART_MARKS for w in words) or words[0].implied_by is not None:
+        return None
+    at = words[0].span
+    number, offset = at.line, at.start - (at.col - 1)
+
+    def read(start: int, end: int, said: list[Diagnostic]) -> ast.Item | None:
+        alone = " " * start + text[start:end] + " " * (len(text) - end)
+        return parse_line(alone, number, offset, Tagger.of(lexicon), said)
+
+    return by_parts(text, number, offset, read)
 
 
 def _without_article(words: list[Tagged]) -> list[Tagged] | None:

@@ -29,6 +29,10 @@ from .tagged import NOTE_CODE, Candidate, Tagged, written_span
 
 __all__ = ["as_change", "first_line_comparison", "implied_material", "material_change", "starts_with_change"]
 
+#: the readings of a noun that a change to another kind of material takes instead ("make it cream"
+#: under red plastic: the colour; "make it satin" under tile: the finish)
+CHANGE_READINGS = ("COLOR", "ADJ")
+
 NOT_DESCRIBING = frozenset({"NAME", "OF", "NOUN", "OBJECT"})  # a line with one of these keeps its error
 
 
@@ -266,8 +270,9 @@ def material_change(
     """'make it walnut', 'switch to brass', 'can you make it gold instead': a change line that names
     a material. The change carries the material (cnlmc.analyze.changed_material: a material of the
     same kind as the one above takes its place, its describing words kept; another kind replaces
-    it) and, for a noun that is also a colour ('make it cream' under red plastic), the colour
-    reading, used when the kinds differ. None for any other line."""
+    it) and, for a noun that is also a colour or a describing word ('make it cream' under red
+    plastic, 'make it satin' under tile), that reading, used when the kinds differ. None for any
+    other line."""
     if node.name is not None or len(node.nouns) != 1 or node.nouns[0].unknown or not starts_with_change(text):
         return None
     noun = node.nouns[0]
@@ -275,7 +280,7 @@ def material_change(
     if entry is None:
         return None
     said = next((w for w in words if w.span.start == noun.span.start), None)
-    colours = tuple(c for c in said.candidates if c.tag == "COLOR") if said is not None else ()
+    colours = tuple(c for c in said.candidates if c.tag in CHANGE_READINGS) if said is not None else ()
     as_colour = _colour_change(words, said, colours, text, lexicon) if said is not None and colours else None
     kind = entry.get("class", noun.key)
     if as_colour is not None:

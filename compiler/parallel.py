@@ -352,7 +352,7 @@ def _owned_groups(
             material_ok = material is not None
         elif material is None:
             pass  # before the chunk's first material: the chunk before reports it
-        elif not has_error and item.material is not None and (changed := changed_material(material, item, lexicon)):
+        elif not has_error and item.changes_material and (changed := changed_material(material, item, lexicon)):
             material = changed
         elif not has_error:
             refinements.append(item)

@@ -34,7 +34,7 @@ def without_politeness(
     rewrites: dict[str, str] = table["rewrites"]
     kept = list(words)
     dropped: list[list[Tagged]] = []
-    put: Tagged | None = None
+    put: list[Tagged] = []
     rewritten: list[Tagged] | None = None
     for at_start, phrases in ((True, table["leading"]), (False, table["trailing"])):
         while len(kept) > 1:
@@ -43,7 +43,8 @@ def without_politeness(
                 if taken:
                     rewritten, kept = kept[:taken], kept[taken:]
                     said = " ".join(w.text.lower() for w in rewritten if w.text[:1].isalnum())
-                    put = _rewritten(rewritten, tag(rewrites[said])) if said in rewrites else None
+                    towards_a_material = said in table["towards"] and _ends_in_a_noun(kept)
+                    put = _rewritten(rewritten, rewrites[said], tag) if not towards_a_material else []
                     dropped.append(rewritten)
                     break
             taken = _edge_phrase(kept, phrases, marks, at_start)
@@ -61,8 +62,8 @@ def without_politeness(
     changing = frozenset((*table["changes"], *table["changes_at_end"]))  # 'make it', 'instead': not courtesy
     for run in dropped:
         text = " ".join(w.text for w in run if w.text[:1].isalnum())
-        if run is rewritten and put is not None:
-            note = f"read '{text}' as '{put.text}'"
+        if run is rewritten and put:
+            note = f"read '{text}' as '{' '.join(w.text for w in put)}'"
         elif run[0] is pronoun:
             note = f"read '{text}' as the material above"
         elif text.lower() in changing:
@@ -70,7 +71,14 @@ def without_politeness(
         else:
             note = f"read past '{text}': a phrase names the material only, so politeness is left out"
         out.append(Diagnostic(run[0].span.to(run[-1].span), Severity.NOTE, NOTE_CODE, note))
-    return out, ([put] if put is not None else []) + kept
+    return out, put + kept
+
+
+def _ends_in_a_noun(words: Sequence[Tagged]) -> bool:
+    """'more like a dark walnut': the line names a material after its 'towards' phrase, so the
+    phrase is a change to it ('make it'), not a comparative ('more of a teal' = more teal)."""
+    said = [w for w in words if w.text[:1].isalpha()]
+    return bool(said) and any(c.tag == "NOUN" for c in said[-1].candidates)
 
 
 def _without_pronoun(
@@ -104,15 +112,31 @@ def _participle(word: Tagged, tag: Callable[[str], Tagged | None] | None) -> Tag
     return None
 
 
-def _rewritten(run: Sequence[Tagged], word: Tagged | None) -> Tagged | None:
-    """The rewrite's word in place of the phrase: inside its last word's span (the parser keys
-    words by start, and no written word starts there), implied by the phrase."""
-    if word is None:
-        return None
-    s = run[-1].span
-    at = min(s.start + 1, s.end)
-    whole = run[0].span.to(s)
-    return Tagged(word.text, Span(at, s.end, s.line, s.col + at - s.start), word.candidates, implied_by=whole)
+def _rewritten(run: Sequence[Tagged], said: str, tag: Callable[[str], Tagged | None]) -> list[Tagged]:
+    """The rewrite's words in place of the phrase ('a bit more of a' -> 'a bit' 'closer'), tagged,
+    each inside a word of the phrase from its end (the parser keys words by start, and no written
+    word starts there), implied by the phrase; [] when a word is not known or the phrase is shorter."""
+    words = [tag(w) for w in _rewrite_words(said, tag)]
+    if not words or len(words) > len(run) or any(w is None for w in words):
+        return []
+    whole = run[0].span.to(run[-1].span)
+    out = []
+    for word, place in zip(words, run[len(run) - len(words) :]):
+        assert word is not None
+        s = place.span
+        at = min(s.start + 1, s.end)
+        out.append(Tagged(word.text, Span(at, s.end, s.line, s.col + at - s.start), word.candidates, implied_by=whole))
+    return out
+
+
+def _rewrite_words(said: str, tag: Callable[[str], Tagged | None]) -> list[str]:
+    """The rewrite as the words the lexicon knows: 'a bit closer' is 'a bit' (one adverb) and 'closer'."""
+    if tag(said) is not None:
+        return [said]
+    words = said.split()
+    if len(words) > 1 and tag(" ".join(words[:-1])) is not None:
+        return [" ".join(words[:-1]), words[-1]]
+    return words
 
 
 def _inside(diag: Diagnostic, spans: Sequence[Span]) -> bool:

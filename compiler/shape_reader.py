@@ -97,7 +97,7 @@ class _Reader:
             elif child.data == "in_colour":  # "steel in charcoal": the colour of the material
                 groups = groups + self.groups(child)
             elif child.data == "refine_item":
-                refinements = (self.refine_item(child),)
+                refinements += (self.refine_item(child),)
         return MaterialPlan(name, groups, nouns, coat, *self.edges(tree), refinements, features)
 
     def clauses(self, tree: Tree[Token]) -> tuple[CoatPlan | None, tuple[CoatPlan, ...]]:

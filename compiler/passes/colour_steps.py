@@ -40,6 +40,13 @@ def hue_step(rgb: list[float], ab: Sequence[float], amount: float) -> list[float
     return out if _along(out, ab) > _along(rgb, ab) else list(rgb)  # the gamut's edge: no step back
 
 
+def colour_towards(rgb: list[float], goal: list[float], amount: float) -> list[float]:
+    """`amount` of the way from the colour to the goal in OKLab (lightness, a and b), in gamut."""
+    here, there = linear_to_oklab(rgb), linear_to_oklab(goal)
+    L, a, b = (h + (t - h) * amount for h, t in zip(here, there))
+    return fit_in_gamut(L, a, b)
+
+
 def chroma_step(rgb: list[float], scale: float) -> list[float]:
     """OKLCh chroma times `scale`, hue kept, lightness kept where the gamut allows."""
     L, a, b = linear_to_oklab(rgb)

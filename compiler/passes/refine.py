@@ -15,8 +15,9 @@ steps, 'slightly darker': half of one). Colour refinements live in passes/refine
 from __future__ import annotations
 
 from .. import ast
-from ..diagnostics import warning
+from ..diagnostics import Diagnostic, Severity, warning
 from ..state import Context, MaterialState
+from ..tagged import NOTE_CODE
 from .coats import apply_clauses
 from .refine_colour import refine_colour, refine_named_colour
 from .refine_effects import brings_treatment, refine_adjective
@@ -86,10 +87,24 @@ def apply_refinement_line(state: MaterialState, ctx: Context, line: ast.Refineme
     ('with a glossy varnish' below 'walnut' adds the coat; passes/coats.py)."""
     for item in line.items:
         apply_refinement(state, ctx, item)
+    if line.removed:  # reached here only when the material above has none of them
+        _nothing_removed(state, line)
     if line.groups:  # 'make it blue': the describing words apply to the material as it is
         apply_described(state, ctx, line.groups)
     if line.coat is not None or line.features:
         apply_clauses(state, ctx, line.coat, line.features)
+
+
+def _nothing_removed(state: MaterialState, line: ast.Refinement) -> None:
+    """'lose the shine' under a material without 'shiny': its comparatives applied (less gloss), a
+    note; with none ('no rust' under clean steel), W122."""
+    listed = ", ".join(dict.fromkeys(f"'{w.text}'" for w in line.removed))
+    if line.items:
+        message = f"the material above has no {listed} to take off: read as less of it"
+        state.diagnostics.append(Diagnostic(line.span, Severity.NOTE, NOTE_CODE, message))
+        return
+    hint = "name what the material has, e.g. 'lose the brushing' under 'brushed steel'"
+    state.diagnostics.append(warning(line.span, "W122", f"the material above has no {listed} to take off", (hint,)))
 
 
 def apply_refinement(state: MaterialState, ctx: Context, item: ast.RefineItem) -> None:

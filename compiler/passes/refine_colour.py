@@ -16,7 +16,17 @@ from ..colour import apply_ops, linear_to_oklab
 from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .bracket import Move, Step, bracket_move, scaled_steps
-from .colour_steps import Ops, chroma_step, colour_step, hue_share, hue_step, less_of, opposite_ops, scaled_ops
+from .colour_steps import (
+    Ops,
+    chroma_step,
+    colour_step,
+    colour_towards,
+    hue_share,
+    hue_step,
+    less_of,
+    opposite_ops,
+    scaled_ops,
+)
 from .colours import colour_text, resolve_colour
 from .refine_target import item_text, item_words, note
 
@@ -138,6 +148,10 @@ def refine_named_colour(
         return
     param = _colour_param(state, item)
     holder, name = _colour_holder(state, param)
+    whole = ctx.lexicon.require("refinements", item.word.key).get("towards")
+    if whole is not None:  # 'closer to burgundy', 'more of a burgundy': the whole colour
+        _closer(state, item, param, resolve_colour(target, ctx), 1.0 - (1.0 - float(whole)) ** weight)
+        return
     _l, a, b = linear_to_oklab(resolve_colour(target, ctx))
     amount = 1.0 - (1.0 - HUE_STEP) ** weight
     if direction < 0 and hue_share(apparent(state, param, holder[name]), (a, b)) < NEUTRAL_CHROMA:
@@ -154,6 +168,20 @@ def refine_named_colour(
     holder[name] = new
     note_unmoved(state, item, param, current, new)
     state.note(param, new, f"refinements.{item.word.key} {colour_text(target)}: hue step", item_words(item))
+
+
+def _closer(state: MaterialState, item: ast.RefineItem, param: str, goal: list[float], amount: float) -> None:
+    """A step of the whole colour (OKLab lightness, a and b) towards the named one: 'more of a
+    burgundy' on red is a darker, duller red; on a metal, its visible colour moves (on_apparent)."""
+    assert isinstance(item.target, ast.Colour), item
+    holder, name = _colour_holder(state, param)
+    key = f"{param}.towards:{colour_text(item.target)}"
+    step = on_apparent(state, param, lambda x: colour_towards(x, goal, amount))
+    current = holder[name]
+    new = bracket_move(state.brackets, key, current, Move(1, step, 1.0, COLOUR_LIMITS))
+    holder[name] = new
+    note_unmoved(state, item, param, current, new)
+    state.note(param, new, f"refinements.{item.word.key} {colour_text(item.target)}: towards it", item_words(item))
 
 
 def _colour_holder(state: MaterialState, param: str) -> tuple[dict[str, Any], str]:

@@ -26,6 +26,7 @@ CASES = {
     "glass": "frosted glass",
     "plated": "gold plated steel",
     "warnings": "polished rough steel\nanodized wood",
+    "removal": "lightly brushed red anodized aluminum with fine scratches\ncan we lose the brushed look\ndeeper, a bit more of a burgundy",
 }
 
 

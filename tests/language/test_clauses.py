@@ -94,11 +94,18 @@ def test_inline_comparative_compiles(compile_text):
     assert result.ok, [d.message for d in result.diagnostics]
 
 
-def test_a_list_of_comparatives_before_a_material_is_refused_with_a_hint(compile_text):
-    (d,) = compile_text("lighter, smoother granite").diagnostics
-    assert d.code == "E002"
-    assert "one comparative may stand before the material" in d.message
-    assert d.hints and "next line" in d.hints[0]
+@pytest.mark.parametrize(
+    "listed", ["lighter, smoother granite", "a lighter and smoother granite", "lighter smoother granite"]
+)
+def test_a_list_of_comparatives_before_a_material_applies_each_in_order(compile_text, listed):
+    """'a warmer, lighter oak': each comparative moves the material in turn, as the same
+    comparatives on lines of their own below it do."""
+    said = compile_text(listed)
+    assert not said.diagnostics
+    below = compile_text("granite\nlighter\nsmoother").ir["materials"][0]
+    inline = said.ir["materials"][0]
+    assert inline["params"] == below["params"]
+    assert inline["params"] != compile_text("granite").ir["materials"][0]["params"]
 
 
 def test_refinement_after_the_noun_still_says_where_it_goes(compile_text):

@@ -97,8 +97,8 @@ def test_too_in_a_description_is_still_a_booster():
 @pytest.mark.parametrize(
     ("line", "same_as"),
     [
-        ("more of a teal", "more teal"),
-        ("ok, more of a teal", "more teal"),
+        ("more of a teal", "closer to teal"),
+        ("ok, more of a teal", "closer to teal"),
         ("please, tone down the shine", "less shine"),
     ],
 )

@@ -1,0 +1,78 @@
+"""A refinement line of parts set off by commas, each said its own way ('deeper, more of a
+burgundy', 'bit darker, less shine please', 'warmer, keep the finish'): each part is read as a line
+of its own where it stands (cnlmc.document), and the parts join into one refinement; a part that is
+only courtesy ('same colour', 'please') is read past. Runs only for a line that failed as a whole,
+and only when every part is a refinement of values (a change to another material stays a line of
+its own)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from . import ast
+from .diagnostics import Diagnostic, Severity
+from .spans import Span
+from .suggest import teaching
+from .tagged import NOTE_CODE
+
+__all__ = ["PART_MARKS", "by_parts"]
+
+#: the marks that set parts apart
+PART_MARKS = frozenset((",", ";"))
+
+#: reads the line's text from start to end (columns) as a line of its own, its problems to the list
+Reader = Callable[[int, int, list[Diagnostic]], "ast.Item | None"]
+
+
+def by_parts(text: str, line: int, offset: int, read: Reader) -> tuple[ast.Refinement, list[Diagnostic]] | None:
+    """The line as one refinement of its parts and the parts' notes, or None (one part, an empty
+    part, or a part that is no refinement or has an error)."""
+    cuts = [-1, *(i for i, ch in enumerate(text) if ch in PART_MARKS), len(text)]
+    if len(cuts) < 3:
+        return None
+    found: list[ast.Refinement] = []
+    notes: list[Diagnostic] = []
+    for start, end in zip(cuts, cuts[1:]):
+        written = text[start + 1 : end]
+        if not written.strip():
+            return None
+        if _courtesy(written):
+            notes.append(_read_past(written, start + 1, line, offset))
+            continue
+        said: list[Diagnostic] = []
+        node = read(start + 1, end, said)
+        if not isinstance(node, ast.Refinement) or node.changes_material or any(d.is_error for d in said):
+            return None
+        found.append(node)
+        notes += said
+    if not found:
+        return None
+    return _joined(found, text), notes
+
+
+def _courtesy(written: str) -> bool:
+    table = teaching()["politeness"]
+    said = " ".join(written.lower().split())
+    return said in table["leading"] or said in table["trailing"] or said in table["changes_at_end"]
+
+
+def _read_past(written: str, start: int, line: int, offset: int) -> Diagnostic:
+    """The note of a courtesy part, on its words as written (their unknown-word errors go with it)."""
+    first = start + len(written) - len(written.lstrip())
+    said = written.strip()
+    span = Span(offset + first, offset + first + len(said), line, first + 1)
+    return Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read past '{said}'")
+
+
+def _joined(parts: list[ast.Refinement], text: str) -> ast.Refinement:
+    coat = next((p.coat for p in parts if p.coat is not None), None)
+    span: Span = parts[0].span.to(parts[-1].span)
+    return ast.Refinement(
+        None,
+        tuple(i for p in parts for i in p.items),
+        span,
+        text,
+        coat,
+        tuple(f for p in parts for f in p.features),
+        tuple(g for p in parts for g in p.groups),
+    )
