@@ -22,7 +22,7 @@ from .coats import apply_clauses
 from .refine_colour import refine_colour, refine_named_colour
 from .refine_effects import brings_treatment, refine_adjective
 from .refine_missing_map import add_missing_map
-from .refine_property import refine_property
+from .refine_property import acted_on, refine_property
 from .refine_target import refine_weight
 from .words import apply_described, apply_group
 
@@ -88,23 +88,43 @@ def apply_refinement_line(state: MaterialState, ctx: Context, line: ast.Refineme
     for item in line.items:
         apply_refinement(state, ctx, item)
     if line.removed:  # reached here only when the material above has none of them
-        _nothing_removed(state, line)
+        _nothing_removed(state, ctx, line)
     if line.groups:  # 'make it blue': the describing words apply to the material as it is
         apply_described(state, ctx, line.groups)
     if line.coat is not None or line.features:
         apply_clauses(state, ctx, line.coat, line.features)
 
 
-def _nothing_removed(state: MaterialState, line: ast.Refinement) -> None:
+def _nothing_removed(state: MaterialState, ctx: Context, line: ast.Refinement) -> None:
     """'lose the shine' under a material without 'shiny': its comparatives applied (less gloss), a
-    note; with none ('no rust' under clean steel), W122."""
+    note; a property its noun brings ('no veins' under marble): much less of it, a note; with
+    neither ('no rust' under clean steel), W122."""
     listed = ", ".join(dict.fromkeys(f"'{w.text}'" for w in line.removed))
+    properties = [w for w in line.removed if w.category == "properties" and _acts(state, ctx, w)]
+    if not line.items and properties:
+        for word in properties:
+            apply_refinement(state, ctx, _much_less(word))
+        message = f"no word of the material above says {listed}, its material does: read as much less of it"
+        state.diagnostics.append(Diagnostic(line.span, Severity.NOTE, NOTE_CODE, message))
+        return
     if line.items:
         message = f"the material above has no {listed} to take off: read as less of it"
         state.diagnostics.append(Diagnostic(line.span, Severity.NOTE, NOTE_CODE, message))
         return
     hint = "name what the material has, e.g. 'lose the brushing' under 'brushed steel'"
     state.diagnostics.append(warning(line.span, "W122", f"the material above has no {listed} to take off", (hint,)))
+
+
+def _acts(state: MaterialState, ctx: Context, word: ast.Word) -> bool:
+    """Whether the property has something to act on: a parameter, or a map of the material."""
+    prop = ctx.lexicon.require("properties", word.key)
+    return prop.get("map_param") is None or bool(acted_on(state, prop))
+
+
+def _much_less(word: ast.Word) -> ast.RefineItem:
+    """'much less <property>', said by the removal's word (its span and text)."""
+    less = ast.Word(word.text, "less", "refinements", word.span)
+    return ast.RefineItem(less, word, word.span, (ast.Word(word.text, "much", "adverbs", word.span),))
 
 
 def apply_refinement(state: MaterialState, ctx: Context, item: ast.RefineItem) -> None:

@@ -40,14 +40,21 @@ def refine_property(
     move_sigma_too(state, key, move, item_words(item), rule)
 
 
-def _refine_map_param(state: MaterialState, prop: Entry, item: ast.RefineItem, direction: int, weight: float) -> None:
+def acted_on(state: MaterialState, prop: Entry) -> list[str]:
+    """The map roles a map property acts on ('veins': the marble maps); [] for none."""
     name = prop.get("map_param")
     graphs = prop.get("graphs")
-    roles = [
+    return [
         role
         for role, ref in state.maps.items()
         if name in graph_params(ref["graph"]) and (not graphs or ref["graph"] in graphs)
     ]
+
+
+def _refine_map_param(state: MaterialState, prop: Entry, item: ast.RefineItem, direction: int, weight: float) -> None:
+    name = prop.get("map_param")
+    graphs = prop.get("graphs")
+    roles = acted_on(state, prop)
     if not roles:
         what = "no procedural map" if not state.maps else f"no map with '{name}'"
         if graphs:

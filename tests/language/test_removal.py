@@ -171,3 +171,11 @@ def test_a_noun_that_is_also_a_finish_is_the_finish_on_another_kind(compile_text
     assert tile["params"] == material(compile_text("white satin ceramic tile"))["params"]
     fabric = compile_text("cotton\nmake it satin\n")
     assert material(fabric)["name"] != "cotton" and material(fabric)["model"]["diffuse"] == "oren_nayar"
+
+
+def test_a_removal_of_what_the_noun_brings_is_much_less_of_it(compile_text):
+    """'no veins' under marble: the veins are the noun's, not a word's: much less of them, a note."""
+    result = compile_text("white marble\nno veins\n")
+    assert "W122" not in codes(result)
+    assert material(result)["maps"] == material(compile_text("white marble\nmuch less veins\n"))["maps"]
+    assert material(result)["maps"] != material(compile_text("white marble"))["maps"]
