@@ -12,6 +12,7 @@ from .diagnostics import Diagnostic, error
 from .lexicon import Lexicon
 from .line_parts import PART_MARKS, by_parts
 from .lines import iter_lines
+from .on_clause import on_material
 from .parser import ParseFailure, describe_expected, parse_line_shape, parsed_item
 from .removal import removal_line
 from .shape_store import save_shapes
@@ -113,9 +114,9 @@ def _parsed_line(
             return removal
         return _failed_line(failure, words, text, tagger.lexicon, diags)
     node = shape.build(words, picks, text)
-    if tag_diags and any(d.is_error for d in diags[mark:]) and (parts := _by_parts(words, text, tagger.lexicon)):
-        diags[mark:] = parts[1]  # 'deeper, closer to burgundy': 'to' is read with its part
-        return parts[0]
+    if tag_diags and any(d.is_error for d in diags[mark:]) and (whole := _whole_line(words, text, tagger.lexicon)):
+        diags[mark:] = whole[1]  # 'rust on steel', 'deeper, closer to burgundy': the unknown word read
+        return whole[0]
     if tag_diags and isinstance(node, ast.Material):  # a change phrase read past: 'make it walnut'
         from .implied import material_change
 
@@ -151,11 +152,11 @@ def _failed_line(
             diags[:] = [d for d in diags if not read_past(d, attempt[1])]  # 'loads' of 'loads of'
             diags.extend(attempt[1])
             return node
-    parts = _by_parts(words, text, lexicon)  # 'deeper, more of a burgundy': each part its own way
-    if parts is not None:
-        diags[:] = [d for d in diags if not read_past(d, parts[1])]  # 'same' of 'same colour'
-        diags.extend(parts[1])
-        return parts[0]
+    whole = _whole_line(hedged, text, lexicon)
+    if whole is not None:
+        diags[:] = [d for d in diags if not read_past(d, whole[1])]  # 'on' of 'rust on steel'
+        diags.extend(whole[1])
+        return whole[0]
     if notes:  # still no parse: the rest reads the words as reread, and says so
         words, failure = hedged, _failure_of(hedged, lexicon) or failure
         diags[:] = [d for d in diags if not read_past(d, notes)]
@@ -178,6 +179,15 @@ def _failed_line(
             return material
     diags.append(taught)
     return None
+
+
+def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, list[Diagnostic]] | None:
+    """The line read whole another way, with its notes: a clause on its material ('rust on steel':
+    cnlmc.on_clause), or a refinement of comma parts ('deeper, more of a burgundy')."""
+    placed = on_material(words, text, lexicon)
+    if placed is not None:
+        return placed[0], [placed[1]]
+    return _by_parts(words, text, lexicon)
 
 
 def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Refinement, list[Diagnostic]] | None:

@@ -86,12 +86,12 @@ class Joiner:
             if before is not None and of_tag(before, "OBJECT") and not others(before) and nouns:
                 out[-1] = self._join(before, word, nouns, f"'{word.text}' ('{before.text}' names the object)", diags)
                 formed.append((out[-1], word if of_tag(word, "OBJECT") else before))  # 'floor tiles': the tiles
-            elif before is not None and of_tag(word, "OBJECT") and of_tag(before, "NOUN"):
+            elif before is not None and of_tag(word, "OBJECT") and of_tag(before, "NOUN") and not _noun_next(tagged, k):
                 made = of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' (the material of the {word.text})", diags)
                 formed.append((out[-1], word))
-            elif before is not None and self.is_head(before, word.text, k + 1 == len(tagged), out):
-                out[-1] = self.with_head(before, word.text, word.span, k + 1 == len(tagged), diags)
+            elif before is not None and self.is_head(before, word.text, _ends_noun(tagged, k, out), out):
+                out[-1] = self.with_head(before, word.text, word.span, _ends_noun(tagged, k, out), diags)
             elif before is not None and nouns and self._finish_noun(before) is not None:
                 out[-1:] = self._finish_of(before, word, diags)
                 _plating_first(out)
@@ -500,6 +500,8 @@ class Joiner:
         note = f"read '{before.text} {text}' as '{before.text}' ('{text}' names what it describes)"
         diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
         kept = tuple(c for c in before.candidates if c.tag in HEAD_HOLDERS[last])
+        if not last and any(c.tag == "ADJ" for c in kept):  # 'satin finish': the finish, never the fabric
+            kept = tuple(c for c in kept if c.tag != "NOUN")
         return Tagged(f"{before.text} {text}", joined, kept, before.unknown)
 
     def _coloured(self, before: Tagged, text: str, joined: Span, diags: list[Diagnostic]) -> Tagged:
@@ -883,3 +885,16 @@ def others(word: Tagged) -> tuple[Candidate, ...]:
 
 def others_of(candidates: tuple[Candidate, ...]) -> tuple[Candidate, ...]:
     return tuple(c for c in candidates if c.tag != "OBJECT")
+
+
+def _noun_next(tagged: list[Tagged], k: int) -> bool:
+    """'eggshell wall paint': the object word before a material noun names that noun's object (the
+    wall the paint is for), not the object made of the word before it."""
+    after = tagged[k + 1] if k + 1 < len(tagged) else None
+    return after is not None and not after.unknown and bool(of_tag(after, "NOUN")) and not of_tag(after, "OBJECT")
+
+
+def _ends_noun(tagged: list[Tagged], k: int, out: list[Tagged]) -> bool:
+    """Whether a head word at k ends the line after its noun ('brushed steel look': the noun holds
+    it); after a comma the word before it describes ('brass, satin finish': the adjective)."""
+    return k + 1 == len(tagged) and not (len(out) > 1 and of_tag(out[-2], "COMMA"))

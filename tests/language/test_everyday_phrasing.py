@@ -316,13 +316,21 @@ def test_the_new_nouns_carry_the_dataset_row(phrase, row):
         assert said["params"]["base_color"] == pytest.approx(linear, abs=5e-4)
 
 
-@pytest.mark.parametrize("colour", ["orange", "lemon", "eggshell", "blood"])  # 'orange' alone is the colour only
+@pytest.mark.parametrize("colour", ["orange", "lemon", "blood"])  # 'orange' alone is the colour only
 def test_a_fruit_or_egg_before_a_material_is_still_its_colour(colour):
     """'orange plastic' is plastic in the colour orange, not two materials."""
     result, said = look(LEX, f"{colour} plastic")
     _, plastic = look(LEX, "plastic")
     assert said["params"]["base_color"] != plastic["params"]["base_color"]
     assert result.ir["materials"][0]["provenance"]["base_color"][-1]["words"] == [colour]
+
+
+@pytest.mark.parametrize("said", ["eggshell paint", "eggshell wall paint", "grey eggshell interior paint"])
+def test_eggshell_before_a_paint_is_its_sheen(said):
+    """Paint is sold by sheen: eggshell is a low sheen (satin's alias), not the survey's #ffffd4."""
+    _, got = look(LEX, said)
+    _, satin = look(LEX, said.replace("eggshell wall", "satin").replace("eggshell", "satin"))
+    assert got["params"] == satin["params"]
 
 
 @pytest.mark.parametrize(("german", "english"), [("Zitrone", "lemon"), ("Eierschale", "eggshell"), ("Blut", "blood")])

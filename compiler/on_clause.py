@@ -1,0 +1,73 @@
+"""'rust on steel', 'a clear lacquer over oak', 'green patina on old copper': a clause said on the
+material it lies on is that material with the clause ('steel with rust'). The joining words are
+data (teaching.toml [hedges] `on`); runs only for a line that does not parse (they are not words of
+the language, so the tagger leaves them out)."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+
+from . import ast
+from .diagnostics import Diagnostic, Severity
+from .lexicon import Lexicon
+from .parser import parsed_item, parsed_material
+from .suggest import teaching
+from .tagged import NOTE_CODE, Candidate, Tagged, written_span
+
+__all__ = ["on_material"]
+
+
+def on_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
+    """The material after the joining word with the clause before it, and the note; None when the
+    line has no joining word, or its two sides are not a clause and a material."""
+    joining = _joining(text)
+    if joining is None or not words:
+        return None
+    start, end = joining
+    line_start = words[0].span.start - (words[0].span.col - 1)
+    known = [w for w in words if not (w.unknown and start <= w.span.start - line_start < end)]
+    before = [w for w in known if w.span.start - line_start < start]
+    after = [w for w in known if w.span.start - line_start >= end]
+    if not before or not after or any(w.unknown for w in known):
+        return None
+    material = parsed_material(after, text, lexicon.caches.shapes)
+    clause = parsed_item([_with(before[0]), *before], text, lexicon.caches.shapes)
+    if material is None or not isinstance(clause, ast.Refinement) or not (clause.coat or clause.features):
+        return None
+    if material.coat is not None and clause.coat is not None:
+        return None  # two coats: the error says so
+    joined = ast.Material(
+        material.name,
+        material.groups,
+        material.nouns,
+        material.coat or clause.coat,
+        written_span(words),
+        text,
+        material.refinements,
+        (*material.features, *clause.features),
+    )
+    said = " ".join(text[start:end].split())
+    clause_said = " ".join(w.text for w in before if w.text[:1].isalnum())
+    material_said = " ".join(w.text for w in after if w.text[:1].isalnum())
+    message = f"read '{clause_said} {said} {material_said}' as '{material_said} with {clause_said}'"
+    return joined, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, message)
+
+
+def _joining(text: str) -> tuple[int, int] | None:
+    """Where the first joining word stands in the line ('on', 'over', 'on top of'), or None."""
+    words = teaching()["hedges"]["on"]
+    pattern = (
+        r"\b(?:" + "|".join(re.escape(w).replace(r"\ ", r"\s+") for w in sorted(words, key=len, reverse=True)) + r")\b"
+    )
+    found = re.search(pattern, text.lower())
+    return (found.start(), found.end()) if found is not None else None
+
+
+def _with(first: Tagged) -> Tagged:
+    """An implied 'with' before the clause's first word (inside it: the parser keys words by start)."""
+    s = first.span
+    at = min(s.start + 1, s.end)
+    from .spans import Span
+
+    return Tagged("with", Span(at, s.end, s.line, s.col + 1), (Candidate("WITH", "with", "keywords"),), implied_by=s)
