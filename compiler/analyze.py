@@ -35,7 +35,7 @@ def attach_refinements(doc: ast.Document, lexicon: Lexicon) -> list[tuple[ast.Ma
         if isinstance(item, ast.Material):
             pairs.append((item, []))
         elif pairs and item.changes_material and (changed := changed_material(pairs[-1][0], item, lexicon)):
-            pairs[-1] = (changed, pairs[-1][1])  # 'make it walnut': the material above, now walnut
+            pairs[-1] = (changed, pairs[-1][1] + after_change(item))  # 'make it walnut': the material above, now walnut
         elif pairs:
             pairs[-1][1].append(item)
         else:
@@ -43,6 +43,15 @@ def attach_refinements(doc: ast.Document, lexicon: Lexicon) -> list[tuple[ast.Ma
             if material is not None:
                 pairs.append((material, []))
     return pairs
+
+
+def after_change(change: ast.Refinement) -> list[ast.Refinement]:
+    """The comparatives said with a change ('go darker, more like walnut'): a refinement line of
+    their own after it; [] for a change alone, and for a removal (its comparatives are its reading
+    where there was nothing to take off: 'lose the shine' = less shine)."""
+    if not change.items or change.removed:
+        return []
+    return [ast.Refinement(None, change.items, change.span, change.text)]
 
 
 def changed_material(material: ast.Material, change: ast.Refinement, lexicon: Lexicon) -> ast.Material | None:
@@ -279,6 +288,7 @@ def _material_groups(
             material_ok = material is not None
         elif not has_error and item.changes_material and (changed := changed_material(material, item, lexicon)):
             material = changed
+            refinements += after_change(item)
         elif not has_error:
             refinements.append(item)
     if material is not None and material_ok:

@@ -12,7 +12,7 @@ from .diagnostics import Diagnostic, error
 from .lexicon import Lexicon
 from .line_parts import PART_MARKS, by_parts
 from .lines import iter_lines
-from .on_clause import on_material
+from .on_clause import likeness_dropped, on_material
 from .parser import ParseFailure, describe_expected, parse_line_shape, parsed_item
 from .removal import removal_line
 from .shape_store import save_shapes
@@ -184,7 +184,7 @@ def _failed_line(
 def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, list[Diagnostic]] | None:
     """The line read whole another way, with its notes: a clause on its material ('rust on steel':
     cnlmc.on_clause), or a refinement of comma parts ('deeper, more of a burgundy')."""
-    placed = on_material(words, text, lexicon)
+    placed = on_material(words, text, lexicon) or likeness_dropped(words, text, lexicon)
     if placed is not None:
         return placed[0], [placed[1]]
     return _by_parts(words, text, lexicon)

@@ -328,6 +328,19 @@ def _compared_list(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material
     return material, Diagnostic(item.span, Severity.NOTE, NOTE_CODE, message, (hint,))
 
 
+def _closer_alone(item: ast.Refinement, colour: ast.Colour) -> tuple[ast.Material, Diagnostic]:
+    """'more like a burnt orange' first: nothing to come closer from, so the colour itself, on the
+    everyday noun colours go on."""
+    noun = str(teaching()["completions"]["nouns"][0])
+    group = ast.Group("colour", (), (colour,), (), colour.span)
+    implied = ast.Word(noun, noun, "nouns", item.span)
+    material = ast.Material(None, (group,), (implied,), None, item.span, item.text)
+    said = " ".join(w.text for w in colour.words)
+    message = f"no material named: read '{item.text.strip()}' as '{said} {noun}' (nothing above to come closer from)"
+    hint = "name the material to choose another, or write the material first and this line below it"
+    return material, Diagnostic(item.span, Severity.NOTE, NOTE_CODE, message, (hint,))
+
+
 def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
     """'paler blue', 'a bit warmer grey' with no material above: a comparison as the first line
     describes a material one step from its colour on the everyday noun colours go on ('paler blue'
@@ -338,6 +351,8 @@ def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.M
         return None
     if len(item.items) > 1:
         return _compared_list(item, lexicon)
+    if lexicon.require("refinements", item.items[0].word.key).get("towards") is not None:
+        return _closer_alone(item, item.items[0].target)
     from .parser import parsed_material
     from .tagger import Tagger
 

@@ -29,6 +29,8 @@ __all__ = ["HEAD_HOLDERS", "Joiner", "may_join", "of_tag", "others", "others_of"
 
 #: The readings a head word ("finish", "look") joins: before the noun (False) or at the line's end (True).
 HEAD_HOLDERS = {False: ("ADJ", "COLOR", "NOUN"), True: ("NOUN",)}
+#: words after which a word is a verb of a question or request, not an object ('can we', 'can it')
+SPEAKERS = frozenset(("we", "it", "you", "i", "they", "this", "that", "these", "those"))
 
 
 class Joiner:
@@ -107,6 +109,8 @@ class Joiner:
             elif of_tag(word, "OBJECT"):
                 if k + 1 < len(tagged) and of_tag(tagged[k + 1], "NOUN"):
                     out.append(word)  # "roof tiles": joined to the noun next
+                elif k + 1 < len(tagged) and tagged[k + 1].text.lower() in SPEAKERS:
+                    out.append(word)  # "can we ...", "can it be ...": a question, read as politeness
                 elif (
                     not others(word)
                     and _describes_a_coat(tagged[k + 1 :])  # not 'floor, varnish' nor 'floor and varnish'
@@ -185,7 +189,11 @@ class Joiner:
             return
         end = next((k for k, t in enumerate(out) if of_tag(t, "WITH")), len(out))
         start = end
-        while start > 0 and any(c.tag in ("ADJ", "ADV", "AND") for c in out[start - 1].candidates):
+        while (
+            start > 0
+            and not of_tag(out[start - 1], "NOUN")
+            and any(c.tag in ("ADJ", "ADV", "AND", "COLOR", "SHADE") for c in out[start - 1].candidates)
+        ):
             start -= 1
         while start < end and of_tag(out[start], "AND"):
             start += 1
@@ -696,9 +704,15 @@ def _plating_first(out: list[Tagged]) -> None:
 
 
 def _ends_in_describing(out: list[Tagged]) -> bool:
-    """Whether the words before the first 'with' (or the line's end) end in a describing word."""
+    """Whether the words before the first 'with' (or the line's end) end in a describing word or a
+    colour that is no noun."""
     end = next((k for k, t in enumerate(out) if of_tag(t, "WITH")), len(out))
-    return end > 1 and bool(of_tag(out[end - 1], "ADJ"))
+    if end < 2:
+        return False
+    last = out[end - 1]  # 'Eiche geölt', 'Schiefer dunkelgrau' (a colour that is no noun)
+    return bool(of_tag(last, "ADJ")) or (
+        any(c.tag in ("COLOR", "SHADE") for c in last.candidates) and not of_tag(last, "NOUN")
+    )
 
 
 def _feature_colour_list(out: list[Tagged], diags: list[Diagnostic]) -> None:
@@ -850,7 +864,8 @@ def may_join(tagged: list[Tagged]) -> bool:
         return True  # "bike paint": an unknown word may say where the material is used
     if not noun_seen and not with_seen and ("ADJ" in final_tags or "FEATURE" in final_tags):
         return True  # "blue glaze": perhaps a finish substance named as the whole material
-    return plain and noun_seen and "ADJ" in final_tags
+    colour_last = ("COLOR" in final_tags or "SHADE" in final_tags) and "NOUN" not in final_tags  # "Schiefer dunkelgrau"
+    return plain and noun_seen and ("ADJ" in final_tags or colour_last)
 
 
 def _more_things(out: list[Tagged], word: Tagged, said: list[Tagged]) -> bool:

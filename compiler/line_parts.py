@@ -2,8 +2,8 @@
 burgundy', 'bit darker, less shine please', 'warmer, keep the finish'): each part is read as a line
 of its own where it stands (cnlmc.document), and the parts join into one refinement; a part that is
 only courtesy ('same colour', 'please') is read past. Runs only for a line that failed as a whole,
-and only when every part is a refinement of values (a change to another material stays a line of
-its own)."""
+and only when every part is a refinement; one part may change the material when the others are
+comparatives ('go darker, more like walnut': walnut, then darker)."""
 
 from __future__ import annotations
 
@@ -41,13 +41,14 @@ def by_parts(text: str, line: int, offset: int, read: Reader) -> tuple[ast.Refin
             continue
         said: list[Diagnostic] = []
         node = read(start + 1, end, said)
-        if not isinstance(node, ast.Refinement) or node.changes_material or any(d.is_error for d in said):
+        if not isinstance(node, ast.Refinement) or node.removed or any(d.is_error for d in said):
             return None
         found.append(node)
         notes += said
-    if not found:
+    changes = [p for p in found if p.material is not None]
+    if not found or len(changes) > 1 or (changes and not _comparatives_beside(found, changes[0])):
         return None
-    return _joined(found, text), notes
+    return (_with_change(found, changes[0], text) if changes else _joined(found, text)), notes
 
 
 def _courtesy(written: str) -> bool:
@@ -62,6 +63,18 @@ def _read_past(written: str, start: int, line: int, offset: int) -> Diagnostic:
     said = written.strip()
     span = Span(offset + first, offset + first + len(said), line, first + 1)
     return Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read past '{said}'")
+
+
+def _comparatives_beside(parts: list[ast.Refinement], change: ast.Refinement) -> bool:
+    """Whether the other parts of a line with a change are comparatives only ('go darker, more like
+    walnut'): they apply after the change (cnlmc.analyze.after_change)."""
+    return all(p.items and not (p.groups or p.coat or p.features) for p in parts if p is not change)
+
+
+def _with_change(parts: list[ast.Refinement], change: ast.Refinement, text: str) -> ast.Refinement:
+    span: Span = parts[0].span.to(parts[-1].span)
+    items = tuple(i for p in parts if p is not change for i in p.items)
+    return ast.Refinement(None, items, span, text, change.coat, change.features, change.groups, change.material)
 
 
 def _joined(parts: list[ast.Refinement], text: str) -> ast.Refinement:

@@ -12,10 +12,11 @@ from . import ast
 from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
 from .parser import parsed_item, parsed_material
+from .spans import Span
 from .suggest import teaching
 from .tagged import NOTE_CODE, Candidate, Tagged, written_span
 
-__all__ = ["on_material"]
+__all__ = ["likeness_dropped", "on_material"]
 
 
 def on_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
@@ -68,6 +69,29 @@ def _with(first: Tagged) -> Tagged:
     """An implied 'with' before the clause's first word (inside it: the parser keys words by start)."""
     s = first.span
     at = min(s.start + 1, s.end)
-    from .spans import Span
-
     return Tagged("with", Span(at, s.end, s.line, s.col + 1), (Candidate("WITH", "with", "keywords"),), implied_by=s)
+
+
+def likeness_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
+    """'chrome, like a bathroom tap', 'brass, as on an old ship': a comparison with a thing after
+    the material, set off by a comma, is read past (teaching.toml [hedges] `likeness`); None when
+    the words before it are not a material."""
+    found = re.search(r",\s*(?:" + _pattern(teaching()["hedges"]["likeness"]) + r")\b", text.lower())
+    if found is None or not words:
+        return None
+    line_start = words[0].span.start - (words[0].span.col - 1)
+    before = [w for w in words if w.span.start - line_start < found.start()]
+    if not before or any(w.unknown for w in before):
+        return None
+    material = parsed_material(before, text, lexicon.caches.shapes)
+    if material is None:
+        return None
+    said = text[found.start() + 1 :].strip()
+    note = f"read past '{said}': a likeness to a thing, after the material it names"
+    start = line_start + found.start() + 1 + (len(text[found.start() + 1 :]) - len(text[found.start() + 1 :].lstrip()))
+    span = Span(start, line_start + len(text.rstrip()), words[0].span.line, start - line_start + 1)
+    return material, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)
+
+
+def _pattern(phrases: list[str]) -> str:
+    return "|".join(re.escape(w).replace(r"\ ", r"\s+") for w in sorted(phrases, key=len, reverse=True))

@@ -34,7 +34,15 @@ from multiprocessing.connection import Connection, wait
 from typing import Any
 
 from . import ast
-from .analyze import base_name, build_states, changed_material, orphan_line, orphan_refinement, unique_name
+from .analyze import (
+    after_change,
+    base_name,
+    build_states,
+    changed_material,
+    orphan_line,
+    orphan_refinement,
+    unique_name,
+)
 from .diagnostics import Diagnostic
 from .document import parse_line
 from .interrupts import SIGNALS
@@ -354,6 +362,7 @@ def _owned_groups(
             pass  # before the chunk's first material: the chunk before reports it
         elif not has_error and item.changes_material and (changed := changed_material(material, item, lexicon)):
             material = changed
+            refinements += after_change(item)
         elif not has_error:
             refinements.append(item)
     if material is not None and material_ok:

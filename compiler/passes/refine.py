@@ -85,12 +85,12 @@ def _as_group(target: ast.Word | ast.Colour) -> ast.Group:
 def apply_refinement_line(state: MaterialState, ctx: Context, line: ast.Refinement) -> None:
     """A refinement line: its items in order ('darker, less glossy'), or its 'with' clauses
     ('with a glossy varnish' below 'walnut' adds the coat; passes/coats.py)."""
+    if line.groups:  # 'make it blue': the describing words apply to the material as it is, then
+        apply_described(state, ctx, line.groups)  # the comparatives said with them ('a bit darker, like cream')
     for item in line.items:
         apply_refinement(state, ctx, item)
     if line.removed:  # reached here only when the material above has none of them
         _nothing_removed(state, ctx, line)
-    if line.groups:  # 'make it blue': the describing words apply to the material as it is
-        apply_described(state, ctx, line.groups)
     if line.coat is not None or line.features:
         apply_clauses(state, ctx, line.coat, line.features)
 
