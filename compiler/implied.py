@@ -351,8 +351,12 @@ def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.M
         return None
     if len(item.items) > 1:
         return _compared_list(item, lexicon)
-    if lexicon.require("refinements", item.items[0].word.key).get("towards") is not None:
-        return _closer_alone(item, item.items[0].target)
+    target = item.items[0].target
+    if (
+        isinstance(target, ast.Colour)
+        and lexicon.require("refinements", item.items[0].word.key).get("towards") is not None
+    ):
+        return _closer_alone(item, target)
     from .parser import parsed_material
     from .tagger import Tagger
 
