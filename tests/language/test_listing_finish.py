@@ -2,10 +2,7 @@
 
 import pytest
 
-
-def first(result):
-    assert result.ok, [d.message for d in result.diagnostics]
-    return result.ir["materials"][0]
+from .conftest import first
 
 
 @pytest.mark.parametrize(

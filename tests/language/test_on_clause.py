@@ -3,10 +3,7 @@ not those of the held-out sets."""
 
 import pytest
 
-
-def first(result):
-    assert result.ok, [d.message for d in result.diagnostics]
-    return result.ir["materials"][0]
+from .conftest import first
 
 
 @pytest.mark.parametrize(
