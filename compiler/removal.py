@@ -6,7 +6,8 @@ features, coats or colours is a change line whose `removed` words come off the m
 its opposite ('not glossy' = matte: cnlmc.word_formation). Any other line is None: it is read as
 before ('lose the shine' = less shine).
 
-Checked for every line, so the common case is one set lookup of the line's first word.
+Asked only of a line with an unknown or rule-read word or one that does not parse (cnlmc.document),
+and then first a set lookup of its first word.
 """
 
 from __future__ import annotations
