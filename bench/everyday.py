@@ -377,6 +377,25 @@ def direction(before: Any, after: Any, eps: float = 1e-6) -> str:
     return "same" if before == after else "changed"
 
 
+#: a hue moves when its OKLCh angle moves by more than this many degrees (about a just-noticeable hue
+#: step at everyday chroma; the IR's six-decimal colours move the angle of a pure step in chroma by
+#: ~1e-3 degrees, which is no change of hue). Below HUE_CHROMA an angle means little: there the
+#: colour's OKLab (a, b) must move by more than HUE_CHROMA (a grey that gains or loses a tint).
+HUE_STEP_DEGREES = 1.0
+HUE_CHROMA = 0.005
+
+
+def hue_direction(before: Mapping[str, Any], after: Mapping[str, Any]) -> str:
+    """'changed' or 'same' for the apparent colour's hue (angles compared around the circle)."""
+    (_, c0, h0), (_, c1, h1) = oklch(apparent_colour(before)), oklch(apparent_colour(after))
+    if min(c0, c1) < HUE_CHROMA:
+        a0, b0 = c0 * math.cos(math.radians(h0)), c0 * math.sin(math.radians(h0))
+        a1, b1 = c1 * math.cos(math.radians(h1)), c1 * math.sin(math.radians(h1))
+        return "changed" if math.hypot(a1 - a0, b1 - b0) > HUE_CHROMA else "same"
+    turn = abs((h1 - h0 + 180.0) % 360.0 - 180.0)
+    return "changed" if turn > HUE_STEP_DEGREES else "same"
+
+
 def direction_met(want: str, got: str) -> bool:
     return got == want or (want == "changed" and got in ("up", "down"))
 
@@ -507,7 +526,9 @@ def run_refinement(seq: Mapping[str, Any]) -> list[Outcome]:
         after = session.material
         misses = []
         for key, want in step["expect"].items():
-            got = direction(quantity(before, key), quantity(after, key))
+            got = (
+                hue_direction(before, after) if key == "hue" else direction(quantity(before, key), quantity(after, key))
+            )
             if not direction_met(want, got):
                 b, a = quantity(before, key), quantity(after, key)
                 shown = f"{got} ({b:.3f} -> {a:.3f})" if isinstance(b, float) else got

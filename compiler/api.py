@@ -177,14 +177,27 @@ def _complaint_as_change(words: str, table: Mapping[str, Any]) -> str:
     shiny'); any other words as they are."""
     said = " ".join(words.split())
     low = said.lower()
+    opened = False
     for opener in sorted(table["complaint_openers"], key=len, reverse=True):
         if low.startswith(opener + " "):
-            said, low = said[len(opener) + 1 :], low[len(opener) + 1 :]
+            said, low, opened = said[len(opener) + 1 :], low[len(opener) + 1 :], True
             break
-    for complaint in sorted(table["complaints"], key=len, reverse=True):
+    complaints = dict(table["complaints"])
+    if opened and not _comparative_next(low, table["opened_complaints"]):
+        complaints.update(table["opened_complaints"])
+    for complaint in sorted(complaints, key=len, reverse=True):
         if low.startswith(complaint + " "):
-            return f"{table['complaints'][complaint]} {said[len(complaint) + 1 :]}"
+            return f"{complaints[complaint]} {said[len(complaint) + 1 :]}"
     return words
+
+
+def _comparative_next(low: str, degrees: Mapping[str, str]) -> bool:
+    """ "it's a bit darker now": the word after the degree is a comparative (a report, no complaint)."""
+    for degree in sorted(degrees, key=len, reverse=True):
+        if low.startswith(degree + " "):
+            word = low[len(degree) + 1 :].split()[0] if low[len(degree) + 1 :].split() else ""
+            return word in ("more", "less", "mehr", "weniger") or (word.endswith("er") and len(word) > 4)
+    return False
 
 
 class Session:

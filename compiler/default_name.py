@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 from . import ast
+from .spans import Span
 
 __all__ = ["name_words"]
 
@@ -19,44 +20,66 @@ def name_words(material: ast.Material) -> list[str]:
     """The words of a material's default name (before cnlmc.passes.variants.identifier)."""
     words = _refinement_words(material.refinements) if material.refinements else []
     words += _group_words(material.groups)
-    words.append(material.nouns[0].text)
+    words.append(material.nouns[0])
     if material.coat is not None or material.features:  # most phrases have no 'with' clause
         words += _clause_words(material)
-    return words
+    return _as_written(words)
 
 
-def _clause_words(material: ast.Material) -> list[str]:
+def _as_written(words: list[ast.Word]) -> list[str]:
+    """The words' texts; parts read from one written word ('darkest' = 'intensely' on 'est', 'dark'
+    on 'dark') are put back together as written ('darkest', not 'est_dark')."""
+    out: list[str] = []
+    last: ast.Word | None = None
+    for word in words:
+        if last is not None and _parts_of_one_word(last, word):
+            first, second = (last, word) if last.span.start < word.span.start else (word, last)
+            out[-1] = first.text + second.text
+            last = ast.Word(out[-1], word.key, word.category, first.span.to(second.span))
+            continue
+        out.append(word.text)
+        last = word
+    return out
+
+
+def _parts_of_one_word(a: ast.Word, b: ast.Word) -> bool:
+    """Whether two words are parts read from one written word: each spans its own letters (an
+    implied word, 'with' or a noun no one typed, does not) and they touch."""
+    own = all(w.span.end - w.span.start == len(w.text) > 0 for w in (a, b))
+    return own and (b.span.start == a.span.end or b.span.end == a.span.start)
+
+
+def _clause_words(material: ast.Material) -> list[ast.Word]:
     """'with' then each clause's words in phrase order, the later ones after 'and'."""
     clauses = [(c.span.start, c.groups, c.coat) for c in (material.coat,) if c is not None]
     clauses += [(f.span.start, f.groups, f.word) for f in material.features]  # 'marble with grey veins'
-    words: list[str] = []
-    for index, (_start, groups, word) in enumerate(sorted(clauses, key=lambda c: c[0])):
-        words += ["with" if index == 0 else "and", *_group_words(groups), word.text]
+    words: list[ast.Word] = []
+    for index, (start, groups, word) in enumerate(sorted(clauses, key=lambda c: c[0])):
+        joining = ast.Word("with" if index == 0 else "and", "", "", Span(start, start, 0, 0))
+        words += [joining, *_group_words(groups), word]
     return words
 
 
-def _group_words(groups: Iterable[ast.Group]) -> list[str]:
+def _group_words(groups: Iterable[ast.Group]) -> list[ast.Word]:
     """Each group's adverbs, its first colour (shades and all) and its first adjective."""
-    words: list[str] = []
+    words: list[ast.Word] = []
     for group in groups:  # loops, not comprehensions: in Python 3.11 each comprehension is a call
-        for adverb in group.adverbs:
-            words.append(adverb.text)
+        words += group.adverbs
         if group.colours:
-            for word in group.colours[0].words:
-                words.append(word.text)
+            words += group.colours[0].words
         if group.adjectives:
-            words.append(group.adjectives[0].text)
+            words.append(group.adjectives[0])
     return words
 
 
-def _refinement_words(items: Iterable[ast.RefineItem]) -> list[str]:
+def _refinement_words(items: Iterable[ast.RefineItem]) -> list[ast.Word]:
     """An inline comparative's words ('slightly darker oak' -> slightly, darker; 'more grain oak')."""
-    words: list[str] = []
+    words: list[ast.Word] = []
     for item in items:
-        words += [w.text for w in item.adverbs]
-        words.append(item.word.text)
+        words += item.adverbs
+        words.append(item.word)
         if isinstance(item.target, ast.Colour):
-            words += [w.text for w in item.target.words]
+            words += item.target.words
         elif item.target is not None:
-            words.append(item.target.text)
+            words.append(item.target)
     return words

@@ -25,7 +25,7 @@ from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
 from .spans import Span
 from .suggest import teaching
-from .tagged import NOTE_CODE, Candidate, Tagged, written_span
+from .tagged import NOTE_CODE, Candidate, Tagged, written_span, written_text
 
 __all__ = ["as_change", "first_line_comparison", "implied_material", "material_change", "starts_with_change"]
 
@@ -103,7 +103,7 @@ def _as_described(
         parse_line_shape(with_noun, lexicon.caches.shapes)
     except ParseFailure:
         return None
-    written = " ".join(w.text for w in said)
+    written = written_text(said)
     return with_noun, _note(said, noun, [f"{written} {other}" for other in everyday[1:3]])
 
 
@@ -188,7 +188,7 @@ def _misspelt_noun_of_that_colour(offer: str, said: Sequence[Tagged], lexicon: L
 
 def _added_noun(offer: str, said: Sequence[Tagged], tail: Sequence[Tagged], lexicon: Lexicon) -> tuple[str, str] | None:
     """The noun (key, as written) the offer adds after the words as written (None: it changes them)."""
-    head = " ".join(w.text for w in said) + " "
+    head = written_text(said) + " "
     end = "".join(f" {w.text}" for w in tail)
     if not offer.startswith(head) or not offer.endswith(end):
         return None
@@ -209,7 +209,7 @@ def _implied_noun(noun: str, last: Tagged) -> Tagged:
 
 def _note(said: Sequence[Tagged], noun: str, others: Sequence[str], why: str = "", hint: str = "") -> Diagnostic:
     """N101 'no material named: read X as X NOUN', with the other offers (or `hint`) to choose from."""
-    written = " ".join(w.text for w in said)
+    written = written_text(said)
     choose = f": {', '.join(repr(o) for o in others[:2])}" if others else ""
     message = f"no material named: read '{written}' as '{written} {noun}'{why}"
     return Diagnostic(
@@ -259,7 +259,7 @@ def as_change(material: ast.Material, words: Sequence[Tagged]) -> tuple[ast.Refi
     change = ast.Refinement(
         None, (), material.span, material.text, material.coat, material.features, groups=material.groups
     )
-    written = " ".join(w.text for w in said)
+    written = written_text(said)
     message = f"read '{written}' as a change of the material above: its words apply to it"
     return change, Diagnostic(written_span(said), Severity.NOTE, NOTE_CODE, message)
 

@@ -36,7 +36,7 @@ def by_parts(text: str, line: int, offset: int, read: Reader) -> tuple[ast.Refin
         written = text[start + 1 : end]
         if not written.strip():
             return None
-        if _courtesy(written):
+        if _courtesy(written) or _echo(written):
             notes.append(_read_past(written, start + 1, line, offset))
             continue
         said: list[Diagnostic] = []
@@ -55,6 +55,37 @@ def _courtesy(written: str) -> bool:
     table = teaching()["politeness"]
     said = " ".join(written.lower().split())
     return said in table["leading"] or said in table["trailing"] or said in table["changes_at_end"]
+
+
+def _echo(written: str) -> bool:
+    """'can we knock it back a bit' beside 'too shiny': a verb-and-'it' idiom (teaching.toml
+    [politeness] idioms) with only courtesy and degree words around it echoes the line's other part."""
+    table = teaching()["politeness"]
+    words = [w.strip(".,!?;:") for w in written.lower().split()]
+    words = _without_edges(words, table["leading"], at_start=True)
+    words = _without_edges(words, [*table["trailing"], *DEGREE_TAILS], at_start=False)
+    said = " ".join(w for w in words if w != "back")  # the place word the tagger reads past
+    return said in table["idioms"]
+
+
+#: degree words that may follow an echoing idiom ('knock it back a bit')
+DEGREE_TAILS = ("a bit", "a little", "a little bit", "a touch", "a notch", "a tad", "slightly", "a smidge", "somewhat")
+
+
+def _without_edges(words: list[str], phrases: list[str] | tuple[str, ...], at_start: bool) -> list[str]:
+    """The words without listed phrases at one edge, taken repeatedly (longest first)."""
+    listed = sorted(set(phrases), key=lambda p: -len(p.split()))
+    changed = True
+    while changed and words:
+        changed = False
+        for phrase in listed:
+            n = len(phrase.split())
+            edge = words[:n] if at_start else words[-n:]
+            if n < len(words) and " ".join(edge) == phrase:
+                words = words[n:] if at_start else words[:-n]
+                changed = True
+                break
+    return words
 
 
 def _read_past(written: str, start: int, line: int, offset: int) -> Diagnostic:

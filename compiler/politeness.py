@@ -40,6 +40,8 @@ def without_politeness(
         while len(kept) > 1:
             if at_start and rewritten is None and tag is not None:  # 'ok, more of a teal': after the politeness
                 taken = _edge_phrase(kept, list(rewrites), marks, at_start=True)
+                if taken and _edge_phrase(kept, phrases, marks, at_start=True) > taken:
+                    taken = 0  # "like it's just been rained on": the longer courtesy phrase wins
                 if taken:
                     rewritten, kept = kept[:taken], kept[taken:]
                     said = " ".join(w.text.lower() for w in rewritten if w.text[:1].isalnum())
@@ -52,7 +54,12 @@ def without_politeness(
                 break
             dropped.append(kept[:taken] if at_start else kept[-taken:])
             kept = kept[taken:] if at_start else kept[:-taken]
-    kept, pronoun, read_as = _without_pronoun(kept, table["pronouns"], tag)
+    idiom = _idiom(kept, table["idioms"], tag) if tag is not None and not put else None
+    if idiom is not None:
+        said_run, put, kept = idiom
+        rewritten = said_run
+        dropped.append(said_run)
+    kept, pronoun, read_as = _without_pronoun(kept, table["pronouns"], tag) if idiom is None else (kept, None, [])
     if pronoun is not None:
         dropped.append([pronoun])
     if not dropped:
@@ -71,7 +78,25 @@ def without_politeness(
         else:
             note = f"read past '{text}': a phrase names the material only, so politeness is left out"
         out.append(Diagnostic(run[0].span.to(run[-1].span), Severity.NOTE, NOTE_CODE, note))
-    return out, put + kept
+    return out, (kept + put if idiom is not None else put + kept)
+
+
+def _idiom(
+    kept: list[Tagged], idioms: dict[str, str], tag: Callable[[str], Tagged | None]
+) -> tuple[list[Tagged], list[Tagged], list[Tagged]] | None:
+    """'tone it down', 'warm it up a bit': a listed verb-and-'it' phrase that is the whole line but
+    for degree words after it. The phrase's words, the comparative it stands for (tagged, in its
+    place), and the degree words (kept, they go before it); None when the line is anything else."""
+    lowered = [w.text.lower() for w in kept]
+    for n in range(len(kept), 0, -1):
+        if " ".join(lowered[:n]) not in idioms:
+            continue
+        rest = kept[n:]
+        if not all(any(c.tag == "ADV" for c in w.candidates) for w in rest):
+            return None
+        put = _rewritten(kept[:n], idioms[" ".join(lowered[:n])], tag)
+        return (kept[:n], put, rest) if put else None
+    return None
 
 
 def _ends_in_a_noun(words: Sequence[Tagged]) -> bool:
@@ -94,9 +119,43 @@ def _without_pronoun(
     if rest and rest[0].text.lower() in teaching()["politeness"]["particles"]:
         rest, past = rest[1:], [*past, rest[0].span]  # 'polish it up': the particle goes with the pronoun
     said = verb or kept[0]
+    rest, reached = _result_words(rest)
+    if reached:  # 'polish it up to a mirror' = mirror polished
+        past = [*past, *reached]
+        return [*rest, said], kept[1], past
     if verb is not None and rest and all(any(c.tag == "ADV" for c in w.candidates) for w in rest):
         return [*rest, said], kept[1], past  # 'polish it a bit' = 'a bit polished'
     return [said, *rest], kept[1], past
+
+
+#: the words after a verb and 'it' that say what it is brought to ('to a mirror finish')
+RESULT_OPENERS = (("to", "a"), ("to", "an"), ("into", "a"), ("to",))
+RESULT_NOUNS = frozenset(("finish", "shine", "sheen", "look", "surface"))
+
+
+def _result_words(rest: list[Tagged]) -> tuple[list[Tagged], list[Span]]:
+    """'to a mirror finish' after 'polish it': the describing words of the result ('mirror') and the
+    spans read past with the verb ('to a', 'finish'); the words as they were and [] otherwise."""
+    lowered = [w.text.lower() for w in rest]
+    for opener in RESULT_OPENERS:
+        n = len(opener)
+        if tuple(lowered[:n]) != opener or len(rest) <= n:
+            continue
+        said = rest[n:]
+        tail = [  # 'to a matte finish': the noun after a describing word ('a high shine' keeps it)
+            w.span
+            for w in said[-1:]
+            if w.text.lower() in RESULT_NOUNS and len(said) > 1 and any(c.tag == "ADJ" for c in said[-2].candidates)
+        ]
+        said = [_as_describing(w) for w in said[: len(said) - len(tail)]]
+        return said, [w.span for w in rest[:n]] + tail
+    return rest, []
+
+
+def _as_describing(word: Tagged) -> Tagged:
+    """A result word read as a describing word where it may be one ('a mirror': the finish, not the object)."""
+    describing = tuple(c for c in word.candidates if c.tag != "NOUN")
+    return Tagged(word.text, word.span, describing) if describing and len(describing) < len(word.candidates) else word
 
 
 def _participle(word: Tagged, tag: Callable[[str], Tagged | None] | None) -> Tagged | None:

@@ -38,3 +38,16 @@ def written_span(words: Sequence[Tagged]) -> Span:
     words that imply it (its `implied_by`), so a note never points inside a word."""
     first, last = words[0], words[-1]
     return (first.implied_by or first.span).to(last.implied_by or last.span)
+
+
+def written_text(words: Sequence[Tagged]) -> str:
+    """The words as the user wrote them: parts read from one word ('darkest' = 'intensely' on 'est',
+    'dark' on 'dark') are put back together in their places, words apart are joined by a space."""
+    out: list[str] = []
+    end = None
+    for word in sorted(words, key=lambda w: w.span.start):
+        if end is not None and word.span.start != end:  # apart, or a word implied inside another
+            out.append(" ")
+        out.append(word.text)
+        end = word.span.end
+    return "".join(out)

@@ -21,7 +21,7 @@ from .lexicon import CATEGORY_TAGS, Lexicon
 from .measures import without_measures
 from .politeness import without_politeness
 from .suggest import allowed_edits, teaching
-from .tagged import Candidate, Tagged
+from .tagged import Candidate, Tagged, written_text
 
 __all__ = ["fit_unknown_words", "teach_syntax_error", "wordnet_kinds"]
 
@@ -147,7 +147,7 @@ def _no_noun(diag: Diagnostic, words: Sequence[Tagged], main: list[Tagged], lexi
     a colour, its WordNet kind first). A 'with' clause after it stays in the offer."""
     if not main:
         return None
-    last, written = main[-1], " ".join(w.text for w in main)
+    last, written = main[-1], written_text(main)
     tail = "".join(f" {w.text}" for w in words[words.index(main[-1]) + 1 :])
     for reading in sorted(last.candidates, key=lambda c: ROLE_ORDER.get(c.tag, len(ROLE_ORDER))):
         role = teaching()["roles"].get(reading.category)

@@ -458,11 +458,11 @@ class WordFormation:
     ) -> Reading:
         """The stem's reading; an adjective under a suffix with an adverb ('roughish') is qualified by it."""
         adverb = rule["adverb"]
-        if not adverb or found[0].tag != "ADJ":
+        if not adverb or found[0].tag not in ("ADJ", "SHADE"):
             return _whole(found, f"read '{word}' as '{base}' ({rule['doc']})")
         parts = (  # the adverb first for the grammar; each part keeps its own place in the word
             Part(0, 0, len(stem), None, self._adverb(adverb)),
-            Part(0, 0, 0, len(stem), self._kept(found, ("ADJ",))),
+            Part(0, 0, 0, len(stem), self._kept(found, (found[0].tag,))),
         )
         return Reading(parts, 1, f"read '{word}' as '{adverb} {found[0].key}' ({rule['doc']})")
 

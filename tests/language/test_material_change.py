@@ -66,7 +66,7 @@ def test_a_change_to_a_material_as_the_first_line_is_that_material():
     assert result.ok and result.materials[0]["params"] == compiled("brass")["params"]
 
 
-@pytest.mark.parametrize("line", ["tone it down", "make it zorbly", "switch to flimflam"])
+@pytest.mark.parametrize("line", ["frob it down", "make it zorbly", "switch to flimflam"])
 def test_a_change_line_with_an_unknown_word_is_an_unknown_word_not_a_crash(line):
     result = api.compile_source(f"glossy red plastic\n{line}\n", "t.cnl", LEX)
     assert [d.code for d in result.diagnostics if d.is_error] == ["E001"]

@@ -1,0 +1,165 @@
+"""Refinement lines said the way people talk (issue #14): verb-and-'it' idioms ('tone it down',
+'warm it up'), an idiom that only echoes the other part of its line ('too glossy, can we knock it
+back'), a complaint made by a degree word ("it's a bit dark"), requests ('can we go …', 'can you do
+it in …'), 'same again but …', what a verb brings it to ('sand it to a matte finish'), a likeness of
+a state ("like it's just been rained on"), 'all the' in a removal and place words read past.
+
+The phrases are not the ones of the held-out sets: each category is tested on words of its own.
+"""
+
+import pytest
+
+from cnlmc.api import Session, refined
+from cnlmc.colour import linear_to_oklab
+
+
+def oklch(material):
+    lab = linear_to_oklab(material["params"]["base_color"])
+    return lab[0], (lab[1] ** 2 + lab[2] ** 2) ** 0.5
+
+
+def refine(first, *lines):
+    session = Session(first)
+    before = session.result.ir["materials"][-1]
+    for line in lines:
+        session.refine(line)
+    result = session.result
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert not [d for d in result.diagnostics if d.code.startswith("E")]
+    return before, result.ir["materials"][-1], result
+
+
+@pytest.mark.parametrize("line", ["tone it down", "tone it down a little", "can we tame it", "dial it down a touch"])
+def test_an_idiom_alone_is_its_comparative(line):
+    before, after, _ = refine("bright orange plastic", line)
+    assert oklch(after)[1] < oklch(before)[1]
+    assert after["params"]["roughness"] == before["params"]["roughness"]
+
+
+@pytest.mark.parametrize(
+    "line,key,sign",
+    [("warm it up", "hue", None), ("dull it down", "roughness", 1), ("lighten it up a bit", "lightness", 1)],
+)
+def test_idioms_name_their_direction(line, key, sign):
+    before, after, _ = refine("slate blue paint", line)
+    if key == "roughness":
+        assert (after["params"]["roughness"] - before["params"]["roughness"]) * sign > 0
+    elif key == "lightness":
+        assert (oklch(after)[0] - oklch(before)[0]) * sign > 0
+    else:
+        assert after["params"]["base_color"] != before["params"]["base_color"]
+
+
+def test_an_idiom_beside_a_complaint_only_echoes_it():
+    """'way too glossy, could we knock it back': the complaint says what; the idiom adds no greying."""
+    before, after, result = refine("dark teal gloss paint", "way too glossy, could we knock it back a bit")
+    assert after["params"]["roughness"] > before["params"]["roughness"]
+    assert after["params"]["base_color"] == before["params"]["base_color"]
+    assert any("read past" in d.message and "knock it back" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize("line", ["it's a bit dark", "that's rather dark", "it looks kind of dark"])
+def test_a_degree_after_an_opener_is_a_complaint(line):
+    before, after, _ = refine("forest green velvet", line)
+    assert oklch(after)[0] > oklch(before)[0]
+
+
+def test_a_loud_colour_is_a_vivid_one_and_a_complaint_about_it_mutes_it():
+    before, after, _ = refine("lime green plastic", "that's a bit garish, tone it down")
+    assert oklch(after)[1] < oklch(before)[1]
+
+
+def test_a_report_of_a_comparative_is_no_complaint(stdlib):
+    """ "it's a bit darker now" reports a comparative: it is not rewritten as 'a bit less darker'."""
+    text, _ = refined("red plastic", "it's a bit darker now", stdlib, "t")
+    assert text.splitlines()[-1] == "it's a bit darker now"
+
+
+@pytest.mark.parametrize(
+    "line",
+    [
+        "can we go a touch lighter",
+        "could we go lighter",
+        "shall we go lighter",
+        "lighter though",
+        "lighter then, please",
+    ],
+)
+def test_requests_and_fillers_around_a_comparative(line):
+    before, after, _ = refine("walnut", line)
+    assert oklch(after)[0] > oklch(before)[0]
+
+
+@pytest.mark.parametrize(
+    "line",
+    [
+        "same again but in pale blue",
+        "same again, but pale blue",
+        "can you do it in pale blue",
+        "go back to the pale blue",
+    ],
+)
+def test_change_requests_take_the_new_colour(line):
+    _, after, _ = refine("matte white ceramic", line)
+    expected = Session("matte pale blue ceramic").result.ir["materials"][-1]
+    assert after["params"]["base_color"] == expected["params"]["base_color"]
+    assert after["params"]["roughness"] == expected["params"]["roughness"]
+
+
+@pytest.mark.parametrize(
+    "line,expected",
+    [
+        ("sand it to a matte finish", "matte sanded oak"),
+        ("polish it up to a mirror", "mirror polished oak"),
+        ("polish it to a high shine", "highly polished oak"),
+    ],
+)
+def test_what_a_verb_brings_it_to_is_its_result(line, expected):
+    _, after, _ = refine("oak", line)
+    want = Session(expected).result.ir["materials"][-1]
+    assert abs(after["params"]["roughness"] - want["params"]["roughness"]) < 0.05
+
+
+@pytest.mark.parametrize("line", ["like it's just been rained on", "as if it had been rained on", "rained on"])
+def test_a_likeness_of_a_state_is_that_state(line):
+    before, after, _ = refine("concrete", line)
+    assert oklch(after)[0] < oklch(before)[0]
+    assert after["params"]["roughness"] < before["params"].get("roughness", 1.0)  # diffuse: fully rough
+
+
+@pytest.mark.parametrize(
+    "line", ["clean off all the scratches", "get rid of all the scratches", "remove any scratches"]
+)
+def test_all_the_in_a_removal(line):
+    _, after, _ = refine("scratched chrome", line)
+    assert after["maps"] == Session("chrome").result.ir["materials"][-1]["maps"]
+
+
+@pytest.mark.parametrize(
+    "line", ["add some scratches all over", "add a few scratches to the surface", "add scratches overall"]
+)
+def test_place_words_after_a_clause_are_read_past(line):
+    _, after, result = refine("polished brass", line)
+    assert after["maps"], "the scratches are drawn"
+    assert any("read past" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    "phrase,plain,name,key,sign",
+    [
+        ("the darkest navy you can do", "dark navy", "darkest_navy_paint", "lightness", -1),
+        ("palest pink linen", "pale pink linen", "palest_pink_linen", "lightness", 1),
+        ("the shiniest chrome possible", "shiny chrome", "shiniest_chrome", "roughness", -1),
+    ],
+)
+def test_a_superlative_is_its_word_at_full_strength(compile_text, phrase, plain, name, key, sign):
+    """'-est' reads as 'intensely' on the word (further than the word alone); the default name
+    keeps the word as written."""
+    got, want = compile_text(phrase), compile_text(plain)
+    assert got.ok, [d.message for d in got.diagnostics]
+    g, w = got.ir["materials"][0], want.ir["materials"][0]
+    if key == "lightness":
+        assert (oklch(g)[0] - oklch(w)[0]) * sign > 0
+    else:
+        assert (g["params"]["roughness"] - w["params"]["roughness"]) * sign > 0
+    assert g["name"] == name
