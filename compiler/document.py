@@ -14,6 +14,7 @@ from .line_parts import PART_MARKS, by_parts
 from .lines import iter_lines
 from .on_clause import likeness_dropped, on_material
 from .parser import ParseFailure, describe_expected, parse_line_shape, parsed_item
+from .relative_clause import relative_material
 from .removal import removal_line
 from .shape_store import save_shapes
 from .spans import Span
@@ -184,7 +185,11 @@ def _failed_line(
 def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, list[Diagnostic]] | None:
     """The line read whole another way, with its notes: a clause on its material ('rust on steel':
     cnlmc.on_clause), or a refinement of comma parts ('deeper, more of a burgundy')."""
-    placed = on_material(words, text, lexicon) or likeness_dropped(words, text, lexicon)
+    placed = (
+        on_material(words, text, lexicon)
+        or likeness_dropped(words, text, lexicon)
+        or relative_material(words, text, lexicon)
+    )
     if placed is not None:
         return placed[0], [placed[1]]
     return _by_parts(words, text, lexicon)

@@ -447,13 +447,16 @@ class Joiner:
         rest = out[n + 1 :]
         if (rest and not of_tag(rest[0], "WITH")) or any(of_tag(t, "FEATURE") and t.text == key for t in rest):
             return
-        at, col = noun.span.end, noun.span.col + noun.span.end - noun.span.start
-        inside = min(noun.span.start + 1, noun.span.end - 1)
+        coloured = _in_colour_length(rest)  # 'tiles in deep green': the clause goes after the colour
+        after = rest[coloured - 1] if coloured else noun
+        n, rest = n + coloured, rest[coloured:]
+        at, col = after.span.end, after.span.col + after.span.end - after.span.start
+        inside = min(after.span.start + 1, after.span.end - 1)
         clause = [
-            Tagged("with", Span(at, at, noun.span.line, col), _WITH, implied_by=thing.span),
+            Tagged("with", Span(at, at, after.span.line, col), _WITH, implied_by=thing.span),
             Tagged(
                 key,
-                Span(inside, inside, noun.span.line, noun.span.col + inside - noun.span.start),
+                Span(inside, inside, after.span.line, after.span.col + inside - after.span.start),
                 (Candidate("FEATURE", key, "features"),),
                 implied_by=thing.span,
             ),
@@ -913,3 +916,17 @@ def _ends_noun(tagged: list[Tagged], k: int, out: list[Tagged]) -> bool:
     """Whether a head word at k ends the line after its noun ('brushed steel look': the noun holds
     it); after a comma the word before it describes ('brass, satin finish': the adjective)."""
     return k + 1 == len(tagged) and not (len(out) > 1 and of_tag(out[-2], "COMMA"))
+
+
+def _in_colour_length(rest: list[Tagged]) -> int:
+    """How many words after the noun say its colour with 'in' ('in deep green', 'in a soft grey'):
+    the 'with' word, an article, shades, adverbs and colours up to the end or the next 'with'; 0
+    when the words after it are anything else."""
+    if not rest or not of_tag(rest[0], "WITH"):
+        return 0
+    j = 1 + (len(rest) > 1 and bool(of_tag(rest[1], "ARTICLE")))
+    start = j
+    while j < len(rest) and any(of_tag(rest[j], tag) for tag in ("COLOR", "SHADE", "ADV")):
+        j += 1
+    ends = j == len(rest) or of_tag(rest[j], "WITH")
+    return j if ends and j > start and any(of_tag(t, "COLOR") for t in rest[start:j]) else 0

@@ -59,7 +59,7 @@ def _measure_runs(words: Sequence[Tagged], units: frozenset[str]) -> list[tuple[
         end = k + 1
         while end < len(words) and _continues(words[end].text, units):
             end += 1
-        if end == k + 1:  # a bare number ('50% rusty') is not a measure: it keeps its error
+        if end == k + 1 and not _grade(words, k):  # a bare number ('50% rusty') is not a measure: it keeps its error
             k += 1
             continue
         start = k
@@ -70,6 +70,20 @@ def _measure_runs(words: Sequence[Tagged], units: frozenset[str]) -> list[tuple[
         runs.append((start, end))
         k = end
     return runs if len(runs) and _leaves_words(words, runs) else []
+
+
+def _grade(words: Sequence[Tagged], k: int) -> bool:
+    """'316 stainless', '6061 aluminium': a number of three or four digits right before a material
+    noun is its alloy or product grade (read past like a size)."""
+    text = words[k].text
+    nxt = words[k + 1] if k + 1 < len(words) else None
+    return (
+        text.isdigit()
+        and 3 <= len(text) <= 4
+        and nxt is not None
+        and any(c.tag == "NOUN" for c in nxt.candidates)
+        and not nxt.unknown
+    )
 
 
 def _continues(text: str, units: frozenset[str]) -> bool:

@@ -14,7 +14,7 @@ from .lexicon import Lexicon
 from .parser import parsed_item, parsed_material
 from .spans import Span
 from .suggest import teaching
-from .tagged import NOTE_CODE, Candidate, Tagged, written_span
+from .tagged import NOTE_CODE, Candidate, Tagged, written_span, written_text
 
 __all__ = ["likeness_dropped", "on_material"]
 
@@ -85,12 +85,30 @@ def likeness_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tu
         return None
     material = parsed_material(before, text, lexicon.caches.shapes)
     if material is None:
-        return None
+        return _described_likeness(words, before, line_start + found.end(), text, lexicon)
     said = text[found.start() + 1 :].strip()
     note = f"read past '{said}': a likeness to a thing, after the material it names"
     start = line_start + found.start() + 1 + (len(text[found.start() + 1 :]) - len(text[found.start() + 1 :].lstrip()))
     span = Span(start, line_start + len(text.rstrip()), words[0].span.line, start - line_start + 1)
     return material, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)
+
+
+def _described_likeness(
+    words: Sequence[Tagged], before: Sequence[Tagged], end: int, text: str, lexicon: Lexicon
+) -> tuple[ast.Material, Diagnostic] | None:
+    """'something warm, like a honey-coloured oak': describing words, then the likeness names the
+    material: the material with the describing words before it ('warm honey-coloured oak')."""
+    after = [w for w in words if w.span.start >= end and w.text[:1].isalnum()]
+    said = [w for w in before if w.text[:1].isalnum()]
+    describing = ("ADJ", "COLOR", "SHADE", "ADV")
+    if not after or not all(any(c.tag in describing for c in w.candidates) for w in said):
+        return None
+    material = parsed_material([*said, *after], text, lexicon.caches.shapes)
+    if material is None:
+        return None
+    reading = f"{written_text(said)} {written_text(after)}"
+    note = f"read '{text.strip()}' as '{reading}': the likeness names the material, the words before it describe it"
+    return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
 
 
 def _pattern(phrases: list[str]) -> str:

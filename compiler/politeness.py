@@ -45,6 +45,9 @@ def without_politeness(
                 if taken:
                     rewritten, kept = kept[:taken], kept[taken:]
                     said = " ".join(w.text.lower() for w in rewritten if w.text[:1].isalnum())
+                    if said in table["towards"]:  # 'more like charcoal than black': what it is not, read past
+                        kept, other = _without_other_side(kept)
+                        dropped += [other] if other else []
                     towards_a_material = said in table["towards"] and _ends_in_a_noun(kept)
                     put = _rewritten(rewritten, rewrites[said], tag) if not towards_a_material else []
                     dropped.append(rewritten)
@@ -97,6 +100,15 @@ def _idiom(
         put = _rewritten(kept[:n], idioms[" ".join(lowered[:n])], tag)
         return (kept[:n], put, rest) if put else None
     return None
+
+
+def _without_other_side(kept: list[Tagged]) -> tuple[list[Tagged], list[Tagged]]:
+    """'charcoal than black' after 'more like': the words before 'than', and 'than' with the rest
+    (the colour or material it is compared with, which says only what it is not)."""
+    at = next((i for i, w in enumerate(kept) if w.text.lower() == "than"), None)
+    if at is None or at == 0:
+        return kept, []
+    return kept[:at], kept[at:]
 
 
 def _ends_in_a_noun(words: Sequence[Tagged]) -> bool:

@@ -1,0 +1,96 @@
+"""Lines whose material is said around other words (issue #14): a relative clause after the
+material ('pine that has weathered over time'), describing words then a likeness that names the
+material ('something pale, like ash'), a comparison's other side ('more like slate than
+charcoal'), 'something' before describing words, an alloy grade before a metal ('316 stainless'),
+a colour said with 'in' after laid tiles, and 'without any' as a negation.
+
+The phrases are not the ones of the held-out sets: each category is tested on words of its own.
+"""
+
+import pytest
+
+
+def material(result):
+    assert result.ok, [d.message for d in result.diagnostics]
+    return result.ir["materials"][-1]
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as",
+    [
+        ("pine that has weathered over time", "weathered pine"),
+        ("brass that's gone dull", "dull brass"),
+        ("oak that has been limed", "limed oak"),
+        ("walnut that has darkened with age", "darkened walnut"),
+        ("marble which is polished", "polished marble"),
+    ],
+)
+def test_a_relative_clause_describes_the_material_before_it(compile_text, phrase, same_as):
+    result = compile_text(phrase)
+    got, want = material(result), material(compile_text(same_as))
+    assert (got["params"], got["maps"], got["model"]) == (want["params"], want["maps"], want["model"])
+    assert any("describes it" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as",
+    [
+        ("something pale, like ash", "pale ash"),
+        ("something cool, like slate", "cool slate"),
+        ("glossy, like a walnut", "glossy walnut"),
+    ],
+)
+def test_describing_words_then_a_likeness_name_that_material(compile_text, phrase, same_as):
+    got, want = material(compile_text(phrase)), material(compile_text(same_as))
+    assert got["params"] == want["params"] and got["maps"] == want["maps"]
+
+
+def test_a_likeness_after_a_material_is_still_read_past(compile_text):
+    got = material(compile_text("copper, like an old kettle"))
+    assert got["params"] == material(compile_text("copper"))["params"]
+
+
+@pytest.mark.parametrize(
+    "above,line,same_as",
+    [
+        (None, "more like slate than charcoal", "slate"),
+        ("pale oak", "more like walnut than teak", "pale oak\nmore like walnut"),
+    ],
+)
+def test_the_other_side_of_a_comparison_is_read_past(compile_text, above, line, same_as):
+    text = f"{above}\n{line}" if above else line
+    got, want = material(compile_text(text)), material(compile_text(same_as))
+    assert got["params"] == want["params"]
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as", [("something dark and matte", "dark matte paint"), ("something warm", "warm paint")]
+)
+def test_something_before_describing_words_is_read_past(compile_text, phrase, same_as):
+    assert material(compile_text(phrase))["params"] == material(compile_text(same_as))["params"]
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as", [("mirror-polished 316 stainless", "mirror-polished stainless"), ("7075 aluminium", "aluminium")]
+)
+def test_an_alloy_grade_before_a_metal_is_read_past(compile_text, phrase, same_as):
+    result = compile_text(phrase)
+    assert material(result)["params"] == material(compile_text(same_as))["params"]
+    assert any("grade" in d.message for d in result.diagnostics)
+
+
+def test_a_bare_number_elsewhere_keeps_its_error(compile_text):
+    assert not compile_text("50 oak").ok
+
+
+@pytest.mark.parametrize("phrase,colour", [("tiles in a pale blue", "pale blue"), ("subway tiles in sage", "sage")])
+def test_laid_tiles_take_a_colour_said_with_in(compile_text, phrase, colour):
+    got = material(compile_text(phrase))
+    assert got["params"]["base_color"] == material(compile_text(f"{colour} tiles"))["params"]["base_color"]
+    assert got["maps"], "the grout is still drawn"
+
+
+@pytest.mark.parametrize("phrase", ["without any shine", "no shine whatsoever"])
+def test_without_any_is_a_negation(compile_text, phrase):
+    got = material(compile_text(phrase))
+    assert got["params"]["roughness"] > material(compile_text("paint"))["params"]["roughness"]

@@ -1,0 +1,77 @@
+"""Trade and everyday words for materials (issue #14, session 14): each word is checked by what it
+looks like (its apparent colour's OKLCh family, lightness and gloss), not only that it compiles.
+
+The phrases are not the ones of the held-out sets: each word is tested in a phrase of its own."""
+
+import math
+
+import pytest
+
+from cnlmc.colour import linear_to_oklab
+
+
+def material(result):
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert not [d for d in result.diagnostics if d.severity.name == "WARNING"]
+    return result.ir["materials"][-1]
+
+
+def lch(colour):
+    L, a, b = linear_to_oklab(colour)
+    return L, math.hypot(a, b), math.degrees(math.atan2(b, a)) % 360
+
+
+@pytest.mark.parametrize(
+    "phrase,hue_range,lightness_range",
+    [
+        ("oiled pearwood", (20, 75), (0.5, 0.8)),  # a pinkish light brown, not the fruit's green
+        ("hinoki wood", (50, 95), (0.7, 0.95)),  # pale lemony cream
+        ("weathered bath stone", (50, 95), (0.6, 0.9)),  # honey limestone
+        ("a London stock brick", (45, 95), (0.45, 0.8)),  # yellow-buff, not red
+        ("egg yolk paint", (45, 85), (0.65, 0.95)),  # deep orange-yellow
+    ],
+)
+def test_named_materials_and_colours_have_their_colour(compile_text, phrase, hue_range, lightness_range):
+    L, C, h = lch(material(compile_text(phrase))["params"]["base_color"])
+    assert C > 0.03 and hue_range[0] <= h <= hue_range[1], (phrase, h)
+    assert lightness_range[0] <= L <= lightness_range[1], (phrase, L)
+
+
+@pytest.mark.parametrize("phrase", ["oyster silk", "glacier white acrylic", "arctic white paint"])
+def test_pale_trade_whites_are_near_white(compile_text, phrase):
+    L, C, _ = lch(material(compile_text(phrase))["params"]["base_color"])
+    assert L > 0.85 and C < 0.03
+
+
+@pytest.mark.parametrize("phrase", ["a bone china cup", "blue delftware", "majolica"])
+def test_glazed_ceramics_are_glossy(compile_text, phrase):
+    assert material(compile_text(phrase))["params"]["roughness"] <= 0.1
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as",
+    [
+        ("ivory dupion", "ivory dupioni"),
+        ("grey EPDM membrane", "grey rubber"),
+        ("chunky yarn", "wool"),
+        ("silver tri-coat", "silver car paint"),
+        ("french-polished mahogany", "varnished mahogany"),
+        ("a gin and tonic", "vodka"),
+        ("oak with a whitewash finish", "whitewashed oak"),
+    ],
+)
+def test_trade_names_mean_their_material(compile_text, phrase, same_as):
+    got, want = material(compile_text(phrase)), material(compile_text(same_as))
+    assert (got["model"], got["params"]) == (want["model"], want["params"])
+
+
+def test_a_fiddleback_figure_is_bolder_grain(compile_text):
+    plain = material(compile_text("sycamore"))["maps"]["base_color"]["params"]
+    figured = material(compile_text("fiddleback sycamore"))["maps"]["base_color"]["params"]
+    assert figured["contrast"] > plain.get("contrast", 1.0) and figured["ring_scale"] > plain.get("ring_scale", 1.0)
+
+
+def test_calacatta_viola_has_violet_veins(compile_text):
+    veins = material(compile_text("calacatta viola marble"))["maps"]["base_color"]["params"]
+    L, C, h = lch([veins["color_r"], veins["color_g"], veins["color_b"]])
+    assert veins["color_amount"] > 0.5 and (h > 330 or h < 20) and C > 0.05
