@@ -27,6 +27,7 @@ Colour science used here (implemented below, no dependency):
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 import math
 import re
@@ -234,13 +235,48 @@ def hue_family(rgb: Sequence[float]) -> str:
     return "pink" if L >= 0.55 else "purple"
 
 
-def apparent_colour(m: Mapping[str, Any]) -> RGB:
-    """The colour a person sees: base_color, times the measured F0 for a conductor (its tint)."""
+def apparent_colour(m: Mapping[str, Any], mixture: bool = False) -> RGB:
+    """The colour a person sees: base_color, times the measured F0 for a conductor (its tint),
+    times a coat's round-trip transmittance tint (params.coat.color: a black lacquer is black). A
+    layer drawn over the surface by a mask (rust, patina) is named when it covers most of it: the
+    mean colour of the layer (its baked colour weighted by the mask, MASK_TEXELS² texels) when the
+    mask's mean is at least LAYER_NAMED (clearly most of the surface; at half and half either may be
+    named), else the surface's own colour. (Not the mean of the two: green patina over pink copper
+    averages to a grey no one sees.) `mixture`: the mean of the two instead, for telling whether a
+    colour changed at all (a patina over half the surface changes the hue a person sees)."""
     p = m["params"]
     base = [float(c) for c in p.get("base_color", (1.0, 1.0, 1.0))]
     if m["model"]["base"] == "conductor" and p.get("f0"):
         base = [b * float(f) for b, f in zip(base, p["f0"])]
+    coat = p.get("coat") or {}
+    if coat.get("color"):  # a tinted coat: the light crosses it on the way in and out (its round-trip tint)
+        base = [b * float(c) for b, c in zip(base, coat["color"])]
+    maps = m.get("maps") or {}
+    if "mask" in maps and "base_color" in maps:
+        base = _masked_mean(json.dumps(maps, sort_keys=True), tuple(base), mixture)
     return (min(base[0], 1.0), min(base[1], 1.0), min(base[2], 1.0))
+
+
+MASK_TEXELS = 64
+LAYER_NAMED = 0.6
+
+
+@functools.lru_cache(maxsize=256)
+def _masked_mean(maps_json: str, own: tuple[float, ...], mixture: bool) -> list[float]:
+    """The colour of a masked layer over a surface of colour `own` (see apparent_colour)."""
+    import numpy as np
+
+    from cnlmc.backends.maps.bake import bake
+
+    baked = bake(json.loads(maps_json), size=MASK_TEXELS)
+    mask = baked["mask"].reshape(-1)
+    if mixture:
+        seen = mask[:, None] * baked["base_color"].reshape(-1, 3) + (1.0 - mask[:, None]) * np.asarray(own)
+        return [float(c) for c in seen.mean(axis=0)]
+    if float(mask.mean()) < LAYER_NAMED:
+        return list(own)
+    layer = (mask[:, None] * baked["base_color"].reshape(-1, 3)).sum(axis=0) / float(mask.sum())
+    return [float(c) for c in np.asarray(layer)]
 
 
 def effective_roughness(m: Mapping[str, Any]) -> float:
@@ -387,7 +423,7 @@ HUE_CHROMA = 0.005
 
 def hue_direction(before: Mapping[str, Any], after: Mapping[str, Any]) -> str:
     """'changed' or 'same' for the apparent colour's hue (angles compared around the circle)."""
-    (_, c0, h0), (_, c1, h1) = oklch(apparent_colour(before)), oklch(apparent_colour(after))
+    (_, c0, h0), (_, c1, h1) = oklch(apparent_colour(before, True)), oklch(apparent_colour(after, True))
     if min(c0, c1) < HUE_CHROMA:
         a0, b0 = c0 * math.cos(math.radians(h0)), c0 * math.sin(math.radians(h0))
         a1, b1 = c1 * math.cos(math.radians(h1)), c1 * math.sin(math.radians(h1))

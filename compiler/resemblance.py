@@ -115,6 +115,11 @@ class Resemblance:
         """The colour name (lexicon colours) nearest in OKLab; one word names preferred on a tie."""
         if self.names is None:
             colours = self.lexicon.all_of("colours")
-            self.names = [(k, linear_to_oklab(e.get("rgb"))) for k, e in colours.items() if e.get("rgb") is not None]
+            skipped = frozenset(self.rules["not_nearest"])  # trade names: 'chalky' is not 'glacier'
+            self.names = [
+                (k, linear_to_oklab(e.get("rgb")))
+                for k, e in colours.items()
+                if e.get("rgb") is not None and k not in skipped
+            ]
         lab = linear_to_oklab(rgb)
         return min(self.names, key=lambda n: (sum((p - q) ** 2 for p, q in zip(lab, n[1])), n[0].count(" ")))[0]

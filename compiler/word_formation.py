@@ -653,6 +653,7 @@ def _merged_resemblance(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:
             "like_heads",
             "finish_heads",
             "surface_classes",
+            "not_nearest",
         )
     }
     merged["surface"] = next((layer["surface"] for layer in layers if layer["surface"]), [])

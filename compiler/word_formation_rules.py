@@ -74,6 +74,7 @@ def empty_rules() -> dict[str, Any]:
             "surface_classes": [],
             "surface": [],
             "finish_adjectives": {},
+            "not_nearest": [],
         },
     }
 
@@ -185,7 +186,15 @@ def _resemblance(c: Checker, raw: object) -> dict[str, Any]:
     table = c.table(raw, path)
     out: dict[str, Any] = dict(empty_rules()["resemblance"])
     c.known_keys(table, tuple(out), path)
-    for name in ("forms", "colour_forms", "colour_heads", "like_heads", "finish_heads", "surface_classes"):
+    for name in (
+        "forms",
+        "colour_forms",
+        "colour_heads",
+        "like_heads",
+        "finish_heads",
+        "surface_classes",
+        "not_nearest",
+    ):
         out[name] = _words(c, table.get(name, []), (*path, name))
     out["endings"] = _words(c, table.get("endings", []), (*path, "endings"), blank=True)
     ladder = []

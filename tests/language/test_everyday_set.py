@@ -366,3 +366,43 @@ def test_wordnet_aliases_know_the_examples_of_the_issue(wordnet):
     assert nouns["linen"]["root"] == "fabric"
     assert "lustrous" in adjectives["shiny"]["synonyms"] and "dull" in adjectives["shiny"]["antonyms"]
     assert "smooth" in adjectives["rough"]["antonyms"]
+
+
+def _material(base, params=None, maps=None):
+    return {"model": {"base": base}, "params": params or {}, "maps": maps or {}}
+
+
+def test_hue_direction_needs_a_visible_turn():
+    """A step in chroma alone moves the hue angle by rounding only: 'same'; a grey that gains a tint
+    and a turn of more than a degree: 'changed'."""
+    red = _material("dielectric", {"base_color": [0.6, 0.05, 0.03]})
+    duller = _material("dielectric", {"base_color": [0.45, 0.06, 0.045]})
+    assert ev.hue_direction(red, red) == "same"
+    grey, beige = (
+        _material("diffuse", {"base_color": [0.8, 0.8, 0.8]}),
+        _material("diffuse", {"base_color": [0.8, 0.75, 0.6]}),
+    )
+    assert ev.hue_direction(grey, beige) == "changed"
+    orange = _material("dielectric", {"base_color": [0.6, 0.2, 0.03]})
+    assert ev.hue_direction(red, orange) == "changed"
+    L0, C0, h0 = ev.oklch(ev.apparent_colour(red))
+    L1, C1, h1 = ev.oklch(ev.apparent_colour(duller))
+    assert (ev.hue_direction(red, duller) == "same") == (abs(h1 - h0) <= ev.HUE_STEP_DEGREES)
+
+
+def test_a_layer_covering_most_of_the_surface_is_its_colour(compile_text):
+    """'patinated copper' (a mask over 0.75 of the surface) is named by its verdigris; 'lightly
+    patinated copper' by the copper; the mixture of the two differs from the bare metal."""
+    covered = compile_text("patinated copper").ir["materials"][0]
+    light = compile_text("lightly patinated copper").ir["materials"][0]
+    bare = compile_text("copper").ir["materials"][0]
+    assert ev.hue_family(ev.apparent_colour(covered)) in ("green", "cyan")
+    assert ev.hue_family(ev.apparent_colour(light)) == ev.hue_family(ev.apparent_colour(bare))
+    assert ev.hue_direction(bare, light) == "changed"
+
+
+def test_a_tinted_coat_tints_the_apparent_colour(compile_text):
+    """'black lacquered wood' is black to the eye: the coat's round-trip tint times the base."""
+    black = compile_text("black lacquered wood").ir["materials"][0]
+    clear = compile_text("lacquered wood").ir["materials"][0]
+    assert ev.oklch(ev.apparent_colour(black))[0] < 0.05 < ev.oklch(ev.apparent_colour(clear))[0]
