@@ -69,6 +69,7 @@ class Joiner:
             tagged = self._made_of(tagged, diags)
         out: list[Tagged] = []
         formed: list[tuple[Tagged, Tagged]] = []  # (the joined noun, its object word): 'marble tiles'
+        looks: list[tuple[Tagged, str, Tagged]] = []  # (the noun, the feature, the look word): 'marble-effect'
         for k, word in enumerate(tagged):
             before = out[-1] if out else None
             if word.unknown and self._names_use(word, tagged[k + 1 :], diags):  # "guitar varnish", "boat paint"
@@ -104,8 +105,7 @@ class Joiner:
                 reading = f"'{nouns[0].key}' (made of {before.text}: the first noun says what the second is made of)"
                 out[-1] = self._join(before, word, nouns, reading, diags)
             elif before is not None and nouns and of_tag(before, "NOUN") and self._is_look(before):
-                look = f"the look of {of_tag(before, 'NOUN')[0].key} is not drawn on it"
-                out[-1] = self._join(before, word, nouns, f"'{nouns[0].key}' ({look})", diags)
+                out[-1:] = self._look_of(before, word, tagged, looks, diags)
             elif of_tag(word, "OBJECT"):
                 if k + 1 < len(tagged) and of_tag(tagged[k + 1], "NOUN"):
                     out.append(word)  # "roof tiles": joined to the noun next
@@ -127,6 +127,8 @@ class Joiner:
                 out.append(word)
         for noun, thing in formed:
             self._form_feature(out, noun, thing, diags)
+        for noun, key, look in looks:
+            self._feature_clause(out, noun, key, look.span)
         if len(out) > 2 and self._is_coat_finish(out):
             self._coat_after(out, diags)
         elif len(out) > 2 and _layer_of(out, diags) and self._coat_alone(out) is not None:
@@ -443,30 +445,75 @@ class Joiner:
         key = entry.get("feature") if entry is not None else None
         if key is None or noun not in out or not of_tag(noun, "NOUN") or self._own_pattern(noun):
             return
+        if self._feature_clause(out, noun, key, thing.span):
+            note = f"read '{thing.text}' as laid {thing.text}: with {key}"
+            diags.append(Diagnostic(thing.span, Severity.NOTE, NOTE_CODE, note))
+
+    def _feature_clause(self, out: list[Tagged], noun: Tagged, key: str, implied_by: Span) -> bool:
+        """The feature clause 'with KEY' after the material noun, first among the clauses (after a
+        colour said with 'in'); False when the words after the noun are not clauses or name it."""
+        if noun not in out:
+            return False
         n = out.index(noun)
         rest = out[n + 1 :]
         if (rest and not of_tag(rest[0], "WITH")) or any(of_tag(t, "FEATURE") and t.text == key for t in rest):
-            return
+            return False
         coloured = _in_colour_length(rest)  # 'tiles in deep green': the clause goes after the colour
         after = rest[coloured - 1] if coloured else noun
         n, rest = n + coloured, rest[coloured:]
         at, col = after.span.end, after.span.col + after.span.end - after.span.start
         inside = min(after.span.start + 1, after.span.end - 1)
         clause = [
-            Tagged("with", Span(at, at, after.span.line, col), _WITH, implied_by=thing.span),
+            Tagged("with", Span(at, at, after.span.line, col), _WITH, implied_by=implied_by),
             Tagged(
                 key,
                 Span(inside, inside, after.span.line, after.span.col + inside - after.span.start),
                 (Candidate("FEATURE", key, "features"),),
-                implied_by=thing.span,
+                implied_by=implied_by,
             ),
         ]
         if rest:
             w = rest[0].span
-            clause.append(Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), _AND, implied_by=thing.span))
+            clause.append(Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), _AND, implied_by=implied_by))
         out[n + 1 : n + 1] = clause
-        note = f"read '{thing.text}' as laid {thing.text}: with {key}"
-        diags.append(Diagnostic(thing.span, Severity.NOTE, NOTE_CODE, note))
+        return True
+
+    def _look_of(
+        self,
+        look: Tagged,
+        noun: Tagged,
+        tagged: list[Tagged],
+        looks: list[tuple[Tagged, str, Tagged]],
+        diags: list[Diagnostic],
+    ) -> list[Tagged]:
+        """'marble-effect laminate', 'wood-look tiles': the noun, printed with the look of the other:
+        its colour (the nearest named colour, unless the line names one) and the feature that draws
+        its pattern (the feature whose map is the look's own graph: marble veins, wood grain),
+        each noted; the look's relief is not carried (a print is flat)."""
+        key = of_tag(look, "NOUN")[0].key
+        entry = self.lexicon.entry("nouns", key)
+        graph = ((entry.get("maps") or {}).get("base_color") or {}).get("graph") if entry is not None else None
+        feature = self._feature_drawing(graph) if graph else None
+        others = [t for t in tagged if t is not look and of_tag(t, "COLOR") and not of_tag(t, "NOUN")]
+        found = None if others else self.resemblance().colour(key)
+        out: list[Tagged] = [Tagged(look.text, look.span, (found[0],), look.unknown)] if found else []
+        made = Tagged(noun.text, noun.span, of_tag(noun, "NOUN"), noun.unknown)
+        if feature is not None:
+            looks.append((made, feature, look))
+        drawn = [f"its colour ({found[0].key})"] if found else []
+        drawn += [f"its {feature}"] if feature else []
+        said = " and ".join(drawn) if drawn else "nothing of it (no pattern or colour to lend)"
+        note = f"read '{look.text} {noun.text}' as {made.text} with the look of {key}: {said}"
+        diags.append(Diagnostic(look.span.to(noun.span), Severity.NOTE, NOTE_CODE, note))
+        return [*out, made]
+
+    def _feature_drawing(self, graph: str) -> str | None:
+        """The feature whose colour map is drawn by this graph ('marble' -> veins), or None."""
+        for key, entry in self.lexicon.all_of("features").items():
+            ref = (entry.get("maps") or {}).get("base_color") or {}
+            if ref.get("graph") == graph:
+                return key
+        return None
 
     def _own_pattern(self, noun: Tagged) -> bool:
         """Whether the material draws a colour pattern of its own (marble's veins, granite's grains):

@@ -75,3 +75,34 @@ def test_calacatta_viola_has_violet_veins(compile_text):
     veins = material(compile_text("calacatta viola marble"))["maps"]["base_color"]["params"]
     L, C, h = lch([veins["color_r"], veins["color_g"], veins["color_b"]])
     assert veins["color_amount"] > 0.5 and (h > 330 or h < 20) and C > 0.05
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as",
+    [
+        ("stone-built", "stone"),
+        ("stone-faced", "stone"),
+        ("a rust-stained steel plate", "rusty steel"),
+        ("anti-slip rubber", "textured rubber"),
+        ("Nordic-style limed ash", "limed ash"),
+        ("no sheen whatsoever", "matte"),
+        ("verde alpi", "serpentine"),
+    ],
+)
+def test_listing_words_mean_their_material(compile_text, phrase, same_as):
+    got, want = material(compile_text(phrase)), material(compile_text(same_as))
+    assert (got["model"], got["params"], got["maps"]) == (want["model"], want["params"], want["maps"])
+
+
+def test_an_undertone_is_a_tint(compile_text):
+    got = material(compile_text("grey with a cool undertone"))
+    assert got["params"] == material(compile_text("grey with a cool tint"))["params"]
+
+
+def test_delft_blue_is_a_deep_blue_and_rose_a_pale_pink_wine(compile_text):
+    L, C, h = lch(material(compile_text("delft blue tiles"))["params"]["base_color"])
+    assert 240 <= h <= 290 and L < 0.45
+    wine = material(compile_text("a glass of rosé"))
+    assert wine["model"]["base"] == "glass"
+    L, C, h = lch(wine["params"]["base_color"])
+    assert (h < 60 or h > 340) and L > 0.6

@@ -127,8 +127,8 @@ def test_un_before_an_unknown_word_stays_unknown(lexicon):
         ("beadboard wainscot", "pine", "material of the wainscot"),  # a building product names the material
         ("a bench in teak", "teak", "material of the bench"),  # 'in' after an object: its material
         ("steel door handle", "steel", "material of the"),
-        ("leather-look vinyl", "vinyl", "look of leather is not drawn"),
-        ("marble-effect porcelain", "porcelain", "look of marble is not drawn"),
+        ("leather-look vinyl", "tobacco vinyl", "with the look of leather: its colour"),
+        ("marble-effect porcelain", "bone porcelain with veins", "with the look of marble"),
         ("mirror-like chrome", "mirror chrome", "'mirror'"),
         ("gloss finish white paint", "glossy white paint", "'finish'"),
     ],

@@ -1,0 +1,33 @@
+"""A material printed with the look of another (issue #14): 'marble-effect laminate', 'wood-look
+vinyl'. The material keeps its own model and gloss; it takes the look's colour (the nearest named
+colour, unless the line names one) and the feature that draws the look's pattern (marble veins,
+wood grain), each said in a note."""
+
+import pytest
+
+
+def material(result):
+    assert result.ok, [d.message for d in result.diagnostics]
+    return result.ir["materials"][-1]
+
+
+@pytest.mark.parametrize("phrase,graph", [("marble-effect laminate", "marble"), ("oak-look vinyl", "wood")])
+def test_a_look_draws_the_pattern_of_its_noun(compile_text, phrase, graph):
+    result = compile_text(phrase)
+    got = material(result)
+    plain = material(compile_text(phrase.split()[-1]))
+    assert got["maps"]["base_color"]["graph"] == graph
+    assert got["model"] == plain["model"] and got["params"]["roughness"] == plain["params"]["roughness"]
+    assert any("with the look of" in d.message for d in result.diagnostics)
+
+
+def test_a_colour_the_line_names_wins_over_the_looks(compile_text):
+    got = material(compile_text("black marble-effect laminate"))
+    assert got["params"]["base_color"] == material(compile_text("black laminate"))["params"]["base_color"]
+    assert got["maps"]["base_color"]["graph"] == "marble"
+
+
+def test_a_look_without_a_pattern_lends_its_colour(compile_text):
+    got = material(compile_text("leather-look vinyl"))
+    assert got["maps"] == {}
+    assert got["params"]["base_color"] != material(compile_text("vinyl"))["params"]["base_color"]
