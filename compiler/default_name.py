@@ -45,8 +45,10 @@ def _as_written(words: list[ast.Word]) -> list[str]:
 def _parts_of_one_word(a: ast.Word, b: ast.Word) -> bool:
     """Whether two words are parts read from one written word: each spans its own letters (an
     implied word, 'with' or a noun no one typed, does not) and they touch."""
-    own = all(w.span.end - w.span.start == len(w.text) > 0 for w in (a, b))
-    return own and (b.span.start == a.span.end or b.span.end == a.span.start)
+    sa, sb = a.span, b.span
+    if sb.start != sa.end and sb.end != sa.start:  # the common case: words apart
+        return False
+    return sa.end - sa.start == len(a.text) > 0 and sb.end - sb.start == len(b.text) > 0
 
 
 def _clause_words(material: ast.Material) -> list[ast.Word]:

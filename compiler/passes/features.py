@@ -141,6 +141,9 @@ def _apply_finish(state: MaterialState, ctx: Context, clause: ast.Feature) -> No
         word = ast.Word(clause.word.text, own.key, "adjectives", clause.word.span)
         group = ast.Group("adjective", _adverbs_of(clause), (), (word,), clause.span)
         apply_adjective(state, ctx, own, group, clause_weight(clause, ctx), "base")
+        for said in clause.groups:  # 'white gloss': the colour is the surface's, the gloss is glossy
+            if said.colours:
+                apply_group(state, ctx, ast.Group("colour", (), said.colours, (), said.span), target="base")
         return
     for group in clause.groups:
         apply_group(state, ctx, group, target="base")
@@ -148,8 +151,9 @@ def _apply_finish(state: MaterialState, ctx: Context, clause: ast.Feature) -> No
 
 def _describes(clause: ast.Feature) -> bool:
     """Whether the clause has describing words of its own: they are the surface ('a satin polish' =
-    satin), else a finish word that is also an adjective is ('a high polish' = polished)."""
-    return any(g.adjectives or g.colours for g in clause.groups)
+    satin), else a finish word that is also an adjective is ('a high polish' = polished; a colour
+    beside it is the surface's colour: 'a white gloss' = white and glossy)."""
+    return any(g.adjectives for g in clause.groups)
 
 
 def _as_coat(state: MaterialState, ctx: Context, clause: ast.Feature) -> ast.Coat | None:

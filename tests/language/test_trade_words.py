@@ -106,3 +106,31 @@ def test_delft_blue_is_a_deep_blue_and_rose_a_pale_pink_wine(compile_text):
     assert wine["model"]["base"] == "glass"
     L, C, h = lch(wine["params"]["base_color"])
     assert (h < 60 or h > 340) and L > 0.6
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as", [("white gloss", "white glossy paint"), ("midnight blue gloss", "glossy midnight blue paint")]
+)
+def test_a_colour_then_gloss_is_glossy_paint_of_that_colour(compile_text, phrase, same_as):
+    got, want = material(compile_text(phrase)), material(compile_text(same_as))
+    assert got["params"] == want["params"]
+
+
+def test_crystal_clear_is_clear_and_contradicts_frosted(compile_text):
+    assert (
+        material(compile_text("crystal-clear acrylic"))["params"] == material(compile_text("clear acrylic"))["params"]
+    )
+    result = compile_text("frosted crystal clear glass")
+    assert [d.code for d in result.diagnostics if d.severity.name == "WARNING"] == ["W101"]
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as",
+    [
+        ("linen with a loose weave", "linen with a strong weave"),
+        ("wool with a chunky weave", "wool with a strong weave"),
+    ],
+)
+def test_weave_words_are_degrees(compile_text, phrase, same_as):
+    got, want = material(compile_text(phrase)), material(compile_text(same_as))
+    assert (got["params"], got["maps"]) == (want["params"], want["maps"])
