@@ -163,3 +163,16 @@ def test_a_superlative_is_its_word_at_full_strength(compile_text, phrase, plain,
     else:
         assert (g["params"]["roughness"] - w["params"]["roughness"]) * sign > 0
     assert g["name"] == name
+
+
+@pytest.mark.parametrize(
+    "line,key",
+    [("the colour's a bit garish", "chroma"), ("the finish looks too glossy, can we dull it down", "roughness")],
+)
+def test_a_complaint_about_the_colour_or_the_finish(line, key):
+    before, after, _ = refine("lime green gloss paint", line)
+    if key == "chroma":
+        assert oklch(after)[1] < oklch(before)[1]
+    else:
+        assert after["params"]["roughness"] > before["params"]["roughness"]
+        assert after["params"]["base_color"] == before["params"]["base_color"]
