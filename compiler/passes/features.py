@@ -136,6 +136,10 @@ def _apply_finish(state: MaterialState, ctx: Context, clause: ast.Feature) -> No
     if coat is not None:
         apply_coat(state, ctx, coat)
         return
+    looked = _looked_noun(clause)
+    if looked is not None:  # 'with a marble effect': marble's colour and the feature of its pattern
+        _draw_look(state, ctx, clause, looked)
+        return
     own = None if _describes(clause) else _adjective_named_by(ctx, clause.word)
     if own is not None:
         word = ast.Word(clause.word.text, own.key, "adjectives", clause.word.span)
@@ -147,6 +151,42 @@ def _apply_finish(state: MaterialState, ctx: Context, clause: ast.Feature) -> No
         return
     for group in clause.groups:
         apply_group(state, ctx, group, target="base")
+
+
+def _looked_noun(clause: ast.Feature) -> ast.Colour | None:
+    """The material noun said alone before a finish word ('a marble effect', 'an oak look'), or None."""
+    colours = [c for g in clause.groups for c in g.colours]
+    if len(colours) != 1 or any(g.adjectives for g in clause.groups):
+        return None
+    colour = colours[0]
+    return colour if colour.noun is not None and colour.base is None and not colour.shades else None
+
+
+def _draw_look(state: MaterialState, ctx: Context, clause: ast.Feature, colour: ast.Colour) -> None:
+    """The look of a noun on this material: its colour, and the feature that draws its pattern (the
+    feature whose colour map is the noun's own graph: marble's veins, oak's grain), noted."""
+    assert colour.noun is not None
+    apply_noun_colour(state, ctx, colour, "base_color")
+    entry = ctx.lexicon.entry("nouns", colour.noun.key)
+    graph = ((entry.get("maps") or {}).get("base_color") or {}).get("graph") if entry is not None else None
+    feature = _feature_drawing(ctx, graph) if graph else None
+    if feature is None:
+        return
+    word = ast.Word(clause.word.text, feature.key, "features", clause.word.span)
+    apply_feature(state, ctx, feature, ast.Feature((), word, clause.span))
+    message = f"read '{colour.noun.text} {clause.word.text}' as the look of {colour.noun.key}: its {feature.key}"
+    state.diagnostics.append(Diagnostic(clause.span, Severity.NOTE, NOTE_LOOK, message))
+
+
+NOTE_LOOK = "N101"
+
+
+def _feature_drawing(ctx: Context, graph: str) -> Entry | None:
+    """The feature whose colour map this graph draws ('marble' -> veins), or None."""
+    for entry in ctx.lexicon.all_of("features").values():
+        if ((entry.get("maps") or {}).get("base_color") or {}).get("graph") == graph:
+            return entry
+    return None
 
 
 def _describes(clause: ast.Feature) -> bool:

@@ -31,3 +31,15 @@ def test_a_look_without_a_pattern_lends_its_colour(compile_text):
     got = material(compile_text("leather-look vinyl"))
     assert got["maps"] == {}
     assert got["params"]["base_color"] != material(compile_text("vinyl"))["params"]["base_color"]
+
+
+@pytest.mark.parametrize(
+    "phrase,graph", [("laminate with a marble effect", "marble"), ("vinyl with an oak look", "wood")]
+)
+def test_a_look_said_in_a_clause_draws_the_same(compile_text, phrase, graph):
+    result = compile_text(phrase)
+    got = material(result)
+    assert got["maps"]["base_color"]["graph"] == graph
+    noun = phrase.split()[3]
+    assert got["params"]["base_color"] == material(compile_text(noun))["params"]["base_color"]
+    assert any("the look of" in d.message for d in result.diagnostics)
