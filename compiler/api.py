@@ -174,14 +174,28 @@ def _change_phrase(lexicon: Lexicon, table: Mapping[str, Any]) -> str:
 
 def _complaint_as_change(words: str, table: Mapping[str, Any]) -> str:
     """'too dark', "it's way too shiny": the change a complaint asks for ('less dark', 'much less
-    shiny'); any other words as they are."""
+    shiny'); each part of a line of parts is read so ('more muted, it's a bit loud'); any other
+    words as they are."""
+    if "," not in words:
+        return _complaint_part(words, table)
+    parts = words.split(",")
+    changed = [_complaint_part(part, table) for part in parts]
+    if changed == parts:
+        return words
+    return ", ".join(" ".join(part.split()) for part in changed if part.strip())
+
+
+def _complaint_part(words: str, table: Mapping[str, Any]) -> str:
+    """One part of a line read as a complaint (see _complaint_as_change), or as it was."""
     said = " ".join(words.split())
     low = said.lower()
     opened = False
-    for opener in sorted(table["complaint_openers"], key=len, reverse=True):
-        if low.startswith(opener + " "):
-            said, low, opened = said[len(opener) + 1 :], low[len(opener) + 1 :], True
+    openers = sorted(table["complaint_openers"], key=len, reverse=True)
+    while True:  # "hmm, that's way too shiny": openers one after the other
+        opener = next((o for o in openers if low.startswith(o + " ")), None)
+        if opener is None:
             break
+        said, low, opened = said[len(opener) + 1 :], low[len(opener) + 1 :], True
     complaints = dict(table["complaints"])
     if opened and not _comparative_next(low, table["opened_complaints"]):
         complaints.update(table["opened_complaints"])

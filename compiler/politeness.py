@@ -57,6 +57,12 @@ def without_politeness(
                 break
             dropped.append(kept[:taken] if at_start else kept[-taken:])
             kept = kept[taken:] if at_start else kept[:-taken]
+    place = _place_at_end(kept, table)
+    where: list[Span] = []
+    if place:  # 'terracotta quarry tiles in the hallway': where it is used (its errors go with it)
+        dropped.append(kept[-place:])
+        where = [kept[-place].span.to(kept[-1].span)]
+        kept = kept[:-place]
     idiom = _idiom(kept, table["idioms"], tag) if tag is not None and not put else None
     if idiom is not None:
         said_run, put, kept = idiom
@@ -68,12 +74,16 @@ def without_politeness(
     if not dropped:
         return diags, kept
     spans = [w.span for run in dropped for w in run] + read_as
-    out = [d for d in diags if not _inside(d, spans)]  # their unknown words, stray marks, readings
+    out = [
+        d for d in diags if not _inside(d, spans) and not _within_any(d, where)
+    ]  # their unknown words, stray marks, readings
     changing = frozenset((*table["changes"], *table["changes_at_end"]))  # 'make it', 'instead': not courtesy
     for run in dropped:
         text = " ".join(w.text for w in run if w.text[:1].isalnum())
         if run is rewritten and put:
             note = f"read '{text}' as '{' '.join(w.text for w in put)}'"
+        elif where and run[0].span.start == where[0].start:
+            note = f"read past '{text}': where the material is used, not how it looks"
         elif run[0] is pronoun:
             note = f"read '{text}' as the material above"
         elif text.lower() in changing:
@@ -82,6 +92,23 @@ def without_politeness(
             note = f"read past '{text}': a phrase names the material only, so politeness is left out"
         out.append(Diagnostic(run[0].span.to(run[-1].span), Severity.NOTE, NOTE_CODE, note))
     return out, (kept + put if idiom is not None else put + kept)
+
+
+def _place_at_end(kept: list[Tagged], table: dict[str, list[str]]) -> int:
+    """How many words at the end say where the material is used ('in the hallway', 'for our
+    kitchen'): a preposition, an optional article and a listed place; 0 when none, or when
+    nothing would be left before them."""
+    lowered = [w.text.lower() for w in kept]
+    places = set(table["places"])
+    for size in (2, 1):
+        if len(lowered) < size + 2 or " ".join(lowered[-size:]) not in places:
+            continue
+        at = len(lowered) - size - 1
+        if lowered[at] in table["place_articles"]:
+            at -= 1
+        if at >= 1 and lowered[at] in table["place_prepositions"]:
+            return len(lowered) - at
+    return 0
 
 
 def _idiom(
@@ -208,6 +235,12 @@ def _rewrite_words(said: str, tag: Callable[[str], Tagged | None]) -> list[str]:
     if len(words) > 1 and tag(" ".join(words[:-1])) is not None:
         return [" ".join(words[:-1]), words[-1]]
     return words
+
+
+def _within_any(diag: Diagnostic, spans: Sequence[Span]) -> bool:
+    """Whether a diagnostic, of any kind, is about words within one of the spans."""
+    at = diag.span
+    return at is not None and any(s.start <= at.start and at.end <= s.end for s in spans)
 
 
 def _inside(diag: Diagnostic, spans: Sequence[Span]) -> bool:

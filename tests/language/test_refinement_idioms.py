@@ -176,3 +176,29 @@ def test_a_complaint_about_the_colour_or_the_finish(line, key):
     else:
         assert after["params"]["roughness"] > before["params"]["roughness"]
         assert after["params"]["base_color"] == before["params"]["base_color"]
+
+
+@pytest.mark.parametrize(
+    "line,key,sign",
+    [
+        ("ugh, that's way too glossy", "roughness", 1),
+        ("more muted, it's a bit garish", "chroma", -1),
+        ("it's coming across a bit too dark, can we go lighter", "lightness", 1),
+        ("give it a bit more shine", "roughness", -1),
+    ],
+)
+def test_openers_in_a_row_and_complaints_in_each_part(line, key, sign):
+    before, after, _ = refine(
+        "lime green gloss paint" if key != "roughness" or sign > 0 else "satin lime green paint", line
+    )
+    if key == "roughness":
+        assert (after["params"]["roughness"] - before["params"]["roughness"]) * sign > 0
+    else:
+        index = 0 if key == "lightness" else 1
+        assert (oklch(after)[index] - oklch(before)[index]) * sign > 0
+
+
+@pytest.mark.parametrize("line", ["what about it in forest green", "keep the grain but make it forest green"])
+def test_more_change_requests(line):
+    _, after, _ = refine("pale oak", line)
+    assert oklch(after)[0] < 0.5

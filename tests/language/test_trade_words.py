@@ -134,3 +134,28 @@ def test_crystal_clear_is_clear_and_contradicts_frosted(compile_text):
 def test_weave_words_are_degrees(compile_text, phrase, same_as):
     got, want = material(compile_text(phrase)), material(compile_text(same_as))
     assert (got["params"], got["maps"]) == (want["params"], want["maps"])
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as",
+    [
+        ("mid-grey wool", "medium grey wool"),
+        ("an oak floor for the kitchen", "oak"),
+        ("limestone tiles in the hallway", "limestone tiles"),
+        ("kind of like brass", "brass"),
+        ("that sage green", "sage green paint"),
+        ("brass with a verdigris bloom", "brass with a verdigris patina"),
+        ("a barely-there sheen", "a barely sheen"),
+        ("worn-in leather", "worn leather"),
+        ("a mug of hot cocoa", "chocolate"),
+    ],
+)
+def test_more_everyday_words(compile_text, phrase, same_as):
+    got, want = material(compile_text(phrase)), material(compile_text(same_as))
+    assert (got["model"], got["params"], got["maps"]) == (want["model"], want["params"], want["maps"])
+
+
+def test_beeswax_is_honey_yellow_and_chalky_is_matte(compile_text):
+    L, C, h = lch(material(compile_text("natural beeswax"))["params"]["base_color"])
+    assert 55 <= h <= 95 and C > 0.08
+    assert material(compile_text("chalky white paint"))["params"]["roughness"] >= 0.8
