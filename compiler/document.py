@@ -10,7 +10,7 @@ from dataclasses import replace
 from . import ast
 from .diagnostics import Diagnostic, error
 from .lexicon import Lexicon
-from .line_parts import PART_MARKS, by_parts
+from .line_parts import PART_MARKS, by_parts, material_then_comparatives
 from .lines import iter_lines
 from .on_clause import likeness_dropped, on_material
 from .parser import ParseFailure, describe_expected, parse_line_shape, parsed_item
@@ -192,7 +192,7 @@ def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
     )
     if placed is not None:
         return placed[0], [placed[1]]
-    return _by_parts(words, text, lexicon)
+    return _by_parts(words, text, lexicon) or _material_then_comparatives(words, text, lexicon)
 
 
 def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Refinement, list[Diagnostic]] | None:
@@ -208,6 +208,23 @@ def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Ref
         return parse_line(alone, number, offset, Tagger.of(lexicon), said)
 
     return by_parts(text, number, offset, read)
+
+
+def _material_then_comparatives(
+    words: list[Tagged], text: str, lexicon: Lexicon
+) -> tuple[ast.Material, list[Diagnostic]] | None:
+    """'walnut, a bit darker': the material moved by the comparative parts after it
+    (cnlmc.line_parts), each part read as a line of its own where it stands."""
+    if not any(w.text in PART_MARKS for w in words) or words[0].implied_by is not None:
+        return None
+    at = words[0].span
+    number, offset = at.line, at.start - (at.col - 1)
+
+    def read(start: int, end: int, said: list[Diagnostic]) -> ast.Item | None:
+        alone = " " * start + text[start:end] + " " * (len(text) - end)
+        return parse_line(alone, number, offset, Tagger.of(lexicon), said)
+
+    return material_then_comparatives(text, number, offset, read)
 
 
 def _without_article(words: list[Tagged]) -> list[Tagged] | None:

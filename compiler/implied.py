@@ -362,7 +362,7 @@ def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.M
 
     start = item.span.start - (item.span.col - 1)  # the line's offset: its text is the whole line
     words, diags = Tagger.of(lexicon).tag_line(item.text, item.span.line, start)
-    if diags or not words:
+    if any(d.is_error for d in diags) or not words:  # a note ('darker than navy' read as 'darker navy') is fine
         return None
     noun = str(teaching()["completions"]["nouns"][0])
     with_noun = [*words, _implied_noun(noun, words[-1])]

@@ -187,24 +187,26 @@ class Joiner:
         """'Eiche geölt', 'Stahl gebürstet', 'Marmor poliert mit grauen Adern' (rules `postfix`, German):
         describing words after the noun, at the end of the line or before its 'with', with no comma,
         read as after a comma (the grammar's postfix form)."""
-        if any(of_tag(t, "COMMA") for t in out):
-            return
         end = next((k for k, t in enumerate(out) if of_tag(t, "WITH")), len(out))
         start = end
-        while (
+        while (  # 'Buche massiv, geölt': a comma may stand inside the run, not right after the noun
             start > 0
             and not of_tag(out[start - 1], "NOUN")
-            and any(c.tag in ("ADJ", "ADV", "AND", "COLOR", "SHADE") for c in out[start - 1].candidates)
+            and any(c.tag in ("ADJ", "ADV", "AND", "COLOR", "SHADE", "COMMA") for c in out[start - 1].candidates)
         ):
             start -= 1
-        while start < end and of_tag(out[start], "AND"):
+        while start < end and (of_tag(out[start], "AND") or of_tag(out[start], "COMMA")):
+            if of_tag(out[start], "COMMA"):
+                return  # 'Eiche, geölt': the comma is there already
             start += 1
         if start == 0 or start == end or not of_tag(out[start - 1], "NOUN") or out[start - 1].unknown:
+            return
+        if any(of_tag(t, "COMMA") for t in out[:start]):
             return
         first = out[start]
         at = first.span.start - 1  # the space before the word: a span of its own (the parser keys words by start)
         comma = Tagged(",", Span(at, at + 1, first.span.line, first.span.col - 1), _COMMA, implied_by=first.span)
-        said = " ".join(t.text for t in out[start:end])
+        said = " ".join(t.text for t in out[start:end]).replace(" ,", ",")
         noun = out[start - 1].text
         note = f"read '{noun} {said}' as '{noun}, {said}' (describing words after the noun)"
         diags.append(Diagnostic(out[start - 1].span.to(out[end - 1].span), Severity.NOTE, NOTE_CODE, note))
@@ -897,7 +899,8 @@ def may_join(tagged: list[Tagged]) -> bool:
                     if described_noun and plain:  # "Marmor poliert mit grauen Adern"
                         return True
                     with_seen = True
-                plain = False
+                if tag == "WITH" or not described_noun:  # "Buche massiv, geölt": a comma in the run stays plain
+                    plain = False
         if (noun and noun_before) or (head and (word is not final or noun_before)):
             return True
         described_noun = describing and (noun_before or described_noun)

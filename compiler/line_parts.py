@@ -15,7 +15,7 @@ from .spans import Span
 from .suggest import teaching
 from .tagged import NOTE_CODE
 
-__all__ = ["PART_MARKS", "by_parts"]
+__all__ = ["PART_MARKS", "by_parts", "material_then_comparatives"]
 
 #: the marks that set parts apart
 PART_MARKS = frozenset((",", ";"))
@@ -49,6 +49,51 @@ def by_parts(text: str, line: int, offset: int, read: Reader) -> tuple[ast.Refin
     if not found or len(changes) > 1 or (changes and not _comparatives_beside(found, changes[0])):
         return None
     return (_with_change(found, changes[0], text) if changes else _joined(found, text)), notes
+
+
+def material_then_comparatives(
+    text: str, line: int, offset: int, read: Reader
+) -> tuple[ast.Material, list[Diagnostic]] | None:
+    """'walnut, a bit darker', 'reddish brown, maybe a bit darker': a material, then parts that are
+    comparatives only, is the material moved by them in turn (its inline comparatives, applied after
+    its describing words), and the parts' notes; None for any other line."""
+    cuts = [-1, *(i for i, ch in enumerate(text) if ch in PART_MARKS), len(text)]
+    if len(cuts) < 3:
+        return None
+    notes: list[Diagnostic] = []
+    first: list[Diagnostic] = []
+    material = read(0, cuts[1], first)
+    if not isinstance(material, ast.Material) or any(d.is_error for d in first):
+        return None
+    items: list[ast.RefineItem] = []
+    for start, end in zip(cuts[1:], cuts[2:]):
+        written = text[start + 1 : end]
+        if not written.strip():
+            return None
+        if _courtesy(written):
+            notes.append(_read_past(written, start + 1, line, offset))
+            continue
+        said: list[Diagnostic] = []
+        node = read(start + 1, end, said)
+        if not isinstance(node, ast.Refinement) or not node.items or node.groups or node.coat or node.features:
+            return None
+        if node.material is not None or node.removed or any(d.is_error for d in said):
+            return None
+        items += node.items
+        notes += said
+    if not items:
+        return None
+    moved = ast.Material(
+        material.name,
+        material.groups,
+        material.nouns,
+        material.coat,
+        material.span.to(items[-1].span),
+        text,
+        (*material.refinements, *items),
+        material.features,
+    )
+    return moved, [*first, *notes]
 
 
 def _courtesy(written: str) -> bool:

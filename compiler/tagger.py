@@ -334,11 +334,17 @@ class Tagger:
             hint = f"write '{than}' once"
             diags.append(error(twice, "E002", f"'{raw[i + taken][0]}' a second time", (hint,)))
             return taken + 1
-        if not any(self._may_name_material(t) for t, _c in raw[i + taken :]):  # 'lighter than', 'lighter than red'
+        rest = raw[i + taken :]
+        if not any(self._may_name_material(t) for t, _c in rest) and not self._names_colour(rest):  # 'lighter than'
             where = self._span(raw, i, 1, line_no, offset)
             message = f"'{said} {than}' compares with a material, and none is named after '{than}'"
             diags.append(error(where, "E003", message, (f"name the material after '{than}'",)))
         return taken
+
+    def _names_colour(self, rest: list[RawToken]) -> bool:
+        """'darker than navy': a colour after the comparison word is compared with (the line reads
+        'darker navy', a colour on the everyday noun the implied-material reading adds)."""
+        return any(w[0].isalpha() and any(c.tag == "COLOR" for c in self._candidates((w.lower(),))) for w, _c in rest)
 
     def _may_name_material(self, word: str) -> bool:
         """Whether a word after a comparison word may name (or be part of) the material compared with:

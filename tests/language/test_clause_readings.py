@@ -94,3 +94,17 @@ def test_laid_tiles_take_a_colour_said_with_in(compile_text, phrase, colour):
 def test_without_any_is_a_negation(compile_text, phrase):
     got = material(compile_text(phrase))
     assert got["params"]["roughness"] > material(compile_text("paint"))["params"]["roughness"]
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as",
+    [
+        ("walnut, a bit darker", "a bit darker walnut"),
+        ("red plastic, slightly glossier", "slightly glossier red plastic"),
+        ("oak, a bit darker, much glossier", "oak\\na bit darker\\nmuch glossier"),
+        ("sage green, maybe a touch lighter", "sage green paint\\na touch lighter"),
+    ],
+)
+def test_a_material_then_comparative_parts_is_moved_by_them(compile_text, phrase, same_as):
+    got, want = material(compile_text(phrase)), material(compile_text(same_as.replace("\\n", "\n")))
+    assert got["params"] == want["params"] and got["maps"] == want["maps"]

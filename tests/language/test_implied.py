@@ -180,8 +180,14 @@ def test_an_inline_comparative_before_a_colour_alone_implies_the_material_too(te
 
 
 def test_a_comparison_with_nothing_compared_keeps_its_error():
-    result = compiled("paler than teal")
+    result = compiled("paler than")
     assert not result.ok and [d.code for d in result.diagnostics if d.is_error] == ["E003"]
+
+
+def test_a_comparison_with_a_colour_is_that_colour_a_step_further():
+    """'paler than teal' (session 14): a paler teal, on the everyday noun, as 'paler teal'."""
+    result = compiled("paler than teal")
+    assert result.ok and result.materials[0]["params"] == compiled("paler teal").materials[0]["params"]
 
 
 @pytest.mark.parametrize(("text", "reading"), [("zero shine", "dull"), ("no gloss", "matte")])

@@ -159,3 +159,21 @@ def test_beeswax_is_honey_yellow_and_chalky_is_matte(compile_text):
     L, C, h = lch(material(compile_text("natural beeswax"))["params"]["base_color"])
     assert 55 <= h <= 95 and C > 0.08
     assert material(compile_text("chalky white paint"))["params"]["roughness"] >= 0.8
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as",
+    [("Kiefer massiv, geölt", "geölte Kiefer"), ("Räucherkiefer", "geräucherte Kiefer"), ("Ahorn furniert", "Ahorn")],
+)
+def test_german_listing_words(phrase, same_as):
+    from cnlmc.api import compile_source, lexicon_for
+
+    de = lexicon_for(("de",))
+    got, want = compile_source(phrase, "t", de), compile_source(same_as, "t", de)
+    assert got.ok and want.ok, [d.message for d in got.diagnostics]
+    assert got.ir["materials"][0]["params"] == want.ir["materials"][0]["params"]
+
+
+def test_arolla_pine_is_a_pale_yellow_softwood(compile_text):
+    L, C, h = lch(material(compile_text("swiss stone pine"))["params"]["base_color"])
+    assert L > 0.7 and 50 <= h <= 90
