@@ -467,6 +467,10 @@ def _dropped_separator(raw: list[RawToken], after: int, tagged: list[Tagged]) ->
 
 def _unknown_message(text: str) -> str:
     if text[0].isalpha():
+        from .suggest import teaching  # an unknown word only: the teaching tables load then
+
+        if text.lower() in teaching()["measures"]["colour_codes"]:
+            return f"'{text}' names a colour code: codes are not part of the language (say the colour in words, e.g. 'anthracite grey')"
         return f"unknown word '{text}'"
     if text[0].isdigit():
         return f"numbers are not part of the language: '{text}' (describe the look in words)"

@@ -108,3 +108,10 @@ def test_without_any_is_a_negation(compile_text, phrase):
 def test_a_material_then_comparative_parts_is_moved_by_them(compile_text, phrase, same_as):
     got, want = material(compile_text(phrase)), material(compile_text(same_as.replace("\\n", "\n")))
     assert got["params"] == want["params"] and got["maps"] == want["maps"]
+
+
+def test_a_colour_code_says_to_name_the_colour(compile_text):
+    result = compile_text("powder-coated aluminium, RAL 7016")
+    assert not result.ok
+    first = next(d for d in result.diagnostics if d.is_error)
+    assert first.code == "E001" and "colour code" in first.message and first.span.col == 26
