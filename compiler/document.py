@@ -192,12 +192,14 @@ def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
     )
     if placed is not None:
         return placed[0], [placed[1]]
-    return _by_parts(words, text, lexicon) or _material_then_comparatives(words, text, lexicon)
+    return _by_parts(words, text, lexicon)
 
 
-def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Refinement, list[Diagnostic]] | None:
-    """The line as one refinement of its comma-separated parts, each read as a line of its own
-    where it stands (cnlmc.line_parts): the other parts blanked, so columns stay the line's."""
+def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, list[Diagnostic]] | None:
+    """The line read by its comma-separated parts, each read as a line of its own where it stands
+    (cnlmc.line_parts; the other parts blanked, so columns stay the line's): one refinement of its
+    parts ('deeper, more of a burgundy'), else a material moved by the comparative parts after it
+    ('walnut, a bit darker')."""
     if not any(w.text in PART_MARKS for w in words) or words[0].implied_by is not None:
         return None
     at = words[0].span
@@ -207,24 +209,7 @@ def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Ref
         alone = " " * start + text[start:end] + " " * (len(text) - end)
         return parse_line(alone, number, offset, Tagger.of(lexicon), said)
 
-    return by_parts(text, number, offset, read)
-
-
-def _material_then_comparatives(
-    words: list[Tagged], text: str, lexicon: Lexicon
-) -> tuple[ast.Material, list[Diagnostic]] | None:
-    """'walnut, a bit darker': the material moved by the comparative parts after it
-    (cnlmc.line_parts), each part read as a line of its own where it stands."""
-    if not any(w.text in PART_MARKS for w in words) or words[0].implied_by is not None:
-        return None
-    at = words[0].span
-    number, offset = at.line, at.start - (at.col - 1)
-
-    def read(start: int, end: int, said: list[Diagnostic]) -> ast.Item | None:
-        alone = " " * start + text[start:end] + " " * (len(text) - end)
-        return parse_line(alone, number, offset, Tagger.of(lexicon), said)
-
-    return material_then_comparatives(text, number, offset, read)
+    return by_parts(text, number, offset, read) or material_then_comparatives(text, number, offset, read)
 
 
 def _without_article(words: list[Tagged]) -> list[Tagged] | None:

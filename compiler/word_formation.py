@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING, Any
 from .resemblance import Resemblance
 from .spoken import Spoken
 from .tagged import NOTE_CODE, Candidate
+from .word_formation_rules import RESEMBLANCE_WORD_LISTS
 
 if TYPE_CHECKING:  # imported when first needed: the tagger imports this module only for an unknown word
     from .lexicon import Lexicon
@@ -644,17 +645,7 @@ def _merged_resemblance(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:
     """The [resemblance] rules of all layers: lists joined, the most specific layer's ladder and
     finish adjectives first."""
     merged: dict[str, Any] = {
-        name: list(dict.fromkeys(w for layer in layers for w in layer[name]))
-        for name in (
-            "forms",
-            "endings",
-            "colour_forms",
-            "colour_heads",
-            "like_heads",
-            "finish_heads",
-            "surface_classes",
-            "not_nearest",
-        )
+        name: list(dict.fromkeys(w for layer in layers for w in layer[name])) for name in RESEMBLANCE_WORD_LISTS
     }
     merged["surface"] = next((layer["surface"] for layer in layers if layer["surface"]), [])
     finish: dict[str, str] = {}

@@ -180,23 +180,28 @@ def _wordnet(c: Checker, raw: object) -> dict[str, Any]:
     }
 
 
+#: the [resemblance] keys that are lists of words (the layers' lists are joined: cnlmc.word_formation)
+RESEMBLANCE_WORD_LISTS = (
+    "forms",
+    "endings",
+    "colour_forms",
+    "colour_heads",
+    "like_heads",
+    "finish_heads",
+    "surface_classes",
+    "not_nearest",
+)
+
+
 def _resemblance(c: Checker, raw: object) -> dict[str, Any]:
     """[resemblance]: what "like X" means for a noun X, by its class (cnlmc.resemblance)."""
     path: tuple[str | int, ...] = ("resemblance",)
     table = c.table(raw, path)
     out: dict[str, Any] = dict(empty_rules()["resemblance"])
     c.known_keys(table, tuple(out), path)
-    for name in (
-        "forms",
-        "colour_forms",
-        "colour_heads",
-        "like_heads",
-        "finish_heads",
-        "surface_classes",
-        "not_nearest",
-    ):
-        out[name] = _words(c, table.get(name, []), (*path, name))
-    out["endings"] = _words(c, table.get("endings", []), (*path, "endings"), blank=True)
+    for name in RESEMBLANCE_WORD_LISTS:
+        blank = name == "endings"  # an ending may be '' (the word itself)
+        out[name] = _words(c, table.get(name, []), (*path, name), blank=blank)
     ladder = []
     for i, step in enumerate(c.array(table.get("surface", []), (*path, "surface"), "a list of [roughness, adjective]")):
         pair = c.array(step, (*path, "surface", i), "[roughness, adjective]")
