@@ -135,8 +135,6 @@ def _failed_line(
     when it only describes one ('matte black'), or as a change of the material above when it
     starts with a change phrase ('make it blue'): cnlmc.implied."""
     from .hedges import finish_dropped, postfix_finish, read_past, reread, with_implied
-    from .implied import as_change, implied_material, starts_with_change
-    from .teach import teach_syntax_error
 
     polite = _politely(words, lexicon)  # 'more of a teal', 'ok, a bit darker': known words, a rewrite
     if polite is not None and (node := _parsed(polite[1], text, lexicon)) is not None:
@@ -162,24 +160,38 @@ def _failed_line(
         words, failure = hedged, _failure_of(hedged, lexicon) or failure
         diags[:] = [d for d in diags if not read_past(d, notes)]
         diags.extend(notes)
+    implied, said = _implied_reading(failure, words, text, lexicon)
+    if implied is None and polite is not None and (again := _failure_of(polite[1], lexicon)) is not None:
+        implied, polite_said = _implied_reading(again, polite[1], text, lexicon)  # 'a soft putty colour'
+        if implied is not None:
+            diags.extend(polite[0])
+            said = polite_said
+    diags.append(said)
+    return implied
+
+
+def _implied_reading(
+    failure: ParseFailure, words: list[Tagged], text: str, lexicon: Lexicon
+) -> tuple[ast.Item | None, Diagnostic]:
+    """The line read with its implied material ('matte black' = matte black paint; a change of the
+    material above when it starts with a change phrase: 'make it blue'), and its note; or None and
+    the taught error (cnlmc.implied, cnlmc.teach)."""
+    from .implied import as_change, implied_material, starts_with_change
+    from .teach import teach_syntax_error
+
     taught = teach_syntax_error(_syntax_error(failure, words, lexicon), words, lexicon)
     implied = implied_material(taught, words, lexicon, text)
-    if implied is not None:
-        with_noun, note = implied
-        try:
-            shape, picks = parse_line_shape(with_noun, lexicon.caches.shapes)
-        except ParseFailure:
-            pass
-        else:
-            material = shape.build(with_noun, picks, text)
-            if isinstance(material, ast.Material) and starts_with_change(text):
-                change, note = as_change(material, words)
-                diags.append(note)
-                return change
-            diags.append(note)
-            return material
-    diags.append(taught)
-    return None
+    if implied is None:
+        return None, taught
+    with_noun, note = implied
+    try:
+        shape, picks = parse_line_shape(with_noun, lexicon.caches.shapes)
+    except ParseFailure:
+        return None, taught
+    material = shape.build(with_noun, picks, text)
+    if isinstance(material, ast.Material) and starts_with_change(text):
+        return as_change(material, words)
+    return material, note
 
 
 def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, list[Diagnostic]] | None:

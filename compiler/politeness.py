@@ -57,6 +57,9 @@ def without_politeness(
                 break
             dropped.append(kept[:taken] if at_start else kept[-taken:])
             kept = kept[taken:] if at_start else kept[:-taken]
+    if len(kept) > 1 and kept[-1].text.lower() in table["colour_heads"] and _is_colour(kept[-2]):
+        dropped.append(kept[-1:])  # 'a soft putty colour': the colour named
+        kept = kept[:-1]
     place = _place_at_end(kept, table)
     where: list[Span] = []
     if place:  # 'terracotta quarry tiles in the hallway': where it is used (its errors go with it)
@@ -92,6 +95,10 @@ def without_politeness(
             note = f"read past '{text}': a phrase names the material only, so politeness is left out"
         out.append(Diagnostic(run[0].span.to(run[-1].span), Severity.NOTE, NOTE_CODE, note))
     return out, (kept + put if idiom is not None else put + kept)
+
+
+def _is_colour(word: Tagged) -> bool:
+    return any(c.tag == "COLOR" for c in word.candidates)
 
 
 def _place_at_end(kept: list[Tagged], table: dict[str, list[str]]) -> int:

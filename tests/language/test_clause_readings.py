@@ -115,3 +115,18 @@ def test_a_colour_code_says_to_name_the_colour(compile_text):
     assert not result.ok
     first = next(d for d in result.diagnostics if d.is_error)
     assert first.code == "E001" and "colour code" in first.message and first.span.col == 26
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as", [("a soft putty colour", "soft putty paint"), ("a warm grey colour", "warm grey paint")]
+)
+def test_colour_after_a_colour_is_read_past(compile_text, phrase, same_as):
+    result = compile_text(phrase)
+    assert material(result)["params"] == material(compile_text(same_as))["params"]
+    assert any("'colour'" in d.message for d in result.diagnostics)
+
+
+def test_more_colour_keeps_its_meaning(compile_text):
+    plain = material(compile_text("terracotta paint"))
+    more = material(compile_text("terracotta paint\nmore colour"))
+    assert more["params"]["base_color"] != plain["params"]["base_color"]
