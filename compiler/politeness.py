@@ -158,12 +158,17 @@ def _without_pronoun(
     """'polish it', 'sand them': a verb then a pronoun for the material above. The words without
     the pronoun (the verb read as its describing word: 'sand' is sanded, not the material sand),
     the pronoun, and the span whose errors go with the verb's reading."""
+    let = _let_pronoun(kept, pronouns)
+    if let:  # 'let it age a bit' = 'age it a bit' ('let' read past with the pronoun)
+        kept = [kept[2], kept[1], *kept[3:]]
     if len(kept) < 2 or kept[1].text.lower() not in pronouns:
         return kept, None, []
     verb = _participle(kept[0], tag)
     rest, past = kept[2:], [verb.span] if verb is not None else []
     if rest and rest[0].text.lower() in teaching()["politeness"]["particles"]:
         rest, past = rest[1:], [*past, rest[0].span]  # 'polish it up': the particle goes with the pronoun
+    if let:
+        past = [*past, let[0].span]
     said = verb or kept[0]
     rest, reached = _result_words(rest)
     if reached:  # 'polish it up to a mirror' = mirror polished
@@ -196,6 +201,16 @@ def _result_words(rest: list[Tagged]) -> tuple[list[Tagged], list[Span]]:
         said = [_as_describing(w) for w in said[: len(said) - len(tail)]]
         return said, [w.span for w in rest[:n]] + tail
     return rest, []
+
+
+LET_WORDS = frozenset(("let", "allow"))
+
+
+def _let_pronoun(kept: list[Tagged], pronouns: Sequence[str]) -> list[Tagged]:
+    """['let'] when the words open with 'let it' and a verb ('let it age a bit'), else []."""
+    if len(kept) > 2 and kept[0].text.lower() in LET_WORDS and kept[1].text.lower() in pronouns:
+        return [kept[0]]
+    return []
 
 
 def _as_describing(word: Tagged) -> Tagged:

@@ -202,3 +202,10 @@ def test_openers_in_a_row_and_complaints_in_each_part(line, key, sign):
 def test_more_change_requests(line):
     _, after, _ = refine("pale oak", line)
     assert oklch(after)[0] < 0.5
+
+
+@pytest.mark.parametrize("line,same_as", [("let it weather", "weather it"), ("let it age a bit", "age it a bit")])
+def test_let_it_is_the_verb_on_the_material(line, same_as):
+    _, got, _ = refine("teak", line)
+    _, want, _ = refine("teak", same_as)
+    assert got["params"] == want["params"] and got["params"] != Session("teak").result.ir["materials"][-1]["params"]
