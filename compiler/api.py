@@ -152,7 +152,7 @@ def refined(
     from .suggest import teaching
 
     base = document.rstrip("\n")
-    words = _complaint_as_change(words, teaching()["politeness"])
+    words = _complaint_as_change(words, teaching()["politeness"], lexicon)
     text = f"{base}\n{words}"
     trial = compile_source(text, name, lexicon, seed)
     known = before if before is not None else compile_source(base, name, lexicon, seed)
@@ -172,20 +172,20 @@ def _change_phrase(lexicon: Lexicon, table: Mapping[str, Any]) -> str:
     return phrases["en"]
 
 
-def _complaint_as_change(words: str, table: Mapping[str, Any]) -> str:
+def _complaint_as_change(words: str, table: Mapping[str, Any], lexicon: Lexicon) -> str:
     """'too dark', "it's way too shiny": the change a complaint asks for ('less dark', 'much less
     shiny'); each part of a line of parts is read so ('more muted, it's a bit loud'); any other
     words as they are."""
     if "," not in words:
-        return _complaint_part(words, table)
+        return _complaint_part(words, table, lexicon)
     parts = words.split(",")
-    changed = [_complaint_part(part, table) for part in parts]
+    changed = [_complaint_part(part, table, lexicon) for part in parts]
     if changed == parts:
         return words
     return ", ".join(" ".join(part.split()) for part in changed if part.strip())
 
 
-def _complaint_part(words: str, table: Mapping[str, Any]) -> str:
+def _complaint_part(words: str, table: Mapping[str, Any], lexicon: Lexicon) -> str:
     """One part of a line read as a complaint (see _complaint_as_change), or as it was."""
     said = " ".join(words.split())
     low = said.lower()
@@ -197,7 +197,7 @@ def _complaint_part(words: str, table: Mapping[str, Any]) -> str:
             break
         said, low, opened = said[len(opener) + 1 :], low[len(opener) + 1 :], True
     complaints = dict(table["complaints"])
-    if opened and not _comparative_next(low, table["opened_complaints"]):
+    if opened and not _comparative_next(low, table["opened_complaints"], lexicon):
         complaints.update(table["opened_complaints"])
     for complaint in sorted(complaints, key=len, reverse=True):
         if low.startswith(complaint + " "):
@@ -205,12 +205,13 @@ def _complaint_part(words: str, table: Mapping[str, Any]) -> str:
     return words
 
 
-def _comparative_next(low: str, degrees: Mapping[str, str]) -> bool:
-    """ "it's a bit darker now": the word after the degree is a comparative (a report, no complaint)."""
+def _comparative_next(low: str, degrees: Mapping[str, str], lexicon: Lexicon) -> bool:
+    """ "it's a bit darker now": the word after the degree is a comparative, a refinement word of
+    the lexicon (a report, no complaint; "it's a bit amber" is a colour)."""
     for degree in sorted(degrees, key=len, reverse=True):
         if low.startswith(degree + " "):
-            word = low[len(degree) + 1 :].split()[0] if low[len(degree) + 1 :].split() else ""
-            return word in ("more", "less", "mehr", "weniger") or (word.endswith("er") and len(word) > 4)
+            rest = low[len(degree) + 1 :].split()
+            return bool(rest) and any(e.category == "refinements" for e in lexicon.lookup((rest[0],)))
     return False
 
 

@@ -69,7 +69,7 @@ class Joiner:
             tagged = self._made_of(tagged, diags)
         out: list[Tagged] = []
         formed: list[tuple[Tagged, Tagged]] = []  # (the joined noun, its object word): 'marble tiles'
-        looks: list[tuple[Tagged, str, Tagged]] = []  # (the noun, the feature, the look word): 'marble-effect'
+        looks: list[tuple[Tagged, Tagged]] = []  # (the noun, the look word): 'marble-effect laminate'
         for k, word in enumerate(tagged):
             before = out[-1] if out else None
             if word.unknown and self._names_use(word, tagged[k + 1 :], diags):  # "guitar varnish", "boat paint"
@@ -89,6 +89,16 @@ class Joiner:
             if before is not None and of_tag(before, "OBJECT") and not others(before) and nouns:
                 out[-1] = self._join(before, word, nouns, f"'{word.text}' ('{before.text}' names the object)", diags)
                 formed.append((out[-1], word if of_tag(word, "OBJECT") else before))  # 'floor tiles': the tiles
+            elif (
+                before is not None
+                and of_tag(before, "NOUN")
+                and self._is_look(before)
+                and (nouns or of_tag(word, "OBJECT"))
+            ):
+                thing = word if nouns else self._object_alone(word, diags)  # 'wood-look tiles': tiles of ceramic tile
+                out[-1:] = self._look_of(before, thing, looks)
+                if not nouns:
+                    formed.append((out[-1], word))
             elif before is not None and of_tag(word, "OBJECT") and of_tag(before, "NOUN") and not _noun_next(tagged, k):
                 made = of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' (the material of the {word.text})", diags)
@@ -104,8 +114,6 @@ class Joiner:
             elif before is not None and nouns and self._is_kind_of(before, nouns):
                 reading = f"'{nouns[0].key}' (made of {before.text}: the first noun says what the second is made of)"
                 out[-1] = self._join(before, word, nouns, reading, diags)
-            elif before is not None and nouns and of_tag(before, "NOUN") and self._is_look(before):
-                out[-1:] = self._look_of(before, word, tagged, looks, diags)
             elif of_tag(word, "OBJECT"):
                 if k + 1 < len(tagged) and of_tag(tagged[k + 1], "NOUN"):
                     out.append(word)  # "roof tiles": joined to the noun next
@@ -127,8 +135,8 @@ class Joiner:
                 out.append(word)
         for noun, thing in formed:
             self._form_feature(out, noun, thing, diags)
-        for noun, key, look in looks:
-            self._feature_clause(out, noun, key, look.span)
+        for noun, look in looks:
+            self._look_clause(out, noun, look)
         if len(out) > 2 and self._is_coat_finish(out):
             self._coat_after(out, diags)
         elif len(out) > 2 and _layer_of(out, diags) and self._coat_alone(out) is not None:
@@ -480,42 +488,38 @@ class Joiner:
         out[n + 1 : n + 1] = clause
         return True
 
-    def _look_of(
-        self,
-        look: Tagged,
-        noun: Tagged,
-        tagged: list[Tagged],
-        looks: list[tuple[Tagged, str, Tagged]],
-        diags: list[Diagnostic],
-    ) -> list[Tagged]:
-        """'marble-effect laminate', 'wood-look tiles': the noun, printed with the look of the other:
-        its colour (the nearest named colour, unless the line names one) and the feature that draws
-        its pattern (the feature whose map is the look's own graph: marble veins, wood grain),
-        each noted; the look's relief is not carried (a print is flat)."""
-        key = of_tag(look, "NOUN")[0].key
-        entry = self.lexicon.entry("nouns", key)
-        graph = ((entry.get("maps") or {}).get("base_color") or {}).get("graph") if entry is not None else None
-        feature = self._feature_drawing(graph) if graph else None
-        others = [t for t in tagged if t is not look and of_tag(t, "COLOR") and not of_tag(t, "NOUN")]
-        found = None if others else self.resemblance().colour(key)
-        out: list[Tagged] = [Tagged(look.text, look.span, (found[0],), look.unknown)] if found else []
+    def _look_of(self, look: Tagged, noun: Tagged, looks: list[tuple[Tagged, Tagged]]) -> list[Tagged]:
+        """'marble-effect laminate', 'wood-look tiles': the noun, with the look of the other said as
+        its finish clause ('laminate with a marble effect', drawn and noted by cnlmc.passes.features:
+        the look's colour, unless the line names one, and the feature that draws its pattern)."""
         made = Tagged(noun.text, noun.span, of_tag(noun, "NOUN"), noun.unknown)
-        if feature is not None:
-            looks.append((made, feature, look))
-        drawn = [f"its colour ({found[0].key})"] if found else []
-        drawn += [f"its {feature}"] if feature else []
-        said = " and ".join(drawn) if drawn else "nothing of it (no pattern or colour to lend)"
-        note = f"read '{look.text} {noun.text}' as {made.text} with the look of {key}: {said}"
-        diags.append(Diagnostic(look.span.to(noun.span), Severity.NOTE, NOTE_CODE, note))
-        return [*out, made]
+        looks.append((made, look))
+        return [made]
 
-    def _feature_drawing(self, graph: str) -> str | None:
-        """The feature whose colour map is drawn by this graph ('marble' -> veins), or None."""
-        for key, entry in self.lexicon.all_of("features").items():
-            ref = (entry.get("maps") or {}).get("base_color") or {}
-            if ref.get("graph") == graph:
-                return key
-        return None
+    def _look_clause(self, out: list[Tagged], noun: Tagged, look: Tagged) -> None:
+        """The finish clause 'with a LOOK effect' after the noun, first among the clauses."""
+        if noun not in out:
+            return
+        n = out.index(noun)
+        rest = out[n + 1 :]
+        if rest and not of_tag(rest[0], "WITH"):
+            return
+        s = noun.span
+        inside = [min(s.start + k, max(s.end - 1, s.start)) for k in (1, 2)]  # the parser keys words by start
+        clause = [
+            Tagged("with", Span(s.end, s.end, s.line, s.col + s.end - s.start), _WITH, implied_by=look.span),
+            Tagged(
+                of_tag(look, "NOUN")[0].key,
+                Span(inside[0], inside[0], s.line, s.col + 1),
+                of_tag(look, "NOUN"),
+                implied_by=look.span,
+            ),
+            Tagged("effect", Span(inside[1], inside[1], s.line, s.col + 2), _FINISH, implied_by=look.span),
+        ]
+        if rest:
+            w = rest[0].span
+            clause.append(Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), _AND, implied_by=look.span))
+        out[n + 1 : n + 1] = clause
 
     def _own_pattern(self, noun: Tagged) -> bool:
         """Whether the material draws a colour pattern of its own (marble's veins, granite's grains):
@@ -678,6 +682,7 @@ class Joiner:
 _COMMA = (Candidate("COMMA", ",", "keyword"),)
 _WITH = (Candidate("WITH", "with", "keyword"),)
 _AND = (Candidate("AND", "and", "keyword"),)
+_FINISH = (Candidate("FEATURE", "finish", "features"),)
 #: The readings of the words that may come before a coat named as the whole material ('a glossy, red powder coat').
 _BEFORE_A_COAT = frozenset(("ADV", "ADJ", "COLOR", "SHADE", "ARTICLE", "COMMA", "AND", "OR", "NAME", "COLON", "PROP"))
 

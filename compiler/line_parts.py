@@ -32,11 +32,12 @@ def by_parts(text: str, line: int, offset: int, read: Reader) -> tuple[ast.Refin
         return None
     found: list[ast.Refinement] = []
     notes: list[Diagnostic] = []
+    complained = any(_complaint(text[a + 1 : b]) for a, b in zip(cuts, cuts[1:]))
     for start, end in zip(cuts, cuts[1:]):
         written = text[start + 1 : end]
         if not written.strip():
             return None
-        if _courtesy(written) or _echo(written):
+        if _courtesy(written) or (complained and _echo(written)):
             notes.append(_read_past(written, start + 1, line, offset))
             continue
         said: list[Diagnostic] = []
@@ -77,6 +78,8 @@ def material_then_comparatives(
         node = read(start + 1, end, said)
         if not isinstance(node, ast.Refinement) or not node.items or node.groups or node.coat or node.features:
             return None
+        if any(isinstance(item.target, ast.Colour) for item in node.items):
+            return None  # 'walnut, more red': a colour named is a refinement line's step, not a new colour
         if node.material is not None or node.removed or any(d.is_error for d in said):
             return None
         items += node.items
@@ -102,9 +105,19 @@ def _courtesy(written: str) -> bool:
     return said in table["leading"] or said in table["trailing"] or said in table["changes_at_end"]
 
 
+def _complaint(written: str) -> bool:
+    """Whether a part asks for less of something, as a complaint reads ('less shiny', 'much less
+    red': teaching.toml [politeness] complaints): an idiom beside it only echoes it."""
+    table = teaching()["politeness"]
+    said = " ".join(written.lower().split())
+    readings = {*table["complaints"].values(), *table["opened_complaints"].values()}
+    return any(said.startswith(f"{reading} ") for reading in readings)
+
+
 def _echo(written: str) -> bool:
-    """'can we knock it back a bit' beside 'too shiny': a verb-and-'it' idiom (teaching.toml
-    [politeness] idioms) with only courtesy and degree words around it echoes the line's other part."""
+    """'can we knock it back a bit' beside 'too shiny' (read 'less shiny'): a verb-and-'it' idiom
+    (teaching.toml [politeness] idioms) with only courtesy and degree words around it, which echoes
+    the complaint beside it."""
     table = teaching()["politeness"]
     words = [w.strip(".,!?;:") for w in written.lower().split()]
     words = _without_edges(words, table["leading"], at_start=True)

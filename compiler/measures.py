@@ -73,16 +73,16 @@ def _measure_runs(words: Sequence[Tagged], units: frozenset[str]) -> list[tuple[
 
 
 def _grade(words: Sequence[Tagged], k: int) -> bool:
-    """'316 stainless', '6061 aluminium': a number of three or four digits right before a material
-    noun is its alloy or product grade (read past like a size)."""
+    """'316 stainless', '6061 aluminium': a number of three or four digits right before a metal
+    (teaching.toml [measures] `graded`) is its alloy grade (read past like a size); '1950 oak' is not."""
     text = words[k].text
     nxt = words[k + 1] if k + 1 < len(words) else None
     return (
         text.isdigit()
         and 3 <= len(text) <= 4
         and nxt is not None
-        and any(c.tag == "NOUN" for c in nxt.candidates)
         and not nxt.unknown
+        and nxt.text.lower() in teaching()["measures"]["graded"]
     )
 
 

@@ -77,7 +77,14 @@ def likeness_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tu
     the material, set off by a comma, is read past (teaching.toml [hedges] `likeness`); None when
     the words before it are not a material."""
     found = re.search(r",\s*(?:" + _pattern(teaching()["hedges"]["likeness"]) + r")\b", text.lower())
-    if found is None or not words:
+    if found is None:  # 'something light, like birch': a bare 'like' names the material only after describing words
+        bare = re.search(r",\s*like\b", text.lower())
+        if bare is None or not words:
+            return None
+        line_start = words[0].span.start - (words[0].span.col - 1)
+        before = [w for w in words if w.span.start - line_start < bare.start()]
+        return _described_likeness(words, before, line_start + bare.end(), text, lexicon) if before else None
+    if not words:
         return None
     line_start = words[0].span.start - (words[0].span.col - 1)
     before = [w for w in words if w.span.start - line_start < found.start()]

@@ -34,6 +34,7 @@ def without_politeness(
     rewrites: dict[str, str] = table["rewrites"]
     kept = list(words)
     dropped: list[list[Tagged]] = []
+    compared: list[Tagged] = []  # the other side of a comparison ('than black')
     put: list[Tagged] = []
     rewritten: list[Tagged] | None = None
     for at_start, phrases in ((True, table["leading"]), (False, table["trailing"])):
@@ -48,6 +49,7 @@ def without_politeness(
                     if said in table["towards"]:  # 'more like charcoal than black': what it is not, read past
                         kept, other = _without_other_side(kept)
                         dropped += [other] if other else []
+                        compared = other
                     towards_a_material = said in table["towards"] and _ends_in_a_noun(kept)
                     put = _rewritten(rewritten, rewrites[said], tag) if not towards_a_material else []
                     dropped.append(rewritten)
@@ -85,6 +87,8 @@ def without_politeness(
         text = " ".join(w.text for w in run if w.text[:1].isalnum())
         if run is rewritten and put:
             note = f"read '{text}' as '{' '.join(w.text for w in put)}'"
+        elif run is compared:
+            note = f"read past '{text}': what it is compared with, not what it is"
         elif where and run[0].span.start == where[0].start:
             note = f"read past '{text}': where the material is used, not how it looks"
         elif run[0] is pronoun:
@@ -110,11 +114,9 @@ def _place_at_end(kept: list[Tagged], table: dict[str, list[str]]) -> int:
     for size in (2, 1):
         if len(lowered) < size + 2 or " ".join(lowered[-size:]) not in places:
             continue
-        at = len(lowered) - size - 1
-        if lowered[at] in table["place_articles"]:
-            at -= 1
-        if at >= 1 and lowered[at] in table["place_prepositions"]:
-            return len(lowered) - at
+        at = len(lowered) - size - 1  # the article is needed: 'paint in flat' is not a place
+        if lowered[at] in table["place_articles"] and at >= 2 and lowered[at - 1] in table["place_prepositions"]:
+            return len(lowered) - at + 1
     return 0
 
 
@@ -164,6 +166,14 @@ def _without_pronoun(
     if len(kept) < 2 or kept[1].text.lower() not in pronouns:
         return kept, None, []
     verb = _participle(kept[0], tag)
+    if (
+        verb is None
+        and not let
+        and any(c.tag == "NOUN" for c in kept[0].candidates)
+        and kept[1].text.lower() in RELATIVES
+    ):
+        return kept, None, []  # 'teak that has silvered': a relative clause, not a verb on 'that'
+
     rest, past = kept[2:], [verb.span] if verb is not None else []
     if rest and rest[0].text.lower() in teaching()["politeness"]["particles"]:
         rest, past = rest[1:], [*past, rest[0].span]  # 'polish it up': the particle goes with the pronoun
@@ -204,6 +214,8 @@ def _result_words(rest: list[Tagged]) -> tuple[list[Tagged], list[Span]]:
 
 
 LET_WORDS = frozenset(("let", "allow"))
+#: pronouns that, after a material noun, open a relative clause rather than stand for the material
+RELATIVES = frozenset(("that", "which"))
 
 
 def _let_pronoun(kept: list[Tagged], pronouns: Sequence[str]) -> list[Tagged]:

@@ -36,10 +36,11 @@ def relative_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> t
         return None
     if not all(any(c.tag in ("ADJ", "COLOR", "SHADE", "ADV", "REFINE") for c in w.candidates) for w in after):
         return None
-    material = parsed_material([*_describing(after), *before], text, lexicon.caches.shapes)
+    article = before[:1] if any(c.tag == "ARTICLE" for c in before[0].candidates) else []
+    material = parsed_material([*article, *_describing(after), *before[len(article) :]], text, lexicon.caches.shapes)
     if material is None:
         return None
-    said = f"{written_text(after)} {written_text(before)}"
+    said = " ".join(written_text(part) for part in (article, after, before[len(article) :]) if part)
     note = f"read '{text.strip()}' as '{said}': the clause after the material describes it"
     return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
 

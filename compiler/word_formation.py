@@ -450,6 +450,8 @@ class WordFormation:
                     if len(stem.rstrip("-") + ending) < self.rules.min_part:  # icy: ic + e = ice
                         continue
                     found = self._kept(self._known(stem + ending), rule["reads_as"])
+                    if found and rule["exact"]:  # 'honest' is not 'hone'-est: the stem names its word
+                        found = tuple(c for c in found if c.key == stem.rstrip("-") + ending)
                     if found:
                         return self._derived_reading(word, stem, stem.rstrip("-") + ending, found, rule)
         return None

@@ -118,10 +118,11 @@ def _prefix(c: Checker, raw: object, i: int) -> dict[str, Any]:
 def _suffix(c: Checker, raw: object, i: int) -> dict[str, Any]:
     path = ("suffix", i)
     table = c.table(raw, path)
-    c.known_keys(table, ("forms", "endings", "reads_as", "look", "adverb", "doc"), path)
-    look = table.get("look", False)
-    if not isinstance(look, bool):
-        c.fail((*path, "look"), f"expected true or false, got {look!r:.40}")
+    c.known_keys(table, ("forms", "endings", "reads_as", "look", "adverb", "exact", "doc"), path)
+    look, exact = table.get("look", False), table.get("exact", False)
+    for key, value in (("look", look), ("exact", exact)):
+        if not isinstance(value, bool):
+            c.fail((*path, key), f"expected true or false, got {value!r:.40}")
     reads_as = _words(c, c.required(table, "reads_as", path), (*path, "reads_as"))
     for k, tag in enumerate(reads_as):
         c.choice(tag.upper(), RULE_TAGS, (*path, "reads_as", k), "tag")
@@ -130,6 +131,7 @@ def _suffix(c: Checker, raw: object, i: int) -> dict[str, Any]:
         "endings": _words(c, table.get("endings", [""]), (*path, "endings"), blank=True),
         "reads_as": [tag.upper() for tag in reads_as],
         "look": look,
+        "exact": exact,
         "adverb": c.string(table.get("adverb", ""), (*path, "adverb")),
         "doc": c.string(c.required(table, "doc", path), (*path, "doc"), blank=False),
     }

@@ -20,6 +20,7 @@ from ..graphs import graph_params
 from ..lexicon import Entry
 from ..lexicon_model import normalise
 from ..state import Context, MaterialState
+from ..tagged import NOTE_CODE
 from .base import noun_of
 from .coat_layer import apply_coat
 from .colours import colour_text, resolve_colour
@@ -166,19 +167,20 @@ def _draw_look(state: MaterialState, ctx: Context, clause: ast.Feature, colour: 
     """The look of a noun on this material: its colour, and the feature that draws its pattern (the
     feature whose colour map is the noun's own graph: marble's veins, oak's grain), noted."""
     assert colour.noun is not None
-    apply_noun_colour(state, ctx, colour, "base_color")
+    named = any(w.category == "colours" for step in state.provenance.get("base_color", []) for w in step.words)
+    rgb = None if named else noun_colour(ctx, colour)  # 'black marble-effect laminate': black
+    if rgb is not None:
+        state.record("base_color", rgb, f"nouns.{colour.noun.key}: the look of {colour.noun.text}", (colour.noun,))
     entry = ctx.lexicon.entry("nouns", colour.noun.key)
     graph = ((entry.get("maps") or {}).get("base_color") or {}).get("graph") if entry is not None else None
     feature = _feature_drawing(ctx, graph) if graph else None
-    if feature is None:
-        return
-    word = ast.Word(clause.word.text, feature.key, "features", clause.word.span)
-    apply_feature(state, ctx, feature, ast.Feature((), word, clause.span))
-    message = f"read '{colour.noun.text} {clause.word.text}' as the look of {colour.noun.key}: its {feature.key}"
-    state.diagnostics.append(Diagnostic(clause.span, Severity.NOTE, NOTE_LOOK, message))
-
-
-NOTE_LOOK = "N101"
+    if feature is not None:
+        word = ast.Word(clause.word.text, feature.key, "features", clause.word.span)
+        apply_feature(state, ctx, feature, ast.Feature((), word, clause.span))
+    drawn = (["its colour"] if rgb is not None else []) + ([f"its {feature.key}"] if feature is not None else [])
+    said = " and ".join(drawn) or "nothing of it (the line names the colour; no pattern to draw)"
+    message = f"read '{colour.noun.text} {clause.word.text}' as the look of {colour.noun.key}: {said}"
+    state.diagnostics.append(Diagnostic(clause.span, Severity.NOTE, NOTE_CODE, message))
 
 
 def _feature_drawing(ctx: Context, graph: str) -> Entry | None:

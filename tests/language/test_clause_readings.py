@@ -130,3 +130,20 @@ def test_more_colour_keeps_its_meaning(compile_text):
     plain = material(compile_text("terracotta paint"))
     more = material(compile_text("terracotta paint\nmore colour"))
     assert more["params"]["base_color"] != plain["params"]["base_color"]
+
+
+@pytest.mark.parametrize(
+    "phrase",
+    ["paint, like navy", "oak, like walnut", "white paint in flat", "honest oak", "1950 oak", "walnut, more red"],
+)
+def test_readings_that_must_not_swallow_words(compile_text, phrase):
+    """A bare 'like' after a material, a place word without its article, '-est' on a word that only
+    ends so, a number before a non-metal, a colour step after a comma: each stays an error rather
+    than being read past (review of session 14)."""
+    assert not compile_text(phrase).ok
+
+
+def test_a_relative_clause_after_an_article(compile_text):
+    result = compile_text("a brass that has gone dull")
+    assert material(result)["params"] == material(compile_text("dull brass"))["params"]
+    assert not any("'that' as the material above" in d.message for d in result.diagnostics)

@@ -209,3 +209,21 @@ def test_let_it_is_the_verb_on_the_material(line, same_as):
     _, got, _ = refine("teak", line)
     _, want, _ = refine("teak", same_as)
     assert got["params"] == want["params"] and got["params"] != Session("teak").result.ir["materials"][-1]["params"]
+
+
+def test_an_idiom_beside_another_request_is_applied_too():
+    """'warmer, tone it down a bit': no complaint to echo, so both parts apply."""
+    _, warmer, _ = refine("bright orange plastic", "warmer")
+    _, both, _ = refine("bright orange plastic", "warmer, tone it down a bit")
+    assert oklch(both)[1] < oklch(warmer)[1]
+
+
+def test_something_keeps_its_degree():
+    _, some, _ = refine("red plastic", "something a bit darker")
+    _, full, _ = refine("red plastic", "darker")
+    assert oklch(some)[0] > oklch(full)[0]
+
+
+def test_a_colour_ending_in_er_after_an_opener_is_a_complaint(stdlib):
+    text, _ = refined("red plastic", "it's a bit amber", stdlib, "t")
+    assert text.splitlines()[-1].endswith("a bit less amber")

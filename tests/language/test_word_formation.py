@@ -116,7 +116,7 @@ def test_un_before_an_unknown_word_stays_unknown(lexicon):
         ("bead-polished chrome", "polished chrome", "'polished'"),
         ("matte look plastic", "matte plastic", "'look'"),
         ("brushed brass look", "brushed brass", "'look'"),
-        ("marble effect tiles", "marble", "'effect'"),
+        ("marble effect tiles", "ceramic tile with a marble effect", "the look of marble"),
         ("rough-hewn pine", "rough pine", "first part"),
         ("wire brushed ash", "brushed ash", "saying how"),
         ("walnut-veneer", "walnut", "material of the veneer"),
@@ -127,8 +127,8 @@ def test_un_before_an_unknown_word_stays_unknown(lexicon):
         ("beadboard wainscot", "pine", "material of the wainscot"),  # a building product names the material
         ("a bench in teak", "teak", "material of the bench"),  # 'in' after an object: its material
         ("steel door handle", "steel", "material of the"),
-        ("leather-look vinyl", "tobacco vinyl", "with the look of leather: its colour"),
-        ("marble-effect porcelain", "bone porcelain with veins", "with the look of marble"),
+        ("leather-look vinyl", "vinyl with a leather effect", "the look of leather: its colour"),
+        ("marble-effect porcelain", "porcelain with a marble effect", "the look of marble"),
         ("mirror-like chrome", "mirror chrome", "'mirror'"),
         ("gloss finish white paint", "glossy white paint", "'finish'"),
     ],
