@@ -12,6 +12,7 @@ from . import ast
 from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
 from .parser import parsed_item, parsed_material
+from .phrase_patterns import alternatives
 from .spans import Span
 from .suggest import teaching
 from .tagged import NOTE_CODE, Candidate, Tagged, written_span, written_text
@@ -58,9 +59,7 @@ def on_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[a
 def _joining(text: str) -> tuple[int, int] | None:
     """Where the first joining word stands in the line ('on', 'over', 'on top of'), or None."""
     words = teaching()["hedges"]["on"]
-    pattern = (
-        r"\b(?:" + "|".join(re.escape(w).replace(r"\ ", r"\s+") for w in sorted(words, key=len, reverse=True)) + r")\b"
-    )
+    pattern = r"\b(?:" + alternatives(words) + r")\b"
     found = re.search(pattern, text.lower())
     return (found.start(), found.end()) if found is not None else None
 
@@ -76,7 +75,7 @@ def likeness_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tu
     """'chrome, like a bathroom tap', 'brass, as on an old ship': a comparison with a thing after
     the material, set off by a comma, is read past (teaching.toml [hedges] `likeness`); None when
     the words before it are not a material."""
-    found = re.search(r",\s*(?:" + _pattern(teaching()["hedges"]["likeness"]) + r")\b", text.lower())
+    found = re.search(r",\s*(?:" + alternatives(teaching()["hedges"]["likeness"]) + r")\b", text.lower())
     if found is None:  # 'something light, like birch': a bare 'like' names the material only after describing words
         bare = re.search(r",\s*like\b", text.lower())
         if bare is None or not words:
@@ -116,7 +115,3 @@ def _described_likeness(
     reading = f"{written_text(said)} {written_text(after)}"
     note = f"read '{text.strip()}' as '{reading}': the likeness names the material, the words before it describe it"
     return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
-
-
-def _pattern(phrases: list[str]) -> str:
-    return "|".join(re.escape(w).replace(r"\ ", r"\s+") for w in sorted(phrases, key=len, reverse=True))

@@ -13,6 +13,7 @@ from . import ast
 from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
 from .parser import parsed_material
+from .phrase_patterns import alternatives
 from .suggest import teaching
 from .tagged import NOTE_CODE, Tagged, written_span, written_text
 
@@ -24,10 +25,10 @@ def relative_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> t
     has no relative opener, or its sides are not a material and describing words."""
     table = teaching()["hedges"]
     low = text.lower()
-    opener = re.search(r"\s(?:" + _alternatives(table["relative"]) + r")\s", low)
+    opener = re.search(r"\s(?:" + alternatives(table["relative"]) + r")\s", low)
     if opener is None or not words:
         return None
-    tail = re.search(r"\s(?:" + _alternatives(table["relative_tails"]) + r")[\s.!,]*$", low[opener.end() - 1 :])
+    tail = re.search(r"\s(?:" + alternatives(table["relative_tails"]) + r")[\s.!,]*$", low[opener.end() - 1 :])
     end = opener.end() - 1 + tail.start() if tail is not None else len(text)
     line_start = words[0].span.start - (words[0].span.col - 1)
     before = [w for w in words if w.span.start - line_start < opener.start()]
@@ -51,7 +52,3 @@ def _describing(words: Sequence[Tagged]) -> list[Tagged]:
         Tagged(w.text, w.span, tuple(c for c in w.candidates if c.tag != "NOUN") or w.candidates, w.unknown)
         for w in words
     ]
-
-
-def _alternatives(phrases: list[str]) -> str:
-    return "|".join(re.escape(p).replace(r"\ ", r"\s+") for p in sorted(phrases, key=len, reverse=True))

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any
 
 from . import ast
 from .diagnostics import Diagnostic, Severity
+from .phrase_patterns import alternatives
 from .suggest import teaching
 from .tagged import NOTE_CODE, Tagged
 
@@ -40,16 +41,10 @@ def _rules() -> tuple[frozenset[str], re.Pattern[str], re.Pattern[str], re.Patte
     openers = [*teaching()["politeness"]["leading"], *table["openers"]]
     phrases = table["leading"]
     firsts = frozenset(p.split()[0] for p in [*openers, *phrases])
-    opener = re.compile(rf"(?:{_alternatives(openers)})\s*[,!.:;]?\s+")
-    removal = re.compile(rf"(?:{_alternatives(phrases)})\s+")
-    trailing = re.compile(rf"(?:[\s,.!?]+(?:{_alternatives(table['trailing'])}))*[\s,.!?]*$")
+    opener = re.compile(rf"(?:{alternatives(openers)})\s*[,!.:;]?\s+")
+    removal = re.compile(rf"(?:{alternatives(phrases)})\s+")
+    trailing = re.compile(rf"(?:[\s,.!?]+(?:{alternatives(table['trailing'])}))*[\s,.!?]*$")
     return firsts, opener, removal, trailing, frozenset(table["negations"])
-
-
-def _alternatives(phrases: list[str]) -> str:
-    """A regex alternation of the phrases, longest first, each a whole word sequence."""
-    ordered = sorted(set(phrases), key=len, reverse=True)
-    return "|".join(re.escape(p).replace(r"\ ", r"\s+") for p in ordered)
 
 
 def removal_line(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast.Refinement, Diagnostic] | None:
