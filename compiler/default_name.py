@@ -13,7 +13,7 @@ from collections.abc import Iterable
 from . import ast
 from .spans import Span
 
-__all__ = ["name_words"]
+__all__ = ["name_words", "written_words"]
 
 
 def name_words(material: ast.Material) -> list[str]:
@@ -23,10 +23,10 @@ def name_words(material: ast.Material) -> list[str]:
     words.append(material.nouns[0])
     if material.coat is not None or material.features:  # most phrases have no 'with' clause
         words += _clause_words(material)
-    return _as_written(words)
+    return written_words(words)
 
 
-def _as_written(words: list[ast.Word]) -> list[str]:
+def written_words(words: list[ast.Word]) -> list[str]:
     """The words' texts; parts read from one written word ('darkest' = 'intensely' on 'est', 'dark'
     on 'dark') are put back together as written ('darkest', not 'est_dark')."""
     out: list[str] = []

@@ -17,7 +17,7 @@ from .phrase_patterns import alternatives
 from .suggest import teaching
 from .tagged import NOTE_CODE, Tagged, written_span, written_text
 
-__all__ = ["relative_material"]
+__all__ = ["participle_after", "relative_material"]
 
 
 def relative_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
@@ -52,3 +52,39 @@ def _describing(words: Sequence[Tagged]) -> list[Tagged]:
         Tagged(w.text, w.span, tuple(c for c in w.candidates if c.tag != "NOUN") or w.candidates, w.unknown)
         for w in words
     ]
+
+
+def participle_after(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
+    """'oak painted white', 'steel powder-coated in black', 'walls stained dark grey': a material, a
+    describing word, then only a colour is the colour, the describing word and the material
+    ('white painted oak'), with a note; None for any other line."""
+    said = [w for w in words if w.text[:1].isalnum()]
+    at = next((i for i, w in enumerate(said) if not any(c.tag in ("NOUN", "ARTICLE") for c in w.candidates)), 0)
+    if at == 0 or at + 1 >= len(said) or not _only(said[at : at + 1], ("ADJ",)):
+        return None
+    rest = [w for w in said[at + 1 :] if w.text.lower() not in IN_WORDS]
+    if not rest or not _only(rest, ("COLOR", "SHADE", "ADV")) or not any(_has(w, "COLOR") for w in rest):
+        return None
+    nouns = said[:at]
+    article = nouns[:1] if _has(nouns[0], "ARTICLE") else []
+    reordered = [*article, *rest, said[at], *nouns[len(article) :]]
+    material = parsed_material(reordered, text, lexicon.caches.shapes)
+    if material is None:
+        return None
+    reading = " ".join(written_text([w]) for w in reordered)
+    note = f"read '{text.strip()}' as '{reading}': the colour after the describing word is the material's"
+    return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
+
+
+#: words read past between the describing word and its colour ('powder-coated in black')
+IN_WORDS = frozenset(("in", "a", "an"))
+
+
+def _has(word: Tagged, tag: str) -> bool:
+    return any(c.tag == tag for c in word.candidates)
+
+
+def _only(words: Sequence[Tagged], tags: tuple[str, ...]) -> bool:
+    """Whether every word has one of the tags (and nothing else)."""
+    return all(w.candidates and all(c.tag in tags for c in w.candidates) for w in words)
+

@@ -450,7 +450,7 @@ class WordFormation:
                     if len(stem.rstrip("-") + ending) < self.rules.min_part:  # icy: ic + e = ice
                         continue
                     found = self._kept(self._known(stem + ending), rule["reads_as"])
-                    if found and rule["exact"]:  # 'honest' is not 'hone'-est: the stem names its word
+                    if found and rule["exact"]:  # 'honest' is not 'hone'-est: the stem is its word's own name
                         found = tuple(c for c in found if c.key == stem.rstrip("-") + ending)
                     if found:
                         return self._derived_reading(word, stem, stem.rstrip("-") + ending, found, rule)
@@ -459,7 +459,14 @@ class WordFormation:
     def _derived_reading(
         self, word: str, stem: str, base: str, found: tuple[Candidate, ...], rule: dict[str, Any]
     ) -> Reading:
-        """The stem's reading; an adjective under a suffix with an adverb ('roughish') is qualified by it."""
+        """The stem's reading; an adjective under a suffix with an adverb ('roughish') is qualified by
+        it, one under a suffix with a refinement ('silkier') is its comparative ('more silky')."""
+        if rule["refine"] and found[0].tag == "ADJ":
+            parts = (
+                Part(0, 0, len(stem), None, (Candidate("REFINE", rule["refine"], "refinements"),)),
+                Part(0, 0, 0, len(stem), self._kept(found, ("ADJ",))),
+            )
+            return Reading(parts, 1, f"read '{word}' as '{rule['refine']} {found[0].key}' ({rule['doc']})")
         adverb = rule["adverb"]
         if not adverb or found[0].tag not in ("ADJ", "SHADE"):
             return _whole(found, f"read '{word}' as '{base}' ({rule['doc']})")

@@ -118,7 +118,7 @@ def _prefix(c: Checker, raw: object, i: int) -> dict[str, Any]:
 def _suffix(c: Checker, raw: object, i: int) -> dict[str, Any]:
     path = ("suffix", i)
     table = c.table(raw, path)
-    c.known_keys(table, ("forms", "endings", "reads_as", "look", "adverb", "exact", "doc"), path)
+    c.known_keys(table, ("forms", "endings", "reads_as", "look", "adverb", "refine", "exact", "doc"), path)
     look, exact = table.get("look", False), table.get("exact", False)
     for key, value in (("look", look), ("exact", exact)):
         if not isinstance(value, bool):
@@ -133,6 +133,7 @@ def _suffix(c: Checker, raw: object, i: int) -> dict[str, Any]:
         "look": look,
         "exact": exact,
         "adverb": c.string(table.get("adverb", ""), (*path, "adverb")),
+        "refine": c.string(table.get("refine", ""), (*path, "refine")),
         "doc": c.string(c.required(table, "doc", path), (*path, "doc"), blank=False),
     }
 

@@ -44,8 +44,10 @@ def item_words(item: ast.RefineItem) -> tuple[ast.Word, ...]:
 
 
 def item_text(item: ast.RefineItem) -> str:
-    """The refinement as written: 'slightly less glossy'."""
-    return " ".join(w.text for w in item_words(item))
+    """The refinement as written: 'slightly less glossy' ('silkier', read as 'more silky', as one word)."""
+    from ..default_name import written_words
+
+    return " ".join(written_words(list(item_words(item))))
 
 
 def note(span: Span | None, code: str, message: str, hints: tuple[str, ...] = ()) -> Diagnostic:

@@ -147,3 +147,17 @@ def test_a_relative_clause_after_an_article(compile_text):
     result = compile_text("a brass that has gone dull")
     assert material(result)["params"] == material(compile_text("dull brass"))["params"]
     assert not any("'that' as the material above" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as",
+    [
+        ("oak painted white", "white painted oak"),
+        ("steel powder-coated in black", "black powder-coated steel"),
+        ("the door painted sage green", "sage green painted door"),
+    ],
+)
+def test_a_colour_after_a_describing_word_after_the_material(compile_text, phrase, same_as):
+    result = compile_text(phrase)
+    assert material(result)["params"] == material(compile_text(same_as))["params"]
+    assert any("the colour after the describing word" in d.message for d in result.diagnostics)

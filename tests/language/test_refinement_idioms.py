@@ -227,3 +227,11 @@ def test_something_keeps_its_degree():
 def test_a_colour_ending_in_er_after_an_opener_is_a_complaint(stdlib):
     text, _ = refined("red plastic", "it's a bit amber", stdlib, "t")
     assert text.splitlines()[-1].endswith("a bit less amber")
+
+
+def test_a_comparative_the_lexicon_lacks_is_more_of_its_adjective():
+    """'waxier' = more waxy (word_formation.toml: X-er on an adjective without a comparative)."""
+    _, got, result = refine("oak", "waxier")
+    _, want, _ = refine("oak", "more waxy")
+    assert got["params"] == want["params"]
+    assert any("'more waxy'" in d.message for d in result.diagnostics)

@@ -177,3 +177,18 @@ def test_german_listing_words(phrase, same_as):
 def test_arolla_pine_is_a_pale_yellow_softwood(compile_text):
     L, C, h = lch(material(compile_text("swiss stone pine"))["params"]["base_color"])
     assert L > 0.7 and 50 <= h <= 90
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as",
+    [("quarter-sawn sycamore", "sycamore"), ("rift-sawn ash", "ash"), ("wide-plank oak floorboards", "oak")],
+)
+def test_how_boards_are_cut_is_read_past(compile_text, phrase, same_as):
+    got, want = material(compile_text(phrase)), material(compile_text(same_as))
+    assert got["params"] == want["params"]
+
+
+def test_wide_grained_stays_coarse_grained(compile_text):
+    got = material(compile_text("wide grained oak"))
+    assert got["params"] == material(compile_text("coarse-grained oak"))["params"]
+    assert got["maps"] == material(compile_text("coarse-grained oak"))["maps"]
