@@ -17,7 +17,7 @@ from .phrase_patterns import alternatives
 from .suggest import teaching
 from .tagged import NOTE_CODE, Tagged, written_span, written_text
 
-__all__ = ["participle_after", "relative_material"]
+__all__ = ["describing_after", "participle_after", "relative_material"]
 
 
 def relative_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
@@ -76,6 +76,9 @@ def participle_after(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tu
     return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
 
 
+#: the negations that, after a material, say what it has not ('with no gloss', 'without shine')
+NEGATIONS = frozenset(("no", "not", "without", "zero"))
+
 #: words read past between the describing word and its colour ('powder-coated in black')
 IN_WORDS = frozenset(("in", "a", "an"))
 
@@ -88,3 +91,27 @@ def _only(words: Sequence[Tagged], tags: tuple[str, ...]) -> bool:
     """Whether every word has one of the tags (and nothing else)."""
     return all(w.candidates and all(c.tag in tags for c in w.candidates) for w in words)
 
+
+def describing_after(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
+    """'paint with no gloss', 'plastic without shine': a negated describing word said after the
+    material (with or without 'with') is its describing word ('matte paint'), with a note; None when
+    the words after the material are anything else ('aluminum brushed' keeps its error)."""
+    said = [w for w in words if w.text[:1].isalnum()]
+    last = max((i for i, w in enumerate(said) if _has(w, "NOUN")), default=-1)
+    tail = said[last + 1 :]
+    if last < 0 or not tail:
+        return None
+    negated = tail[0].text.lower().split()[0] in NEGATIONS  # 'without shine' is one word read as 'dull'
+    if _has(tail[0], "WITH"):
+        tail = tail[1:]
+        negated = bool(tail) and tail[0].text.lower().split()[0] in NEGATIONS
+    if not negated or not _only(tail, ("ADJ", "ADV")) or not any(_has(w, "ADJ") for w in tail):
+        return None  # 'aluminum brushed' keeps its error: describing words come before the noun
+    head = said[: last + 1]
+    article = head[:1] if _has(head[0], "ARTICLE") else []
+    reordered = [*article, *tail, *head[len(article) :]]
+    material = parsed_material(reordered, text, lexicon.caches.shapes)
+    if material is None:
+        return None
+    note = f"read '{text.strip()}' as '{written_text(tail)} {written_text(head[len(article) :])}': words after the material describe it"
+    return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)

@@ -161,3 +161,20 @@ def test_a_colour_after_a_describing_word_after_the_material(compile_text, phras
     result = compile_text(phrase)
     assert material(result)["params"] == material(compile_text(same_as))["params"]
     assert any("the colour after the describing word" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as",
+    [
+        ("paint with no gloss", "matte paint"),
+        ("plastic with no shine", "dull plastic"),
+        ("paint without any gloss", "matte paint"),
+    ],
+)
+def test_a_negated_word_after_the_material_describes_it(compile_text, phrase, same_as):
+    assert material(compile_text(phrase))["params"] == material(compile_text(same_as))["params"]
+
+
+def test_a_plain_describing_word_after_the_material_keeps_its_error(compile_text):
+    result = compile_text("aluminum brushed")
+    assert not result.ok and any("comes after the noun" in d.message for d in result.diagnostics)
