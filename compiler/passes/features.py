@@ -27,6 +27,7 @@ from .colours import colour_text, resolve_colour
 from .feature_colour import meet, plain_colour, with_shades
 from .feature_maps import draw_feature_maps, graphs_of, roles_of
 from .noun_words import apply_noun_colour, noun_colour
+from .textured_colour import keep_pattern_visible
 from .words import COAT_CLASS, apply_adjective, apply_coat_entry, apply_group, group_weight
 
 MISSING = "W120"  # a feature nothing in the stdlib draws yet
@@ -177,6 +178,13 @@ def _draw_look(state: MaterialState, ctx: Context, clause: ast.Feature, colour: 
     if feature is not None:
         word = ast.Word(clause.word.text, feature.key, "features", clause.word.span)
         apply_feature(state, ctx, feature, ast.Feature((), word, clause.span))
+        if named:  # 'black marble-effect laminate': the named colour as the drawn pattern can carry it
+            named_words = tuple(
+                w for step in state.provenance.get("base_color", []) for w in step.words if w.category == "colours"
+            )
+            state.params["base_color"] = keep_pattern_visible(
+                state, ctx, state.params["base_color"], named_words, noun_of(state).key
+            )
     drawn = (["its colour"] if rgb is not None else []) + ([f"its {feature.key}"] if feature is not None else [])
     said = " and ".join(drawn) or "nothing of it (the line names the colour; no pattern to draw)"
     message = f"read '{colour.noun.text} {clause.word.text}' as the look of {colour.noun.key}: {said}"

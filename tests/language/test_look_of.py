@@ -22,8 +22,8 @@ def test_a_look_draws_the_pattern_of_its_noun(compile_text, phrase, graph):
 
 
 def test_a_colour_the_line_names_wins_over_the_looks(compile_text):
-    got = material(compile_text("black marble-effect laminate"))
-    assert got["params"]["base_color"] == material(compile_text("black laminate"))["params"]["base_color"]
+    got = material(compile_text("black marble-effect laminate"))  # black as marble's pattern carries it
+    assert got["params"]["base_color"] == material(compile_text("black marble"))["params"]["base_color"]
     assert got["maps"]["base_color"]["graph"] == "marble"
 
 
@@ -43,3 +43,10 @@ def test_a_look_said_in_a_clause_draws_the_same(compile_text, phrase, graph):
     noun = phrase.split()[3]
     assert got["params"]["base_color"] == material(compile_text(noun))["params"]["base_color"]
     assert any("the look of" in d.message for d in result.diagnostics)
+
+
+def test_a_dark_named_colour_keeps_the_looks_pattern_visible(compile_text):
+    """'black marble-effect laminate' draws pale veins on black, as 'black marble' does."""
+    look = material(compile_text("black marble-effect laminate"))["maps"]["base_color"]["params"]
+    plain = material(compile_text("black marble"))["maps"]["base_color"]["params"]
+    assert look.get("color_amount", 0) > 0.5 and look.get("color_amount") == plain.get("color_amount")
