@@ -14,7 +14,7 @@ from .line_parts import PART_MARKS, by_parts, material_then_comparatives
 from .lines import iter_lines
 from .on_clause import likeness_dropped, on_material
 from .parser import ParseFailure, describe_expected, parse_line_shape, parsed_item
-from .relative_clause import describing_after, participle_after, relative_material
+from .relative_clause import clause_after, describing_after, participle_after, relative_material
 from .removal import removal_line
 from .shape_store import save_shapes
 from .spans import Span
@@ -203,6 +203,7 @@ def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
         or relative_material(words, text, lexicon)
         or participle_after(words, text, lexicon)
         or describing_after(words, text, lexicon)
+        or clause_after(words, text, lexicon)
     )
     if placed is not None:
         return placed[0], [placed[1]]

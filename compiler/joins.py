@@ -277,8 +277,9 @@ class Joiner:
         )
 
     def _artifact(self, before: Tagged, word: Tagged, diags: list[Diagnostic]) -> Tagged:
-        """The material, with a note saying WordNet named the thing; the word's E001 goes."""
-        diags[:] = [d for d in diags if not (d.span == word.span and d.code == "E001")]
+        """The material, with a note saying WordNet named the thing; the word's error goes (E001, or
+        E002 for a word that says where it is used: 'oak kitchen', 'chrome trim')."""
+        diags[:] = [d for d in diags if not (d.span == word.span and d.code in ("E001", "E002"))]
         made = of_tag(before, "NOUN")
         name = self._artifact_name(word.text.lower())
         reading = f"'{made[0].key}' (the material of the {word.text}: WordNet 3.0 lists '{name}' as an artifact)"

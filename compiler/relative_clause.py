@@ -14,10 +14,11 @@ from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
 from .parser import parsed_material
 from .phrase_patterns import alternatives
+from .spans import Span
 from .suggest import teaching
-from .tagged import NOTE_CODE, Tagged, written_span, written_text
+from .tagged import NOTE_CODE, Candidate, Tagged, written_span, written_text
 
-__all__ = ["describing_after", "participle_after", "relative_material"]
+__all__ = ["clause_after", "describing_after", "participle_after", "relative_material"]
 
 
 def relative_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
@@ -114,4 +115,31 @@ def describing_after(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tu
     if material is None:
         return None
     note = f"read '{text.strip()}' as '{written_text(tail)} {written_text(head[len(article) :])}': words after the material describe it"
+    return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
+
+
+def clause_after(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
+    """'a matte white stoneware glaze', 'glossy oak varnish': describing words, a material, then a
+    coat or a feature last is the material with that clause, the describing words the clause's
+    ('stoneware with a matte white glaze'), with a note; None for any other line."""
+    said = [w for w in words if w.text[:1].isalnum()]
+    if len(said) < 3 or not (_has(said[-1], "FEATURE") or _has(said[-1], "COAT")) or _has(said[-1], "NOUN"):
+        return None
+    if not _has(said[-2], "NOUN"):
+        return None
+    article = said[:1] if _has(said[0], "ARTICLE") else []
+    describing = said[len(article) : -2]
+    if not describing or not _only(describing, ("ADJ", "COLOR", "SHADE", "ADV")):
+        return None
+    noun, last = said[-2], said[-1]
+    s = noun.span
+    at = min(s.start + 1, s.end)
+    joining = Tagged("with", Span(at, s.end, s.line, s.col + 1), (Candidate("WITH", "with", "keywords"),), implied_by=s)
+    kept = tuple(c for c in last.candidates if c.tag in ("FEATURE", "COAT"))
+    reordered = [*article, noun, joining, *describing, Tagged(last.text, last.span, kept, last.unknown)]
+    material = parsed_material(reordered, text, lexicon.caches.shapes)
+    if material is None:
+        return None
+    reading = f"{noun.text} with {written_text(describing)} {last.text}"
+    note = f"read '{text.strip()}' as '{reading}': the describing words go with the {last.text}"
     return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)

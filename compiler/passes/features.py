@@ -70,6 +70,8 @@ def apply_feature(state: MaterialState, ctx: Context, entry: Entry, clause: ast.
     used_colour = False
     if entry.get("adjective"):
         used_colour = _apply_adjective(state, ctx, entry, clause, weight, colour)
+        if entry.get("surface_words"):  # 'a matte glaze': the glaze, then its finish
+            clause = _with_surface_words_applied(state, ctx, clause)
     if entry.get("maps"):
         used_colour = _draw_maps(state, ctx, entry, clause, weight, colour) or used_colour
     if entry.get("coat"):
@@ -367,6 +369,18 @@ def _said(colour: ast.Colour, clause: ast.Feature) -> str:
 
 
 # ---------------------------------------------------------------- what the clause said that nothing used
+
+
+def _with_surface_words_applied(state: MaterialState, ctx: Context, clause: ast.Feature) -> ast.Feature:
+    """The clause's adjectives applied to the surface (after the feature's own adjective), and the
+    clause without them (they are used: no N121)."""
+    kept = []
+    for group in clause.groups:
+        if group.adjectives:
+            said = ast.Group("adjective", group.adverbs, (), group.adjectives, group.span)
+            apply_group(state, ctx, said, target="base")
+        kept.append(ast.Group(group.kind, group.adverbs, group.colours, (), group.span))
+    return ast.Feature(tuple(kept), clause.word, clause.span)
 
 
 def _report_unused(state: MaterialState, entry: Entry, clause: ast.Feature, colour: ast.Colour | None) -> None:

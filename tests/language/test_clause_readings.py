@@ -178,3 +178,26 @@ def test_a_negated_word_after_the_material_describes_it(compile_text, phrase, sa
 def test_a_plain_describing_word_after_the_material_keeps_its_error(compile_text):
     result = compile_text("aluminum brushed")
     assert not result.ok and any("comes after the noun" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    "phrase,same_as",
+    [
+        ("a matte white stoneware glaze", "stoneware with a matte white glaze"),
+        ("glossy oak varnish", "oak with a glossy varnish"),
+    ],
+)
+def test_a_clause_word_after_the_material_takes_the_describing_words(compile_text, phrase, same_as):
+    got, want = material(compile_text(phrase)), material(compile_text(same_as))
+    assert (got["params"], got["maps"]) == (want["params"], want["maps"])
+
+
+def test_a_matte_glaze_is_glazed_then_matte(compile_text):
+    matte = material(compile_text("stoneware with a matte glaze"))["params"]["roughness"]
+    glazed = material(compile_text("stoneware with a glaze"))["params"]["roughness"]
+    assert matte > glazed
+
+
+@pytest.mark.parametrize("phrase,same_as", [("oak kitchen", "oak"), ("brass trim", "brass")])
+def test_a_use_after_the_material_is_its_object(compile_text, phrase, same_as):
+    assert material(compile_text(phrase))["params"] == material(compile_text(same_as))["params"]
