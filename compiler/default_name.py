@@ -12,8 +12,9 @@ from collections.abc import Iterable
 
 from . import ast
 from .spans import Span
+from .tagged import written_words
 
-__all__ = ["name_words", "written_words"]
+__all__ = ["name_words"]
 
 
 def name_words(material: ast.Material) -> list[str]:
@@ -24,31 +25,6 @@ def name_words(material: ast.Material) -> list[str]:
     if material.coat is not None or material.features:  # most phrases have no 'with' clause
         words += _clause_words(material)
     return written_words(words)
-
-
-def written_words(words: list[ast.Word]) -> list[str]:
-    """The words' texts; parts read from one written word ('darkest' = 'intensely' on 'est', 'dark'
-    on 'dark') are put back together as written ('darkest', not 'est_dark')."""
-    out: list[str] = []
-    last: ast.Word | None = None
-    for word in words:
-        if last is not None and _parts_of_one_word(last, word):
-            first, second = (last, word) if last.span.start < word.span.start else (word, last)
-            out[-1] = first.text + second.text
-            last = ast.Word(out[-1], word.key, word.category, first.span.to(second.span))
-            continue
-        out.append(word.text)
-        last = word
-    return out
-
-
-def _parts_of_one_word(a: ast.Word, b: ast.Word) -> bool:
-    """Whether two words are parts read from one written word: each spans its own letters (an
-    implied word, 'with' or a noun no one typed, does not) and they touch."""
-    sa, sb = a.span, b.span
-    if sb.start != sa.end and sb.end != sa.start:  # the common case: words apart
-        return False
-    return sa.end - sa.start == len(a.text) > 0 and sb.end - sb.start == len(b.text) > 0
 
 
 def _clause_words(material: ast.Material) -> list[ast.Word]:

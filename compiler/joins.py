@@ -456,38 +456,15 @@ class Joiner:
         key = entry.get("feature") if entry is not None else None
         if key is None or noun not in out or not of_tag(noun, "NOUN") or self._own_pattern(noun):
             return
+        if any(of_tag(t, "FEATURE") and t.text == key for t in out[out.index(noun) + 1 :]):
+            return  # 'tiles with grout': said already
         if self._feature_clause(out, noun, key, thing.span):
             note = f"read '{thing.text}' as laid {thing.text}: with {key}"
             diags.append(Diagnostic(thing.span, Severity.NOTE, NOTE_CODE, note))
 
     def _feature_clause(self, out: list[Tagged], noun: Tagged, key: str, implied_by: Span) -> bool:
-        """The feature clause 'with KEY' after the material noun, first among the clauses (after a
-        colour said with 'in'); False when the words after the noun are not clauses or name it."""
-        if noun not in out:
-            return False
-        n = out.index(noun)
-        rest = out[n + 1 :]
-        if (rest and not of_tag(rest[0], "WITH")) or any(of_tag(t, "FEATURE") and t.text == key for t in rest):
-            return False
-        coloured = _in_colour_length(rest)  # 'tiles in deep green': the clause goes after the colour
-        after = rest[coloured - 1] if coloured else noun
-        n, rest = n + coloured, rest[coloured:]
-        at, col = after.span.end, after.span.col + after.span.end - after.span.start
-        inside = min(after.span.start + 1, after.span.end - 1)
-        clause = [
-            Tagged("with", Span(at, at, after.span.line, col), _WITH, implied_by=implied_by),
-            Tagged(
-                key,
-                Span(inside, inside, after.span.line, after.span.col + inside - after.span.start),
-                (Candidate("FEATURE", key, "features"),),
-                implied_by=implied_by,
-            ),
-        ]
-        if rest:
-            w = rest[0].span
-            clause.append(Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), _AND, implied_by=implied_by))
-        out[n + 1 : n + 1] = clause
-        return True
+        """The feature clause 'with KEY' after the material noun (see _clause_after_noun)."""
+        return self._clause_after_noun(out, noun, [(key, (Candidate("FEATURE", key, "features"),))], implied_by)
 
     def _look_of(self, look: Tagged, noun: Tagged, looks: list[tuple[Tagged, Tagged]]) -> list[Tagged]:
         """'marble-effect laminate', 'wood-look tiles': the noun, with the look of the other said as
@@ -498,29 +475,36 @@ class Joiner:
         return [made]
 
     def _look_clause(self, out: list[Tagged], noun: Tagged, look: Tagged) -> None:
-        """The finish clause 'with a LOOK effect' after the noun, first among the clauses."""
+        """The finish clause 'with a LOOK effect' after the noun (see _clause_after_noun)."""
+        looked = of_tag(look, "NOUN")
+        self._clause_after_noun(out, noun, [(looked[0].key, looked), ("effect", _FINISH)], look.span)
+
+    def _clause_after_noun(
+        self, out: list[Tagged], noun: Tagged, said: list[tuple[str, tuple[Candidate, ...]]], implied_by: Span
+    ) -> bool:
+        """The clause 'with' + `said` after the material noun, first among the clauses (after a colour
+        said with 'in': 'tiles in deep green'), each word implied by `implied_by` and placed inside the
+        word before it (the parser keys words by start); False when the words after the noun are not
+        clauses."""
         if noun not in out:
-            return
+            return False
         n = out.index(noun)
         rest = out[n + 1 :]
         if rest and not of_tag(rest[0], "WITH"):
-            return
-        s = noun.span
-        inside = [min(s.start + k, max(s.end - 1, s.start)) for k in (1, 2)]  # the parser keys words by start
-        clause = [
-            Tagged("with", Span(s.end, s.end, s.line, s.col + s.end - s.start), _WITH, implied_by=look.span),
-            Tagged(
-                of_tag(look, "NOUN")[0].key,
-                Span(inside[0], inside[0], s.line, s.col + 1),
-                of_tag(look, "NOUN"),
-                implied_by=look.span,
-            ),
-            Tagged("effect", Span(inside[1], inside[1], s.line, s.col + 2), _FINISH, implied_by=look.span),
-        ]
+            return False
+        coloured = _in_colour_length(rest)
+        after = rest[coloured - 1] if coloured else noun
+        n, rest = n + coloured, rest[coloured:]
+        s = after.span
+        clause = [Tagged("with", Span(s.end, s.end, s.line, s.col + s.end - s.start), _WITH, implied_by=implied_by)]
+        for k, (text, candidates) in enumerate(said, start=1):
+            at = min(s.start + k, max(s.end - 1, s.start))
+            clause.append(Tagged(text, Span(at, at, s.line, s.col + at - s.start), candidates, implied_by=implied_by))
         if rest:
             w = rest[0].span
-            clause.append(Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), _AND, implied_by=look.span))
+            clause.append(Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), _AND, implied_by=implied_by))
         out[n + 1 : n + 1] = clause
+        return True
 
     def _own_pattern(self, noun: Tagged) -> bool:
         """Whether the material draws a colour pattern of its own (marble's veins, granite's grains):

@@ -8,6 +8,7 @@ comparatives ('go darker, more like walnut': walnut, then darker)."""
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 
 from . import ast
 from .diagnostics import Diagnostic, Severity
@@ -27,25 +28,17 @@ Reader = Callable[[int, int, list[Diagnostic]], "ast.Item | None"]
 def by_parts(text: str, line: int, offset: int, read: Reader) -> tuple[ast.Refinement, list[Diagnostic]] | None:
     """The line as one refinement of its parts and the parts' notes, or None (one part, an empty
     part, or a part that is no refinement or has an error)."""
-    cuts = [-1, *(i for i, ch in enumerate(text) if ch in PART_MARKS), len(text)]
+    cuts = _cuts(text)
     if len(cuts) < 3:
         return None
-    found: list[ast.Refinement] = []
-    notes: list[Diagnostic] = []
     complained = any(_complaint(text[a + 1 : b]) for a, b in zip(cuts, cuts[1:]))
-    for start, end in zip(cuts, cuts[1:]):
-        written = text[start + 1 : end]
-        if not written.strip():
-            return None
-        if _courtesy(written) or (complained and _echo(written)):
-            notes.append(_read_past(written, start + 1, line, offset))
-            continue
-        said: list[Diagnostic] = []
-        node = read(start + 1, end, said)
-        if not isinstance(node, ast.Refinement) or node.removed or any(d.is_error for d in said):
-            return None
-        found.append(node)
-        notes += said
+    parts = _parts_read(cuts, text, line, offset, read, lambda w: _courtesy(w) or (complained and _echo(w)))
+    if parts is None:
+        return None
+    nodes, notes = parts
+    found = [n for n in nodes if isinstance(n, ast.Refinement) and not n.removed]
+    if len(found) != len(nodes):
+        return None
     changes = [p for p in found if p.material is not None]
     if not found or len(changes) > 1 or (changes and not _comparatives_beside(found, changes[0])):
         return None
@@ -58,45 +51,61 @@ def material_then_comparatives(
     """'walnut, a bit darker', 'reddish brown, maybe a bit darker': a material, then parts that are
     comparatives only, is the material moved by them in turn (its inline comparatives, applied after
     its describing words), and the parts' notes; None for any other line."""
-    cuts = [-1, *(i for i, ch in enumerate(text) if ch in PART_MARKS), len(text)]
+    cuts = _cuts(text)
     if len(cuts) < 3:
         return None
-    notes: list[Diagnostic] = []
     first: list[Diagnostic] = []
     material = read(0, cuts[1], first)
     if not isinstance(material, ast.Material) or any(d.is_error for d in first):
         return None
-    items: list[ast.RefineItem] = []
-    for start, end in zip(cuts[1:], cuts[2:]):
+    parts = _parts_read(cuts[1:], text, line, offset, read, _courtesy)
+    if parts is None or not parts[0] or not all(_comparatives_only(n) for n in parts[0]):
+        return None
+    items = [i for n in parts[0] if isinstance(n, ast.Refinement) for i in n.items]
+    moved = replace(
+        material, span=material.span.to(items[-1].span), text=text, refinements=(*material.refinements, *items)
+    )
+    return moved, [*first, *parts[1]]
+
+
+def _cuts(text: str) -> list[int]:
+    """Where the parts of a line end: -1, each part mark, the line's length."""
+    return [-1, *(i for i, ch in enumerate(text) if ch in PART_MARKS), len(text)]
+
+
+def _parts_read(
+    cuts: list[int], text: str, line: int, offset: int, read: Reader, read_past: Callable[[str], bool]
+) -> tuple[list[ast.Item], list[Diagnostic]] | None:
+    """Each part between the cuts read as a line of its own, and the notes (a part `read_past`
+    says is courtesy or an echo gets a note only); None for an empty part, or one that does not
+    read or has an error."""
+    nodes: list[ast.Item] = []
+    notes: list[Diagnostic] = []
+    for start, end in zip(cuts, cuts[1:]):
         written = text[start + 1 : end]
         if not written.strip():
             return None
-        if _courtesy(written):
+        if read_past(written):
             notes.append(_read_past(written, start + 1, line, offset))
             continue
         said: list[Diagnostic] = []
         node = read(start + 1, end, said)
-        if not isinstance(node, ast.Refinement) or not node.items or node.groups or node.coat or node.features:
+        if node is None or any(d.is_error for d in said):
             return None
-        if any(isinstance(item.target, ast.Colour) for item in node.items):
-            return None  # 'walnut, more red': a colour named is a refinement line's step, not a new colour
-        if node.material is not None or node.removed or any(d.is_error for d in said):
-            return None
-        items += node.items
+        nodes.append(node)
         notes += said
-    if not items:
-        return None
-    moved = ast.Material(
-        material.name,
-        material.groups,
-        material.nouns,
-        material.coat,
-        material.span.to(items[-1].span),
-        text,
-        (*material.refinements, *items),
-        material.features,
+    return nodes, notes
+
+
+def _comparatives_only(node: ast.Item) -> bool:
+    """A part of comparatives and nothing else ('a bit darker'; not 'more red': a colour named is a
+    refinement line's step, not a new colour)."""
+    return (
+        isinstance(node, ast.Refinement)
+        and bool(node.items)
+        and not (node.groups or node.coat or node.features or node.material or node.removed)
+        and not any(isinstance(item.target, ast.Colour) for item in node.items)
     )
-    return moved, [*first, *notes]
 
 
 def _courtesy(written: str) -> bool:
@@ -121,13 +130,9 @@ def _echo(written: str) -> bool:
     table = teaching()["politeness"]
     words = [w.strip(".,!?;:") for w in written.lower().split()]
     words = _without_edges(words, table["leading"], at_start=True)
-    words = _without_edges(words, [*table["trailing"], *DEGREE_TAILS], at_start=False)
-    said = " ".join(w for w in words if w != "back")  # the place word the tagger reads past
+    words = _without_edges(words, [*table["trailing"], *table["degree_tails"]], at_start=False)
+    said = " ".join(w for w in words if w not in table["echo_read_past"])  # 'back': the tagger reads it past
     return said in table["idioms"]
-
-
-#: degree words that may follow an echoing idiom ('knock it back a bit')
-DEGREE_TAILS = ("a bit", "a little", "a little bit", "a touch", "a notch", "a tad", "slightly", "a smidge", "somewhat")
 
 
 def _without_edges(words: list[str], phrases: list[str] | tuple[str, ...], at_start: bool) -> list[str]:

@@ -17,7 +17,7 @@ from .spans import Span
 from .suggest import teaching
 from .tagged import NOTE_CODE, Candidate, Tagged, written_span, written_text
 
-__all__ = ["likeness_dropped", "on_material"]
+__all__ = ["implied_with", "likeness_dropped", "on_material"]
 
 
 def on_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
@@ -34,7 +34,7 @@ def on_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[a
     if not before or not after or any(w.unknown for w in known):
         return None
     material = parsed_material(after, text, lexicon.caches.shapes)
-    clause = parsed_item([_with(before[0]), *before], text, lexicon.caches.shapes)
+    clause = parsed_item([implied_with(before[0]), *before], text, lexicon.caches.shapes)
     if material is None or not isinstance(clause, ast.Refinement) or not (clause.coat or clause.features):
         return None
     if material.coat is not None and clause.coat is not None:
@@ -64,7 +64,7 @@ def _joining(text: str) -> tuple[int, int] | None:
     return (found.start(), found.end()) if found is not None else None
 
 
-def _with(first: Tagged) -> Tagged:
+def implied_with(first: Tagged) -> Tagged:
     """An implied 'with' before the clause's first word (inside it: the parser keys words by start)."""
     s = first.span
     at = min(s.start + 1, s.end)

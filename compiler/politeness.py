@@ -12,6 +12,7 @@ beside them (`marks`: "Hi! brushed steel"); a word inside the phrase is never dr
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from typing import Any
 
 from .diagnostics import Diagnostic, Severity
 from .spans import Span
@@ -59,15 +60,8 @@ def without_politeness(
                 break
             dropped.append(kept[:taken] if at_start else kept[-taken:])
             kept = kept[taken:] if at_start else kept[:-taken]
-    if len(kept) > 1 and kept[-1].text.lower() in table["colour_heads"] and _is_colour(kept[-2]):
-        dropped.append(kept[-1:])  # 'a soft putty colour': the colour named
-        kept = kept[:-1]
-    place = _place_at_end(kept, table)
-    where: list[Span] = []
-    if place:  # 'terracotta quarry tiles in the hallway': where it is used (its errors go with it)
-        dropped.append(kept[-place:])
-        where = [kept[-place].span.to(kept[-1].span)]
-        kept = kept[:-place]
+    kept, said_last, where = _without_last_words(kept, table)
+    dropped += said_last
     idiom = _idiom(kept, table["idioms"], tag) if tag is not None and not put else None
     if idiom is not None:
         said_run, put, kept = idiom
@@ -79,9 +73,7 @@ def without_politeness(
     if not dropped:
         return diags, kept
     spans = [w.span for run in dropped for w in run] + read_as
-    out = [
-        d for d in diags if not _inside(d, spans) and not _within_any(d, where)
-    ]  # their unknown words, stray marks, readings
+    out = [d for d in diags if not _inside(d, spans) and not _inside(d, where, any_code=True)]  # their words' errors
     changing = frozenset((*table["changes"], *table["changes_at_end"]))  # 'make it', 'instead': not courtesy
     for run in dropped:
         text = " ".join(w.text for w in run if w.text[:1].isalnum())
@@ -99,6 +91,22 @@ def without_politeness(
             note = f"read past '{text}': a phrase names the material only, so politeness is left out"
         out.append(Diagnostic(run[0].span.to(run[-1].span), Severity.NOTE, NOTE_CODE, note))
     return out, (kept + put if idiom is not None else put + kept)
+
+
+def _without_last_words(
+    kept: list[Tagged], table: dict[str, Any]
+) -> tuple[list[Tagged], list[list[Tagged]], list[Span]]:
+    """The words without what ends them and says nothing of the look: 'colour' after a colour ('a
+    soft putty colour'), then where the material is used ('tiles in the hallway'); the runs read
+    past, and the place's span (all its errors go with it)."""
+    runs: list[list[Tagged]] = []
+    if len(kept) > 1 and kept[-1].text.lower() in table["colour_heads"] and _is_colour(kept[-2]):
+        runs.append(kept[-1:])
+        kept = kept[:-1]
+    place = _place_at_end(kept, table)
+    if not place:
+        return kept, runs, []
+    return kept[:-place], [*runs, kept[-place:]], [kept[-place].span.to(kept[-1].span)]
 
 
 def _is_colour(word: Tagged) -> bool:
@@ -166,12 +174,7 @@ def _without_pronoun(
     if len(kept) < 2 or kept[1].text.lower() not in pronouns:
         return kept, None, []
     verb = _participle(kept[0], tag)
-    if (
-        verb is None
-        and not let
-        and any(c.tag == "NOUN" for c in kept[0].candidates)
-        and kept[1].text.lower() in RELATIVES
-    ):
+    if verb is None and not let and any(c.tag == "NOUN" for c in kept[0].candidates) and _opens_relative(kept[1]):
         return kept, None, []  # 'teak that has silvered': a relative clause, not a verb on 'that'
 
     rest, past = kept[2:], [verb.span] if verb is not None else []
@@ -189,16 +192,13 @@ def _without_pronoun(
     return [said, *rest], kept[1], past
 
 
-#: the words after a verb and 'it' that say what it is brought to ('to a mirror finish')
-RESULT_OPENERS = (("to", "a"), ("to", "an"), ("into", "a"), ("to",))
-RESULT_NOUNS = frozenset(("finish", "shine", "sheen", "look", "surface"))
-
-
 def _result_words(rest: list[Tagged]) -> tuple[list[Tagged], list[Span]]:
     """'to a mirror finish' after 'polish it': the describing words of the result ('mirror') and the
-    spans read past with the verb ('to a', 'finish'); the words as they were and [] otherwise."""
+    spans read past with the verb ('to a', 'finish'); the words as they were and [] otherwise
+    (teaching.toml [politeness] result_openers, result_nouns)."""
+    table = teaching()["politeness"]
     lowered = [w.text.lower() for w in rest]
-    for opener in RESULT_OPENERS:
+    for opener in sorted((tuple(o.split()) for o in table["result_openers"]), key=len, reverse=True):
         n = len(opener)
         if tuple(lowered[:n]) != opener or len(rest) <= n:
             continue
@@ -206,23 +206,26 @@ def _result_words(rest: list[Tagged]) -> tuple[list[Tagged], list[Span]]:
         tail = [  # 'to a matte finish': the noun after a describing word ('a high shine' keeps it)
             w.span
             for w in said[-1:]
-            if w.text.lower() in RESULT_NOUNS and len(said) > 1 and any(c.tag == "ADJ" for c in said[-2].candidates)
+            if w.text.lower() in table["result_nouns"]
+            and len(said) > 1
+            and any(c.tag == "ADJ" for c in said[-2].candidates)
         ]
         said = [_as_describing(w) for w in said[: len(said) - len(tail)]]
         return said, [w.span for w in rest[:n]] + tail
     return rest, []
 
 
-LET_WORDS = frozenset(("let", "allow"))
-#: pronouns that, after a material noun, open a relative clause rather than stand for the material
-RELATIVES = frozenset(("that", "which"))
-
-
 def _let_pronoun(kept: list[Tagged], pronouns: Sequence[str]) -> list[Tagged]:
     """['let'] when the words open with 'let it' and a verb ('let it age a bit'), else []."""
-    if len(kept) > 2 and kept[0].text.lower() in LET_WORDS and kept[1].text.lower() in pronouns:
+    if len(kept) > 2 and kept[0].text.lower() in teaching()["politeness"]["let"] and kept[1].text.lower() in pronouns:
         return [kept[0]]
     return []
+
+
+def _opens_relative(word: Tagged) -> bool:
+    """Whether a pronoun opens a relative clause ('that', 'which': the first words of teaching.toml
+    [hedges] relative) rather than stands for the material above."""
+    return any(opener.split()[0] == word.text.lower() for opener in teaching()["hedges"]["relative"])
 
 
 def _as_describing(word: Tagged) -> Tagged:
@@ -271,16 +274,11 @@ def _rewrite_words(said: str, tag: Callable[[str], Tagged | None]) -> list[str]:
     return words
 
 
-def _within_any(diag: Diagnostic, spans: Sequence[Span]) -> bool:
-    """Whether a diagnostic, of any kind, is about words within one of the spans."""
+def _inside(diag: Diagnostic, spans: Sequence[Span], any_code: bool = False) -> bool:
+    """Whether a diagnostic is about dropped words only (its span within one of theirs): a note or an
+    unknown word's E001, or any diagnostic with `any_code` (a place's 'says where' E002)."""
     at = diag.span
-    return at is not None and any(s.start <= at.start and at.end <= s.end for s in spans)
-
-
-def _inside(diag: Diagnostic, spans: Sequence[Span]) -> bool:
-    """Whether a diagnostic is about dropped words only (its span within one of theirs)."""
-    at = diag.span
-    if at is None or (diag.is_error and diag.code != "E001"):
+    if at is None or (diag.is_error and diag.code != "E001" and not any_code):
         return False
     return any(s.start <= at.start and at.end <= s.end for s in spans)
 

@@ -12,11 +12,12 @@ from collections.abc import Sequence
 from . import ast
 from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
+from .on_clause import implied_with
 from .parser import parsed_material
 from .phrase_patterns import alternatives
-from .spans import Span
 from .suggest import teaching
-from .tagged import NOTE_CODE, Candidate, Tagged, written_span, written_text
+from .tagged import NOTE_CODE, Tagged, written_span, written_words
+from .tagger import Tagger
 
 __all__ = ["clause_after", "describing_after", "participle_after", "relative_material"]
 
@@ -38,13 +39,9 @@ def relative_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> t
         return None
     if not all(any(c.tag in ("ADJ", "COLOR", "SHADE", "ADV", "REFINE") for c in w.candidates) for w in after):
         return None
-    article = before[:1] if any(c.tag == "ARTICLE" for c in before[0].candidates) else []
-    material = parsed_material([*article, *_describing(after), *before[len(article) :]], text, lexicon.caches.shapes)
-    if material is None:
-        return None
-    said = " ".join(written_text(part) for part in (article, after, before[len(article) :]) if part)
-    note = f"read '{text.strip()}' as '{said}': the clause after the material describes it"
-    return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
+    article = _article(before)
+    reading = [*article, *_describing(after), *before[len(article) :]]
+    return _read_as(words, reading, text, lexicon, "the clause after the material describes it")
 
 
 def _describing(words: Sequence[Tagged]) -> list[Tagged]:
@@ -63,25 +60,31 @@ def participle_after(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tu
     at = next((i for i, w in enumerate(said) if not any(c.tag in ("NOUN", "ARTICLE") for c in w.candidates)), 0)
     if at == 0 or at + 1 >= len(said) or not _only(said[at : at + 1], ("ADJ",)):
         return None
-    rest = [w for w in said[at + 1 :] if w.text.lower() not in IN_WORDS]
+    rest = [w for w in said[at + 1 :] if not (_only([w], ("WITH",)) or _only([w], ("ARTICLE",)))]  # 'in a black'
     if not rest or not _only(rest, ("COLOR", "SHADE", "ADV")) or not any(_has(w, "COLOR") for w in rest):
         return None
     nouns = said[:at]
-    article = nouns[:1] if _has(nouns[0], "ARTICLE") else []
-    reordered = [*article, *rest, said[at], *nouns[len(article) :]]
-    material = parsed_material(reordered, text, lexicon.caches.shapes)
+    article = _article(nouns)
+    reading = [*article, *rest, said[at], *nouns[len(article) :]]
+    return _read_as(words, reading, text, lexicon, "the colour after the describing word is the material's")
+
+
+def _read_as(
+    words: Sequence[Tagged], reading: list[Tagged], text: str, lexicon: Lexicon, why: str
+) -> tuple[ast.Material, Diagnostic] | None:
+    """The material the words read in another order make, with the note saying so; None when that
+    order does not parse."""
+    material = parsed_material(reading, text, lexicon.caches.shapes)
     if material is None:
         return None
-    reading = " ".join(written_text([w]) for w in reordered)
-    note = f"read '{text.strip()}' as '{reading}': the colour after the describing word is the material's"
+    said = " ".join(written_words(reading))
+    note = f"read '{text.strip()}' as '{said}': {why}"
     return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
 
 
-#: the negations that, after a material, say what it has not ('with no gloss', 'without shine')
-NEGATIONS = frozenset(("no", "not", "without", "zero"))
-
-#: words read past between the describing word and its colour ('powder-coated in black')
-IN_WORDS = frozenset(("in", "a", "an"))
+def _article(words: Sequence[Tagged]) -> list[Tagged]:
+    """The article the words open with, as a list of none or one."""
+    return list(words[:1]) if words and _has(words[0], "ARTICLE") else []
 
 
 def _has(word: Tagged, tag: str) -> bool:
@@ -102,20 +105,16 @@ def describing_after(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tu
     tail = said[last + 1 :]
     if last < 0 or not tail:
         return None
-    negated = tail[0].text.lower().split()[0] in NEGATIONS  # 'without shine' is one word read as 'dull'
     if _has(tail[0], "WITH"):
         tail = tail[1:]
-        negated = bool(tail) and tail[0].text.lower().split()[0] in NEGATIONS
+    negations = Tagger.of(lexicon).formation().rules.negation_words  # 'without shine' is one word read 'dull'
+    negated = bool(tail) and tail[0].text.lower().split()[0] in negations
     if not negated or not _only(tail, ("ADJ", "ADV")) or not any(_has(w, "ADJ") for w in tail):
         return None  # 'aluminum brushed' keeps its error: describing words come before the noun
     head = said[: last + 1]
-    article = head[:1] if _has(head[0], "ARTICLE") else []
-    reordered = [*article, *tail, *head[len(article) :]]
-    material = parsed_material(reordered, text, lexicon.caches.shapes)
-    if material is None:
-        return None
-    note = f"read '{text.strip()}' as '{written_text(tail)} {written_text(head[len(article) :])}': words after the material describe it"
-    return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
+    article = _article(head)
+    reading = [*article, *tail, *head[len(article) :]]
+    return _read_as(words, reading, text, lexicon, "words after the material describe it")
 
 
 def clause_after(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
@@ -127,19 +126,11 @@ def clause_after(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[
         return None
     if not _has(said[-2], "NOUN"):
         return None
-    article = said[:1] if _has(said[0], "ARTICLE") else []
+    article = _article(said)
     describing = said[len(article) : -2]
     if not describing or not _only(describing, ("ADJ", "COLOR", "SHADE", "ADV")):
         return None
     noun, last = said[-2], said[-1]
-    s = noun.span
-    at = min(s.start + 1, s.end)
-    joining = Tagged("with", Span(at, s.end, s.line, s.col + 1), (Candidate("WITH", "with", "keywords"),), implied_by=s)
     kept = tuple(c for c in last.candidates if c.tag in ("FEATURE", "COAT"))
-    reordered = [*article, noun, joining, *describing, Tagged(last.text, last.span, kept, last.unknown)]
-    material = parsed_material(reordered, text, lexicon.caches.shapes)
-    if material is None:
-        return None
-    reading = f"{noun.text} with {written_text(describing)} {last.text}"
-    note = f"read '{text.strip()}' as '{reading}': the describing words go with the {last.text}"
-    return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
+    reading = [*article, noun, implied_with(noun), *describing, Tagged(last.text, last.span, kept, last.unknown)]
+    return _read_as(words, reading, text, lexicon, f"the describing words go with the {last.text}")

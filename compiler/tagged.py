@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Protocol
 
 from .spans import Span
 
@@ -40,14 +41,35 @@ def written_span(words: Sequence[Tagged]) -> Span:
     return (first.implied_by or first.span).to(last.implied_by or last.span)
 
 
-def written_text(words: Sequence[Tagged]) -> str:
-    """The words as the user wrote them: parts read from one word ('darkest' = 'intensely' on 'est',
-    'dark' on 'dark') are put back together in their places, words apart are joined by a space."""
+class Spanned(Protocol):
+    """A word as written: its text and where it stands (a tagged word or an AST word)."""
+
+    @property
+    def text(self) -> str: ...
+
+    @property
+    def span(self) -> Span: ...
+
+
+def written_words(words: Sequence[Spanned]) -> list[str]:
+    """The words' texts in their order; parts read from one written word ('darkest' = 'very' on
+    'est', 'dark' on 'dark') are put back together as written ('darkest'). Parts touch and each
+    spans its own letters; a word no one typed (an implied 'with', a noun) spans none of its own."""
     out: list[str] = []
-    end = None
-    for word in sorted(words, key=lambda w: w.span.start):
-        if end is not None and word.span.start != end:  # apart, or a word implied inside another
-            out.append(" ")
+    last: Span | None = None
+    for word in words:
+        at = word.span
+        own = at.end - at.start == len(word.text) > 0
+        if last is not None and own and (at.start == last.end or at.end == last.start):
+            out[-1] = out[-1] + word.text if at.start == last.end else word.text + out[-1]
+            last = last.to(at) if at.start == last.end else at.to(last)
+            continue
         out.append(word.text)
-        end = word.span.end
-    return "".join(out)
+        last = at if own else None
+    return out
+
+
+def written_text(words: Sequence[Spanned]) -> str:
+    """The words as the user wrote them, in the order they stand: parts of one word put back
+    together, words apart joined by a space."""
+    return " ".join(written_words(sorted(words, key=lambda w: w.span.start)))

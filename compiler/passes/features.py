@@ -170,22 +170,18 @@ def _draw_look(state: MaterialState, ctx: Context, clause: ast.Feature, colour: 
     """The look of a noun on this material: its colour, and the feature that draws its pattern (the
     feature whose colour map is the noun's own graph: marble's veins, oak's grain), noted."""
     assert colour.noun is not None
-    named = any(w.category == "colours" for step in state.provenance.get("base_color", []) for w in step.words)
+    named = tuple(w for step in state.provenance.get("base_color", []) for w in step.words if w.category == "colours")
     rgb = None if named else noun_colour(ctx, colour)  # 'black marble-effect laminate': black
     if rgb is not None:
         state.record("base_color", rgb, f"nouns.{colour.noun.key}: the look of {colour.noun.text}", (colour.noun,))
-    entry = ctx.lexicon.entry("nouns", colour.noun.key)
-    graph = ((entry.get("maps") or {}).get("base_color") or {}).get("graph") if entry is not None else None
+    graph = _colour_graph(ctx.lexicon.entry("nouns", colour.noun.key))
     feature = _feature_drawing(ctx, graph) if graph else None
     if feature is not None:
         word = ast.Word(clause.word.text, feature.key, "features", clause.word.span)
         apply_feature(state, ctx, feature, ast.Feature((), word, clause.span))
         if named:  # 'black marble-effect laminate': the named colour as the drawn pattern can carry it
-            named_words = tuple(
-                w for step in state.provenance.get("base_color", []) for w in step.words if w.category == "colours"
-            )
             state.params["base_color"] = keep_pattern_visible(
-                state, ctx, state.params["base_color"], named_words, noun_of(state).key
+                state, ctx, state.params["base_color"], named, noun_of(state).key
             )
     drawn = (["its colour"] if rgb is not None else []) + ([f"its {feature.key}"] if feature is not None else [])
     said = " and ".join(drawn) or "nothing of it (the line names the colour; no pattern to draw)"
@@ -195,10 +191,14 @@ def _draw_look(state: MaterialState, ctx: Context, clause: ast.Feature, colour: 
 
 def _feature_drawing(ctx: Context, graph: str) -> Entry | None:
     """The feature whose colour map this graph draws ('marble' -> veins), or None."""
-    for entry in ctx.lexicon.all_of("features").values():
-        if ((entry.get("maps") or {}).get("base_color") or {}).get("graph") == graph:
-            return entry
-    return None
+    return next((e for e in ctx.lexicon.all_of("features").values() if _colour_graph(e) == graph), None)
+
+
+def _colour_graph(entry: Entry | None) -> str | None:
+    """The graph an entry's base colour map is drawn by, or None."""
+    ref = ((entry.get("maps") or {}).get("base_color") or {}) if entry is not None else {}
+    graph = ref.get("graph")
+    return str(graph) if graph else None
 
 
 def _describes(clause: ast.Feature) -> bool:

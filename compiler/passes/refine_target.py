@@ -10,6 +10,7 @@ from ..diagnostics import Diagnostic, Severity
 from ..params import COAT_PARAMS, PARAMS, ranges
 from ..spans import Span
 from ..state import Context, MaterialState
+from ..tagged import written_words
 from .bracket import Move, bracket_move
 
 PARAM_RANGES = ranges(PARAMS)  # param -> (low, high), from the parameter table (immutable data)
@@ -45,8 +46,6 @@ def item_words(item: ast.RefineItem) -> tuple[ast.Word, ...]:
 
 def item_text(item: ast.RefineItem) -> str:
     """The refinement as written: 'slightly less glossy' ('silkier', read as 'more silky', as one word)."""
-    from ..default_name import written_words
-
     return " ".join(written_words(list(item_words(item))))
 
 
