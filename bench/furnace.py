@@ -10,9 +10,10 @@ camera model is in the IR's number, not an error term (`--camera` prints how far
 disc mean 2 int A mu dmu is from it). What the sphere shows decides the IR's material:
 - a textured material: the mean of its baked maps' texels (colour, roughness) as the constant
   parameters (A is linear in the colour; roughness varies little within a map);
-- glass: reflected plus transmitted light, R(mu) + c^2 T(mu) T_in / (1 - R_in) (c the tint per
-  crossing, T_in/R_in the inside interface at the refracted angle, its inter-reflections summed):
-  lossless clear glass shows ~1;
+- glass: reflected plus transmitted light, R(mu) + T(mu) T_in a / (1 - R_in a) (T_in/R_in the
+  inside interface at the refracted angle, its inter-reflections summed; a the Beer-Lambert
+  transmittance along one chord of the 10 cm ball, 2 R cos(theta_t), the same for every chord of
+  the ray): lossless clear glass shows ~1;
 - a volume: the surface model's A, whose base colour is the medium's colour (the dipole's total
   diffuse reflectance Rd) under the IR's interface: the classical dipole BSSRDF's (1 - F(mu)) Rd
   (1 - F_avg) plus the interface's own reflection; a colour map (marble's veins) is not in the
@@ -115,17 +116,19 @@ def shown_material(material):
 
 
 def glass_curve(material, grid: np.ndarray) -> np.ndarray:
-    """A glass sphere's A(mu) under the white sky, RGB: R + c^2 T T_in / (1 - R_in) (module doc)."""
-    from cnlmc.bsdf.transmission import interface_albedo
+    """A glass sphere's A(mu) under the white sky, RGB: R + T T_in a / (1 - R_in a) (module doc)."""
+    from cnlmc.backends.preview.meshes import SPHERE_DIAMETER_M
+    from cnlmc.bsdf.transmission import absorption, interface_albedo
 
     ior = float(material.params.ior)
     alpha = float(np.sqrt(np.prod(material.params.alpha)))
     r_out, t_out = interface_albedo(grid, ior, alpha)
     mu_in = np.sqrt(np.maximum(1.0 - (1.0 - grid**2) / ior**2, 0.0))
     r_in, t_in = interface_albedo(mu_in, 1.0 / ior, alpha)
-    tint = np.asarray(material.params.base_color, float) ** 2
-    through = t_out * t_in / np.maximum(1.0 - r_in, 1e-6)
-    return r_out[:, None] + through[:, None] * tint[None, :]
+    chord = SPHERE_DIAMETER_M * mu_in  # every chord of a ray inside a sphere has this length
+    kept = absorption(material, chord)
+    through = (t_out * t_in)[:, None] * kept / np.maximum(1.0 - r_in[:, None] * kept, 1e-6)
+    return r_out[:, None] + through
 
 
 def albedo_curve(material, grid: np.ndarray, n_samples: int = 1024) -> np.ndarray:

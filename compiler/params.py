@@ -173,8 +173,8 @@ class Params:
         kind="rgb",
         range=(0.0, 1.0),
         unit="linear Rec.709",
-        doc="diffuse albedo for diffuse/dielectric; the transmittance tint per crossing for glass; a multiplicative "
-        "tint on the Fresnel term for conductors (1,1,1 = the measured metal)",
+        doc="diffuse albedo for diffuse/dielectric; for glass the transmittance through transmission_depth of the "
+        "material (Beer-Lambert); a multiplicative tint on the Fresnel term for conductors (1,1,1 = the measured metal)",
         required=True,
         noun=True,
     )
@@ -225,6 +225,16 @@ class Params:
         range=(1.0, 5.0),
         models=("dielectric", "glass"),
         doc="scalar index of refraction (the outside medium is air, 1.0)",
+        noun=True,
+    )
+    transmission_depth: float = param(
+        default=0.05,
+        kind="number",
+        range=(1e-5, 100.0),
+        unit="metres",
+        models=("glass",),
+        doc="the depth through which base_color is the glass's transmittance: a path of length d inside keeps "
+        "base_color^(d / transmission_depth) (Beer-Lambert; docs/bsdf.md 'Absorption')",
         noun=True,
     )
     diffuse_roughness: float = param(

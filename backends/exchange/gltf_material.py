@@ -8,9 +8,12 @@ KHR_materials_* extensions it needs (glTF 2.0 spec, Appendix B; the extensions' 
   tangent is +U in both). Both invert exactly.
 - diffuse: metallic 0, roughness 1, KHR_materials_specular specularFactor 0 (no specular lobe).
 - dielectric: metallic 0, KHR_materials_ior. conductor: metallic 1, baseColor = f0 x tint.
-- glass: KHR_materials_transmission 1, KHR_materials_ior, KHR_materials_volume (thickness: the
-  preview object's size; attenuation left at infinity, since the IR's tint is per crossing,
-  as glTF's baseColor tints transmitted light at each crossing).
+- glass: KHR_materials_transmission 1, KHR_materials_ior, KHR_materials_volume: thickness the
+  object's size, attenuationColor the IR's base_color and attenuationDistance its
+  transmission_depth (metres): the same Beer-Lambert meaning (the colour white light turns into
+  after that distance inside); baseColor white, since glTF's baseColor would tint the light
+  again at each crossing. A colourless glass leaves the attenuation at infinity; a glass coloured
+  by a map keeps it as its baseColorTexture (glTF's tint at each crossing), unattenuated.
 - coat: KHR_materials_clearcoat 1 with clearcoatRoughness = sqrt(coat alpha).
 - sheen (velvet, cloth): KHR_materials_sheen with the IR's sheen colour and roughness as they are
   (the extension's lobe is the same Charlie sheen, alpha = roughness^2, with the same albedo scaling
@@ -45,6 +48,8 @@ def anisotropy_of(ax: float, ay: float) -> tuple[float, float]:
 
 def base_colour(material: Material) -> list[float]:
     params = material.params
+    if material.model.base == "glass":  # its colour is the volume's attenuation (`extensions`)
+        return [1.0, 1.0, 1.0, 1.0]
     colour = conductor_f0(params) if material.model.base == "conductor" else clip01(params.base_color)
     return [*colour, 1.0]
 
@@ -73,7 +78,7 @@ def extensions(material: Material, thickness: float) -> JSON:
         out["KHR_materials_ior"] = {"ior": float(params.ior)}
     if model.base == "glass":
         out["KHR_materials_transmission"] = {"transmissionFactor": 1.0}
-        out["KHR_materials_volume"] = {"thicknessFactor": float(thickness)}
+        out["KHR_materials_volume"] = glass_volume(material, thickness)
     if model.anisotropic and model.base != "diffuse":
         ax, ay = alpha_pair(params)
         strength = anisotropy_of(ax, ay)[1]
@@ -91,6 +96,16 @@ def extensions(material: Material, thickness: float) -> JSON:
         }
     out.update(subsurface_extensions(material, thickness))  # light inside the body (gltf_subsurface.py)
     return out
+
+
+def glass_volume(material: Material, thickness: float) -> JSON:
+    """KHR_materials_volume of a glass: its thickness, and its colour as an attenuation."""
+    volume: JSON = {"thicknessFactor": float(thickness)}
+    colour = clip01(material.params.base_color)
+    if min(colour) < 1.0 and "base_color" not in material.maps:  # a map tints as glTF's baseColor does
+        volume["attenuationColor"] = [float(c) for c in colour]
+        volume["attenuationDistance"] = float(material.params.transmission_depth)
+    return volume
 
 
 def widths_from_gltf(material: JSON) -> tuple[float, float]:

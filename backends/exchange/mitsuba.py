@@ -76,7 +76,10 @@ CAPABILITIES: Capabilities = {
         "give the IR's hemispherical energy (clipped to 1); bsdf=cnlm renders cnlmc's own",
     ),
     "model.conductor": ("exact", ""),
-    "model.glass": ("exact", ""),
+    "model.glass": (
+        "exact",
+        "a dielectric around a homogeneous absorbing medium: Beer-Lambert through transmission_depth",
+    ),
     "distribution.ggx": ("exact", ""),
     "distribution.ward": ("approximate", "Mitsuba 3 has no Ward BSDF: anisotropic GGX with the same alpha_u, alpha_v"),
     "anisotropic": (
@@ -379,8 +382,7 @@ def glass_bsdf(material: Material, tex: BsdfTextures, rough: bool) -> Prop:
     props = [
         prop("float", "int_ior", params.ior),
         prop("float", "ext_ior", 1.0),
-        colour("specular_transmittance", params.base_color, tex.get("base_color")),
-    ]
+    ]  # colourless: the glass's colour is its interior medium's absorption (mitsuba_subsurface.medium_entry)
     return node("roughdielectric" if rough else "dielectric", (roughness_props(material, tex) if rough else []) + props)
 
 
@@ -494,15 +496,16 @@ def cnlm_bsdf(material: Material, tex: BsdfTextures) -> Prop:
 #: a volume's base-colour map (marble's veins): Mitsuba's homogeneous medium has one albedo per channel
 MEDIUM_MAP_DROPPED = (
     "drop",
-    "Mitsuba's homogeneous medium cannot be textured: the body takes the IR's uniform subsurface colour and "
-    "the base-colour map (veins) is not drawn (the preview and the GLSL target colour the body by it)",
+    "Mitsuba's homogeneous medium cannot be textured: the body takes the IR's uniform colour (a volume's "
+    "subsurface colour, a glass's base colour) and the base-colour map is not drawn (the preview and the GLSL "
+    "target colour the body by it)",
 )
 
 
 def untextured_medium(material: Material) -> bool:
-    """A volume with a base-colour map, exported natively: the map would colour its body, which a
-    homogeneous medium cannot be."""
-    return material.model.subsurface == "volume" and "base_color" in material.maps
+    """A volume or a glass with a base-colour map, exported natively: the map would colour its
+    body, which a homogeneous medium cannot be."""
+    return (material.model.subsurface == "volume" or material.model.base == "glass") and "base_color" in material.maps
 
 
 def uses_cnlm(material: Material, options: Options) -> bool:

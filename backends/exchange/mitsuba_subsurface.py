@@ -70,11 +70,33 @@ def medium_coefficients(material: Material) -> tuple[list[float], list[float], f
     return [float(v) for v in medium.sigma_t], [float(v) for v in medium.single_albedo], float(sub.anisotropy)
 
 
+#: the darkest transmittance a glass medium is given (as the preview's shader clamps it): a colour
+#: channel of 0 would need an infinite extinction
+DARKEST_TRANSMITTANCE = 1e-4
+
+
+def glass_absorption(material: Material) -> list[float] | None:
+    """σa (1/m) of the glass's medium, per channel: −ln(base_color) / transmission_depth
+    (Beer-Lambert); None for a colourless glass (nothing to absorb)."""
+    colour = [min(max(float(c), DARKEST_TRANSMITTANCE), 1.0) for c in material.params.base_color]
+    if min(colour) >= 1.0:
+        return None
+    return [(0.0 - float(np.log(c))) / float(material.params.transmission_depth) for c in colour]  # 0, not -0
+
+
 def medium_entry(material: Material, ident: str, metres_per_unit: float = METRES_PER_UNIT) -> dict[str, Any] | None:
-    """The `<medium>` a volume material's shapes take as their interior (None for a thin sheet)."""
+    """The `<medium>` a material's shapes take as their interior: a volume's scattering medium, a
+    tinted glass's absorbing one (albedo 0); None for a thin sheet, a clear glass, an opaque model."""
+    if material.model.base == "glass":
+        sigma_a = glass_absorption(material)
+        return None if sigma_a is None else _medium(ident, sigma_a, [0.0, 0.0, 0.0], 0.0, metres_per_unit)
     if material.model.subsurface != "volume":
         return None
     sigma_t, albedo, g = medium_coefficients(material)
+    return _medium(ident, sigma_t, albedo, g, metres_per_unit)
+
+
+def _medium(ident: str, sigma_t: list[float], albedo: list[float], g: float, metres_per_unit: float) -> dict[str, Any]:
     largest = max(sigma_t)  # Mitsuba reads an RGB sigma_t as a reflectance in [0, 1]: the magnitude goes to scale
     return {
         "id": f"{ident}_medium",

@@ -46,6 +46,7 @@ SURFACE_NAMES = {
         "anisotropy": "specular_roughness_anisotropy",
         "transmission": "transmission_weight",
         "transmission_color": "transmission_color",
+        "transmission_depth": "transmission_depth",
         "coat": "coat_weight",
         "coat_color": "coat_color",
         "coat_roughness": "coat_roughness",
@@ -75,6 +76,7 @@ SURFACE_NAMES = {
         "rotation": "specular_rotation",
         "transmission": "transmission",
         "transmission_color": "transmission_color",
+        "transmission_depth": "transmission_depth",
         "coat": "coat",
         "coat_color": "coat_color",
         "coat_roughness": "coat_roughness",
@@ -123,6 +125,8 @@ def abstract_inputs(material: Material, surface: str) -> Inputs:
     if base == "glass":
         out["transmission"] = ("float", 1.0)
         out["transmission_color"] = ("color3", clip01(params.base_color))
+        # the colour is reached at this depth (Beer-Lambert; the scene unit taken as a metre, as for a medium)
+        out["transmission_depth"] = ("float", float(params.transmission_depth))
     if model.diffuse == "oren_nayar":
         out["diffuse_roughness"] = ("float", min(max(float(params.diffuse_roughness), 0.0), 1.0))
         if base == "diffuse" and surface == "open_pbr_surface":

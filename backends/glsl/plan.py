@@ -331,6 +331,11 @@ UNIFORM_TABLE: dict[str, tuple[str | None, Callable[[Plan], bool], UniformValue]
     ),
     "cnlm_f82": ("vec3", lambda p: p.base == "conductor" and p.fresnel == "f82", lambda m, p: _rgb(m.params.f82)),
     "cnlm_ior": ("float", lambda p: p.base in ("dielectric", "glass"), lambda m, p: float(m.params.ior)),
+    "cnlm_transmission_depth": (
+        "float",
+        lambda p: p.base == "glass",
+        lambda m, p: float(m.params.transmission_depth),
+    ),
     "cnlm_diffuse_roughness": (
         "float",
         lambda p: p.diffuse == "oren_nayar",

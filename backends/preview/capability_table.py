@@ -16,8 +16,8 @@ CAPABILITIES: dict[str, tuple[str, str]] = {
     "model.glass": (
         "approximate",
         "the environment refracted through the object (a solid's second interface is its bounding "
-        "sphere: exact for the sphere mesh; glass=thin: a sheet), Beer-Lambert tint per bounding "
-        "radius, rough transmission prefiltered or sampled by tier (the light the facets block leaves "
+        "sphere: exact for the sphere mesh; glass=thin: a sheet), Beer-Lambert absorption along "
+        "the path inside (the colour through transmission_depth), rough transmission prefiltered or sampled by tier (the light the facets block leaves "
         "diffusely, not lost); the key light only through rough exits in splitsum/analytic (no "
         "caustics, no shadows); docs/preview.md 'Transparent materials'",
     ),

@@ -1,6 +1,7 @@
 """What the preview's glass shader (shaders/transmission.glsl.j2) needs to know about the scene:
-the object's bounding sphere (its second interface, exact for the sphere mesh), the reference
-thickness of the absorption, and whether the object is a solid or a thin-walled sheet."""
+the object's bounding sphere (its second interface, exact for the sphere mesh), the depth through
+which the glass's colour is its transmittance (in world units), and whether the object is a solid
+or a thin-walled sheet."""
 
 from __future__ import annotations
 
@@ -29,12 +30,19 @@ def bounding_sphere(mesh: Mesh) -> tuple[np.ndarray, float]:
     return centre, radius
 
 
-def glass_uniforms(mesh: Mesh, model: np.ndarray, form: str = "auto") -> dict[str, object]:
+def reference_units(depth: float) -> float:
+    """The glass's transmission_depth (metres) in object units: a unit is METRES_PER_UNIT metres
+    (the unit sphere is the 10 cm ball), as for a subsurface medium and the Mitsuba export."""
+    from ..exchange.mitsuba_subsurface import METRES_PER_UNIT
+
+    return float(depth) / METRES_PER_UNIT
+
+
+def glass_uniforms(mesh: Mesh, model: np.ndarray, depth: float, form: str = "auto") -> dict[str, object]:
     """The transmission uniforms for the object drawn with `model` (world = model @ object).
 
-    The reference thickness is the bounding radius: the base colour is the transmittance of
-    one radius of material, so a ray through the sphere's centre (two radii) gets colour²,
-    what cnlmc.bsdf's two tinted crossings (and the Mitsuba export) give there."""
+    The reference thickness is the glass's transmission_depth in world units: a path of length d
+    inside keeps base_colour^(d / reference) (Beer-Lambert), as cnlmc.bsdf.transmission.absorption."""
     centre, radius = bounding_sphere(mesh)
     model = np.asarray(model, np.float64)
     scale = abs(float(np.linalg.det(model[:3, :3]))) ** (1.0 / 3.0) or 1.0
@@ -42,7 +50,7 @@ def glass_uniforms(mesh: Mesh, model: np.ndarray, form: str = "auto") -> dict[st
     return {
         "pv_glass_centre": world_centre,
         "pv_glass_radius": radius * scale,
-        "pv_glass_reference": radius * scale,
+        "pv_glass_reference": reference_units(depth) * scale,
         "pv_glass_thin": int(glass_form(mesh, form) == "thin"),
     }
 

@@ -59,7 +59,7 @@ SCENE_TEMPLATE = """<?xml version="1.0" encoding="utf-8"?>
     </emitter>
     <shape type="ply">
         <string name="filename" value="mesh.ply"/>
-        <ref id={bsdf_id}/>
+        <ref id={bsdf_id}/>{interior}
     </shape>
 </scene>
 """
@@ -71,10 +71,12 @@ SCENE_TEMPLATE = """<?xml version="1.0" encoding="utf-8"?>
 GLASS_MAX_DEPTH = 8
 
 
-def integrator_for(material: MaterialLike) -> tuple[str, str]:
-    """(integrator type, its extra properties) for the material: `path` for glass, else `direct`."""
+def integrator_for(material: MaterialLike, medium: bool = False) -> tuple[str, str]:
+    """(integrator type, its extra properties) for the material: `path` for glass (`volpathmis`
+    when it has an absorbing medium inside: a tinted glass), else `direct`."""
     if as_material(material).model.base == "glass":
-        return "path", f'\n        <integer name="max_depth" value="{GLASS_MAX_DEPTH}"/>'
+        depth = f'\n        <integer name="max_depth" value="{GLASS_MAX_DEPTH}"/>'
+        return ("volpathmis" if medium else "path"), depth
     return "direct", ""
 
 
@@ -125,11 +127,13 @@ def export_scene(
         materials = out / "materials.xml"
         materials.write_text(reference_glass.wrap_materials_xml(materials.read_text("utf-8")), "utf-8")
     bsdf_id = _bsdf_id(out / "materials.xml")
+    glass = as_material(material).model.base == "glass"  # its colour: the medium inside
+    medium_id = _medium_id(out / "materials.xml") if glass else None
     write_ply(scene.mesh, out / "mesh.ply", flip_v=True)  # Mitsuba: bitmap top row at v = 0
     write_exr(out / "environment.exr", mitsuba_rows(scene.env.image))  # Mitsuba's row positions
     cam = scene.camera
     distance = float(np.linalg.norm(np.subtract(cam.eye, cam.target)))
-    integrator, max_depth = integrator_for(material)
+    integrator, max_depth = integrator_for(material, medium_id is not None)
     xml = SCENE_TEMPLATE.format(
         integrator=integrator,
         max_depth=max_depth,
@@ -149,9 +153,20 @@ def export_scene(
         light_dir=_vec(-scene.env.key.unit),
         irradiance=scene.env.key.irradiance * scene.env_intensity,
         bsdf_id=quoteattr(bsdf_id),
+        interior="" if medium_id is None else f'\n        <ref name="interior" id={quoteattr(medium_id)}/>',
     )
     (out / "scene.xml").write_text(xml)
     return out / "scene.xml"
+
+
+def _medium_id(materials_xml: Path) -> str | None:
+    """The id of the fragment's medium (a tinted glass's absorption, a volume's body), if any."""
+    import xml.etree.ElementTree as ET
+
+    for child in ET.parse(materials_xml).getroot():
+        if child.tag == "medium" and child.get("id"):
+            return child.get("id")
+    return None
 
 
 def _bsdf_id(materials_xml: Path) -> str:

@@ -120,7 +120,7 @@ def draw_object(
     gl.set_uniform(prog, "pv_key_direction", scene.env.key.unit)
     gl.set_uniform(prog, "pv_key_irradiance", [scene.env.key.irradiance * scene.env_intensity] * 3)
     if material.model.base == "glass":
-        for name, value in glass_uniforms(scene.mesh, model, scene.glass).items():
+        for name, value in glass_uniforms(scene.mesh, model, material.params.transmission_depth, scene.glass).items():
             gl.set_uniform(prog, name, value)
     for name, value in sheen_uniforms(material).items():
         gl.set_uniform(prog, name, value)

@@ -32,7 +32,7 @@ from .albedo_tables import TableCache
 from .environment import environment
 from .environment_pass import IRRADIANCE_SAMPLES, IRRADIANCE_SIZE, PREFILTER_LEVELS, PREFILTER_SAMPLES
 from .flakes import flake_uniforms
-from .glass import bounding_sphere, internal_paths
+from .glass import bounding_sphere, internal_paths, reference_units
 from .material_textures import MAP_SIZE, bake_maps, encode_map
 from .mesh import Mesh, make_mesh
 from .meshes import MESHES, UV_UNIT_M, fit, sphere
@@ -157,6 +157,7 @@ class WebScene:
             "fragment": es300(fragment),
             "uniforms": self.uniforms(material, shader),
             "glass": material.model.base == "glass",
+            "glass_reference": reference_units(material.params.transmission_depth),
             "mesh_uniforms": mesh_uniforms(material),
             "uv_unit_m": UV_UNIT_M,
             "tables": {

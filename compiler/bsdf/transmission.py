@@ -33,7 +33,6 @@ from typing import Any
 
 import numpy as np
 
-from ..material import Material
 from .alpha import ALPHA_MIRROR
 from .evaluate import evaluate, local_dirs, material_alpha, with_ior
 from .fresnel import f0_from_ior, fresnel_dielectric, fresnel_schlick
@@ -216,14 +215,23 @@ def mirror_transmittance(wo: Real, ior: Real, mode: str = "radiance") -> Real:
     return np.where(visible[..., None], wi, 0.0), np.where(visible, weight, 0.0)
 
 
-def _tint(material: Material) -> np.ndarray:
-    return np.broadcast_to(np.asarray(material.params.base_color, float), (3,)).copy()
+def absorption(material: MaterialLike, length: Any) -> Real:
+    """The glass's transmittance along a path of `length` metres inside it, RGB (..., 3):
+    base_color^(length / transmission_depth) (Beer-Lambert). A colour channel of 0 passes
+    nothing along any path longer than 0; a path of length 0 passes everything."""
+    material = as_material(material)
+    colour = np.clip(np.asarray(material.params.base_color, float), 0.0, 1.0)
+    ratio = np.maximum(np.asarray(length, float), 0.0)[..., None] / float(material.params.transmission_depth)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        kept = np.exp(ratio * np.log(colour))  # NaN only at 0 * log(0): replaced below
+    return np.where(ratio > 0.0, np.where(colour > 0.0, kept, 0.0), 1.0)
 
 
 def evaluate_transmission(
     material: MaterialLike, wo: Any, wi: Any, g2: str = "correlated", mode: str = "radiance", fresnel: str = "exact"
 ) -> Real:
-    """The material's BTDF f_t(wo, wi) ⊙ base_color (the transmittance tint), RGB (..., 3).
+    """The material's BTDF f_t(wo, wi), RGB (..., 3): the interface alone, colourless; the glass's
+    colour is absorbed along the path inside (``absorption``), which the geometry decides.
 
     Non-zero only for ``model.base == "glass"`` and pairs on opposite sides of the surface.
     ``fresnel="schlick"``/``"f82"``: 1 − Schlick(F0(ior)) at the outside angle.
@@ -236,7 +244,7 @@ def evaluate_transmission(
     ax, ay = material_alpha(material)
     ior = float(material.params.ior)
     ft = microfacet_transmission(wo, wi, ax, ay, ior, g2, mode, "exact" if fresnel == "exact" else "schlick")
-    return np.broadcast_to(ft, shape)[..., None] * _tint(material)
+    return np.repeat(np.broadcast_to(ft, shape)[..., None], 3, axis=-1)
 
 
 def evaluate_bsdf(
@@ -311,6 +319,7 @@ __all__ = [
     "MODES",
     "dielectric_reflection",
     "evaluate_bsdf",
+    "absorption",
     "evaluate_transmission",
     "generalized_half_vector",
     "interface_albedo",

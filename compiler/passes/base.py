@@ -6,6 +6,7 @@ from typing import Any, NamedTuple
 
 from .. import ast
 from ..lexicon import Entry, LexiconCaches
+from ..params import Params
 from ..state import NOUN_PARAMS, Context, MaterialState, Step
 
 
@@ -88,3 +89,22 @@ def _map_ref(ref: dict[str, Any], ctx: Context, weight: float = 1.0) -> dict[str
     for name in ref.get("weighted", []):
         params[name] = params.get(name, 1.0) * weight
     return {"graph": ref["graph"], "output": ref.get("output", "color"), "params": params, "seed": ctx.seed}
+
+
+def colour_seen_through(state: MaterialState, words: tuple[ast.Word, ...] = ()) -> None:
+    """Before a word names or changes a glass's colour ('blue glass', 'smoky glass', 'a darker red
+    wine'): the colour the glass has is restated as the one seen through the table's default depth
+    (an object a few centimetres thick), the depth a colour word describes. Beer-Lambert keeps the
+    glass the same: c' = c^(default / depth). A glass noun's own depth (a dataset's 1 cm of wine)
+    belongs to its own colour only."""
+    if state.kind != "glass":
+        return
+    seen = Params.transmission_depth
+    depth = state.params.get("transmission_depth", seen)
+    if depth == seen:
+        return
+    state.params["transmission_depth"] = seen
+    colour = state.params.get("base_color")
+    if colour is not None:
+        restated = [float(c) ** (seen / depth) for c in colour]
+        state.record("base_color", restated, f"the colour seen through {seen * 100:g} cm (Beer-Lambert)", words)

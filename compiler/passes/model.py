@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..diagnostics import warning
+from ..params import Params
 from ..state import Context, MaterialState
 from .base import noun_of
 
@@ -17,6 +18,8 @@ def select_model(state: MaterialState, ctx: Context) -> MaterialState:
     anisotropic = base != "diffuse" and state.params.get("anisotropy", 0.0) > 0
     if base == "diffuse" and state.params.get("anisotropy", 0.0) > 0:
         _warn_no_highlight(state)
+    if base == "glass":  # the depth its colour is seen through: the noun's, else the table's default
+        state.params.setdefault("transmission_depth", Params.transmission_depth)
     state.model = {
         "base": base,
         "distribution": _distribution(base, anisotropic, settings),

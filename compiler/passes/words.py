@@ -19,7 +19,7 @@ from ..formulas import apply_op, describe
 from ..lexicon import Entry, LexiconCaches
 from ..params import COAT_PARAMS, PARAMS, ranges
 from ..state import Context, MaterialState
-from .base import _map_ref, noun_of
+from .base import _map_ref, colour_seen_through, noun_of
 from .colour_compounds import colour_compounds
 from .colours import colour_text, opposed_shades, resolve_colour
 from .diffuse_sigma import DIFFUSE_SIGMA, PARAM_BOUNDS, move_sigma
@@ -107,6 +107,8 @@ def _warn_dangling(state: MaterialState, group: ast.Group) -> None:
 
 def apply_colour(state: MaterialState, ctx: Context, c: ast.Colour, adverbs: Words, target: str, weight: float) -> None:
     param, holder = _colour_slot(state, target)
+    if param == "base_color":
+        colour_seen_through(state, c.words)
     current = holder.get(param)
     rgb = resolve_colour(c, ctx, start=current, weight=weight)
     words = c.words
@@ -322,6 +324,8 @@ def _apply_effect(
     if effect.param == "model":
         _switch_kind(state, effect.effect["value"], effect.place[0], words)
         return
+    if effect.param == "base_color" and holder is state.params:
+        colour_seen_through(state, words)
     current = holder.get(effect.param, effect.default)
     value = weighted_formula(effect.op, current, effect.value, weight, effect.amount, effect.bounds, effect.degree)
     holder[effect.param] = value

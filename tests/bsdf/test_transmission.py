@@ -275,9 +275,9 @@ def test_evaluate_bsdf_dispatch():
     ax = float(np.asarray(m["params"]["roughness"]) ** 2)
     inner = dielectric_reflection(wo[down], wi[down], ax, ax, 1.5)
     np.testing.assert_allclose(full[down], inner[:, None] * np.ones(3), rtol=1e-9)
-    # tint: the transmission lobe only
+    # the interface is colourless: the glass's colour is absorbed inside (transmission.absorption)
     t = evaluate_transmission(m, wo[opp], wi[opp])
-    np.testing.assert_allclose(t[:, 0] / 0.9, t[:, 2], rtol=1e-12)
+    assert np.all(t[:, 0] == t[:, 2]) and np.all(t[:, 1] == t[:, 2]) and t.max() > 0
 
 
 # ------------------------------------------------------------------ Mitsuba 3

@@ -103,9 +103,23 @@ def test_khronos_validator_reports_no_error_and_no_warning(written):
 def expected_base_colour(material: dict) -> list[float]:
     params = material["params"]
     colour = params["base_color"]
+    if material["model"]["base"] == "glass":  # its colour is the volume's attenuation
+        return [1.0, 1.0, 1.0, 1.0]
     if material["model"]["base"] == "conductor":
         colour = [f * t for f, t in zip(params["f0"], colour)]
     return [min(max(c, 0.0), 1.0) for c in colour] + [1.0]
+
+
+def check_glass_volume(material: dict, volume: dict) -> None:
+    """A glass's colour is the same Beer-Lambert attenuation in glTF: the colour white light turns
+    into after attenuationDistance (metres) inside, as the IR's base_color after transmission_depth;
+    a colourless or map-coloured glass keeps glTF's default (no attenuation)."""
+    colour = [min(max(c, 0.0), 1.0) for c in material["params"]["base_color"]]
+    if min(colour) >= 1.0 or "base_color" in material["maps"]:
+        assert "attenuationColor" not in volume and "attenuationDistance" not in volume, material["name"]
+        return
+    assert np.allclose(volume["attenuationColor"], colour, atol=1e-6, rtol=0), material["name"]
+    assert volume["attenuationDistance"] == material["params"].get("transmission_depth", 0.05), material["name"]
 
 
 def widths(gltf_material: dict) -> tuple[float, float]:
@@ -143,6 +157,7 @@ def check_material(material: dict, entry: dict) -> None:
     assert ("KHR_materials_transmission" in exts) == (model["base"] == "glass"), name
     if model["base"] == "glass":
         assert exts["KHR_materials_transmission"]["transmissionFactor"] == 1.0
+        check_glass_volume(material, exts["KHR_materials_volume"])
     if model["anisotropic"]:
         rotation = exts["KHR_materials_anisotropy"]["anisotropyRotation"]
         assert abs(rotation - params.get("anisotropy_rotation", 0.0)) <= 1e-6, name

@@ -30,6 +30,9 @@ KINDS = {
     "metallic car paint": {"preview": 0.05, "Mitsuba": 0.05},  # flakes: their energy in the base
     "acacia": {"preview": 0.05, "Mitsuba": 0.05, "MaterialX": 0.05},  # textured: the maps' mean
     "clear glass": {"preview": 0.05, "Mitsuba": 0.05},  # R + T: ~1
+    # a tinted glass: Beer-Lambert through its depth (1 cm) along the 10 cm ball's chords; in Mitsuba
+    # the absorbing medium inside the dielectric (docs/bsdf.md "Absorption")
+    "lager": {"preview": 0.05, "Mitsuba": 0.05},
     "velvet": {"preview": 0.05, "Mitsuba": 0.05, "MaterialX": 0.05},  # principled / fuzz with the IR's energy
     "milk": {"preview": 0.05, "Mitsuba": 0.05},  # a medium: Mitsuba's volume path tracer, the dipole's Rd
 }

@@ -42,8 +42,11 @@ def test_heavier_smoke_is_darker_and_stays_grey():
     shades = [params(f"{a}smoked glass")["base_color"] for a in ("lightly ", "", "heavily ", "extremely ")]
     lum = [luminance(c) for c in shades]
     assert lum == sorted(lum, reverse=True) and lum[-1] > 0.0
+    # the smoke adds no hue: the glass's own faint cyan (soda-lime, seen through 5 cm) and no more
+    glass = [c**5 for c in params("glass")["base_color"]]  # its 1 cm colour through 5 cm
+    own = (max(glass) - min(glass)) / max(glass)
     for r, g, b in shades:
-        assert max(r, g, b) - min(r, g, b) < 0.02 * max(r, g, b) + 1e-6
+        assert max(r, g, b) - min(r, g, b) < (own + 0.02) * max(r, g, b) + 1e-6
 
 
 def test_a_tint_colour_is_the_glass_colour_and_it_stays_glass():

@@ -34,6 +34,7 @@ def test_derived_maps_keep_their_v1_values_and_order():
         "diffuse_roughness": (0.0, 1.6),
         "ior": (1.0, 5.0),
         "base_color": (0.0, 1.0),
+        "transmission_depth": (1e-5, 100.0),
         "sheen_color": (0.0, 1.0),
         "sheen_roughness": (0.0, 1.0),
         "flake_color": (0.0, 1.0),
@@ -43,6 +44,7 @@ def test_derived_maps_keep_their_v1_values_and_order():
     }
     assert list(RANGES) == [
         *("roughness", "anisotropy", "diffuse_roughness", "ior", "base_color"),
+        "transmission_depth",  # issue #15 item 1: a glass's colour is Beer-Lambert absorption
         *("sheen_color", "sheen_roughness"),  # issue #15 item 5: velvet's and cloth's sheen
         *("flake_color", "flake_density", "flake_roughness", "flake_size"),  # #15 item 5: paints' flakes
     ]
@@ -56,10 +58,10 @@ def test_derived_maps_keep_their_v1_values_and_order():
         "diffuse": ("base_color",),
         "dielectric": ("base_color", "roughness", "ior"),
         "conductor": ("base_color", "roughness", "eta", "k", "f0", "f82"),
-        "glass": ("base_color", "roughness", "ior"),
+        "glass": ("base_color", "roughness", "ior", "transmission_depth"),
     }
     assert NOUN_PARAMS == (
-        *("base_color", "roughness", "eta", "k", "f0", "f82", "ior", "diffuse_roughness"),
+        *("base_color", "roughness", "eta", "k", "f0", "f82", "ior", "transmission_depth", "diffuse_roughness"),
         *("sheen_color", "sheen_roughness"),
     )
 

@@ -24,12 +24,14 @@
 //   vec3 cnlm_base_color = vec3(0.984, 0.995, 0.995)
 //   float cnlm_alpha = 0.25
 //   float cnlm_ior = 1.52
+//   float cnlm_transmission_depth = 0.01
 // samplers: none
 precision highp float;
 precision highp int;
 uniform vec3 cnlm_base_color;
 uniform float cnlm_alpha;
 uniform float cnlm_ior;
+uniform float cnlm_transmission_depth;
 // cnlm common: constants and helpers of the local shading frame (n = +z, t = +x).
 const float CNLM_PI = 3.14159265358979;
 // cos(theta) below this counts as on/below the horizon: every lobe is 0 there.
@@ -192,12 +194,13 @@ vec3 cnlm_bsdf(vec3 n, vec3 v, vec3 l, vec2 uv) {
 }
 
 // Transmission lobe (Walter 2007) in the local frame: wo and wi on opposite sides of the
-// surface (outside z > 0, inside z < 0), radiance transport, tinted by the base colour.
+// surface (outside z > 0, inside z < 0), radiance transport. The interface is colourless: the
+// glass's colour is absorbed along the path inside (cnlm_glass_absorption).
 vec3 cnlm_btdf_local(vec3 wo, vec3 wi, vec2 uv) {
     float cos_out;
     float ft = cnlm_ggx_btdf(wo, wi, cnlm_surface_alpha(uv), cnlm_ior, cos_out);
     if (ft == 0.0) return vec3(0.0);
-    vec3 f = ft * (1.0 - cnlm_base_fresnel(cos_out, 1.0)) * cnlm_surface_albedo(uv);
+    vec3 f = vec3(ft * (1.0 - cnlm_base_fresnel(cos_out, 1.0)));
     return f;
 }
 
@@ -211,6 +214,13 @@ vec3 cnlm_btdf(vec3 n, vec3 t, vec3 v, vec3 l, vec2 uv) {
 
 vec3 cnlm_btdf(vec3 n, vec3 v, vec3 l, vec2 uv) {
     return cnlm_btdf(n, cnlm_any_tangent(n), v, l, uv);
+}
+
+// The transmittance along a path of `path` metres inside the glass (Beer-Lambert): the base
+// colour is the transmittance through cnlm_transmission_depth metres.
+vec3 cnlm_glass_absorption(float path, vec2 uv) {
+    vec3 colour = clamp(cnlm_surface_albedo(uv), 0.0, 1.0);
+    return path <= 0.0 ? vec3(1.0) : pow(colour, vec3(path / cnlm_transmission_depth));
 }
 
 // ---- standalone shading ----
@@ -232,6 +242,8 @@ uniform vec3 cnlm_camera_position;
 uniform vec3 cnlm_light_direction;
 uniform vec3 cnlm_light_radiance;
 uniform vec3 cnlm_ambient_radiance;
+// Glass: the length of the light's path through the object, metres (the 10 cm preview ball).
+uniform float cnlm_glass_thickness;
 
 out vec4 cnlm_frag_color;
 
@@ -243,7 +255,8 @@ void main() {
     vec3 direct = cnlm_bsdf(n, v_tangent, v, l, v_uv) * cnlm_light_radiance * max(dot(n, l), 0.0);
     // Glass: the light seen through the surface when it is behind it (no refracted
     // environment here; that is the preview's job).
-    direct += cnlm_btdf(n, v_tangent, v, l, v_uv) * cnlm_light_radiance * max(-dot(n, l), 0.0);
+    direct += cnlm_btdf(n, v_tangent, v, l, v_uv) * cnlm_glass_absorption(cnlm_glass_thickness, v_uv)
+            * cnlm_light_radiance * max(-dot(n, l), 0.0);
     // Constant ambient: A(v) ~ pi f(v, n) (exact for Lambert; the preview adds IBL later).
     vec3 ambient = cnlm_ambient_radiance * CNLM_PI * cnlm_bsdf(n, v_tangent, v, n, v_uv);
     cnlm_frag_color = vec4(cnlm_linear_to_srgb(direct + ambient), 1.0);

@@ -20,12 +20,14 @@
 //   vec3 cnlm_base_color = vec3(0.984, 0.995, 0.995)
 //   float cnlm_alpha = 0.25
 //   float cnlm_ior = 1.52
+//   float cnlm_transmission_depth = 0.01
 // samplers: none
 precision highp float;
 precision highp int;
 uniform vec3 cnlm_base_color;
 uniform float cnlm_alpha;
 uniform float cnlm_ior;
+uniform float cnlm_transmission_depth;
 // cnlm common: constants and helpers of the local shading frame (n = +z, t = +x).
 const float CNLM_PI = 3.14159265358979;
 // cos(theta) below this counts as on/below the horizon: every lobe is 0 there.
@@ -188,12 +190,13 @@ vec3 cnlm_bsdf(vec3 n, vec3 v, vec3 l, vec2 uv) {
 }
 
 // Transmission lobe (Walter 2007) in the local frame: wo and wi on opposite sides of the
-// surface (outside z > 0, inside z < 0), radiance transport, tinted by the base colour.
+// surface (outside z > 0, inside z < 0), radiance transport. The interface is colourless: the
+// glass's colour is absorbed along the path inside (cnlm_glass_absorption).
 vec3 cnlm_btdf_local(vec3 wo, vec3 wi, vec2 uv) {
     float cos_out;
     float ft = cnlm_ggx_btdf(wo, wi, cnlm_surface_alpha(uv), cnlm_ior, cos_out);
     if (ft == 0.0) return vec3(0.0);
-    vec3 f = ft * (1.0 - cnlm_base_fresnel(cos_out, 1.0)) * cnlm_surface_albedo(uv);
+    vec3 f = vec3(ft * (1.0 - cnlm_base_fresnel(cos_out, 1.0)));
     return f;
 }
 
@@ -207,4 +210,11 @@ vec3 cnlm_btdf(vec3 n, vec3 t, vec3 v, vec3 l, vec2 uv) {
 
 vec3 cnlm_btdf(vec3 n, vec3 v, vec3 l, vec2 uv) {
     return cnlm_btdf(n, cnlm_any_tangent(n), v, l, uv);
+}
+
+// The transmittance along a path of `path` metres inside the glass (Beer-Lambert): the base
+// colour is the transmittance through cnlm_transmission_depth metres.
+vec3 cnlm_glass_absorption(float path, vec2 uv) {
+    vec3 colour = clamp(cnlm_surface_albedo(uv), 0.0, 1.0);
+    return path <= 0.0 ? vec3(1.0) : pow(colour, vec3(path / cnlm_transmission_depth));
 }

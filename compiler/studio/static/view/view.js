@@ -462,7 +462,7 @@ export class MaterialView {
     if (payload.glass) {
       setUniform(gl, program, "pv_glass_centre", "vec3", this.mesh.centre);
       setUniform(gl, program, "pv_glass_radius", "float", this.mesh.radius);
-      setUniform(gl, program, "pv_glass_reference", "float", this.mesh.radius);
+      setUniform(gl, program, "pv_glass_reference", "float", payload.glass_reference);  // the glass's depth, object units
       setUniform(gl, program, "pv_glass_thin", "int", this.mesh.closed ? 0 : 1);
     }
     gl.enable(gl.DEPTH_TEST);
