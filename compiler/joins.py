@@ -77,6 +77,8 @@ class Joiner:
             if word.unknown or (before is not None and before.unknown):  # its tags are guesses: E001 says so
                 if before is not None and self._is_artifact_after(before, word, tagged[k + 1 :]):
                     out[-1] = self._artifact(before, word, diags)
+                elif not word.unknown and of_tag(word, "OBJECT") and not of_tag(word, "NOUN"):
+                    out.append(self._object_alone(word, []))  # 'blorf tiles': E001 alone says what is wrong
                 else:
                     out.append(word)
                 continue
@@ -134,7 +136,8 @@ class Joiner:
             else:
                 out.append(word)
         for noun, thing in formed:
-            self._form_feature(out, noun, thing, diags)
+            if not any(made is noun for made, _ in looks):  # 'marble effect tiles': the look draws the pattern
+                self._form_feature(out, noun, thing, diags)
         for noun, look in looks:
             self._look_clause(out, noun, look)
         if len(out) > 2 and self._is_coat_finish(out):

@@ -89,7 +89,7 @@ class _Reader:
             if child.data == "groups":
                 groups = self.groups(child)
             elif child.data == "postfix":  # "Oak, oiled": after the groups before the noun
-                groups = groups + self.groups(_tree(child.children[1]))
+                groups = groups + self.groups(_tree(child.children[-1]))  # past the comma (and 'but')
             elif child.data == "nouns":
                 nouns = self.alternatives(child)
             elif child.data == "clauses":

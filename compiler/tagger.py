@@ -456,9 +456,11 @@ def _is_separator(word: Tagged) -> bool:
 def _dropped_separator(raw: list[RawToken], after: int, tagged: list[Tagged]) -> int:
     """After words read as having no effect ("not rusty"), the separator that set them off goes too:
     the one before them (popped from `tagged`), else a comma right after them (returns 1: that raw
-    word is taken), so "shiny, not rusty, iron" is "shiny, iron" and "not rusty, iron" is "iron"."""
+    word is taken), so "shiny, not rusty, iron" is "shiny, iron" and "not rusty, iron" is "iron"; a
+    separator of two words goes whole ("shiny, but not rusty, iron")."""
     if tagged and _is_separator(tagged[-1]):
-        tagged.pop()
+        while tagged and _is_separator(tagged[-1]):
+            tagged.pop()
         return 0
     if after < len(raw) and raw[after][0] in (",", ";"):
         return 1

@@ -1,0 +1,44 @@
+"""'but' and 'yet' between describing words join them as 'and' does ('chrome, but slightly satin');
+laid tiles are drawn with grout however the tile is named; an object after an unknown word adds no
+second error."""
+
+from __future__ import annotations
+
+import pytest
+
+from cnlmc.api import compile_source
+
+from .conftest import look
+
+
+@pytest.mark.parametrize(
+    ("said", "meant"),
+    [
+        ("chrome, but slightly satin", "chrome, slightly satin"),
+        ("walnut, yet matte", "matte walnut"),
+        ("smooth yet matte black paint", "smooth, matte black paint"),
+        ("dark, but warm oak", "dark, warm oak"),
+        ("shiny, but not rusty, iron", "shiny iron"),
+    ],
+)
+def test_a_contrast_word_joins_describing_words(stdlib, said, meant):
+    assert look(stdlib, said)[1] == look(stdlib, meant)[1]
+
+
+def test_but_alone_is_not_a_material(stdlib):
+    assert not compile_source("but\n", "c.cnl", stdlib).ok
+
+
+@pytest.mark.parametrize("phrase", ["glossy white ceramic tiles", "ceramic tiles", "white tiles", "porcelain tiles"])
+def test_laid_tiles_have_grout(stdlib, phrase):
+    material = compile_source(phrase + "\n", "t.cnl", stdlib).ir["materials"][0]
+    assert material["maps"]["base_color"]["graph"] == "tiles"
+
+
+def test_one_tile_named_as_a_material_is_its_glaze(stdlib):
+    assert compile_source("white ceramic tile\n", "t.cnl", stdlib).ir["materials"][0]["maps"] == {}
+
+
+@pytest.mark.parametrize("phrase", ["blorf tiles", "blorf planks", "blorf floor"])
+def test_an_object_after_an_unknown_word_adds_no_second_error(stdlib, phrase):
+    assert [d.code for d in compile_source(phrase + "\n", "u.cnl", stdlib).diagnostics] == ["E001"]
