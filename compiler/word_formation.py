@@ -101,6 +101,7 @@ class Rules:
         self.postfix = any(c["postfix"] for c in compounds)  # 'Eiche geölt': describing words after the noun
         self.made_of = tuple(dict.fromkeys(w for c in compounds for w in c["made_of"]))  # 'Dielen aus Eiche'
         self.qualifiers = frozenset(joined("qualifiers", "words"))
+        self.sizes = frozenset(joined("qualifiers", "sizes"))  # "wide oak floorboards"
         self.comparison = frozenset(joined("comparison", "words"))  # "lighter than oak"
         self.manners = frozenset(joined("compound_first", "manners"))
         self.participles = frozenset(joined("compound_first", "participles"))
@@ -159,6 +160,8 @@ class WordFormation:
             if compound:
                 note = f"read '{first} {words[1]}' as '{same}-{words[1]}' ('{first}' means '{same}' here)"
                 return Reading((Part(0, 1, 0, None, compound),), 2, note)
+        if first in rules.sizes and len(words) > 1:  # "wide oak floorboards" (not "wide grained")
+            return Reading((), 1, f"read '{first}' as the size of the pieces: not drawn, no effect on the look")
         if len(words) > 1:
             named = self._resembling_colour_name(first, words[1])
             if named is not None:
