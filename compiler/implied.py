@@ -130,10 +130,9 @@ def _plating_alone(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagg
 
 def _apply_to_anything(said: Sequence[Tagged], lexicon: Lexicon) -> bool:
     """Whether the words are describing words none of which is limited to some materials (gloss,
-    roughness and degree words: no colour, no `applies_to`)."""
+    roughness, degree and colour words: no `applies_to`; 'white semi-gloss' is paint, not its
+    example's nickel)."""
     readings = [c for w in said for c in w.candidates]
-    if any(c.tag == "COLOR" for c in readings):
-        return False
     adjectives = [lexicon.entry("adjectives", c.key) for c in readings if c.tag == "ADJ"]
     return bool(adjectives) and not any(a is None or a.get("applies_to") for a in adjectives)
 

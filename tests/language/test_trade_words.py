@@ -192,3 +192,18 @@ def test_wide_grained_stays_coarse_grained(compile_text):
     got = material(compile_text("wide grained oak"))
     assert got["params"] == material(compile_text("coarse-grained oak"))["params"]
     assert got["maps"] == material(compile_text("coarse-grained oak"))["maps"]
+
+
+@pytest.mark.parametrize(
+    ("said", "meant"), [("satinwood paint", "satin paint"), ("white satinwood", "white satin paint")]
+)
+def test_satinwood_is_the_paint_trades_satin(compile_text, said, meant):
+    assert material(compile_text(said))["params"] == material(compile_text(meant))["params"]
+
+
+@pytest.mark.parametrize("phrase", ["white semi-gloss", "navy semi-gloss", "grey satinwood"])
+def test_a_colour_and_a_sheen_alone_are_paint(compile_text, phrase):
+    """A finish word any material takes, with a colour and no material: an everyday noun (paint),
+    not the finish word's own example ('satin nickel')."""
+    got = material(compile_text(phrase))
+    assert got["model"]["base"] == "dielectric" and got["name"].endswith("_paint"), got["name"]
