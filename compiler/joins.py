@@ -140,7 +140,9 @@ class Joiner:
                 self._form_feature(out, noun, thing, diags)
         for noun, look in looks:
             self._look_clause(out, noun, look)
-        if len(out) > 2 and self._is_coat_finish(out):
+        if len(out) > 2 and self._coat_after_mark(out, diags):
+            pass  # 'Walnut, satin lacquer', 'Oak / natural oil': a listing's finish after its material
+        elif len(out) > 2 and self._is_coat_finish(out):
             self._coat_after(out, diags)
         elif len(out) > 2 and _layer_of(out, diags) and self._coat_alone(out) is not None:
             self._coat_on_substrate(out, diags)  # "a coat of satin varnish"
@@ -313,6 +315,49 @@ class Joiner:
         note = f"read '{coat_text} {head.text} {noun.text}' as '{reading}' (the coat is the finish)"
         diags.append(Diagnostic(coat_words[0].span.to(noun.span), Severity.NOTE, NOTE_CODE, note))
         out[start:] = [noun, with_word, *coat_words]
+
+    def _coat_after_mark(self, out: list[Tagged], diags: list[Diagnostic]) -> bool:
+        """'Walnut, satin lacquer', 'Oak / natural oil', 'Beech - clear varnish' (a product listing:
+        the material, a comma, slash or dash, then its finish): the material with that coat, the
+        mark read as 'with', and a note. Only for a coat last, describing words between, and before
+        the mark one material noun with only describing words before it (not 'red or blue paint')."""
+        last = out[-1]
+        if not of_tag(last, "COAT") or last.unknown:
+            return self._describing_after_slash(out, diags)
+        k = len(out) - 2
+        while k > 0 and any(c.tag in DESCRIBING for c in out[k].candidates):  # a word that may describe: 'Satin'
+            k -= 1
+        mark = out[k]
+        if k < 1 or mark.text not in LISTING_MARKS or not of_tag(out[k - 1], "NOUN") or of_tag(out[k - 1], "ADJ"):
+            return False  # 'a satin, dark green powder coat': 'satin' describes the coat
+        if not all(t.candidates and all(c.tag in (*DESCRIBING, "ARTICLE") for c in t.candidates) for t in out[: k - 1]):
+            return False
+        noun, finish = out[k - 1], [_describing(t) for t in out[k + 1 : -1]]
+        finish.append(Tagged(last.text, last.span, of_tag(last, "COAT"), last.unknown))
+        with_word = Tagged(mark.text, mark.span, (Candidate("WITH", "with", "keyword"),))
+        said = " ".join(t.text for t in finish)
+        note = f"read '{noun.text} {mark.text} {said}' as '{noun.text} {self.spoken().with_word} {said}' (the finish after the material)"
+        diags.append(Diagnostic(noun.span.to(last.span), Severity.NOTE, NOTE_CODE, note))
+        out[k:] = [with_word, *finish]
+        return True
+
+    def _describing_after_slash(self, out: list[Tagged], diags: list[Diagnostic]) -> bool:
+        """'Oak / Natural Oil', 'Steel / brushed': a slash after the material, then only describing
+        words (none may be an alternative material), is the comma of describing words after the
+        noun ('Oak, natural oiled'), with a note."""
+        k = next((i for i, t in enumerate(out) if t.text == "/"), -1)
+        if k < 1 or k == len(out) - 1 or not of_tag(out[k - 1], "NOUN"):
+            return False
+        after = out[k + 1 :]
+        if not all(t.candidates and all(c.tag in DESCRIBING for c in t.candidates) for t in after):
+            return False
+        if not all(t.candidates and all(c.tag in (*DESCRIBING, "ARTICLE") for c in t.candidates) for t in out[: k - 1]):
+            return False
+        said = " ".join(t.text for t in after)
+        note = f"read '{out[k - 1].text} / {said}' as '{out[k - 1].text}, {said}' (the finish after the material)"
+        diags.append(Diagnostic(out[k - 1].span.to(after[-1].span), Severity.NOTE, NOTE_CODE, note))
+        out[k] = Tagged(",", out[k].span, (Candidate("COMMA", ",", "keyword"),))
+        return True
 
     def _coat_alone(self, out: list[Tagged]) -> str | None:
         """The substrate of a coat named as the whole material ('satin varnish', 'red powder coating',
@@ -708,6 +753,15 @@ def _describes_a_coat(rest: list[Tagged]) -> bool:
 
 #: The readings of describing words a plating ('nickel plated', from 'nickel finish') may move before.
 DESCRIBING = frozenset(("ADV", "ADJ", "COLOR", "SHADE"))
+
+
+def _describing(word: Tagged) -> Tagged:
+    """The word with its describing readings only ('Satin' before a coat: not the fabric)."""
+    return Tagged(word.text, word.span, tuple(c for c in word.candidates if c.tag in DESCRIBING), word.unknown)
+
+
+#: the marks a product listing sets a finish off by ('Walnut / Satin Lacquer', 'Oak - natural oil')
+LISTING_MARKS = frozenset((",", "/", "-", "–", "—", ";"))
 
 
 #: The readings of the word after a noun that says where the material is used ('guitar varnish').

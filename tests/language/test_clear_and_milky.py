@@ -22,7 +22,8 @@ def test_clear_plastic_is_smooth_glass():
 
 
 def test_coffee_with_milk_is_opaque_and_black_coffee_clear():
-    for phrase in ("milky coffee", "coffee with milk", "a flat white"):
+    for phrase in ("milky coffee", "coffee with milk", "a caffe latte"):
         material = last(phrase + "\n")
         assert material["model"]["base"] == "dielectric" and material["model"].get("subsurface") == "volume", phrase
     assert last("black coffee\n")["model"]["base"] == "glass"
+    assert last("dead flat white\n")["model"].get("subsurface") is None  # matte white paint, not the coffee

@@ -42,3 +42,26 @@ def test_one_tile_named_as_a_material_is_its_glaze(stdlib):
 @pytest.mark.parametrize("phrase", ["blorf tiles", "blorf planks", "blorf floor"])
 def test_an_object_after_an_unknown_word_adds_no_second_error(stdlib, phrase):
     assert [d.code for d in compile_source(phrase + "\n", "u.cnl", stdlib).diagnostics] == ["E001"]
+
+
+@pytest.mark.parametrize(
+    ("said", "meant"),
+    [
+        ("Walnut / Satin Lacquer", "walnut with a satin lacquer"),
+        ("Walnut, satin lacquer", "walnut with a satin lacquer"),
+        ("Beech - clear varnish", "beech with a clear varnish"),
+        ("Oak / Natural Oil", "oiled oak"),
+        ("Steel / brushed", "brushed steel"),
+    ],
+)
+def test_a_listings_finish_after_its_material(stdlib, said, meant):
+    """A product listing names the material, a comma, slash or dash, then its finish: the material
+    with that finish (before, 'Walnut, satin lacquer' was a walnut-coloured lacquer, no grain)."""
+    result, meaning = look(stdlib, said)
+    assert meaning == look(stdlib, meant)[1]
+    assert any("the finish after the material" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize("phrase", ["red/blue paint", "oak/walnut", "brushed/polished steel"])
+def test_a_slash_between_alternatives_stays_or(stdlib, phrase):
+    assert len(compile_source(phrase + "\n", "o.cnl", stdlib).ir["materials"]) == 2

@@ -406,12 +406,13 @@ def test_what_is_not_a_coat_alone_reads_as_before(phrase):
 @pytest.mark.parametrize("phrase", ["floor, varnish", "floor and varnish"])
 def test_an_object_then_a_separator_is_not_the_coat_s_substrate(phrase):
     """'floor, varnish' was varnish_floor (the floor's wood, varnished) before the coat-alone rule:
-    an object is what a coat is on only when a describing word or the coat itself follows it."""
+    an object is what a coat is on only when a describing word or the coat itself follows it; since
+    session 15 a listing's finish after its material names it floor_with_varnish (the same IR)."""
     result = compile_source(phrase, "t.cnl", LEX)
     assert not any("with ," in n or "with and" in n for n in notes(result)), notes(result)
     if phrase == "floor, varnish":
         assert result.ok, [d.message for d in result.diagnostics]
-        assert result.ir["materials"][0]["name"] == "varnish_floor"
+        assert result.ir["materials"][0]["name"] == "floor_with_varnish"
 
 
 @pytest.mark.parametrize("phrase", ["varnish varnish", "satin varnish varnish", "lacquer varnish"])
