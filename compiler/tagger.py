@@ -178,6 +178,8 @@ class Tagger:
             i += self._tag_at(raw, i, line_no, offset, tagged, diags)
         if may_join(tagged):
             tagged = self.joiner.joined(tagged, diags)
+        if len(tagged) > 1:
+            _last_target_describes(tagged, self.lexicon)
         return tagged, diags
 
     def formation(self) -> WordFormation:
@@ -447,6 +449,24 @@ _MATERIAL_WORDS = frozenset(("NOUN", "OBJECT", "COAT"))
 _SEPARATORS = frozenset(("COMMA", "AND"))
 #: keywords that may follow a noun: a multi-word noun that runs to one of them is a whole noun
 NOUN_FOLLOWERS = frozenset(("WITH", "OR", "AND"))
+
+
+def _last_target_describes(tagged: list[Tagged], lexicon: Lexicon) -> None:
+    """'less mirror', 'a bit more satin': the last word, right after a comparative that takes a
+    target ('less', 'more': not 'shinier', whose next word is the material, 'shinier satin'), that
+    reads both as a describing word and as a material (not as a colour: 'darker walnut') is the
+    comparative's target, the describing word; a material there would leave the comparative with
+    nothing to move ("'less' of what?")."""
+    last = tagged[-1]
+    tags = {c.tag for c in last.candidates}
+    if "ADJ" not in tags or "NOUN" not in tags or "COLOR" in tags:
+        return
+    refines = [c for c in tagged[-2].candidates if c.tag == "REFINE"]
+    entries = [lexicon.entry("refinements", c.key) for c in refines]
+    if not any(e is not None and e.get("target") == "any" for e in entries):
+        return
+    kept = tuple(c for c in last.candidates if c.tag != "NOUN")
+    tagged[-1] = Tagged(last.text, last.span, kept, last.unknown, implied_by=last.implied_by)
 
 
 def _is_separator(word: Tagged) -> bool:

@@ -9,7 +9,7 @@ The phrases are not the ones of the held-out sets: each category is tested on wo
 
 import pytest
 
-from cnlmc.api import Session, refined
+from cnlmc.api import Session, compile_source, refined
 from cnlmc.colour import linear_to_oklab
 
 
@@ -235,3 +235,20 @@ def test_a_comparative_the_lexicon_lacks_is_more_of_its_adjective():
     _, want, _ = refine("oak", "more waxy")
     assert got["params"] == want["params"]
     assert any("'more waxy'" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    ("line", "rougher"), [("less mirror", True), ("it's too mirror-like", True), ("less satin", False)]
+)
+def test_a_describing_word_after_less_is_its_target_not_a_new_material(line, rougher):
+    """'mirror' and 'satin' are also materials; after 'less'/'more' (which need a target) they are
+    what to move, not a change to that material ('less' of what?)."""
+    first, changed, result = refine("chrome light fittings", line)
+    assert not any(d.code == "W104" for d in result.diagnostics), [d.message for d in result.diagnostics]
+    assert changed["model"]["base"] == "conductor"  # still chrome, not a mirror or satin cloth
+    moved = changed["params"]["roughness"] - first["params"]["roughness"]
+    assert moved > 0 if rougher else moved < 0  # less satin than chrome's near mirror: glossier still
+
+
+def test_a_comparative_with_its_own_target_keeps_the_material_after_it():
+    assert compile_source("shinier satin\n", "r.cnl").ir["materials"][0]["model"]["base"] != "conductor"
