@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from dataclasses import replace
 
 from . import ast
-from .diagnostics import Diagnostic, error
+from .diagnostics import Diagnostic, Severity, error
 from .lexicon import Lexicon
 from .line_parts import PART_MARKS, by_parts, material_then_comparatives
 from .lines import iter_lines
@@ -18,7 +18,7 @@ from .relative_clause import clause_after, describing_after, participle_after, r
 from .removal import removal_line
 from .shape_store import save_shapes
 from .spans import Span
-from .tagged import Tagged
+from .tagged import NOTE_CODE, Tagged
 from .tagger import Tagger
 
 __all__ = ["iter_items", "iter_lines", "parse_document", "parse_line"]
@@ -84,6 +84,32 @@ def _removal(text: str, number: int, offset: int, tagger: Tagger, diags: list[Di
     return refinement
 
 
+def _comparative_reading(
+    text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]
+) -> ast.Refinement | None:
+    """'less of the rust', 'a bit less of the orange': the comparative the phrase also is ('less
+    rust': less of it, not none; teaching.toml [removal] comparative), with a note; None when the
+    line does not open with one or does not read so."""
+    from .suggest import teaching
+
+    low = text.lower()
+    start = len(low) - len(low.lstrip())
+    table = teaching()["removal"]["comparative"]
+    phrase = next((p for p in sorted(table, key=len, reverse=True) if low[start:].startswith(p + " ")), None)
+    if phrase is None:
+        return None
+    end = start + len(phrase)
+    said: list[Diagnostic] = []
+    rewritten = text[:start] + table[phrase] + " " * (end - start - len(table[phrase])) + text[end:]
+    plain = _parsed_line(rewritten, number, offset, tagger, said, removals=False)
+    if not isinstance(plain, ast.Refinement) or not plain.items or any(d.is_error for d in said):
+        return None
+    span = Span(offset + start, offset + end, number, start + 1)
+    note = f"read '{text[start:end]}' as '{table[phrase]}': less of it, not none"
+    diags.extend([*said, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)])
+    return plain
+
+
 def _parsed_line(
     text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic], removals: bool = True
 ) -> ast.Item | None:
@@ -111,6 +137,8 @@ def _parsed_line(
     try:
         shape, picks = parse_line_shape(words, tagger.lexicon.caches.shapes)
     except ParseFailure as failure:
+        if removals and (comparative := _comparative_reading(text, number, offset, tagger, diags)) is not None:
+            return comparative
         if removals and (removal := _removal(text, number, offset, tagger, diags)) is not None:
             return removal
         return _failed_line(failure, words, text, tagger.lexicon, diags)

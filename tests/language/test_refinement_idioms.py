@@ -252,3 +252,19 @@ def test_a_describing_word_after_less_is_its_target_not_a_new_material(line, rou
 
 def test_a_comparative_with_its_own_target_keeps_the_material_after_it():
     assert compile_source("shinier satin\n", "r.cnl").ir["materials"][0]["model"]["base"] != "conductor"
+
+
+def test_less_of_the_is_less_not_none():
+    """'less of the orange' under oak is 'less orange' (it named no colour to take off); 'less of
+    the rust' keeps rust, less of it (a removal would take it all: 'lose the rust')."""
+    before, after, result = refine("oak worktop", "less of the orange")
+    assert oklch(after)[1] < oklch(before)[1]
+    assert any("less of it, not none" in d.message for d in result.diagnostics)
+    _, lessened, _ = refine("rusty steel", "less of the rust")
+    _, removed, _ = refine("rusty steel", "lose the rust")
+    assert "mask" in lessened["maps"] and lessened != removed
+
+
+def test_an_er_comparative_of_a_shade():
+    before, after, _ = refine("red paint", "punchier")
+    assert oklch(after)[1] > oklch(before)[1]
