@@ -585,8 +585,13 @@ class Joiner:
             return False
         if any(c.tag == "WITH" for t in line for c in t.candidates):
             return False
-        tags = HEAD_HOLDERS[last]
-        return any(c.tag in tags for c in before.candidates)
+        return any(c.tag in self._holders(low, last) for c in before.candidates)
+
+    def _holders(self, head: str, last: bool) -> tuple[str, ...]:
+        """The readings the head joins: a finish names a description wherever it stands ('a satin
+        finish' at the end of a change line: satin, not the cloth); other heads at the line's end a
+        material ('a brushed steel look')."""
+        return HEAD_HOLDERS[False] if head in self.rules().finish_heads else HEAD_HOLDERS[last]
 
     def with_head(self, before: Tagged, text: str, span: Span, last: bool, diags: list[Diagnostic]) -> Tagged:
         joined = before.span.to(span)
@@ -596,8 +601,10 @@ class Joiner:
             return self._resembling(before, text, joined, diags)
         note = f"read '{before.text} {text}' as '{before.text}' ('{text}' names what it describes)"
         diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
-        kept = tuple(c for c in before.candidates if c.tag in HEAD_HOLDERS[last])
-        if not last and any(c.tag == "ADJ" for c in kept):  # 'satin finish': the finish, never the fabric
+        kept = tuple(c for c in before.candidates if c.tag in self._holders(text.lower(), last))
+        if any(
+            c.tag == "ADJ" for c in kept
+        ):  # 'satin finish': the finish, never the fabric (last too: 'a satin finish')
             kept = tuple(c for c in kept if c.tag != "NOUN")
         return Tagged(f"{before.text} {text}", joined, kept, before.unknown)
 

@@ -268,3 +268,11 @@ def test_less_of_the_is_less_not_none():
 def test_an_er_comparative_of_a_shade():
     before, after, _ = refine("red paint", "punchier")
     assert oklch(after)[1] > oklch(before)[1]
+
+
+def test_a_finish_is_a_description_at_the_end_of_a_line_too():
+    """'a satin finish' under oak is satin oak (the finish), not satin cloth; alone, satin paint."""
+    before, after, _ = refine("oak", "a satin finish")
+    assert after["maps"] == before["maps"] and after["params"]["roughness"] < before["params"]["roughness"]
+    alone = compile_source("a satin finish\n", "f.cnl").ir["materials"][0]
+    assert "diffuse_roughness" not in alone["params"] and alone["params"]["roughness"] == 0.35
