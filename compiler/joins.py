@@ -585,12 +585,13 @@ class Joiner:
             return False
         if any(c.tag == "WITH" for t in line for c in t.candidates):
             return False
-        return any(c.tag in self._holders(low, last) for c in before.candidates)
+        return any(c.tag in HEAD_HOLDERS[last] for c in before.candidates)
 
     def _holders(self, head: str, last: bool) -> tuple[str, ...]:
-        """The readings the head joins: a finish names a description wherever it stands ('a satin
-        finish' at the end of a change line: satin, not the cloth); other heads at the line's end a
-        material ('a brushed steel look')."""
+        """The readings the joined word keeps: a finish names a description wherever it stands ('a
+        satin finish' at the end of a change line: satin, not the cloth; it joins there only a word
+        that may be a material, as any head does); other heads at the line's end a material ('a
+        brushed steel look')."""
         return HEAD_HOLDERS[False] if head in self.rules().finish_heads else HEAD_HOLDERS[last]
 
     def with_head(self, before: Tagged, text: str, span: Span, last: bool, diags: list[Diagnostic]) -> Tagged:
