@@ -161,7 +161,7 @@ class _Reader:
         first = tree.children[0]
         if isinstance(first, Tree) and first.data == "clauses":
             return RefinementPlan(name, (), *self.edges(tree), *self.clauses(first))
-        items = tuple([self.refine_item(c) for c in tree.children if isinstance(c, Tree)])
+        items = tuple([self.refine_item(c) for c in tree.children if isinstance(c, Tree) and c.data == "refine_item"])
         return RefinementPlan(name, items, *self.edges(tree))
 
     def refine_item(self, tree: Tree[Token]) -> RefineItemPlan:

@@ -65,3 +65,14 @@ def test_a_listings_finish_after_its_material(stdlib, said, meant):
 @pytest.mark.parametrize("phrase", ["red/blue paint", "oak/walnut", "brushed/polished steel"])
 def test_a_slash_between_alternatives_stays_or(stdlib, phrase):
     assert len(compile_source(phrase + "\n", "o.cnl", stdlib).ir["materials"]) == 2
+
+
+@pytest.mark.parametrize("sep", [", and", ", but", "; and", " and", " but", ","])
+@pytest.mark.parametrize("first", ["oak", "red plastic"])
+def test_a_two_word_separator_between_comparatives_or_clauses_reads(stdlib, sep, first):
+    """'darker, and warmer' raised a KeyError (a separator of two words read as a comparative); a
+    clause list may take ', and' too ('with a clear coat, and fine scratches')."""
+    changed = compile_source(f"{first}\ndarker{sep} warmer\n", "s.cnl", stdlib)
+    assert changed.ok and changed.ir["materials"][-1]["params"] != look(stdlib, first)[1]["params"]
+    clauses = compile_source(f"{first} with a clear coat{sep} fine scratches\n", "s.cnl", stdlib)
+    assert clauses.ok, [d.message for d in clauses.diagnostics]

@@ -276,3 +276,41 @@ def test_a_finish_is_a_description_at_the_end_of_a_line_too():
     assert after["maps"] == before["maps"] and after["params"]["roughness"] < before["params"]["roughness"]
     alone = compile_source("a satin finish\n", "f.cnl").ir["materials"][0]
     assert "diffuse_roughness" not in alone["params"] and alone["params"]["roughness"] == 0.35
+
+
+@pytest.mark.parametrize(
+    ("line", "key", "direction"),
+    [
+        ("it needs to be shinier", "roughness", -1),
+        ("could be more reflective", "roughness", -1),
+        ("it should be darker", "lightness", -1),
+        ("I'd like it warmer", "hue", 0),
+        ("perfect, but a little darker", "lightness", -1),
+        ("nearly, just a bit lighter", "lightness", 1),
+        ("one shade darker", "lightness", -1),
+        ("a couple of shades lighter", "lightness", 1),
+        ("bring the gloss down", "roughness", 1),
+        ("knock back the shine", "roughness", 1),
+        ("take the edge off the shine", "roughness", 1),
+        ("a warmer tone", "hue", 0),
+        ("make it pop", "chroma", 1),
+    ],
+)
+def test_everyday_change_phrasing(line, key, direction):
+    """A need, a wish or a verdict before the change, counts of shades, a verb with its object and
+    particle, a colour's tone: each moves the material as the plain change would."""
+    before, after, _ = refine("red plastic", line)
+    if key == "roughness":
+        moved = after["params"]["roughness"] - before["params"]["roughness"]
+    elif key == "hue":
+        assert after["params"]["base_color"] != before["params"]["base_color"]
+        return
+    else:
+        moved = oklch(after)[0 if key == "lightness" else 1] - oklch(before)[0 if key == "lightness" else 1]
+    assert moved * direction > 0, (line, moved)
+
+
+def test_two_shades_is_a_larger_step_than_one():
+    _, one, _ = refine("red plastic", "one shade darker")
+    _, two, _ = refine("red plastic", "two shades darker")
+    assert oklch(two)[0] < oklch(one)[0]
