@@ -330,13 +330,14 @@ class Joiner:
         mark = out[k]
         if k < 1 or mark.text not in LISTING_MARKS or not of_tag(out[k - 1], "NOUN") or of_tag(out[k - 1], "ADJ"):
             return False  # 'a satin, dark green powder coat': 'satin' describes the coat
-        if not all(t.candidates and all(c.tag in (*DESCRIBING, "ARTICLE") for c in t.candidates) for t in out[: k - 1]):
+        if not _only_describing(out[: k - 1]):
             return False
         noun, finish = out[k - 1], [_describing(t) for t in out[k + 1 : -1]]
         finish.append(Tagged(last.text, last.span, of_tag(last, "COAT"), last.unknown))
         with_word = Tagged(mark.text, mark.span, (Candidate("WITH", "with", "keyword"),))
         said = " ".join(t.text for t in finish)
-        note = f"read '{noun.text} {mark.text} {said}' as '{noun.text} {self.spoken().with_word} {said}' (the finish after the material)"
+        mark_said = f"{mark.text} " if mark.text in ",;" else f" {mark.text} "  # 'Walnut, satin', 'Walnut / Satin'
+        note = f"read '{noun.text}{mark_said}{said}' as '{noun.text} {self.spoken().with_word} {said}' (the finish after the material)"
         diags.append(Diagnostic(noun.span.to(last.span), Severity.NOTE, NOTE_CODE, note))
         out[k:] = [with_word, *finish]
         return True
@@ -349,9 +350,9 @@ class Joiner:
         if k < 1 or k == len(out) - 1 or not of_tag(out[k - 1], "NOUN"):
             return False
         after = out[k + 1 :]
-        if not all(t.candidates and all(c.tag in DESCRIBING for c in t.candidates) for t in after):
+        if not _only_describing(after, article=False):
             return False
-        if not all(t.candidates and all(c.tag in (*DESCRIBING, "ARTICLE") for c in t.candidates) for t in out[: k - 1]):
+        if not _only_describing(out[: k - 1]):
             return False
         said = " ".join(t.text for t in after)
         note = f"read '{out[k - 1].text} / {said}' as '{out[k - 1].text}, {said}' (the finish after the material)"
@@ -761,6 +762,12 @@ def _describes_a_coat(rest: list[Tagged]) -> bool:
 
 #: The readings of describing words a plating ('nickel plated', from 'nickel finish') may move before.
 DESCRIBING = frozenset(("ADV", "ADJ", "COLOR", "SHADE"))
+
+
+def _only_describing(words: list[Tagged], article: bool = True) -> bool:
+    """Whether every word reads only as a describing word (or an article)."""
+    allowed = (*DESCRIBING, "ARTICLE") if article else tuple(DESCRIBING)
+    return all(t.candidates and all(c.tag in allowed for c in t.candidates) for t in words)
 
 
 def _describing(word: Tagged) -> Tagged:

@@ -160,7 +160,7 @@ class WordFormation:
             if compound:
                 note = f"read '{first} {words[1]}' as '{same}-{words[1]}' ('{first}' means '{same}' here)"
                 return Reading((Part(0, 1, 0, None, compound),), 2, note)
-        if first in rules.sizes and len(words) > 1:  # "wide oak floorboards" (not "wide grained")
+        if first in rules.sizes and len(words) > 1 and not self._names_feature(words[1]):  # "wide oak floorboards"
             return Reading((), 1, f"read '{first}' as the size of the pieces: not drawn, no effect on the look")
         if len(words) > 1:
             named = self._resembling_colour_name(first, words[1])
@@ -217,6 +217,11 @@ class WordFormation:
             if found is not None:
                 return found
         return None
+
+    def _names_feature(self, word: str) -> bool:
+        """Whether the word is a feature ('large veins', 'large flakes': there a size is the
+        feature's scale, not the pieces' size read past)."""
+        return any(c.tag == "FEATURE" for c in self._known(word))
 
     def _known(self, word: str) -> tuple[Candidate, ...]:
         return self.lookup((word,)) if word else ()

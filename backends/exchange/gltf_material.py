@@ -30,6 +30,7 @@ from cnlmc.material import Material
 
 from .conversions import alpha_pair, clip01, conductor_f0
 from .gltf_subsurface import subsurface_extensions
+from .mitsuba_subsurface import DARKEST_TRANSMITTANCE
 
 JSON = dict[str, Any]
 
@@ -101,7 +102,7 @@ def extensions(material: Material, thickness: float) -> JSON:
 def glass_volume(material: Material, thickness: float) -> JSON:
     """KHR_materials_volume of a glass: its thickness, and its colour as an attenuation."""
     volume: JSON = {"thicknessFactor": float(thickness)}
-    colour = clip01(material.params.base_color)
+    colour = [max(c, DARKEST_TRANSMITTANCE) for c in clip01(material.params.base_color)]  # viewers take its log
     if min(colour) < 1.0 and "base_color" not in material.maps:  # a map tints as glTF's baseColor does
         volume["attenuationColor"] = [float(c) for c in colour]
         volume["attenuationDistance"] = float(material.params.transmission_depth)

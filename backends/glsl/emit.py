@@ -30,6 +30,10 @@ STANDALONE_UNIFORMS = {
     "cnlm_light_radiance": ("vec3", "linear radiance of the light (default 3)"),
     "cnlm_ambient_radiance": ("vec3", "constant ambient radiance (default 0.05)"),
 }
+#: ... and a glass's: the path through it (cnlm_glass_absorption; at 0 nothing is absorbed)
+GLASS_UNIFORMS = {
+    "cnlm_glass_thickness": ("float", "metres of glass the light behind crosses (default 0.1, the preview ball)"),
+}
 
 
 def model_summary(plan: Plan) -> str:
@@ -198,7 +202,10 @@ def sidecar(
         "standalone": {
             "output": "sRGB-encoded colour",
             "attributes": STANDALONE_ATTRIBUTES,
-            "uniforms": {k: {"type": t, "doc": d} for k, (t, d) in STANDALONE_UNIFORMS.items()},
+            "uniforms": {
+                k: {"type": t, "doc": d}
+                for k, (t, d) in {**STANDALONE_UNIFORMS, **(GLASS_UNIFORMS if plan.transmission else {})}.items()
+            },
         },
     }
 

@@ -221,10 +221,12 @@ def absorption(material: MaterialLike, length: Any) -> Real:
     nothing along any path longer than 0; a path of length 0 passes everything."""
     material = as_material(material)
     colour = np.clip(np.asarray(material.params.base_color, float), 0.0, 1.0)
-    ratio = np.maximum(np.asarray(length, float), 0.0)[..., None] / float(material.params.transmission_depth)
+    length = np.asarray(length, float)[..., None]
+    ratio = np.where(length > 0.0, length, 0.0) / float(material.params.transmission_depth)  # NaN stays NaN
     with np.errstate(divide="ignore", invalid="ignore"):
-        kept = np.exp(ratio * np.log(colour))  # NaN only at 0 * log(0): replaced below
-    return np.where(ratio > 0.0, np.where(colour > 0.0, kept, 0.0), 1.0)
+        kept = np.exp(ratio * np.log(colour))  # NaN at 0 * log(0) and inf * log(1): replaced below
+    kept = np.where(colour >= 1.0, 1.0, np.where(colour > 0.0, kept, 0.0))
+    return np.where(np.isnan(length), np.nan, np.where(ratio > 0.0, kept, 1.0))
 
 
 def evaluate_transmission(

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any, NamedTuple
 
 from .. import ast
@@ -92,19 +93,33 @@ def _map_ref(ref: dict[str, Any], ctx: Context, weight: float = 1.0) -> dict[str
 
 
 def colour_seen_through(state: MaterialState, words: tuple[ast.Word, ...] = ()) -> None:
-    """Before a word names or changes a glass's colour ('blue glass', 'smoky glass', 'a darker red
-    wine'): the colour the glass has is restated as the one seen through the table's default depth
-    (an object a few centimetres thick), the depth a colour word describes. Beer-Lambert keeps the
-    glass the same: c' = c^(default / depth). A glass noun's own depth (a dataset's 1 cm of wine)
-    belongs to its own colour only."""
+    """Before a word names or changes a glass's colour ('blue glass', 'smoky glass', 'deep red
+    wine', a colour refinement): the colour the glass has is restated as the one seen through the
+    table's default depth (an object a few centimetres thick), the depth a colour word describes,
+    both recorded. Beer-Lambert keeps the glass the same (`through_depth`). A glass noun's own depth
+    (a dataset's 1 cm of wine) belongs to its own colour only."""
     if state.kind != "glass":
         return
     seen = Params.transmission_depth
     depth = state.params.get("transmission_depth", seen)
     if depth == seen:
         return
-    state.params["transmission_depth"] = seen
     colour = state.params.get("base_color")
-    if colour is not None:
-        restated = [float(c) ** (seen / depth) for c in colour]
-        state.record("base_color", restated, f"the colour seen through {seen * 100:g} cm (Beer-Lambert)", words)
+    restated = through_depth(colour, depth, seen) if colour is not None else None
+    if restated is not None and max(restated) < HUE_FLOOR:
+        return  # black coffee through 5 cm has no hue left to make lighter: its own depth keeps it
+    rule = f"the colour seen through {seen * 100:g} cm (Beer-Lambert)"
+    state.record("transmission_depth", seen, rule, words)
+    if restated is not None:
+        state.record("base_color", restated, rule, words)
+
+
+#: the brightest channel under which a restated glass colour is black, its hue lost (our choice:
+#: 1e-3, about a quarter of an 8-bit sRGB step above black); the colour then stays at its own depth
+HUE_FLOOR = 1e-3
+
+
+def through_depth(colour: Sequence[float], depth: float, other: float) -> list[float]:
+    """A glass colour, the transmittance through `depth`, restated as the transmittance through
+    `other` (Beer-Lambert: colour^(other / depth))."""
+    return [max(float(c), 0.0) ** (other / depth) for c in colour]

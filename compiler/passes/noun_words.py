@@ -10,7 +10,7 @@ from __future__ import annotations
 from .. import ast
 from ..diagnostics import Diagnostic, Severity
 from ..state import Context, MaterialState
-from .base import colour_seen_through
+from .base import colour_seen_through, through_depth
 from .colours import shade
 from .words import copy_optics
 
@@ -65,7 +65,7 @@ def apply_noun_colour(state: MaterialState, ctx: Context, colour: ast.Colour, pa
         colour_seen_through(state, (colour.noun,))
         depth = ctx.lexicon.require("nouns", colour.noun.key).get("transmission_depth")
         if state.kind == "glass" and depth is not None:  # 'a red wine tint': the wine as seen, not its 1 cm
-            rgb = [float(c) ** (state.params["transmission_depth"] / depth) for c in rgb]
+            rgb = through_depth(rgb, depth, state.params["transmission_depth"])
         state.record("base_color", rgb, f"nouns.{colour.noun.key}: the colour of {colour.noun.text}", (colour.noun,))
     _note(state, colour, f"read '{_text(colour)}' as the colour of {colour.noun.text}")
 

@@ -18,12 +18,13 @@ from .. import ast
 from ..diagnostics import Diagnostic, Severity, warning
 from ..state import Context, MaterialState
 from ..tagged import NOTE_CODE
+from .base import colour_seen_through
 from .coats import apply_clauses
 from .refine_colour import refine_colour, refine_named_colour
 from .refine_effects import brings_treatment, refine_adjective
 from .refine_missing_map import add_missing_map
 from .refine_property import acted_on, refine_property
-from .refine_target import refine_weight
+from .refine_target import item_words, refine_weight
 from .words import apply_described, apply_group
 
 __all__ = ["apply_inline_refinements", "apply_refinement", "apply_refinement_line", "refine_property"]
@@ -133,6 +134,8 @@ def apply_refinement(state: MaterialState, ctx: Context, item: ast.RefineItem) -
     if item.word.unknown or (item.target is not None and _is_unknown(item.target)):
         return
     weight = refine_weight(item, ctx)
+    if _moves_colour(ctx, target, item):  # a glass's colour, restated as seen through 5 cm first
+        colour_seen_through(state, item_words(item))
     if target == "colour":
         refine_colour(state, entry, item, direction, weight)
     elif target != "any":
@@ -148,6 +151,18 @@ def apply_refinement(state: MaterialState, ctx: Context, item: ast.RefineItem) -
         )
     else:
         _refine_named(state, ctx, item, direction, weight)
+
+
+def _moves_colour(ctx: Context, target: str | None, item: ast.RefineItem) -> bool:
+    """Whether the refinement moves the base colour: a colour comparative ('darker'), a colour named
+    ('more red') or the colour property ('more saturated')."""
+    if target == "colour" or isinstance(item.target, ast.Colour):
+        return True
+    name = target if target != "any" else (item.target.key if isinstance(item.target, ast.Word) else None)
+    if name is None or (target == "any" and item.target is not None and item.target.category != "properties"):
+        return False
+    prop = ctx.lexicon.entry("properties", name)
+    return prop is not None and prop.get("param") == "saturation"
 
 
 def _is_unknown(target: ast.Word | ast.Colour) -> bool:

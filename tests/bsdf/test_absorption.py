@@ -66,3 +66,11 @@ def test_words_keep_the_depth_their_colour_is_seen_through():
     seen = np.asarray(red_wine.params.base_color) ** 5  # red wine through 5 cm
     assert np.all(np.asarray(darker.params.base_color) <= seen + 1e-12)
     assert compile_source("clear acrylic\n").document.materials[0].params.transmission_depth == 0.05
+
+
+def test_infinite_and_undefined_paths():
+    """A colourless channel passes everything along any path (inf * log 1 is no NaN); a NaN path
+    is NaN, not full transmittance."""
+    kept = absorption(glass([1.0, 0.5, 0.0], 0.01), [np.inf, np.nan])
+    np.testing.assert_array_equal(kept[0], [1.0, 0.0, 0.0])
+    assert np.all(np.isnan(kept[1]))

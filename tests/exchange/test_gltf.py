@@ -118,7 +118,8 @@ def check_glass_volume(material: dict, volume: dict) -> None:
     if min(colour) >= 1.0 or "base_color" in material["maps"]:
         assert "attenuationColor" not in volume and "attenuationDistance" not in volume, material["name"]
         return
-    assert np.allclose(volume["attenuationColor"], colour, atol=1e-6, rtol=0), material["name"]
+    darkest = [max(c, 1e-4) for c in colour]  # a viewer takes its log: clamped as Mitsuba's medium is
+    assert np.allclose(volume["attenuationColor"], darkest, atol=1e-6, rtol=0), material["name"]
     assert volume["attenuationDistance"] == material["params"].get("transmission_depth", 0.05), material["name"]
 
 
