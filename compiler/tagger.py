@@ -452,21 +452,33 @@ NOUN_FOLLOWERS = frozenset(("WITH", "OR", "AND"))
 
 
 def _last_target_describes(tagged: list[Tagged], lexicon: Lexicon) -> None:
-    """'less mirror', 'a bit more satin': the last word, right after a comparative that takes a
+    """'less mirror', 'a bit more satin, please': a word right after a comparative that takes a
     target ('less', 'more': not 'shinier', whose next word is the material, 'shinier satin'), that
-    reads both as a describing word and as a material (not as a colour: 'darker walnut') is the
-    comparative's target, the describing word; a material there would leave the comparative with
-    nothing to move ("'less' of what?")."""
-    last = tagged[-1]
-    tags = {c.tag for c in last.candidates}
-    if "ADJ" not in tags or "NOUN" not in tags or "COLOR" in tags:
-        return
-    refines = [c for c in tagged[-2].candidates if c.tag == "REFINE"]
-    entries = [lexicon.entry("refinements", c.key) for c in refines]
-    if not any(e is not None and e.get("target") == "any" for e in entries):
-        return
-    kept = tuple(c for c in last.candidates if c.tag != "NOUN")
-    tagged[-1] = Tagged(last.text, last.span, kept, last.unknown, implied_by=last.implied_by)
+    reads both as a describing word and as a material (not as a colour: 'darker walnut'), with no
+    word after it that could name a material, is the comparative's target, the describing word; a
+    material there would leave the comparative with nothing to move ("'less' of what?")."""
+    for k in range(len(tagged) - 1, 0, -1):
+        word = tagged[k]
+        if word.unknown:
+            continue  # its tags are guesses ('please', read past later)
+        tags = {c.tag for c in word.candidates}
+        if "ADJ" in tags and "NOUN" in tags and "COLOR" not in tags and _takes_target(tagged[k - 1], lexicon):
+            tagged[k] = Tagged(
+                word.text,
+                word.span,
+                tuple(c for c in word.candidates if c.tag != "NOUN"),
+                word.unknown,
+                word.implied_by,
+            )
+            return
+        if tags & {"NOUN", "OBJECT"}:
+            return  # a material after it: 'less satin paint' is read as said
+
+
+def _takes_target(word: Tagged, lexicon: Lexicon) -> bool:
+    """Whether the word is a comparative that needs a target ('less', 'more')."""
+    entries = [lexicon.entry("refinements", c.key) for c in word.candidates if c.tag == "REFINE"]
+    return any(e is not None and e.get("target") == "any" for e in entries)
 
 
 def _is_separator(word: Tagged) -> bool:

@@ -238,7 +238,8 @@ def test_a_comparative_the_lexicon_lacks_is_more_of_its_adjective():
 
 
 @pytest.mark.parametrize(
-    ("line", "rougher"), [("less mirror", True), ("it's too mirror-like", True), ("less satin", False)]
+    ("line", "rougher"),
+    [("less mirror", True), ("it's too mirror-like", True), ("less satin", False), ("less satin, please", False)],
 )
 def test_a_describing_word_after_less_is_its_target_not_a_new_material(line, rougher):
     """'mirror' and 'satin' are also materials; after 'less'/'more' (which need a target) they are
