@@ -14,6 +14,7 @@ import numpy as np
 
 from ..base import as_document
 from ..exchange import mitsuba, mitsuba_cnlm
+from ..exchange.mitsuba_subsurface import VOLUME_MAX_DEPTH
 from . import reference_glass
 from .environment import mitsuba_rows, write_exr
 from .mesh_io import write_ply
@@ -73,10 +74,13 @@ GLASS_MAX_DEPTH = 8
 
 def integrator_for(material: MaterialLike, medium: bool = False) -> tuple[str, str]:
     """(integrator type, its extra properties) for the material: `path` for glass (`volpathmis`
-    when it has an absorbing medium inside: a tinted glass), else `direct`."""
+    when it has an absorbing medium inside: a tinted glass), `volpathmis` to any depth for a body
+    with a scattering medium (milk, wax: Russian roulette ends its paths), else `direct`."""
     if as_material(material).model.base == "glass":
         depth = f'\n        <integer name="max_depth" value="{GLASS_MAX_DEPTH}"/>'
         return ("volpathmis" if medium else "path"), depth
+    if medium:
+        return "volpathmis", f'\n        <integer name="max_depth" value="{VOLUME_MAX_DEPTH}"/>'
     return "direct", ""
 
 
@@ -127,13 +131,15 @@ def export_scene(
         materials = out / "materials.xml"
         materials.write_text(reference_glass.wrap_materials_xml(materials.read_text("utf-8")), "utf-8")
     bsdf_id = _bsdf_id(out / "materials.xml")
-    glass = as_material(material).model.base == "glass"  # its colour: the medium inside
-    medium_id = _medium_id(out / "materials.xml") if glass else None
+    # a tinted glass's absorption; a volume's body in the native export (the chart's cnlm reference
+    # draws the surface model, whose colour is the body's: preview_chart_translucent.py has the volume)
+    glass = as_material(material).model.base == "glass"
+    medium = medium_id(out / "materials.xml") if glass or bsdf != "cnlm" else None
     write_ply(scene.mesh, out / "mesh.ply", flip_v=True)  # Mitsuba: bitmap top row at v = 0
     write_exr(out / "environment.exr", mitsuba_rows(scene.env.image))  # Mitsuba's row positions
     cam = scene.camera
     distance = float(np.linalg.norm(np.subtract(cam.eye, cam.target)))
-    integrator, max_depth = integrator_for(material, medium_id is not None)
+    integrator, max_depth = integrator_for(material, medium is not None)
     xml = SCENE_TEMPLATE.format(
         integrator=integrator,
         max_depth=max_depth,
@@ -153,13 +159,13 @@ def export_scene(
         light_dir=_vec(-scene.env.key.unit),
         irradiance=scene.env.key.irradiance * scene.env_intensity,
         bsdf_id=quoteattr(bsdf_id),
-        interior="" if medium_id is None else f'\n        <ref name="interior" id={quoteattr(medium_id)}/>',
+        interior="" if medium is None else f'\n        <ref name="interior" id={quoteattr(medium)}/>',
     )
     (out / "scene.xml").write_text(xml)
     return out / "scene.xml"
 
 
-def _medium_id(materials_xml: Path) -> str | None:
+def medium_id(materials_xml: Path) -> str | None:
     """The id of the fragment's medium (a tinted glass's absorption, a volume's body), if any."""
     import xml.etree.ElementTree as ET
 

@@ -21,12 +21,11 @@ boundary, an opaque material) do so as before (tests/subsurface/test_reference_k
 from __future__ import annotations
 
 import re
-import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import numpy as np
 
-from .mitsuba_scene import export_scene, render_scene
+from .mitsuba_scene import export_scene, medium_id, render_scene
 from .scene import Scene
 from .shader import MaterialLike, as_material
 
@@ -38,7 +37,6 @@ VOLUME_MAX_DEPTH_PROBE = -1
 #: (96 and 36 of 32x32 pixels above 50; `independent` at 8 and 32 spp: none above 65), so the
 #: volumetric reference samples independently at every count.
 SAMPLER = "independent"
-SHAPE_REF = re.compile(r'(<shape type="ply">\s*<string name="filename" value="mesh.ply"/>\s*<ref id=[^>]*/>)')
 INTEGRATOR_OPEN = re.compile(r'<integrator type="\w+">(\s*<integer name="max_depth" value="-?\d+"/>)?')
 DIRECTIONAL = re.compile(r'\s*<emitter type="directional">.*?</emitter>', re.S)
 #: our choice: 4 degrees (the sun is 0.27): small enough that an opaque surface's highlight and
@@ -58,14 +56,6 @@ KEY_DISK = """
     </shape>"""
 
 
-def medium_id(materials_xml: Path) -> str | None:
-    """The id of the medium the export wrote (a volume's), None for a thin sheet."""
-    for child in ET.parse(materials_xml).getroot():
-        if child.tag == "medium" and child.get("id"):
-            return child.get("id")
-    return None
-
-
 def export_subsurface_scene(
     material: MaterialLike, scene: Scene, out_dir, width: int, height: int, spp: int = 64, seed: int = 0
 ) -> Path:
@@ -78,12 +68,10 @@ def export_subsurface_scene(
         raise ValueError(f"{typed.name}: the material has no subsurface body")
     out = Path(out_dir)
     path = export_scene(typed, scene, out, width, height, spp=spp, seed=seed, sampler=SAMPLER)
-    xml = path.read_text()
-    medium = medium_id(out / "materials.xml")
-    if medium is not None:
-        xml = SHAPE_REF.sub(lambda m: f'{m.group(1)}\n        <ref name="interior" id="{medium}"/>', xml, count=1)
-    depth = f'\n        <integer name="max_depth" value="{VOLUME_MAX_DEPTH}"/>'
-    xml = INTEGRATOR_OPEN.sub(f'<integrator type="{INTEGRATOR}">{depth}', xml, count=1)
+    xml = path.read_text()  # a volume: export_scene wrote its medium as the interior and volpathmis
+    if medium_id(out / "materials.xml") is None:  # a thin sheet: the volume path tracer all the same
+        depth = f'\n        <integer name="max_depth" value="{VOLUME_MAX_DEPTH}"/>'
+        xml = INTEGRATOR_OPEN.sub(f'<integrator type="{INTEGRATOR}">{depth}', xml, count=1)
     path.write_text(with_key_disk(xml, scene))
     return path
 
