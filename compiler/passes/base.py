@@ -115,7 +115,7 @@ def colour_seen_through(state: MaterialState, words: tuple[ast.Word, ...] = ()) 
 
 
 #: the brightest channel under which a restated glass colour is black, its hue lost (our choice:
-#: 1e-3, about a quarter of an 8-bit sRGB step above black); the colour then stays at its own depth
+#: linear 1e-3, sRGB 3/255, black to the eye); the colour then stays at its own depth
 HUE_FLOOR = 1e-3
 
 
