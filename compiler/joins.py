@@ -25,7 +25,7 @@ if TYPE_CHECKING:
     from .spoken import Spoken
     from .word_formation import Rules
 
-__all__ = ["HEAD_HOLDERS", "Joiner", "may_join", "of_tag", "others", "others_of"]
+__all__ = ["HEAD_HOLDERS", "Joiner", "may_join", "of_tag", "others", "others_of", "takes_target"]
 
 #: The readings a head word ("finish", "look") joins: before the noun (False) or at the line's end (True).
 HEAD_HOLDERS = {False: ("ADJ", "COLOR", "NOUN"), True: ("NOUN",)}
@@ -140,7 +140,7 @@ class Joiner:
                 self._form_feature(out, noun, thing, diags)
         for noun, look in looks:
             self._look_clause(out, noun, look)
-        if len(out) > 2 and self._coat_after_mark(out, diags):
+        if len(out) > 2 and (self._coat_after_mark(out, diags) or self._describing_after_slash(out, diags)):
             pass  # 'Walnut, satin lacquer', 'Oak / natural oil': a listing's finish after its material
         elif len(out) > 2 and self._is_coat_finish(out):
             self._coat_after(out, diags)
@@ -323,7 +323,7 @@ class Joiner:
         the mark one material noun with only describing words before it (not 'red or blue paint')."""
         last = out[-1]
         if not of_tag(last, "COAT") or last.unknown:
-            return self._describing_after_slash(out, diags)
+            return False
         k = len(out) - 2
         while k > 0 and any(c.tag in DESCRIBING for c in out[k].candidates):  # a word that may describe: 'Satin'
             k -= 1
@@ -488,10 +488,12 @@ class Joiner:
     def _past_target(self, out: list[Tagged], comparative: int) -> int:
         """Where the words after a comparative start, past its target when it takes one ('more
         yellow than satin varnish': 'yellow'; 'lighter' names its own)."""
-        entries = [self.lexicon.entry("refinements", c.key) for c in of_tag(out[comparative], "REFINE")]
-        takes_one = any(e is not None and e.get("target") == "any" for e in entries)
         after = comparative + 1
-        if takes_one and after < len(out) - 1 and any(c.tag in COMPARED for c in out[after].candidates):
+        if (
+            takes_target(out[comparative], self.lexicon)
+            and after < len(out) - 1
+            and any(c.tag in COMPARED for c in out[after].candidates)
+        ):
             return after + 1
         return after
 
@@ -604,9 +606,8 @@ class Joiner:
         note = f"read '{before.text} {text}' as '{before.text}' ('{text}' names what it describes)"
         diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
         kept = tuple(c for c in before.candidates if c.tag in self._holders(text.lower(), last))
-        if any(
-            c.tag == "ADJ" for c in kept
-        ):  # 'satin finish': the finish, never the fabric (last too: 'a satin finish')
+        # 'satin finish': the finish, never the fabric (at the line's end too: 'a satin finish')
+        if any(c.tag == "ADJ" for c in kept):
             kept = tuple(c for c in kept if c.tag != "NOUN")
         return Tagged(f"{before.text} {text}", joined, kept, before.unknown)
 
@@ -762,6 +763,13 @@ def _describes_a_coat(rest: list[Tagged]) -> bool:
 
 #: The readings of describing words a plating ('nickel plated', from 'nickel finish') may move before.
 DESCRIBING = frozenset(("ADV", "ADJ", "COLOR", "SHADE"))
+
+
+def takes_target(word: Tagged, lexicon: Lexicon) -> bool:
+    """Whether the word is a comparative that needs a target ('less', 'more': refinements.toml
+    target "any"; 'lighter' names its own)."""
+    entries = [lexicon.entry("refinements", c.key) for c in word.candidates if c.tag == "REFINE"]
+    return any(e is not None and e.get("target") == "any" for e in entries)
 
 
 def _only_describing(words: list[Tagged], article: bool = True) -> bool:

@@ -18,7 +18,7 @@ from collections import OrderedDict
 from typing import TYPE_CHECKING
 
 from .diagnostics import Diagnostic, Severity, did_you_mean, error
-from .joins import COMPARED, Joiner, may_join, others_of
+from .joins import COMPARED, Joiner, may_join, others_of, takes_target
 from .lexicon import Lexicon
 from .spans import Span, line_span
 from .tagged import NOTE_CODE, Candidate, Tagged
@@ -462,7 +462,7 @@ def _last_target_describes(tagged: list[Tagged], lexicon: Lexicon) -> None:
         if word.unknown:
             continue  # its tags are guesses ('please', read past later)
         tags = {c.tag for c in word.candidates}
-        if "ADJ" in tags and "NOUN" in tags and "COLOR" not in tags and _takes_target(tagged[k - 1], lexicon):
+        if "ADJ" in tags and "NOUN" in tags and "COLOR" not in tags and takes_target(tagged[k - 1], lexicon):
             tagged[k] = Tagged(
                 word.text,
                 word.span,
@@ -475,12 +475,6 @@ def _last_target_describes(tagged: list[Tagged], lexicon: Lexicon) -> None:
             return  # a material after it: 'less satin paint' is read as said
 
 
-def _takes_target(word: Tagged, lexicon: Lexicon) -> bool:
-    """Whether the word is a comparative that needs a target ('less', 'more')."""
-    entries = [lexicon.entry("refinements", c.key) for c in word.candidates if c.tag == "REFINE"]
-    return any(e is not None and e.get("target") == "any" for e in entries)
-
-
 def _is_separator(word: Tagged) -> bool:
     return bool(word.candidates) and all(c.tag in _SEPARATORS for c in word.candidates)
 
@@ -491,7 +485,7 @@ def _dropped_separator(raw: list[RawToken], after: int, tagged: list[Tagged]) ->
     word is taken), so "shiny, not rusty, iron" is "shiny, iron" and "not rusty, iron" is "iron"; a
     separator of two words goes whole ("shiny, but not rusty, iron")."""
     if tagged and _is_separator(tagged[-1]):
-        while tagged and _is_separator(tagged[-1]):
+        while tagged and _is_separator(tagged[-1]):  # ', but': both words
             tagged.pop()
         return 0
     if after < len(raw) and raw[after][0] in (",", ";"):

@@ -26,11 +26,11 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from cnlmc.bsdf.transmission import DARKEST_TRANSMITTANCE
 from cnlmc.material import Material
 
 from .conversions import alpha_pair, clip01, conductor_f0
 from .gltf_subsurface import subsurface_extensions
-from .mitsuba_subsurface import DARKEST_TRANSMITTANCE
 
 JSON = dict[str, Any]
 

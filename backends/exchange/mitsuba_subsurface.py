@@ -29,7 +29,7 @@ from typing import Any
 import numpy as np
 
 from cnlmc.bsdf.subsurface import medium_of, slab
-from cnlmc.bsdf.transmission import interface_albedo
+from cnlmc.bsdf.transmission import DARKEST_TRANSMITTANCE, interface_albedo
 from cnlmc.conventions import ALPHA_MIRROR
 from cnlmc.material import Material
 
@@ -68,11 +68,6 @@ def medium_coefficients(material: Material) -> tuple[list[float], list[float], f
     assert sub is not None, "only a material with a medium has coefficients"
     medium = medium_of(sub.color, sub.radius, float(sub.anisotropy), float(material.params.ior))
     return [float(v) for v in medium.sigma_t], [float(v) for v in medium.single_albedo], float(sub.anisotropy)
-
-
-#: the darkest transmittance a glass medium is given (as the preview's shader clamps it): a colour
-#: channel of 0 would need an infinite extinction
-DARKEST_TRANSMITTANCE = 1e-4
 
 
 def glass_absorption(material: Material) -> list[float] | None:

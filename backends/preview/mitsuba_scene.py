@@ -130,11 +130,11 @@ def export_scene(
     if bsdf == "cnlm":  # rough glass with the light its facets block given back (reference_glass.py)
         materials = out / "materials.xml"
         materials.write_text(reference_glass.wrap_materials_xml(materials.read_text("utf-8")), "utf-8")
-    bsdf_id = _bsdf_id(out / "materials.xml")
+    bsdf_id, medium = fragment_ids(out / "materials.xml")
     # a tinted glass's absorption; a volume's body in the native export (the chart's cnlm reference
     # draws the surface model, whose colour is the body's: preview_chart_translucent.py has the volume)
-    glass = as_material(material).model.base == "glass"
-    medium = medium_id(out / "materials.xml") if glass or bsdf != "cnlm" else None
+    if as_material(material).model.base != "glass" and bsdf == "cnlm":
+        medium = None
     write_ply(scene.mesh, out / "mesh.ply", flip_v=True)  # Mitsuba: bitmap top row at v = 0
     write_exr(out / "environment.exr", mitsuba_rows(scene.env.image))  # Mitsuba's row positions
     cam = scene.camera
@@ -165,25 +165,24 @@ def export_scene(
     return out / "scene.xml"
 
 
-def medium_id(materials_xml: Path) -> str | None:
-    """The id of the fragment's medium (a tinted glass's absorption, a volume's body), if any."""
+def fragment_ids(materials_xml: Path) -> tuple[str, str | None]:
+    """The ids of the fragment's first BSDF and of its medium (a tinted glass's absorption, a
+    volume's body), if any: one read of the file."""
     import xml.etree.ElementTree as ET
 
+    found: dict[str, str] = {}
     for child in ET.parse(materials_xml).getroot():
-        if child.tag == "medium" and child.get("id"):
-            return child.get("id")
-    return None
-
-
-def _bsdf_id(materials_xml: Path) -> str:
-    import xml.etree.ElementTree as ET
-
-    root = ET.parse(materials_xml).getroot()
-    for child in root:
         ident = child.get("id")
-        if child.tag == "bsdf" and ident:
-            return ident
-    raise ValueError(f"{materials_xml}: no BSDF with an id")
+        if child.tag in ("bsdf", "medium") and ident:
+            found.setdefault(child.tag, ident)
+    if "bsdf" not in found:
+        raise ValueError(f"{materials_xml}: no BSDF with an id")
+    return found["bsdf"], found.get("medium")
+
+
+def medium_id(materials_xml: Path) -> str | None:
+    """The id of the fragment's medium, if any (see fragment_ids)."""
+    return fragment_ids(materials_xml)[1]
 
 
 def render_scene(

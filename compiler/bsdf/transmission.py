@@ -215,6 +215,11 @@ def mirror_transmittance(wo: Real, ior: Real, mode: str = "radiance") -> Real:
     return np.where(visible[..., None], wi, 0.0), np.where(visible, weight, 0.0)
 
 
+#: the darkest transmittance a target's glass medium is given (the preview's shader, Mitsuba's medium,
+#: glTF's attenuation): a colour channel of 0 would need an infinite extinction, 9.2 / depth here
+DARKEST_TRANSMITTANCE = 1e-4
+
+
 def absorption(material: MaterialLike, length: Any) -> Real:
     """The glass's transmittance along a path of `length` metres inside it, RGB (..., 3):
     base_color^(length / transmission_depth) (Beer-Lambert). A colour channel of 0 passes
@@ -321,6 +326,7 @@ __all__ = [
     "MODES",
     "dielectric_reflection",
     "evaluate_bsdf",
+    "DARKEST_TRANSMITTANCE",
     "absorption",
     "evaluate_transmission",
     "generalized_half_vector",

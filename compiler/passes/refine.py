@@ -158,10 +158,10 @@ def _moves_colour(ctx: Context, target: str | None, item: ast.RefineItem) -> boo
     ('more red') or the colour property ('more saturated')."""
     if target == "colour" or isinstance(item.target, ast.Colour):
         return True
-    name = target if target != "any" else (item.target.key if isinstance(item.target, ast.Word) else None)
-    if name is None or (target == "any" and item.target is not None and item.target.category != "properties"):
-        return False
-    prop = ctx.lexicon.entry("properties", name)
+    if target == "any":  # 'more <property>': the property it names
+        named = item.target
+        target = named.key if isinstance(named, ast.Word) and named.category == "properties" else None
+    prop = ctx.lexicon.entry("properties", target) if target else None
     return prop is not None and prop.get("param") == "saturation"
 
 
