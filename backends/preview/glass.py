@@ -31,11 +31,12 @@ def bounding_sphere(mesh: Mesh) -> tuple[np.ndarray, float]:
 
 
 def reference_units(depth: float) -> float:
-    """The glass's transmission_depth (metres) in object units, a unit being a subsurface medium's
-    (`subsurface.metres_per_unit`: the unit sphere is the 10 cm ball, as in the Mitsuba export)."""
-    from .subsurface import metres_per_unit
+    """The glass's transmission_depth (metres) in object units: a unit is METRES_PER_UNIT metres
+    (the unit sphere is the 10 cm ball), the unit of a subsurface medium and the Mitsuba export
+    (read where `subsurface.metres_per_unit` reads it: that module imports this one)."""
+    from ..exchange.mitsuba_subsurface import METRES_PER_UNIT
 
-    return float(depth) / metres_per_unit()
+    return float(depth) / METRES_PER_UNIT
 
 
 def glass_uniforms(mesh: Mesh, model: np.ndarray, depth: float, form: str = "auto") -> dict[str, object]:
