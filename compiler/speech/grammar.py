@@ -36,10 +36,12 @@ class Grammar:
         self.count += 1
         return self.count - 1
 
-    def words(self, source: int, target: int, forms: Iterable[str], prior: WordPrior | None = None) -> None:
+    def words(
+        self, source: int, target: int, forms: Iterable[str], prior: WordPrior | None = None, total: float = 1.0
+    ) -> None:
         """An arc for each form (a multi-word form through states of its own); the forms share a
-        probability of 1, in proportion to the prior's weights (equally without one)."""
-        shares = _shares(list(dict.fromkeys(forms)), prior)
+        probability of `total`, in proportion to the prior's weights (equally without one)."""
+        shares = {form: share * total for form, share in _shares(list(dict.fromkeys(forms)), prior).items()}
         for form, share in shares.items():
             words = form.split()
             at = source
@@ -114,7 +116,7 @@ class GrammarBuilder:
                 at = following
             if number + 1 < count:
                 joined = g.state()
-                g.words(at, joined, [self.settings.and_word])
+                g.words(at, joined, [self.settings.and_word], total=self.settings.joiner_probability)
                 g.skip(at, joined)
                 at = joined
         return at
@@ -134,7 +136,7 @@ class GrammarBuilder:
         g.words(noun, named, self.of("nouns"), self.prior)
         self.ending(named, clauses)
         or_noun = g.state()
-        g.words(named, or_noun, [s.or_word])
+        g.words(named, or_noun, [s.or_word], total=s.joiner_probability)
         g.words(or_noun, second, self.of("nouns"), self.prior)
         self.ending(second, clauses)
 
@@ -177,7 +179,7 @@ class GrammarBuilder:
             for end in (done, targeted):
                 g.skip(end, g.final)
                 if number + 1 < s.max_items:
-                    g.words(end, following, [s.and_word])
+                    g.words(end, following, [s.and_word], total=s.joiner_probability)
                     g.skip(end, following)
             at = following
 

@@ -24,6 +24,7 @@ class NoiseFloor:
     speech_percentile: float  # the speech's level: this percentile of the frames' RMS
     pause_percentile: float  # the pauses' level: this percentile of the frames' RMS
     seed: int  # the noise is the same for the same audio (results repeat)
+    slope: float = 1.0  # the noise's power falls as 1/f**slope (0: white, 1: pink, 2: brown)
 
     def apply(self, pcm: bytes, rate: int) -> bytes:
         """16-bit mono PCM with the floor raised where it is missing (the input when it is not)."""
@@ -31,7 +32,7 @@ class NoiseFloor:
         missing = self.missing_rms(samples, rate)
         if missing <= 0.0:
             return pcm
-        noise = np.random.default_rng(self.seed).normal(0.0, missing, samples.size)
+        noise = coloured_noise(samples.size, rate, self.slope, np.random.default_rng(self.seed)) * missing
         return bytes(np.clip(np.round(samples + noise), -32768, 32767).astype("<i2").tobytes())
 
     def missing_rms(self, samples: np.ndarray, rate: int) -> float:
@@ -46,3 +47,18 @@ class NoiseFloor:
         pause = float(np.percentile(levels, self.pause_percentile))
         target = speech * 10 ** (-self.below_speech_db / 20)
         return float(np.sqrt(max(0.0, target**2 - pause**2)))
+
+
+def coloured_noise(size: int, rate: int, slope: float, rng: np.random.Generator) -> np.ndarray:
+    """`size` samples of unit-RMS noise whose power spectrum falls as 1/f**slope (white noise
+    shaped in the frequency domain; the DC bin takes the lowest frequency's gain)."""
+    white = rng.normal(0.0, 1.0, size)
+    if not slope or size < 4:
+        return white
+    spectrum = np.fft.rfft(white)
+    frequencies = np.fft.rfftfreq(size, 1.0 / rate)
+    frequencies[0] = frequencies[1]
+    spectrum *= frequencies ** (-slope / 2.0)
+    noise = np.fft.irfft(spectrum, size)
+    rms = float(np.sqrt(np.mean(noise**2)))
+    return noise / rms if rms > 0.0 else white

@@ -72,7 +72,7 @@ class Recogniser:
         self.decoder, self.fsg = self._loaded(settings.decoder)
         self.wide: Any = None
 
-    def _loaded(self, search: dict[str, float | bool]) -> tuple[Any, Any]:
+    def _loaded(self, search: dict[str, float | bool | str]) -> tuple[Any, Any]:
         """A decoder with the grammar and these search settings, and the grammar as it read it."""
         ps = pocketsphinx_module()
         with tempfile.TemporaryDirectory(prefix="cnlmc-speech-") as folder:

@@ -30,13 +30,14 @@ class SpeechSettings:
     max_clause_groups: int
     max_clauses: int
     max_items: int
+    joiner_probability: float  # of 'and' between groups or items, 'or' between nouns
     prior_exponent: float
     min_confidence: float
     alternatives: int
     sample_rate: int
     spellings: tuple[tuple[str, str], ...]
     nbest_paths: int
-    decoder: dict[str, float | bool]
+    decoder: dict[str, float | bool | str]
     noise_floor: NoiseFloor
     retry: dict[str, float | bool]  # the second pass's search settings (empty: no second pass)
 
@@ -62,12 +63,13 @@ class SpeechSettings:
             max_clause_groups=int(grammar["max_clause_groups"]),
             max_clauses=int(grammar["max_clauses"]),
             max_items=int(grammar["max_items"]),
+            joiner_probability=float(grammar["joiner_probability"]),
             prior_exponent=float(grammar["prior_exponent"]),
             min_confidence=float(recogniser["min_confidence"]),
             alternatives=int(recogniser["alternatives"]),
             sample_rate=int(recogniser["sample_rate"]),
             nbest_paths=int(recogniser["nbest_paths"]),
-            decoder={str(k): v if isinstance(v, bool) else float(v) for k, v in recogniser["decoder"].items()},
+            decoder={str(k): _search_value(v) for k, v in recogniser["decoder"].items()},
             spellings=tuple((str(a), str(b)) for a, b in data["vocabulary"]["spellings"]),
             noise_floor=_noise_floor(recogniser["noise_floor"]),
             retry={str(k): float(v) for k, v in recogniser.get("retry", {}).items()},
@@ -81,7 +83,13 @@ def _noise_floor(table: dict[str, Any]) -> NoiseFloor:
         speech_percentile=float(table["speech_percentile"]),
         pause_percentile=float(table["pause_percentile"]),
         seed=int(table["seed"]),
+        slope=float(table["slope"]),
     )
+
+
+def _search_value(value: Any) -> float | bool | str:
+    """A pocketsphinx setting as speech.toml gives it: a switch, a text (warp_params) or a number."""
+    return value if isinstance(value, bool | str) else float(value)
 
 
 def _spelled(form: str, spellings: tuple[tuple[str, str], ...]) -> str:
