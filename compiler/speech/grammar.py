@@ -28,6 +28,7 @@ class Grammar:
     """States 0..count-1, start 0, one final state; word arcs carry a word, null arcs none."""
 
     transitions: list[Transition] = field(default_factory=list)
+    slots: list[str] = field(default_factory=list)  # each transition's branch: what choosing it says
     count: int = 2  # 0 start, 1 final
     start: int = 0
     final: int = 1
@@ -37,22 +38,27 @@ class Grammar:
         return self.count - 1
 
     def words(
-        self, source: int, target: int, forms: Iterable[str], prior: WordPrior | None = None, total: float = 1.0
+        self, source: int, target: int, forms: Iterable[str], prior: WordPrior | None = None, slot: str = ""
     ) -> None:
         """An arc for each form (a multi-word form through states of its own); the forms share a
-        probability of `total`, in proportion to the prior's weights (equally without one)."""
-        shares = {form: share * total for form, share in _shares(list(dict.fromkeys(forms)), prior).items()}
+        probability of 1, in proportion to the prior's weights (equally without one). `slot` names
+        the branch (cnlmc.speech.branches weighs branches against each other)."""
+        shares = _shares(list(dict.fromkeys(forms)), prior)
         for form, share in shares.items():
             words = form.split()
             at = source
             for word in words[:-1]:
                 step = self.state()
-                self.transitions.append((at, step, share if at == source else 1.0, word))
+                self._add((at, step, share if at == source else 1.0, word), slot)
                 at = step
-            self.transitions.append((at, target, share if at == source else 1.0, words[-1]))
+            self._add((at, target, share if at == source else 1.0, words[-1]), slot)
 
-    def skip(self, source: int, target: int, probability: float = 1.0) -> None:
-        self.transitions.append((source, target, probability))
+    def skip(self, source: int, target: int, slot: str = "") -> None:
+        self._add((source, target, 1.0), slot)
+
+    def _add(self, transition: Transition, slot: str) -> None:
+        self.transitions.append(transition)
+        self.slots.append(slot)
 
     def words_used(self) -> set[str]:
         return {t[3] for t in self.transitions if len(t) == 4}
@@ -96,14 +102,19 @@ class GrammarBuilder:
         g, s = self.grammar, self.settings
         clauses = self.clauses()
         material, refinement = g.state(), g.state()
-        g.skip(g.start, material)
-        g.skip(g.start, refinement)
-        g.words(g.start, g.final, s.undo)
+        g.skip(g.start, material, "start.material")
+        g.skip(g.start, refinement, "start.refinement")
+        g.words(g.start, g.final, s.undo, slot="start.undo")
         self.material(material, clauses)
         self.refinement(refinement, clauses)
         return g
 
-    def groups(self, begin: int, count: int) -> int:
+    def optional(self, source: int, target: int, forms: list[str], slot: str) -> None:
+        """Words that may be said or left out between two states: the branches `slot` and `slot`.skip."""
+        self.grammar.words(source, target, forms, self.prior, slot)
+        self.grammar.skip(source, target, f"{slot}.skip")
+
+    def groups(self, begin: int, count: int, name: str) -> int:
         """Up to `count` describing groups, as cnl.lark's `group`: [adverb] [shade] [colour]
         [adjective] (each slot may be skipped), joined by an optional 'and'; returns the state after."""
         g = self.grammar
@@ -111,40 +122,34 @@ class GrammarBuilder:
         for number in range(count):
             for category in ("adverbs", "shades", "colours", "adjectives"):
                 following = g.state()
-                g.words(at, following, self.of(category), self.prior)
-                g.skip(at, following)
+                self.optional(at, following, self.of(category), f"{name}.group{number}.{category}")
                 at = following
             if number + 1 < count:
                 joined = g.state()
-                g.words(at, joined, [self.settings.and_word], total=self.settings.joiner_probability)
-                g.skip(at, joined)
+                self.optional(at, joined, [self.settings.and_word], f"{name}.group{number}.and")
                 at = joined
         return at
 
     def material(self, begin: int, clauses: int) -> None:
         g, s = self.grammar, self.settings
         after_article = g.state()
-        g.words(begin, after_article, s.articles)
-        g.skip(begin, after_article)
+        self.optional(begin, after_article, list(s.articles), "material.article")
         compared = g.state()
-        g.words(
-            after_article, compared, self.of("refinements"), self.prior
-        )  # an inline comparative: "shinier aluminum"
-        g.skip(after_article, compared)
-        noun = self.groups(compared, s.max_groups)
+        self.optional(after_article, compared, self.of("refinements"), "material.comparative")  # "shinier aluminum"
+        noun = self.groups(compared, s.max_groups, "material")
         named, second = g.state(), g.state()
-        g.words(noun, named, self.of("nouns"), self.prior)
-        self.ending(named, clauses)
+        g.words(noun, named, self.of("nouns"), self.prior, "material.noun")
+        self.ending(named, clauses, "material.noun")
         or_noun = g.state()
-        g.words(named, or_noun, [s.or_word], total=s.joiner_probability)
-        g.words(or_noun, second, self.of("nouns"), self.prior)
-        self.ending(second, clauses)
+        g.words(named, or_noun, [s.or_word], slot="material.noun.or")
+        g.words(or_noun, second, self.of("nouns"), self.prior, "material.second_noun")
+        self.ending(second, clauses, "material.second_noun")
 
-    def ending(self, state: int, clauses: int) -> None:
+    def ending(self, state: int, clauses: int, name: str) -> None:
         """A complete phrase may end here or go on to its 'with' clauses."""
         g = self.grammar
-        g.skip(state, g.final)
-        g.words(state, clauses, [self.settings.with_word])
+        g.skip(state, g.final, f"{name}.end")
+        g.words(state, clauses, [self.settings.with_word], slot=f"{name}.with")
 
     def clauses(self) -> int:
         """The 'with' clauses (after 'with'): [article] describing words, a coat or feature; 'and' another."""
@@ -152,35 +157,34 @@ class GrammarBuilder:
         begin = g.state()
         at = begin
         for number in range(s.max_clauses):
+            name = f"clause{number}"
             after_article = g.state()
-            g.words(at, after_article, s.articles)
-            g.skip(at, after_article)
+            self.optional(at, after_article, list(s.articles), f"{name}.article")
             done = g.state()
-            head = self.groups(after_article, s.max_clause_groups)
-            g.words(head, done, self.of("coats", "features"), self.prior)
-            g.skip(done, g.final)
+            head = self.groups(after_article, s.max_clause_groups, name)
+            g.words(head, done, self.of("coats", "features"), self.prior, f"{name}.head")
+            g.skip(done, g.final, f"{name}.end")
             if number + 1 < s.max_clauses:
                 at = g.state()
-                g.words(done, at, [s.and_word, f"{s.and_word} {s.with_word}"])
+                g.words(done, at, [s.and_word, f"{s.and_word} {s.with_word}"], slot=f"{name}.and")
         return begin
 
     def refinement(self, begin: int, clauses: int) -> None:
         g, s = self.grammar, self.settings
-        g.words(begin, clauses, [s.with_word])
+        g.words(begin, clauses, [s.with_word], slot="refinement.with")
         at = begin
         for number in range(s.max_items):
+            name = f"item{number}"
             comparative, done = g.state(), g.state()
-            g.words(at, comparative, self.of("adverbs"), self.prior)
-            g.skip(at, comparative)
-            g.words(comparative, done, self.of("refinements"), self.prior)
+            self.optional(at, comparative, self.of("adverbs"), f"{name}.adverb")
+            g.words(comparative, done, self.of("refinements"), self.prior, f"{name}.comparative_word")
             targeted = g.state()
-            g.words(done, targeted, self.of("colours", "adjectives", "properties"), self.prior)
+            g.words(done, targeted, self.of("colours", "adjectives", "properties"), self.prior, f"{name}.target")
             following = g.state()
-            for end in (done, targeted):
-                g.skip(end, g.final)
+            for end, role in ((done, "comparative"), (targeted, "target")):
+                g.skip(end, g.final, f"{name}.{role}.end")
                 if number + 1 < s.max_items:
-                    g.words(end, following, [s.and_word], total=s.joiner_probability)
-                    g.skip(end, following)
+                    self.optional(end, following, [s.and_word], f"{name}.{role}.and")
             at = following
 
 

@@ -8,12 +8,13 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..lexicon import Lexicon
+from .branches import bundled_counts, weigh_branches
 from .grammar import Grammar, build_grammar, closed_words
 from .prior import WordPrior
 from .pronounce import Pronunciations
 from .recogniser import Recogniser, model_files, pocketsphinx_module
 from .settings import SpeechSettings
-from .vocabulary import Vocabulary, sayable_vocabulary
+from .vocabulary import Vocabulary, joined_colours, sayable_vocabulary
 
 
 @dataclass(frozen=True)
@@ -33,8 +34,10 @@ class SpeechModel:
         vocabulary = sayable_vocabulary(lexicon, settings)
         words = vocabulary.words() | closed_words(settings)
         pronunciations = Pronunciations(words, model_files().dictionary, folders, british=settings.british_variants)
-        vocabulary = vocabulary.without(pronunciations.missing)
+        vocabulary = vocabulary.without(pronunciations.missing | joined_colours(vocabulary, pronunciations.english))
         grammar = build_grammar(vocabulary, settings, word_prior(vocabulary, settings))
+        if settings.branch_smoothing:
+            grammar = weigh_branches(grammar, bundled_counts(), settings.branch_smoothing)
         return cls(vocabulary, grammar, pronunciations.dictionary_text(), frozenset(pronunciations.missing), settings)
 
     def recogniser(self) -> Recogniser:

@@ -56,6 +56,7 @@ class Pronunciations:
         british: bool = True,
     ):
         self.table = read_dictionary(dictionary, words)
+        self.english = frozenset(self.table)  # the words English has (the recogniser's dictionary)
         bundled = read_pronunciations(speech_data("pronunciations.toml"))
         if british:
             self._add_variants(read_pronunciations(speech_data("pronunciations.toml"), "british"))

@@ -30,7 +30,7 @@ class SpeechSettings:
     max_clause_groups: int
     max_clauses: int
     max_items: int
-    joiner_probability: float  # of 'and' between groups or items, 'or' between nouns
+    branch_smoothing: float  # added to each branch's count (cnlmc.speech.branches)
     prior_exponent: float
     min_confidence: float
     alternatives: int
@@ -63,7 +63,7 @@ class SpeechSettings:
             max_clause_groups=int(grammar["max_clause_groups"]),
             max_clauses=int(grammar["max_clauses"]),
             max_items=int(grammar["max_items"]),
-            joiner_probability=float(grammar["joiner_probability"]),
+            branch_smoothing=float(grammar["branch_smoothing"]),
             prior_exponent=float(grammar["prior_exponent"]),
             min_confidence=float(recogniser["min_confidence"]),
             alternatives=int(recogniser["alternatives"]),

@@ -29,6 +29,22 @@ class Vocabulary:
         return Vocabulary(kept)
 
 
+def joined_colours(vocabulary: Vocabulary, english: frozenset[str]) -> set[str]:
+    """Colour names written as two sayable shade or colour words run together ('darkgreen',
+    'lightblue', 'bluegrey': CSS and the survey spell them so) that English does not have as a
+    word: said aloud they are the two words, which the grammar says with their own meaning ('dark
+    green' is the shade on the colour), so the joined spelling is not sayable. Real compounds
+    English has ('aquamarine', 'strawberry') stay."""
+    parts = {f for c in ("shades", "colours") for f in vocabulary.forms.get(c, ()) if " " not in f}
+    return {
+        form
+        for form in vocabulary.forms.get("colours", ())
+        if " " not in form
+        and form not in english
+        and any(form[:i] in parts and form[i:] in parts for i in range(1, len(form)))
+    }
+
+
 def sayable_vocabulary(lexicon: Lexicon, settings: SpeechSettings) -> Vocabulary:
     by_category: dict[str, set[str]] = {c: set() for c in settings.categories}
     for category in settings.categories:
