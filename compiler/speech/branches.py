@@ -10,7 +10,7 @@ so they hold for a user's lexicon too."""
 from __future__ import annotations
 
 import tomllib
-from collections import Counter, defaultdict
+from collections import defaultdict
 from collections.abc import Iterable
 from functools import cache
 
@@ -55,12 +55,12 @@ def branching(grammar: Grammar) -> dict[int, set[str]]:
     return found
 
 
-def count_branches(grammar: Grammar, phrases: Iterable[str]) -> tuple[Counter[str], int]:
+def count_branches(grammar: Grammar, phrases: Iterable[str]) -> tuple[dict[str, float], int]:
     """How often each named branch is taken where a phrase had a choice, over the phrases the
     grammar can say (a phrase with several readings counts each reading by its share), and how
     many phrases were said."""
     choices = {state for state, slots in branching(grammar).items() if len(slots) > 1}
-    counts: Counter[str] = Counter()
+    counts: dict[str, float] = defaultdict(float)
     said = 0
     for phrase in phrases:
         readings = paths(grammar, tuple(phrase.split()))
@@ -71,7 +71,7 @@ def count_branches(grammar: Grammar, phrases: Iterable[str]) -> tuple[Counter[st
             for index in reading:
                 if grammar.transitions[index][0] in choices:
                     counts[grammar.slots[index]] += 1.0 / len(readings)
-    return counts, said
+    return dict(counts), said
 
 
 def weigh_branches(grammar: Grammar, counts: dict[str, float], smoothing: float) -> Grammar:
