@@ -45,7 +45,7 @@ def run(recogniser: Recogniser, scorer: Scorer, items: list, label: str) -> None
     judged: list[tuple[float, bool]] = []  # (confidence, IR-equal) of each utterance heard
     for utterance, pcm in items:
         c0, w0 = time.process_time(), time.perf_counter()
-        heard = recogniser.decode(pcm)
+        heard = recogniser.decode(pcm, refining=utterance.refinement)
         cpu += time.process_time() - c0
         wall += time.perf_counter() - w0
         audio += len(pcm) / 2 / recogniser.settings.sample_rate

@@ -5,7 +5,9 @@ smoothed (add-`smoothing`, Laplace), so that what people rarely say costs the re
 
 The counts are data (stdlib/speech/branches.toml, written by scripts/gen_speech_branches.py from
 tests/language/everyday.toml, the everyday phrases of issue #14); they name branches, not states,
-so they hold for a user's lexicon too."""
+so they hold for a user's lexicon too. They are kept per context: the first utterance of a session
+starts a material, later ones mostly change it ('darker'), so the start's branches are weighed
+apart for each (two grammars of one structure)."""
 
 from __future__ import annotations
 
@@ -20,10 +22,20 @@ from .settings import speech_data
 BRANCHES_FILE = "branches.toml"
 
 
-def bundled_counts() -> dict[str, float]:
-    """The branch counts of stdlib/speech/branches.toml."""
+CONTEXTS = ("first", "later")  # an utterance that starts a material; one said after it
+START = "start."  # the branches of the start state: a material, a refinement or 'undo'
+
+
+def bundled_counts(context: str) -> dict[str, float]:
+    """The branch counts of stdlib/speech/branches.toml for an utterance said in `context`: how a
+    phrase goes on is counted over both contexts, what it is (a material, a change) in its own."""
     data = tomllib.loads(speech_data(BRANCHES_FILE))
-    return {str(slot): float(count) for slot, count in data["counts"].items()}
+    counts: dict[str, float] = defaultdict(float)
+    for table in CONTEXTS:
+        for slot, count in data[table].items():
+            if table == context or not slot.startswith(START):
+                counts[str(slot)] += float(count)
+    return dict(counts)
 
 
 def paths(grammar: Grammar, words: tuple[str, ...]) -> list[tuple[int, ...]]:

@@ -68,7 +68,7 @@ class ListenCommand(Command):
                 print("listening: say a material, then refinements ('darker', 'undo'); Ctrl-C ends", file=sys.stderr)
             try:
                 for pcm in audio:
-                    for message in listener.hear(recogniser.decode(pcm)).messages:
+                    for message in listener.hear(recogniser.decode(pcm, refining=bool(listener.lines))).messages:
                         print(message, file=sys.stderr)
             except KeyboardInterrupt:
                 pass

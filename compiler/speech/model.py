@@ -8,7 +8,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..lexicon import Lexicon
-from .branches import bundled_counts, weigh_branches
+from .branches import CONTEXTS, bundled_counts, weigh_branches
 from .grammar import Grammar, build_grammar, closed_words
 from .prior import WordPrior
 from .pronounce import Pronunciations
@@ -20,7 +20,8 @@ from .vocabulary import Vocabulary, joined_colours, sayable_vocabulary
 @dataclass(frozen=True)
 class SpeechModel:
     vocabulary: Vocabulary
-    grammar: Grammar
+    grammar: Grammar  # for the utterance that starts a material
+    later: Grammar  # for utterances said after it (the same phrases, changes weighed likelier)
     dictionary: str  # CMU-format pronunciations of every word of the grammar
     unsayable: frozenset[str]  # words left out: no pronunciation anywhere
     settings: SpeechSettings
@@ -36,12 +37,17 @@ class SpeechModel:
         pronunciations = Pronunciations(words, model_files().dictionary, folders, british=settings.british_variants)
         vocabulary = vocabulary.without(pronunciations.missing | joined_colours(vocabulary, pronunciations.english))
         grammar = build_grammar(vocabulary, settings, word_prior(vocabulary, settings))
-        if settings.branch_smoothing:
-            grammar = weigh_branches(grammar, bundled_counts(), settings.branch_smoothing)
-        return cls(vocabulary, grammar, pronunciations.dictionary_text(), frozenset(pronunciations.missing), settings)
+        first, later = (weighed(grammar, context, settings.branch_smoothing) for context in CONTEXTS)
+        dictionary, missing = pronunciations.dictionary_text(), frozenset(pronunciations.missing)
+        return cls(vocabulary, first, later, dictionary, missing, settings)
 
     def recogniser(self) -> Recogniser:
-        return Recogniser(self.grammar, self.dictionary, self.settings)
+        return Recogniser(self.grammar, self.dictionary, self.settings, self.later)
+
+
+def weighed(grammar: Grammar, context: str, smoothing: float) -> Grammar:
+    """The grammar's branches weighed by the bundled counts of `context` (as built when 0)."""
+    return weigh_branches(grammar, bundled_counts(context), smoothing) if smoothing else grammar
 
 
 def word_prior(vocabulary: Vocabulary, settings: SpeechSettings) -> WordPrior | None:

@@ -15,6 +15,9 @@ if TYPE_CHECKING:
     from .grammar import Grammar
 
 
+FIRST, LATER = "first", "later"  # the searches: an utterance that starts a material, one said after it
+
+
 class SpeechUnavailable(RuntimeError):
     """pocketsphinx (or the audio library) is not installed: what to install."""
 
@@ -63,23 +66,23 @@ class Votes:
 class Recogniser:
     """The grammar loaded in pocketsphinx; decode() one utterance at a time. A first pass searches
     with the settings' narrow beams (fast); when it reaches no complete phrase, a second pass with
-    the wide beams of `settings.retry` (made on first need) searches the utterance again."""
+    the wide beams of `settings.retry` (made on first need) searches the utterance again. `later`,
+    when given, is the grammar searched for utterances said after a material (refining=True): the
+    same phrases weighed for that context (cnlmc.speech.branches)."""
 
-    def __init__(self, grammar: Grammar, dictionary: str, settings: SpeechSettings) -> None:
+    def __init__(self, grammar: Grammar, dictionary: str, settings: SpeechSettings, later: Grammar | None = None):
         self.settings = settings
-        self.grammar_text = grammar.fsg_text()
+        self.grammar_texts = {FIRST: grammar.fsg_text(FIRST), LATER: (later or grammar).fsg_text(LATER)}
         self.dictionary = dictionary
         self.decoder, self.fsg = self._loaded(settings.decoder)
         self.wide: Any = None
 
     def _loaded(self, search: dict[str, float | bool | str]) -> tuple[Any, Any]:
-        """A decoder with the grammar and these search settings, and the grammar as it read it."""
+        """A decoder with the grammars and these search settings, and the first grammar as it read it."""
         ps = pocketsphinx_module()
         with tempfile.TemporaryDirectory(prefix="cnlmc-speech-") as folder:
             dict_path = Path(folder) / "words.dict"
-            fsg_path = Path(folder) / "cnlmc.fsg"
             dict_path.write_text(self.dictionary, "utf-8")
-            fsg_path.write_text(self.grammar_text, "utf-8")  # read back: the reader closes null transitions
             config = ps.Config(
                 hmm=str(model_files().acoustic),
                 dict=str(dict_path),
@@ -88,27 +91,33 @@ class Recogniser:
                 **search,
             )
             decoder = ps.Decoder(config)
-            fsg = decoder.read_fsg(str(fsg_path))
-        decoder.add_fsg("cnlmc", fsg)
-        decoder.activate_search("cnlmc")
-        return decoder, fsg
+            read = {}
+            for name, text in self.grammar_texts.items():
+                fsg_path = Path(folder) / f"{name}.fsg"
+                fsg_path.write_text(text, "utf-8")  # read back: the reader closes null transitions
+                read[name] = decoder.read_fsg(str(fsg_path))
+                decoder.add_fsg(name, read[name])
+        return decoder, read[FIRST]
 
-    def decode(self, samples: bytes) -> Hypothesis | None:
+    def decode(self, samples: bytes, refining: bool = False) -> Hypothesis | None:
         """16-bit mono PCM at the settings' sample rate -> the hypothesis; None when no complete
-        phrase of the grammar was heard (by either pass). The audio first gets its noise floor
+        phrase of the grammar was heard (by either pass). `refining`: a material is already there
+        (the later grammar is searched). The audio first gets its noise floor
         (cnlmc.speech.noise_floor)."""
         samples = self.settings.noise_floor.apply(samples, self.settings.sample_rate)
-        heard = self._search(self.decoder, samples)
+        search = LATER if refining else FIRST
+        heard = self._search(self.decoder, samples, search)
         if heard is None and self.settings.retry:
             if self.wide is None:
                 self.wide = self._loaded({**self.settings.decoder, **self.settings.retry})[0]
-            heard = self._search(self.wide, samples)
+            heard = self._search(self.wide, samples, search)
         return heard
 
-    def _search(self, decoder: Any, samples: bytes) -> Hypothesis | None:
+    def _search(self, decoder: Any, samples: bytes, search: str) -> Hypothesis | None:
         """One pass. When the best path ends short of a complete phrase (pocketsphinx then returns
         a partial one: 'more' for a British 'darker'), the best complete phrase of the n-best list
         is taken instead."""
+        decoder.activate_search(search)
         decoder.start_utt()
         decoder.process_raw(samples, no_search=False, full_utt=True)
         decoder.end_utt()

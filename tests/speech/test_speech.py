@@ -18,6 +18,7 @@ from tests.helpers import run_cnlmc
 
 pytest.importorskip("pocketsphinx", reason="speech input needs pocketsphinx (pip install 'cnlmc[speech]')")
 
+from cnlmc.speech.grammar import Grammar
 from cnlmc.speech.model import SpeechModel
 from cnlmc.speech.recogniser import Recogniser
 from cnlmc.speech.testset import (
@@ -118,7 +119,8 @@ def test_the_speech_set_compiles_to_the_said_materials(
     scorer = Scorer(lexicon_for(), phrases, model.settings.undo)
     scores: dict[bool, list[bool]] = defaultdict(list)
     for utterance in clean + noisy:
-        heard = recogniser.decode(read_pcm(synthesize(utterance, audio_folder, model.settings.sample_rate)))
+        pcm = read_pcm(synthesize(utterance, audio_folder, model.settings.sample_rate))
+        heard = recogniser.decode(pcm, refining=utterance.refinement)
         if heard is not None:  # whatever is heard is a complete phrase of the language
             assert recogniser.fsg.accept(heard.text)
         scores[utterance.noisy].append(scorer.ir_equal(utterance, heard.text if heard else None))
@@ -288,3 +290,20 @@ def test_colours_written_joined_are_said_as_two_words(model: SpeechModel) -> Non
     words = model.grammar.words_used()
     assert not {"darkgreen", "lightblue", "bluegrey"} & words
     assert {"dark", "green", "aquamarine", "strawberry"} <= words
+
+
+def test_after_a_material_changes_are_likelier_than_new_materials(model: SpeechModel) -> None:
+    """Two grammars of one structure: the first utterance of a session starts a material, later
+    ones mostly change it, so the start's branches are weighed apart (stdlib/speech/branches.toml)."""
+
+    def start(grammar: Grammar) -> dict[str, float]:
+        found: dict[str, float] = defaultdict(float)
+        for transition, slot in zip(grammar.transitions, grammar.slots, strict=True):
+            if transition[0] == grammar.start:
+                found[slot] += transition[2]
+        return found
+
+    first, later = start(model.grammar), start(model.later)
+    assert first["start.material"] > 0.95 and later["start.refinement"] > 0.8
+    assert 0 < later["start.undo"] and 0 < first["start.refinement"]  # never impossible
+    assert [t[:2] for t in model.grammar.transitions] == [t[:2] for t in model.later.transitions]
