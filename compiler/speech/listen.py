@@ -17,6 +17,19 @@ from ..said_refinement import refined
 from .recogniser import Hypothesis
 
 SOURCE_NAME = "<speech>"
+NOTHING_HEARD = "heard no phrase of the language (say it again, or closer to the microphone)"
+
+
+def heard_text(hypothesis: Hypothesis) -> str:
+    return f"heard '{hypothesis.text}' (confidence {hypothesis.confidence:.2f})"
+
+
+def below_threshold(hypothesis: Hypothesis, min_confidence: float) -> str | None:
+    """What the user is told when the utterance is below the threshold (None: it is not)."""
+    if hypothesis.confidence >= min_confidence:
+        return None
+    options = "; ".join(f"'{a}'" for a in hypothesis.alternatives) or "none"
+    return f"{heard_text(hypothesis)}: not applied, below {min_confidence:.2f}; alternatives: {options}; say it again"
 
 
 @dataclass(frozen=True)
@@ -42,15 +55,11 @@ class Listener:
 
     def hear(self, hypothesis: Hypothesis | None) -> Heard:
         if hypothesis is None:
-            return Heard(None, False, ("heard no phrase of the language (say it again, or closer to the microphone)",))
-        said = f"heard '{hypothesis.text}' (confidence {hypothesis.confidence:.2f})"
-        if hypothesis.confidence < self.min_confidence:
-            options = "; ".join(f"'{a}'" for a in hypothesis.alternatives) or "none"
-            return Heard(
-                hypothesis,
-                False,
-                (f"{said}: not applied, below {self.min_confidence:.2f}; alternatives: {options}; say it again",),
-            )
+            return Heard(None, False, (NOTHING_HEARD,))
+        said = heard_text(hypothesis)
+        refused = below_threshold(hypothesis, self.min_confidence)
+        if refused is not None:
+            return Heard(hypothesis, False, (refused,))
         if hypothesis.text in self.undo_words:
             return self._undo(hypothesis, said)
         return self._apply(hypothesis, said)

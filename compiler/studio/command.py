@@ -8,6 +8,7 @@ from __future__ import annotations
 import argparse
 import socket
 import sys
+from pathlib import Path
 
 from cnlmc.backends.registry import Command
 
@@ -50,7 +51,8 @@ class ServeCommand(Command):
             raise UsageError(f"lexicon: {exc}") from None
         if not 0 <= args.port <= 65535:
             raise UsageError(f"--port {args.port}: a port is 0 to 65535")
-        studio = Studio(lexicon, args.host, args.port, initial_text=self.initial_text(args.file))
+        folders = tuple(spec for spec in args.lexicon if Path(spec).is_dir())
+        studio = Studio(lexicon, args.host, args.port, self.initial_text(args.file), lexicon_folders=folders)
         listening = listen(args.host, args.port)
         studio.port = listening.getsockname()[1]
         announce(studio.host, studio.port, studio.token, args.open)

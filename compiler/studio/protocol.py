@@ -11,6 +11,8 @@ background and sent when ready.
   hover {text, line, character} -> hover {markdown, range} | hover {}
   export {key, text}            -> exported {url, name, notes}
   ar_model {text}               -> ar_model {glb, usdz, notes}
+  hear {pcm}                    -> analysis {..., text, heard, message} | heard {message[, heard]}
+                                   (pcm: one utterance, base64 16-bit mono PCM at hello's speech.rate)
 and, unasked, chips {words, text} after an analysis that made a history step.
 
 Messages are read as they arrive and answered in order by one task: an edit is numbered when it
@@ -24,6 +26,8 @@ said in hello) sends the edit again with `fresh: true` and gets them all."""
 from __future__ import annotations
 
 import asyncio
+import base64
+import binascii
 import functools
 import json
 import logging
@@ -36,6 +40,7 @@ from aiohttp import WSMsgType, web
 from .ar import ARFailed
 from .exports import ExportFailed
 from .session import Closed, Replaced, StudioSession
+from .speech import StudioEars
 
 JSONDict = dict[str, Any]
 #: requests read ahead of the one being answered (our choice: edits come one per keystroke burst;
@@ -45,8 +50,11 @@ log = logging.getLogger("cnlmc.studio")
 
 
 class Dispatcher:
-    def __init__(self, session: StudioSession, socket: web.WebSocketResponse, initial_text: str) -> None:
+    def __init__(
+        self, session: StudioSession, socket: web.WebSocketResponse, initial_text: str, ears: StudioEars
+    ) -> None:
         self.session = session
+        self.ears = ears
         self.socket = socket
         self.initial_text = initial_text
         self.chip_task: asyncio.Task[None] | None = None
@@ -69,6 +77,7 @@ class Dispatcher:
                 "exports": exports,
                 "view": session.view.module is not None,
                 "parts_kept": session.settings.limits.max_sent_parts,
+                "speech": {"rate": self.ears.rate, "max_seconds": session.settings.limits.max_utterance_seconds},
             }
         )
 
@@ -185,6 +194,12 @@ class Dispatcher:
             "notes": glb.notes + usdz.notes,
         }
 
+    async def op_hear(self, message: JSONDict) -> JSONDict:
+        limits = self.session.settings.limits
+        pcm = _audio(message, self.ears.rate * 2 * limits.max_utterance_seconds)
+        answer = await self.in_thread(self.session.speak, self.ears, pcm)
+        return answer if answer.get("op") == "heard" else await self.analysed(answer)
+
     def url(self, relative: str) -> str:
         return f"/files/{self.session.id}/{relative}"
 
@@ -202,6 +217,17 @@ def _text(message: JSONDict, key: str) -> str:
     if not isinstance(value, str):
         raise ValueError(f"the request has no '{key}'")
     return value
+
+
+def _audio(message: JSONDict, max_bytes: int) -> bytes:
+    """The utterance of a `hear` request: 16-bit PCM, at most `max_bytes`."""
+    try:
+        pcm = base64.b64decode(_text(message, "pcm"), validate=True)
+    except binascii.Error:
+        raise ValueError("the request's audio is not base64") from None
+    if len(pcm) % 2 or len(pcm) > max_bytes:
+        raise ValueError(f"an utterance is 16-bit audio of at most {max_bytes // 2} samples")
+    return pcm
 
 
 def _position(session: StudioSession, message: JSONDict) -> tuple[str, int, int]:

@@ -30,6 +30,7 @@ from .payloads import ViewData
 from .protocol import Dispatcher
 from .session import StudioSession
 from .settings import Settings, studio_settings
+from .speech import StudioEars
 
 Handler = Callable[[web.Request], Awaitable[web.StreamResponse]]
 TOKEN_COOKIE = "cnlmc_studio"
@@ -50,8 +51,11 @@ class Studio:
     view: ViewData = field(default_factory=ViewData)
     composer: MarkerComposer = field(default_factory=MarkerComposer)
     root: Path = field(default_factory=lambda: Path(tempfile.mkdtemp(prefix="cnlmc-studio-")))
+    lexicon_folders: tuple[str, ...] = ()  # the user's lexicon folders (their speech pronunciations)
+    ears: StudioEars = field(init=False)
 
     def __post_init__(self) -> None:
+        self.ears = StudioEars(self.lexicon, self.lexicon_folders)
         if self.token is None and not is_loopback(self.host):
             self.token = secrets.token_urlsafe(16)
 
@@ -214,7 +218,7 @@ async def websocket(request: web.Request) -> web.StreamResponse:
         await socket.send_json({"op": "error", "message": "too many studio tabs are open: close one"})
         await socket.close()
         return socket
-    dispatcher = Dispatcher(session, socket, studio.initial_text)
+    dispatcher = Dispatcher(session, socket, studio.initial_text, studio.ears)
     try:
         await dispatcher.hello([{"key": k.key, "label": k.label} for k in studio.settings.exports])
         await dispatcher.serve()

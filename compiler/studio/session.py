@@ -12,7 +12,7 @@ import threading
 import time
 from collections.abc import Iterator
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..api import compile_source
 from ..changes import material_changes
@@ -21,12 +21,16 @@ from ..diagnostics import Severity
 from ..explain import explain_material
 from ..lexicon import Lexicon
 from ..said_refinement import refined
+from ..speech.listen import NOTHING_HEARD, below_threshold, heard_text
 from .ar import ARFailed, MarkerComposer
 from .editor import EditorEngine
 from .exports import Exported, export
 from .history import History, Step
 from .payloads import PayloadCache, SentParts, ViewData
 from .settings import Settings
+
+if TYPE_CHECKING:
+    from .speech import StudioEars
 
 JSONDict = dict[str, Any]
 
@@ -187,6 +191,31 @@ class StudioSession:
 
     def undo(self) -> JSONDict:
         return self.move(self.history.undo(), "undo")
+
+    def speak(self, ears: StudioEars, pcm: bytes) -> JSONDict:
+        """One spoken utterance, applied as `cnlmc listen` applies it: the first starts the material
+        (the document becomes the phrase), later ones refine it, 'undo' steps back. Below the
+        confidence threshold, or refused by the compiler, nothing changes: {op: heard, message}."""
+        has_material = self.history.current is not None and bool(self.materials())
+        hypothesis = ears.hear(pcm, has_material)
+        if hypothesis is None:
+            return {"op": "heard", "applied": False, "message": NOTHING_HEARD}
+        listening = ears.settings()
+        refused = below_threshold(hypothesis, listening.min_confidence)
+        if refused is not None:
+            return {"op": "heard", "applied": False, "message": refused, "heard": hypothesis.text}
+        said = heard_text(hypothesis)
+        try:
+            if hypothesis.text in listening.undo:
+                answer = self.undo()
+            elif has_material:
+                answer = self.refine(hypothesis.text)
+            else:
+                self.check_size(hypothesis.text)
+                answer = {**self.edit(hypothesis.text, hypothesis.text), "text": hypothesis.text}
+        except ValueError as exc:
+            return {"op": "heard", "applied": False, "message": f"{said}: not applied: {exc}", "heard": hypothesis.text}
+        return {**answer, "heard": hypothesis.text, "message": said}
 
     def redo(self) -> JSONDict:
         return self.move(self.history.redo(), "redo")

@@ -32,6 +32,7 @@ class Limits:
     max_shown_materials: int
     max_cached_payloads: int
     max_sent_parts: int
+    max_utterance_seconds: int
 
 
 @dataclass(frozen=True)

@@ -304,3 +304,25 @@ def test_serve_refuses_a_bad_port_as_a_usage_error() -> None:
     run = run_cnlmc("serve", "--port", "70000")
     assert run.returncode == 2 and "cnlmc: error: --port 70000" in run.stderr
     assert "Traceback" not in run.stderr
+
+
+async def test_a_spoken_utterance_that_is_not_audio_or_silence_changes_nothing(client: TestClient[Any, Any]) -> None:
+    """`hear`: audio that is not base64 16-bit PCM, or longer than the limit, is an error message;
+    silence is 'heard no phrase' and leaves the document as it was (the spoken path: test_speech_page)."""
+    import base64
+
+    socket = await client.ws_connect("/ws")
+    hello = await socket.receive_json()
+    rate, seconds = hello["speech"]["rate"], hello["speech"]["max_seconds"]
+    too_long = base64.b64encode(bytes(2 * rate * seconds + 2)).decode()
+    for answer in (
+        await ask(socket, "hear"),
+        await ask(socket, "hear", pcm="not base64!"),
+        await ask(socket, "hear", pcm=base64.b64encode(b"odd").decode()),
+        await ask(socket, "hear", pcm=too_long),
+    ):
+        assert answer["op"] == "error" and "Traceback" not in answer["message"], answer
+    pytest.importorskip("pocketsphinx", reason="speech input needs pocketsphinx (pip install 'cnlmc[speech]')")
+    silence = await ask(socket, "hear", pcm=base64.b64encode(bytes(2 * rate)).decode())
+    assert silence["op"] == "heard" and not silence["applied"] and "no phrase" in silence["message"]
+    await socket.close()

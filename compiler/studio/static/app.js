@@ -6,6 +6,7 @@ import { Trace } from "./view/trace.js";
 import { PayloadParts } from "./parts.js";
 import { Connection } from "./connection.js";
 import { Editor } from "./editor.js";
+import { Microphone } from "./speech.js";
 import { Problem, showChips, showExports, showHistory, showMaterials, showNotes, thumbnail } from "./panels.js";
 
 // The canvas's drawing buffer follows its size on the page (CSS pixels x devicePixelRatio), at most
@@ -23,6 +24,7 @@ const problem = new Problem($("problem"));
 const status = document.body.dataset; // what the page is doing, for people and for the tests
 status.shown = "0";
 status.analyses = "0";
+status.heard = "0";
 
 function fail(error) {
   problem.show(error instanceof Error ? error.message : String(error));
@@ -181,6 +183,42 @@ class Studio {
     }
   }
 
+  // The microphone button: the first press records, the second (or the length limit) sends the
+  // utterance; the server applies it as `cnlmc listen` does and says what it heard.
+  async speak() {
+    const button = $("speak");
+    if (!this.microphone) {
+      this.microphone = new Microphone(this.hello.speech.rate, this.hello.speech.max_seconds);
+      this.microphone.onLimit = () => this.speak();
+    }
+    if (!this.microphone.recording) {
+      try {
+        await this.microphone.start();
+      } catch (error) {
+        fail(`the microphone is not available: ${error.message || error}`);
+        return;
+      }
+      button.setAttribute("aria-pressed", "true");
+      button.textContent = "Stop";
+      $("heard").textContent = "listening… press Stop when done";
+      return;
+    }
+    button.setAttribute("aria-pressed", "false");
+    button.textContent = "Speak";
+    const pcm = this.microphone.stop();
+    $("heard").textContent = "recognising…";
+    try {
+      const answer = await this.ask("hear", { pcm });
+      $("heard").textContent = answer.message;
+      if (answer.op === "analysis") await this.apply(answer, this.editor.text);
+    } catch (error) {
+      $("heard").textContent = "";
+      fail(error);
+    } finally {
+      status.heard = String(Number(status.heard) + 1);
+    }
+  }
+
   async step(op) {
     try {
       this.apply(await this.ask(op), this.editor.text);
@@ -248,6 +286,7 @@ class Studio {
     });
     $("undo").addEventListener("click", () => this.step("undo"));
     $("redo").addEventListener("click", () => this.step("redo"));
+    $("speak").addEventListener("click", () => this.speak());
     $("mesh").addEventListener("change", (event) => this.view.setMesh(event.target.value).catch(fail));
     $("environment").addEventListener("change", (event) => this.view.setEnvironment(event.target.value).catch(fail));
     $("exposure").addEventListener("input", (event) => this.view.setExposure(Number(event.target.value)));
