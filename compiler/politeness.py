@@ -60,6 +60,9 @@ def without_politeness(
                 break
             dropped.append(kept[:taken] if at_start else kept[-taken:])
             kept = kept[taken:] if at_start else kept[:-taken]
+    if not compared:  # 'eggshell rather than flat', 'oak instead of walnut': the alternative turned down
+        kept, compared = _without_turned_down(kept, table["turned_down"])
+        dropped += [compared] if compared else []
     kept, said_last, where = _without_last_words(kept, table)
     dropped += said_last
     idiom = _idiom(kept, table["idioms"], tag) if tag is not None and not put else None
@@ -153,6 +156,24 @@ def _without_other_side(kept: list[Tagged]) -> tuple[list[Tagged], list[Tagged]]
     if at is None or at == 0:
         return kept, []
     return kept[:at], kept[at:]
+
+
+def _without_turned_down(kept: list[Tagged], markers: Sequence[str]) -> tuple[list[Tagged], list[Tagged]]:
+    """'eggshell rather than flat': the words before the first marker phrase ('rather than',
+    'instead of'), and the marker with the rest (what the speaker turns down, not what it is);
+    the words as they were when no word is said before the marker."""
+    lowered = [w.text.lower() for w in kept]
+    for at in range(1, len(kept)):
+        if any(lowered[at : at + len(m.split())] == m.split() for m in markers):
+            before, after = kept[:at], kept[at:]
+            if any(w.text[:1].isalnum() for w in before) and not (_ends_in_a_noun(after) and not _names(before)):
+                return before, after
+            break  # 'matte rather than glossy black plastic': the noun is the phrase's, not the alternative's
+    return kept, []
+
+
+def _names(words: Sequence[Tagged]) -> bool:
+    return any(c.tag == "NOUN" for w in words for c in w.candidates)
 
 
 def _ends_in_a_noun(words: Sequence[Tagged]) -> bool:
