@@ -24,7 +24,7 @@ def name_words(material: ast.Material) -> list[str]:
     words.append(material.nouns[0])
     if material.coat is not None or material.features:  # most phrases have no 'with' clause
         words += _clause_words(material)
-    return written_words(words)
+    return [word for word in written_words(words) if word]  # a word said by a phrase has no text
 
 
 def _clause_words(material: ast.Material) -> list[ast.Word]:

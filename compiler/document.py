@@ -181,7 +181,8 @@ def _failed_line(
             return node
     whole = _whole_line(hedged, text, lexicon)
     if whole is not None:
-        diags[:] = [d for d in diags if not read_past(d, whole[1])]  # 'on' of 'rust on steel'
+        taken = _removal_part(text)  # 'no' of 'oak, no grain': read as the removal
+        diags[:] = [d for d in diags if not read_past(d, whole[1], taken)]  # 'on' of 'rust on steel'
         diags.extend(whole[1])
         return whole[0]
     if notes:  # still no parse: the rest reads the words as reread, and says so
@@ -224,7 +225,11 @@ def _implied_reading(
 
 def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, list[Diagnostic]] | None:
     """The line read whole another way, with its notes: a clause on its material ('rust on steel':
-    cnlmc.on_clause), or a refinement of comma parts ('deeper, more of a burgundy')."""
+    cnlmc.on_clause), or a refinement of comma parts ('deeper, more of a burgundy'); a material
+    with a part that takes words off ('white paint, no texture') by its parts first, so that the
+    removal is not read as a describing word after the material."""
+    if _removal_part(text):  # read by its parts or not at all: 'no texture' is no describing word
+        return _by_parts(words, text, lexicon)
     placed = (
         on_material(words, text, lexicon)
         or likeness_dropped(words, text, lexicon)
@@ -236,6 +241,18 @@ def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
     if placed is not None:
         return placed[0], [placed[1]]
     return _by_parts(words, text, lexicon)
+
+
+def _removal_part(text: str) -> bool:
+    """Whether a part after the first (a comma apart) opens with a removal phrase ('oak, no grain')."""
+    from .removal import opens_removal
+
+    parts = [text[a + 1 : b] for a, b in zip(_cut_points(text), _cut_points(text)[1:])]
+    return any(opens_removal(part) for part in parts[1:])
+
+
+def _cut_points(text: str) -> list[int]:
+    return [-1, *(i for i, ch in enumerate(text) if ch in PART_MARKS), len(text)]
 
 
 def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, list[Diagnostic]] | None:
@@ -252,7 +269,7 @@ def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Ite
         alone = " " * start + text[start:end] + " " * (len(text) - end)
         return parse_line(alone, number, offset, Tagger.of(lexicon), said)
 
-    return by_parts(text, number, offset, read) or material_then_comparatives(text, number, offset, read)
+    return by_parts(text, number, offset, read) or material_then_comparatives(text, number, offset, read, lexicon)
 
 
 def _without_article(words: list[Tagged]) -> list[Tagged] | None:

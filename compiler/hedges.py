@@ -188,12 +188,12 @@ def first_line_clause(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Mater
     return material, Diagnostic(written_span(said), Severity.NOTE, NOTE_CODE, message, (hint,))
 
 
-def read_past(diag: Diagnostic, notes: Sequence[Diagnostic]) -> bool:
+def read_past(diag: Diagnostic, notes: Sequence[Diagnostic], misplaced: bool = False) -> bool:
     """Whether `diag` is an unknown word inside a phrase a note read as something else ('loads' of
-    'loads of')."""
+    'loads of'); with `misplaced`, a misplaced one too ('no' of 'oak, no grain')."""
     at = diag.span
     return (
-        diag.code == "E001"
+        diag.code in (("E001", "E002") if misplaced else ("E001",))
         and at is not None
         and any(n.span is not None and n.span.start <= at.start and at.end <= n.span.end for n in notes)
     )

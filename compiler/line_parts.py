@@ -11,7 +11,9 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from . import ast
-from .diagnostics import Diagnostic, Severity
+from .diagnostics import Diagnostic, Severity, warning
+from .lexicon import Lexicon
+from .removed import much_less, without_words
 from .spans import Span
 from .suggest import teaching
 from .tagged import NOTE_CODE
@@ -46,11 +48,14 @@ def by_parts(text: str, line: int, offset: int, read: Reader) -> tuple[ast.Refin
 
 
 def material_then_comparatives(
-    text: str, line: int, offset: int, read: Reader
+    text: str, line: int, offset: int, read: Reader, lexicon: Lexicon | None = None
 ) -> tuple[ast.Material, list[Diagnostic]] | None:
     """'walnut, a bit darker', 'reddish brown, maybe a bit darker': a material, then parts that are
     comparatives only, is the material moved by them in turn (its inline comparatives, applied after
-    its describing words), and the parts' notes; None for any other line."""
+    its describing words), and the parts' notes; None for any other line. A part that takes words
+    off ('oak, no grain', 'varnished oak, no varnish') takes them off the material, or is its
+    comparatives where the material has none of them, as the same change line would be
+    (cnlmc.removed)."""
     cuts = _cuts(text)
     if len(cuts) < 3:
         return None
@@ -59,13 +64,45 @@ def material_then_comparatives(
     if not isinstance(material, ast.Material) or any(d.is_error for d in first):
         return None
     parts = _parts_read(cuts[1:], text, line, offset, read, _courtesy)
-    if parts is None or not parts[0] or not all(_comparatives_only(n) for n in parts[0]):
+    if parts is None or not parts[0] or not all(_comparatives_only(n) or _removal(n) for n in parts[0]):
         return None
-    items = [i for n in parts[0] if isinstance(n, ast.Refinement) for i in n.items]
-    moved = replace(
-        material, span=material.span.to(items[-1].span), text=text, refinements=(*material.refinements, *items)
+    moved = material
+    warned: list[Diagnostic] = []
+    for node in parts[0]:
+        assert isinstance(node, ast.Refinement)
+        said = _removal_said(node, text, offset)
+        taken_off = without_words(moved, node.removed, lexicon) if node.removed and lexicon is not None else None
+        if taken_off is not None:  # 'varnished oak, no varnish': the word goes
+            moved = replace(taken_off, span=moved.span.to(node.span), text=text)
+        else:  # 'walnut, a bit darker'; 'oak, no grain' = much less grain, as the change line 'no grain' is
+            items = node.items or tuple(much_less(w, said) for w in node.removed if w.category == "properties")
+            if not items:  # 'white paint, no texture': nothing to take off, as the change line says
+                listed = ", ".join(dict.fromkeys(f"'{w.text}'" for w in node.removed))
+                warned.append(warning(node.span, "W122", f"the material has no {listed} to take off"))
+            moved = replace(moved, span=moved.span.to(node.span), text=text, refinements=(*moved.refinements, *items))
+    return moved, [*first, *parts[1], *warned]
+
+
+def _removal_said(node: ast.Refinement, text: str, offset: int) -> ast.Word | None:
+    """The removal phrase of a part as written ('no', 'without the'): the word that names the
+    lessening in the material's default name (oak_no_grain, not grain_grain_grain)."""
+    if not node.removed:
+        return None
+    end = node.removed[0].span.start - offset
+    start = max(text.rfind(mark, 0, end) for mark in PART_MARKS) + 1
+    written = text[start:end].strip()
+    if not written:
+        return None
+    at = start + text[start:end].index(written)
+    return ast.Word(
+        written, "less", "refinements", Span(offset + at, offset + at + len(written), node.span.line, at + 1)
     )
-    return moved, [*first, *parts[1]]
+
+
+def _removal(node: ast.Item) -> bool:
+    """A part that takes words off ('no grain', 'without the varnish'), with its reading as
+    comparatives for a material that has none of them ('much less grain')."""
+    return isinstance(node, ast.Refinement) and bool(node.removed) and node.material is None
 
 
 def _cuts(text: str) -> list[int]:

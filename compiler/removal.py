@@ -13,6 +13,7 @@ and then first a set lookup of its first word.
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
@@ -25,7 +26,7 @@ from .tagged import NOTE_CODE, Tagged
 if TYPE_CHECKING:
     from .tagger import Tagger
 
-__all__ = ["removal_line"]
+__all__ = ["opens_removal", "removal_line"]
 
 #: the word categories a removal takes off, by grammar terminal (a property: the words of its name)
 REMOVABLE = ("ADJ", "FEATURE", "COAT", "COLOR", "PROP")
@@ -58,7 +59,7 @@ def removal_line(text: str, number: int, offset: int, tagger: Tagger) -> tuple[a
     said = _removal_at(low, start, opener, removal)
     if said is None:
         return None
-    lead, phrase = said
+    opened, lead, phrase = said
     end = lead + len(trailing.sub("", low[lead:]))
     masked = " " * lead + text[lead:end] + " " * (len(text) - end)  # columns stay the user's
     tagged, problems = tagger.tag_line(masked, number, offset)
@@ -71,19 +72,31 @@ def removal_line(text: str, number: int, offset: int, tagger: Tagger) -> tuple[a
     if not removed or (phrase in negations and _negated_reading(removed, tagger)):
         return None
     span = words[0].span.to(words[-1].span)
+    said_span = replace(span, start=span.start - (lead - opened), col=span.col - (lead - opened))  # with 'no'
     listed = ", ".join(dict.fromkeys(f"'{w.text}'" for w in removed))
     message = f"read '{text.strip()}' as taking {listed} off the material above"
-    return ast.Refinement(None, (), span, text, removed=removed), Diagnostic(span, Severity.NOTE, NOTE_CODE, message)
+    return ast.Refinement(None, (), span, text, removed=removed), Diagnostic(
+        said_span, Severity.NOTE, NOTE_CODE, message
+    )
 
 
-def _removal_at(low: str, start: int, opener: re.Pattern[str], removal: re.Pattern[str]) -> tuple[int, str] | None:
-    """Where the removed words start and the removal phrase said, past up to three openers
-    ('ok, can we lose the ...'); None when the line opens with no removal phrase."""
+def opens_removal(text: str) -> bool:
+    """Whether the text opens with a removal phrase ('no grain', 'without the varnish', 'lose the
+    shine'), past its openers."""
+    firsts, opener, removal, _trailing, _negations = _rules()
+    start = len(text) - len(text.lstrip())
+    first = text[start:].split(maxsplit=1)[0].lower().rstrip(",!.:;?") if text.strip() else ""
+    return first in firsts and _removal_at(text.lower(), start, opener, removal) is not None
+
+
+def _removal_at(low: str, start: int, opener: re.Pattern[str], removal: re.Pattern[str]) -> tuple[int, int, str] | None:
+    """Where the removal phrase starts, where the removed words start and the phrase said, past up
+    to three openers ('ok, can we lose the ...'); None when the line opens with no removal phrase."""
     at = start
     for _ in range(4):
         found = removal.match(low, at)
         if found is not None:
-            return found.end(), " ".join(found.group(0).split())
+            return found.start(), found.end(), " ".join(found.group(0).split())
         skipped = opener.match(low, at)
         if skipped is None:
             return None

@@ -8,7 +8,7 @@ from __future__ import annotations
 from . import ast
 from .lexicon import Lexicon
 
-__all__ = ["without_words"]
+__all__ = ["much_less", "without_words"]
 
 
 def without_words(material: ast.Material, removed: tuple[ast.Word, ...], lexicon: Lexicon) -> ast.Material | None:
@@ -53,3 +53,14 @@ def _feature_named(feature: ast.Feature, keys: frozenset[str], lexicon: Lexicon)
         return True
     entry = lexicon.entry(feature.word.category, feature.word.key)
     return entry is not None and str(entry.get("adjective", "")) in keys
+
+
+def much_less(word: ast.Word, said: ast.Word | None = None) -> ast.RefineItem:
+    """'much less <property>', said by the removal's word (its span and text), or by the removal
+    phrase `said` ('no' of 'oak, no grain', whose words name the material: oak_no_grain): what
+    taking off a property the material's noun brings means ('no veins' under marble)."""
+    if said is None:
+        less = ast.Word(word.text, "less", "refinements", word.span)
+        return ast.RefineItem(less, word, word.span, (ast.Word(word.text, "much", "adverbs", word.span),))
+    much = ast.Word("", "much", "adverbs", said.span)  # said by the phrase: no word of the name
+    return ast.RefineItem(said, word, said.span.to(word.span), (much,))

@@ -102,6 +102,7 @@ class Rules:
         self.made_of = tuple(dict.fromkeys(w for c in compounds for w in c["made_of"]))  # 'Dielen aus Eiche'
         self.qualifiers = frozenset(joined("qualifiers", "words"))
         self.sizes = frozenset(joined("qualifiers", "sizes"))  # "wide oak floorboards"
+        self.ordinary = frozenset(joined("qualifiers", "ordinary"))  # "plain white"
         self.comparison = frozenset(joined("comparison", "words"))  # "lighter than oak"
         self.manners = frozenset(joined("compound_first", "manners"))
         self.participles = frozenset(joined("compound_first", "participles"))
@@ -160,6 +161,8 @@ class WordFormation:
             if compound:
                 note = f"read '{first} {words[1]}' as '{same}-{words[1]}' ('{first}' means '{same}' here)"
                 return Reading((Part(0, 1, 0, None, compound),), 2, note)
+        if first in rules.ordinary and len(words) > 1:  # "plain white", "standard oak"
+            return Reading((), 1, f"read '{first}' as the ordinary kind: no effect on the look")
         if first in rules.sizes and len(words) > 1 and not self._names_feature(words[1]):  # "wide oak floorboards"
             return Reading((), 1, f"read '{first}' as the size of the pieces: not drawn, no effect on the look")
         if len(words) > 1:

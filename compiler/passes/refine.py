@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from .. import ast
 from ..diagnostics import Diagnostic, Severity, warning
+from ..removed import much_less
 from ..state import Context, MaterialState
 from ..tagged import NOTE_CODE
 from .base import colour_seen_through
@@ -104,7 +105,7 @@ def _nothing_removed(state: MaterialState, ctx: Context, line: ast.Refinement) -
     properties = [w for w in line.removed if w.category == "properties" and _acts(state, ctx, w)]
     if not line.items and properties:
         for word in properties:
-            apply_refinement(state, ctx, _much_less(word))
+            apply_refinement(state, ctx, much_less(word))
         message = f"no word of the material above says {listed}, its material does: read as much less of it"
         state.diagnostics.append(Diagnostic(line.span, Severity.NOTE, NOTE_CODE, message))
         return
@@ -120,12 +121,6 @@ def _acts(state: MaterialState, ctx: Context, word: ast.Word) -> bool:
     """Whether the property has something to act on: a parameter, or a map of the material."""
     prop = ctx.lexicon.require("properties", word.key)
     return prop.get("map_param") is None or bool(acted_on(state, prop))
-
-
-def _much_less(word: ast.Word) -> ast.RefineItem:
-    """'much less <property>', said by the removal's word (its span and text)."""
-    less = ast.Word(word.text, "less", "refinements", word.span)
-    return ast.RefineItem(less, word, word.span, (ast.Word(word.text, "much", "adverbs", word.span),))
 
 
 def apply_refinement(state: MaterialState, ctx: Context, item: ast.RefineItem) -> None:

@@ -22,3 +22,14 @@ def test_a_size_is_read_past_with_a_note(stdlib, said, meant):
 
 def test_a_size_alone_is_no_material(stdlib):
     assert [d.code for d in compile_source("wide\n", "s.cnl", stdlib).diagnostics] == ["E001"]
+
+
+@pytest.mark.parametrize(
+    ("said", "meant"),
+    [("plain white paint", "white paint"), ("standard oak", "oak"), ("simple black plastic", "black plastic")],
+)
+def test_the_ordinary_kind_is_read_past_with_a_note(stdlib, said, meant):
+    """'plain', 'standard', 'simple' before a material: the material without more (qualifiers.ordinary)."""
+    result, meaning = look(stdlib, said)
+    assert meaning == look(stdlib, meant)[1]
+    assert any("the ordinary kind" in d.message for d in result.diagnostics)

@@ -48,3 +48,27 @@ def test_a_turned_down_alternative_that_names_the_noun_is_not_read_past() -> Non
     assert "rather than" not in " ".join(d.message for d in result.diagnostics)
     assert look("walnut instead of oak") == look("walnut")
     assert look("black plastic, matte rather than glossy") == look("black matte plastic")
+
+
+@pytest.mark.parametrize(
+    ("said", "lines"),
+    [
+        ("oak, no grain", "oak\nno grain"),
+        ("white marble, no veins", "white marble\nno veins"),
+        ("oak, without the grain", "oak\nwithout the grain"),
+    ],
+)
+def test_a_removal_after_the_material_is_the_change_line(said: str, lines: str) -> None:
+    """'oak, no grain' on one line means what 'no grain' under 'oak' means: much less of the grain
+    its noun brings (cnlmc.removed); the default name keeps the words said."""
+    assert look(said) == look(lines)
+    assert look(said) != look(said.split(",")[0])
+    assert (
+        compile_source(said + "\n", "t.cnl", LEX).materials[-1]["name"].endswith(said.split(",")[0].replace(" ", "_"))
+    )
+
+
+def test_a_removal_of_what_the_material_lacks_warns_and_is_never_a_describing_word() -> None:
+    result = compile_source("white paint, no texture\n", "t.cnl", LEX)
+    assert result.ok and [d.code for d in result.diagnostics if d.code.startswith("W")] == ["W122"]
+    assert look("white paint, no texture") == look("white paint")  # not 'paint with white texture'
