@@ -5,8 +5,8 @@ set of parallel arcs between two states (a JSGF rule is copied at each reference
 grammar of this lexicon take 35 s to load): a material is [article] up to `max_describing`
 describing words (adverbs, shades, colours, adjectives, 'and', 'or'; a comparative first)
 then a noun [or a noun], then up to `max_clauses` 'with' clauses; a refinement is up to
-`max_items` items ([adverb] comparative [target]) or a 'with' clause; "undo" is the session's
-command. No state loops, and only the end of a noun, a clause, a refinement item or "undo" is
+`max_items` items ([adverb] comparative [target]) or a 'with' clause; describing words alone end
+in a colour or an adjective ('matte black'); "undo" is the session's command. No state loops, and only the end of a noun, a clause, a refinement item or "undo" is
 final, so every accepted path is a complete phrase.
 """
 
@@ -107,7 +107,18 @@ class GrammarBuilder:
         g.words(g.start, g.final, s.undo, slot="start.undo")
         self.material(material, clauses)
         self.refinement(refinement, clauses)
+        self.describing()
         return g
+
+    def describing(self) -> None:
+        """Describing words alone ('purple', 'matte black', 'dark green'): a describing group, then
+        a colour or an adjective (so the phrase is never empty). First, they start their implied
+        material (matte black paint); later, they change the material ('make it purple')."""
+        g = self.grammar
+        begin = g.state()
+        g.skip(g.start, begin, "start.describing")
+        head = self.groups(begin, 1, "describing")
+        g.words(head, g.final, self.of("colours", "adjectives"), self.prior, "describing.head")
 
     def optional(self, source: int, target: int, forms: list[str], slot: str) -> None:
         """Words that may be said or left out between two states: the branches `slot` and `slot`.skip."""
