@@ -10,7 +10,7 @@ from dataclasses import replace
 from . import ast
 from .diagnostics import Diagnostic, Severity, error
 from .lexicon import Lexicon
-from .line_parts import PART_MARKS, by_parts, material_then_comparatives
+from .line_parts import PART_MARKS, by_parts, material_then_comparatives, part_cuts
 from .lines import iter_lines
 from .on_clause import likeness_dropped, on_material
 from .parser import ParseFailure, describe_expected, parse_line_shape, parsed_item
@@ -181,8 +181,8 @@ def _failed_line(
             return node
     whole = _whole_line(hedged, text, lexicon)
     if whole is not None:
-        taken = _removal_part(text)  # 'no' of 'oak, no grain': read as the removal
-        diags[:] = [d for d in diags if not read_past(d, whole[1], taken)]  # 'on' of 'rust on steel'
+        taken = _removal_part(text)  # 'no' of 'oak, no grain': read as the removal, and no other note of it
+        diags[:] = [d for d in diags if not read_past(d, whole[1], taken) and not (taken and _said_again(d, whole[1]))]
         diags.extend(whole[1])
         return whole[0]
     if notes:  # still no parse: the rest reads the words as reread, and says so
@@ -228,14 +228,15 @@ def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
     cnlmc.on_clause), or a refinement of comma parts ('deeper, more of a burgundy'); a material
     with a part that takes words off ('white paint, no texture') by its parts first, so that the
     removal is not read as a describing word after the material."""
-    if _removal_part(text):  # read by its parts or not at all: 'no texture' is no describing word
-        return _by_parts(words, text, lexicon)
+    removal = _removal_part(text)
+    if removal and (parts := _by_parts(words, text, lexicon)) is not None:
+        return parts
     placed = (
         on_material(words, text, lexicon)
         or likeness_dropped(words, text, lexicon)
         or relative_material(words, text, lexicon)
         or participle_after(words, text, lexicon)
-        or describing_after(words, text, lexicon)
+        or (None if removal else describing_after(words, text, lexicon))  # 'no texture' is no describing word
         or clause_after(words, text, lexicon)
     )
     if placed is not None:
@@ -247,12 +248,20 @@ def _removal_part(text: str) -> bool:
     """Whether a part after the first (a comma apart) opens with a removal phrase ('oak, no grain')."""
     from .removal import opens_removal
 
-    parts = [text[a + 1 : b] for a, b in zip(_cut_points(text), _cut_points(text)[1:])]
-    return any(opens_removal(part) for part in parts[1:])
+    points = part_cuts(text)
+    return any(opens_removal(text[a + 1 : b]) for a, b in list(zip(points, points[1:]))[1:])
 
 
-def _cut_points(text: str) -> list[int]:
-    return [-1, *(i for i, ch in enumerate(text) if ch in PART_MARKS), len(text)]
+def _said_again(diag: Diagnostic, notes: list[Diagnostic]) -> bool:
+    """A note of a failed reading inside a note of the one taken ('no grain' read as no effect
+    beside 'no grain' read as a removal): said again, and otherwise."""
+    at = diag.span
+    return (
+        diag.severity == Severity.NOTE
+        and diag not in notes
+        and at is not None
+        and any(n.span is not None and n.span.start <= at.start and at.end <= n.span.end for n in notes)
+    )
 
 
 def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, list[Diagnostic]] | None:

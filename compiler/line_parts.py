@@ -18,10 +18,12 @@ from .spans import Span
 from .suggest import teaching
 from .tagged import NOTE_CODE
 
-__all__ = ["PART_MARKS", "by_parts", "material_then_comparatives"]
+__all__ = ["PART_MARKS", "by_parts", "material_then_comparatives", "part_cuts"]
 
 #: the marks that set parts apart
 PART_MARKS = frozenset((",", ";"))
+#: words a removal phrase ends with before what it takes off ('lose the grain', 'without any rust')
+ARTICLES = frozenset(("the", "a", "an", "any", "all"))
 
 #: reads the line's text from start to end (columns) as a line of its own, its problems to the list
 Reader = Callable[[int, int, list[Diagnostic]], "ast.Item | None"]
@@ -30,7 +32,7 @@ Reader = Callable[[int, int, list[Diagnostic]], "ast.Item | None"]
 def by_parts(text: str, line: int, offset: int, read: Reader) -> tuple[ast.Refinement, list[Diagnostic]] | None:
     """The line as one refinement of its parts and the parts' notes, or None (one part, an empty
     part, or a part that is no refinement or has an error)."""
-    cuts = _cuts(text)
+    cuts = part_cuts(text)
     if len(cuts) < 3:
         return None
     complained = any(_complaint(text[a + 1 : b]) for a, b in zip(cuts, cuts[1:]))
@@ -56,7 +58,7 @@ def material_then_comparatives(
     off ('oak, no grain', 'varnished oak, no varnish') takes them off the material, or is its
     comparatives where the material has none of them, as the same change line would be
     (cnlmc.removed)."""
-    cuts = _cuts(text)
+    cuts = part_cuts(text)
     if len(cuts) < 3:
         return None
     first: list[Diagnostic] = []
@@ -90,10 +92,12 @@ def _removal_said(node: ast.Refinement, text: str, offset: int) -> ast.Word | No
         return None
     end = node.removed[0].span.start - offset
     start = max(text.rfind(mark, 0, end) for mark in PART_MARKS) + 1
-    written = text[start:end].strip()
-    if not written:
+    said = text[start:end].split()
+    if not said:
         return None
-    at = start + text[start:end].index(written)
+    kept = said[-2:] if said[-1].lower() in ARTICLES and len(said) > 1 else said[-1:]  # 'lose the', 'no'
+    at = text.rindex(kept[0], start, end)
+    written = text[at:end].rstrip()
     return ast.Word(
         written, "less", "refinements", Span(offset + at, offset + at + len(written), node.span.line, at + 1)
     )
@@ -105,7 +109,7 @@ def _removal(node: ast.Item) -> bool:
     return isinstance(node, ast.Refinement) and bool(node.removed) and node.material is None
 
 
-def _cuts(text: str) -> list[int]:
+def part_cuts(text: str) -> list[int]:
     """Where the parts of a line end: -1, each part mark, the line's length."""
     return [-1, *(i for i, ch in enumerate(text) if ch in PART_MARKS), len(text)]
 

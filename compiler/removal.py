@@ -59,7 +59,7 @@ def removal_line(text: str, number: int, offset: int, tagger: Tagger) -> tuple[a
     said = _removal_at(low, start, opener, removal)
     if said is None:
         return None
-    opened, lead, phrase = said
+    _opened, lead, phrase = said
     end = lead + len(trailing.sub("", low[lead:]))
     masked = " " * lead + text[lead:end] + " " * (len(text) - end)  # columns stay the user's
     tagged, problems = tagger.tag_line(masked, number, offset)
@@ -72,7 +72,8 @@ def removal_line(text: str, number: int, offset: int, tagger: Tagger) -> tuple[a
     if not removed or (phrase in negations and _negated_reading(removed, tagger)):
         return None
     span = words[0].span.to(words[-1].span)
-    said_span = replace(span, start=span.start - (lead - opened), col=span.col - (lead - opened))  # with 'no'
+    shift = words[0].span.col - 1 - start  # the note spans the whole removal, its openers too ('can we lose the')
+    said_span = replace(span, start=span.start - shift, col=start + 1)
     listed = ", ".join(dict.fromkeys(f"'{w.text}'" for w in removed))
     message = f"read '{text.strip()}' as taking {listed} off the material above"
     return ast.Refinement(None, (), span, text, removed=removed), Diagnostic(

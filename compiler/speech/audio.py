@@ -48,9 +48,14 @@ def to_pcm16(frames: bytes, width: int, channels: int, source_rate: int, rate: i
     return bytes(np.clip(np.round(samples), -32768, 32767).astype("<i2").tobytes())
 
 
+def _segmenter(rate: int) -> Any:
+    """pocketsphinx's voice-activity segmenter: half-second windows, 90 % of a window voiced."""
+    return pocketsphinx_module().Segmenter(sample_rate=rate, window=0.5, ratio=0.9)
+
+
 def utterances(pcm: bytes, rate: int) -> Iterator[bytes]:
     """The speech segments of `pcm`, in order."""
-    segmenter = pocketsphinx_module().Segmenter(sample_rate=rate, window=0.5, ratio=0.9)
+    segmenter = _segmenter(rate)
     for segment in segmenter.segment(io.BytesIO(pcm)):
         yield bytes(segment.pcm)
 
@@ -59,7 +64,7 @@ def speech_span(pcm: bytes, rate: int) -> bytes:
     """The part of one recorded utterance from where its speech starts to where it ends (the
     silence before and after a button press cut: silence before the speech cost the recogniser
     accuracy, docs/speech.md); the whole of it when no speech is found."""
-    segmenter = pocketsphinx_module().Segmenter(sample_rate=rate, window=0.5, ratio=0.9)
+    segmenter = _segmenter(rate)
     spans = [(segment.start_time, segment.end_time) for segment in segmenter.segment(io.BytesIO(pcm))]
     if not spans:
         return pcm
@@ -81,7 +86,7 @@ def microphone(rate: int) -> Iterator[bytes]:
 
 
 def _recorded(sounddevice: Any, rate: int) -> Iterator[bytes]:
-    segmenter = pocketsphinx_module().Segmenter(sample_rate=rate, window=0.5, ratio=0.9)
+    segmenter = _segmenter(rate)
     with sounddevice.RawInputStream(samplerate=rate, channels=1, dtype="int16") as stream:
         for segment in segmenter.segment(_StreamReader(stream)):
             yield bytes(segment.pcm)

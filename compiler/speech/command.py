@@ -34,7 +34,9 @@ class ListenCommand(Command):
             help="apply an utterance only at or above this confidence, 0-1 (default: stdlib/speech/speech.toml)",
         )
         parser.add_argument(
-            "--grammar", action="store_true", help="print the recogniser's grammar (Sphinx FSG) and stop"
+            "--grammar",
+            action="store_true",
+            help="print the recogniser's grammar (Sphinx FSG) for a session's first utterance and stop",
         )
         parser.add_argument("--option", action="append", default=[], metavar="KEY=VALUE", help="a backend option")
         add_lexicon_arguments(parser)

@@ -16,6 +16,7 @@ if TYPE_CHECKING:
 
 
 FIRST, LATER = "first", "later"  # the searches: an utterance that starts a material, one said after it
+MIN_SECONDS = 0.1  # shorter audio is no phrase: 'undo', the shortest, takes 0.4 s at 190 wpm
 
 
 class SpeechUnavailable(RuntimeError):
@@ -72,6 +73,8 @@ class Recogniser:
 
     def __init__(self, grammar: Grammar, dictionary: str, settings: SpeechSettings, later: Grammar | None = None):
         self.settings = settings
+        if later is not None and [t[:2] for t in later.transitions] != [t[:2] for t in grammar.transitions]:
+            raise ValueError("the later grammar must have the first one's structure (one FSG checks both)")
         self.grammar_texts = {FIRST: grammar.fsg_text(FIRST), LATER: (later or grammar).fsg_text(LATER)}
         self.dictionary = dictionary
         self.decoder, self.fsg = self._loaded(settings.decoder)
@@ -104,6 +107,8 @@ class Recogniser:
         phrase of the grammar was heard (by either pass). `refining`: a material is already there
         (the later grammar is searched). The audio first gets its noise floor
         (cnlmc.speech.noise_floor)."""
+        if len(samples) < 2 * self.settings.sample_rate * MIN_SECONDS:
+            return None  # too short to be a phrase (pocketsphinx fails on an empty utterance)
         samples = self.settings.noise_floor.apply(samples, self.settings.sample_rate)
         search = LATER if refining else FIRST
         heard = self._search(self.decoder, samples, search)
@@ -119,8 +124,10 @@ class Recogniser:
         is taken instead."""
         decoder.activate_search(search)
         decoder.start_utt()
-        decoder.process_raw(samples, no_search=False, full_utt=True)
-        decoder.end_utt()
+        try:
+            decoder.process_raw(samples, no_search=False, full_utt=True)
+        finally:  # an utterance left open breaks every later one (pocketsphinx keeps its state)
+            decoder.end_utt()
         best = decoder.hyp()
         text = " ".join(best.hypstr.split()) if best is not None else ""
         votes = self._votes(decoder)

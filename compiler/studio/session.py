@@ -193,10 +193,11 @@ class StudioSession:
         return self.move(self.history.undo(), "undo")
 
     def speak(self, ears: StudioEars, pcm: bytes) -> JSONDict:
-        """One spoken utterance, applied as `cnlmc listen` applies it: the first starts the material
-        (the document becomes the phrase), later ones refine it, 'undo' steps back. Below the
-        confidence threshold, or refused by the compiler, nothing changes: {op: heard, message}."""
-        has_material = self.history.current is not None and bool(self.materials())
+        """One spoken utterance, applied as `cnlmc listen` applies it: while the document names no
+        material the utterance becomes the document, later ones refine it, 'undo' steps back.
+        Below the confidence threshold, or a refinement the compiler refuses, changes nothing:
+        {op: heard, message}."""
+        has_material = bool(self.materials())  # a typed document with an error elsewhere too
         hypothesis = ears.hear(pcm, has_material)
         if hypothesis is None:
             return {"op": "heard", "applied": False, "message": NOTHING_HEARD}

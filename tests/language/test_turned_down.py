@@ -63,9 +63,24 @@ def test_a_removal_after_the_material_is_the_change_line(said: str, lines: str) 
     its noun brings (cnlmc.removed); the default name keeps the words said."""
     assert look(said) == look(lines)
     assert look(said) != look(said.split(",")[0])
-    assert (
-        compile_source(said + "\n", "t.cnl", LEX).materials[-1]["name"].endswith(said.split(",")[0].replace(" ", "_"))
-    )
+    name = compile_source(said + "\n", "t.cnl", LEX).materials[-1]["name"]
+    removal, material = said.split(", ")[1], said.split(", ")[0]
+    assert name == f"{removal}_{material}".replace(" ", "_")  # no_grain_oak, without_the_grain_oak
+
+
+def test_one_note_for_a_removal_part_and_other_readings_kept() -> None:
+    """'oak, no grain, a bit darker': the removal read once; 'oak, can we lose the grain': its
+    openers go with it; 'rust on steel, no shine' keeps its clause reading."""
+    for text in (
+        "oak, no grain, a bit darker",
+        "oak, can we lose the grain",
+        "oak, please no grain",
+        "rust on steel, no shine",
+    ):
+        result = compile_source(text + "\n", "t.cnl", LEX)
+        assert result.ok and result.materials, (text, [d.message for d in result.diagnostics])
+    notes = [d.message for d in compile_source("oak, no grain, a bit darker\n", "t.cnl", LEX).diagnostics]
+    assert len([n for n in notes if "'no grain'" in n]) == 1, notes
 
 
 def test_a_removal_of_what_the_material_lacks_warns_and_is_never_a_describing_word() -> None:

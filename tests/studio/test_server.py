@@ -323,6 +323,10 @@ async def test_a_spoken_utterance_that_is_not_audio_or_silence_changes_nothing(c
     ):
         assert answer["op"] == "error" and "Traceback" not in answer["message"], answer
     pytest.importorskip("pocketsphinx", reason="speech input needs pocketsphinx (pip install 'cnlmc[speech]')")
-    silence = await ask(socket, "hear", pcm=base64.b64encode(bytes(2 * rate)).decode())
-    assert silence["op"] == "heard" and not silence["applied"] and "no phrase" in silence["message"]
+    await ask(socket, "edit", text="white varnished oak")
+    for pcm in (b"", bytes(2 * rate), bytes(2 * rate)):  # empty (Speak, Stop at once), then silence twice
+        silence = await ask(socket, "hear", pcm=base64.b64encode(pcm).decode())
+        assert silence["op"] == "heard" and not silence["applied"] and "no phrase" in silence["message"], silence
+    undone = await ask(socket, "undo")  # the document is still the typed one: one step, nothing to undo
+    assert undone["op"] == "error" and "nothing to undo" in undone["message"]
     await socket.close()

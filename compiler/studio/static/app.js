@@ -191,12 +191,16 @@ class Studio {
       this.microphone = new Microphone(this.hello.speech.rate, this.hello.speech.max_seconds);
       this.microphone.onLimit = () => this.speak();
     }
+    if (this.microphoneStarting) return; // a second press while the browser asks for the microphone
     if (!this.microphone.recording) {
+      this.microphoneStarting = true;
       try {
         await this.microphone.start();
       } catch (error) {
         fail(`the microphone is not available: ${error.message || error}`);
         return;
+      } finally {
+        this.microphoneStarting = false;
       }
       button.setAttribute("aria-pressed", "true");
       button.textContent = "Stop";

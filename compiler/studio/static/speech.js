@@ -15,15 +15,26 @@ export class Microphone {
     this.stream = await navigator.mediaDevices.getUserMedia({
       audio: { channelCount: 1, echoCancellation: false, noiseSuppression: false, autoGainControl: false },
     });
-    this.context = new AudioContext();
-    this.source = this.context.createMediaStreamSource(this.stream);
-    this.processor = this.context.createScriptProcessor(4096, 1, 1);
+    try {
+      this.context = new AudioContext();
+      this.source = this.context.createMediaStreamSource(this.stream);
+      this.processor = this.context.createScriptProcessor(4096, 1, 1);
+    } catch (error) {
+      this.release(); // the microphone is not left on
+      throw error;
+    }
     this.chunks = [];
     this.length = 0;
     this.processor.onaudioprocess = (event) => this.collect(event.inputBuffer.getChannelData(0));
     this.source.connect(this.processor);
     this.processor.connect(this.context.destination); // a processor runs only when connected
     this.recording = true;
+  }
+
+  release() {
+    for (const track of this.stream?.getTracks() || []) track.stop();
+    if (this.context && this.context.state !== "closed") this.context.close();
+    this.stream = this.context = null;
   }
 
   collect(samples) {
@@ -39,13 +50,15 @@ export class Microphone {
     const inputRate = this.context.sampleRate;
     this.processor.disconnect();
     this.source.disconnect();
-    for (const track of this.stream.getTracks()) track.stop();
-    this.context.close();
-    const samples = new Float32Array(this.length);
+    this.release();
+    // blocks come 4096 samples at a time: cut at the limit the server holds the page to
+    const samples = new Float32Array(Math.min(this.length, Math.floor(inputRate * this.maxSeconds)));
     let at = 0;
     for (const chunk of this.chunks) {
-      samples.set(chunk, at);
-      at += chunk.length;
+      if (at >= samples.length) break;
+      const part = chunk.subarray(0, samples.length - at);
+      samples.set(part, at);
+      at += part.length;
     }
     return toBase64(toPcm16(resample(samples, inputRate, this.rate)));
   }
