@@ -1,8 +1,8 @@
 """Speech in the studio (issue #18): the page records an utterance while its microphone button is
 on and sends it (16-bit mono PCM at the recogniser's rate, base64) with `hear`; the server
-recognises it with the lexicon's grammar (cnlmc.speech) and applies it as `cnlmc listen` does: the
-first utterance starts the material (the document becomes the phrase), later ones refine it,
-'undo' steps back; below the confidence threshold nothing changes and the page shows what was
+recognises it with the lexicon's grammar (cnlmc.speech) and applies it as `cnlmc listen` does:
+while the document names no material the utterance becomes the document, then utterances refine
+it, 'undo' steps back; below the confidence threshold nothing changes and the page shows what was
 heard and the alternatives. The silence before and after the speech is cut first
 (cnlmc.speech.audio.speech_span), as `cnlmc listen` cuts a recording at its pauses.
 
