@@ -172,6 +172,11 @@ def _failed_line(
     if bare is not None and isinstance(node := _parsed(bare, text, lexicon), ast.Refinement):
         return node
     hedged, notes = reread(words, lexicon)  # 'a touch of sheen' = 'slightly sheen'
+    bare = _without_article(hedged) if notes else None  # 'a paler shade of brown' = 'paler brown'
+    if bare is not None and isinstance(node := _parsed(bare, text, lexicon), ast.Refinement):
+        diags[:] = [d for d in diags if not read_past(d, notes)]
+        diags.extend(notes)
+        return node
     clause = postfix_finish(hedged, lexicon) or with_implied(hedged) or finish_dropped(hedged, lexicon)
     for attempt in _rereadings(hedged, notes, clause):
         node = _parsed(attempt[0], text, lexicon)

@@ -56,7 +56,52 @@ def reread(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], lis
                 continue
         out.append(words[i])
         i += 1
+    said_of = colour_of(out, lexicon)
+    if said_of is not None:
+        out, note = said_of
+        notes.append(note)
     return out, notes
+
+
+def colour_of(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], Diagnostic] | None:
+    """'the colour of wet sand', 'a shade of moss': the words after 'of' read as 'X colour' (the
+    colour of X: cnlmc.joins, the named colour nearest its own), in the place of the phrase, with a
+    note; None when the line has no such phrase or X is not a colour or a thing with one."""
+    table = teaching()["hedges"]
+    texts = [w.text.lower() for w in words]
+    at = next((k for k in range(len(texts) - 2) if texts[k] in table["colour_of"] and texts[k + 1] == "of"), None)
+    if at is None:
+        return None
+    start = at - 1 if at and texts[at - 1] in ("the", "a", "an") else at
+    end = next((k for k in range(at + 2, len(words)) if not words[k].text[:1].isalnum()), len(words))
+    tagged = None
+    if end - at > 3 and any(c.tag == "NOUN" for c in words[end - 1].candidates):
+        tagged = _coloured(words[at + 2 : end - 1], texts[at], lexicon)  # 'the colour of sand paint':
+        end -= tagged is not None  # the paint is what has the colour
+    tagged = tagged or _coloured(words[at + 2 : end], texts[at], lexicon)
+    if tagged is None:
+        return None
+    said = " ".join(w.text for w in words[at + 2 : end])
+    run = words[start:end]
+    whole = run[0].span.to(run[-1].span)
+    read = [
+        Tagged(t.text, _implied(t.text, t.candidates[0], run[-1], step).span, t.candidates, implied_by=whole)
+        for step, t in enumerate(tagged)
+    ]
+    return [*words[:start], *read, *words[end:]], _read_as(run, f"{said} {texts[at]}")
+
+
+def _coloured(said: Sequence[Tagged], head: str, lexicon: Lexicon) -> list[Tagged] | None:
+    """The words 'X colour' as the tagger reads them (the colour of the thing X), or X alone when
+    X is a colour ('butter'); None when neither ends in a colour."""
+    from .tagger import Tagger
+
+    text = " ".join(w.text for w in said)
+    for line in (f"{text} {head}", text):
+        tagged, problems = Tagger.of(lexicon).tag_line(line, 1, 0)
+        if tagged and not any(d.is_error for d in problems) and any(c.tag == "COLOR" for c in tagged[-1].candidates):
+            return tagged
+    return None
 
 
 def colour_between(

@@ -36,3 +36,21 @@ def test_satin_cloth_is_lustrous() -> None:
     assert 0.25 <= satin["params"]["roughness"] <= 0.5  # the satin band of the everyday set
     assert satin["params"]["roughness"] < silk["params"]["roughness"]  # the weave that shines
     assert material("satin")["params"]["sheen_color"] is not None
+
+
+@pytest.mark.parametrize(
+    ("said", "typed"),
+    [
+        ("the colour of sand", "sand colour"),
+        ("the colour of sand paint", "sand colour paint"),
+        ("the color of honey", "honey color"),
+        ("the colour of butter", "butter"),
+        ("linen in the colour of sand", "sand colour linen"),
+    ],
+)
+def test_the_colour_of_a_thing_is_its_colour(said: str, typed: str) -> None:
+    """'the colour of X' is 'X colour' (the named colour nearest X's own, or X when it is a colour),
+    with a note; a material named after it is what has the colour."""
+    result = compile_source(said + "\n", "t.cnl", lexicon_for())
+    assert result.ok and any("read 'the colo" in d.message for d in result.diagnostics)
+    assert same_look(material(said), material(typed))
