@@ -48,9 +48,12 @@ def to_pcm16(frames: bytes, width: int, channels: int, source_rate: int, rate: i
     return bytes(np.clip(np.round(samples), -32768, 32767).astype("<i2").tobytes())
 
 
+SEGMENT_WINDOW = 0.5  # seconds: the segmenter's window (our choice, as `listen` has used)
+
+
 def _segmenter(rate: int) -> Any:
     """pocketsphinx's voice-activity segmenter: half-second windows, 90 % of a window voiced."""
-    return pocketsphinx_module().Segmenter(sample_rate=rate, window=0.5, ratio=0.9)
+    return pocketsphinx_module().Segmenter(sample_rate=rate, window=SEGMENT_WINDOW, ratio=0.9)
 
 
 def utterances(pcm: bytes, rate: int) -> Iterator[bytes]:
@@ -61,14 +64,16 @@ def utterances(pcm: bytes, rate: int) -> Iterator[bytes]:
 
 
 def speech_span(pcm: bytes, rate: int) -> bytes:
-    """The part of one recorded utterance from where its speech starts to where it ends (the
-    silence before and after a button press cut: silence before the speech cost the recogniser
-    accuracy, docs/speech.md); the whole of it when no speech is found."""
+    """The part of one recorded utterance from where its speech starts to where it ends, a
+    segmenter window wider on each side (the segmenter's ends fall up to a window inside the
+    speech: 'white varnished oak' cut to 'white varnished gold'), the rest of the silence before
+    and after a button press cut; the whole of it when no speech is found."""
     segmenter = _segmenter(rate)
     spans = [(segment.start_time, segment.end_time) for segment in segmenter.segment(io.BytesIO(pcm))]
     if not spans:
         return pcm
-    start, end = (int(round(seconds * rate)) * 2 for seconds in (spans[0][0], spans[-1][1]))
+    first, last = max(0.0, spans[0][0] - SEGMENT_WINDOW), spans[-1][1] + SEGMENT_WINDOW
+    start, end = (int(round(seconds * rate)) * 2 for seconds in (first, last))
     return pcm[start:end]
 
 

@@ -20,8 +20,10 @@ HEAR_SECONDS = 120  # the first utterance loads the recogniser; a loaded 2-core 
 
 
 def spoken(folder: Path, text: str) -> tuple[Path, float]:
-    """`text` spoken by espeak-ng (en-us, 160 wpm) with 0.3 s of silence before and 1.5 s after,
-    and how long the file lasts."""
+    """`text` spoken by espeak-ng (en-us, 160 wpm) with 1 s of silence before (the browser takes a
+    moment to start recording) and 1.5 s after,
+    and how long to record it: to 1 s before the file's end, since Chromium's fake microphone plays
+    it in a loop and a recording that ran into the next loop would hear a second, cut phrase."""
     pytest.importorskip("pocketsphinx", reason="speech input needs pocketsphinx (pip install 'cnlmc[speech]')")
     from cnlmc.speech.testset import Utterance, synthesize, tools_missing
 
@@ -29,9 +31,9 @@ def spoken(folder: Path, text: str) -> tuple[Path, float]:
         pytest.skip(f"the spoken test needs {' and '.join(tools_missing())}")
     clean = synthesize(Utterance(text, "en-us", 160, False, False), folder, 16000)
     padded = folder / f"padded_{clean.name}"
-    subprocess.run(["sox", str(clean), str(padded), "pad", "0.3", "1.5"], check=True, capture_output=True)
+    subprocess.run(["sox", str(clean), str(padded), "pad", "1.0", "1.5"], check=True, capture_output=True)
     with wave.open(str(padded)) as w:
-        return padded, w.getnframes() / w.getframerate()
+        return padded, w.getnframes() / w.getframerate() - 1.0
 
 
 def page_hearing(server: Server, wav: Path) -> Iterator[Any]:
