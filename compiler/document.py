@@ -260,13 +260,9 @@ def _removal_part(text: str) -> bool:
 def _said_again(diag: Diagnostic, notes: list[Diagnostic]) -> bool:
     """A note of a failed reading inside a note of the one taken ('no grain' read as no effect
     beside 'no grain' read as a removal): said again, and otherwise."""
-    at = diag.span
-    return (
-        diag.severity == Severity.NOTE
-        and diag not in notes
-        and at is not None
-        and any(n.span is not None and n.span.start <= at.start and at.end <= n.span.end for n in notes)
-    )
+    from .hedges import inside_a_note
+
+    return diag.severity == Severity.NOTE and diag not in notes and inside_a_note(diag, notes)
 
 
 def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, list[Diagnostic]] | None:

@@ -25,6 +25,8 @@ from .tagged import NOTE_CODE, Candidate, Tagged, written_span
 
 __all__ = [
     "colour_between",
+    "colour_of",
+    "inside_a_note",
     "finish_dropped",
     "first_line_clause",
     "first_line_finish",
@@ -72,7 +74,7 @@ def colour_of(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], 
     at = next((k for k in range(len(texts) - 2) if texts[k] in table["colour_of"] and texts[k + 1] == "of"), None)
     if at is None:
         return None
-    start = at - 1 if at and texts[at - 1] in ("the", "a", "an") else at
+    start = at - 1 if at and texts[at - 1] in table["colour_of_lead"] else at
     end = next((k for k in range(at + 2, len(words)) if not words[k].text[:1].isalnum()), len(words))
     tagged = None
     if end - at > 3 and any(c.tag == "NOUN" for c in words[end - 1].candidates):
@@ -236,11 +238,14 @@ def first_line_clause(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Mater
 def read_past(diag: Diagnostic, notes: Sequence[Diagnostic], misplaced: bool = False) -> bool:
     """Whether `diag` is an unknown word inside a phrase a note read as something else ('loads' of
     'loads of'); with `misplaced`, a misplaced one too ('no' of 'oak, no grain')."""
+    return diag.code in (("E001", "E002") if misplaced else ("E001",)) and inside_a_note(diag, notes)
+
+
+def inside_a_note(diag: Diagnostic, notes: Sequence[Diagnostic]) -> bool:
+    """Whether `diag`'s span lies inside one of the notes' spans."""
     at = diag.span
-    return (
-        diag.code in (("E001", "E002") if misplaced else ("E001",))
-        and at is not None
-        and any(n.span is not None and n.span.start <= at.start and at.end <= n.span.end for n in notes)
+    return at is not None and any(
+        n.span is not None and n.span.start <= at.start and at.end <= n.span.end for n in notes
     )
 
 

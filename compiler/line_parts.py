@@ -22,8 +22,6 @@ __all__ = ["PART_MARKS", "by_parts", "material_then_comparatives", "part_cuts"]
 
 #: the marks that set parts apart
 PART_MARKS = frozenset((",", ";"))
-#: words a removal phrase ends with before what it takes off ('lose the grain', 'without any rust')
-ARTICLES = frozenset(("the", "a", "an", "any", "all"))
 
 #: reads the line's text from start to end (columns) as a line of its own, its problems to the list
 Reader = Callable[[int, int, list[Diagnostic]], "ast.Item | None"]
@@ -50,7 +48,7 @@ def by_parts(text: str, line: int, offset: int, read: Reader) -> tuple[ast.Refin
 
 
 def material_then_comparatives(
-    text: str, line: int, offset: int, read: Reader, lexicon: Lexicon | None = None
+    text: str, line: int, offset: int, read: Reader, lexicon: Lexicon
 ) -> tuple[ast.Material, list[Diagnostic]] | None:
     """'walnut, a bit darker', 'reddish brown, maybe a bit darker': a material, then parts that are
     comparatives only, is the material moved by them in turn (its inline comparatives, applied after
@@ -73,7 +71,7 @@ def material_then_comparatives(
     for node in parts[0]:
         assert isinstance(node, ast.Refinement)
         said = _removal_said(node, text, offset)
-        taken_off = without_words(moved, node.removed, lexicon) if node.removed and lexicon is not None else None
+        taken_off = without_words(moved, node.removed, lexicon) if node.removed else None
         if taken_off is not None:  # 'varnished oak, no varnish': the word goes
             moved = replace(taken_off, span=moved.span.to(node.span), text=text)
         else:  # 'walnut, a bit darker'; 'oak, no grain' = much less grain, as the change line 'no grain' is
@@ -86,18 +84,19 @@ def material_then_comparatives(
 
 
 def _removal_said(node: ast.Refinement, text: str, offset: int) -> ast.Word | None:
-    """The removal phrase of a part as written ('no', 'without the'): the word that names the
-    lessening in the material's default name (oak_no_grain, not grain_grain_grain)."""
+    """The removal phrase of a part as written ('no', 'without the', 'lose the' of 'can we lose the
+    grain'): the word that names the lessening in the material's default name (oak_no_grain, not
+    grain_grain_grain)."""
+    from .removal import removal_phrase
+
     if not node.removed:
         return None
     end = node.removed[0].span.start - offset
     start = max(text.rfind(mark, 0, end) for mark in PART_MARKS) + 1
-    said = text[start:end].split()
-    if not said:
+    found = removal_phrase(text[start:end] + " ")
+    if found is None:
         return None
-    kept = said[-2:] if said[-1].lower() in ARTICLES and len(said) > 1 else said[-1:]  # 'lose the', 'no'
-    at = text.rindex(kept[0], start, end)
-    written = text[at:end].rstrip()
+    at, written = start + found[0], text[start + found[0] : start + found[1]]
     return ast.Word(
         written, "less", "refinements", Span(offset + at, offset + at + len(written), node.span.line, at + 1)
     )

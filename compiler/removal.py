@@ -26,7 +26,7 @@ from .tagged import NOTE_CODE, Tagged
 if TYPE_CHECKING:
     from .tagger import Tagger
 
-__all__ = ["opens_removal", "removal_line"]
+__all__ = ["opens_removal", "removal_line", "removal_phrase"]
 
 #: the word categories a removal takes off, by grammar terminal (a property: the words of its name)
 REMOVABLE = ("ADJ", "FEATURE", "COAT", "COLOR", "PROP")
@@ -50,16 +50,12 @@ def _rules() -> tuple[frozenset[str], re.Pattern[str], re.Pattern[str], re.Patte
 
 def removal_line(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast.Refinement, Diagnostic] | None:
     """The line as a removal (its refinement and the note saying so), or None."""
-    firsts, opener, removal, trailing, negations = _rules()
-    start = len(text) - len(text.lstrip())
-    first = text[start:].split(maxsplit=1)[0].lower().rstrip(",!.:;?") if text.strip() else ""
-    if first not in firsts:
+    opening = _opening(text)
+    if opening is None:
         return None
+    start, _opened, lead, phrase = opening
+    _firsts, _opener, _removal, trailing, negations = _rules()
     low = text.lower()
-    said = _removal_at(low, start, opener, removal)
-    if said is None:
-        return None
-    _opened, lead, phrase = said
     end = lead + len(trailing.sub("", low[lead:]))
     masked = " " * lead + text[lead:end] + " " * (len(text) - end)  # columns stay the user's
     tagged, problems = tagger.tag_line(masked, number, offset)
@@ -84,10 +80,26 @@ def removal_line(text: str, number: int, offset: int, tagger: Tagger) -> tuple[a
 def opens_removal(text: str) -> bool:
     """Whether the text opens with a removal phrase ('no grain', 'without the varnish', 'lose the
     shine'), past its openers."""
+    return _opening(text) is not None
+
+
+def removal_phrase(text: str) -> tuple[int, int] | None:
+    """Where the removal phrase the text opens with starts and ends ('lose the' of 'can we lose
+    the grain'), past its openers; None when it opens with none."""
+    opening = _opening(text)
+    return None if opening is None else (opening[1], opening[1] + len(text[opening[1] : opening[2]].rstrip()))
+
+
+def _opening(text: str) -> tuple[int, int, int, str] | None:
+    """Where the text's words start, where its removal phrase starts, where the removed words
+    start, and the phrase said; None when it opens with no removal phrase (a set lookup first)."""
     firsts, opener, removal, _trailing, _negations = _rules()
     start = len(text) - len(text.lstrip())
     first = text[start:].split(maxsplit=1)[0].lower().rstrip(",!.:;?") if text.strip() else ""
-    return first in firsts and _removal_at(text.lower(), start, opener, removal) is not None
+    if first not in firsts:
+        return None
+    said = _removal_at(text.lower(), start, opener, removal)
+    return None if said is None else (start, *said)
 
 
 def _removal_at(low: str, start: int, opener: re.Pattern[str], removal: re.Pattern[str]) -> tuple[int, int, str] | None:

@@ -20,8 +20,6 @@ from .grammar import Grammar
 from .settings import speech_data
 
 BRANCHES_FILE = "branches.toml"
-
-
 CONTEXTS = ("first", "later")  # an utterance that starts a material; one said after it
 START = "start."  # the branches of the start state: a material, a refinement or 'undo'
 
@@ -29,26 +27,36 @@ START = "start."  # the branches of the start state: a material, a refinement or
 def bundled_counts(context: str) -> dict[str, float]:
     """The branch counts of stdlib/speech/branches.toml for an utterance said in `context`: how a
     phrase goes on is counted over both contexts, what it is (a material, a change) in its own."""
-    data = tomllib.loads(speech_data(BRANCHES_FILE))
     counts: dict[str, float] = defaultdict(float)
     for table in CONTEXTS:
-        for slot, count in data[table].items():
+        for slot, count in _bundled_tables()[table].items():
             if table == context or not slot.startswith(START):
                 counts[str(slot)] += float(count)
     return dict(counts)
 
 
-def paths(grammar: Grammar, words: tuple[str, ...]) -> list[tuple[int, ...]]:
-    """Every accepting path of `words` through the grammar (transition indices; none when the
-    grammar cannot say them). The grammar has no loops, so the search ends."""
-    leaving: dict[int, list[int]] = defaultdict(list)
+@cache
+def _bundled_tables() -> dict[str, dict[str, float]]:
+    """stdlib/speech/branches.toml, read once (immutable package data)."""
+    return {table: dict(counts) for table, counts in tomllib.loads(speech_data(BRANCHES_FILE)).items()}
+
+
+def leaving(grammar: Grammar) -> dict[int, list[int]]:
+    """Each state's outgoing transitions (indices)."""
+    found: dict[int, list[int]] = defaultdict(list)
     for index, transition in enumerate(grammar.transitions):
-        leaving[transition[0]].append(index)
+        found[transition[0]].append(index)
+    return found
+
+
+def paths(grammar: Grammar, words: tuple[str, ...], out: dict[int, list[int]]) -> list[tuple[int, ...]]:
+    """Every accepting path of `words` through the grammar (transition indices; none when the
+    grammar cannot say them); `out` is leaving(grammar). The grammar has no loops, so the search ends."""
 
     @cache
     def onward(state: int, at: int) -> tuple[tuple[int, ...], ...]:
         found: list[tuple[int, ...]] = [()] if state == grammar.final and at == len(words) else []
-        for index in leaving[state]:
+        for index in out[state]:
             transition = grammar.transitions[index]
             if len(transition) == 3:
                 found.extend((index, *rest) for rest in onward(transition[1], at))
@@ -72,10 +80,11 @@ def count_branches(grammar: Grammar, phrases: Iterable[str]) -> tuple[dict[str, 
     grammar can say (a phrase with several readings counts each reading by its share), and how
     many phrases were said."""
     choices = {state for state, slots in branching(grammar).items() if len(slots) > 1}
+    out = leaving(grammar)
     counts: dict[str, float] = defaultdict(float)
     said = 0
     for phrase in phrases:
-        readings = paths(grammar, tuple(phrase.split()))
+        readings = paths(grammar, tuple(phrase.split()), out)
         if not readings:
             continue
         said += 1

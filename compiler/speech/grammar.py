@@ -6,8 +6,10 @@ grammar of this lexicon take 35 s to load): a material is [article] up to `max_d
 describing words (adverbs, shades, colours, adjectives, 'and', 'or'; a comparative first)
 then a noun [or a noun], then up to `max_clauses` 'with' clauses; a refinement is up to
 `max_items` items ([adverb] comparative [target]) or a 'with' clause; describing words alone end
-in a colour or an adjective ('matte black'); "undo" is the session's command. No state loops, and only the end of a noun, a clause, a refinement item or "undo" is
-final, so every accepted path is a complete phrase.
+in a colour or an adjective ('matte black'); "undo" is the session's command. No state loops, and
+only the end of a noun, a clause, a refinement item, describing words or "undo" is final, so every
+accepted path is a complete phrase. Each arc names its branch (`Grammar.slots`), which
+cnlmc.speech.branches weighs by how often people take it.
 """
 
 from __future__ import annotations

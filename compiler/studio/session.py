@@ -201,7 +201,7 @@ class StudioSession:
         hypothesis = ears.hear(pcm, has_material)
         if hypothesis is None:
             return {"op": "heard", "applied": False, "message": NOTHING_HEARD}
-        listening = ears.settings()
+        listening = ears.settings
         refused = below_threshold(hypothesis, listening.min_confidence)
         if refused is not None:
             return {"op": "heard", "applied": False, "message": refused, "heard": hypothesis.text}

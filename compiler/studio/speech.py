@@ -23,9 +23,9 @@ class StudioEars:
         self.lexicon = lexicon
         self.folders = folders
         self.lock = threading.Lock()
-        self.model: Any = None
+        self.settings = SpeechSettings.bundled()  # the threshold, 'undo', the rate the page records at
+        self.rate = self.settings.sample_rate
         self.recogniser: Any = None
-        self.rate = SpeechSettings.bundled().sample_rate  # what the page records at
 
     def hear(self, pcm: bytes, refining: bool) -> Any:
         """The hypothesis of one utterance (cnlmc.speech.recogniser.Hypothesis, None when no
@@ -36,11 +36,6 @@ class StudioEars:
 
             return self.recogniser.decode(speech_span(pcm, self.rate), refining=refining)
 
-    def settings(self) -> Any:
-        with self.lock:
-            self._load()
-            return self.model.settings
-
     def _load(self) -> None:
         if self.recogniser is not None:
             return
@@ -48,7 +43,6 @@ class StudioEars:
         from ..speech.recogniser import SpeechUnavailable
 
         try:
-            self.model = SpeechModel.of(self.lexicon, self.folders)
-            self.recogniser = self.model.recogniser()
+            self.recogniser = SpeechModel.of(self.lexicon, self.folders, self.settings).recogniser()
         except SpeechUnavailable as exc:
             raise ValueError(str(exc)) from None
