@@ -246,6 +246,8 @@ def apparent_colour(m: Mapping[str, Any], mixture: bool = False) -> RGB:
     colour changed at all (a patina over half the surface changes the hue a person sees)."""
     p = m["params"]
     base = [float(c) for c in p.get("base_color", (1.0, 1.0, 1.0))]
+    if m["model"]["base"] == "glass" and p.get("transmission_depth"):
+        base = seen_through_the_body(base, float(p["transmission_depth"]))
     if m["model"]["base"] == "conductor" and p.get("f0"):
         base = [b * float(f) for b, f in zip(base, p["f0"])]
     coat = p.get("coat") or {}
@@ -257,6 +259,20 @@ def apparent_colour(m: Mapping[str, Any], mixture: bool = False) -> RGB:
     return (min(base[0], 1.0), min(base[1], 1.0), min(base[2], 1.0))
 
 
+def seen_through_the_body(colour: Sequence[float], depth: float) -> list[float]:
+    """A clear body's colour as the preview shows it: base_color is the transmittance through
+    transmission_depth (Beer-Lambert); seen head-on, the preview's sphere (radius one unit,
+    METRES_PER_UNIT metres) is crossed along a chord of 2·r·√(1 − b²) at a distance b from the
+    centre, so the colour seen is the mean transmittance over its disc (b² uniform): a glass of
+    cola is near black in the middle and brown at the rim, a glass of water clear."""
+    from cnlmc.backends.exchange.mitsuba_subsurface import METRES_PER_UNIT
+
+    rings = [(i + 0.5) / DISC_RINGS for i in range(DISC_RINGS)]  # b², uniform over the disc
+    chords = [2.0 * METRES_PER_UNIT * math.sqrt(1.0 - s) for s in rings]
+    return [sum(max(float(c), 0.0) ** (chord / depth) for chord in chords) / DISC_RINGS for c in colour]
+
+
+DISC_RINGS = 64
 MASK_TEXELS = 64
 LAYER_NAMED = 0.6
 

@@ -191,7 +191,7 @@ def _added_noun(offer: str, said: Sequence[Tagged], tail: Sequence[Tagged], lexi
     end = "".join(f" {w.text}" for w in tail)
     if not offer.startswith(head) or not offer.endswith(end):
         return None
-    added = offer[len(head) : len(offer) - len(end)].strip()
+    added = offer[len(head) : len(offer) - len(end)].strip().rstrip(",;").strip()  # 'almost black paint, with ...'
     nouns = [e for e in lexicon.lookup(tuple(added.lower().split())) if e.category == "nouns"]
     return (nouns[0].key, added) if nouns and added else None
 
@@ -340,6 +340,20 @@ def _closer_alone(item: ast.Refinement, colour: ast.Colour) -> tuple[ast.Materia
     return material, Diagnostic(item.span, Severity.NOTE, NOTE_CODE, message, (hint,))
 
 
+def _colour_said_plainly(words: list[Tagged], lexicon: Lexicon) -> list[Tagged]:
+    """The words with 'a shade of navy' read as 'navy' (cnlmc.hedges.colour_of) and a colour's head
+    word after it left out ('a lighter navy shade', 'a warmer grey tone': teaching.toml
+    [politeness] colour_heads), as the line's own reading did, so a noun can follow the colour."""
+    from .hedges import colour_of
+
+    rewritten = colour_of(words, lexicon)
+    words = rewritten[0] if rewritten is not None else words
+    heads = teaching()["politeness"]["colour_heads"]
+    if len(words) > 1 and words[-1].text.lower() in heads and any(c.tag == "COLOR" for c in words[-2].candidates):
+        return words[:-1]
+    return words
+
+
 def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
     """'paler blue', 'a bit warmer grey' with no material above: a comparison as the first line
     describes a material one step from its colour on the everyday noun colours go on ('paler blue'
@@ -360,8 +374,11 @@ def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.M
     from .tagger import Tagger
 
     start = item.span.start - (item.span.col - 1)  # the line's offset: its text is the whole line
-    words, diags = Tagger.of(lexicon).tag_line(item.text, item.span.line, start)
-    if any(d.is_error for d in diags) or not words:  # a note ('darker than navy' read as 'darker navy') is fine
+    tagged, diags = Tagger.of(lexicon).tag_line(item.text, item.span.line, start)
+    words = _colour_said_plainly(tagged, lexicon)
+    dropped = [w.span for w in tagged if not any(w is kept for kept in words)]
+    errors = [d for d in diags if d.is_error and not any(d.span.start == span.start for span in dropped)]
+    if errors or not words:  # a note ('darker than navy' read as 'darker navy') is fine
         return None
     noun = str(teaching()["completions"]["nouns"][0])
     with_noun = [*words, _implied_noun(noun, words[-1])]

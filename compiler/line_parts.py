@@ -34,7 +34,9 @@ def by_parts(text: str, line: int, offset: int, read: Reader) -> tuple[ast.Refin
     if len(cuts) < 3:
         return None
     complained = any(_complaint(text[a + 1 : b]) for a, b in zip(cuts, cuts[1:]))
-    parts = _parts_read(cuts, text, line, offset, read, lambda w: _courtesy(w) or (complained and _echo(w)))
+    parts = _parts_read(
+        cuts, text, line, offset, read, lambda w: _courtesy(w) or _remark(w) or (complained and _echo(w)), _likeness
+    )
     if parts is None:
         return None
     nodes, notes = parts
@@ -114,11 +116,18 @@ def part_cuts(text: str) -> list[int]:
 
 
 def _parts_read(
-    cuts: list[int], text: str, line: int, offset: int, read: Reader, read_past: Callable[[str], bool]
+    cuts: list[int],
+    text: str,
+    line: int,
+    offset: int,
+    read: Reader,
+    read_past: Callable[[str], bool],
+    past_if_unread: Callable[[str], bool] = lambda _written: False,
 ) -> tuple[list[ast.Item], list[Diagnostic]] | None:
     """Each part between the cuts read as a line of its own, and the notes (a part `read_past`
-    says is courtesy or an echo gets a note only); None for an empty part, or one that does not
-    read or has an error."""
+    says is courtesy, a remark or an echo gets a note only, as does one `past_if_unread` says may
+    be read past when it does not read); None for an empty part, or one that does not read or has
+    an error."""
     nodes: list[ast.Item] = []
     notes: list[Diagnostic] = []
     for start, end in zip(cuts, cuts[1:]):
@@ -131,7 +140,10 @@ def _parts_read(
         said: list[Diagnostic] = []
         node = read(start + 1, end, said)
         if node is None or any(d.is_error for d in said):
-            return None
+            if not past_if_unread(written):
+                return None
+            notes.append(_read_past(written, start + 1, line, offset))
+            continue
         nodes.append(node)
         notes += said
     return nodes, notes
@@ -152,6 +164,23 @@ def _courtesy(written: str) -> bool:
     table = teaching()["politeness"]
     said = " ".join(written.lower().split())
     return said in table["leading"] or said in table["trailing"] or said in table["changes_at_end"]
+
+
+def _remark(written: str) -> bool:
+    """'it looks plasticky', 'keep that pink': a part that remarks on the material as it is
+    (teaching.toml [politeness] remarks), beside the part that changes it."""
+    return _opens_with(written, teaching()["politeness"]["remarks"])
+
+
+def _likeness(written: str) -> bool:
+    """'like an old crackle glaze': a part that likens the change to something (teaching.toml
+    [hedges] likeness); read past when it does not read as a change of its own."""
+    return _opens_with(written, teaching()["hedges"]["likeness"])
+
+
+def _opens_with(written: str, openers: list[str]) -> bool:
+    said = " ".join(written.lower().split())
+    return any(said.startswith(opener + " ") for opener in openers)
 
 
 def _complaint(written: str) -> bool:

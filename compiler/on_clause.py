@@ -91,12 +91,37 @@ def likeness_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tu
         return None
     material = parsed_material(before, text, lexicon.caches.shapes)
     if material is None:
-        return _described_likeness(words, before, line_start + found.end(), text, lexicon)
+        return _described_likeness(words, before, line_start + found.end(), text, lexicon) or _likeness_of_a_colour(
+            words, before, text[found.start() + 1 :].strip(), text, lexicon
+        )
     said = text[found.start() + 1 :].strip()
     note = f"read past '{said}': a likeness to a thing, after the material it names"
     start = line_start + found.start() + 1 + (len(text[found.start() + 1 :]) - len(text[found.start() + 1 :].lstrip()))
     span = Span(start, line_start + len(text.rstrip()), words[0].span.line, start - line_start + 1)
     return material, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)
+
+
+def _likeness_of_a_colour(
+    words: Sequence[Tagged], before: Sequence[Tagged], likeness: str, text: str, lexicon: Lexicon
+) -> tuple[ast.Material, Diagnostic] | None:
+    """'warm greige, like a mushroom': describing words alone, then a likeness that names no
+    material: the describing words on the everyday noun colours go on (paint, as for describing
+    words alone: cnlmc.implied), the likeness read past; None when they do not parse so."""
+    from .implied import _implied_noun
+
+    said = [w for w in before if w.text[:1].isalnum()]
+    describing = ("ADJ", "COLOR", "SHADE", "ADV")
+    if not said or not all(any(c.tag in describing for c in w.candidates) for w in said):
+        return None
+    noun = str(teaching()["completions"]["nouns"][0])
+    material = parsed_material([*said, _implied_noun(noun, said[-1])], text, lexicon.caches.shapes)
+    if material is None:
+        return None
+    note = (
+        f"no material named: read '{written_text(said)}' as '{written_text(said)} {noun}', "
+        f"and read past '{likeness}': a likeness to a thing"
+    )
+    return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
 
 
 def _described_likeness(

@@ -190,12 +190,18 @@ def _everyday_phrases(written: str, main: Sequence[Tagged], lexicon: Lexicon) ->
 
 def _compiles_cleanly(phrase: str, lexicon: Lexicon) -> bool:
     """Whether the phrase compiles with no error and no warning (a word that does not apply to
-    the noun warns: W102), so an offer is one the compiler itself accepts as it is."""
+    the noun warns: W102), so an offer is one the compiler itself accepts as it is. Two of the
+    words said that contradict each other ('glossy matte') warn whatever the noun (W101): that
+    warning is the words', and stays with the offer."""
     from .api import compile_source  # the teaching runs inside a compilation: imported when needed
 
     return not any(
-        d.severity.value in ("error", "warning") for d in compile_source(phrase, "<offer>", lexicon).diagnostics
+        d.severity.value == "error" or (d.severity.value == "warning" and d.code not in WORDS_OWN_WARNINGS)
+        for d in compile_source(phrase, "<offer>", lexicon).diagnostics
     )
+
+
+WORDS_OWN_WARNINGS = frozenset({"W101"})  # a contradiction between the words said (passes/words.py)
 
 
 def _applies_to_all(noun: str, main: Sequence[Tagged], lexicon: Lexicon) -> bool:

@@ -31,6 +31,21 @@ def colour_step(rgb: list[float], ops: Ops) -> list[float]:
     return out
 
 
+def shade_step(rgb: list[float], ops: Ops) -> list[float]:
+    """A shade said as a change ('more vivid', 'less muted'): its operations as the shades apply
+    them; where the gamut turns the shade's chroma pull around (a lighter 'vivid' on a pale pink
+    would lose chroma at the gamut's edge), its chroma factor alone, fitted to the gamut by giving
+    up a little lightness, so the colour still moves the way the word says."""
+    out = apply_ops(rgb, ops)
+    scale = 1.0
+    for op in ops:
+        if op["op"] == "chroma":
+            scale *= op["scale"]
+    if (_chroma(out) - _chroma(rgb)) * (scale - 1.0) >= 0.0:
+        return out
+    return chroma_step(rgb, scale)
+
+
 def hue_step(rgb: list[float], ab: Sequence[float], amount: float) -> list[float]:
     """One step towards a hue: OKLab a, b plus `amount` of the target's own a, b vector (its hue
     direction at its chroma), lightness kept where the gamut allows. A colour already past the

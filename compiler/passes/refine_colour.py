@@ -12,7 +12,7 @@ from __future__ import annotations
 from typing import Any
 
 from .. import ast
-from ..colour import apply_ops, linear_to_oklab
+from ..colour import linear_to_oklab
 from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .bracket import Move, Step, bracket_move, scaled_steps
@@ -26,6 +26,7 @@ from .colour_steps import (
     less_of,
     opposite_ops,
     scaled_ops,
+    shade_step,
 )
 from .colours import colour_text, resolve_colour
 from .refine_target import item_text, item_words, note
@@ -206,6 +207,6 @@ def _refine_shade(
     w = ctx.settings.get("weight_step", 0.5) * weight
     step_ops = scaled_ops(ops, w) if direction > 0 else opposite_ops(scaled_ops(ops, w))
     key = f"base_color.shade:{colour_text(target)}"
-    move = Move(direction, lambda x: apply_ops(x, step_ops), weight, COLOUR_LIMITS)
+    move = Move(direction, lambda x: shade_step(x, step_ops), weight, COLOUR_LIMITS)
     new = bracket_move(state.brackets, key, state.params["base_color"], move)
     state.record("base_color", new, f"refinements.{item.word.key} {colour_text(target)}: shade step", item_words(item))

@@ -170,6 +170,7 @@ def apply_adjective(
         return
     if state.applied:
         _check_opposition(state, ctx, adjective, word)
+    _check_noun_name(state, ctx, adjective, word)
     state.applied.append((adjective.key, word))
     words = (*group.adverbs, word)
     colour_weight = 1.0
@@ -307,6 +308,27 @@ def _check_opposition(state: MaterialState, ctx: Context, adjective: Entry, word
                     (_why_it_wins(stage_of(first), stage_of(adjective), earlier.text, word.text),),
                 )
             )
+
+
+def _check_noun_name(state: MaterialState, ctx: Context, adjective: Entry, word: ast.Word) -> None:
+    """A describing word against a word of the noun's own name ('shiny chalky paint': chalk paint is
+    matte by what it is, 'chalky' an alias of 'matte'): W101 as for two describing words; the
+    describing word applies over the noun's own finish, so it wins."""
+    nouns = getattr(state.selection, "nouns", ())
+    if not nouns or nouns[0].span.line != word.span.line:
+        return
+    for part in nouns[0].text.lower().split()[:-1]:  # the last word names the thing ('paint')
+        for found in ctx.lexicon.lookup((part,)):
+            if found.category == "adjectives" and _opposed(ctx.lexicon.require("adjectives", found.key), adjective):
+                state.diagnostics.append(
+                    warning(
+                        word.span,
+                        "W101",
+                        f"'{word.text}' contradicts '{part}' in '{nouns[0].text}': '{word.text}' wins",
+                        (f"'{nouns[0].text}' is {found.key} by what it is; drop the one you do not mean",),
+                    )
+                )
+                return
 
 
 def _why_it_wins(first_stage: str, last_stage: str, first: str, last: str) -> str:
@@ -447,7 +469,21 @@ def copy_optics(state: MaterialState, ctx: Context, noun_key: str, rule: str, wo
     state.kind = "conductor"
     for param in ("eta", "k", "f0", "f82", "base_color"):
         state.record(param, entry.get(param), f"{rule}: optics of {entry.key}", words, source=entry.get("source"))
+    _plating_brightness(state, entry, rule, words)
     return True
+
+
+def _plating_brightness(state: MaterialState, entry: Entry, rule: str, words: Words) -> None:
+    """Decorative plating (chrome, nickel, gold) is deposited bright and levels the surface: the
+    plated material is as smooth as the plating metal's own finish when that is smoother, unless a
+    describing word of the phrase set the roughness ('satin chrome plated steel')."""
+    plating = entry.get("roughness")
+    current = state.params.get("roughness")
+    if plating is None or current is None or plating >= current:
+        return
+    if any(step.rule.startswith("adjectives.") for step in state.provenance.get("roughness", ())):
+        return
+    state.record("roughness", plating, f"{rule}: as bright as plated {entry.key} (its noun's roughness)", words)
 
 
 SURFACE_PARAMS = ("base_color", "roughness", "ior", DIFFUSE_SIGMA)  # what a non-metal coating brings

@@ -217,6 +217,17 @@ def test_apparent_colour_of_a_conductor_is_its_f0_times_its_tint():
     assert ev.apparent_colour(tinted) == pytest.approx((0.45, 0.45, 0.45))
 
 
+def test_a_clear_body_is_seen_through_the_preview_sphere():
+    """A drink is judged as the preview shows it: its 1 cm tint crossed along the sphere's chords."""
+    cola = material("glass", (0.358, 0.186, 0.085), 0.0, transmission_depth=0.01)
+    assert ev.band(BANDS["lightness"], ev.oklch((0.358, 0.186, 0.085))[0]) == "mid"  # its 1 cm tint
+    assert ev.observe(cola, BANDS)["lightness"] == "dark"  # a glass of it
+    clear = material("glass", (1.0, 1.0, 1.0), 0.0, transmission_depth=0.01)
+    assert ev.apparent_colour(clear) == pytest.approx((1.0, 1.0, 1.0))
+    pale = ev.apparent_colour(material("glass", (0.9, 0.9, 0.9), 0.0, transmission_depth=1.0))
+    assert pale == pytest.approx((0.9 ** (0.2 / 3),) * 3, rel=0.01)  # mean chord 2/3 of 10 cm: barely tinted
+
+
 def test_effective_roughness_reads_the_coat_and_the_diffuse_model():
     assert ev.effective_roughness(material("diffuse")) == 1.0
     assert ev.effective_alpha(material("diffuse")) == 1.0

@@ -1,0 +1,192 @@
+"""Meaning of everyday lines (issue #14), categories from held-out phrasing: a change line with a
+remark beside it ('more matte, it looks plasticky'), colour steps that keep the colour a person
+named ('lighter' on navy is a blue, 'greyer' on white is a grey), plating that is bright, the
+finish a noun's own name states, describing words alone that contradict, likenesses and vessels
+after a material, and hedges ('not quite white')."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from cnlmc.api import Session, compile_source, lexicon_for
+from cnlmc.colour import linear_to_oklab
+
+LEX = lexicon_for()
+
+
+def compiled(text: str):
+    return compile_source(text + "\n", "t.cnl", LEX)
+
+
+def material(text: str) -> dict:
+    result = compiled(text)
+    assert result.ir["materials"], [d.message for d in result.diagnostics]
+    return result.ir["materials"][-1]
+
+
+def codes(text: str) -> list[str]:
+    return [d.code for d in compiled(text).diagnostics if d.severity.value in ("error", "warning")]
+
+
+def lch(rgb: list[float]) -> tuple[float, float, float]:
+    L, a, b = linear_to_oklab(rgb)
+    return L, math.hypot(a, b), math.degrees(math.atan2(b, a)) % 360
+
+
+def colour_after(phrase: str, *lines: str) -> list[float]:
+    session = Session(phrase, LEX)
+    for line in lines:
+        session.refine(line)
+    return session.material["params"]["base_color"]
+
+
+def same_look(a: dict, b: dict) -> bool:
+    keys = ("base_color", "roughness", "anisotropy")
+    return a["model"] == b["model"] and all(a["params"].get(k) == b["params"].get(k) for k in keys)
+
+
+# ---------------------------------------------------------------- colour steps
+
+
+@pytest.mark.parametrize("phrase", ["navy paint", "dark green plastic", "burgundy velvet", "forest green paint"])
+def test_lighter_keeps_the_hue_and_most_of_the_chroma(phrase: str) -> None:
+    L0, C0, h0 = lch(material(phrase)["params"]["base_color"])
+    L1, C1, h1 = lch(colour_after(phrase, "lighter"))
+    assert L1 > L0 + 0.1
+    assert abs((h1 - h0 + 180) % 360 - 180) < 8  # the same hue: a lighter navy is a blue
+    assert C1 > 0.6 * C0  # not the grey a linear blend towards white gives (navy: chroma 0.01)
+
+
+def test_the_papers_bracket_numbers_hold_with_the_oklab_lighter() -> None:
+    """Blue (0,0,1) -darker-> (0,0,0.5) -lighter-> (0,0,0.75): a bracket's midpoint (paper §4.2)."""
+    session = Session("blue plastic", LEX)
+    blue = session.material["params"]["base_color"]
+    darker = session.refine("darker")["params"]["base_color"]
+    lighter = session.refine("lighter")["params"]["base_color"]
+    assert darker == pytest.approx([c * 0.5 for c in blue], abs=1e-6)
+    assert lighter == pytest.approx([c * 0.75 for c in blue], abs=1e-6)
+
+
+def test_paler_fades_the_colour_as_it_lightens() -> None:
+    L0, C0, _h = lch(material("navy paint")["params"]["base_color"])
+    L1, C1, _h = lch(colour_after("navy paint", "paler"))
+    L2, C2, _h = lch(colour_after("navy paint", "lighter"))
+    assert L1 > L0 and C1 < C2  # paler: lighter and less coloured than 'lighter'
+
+
+@pytest.mark.parametrize(("phrase", "way"), [("white ceramic tile", -1), ("black paint", 1)])
+def test_greyer_moves_a_white_or_a_black_towards_grey(phrase: str, way: int) -> None:
+    L0 = lch(material(phrase)["params"]["base_color"])[0]
+    L1 = lch(colour_after(phrase, "a bit greyer"))[0]
+    assert (L1 - L0) * way > 0.01
+
+
+def test_greyer_still_takes_chroma_from_a_colour() -> None:
+    C0 = lch(material("red paint")["params"]["base_color"])[1]
+    assert lch(colour_after("red paint", "greyer"))[1] < 0.85 * C0
+
+
+@pytest.mark.parametrize("line", ["more vibrant", "more vivid", "richer"])
+def test_more_vivid_on_a_pale_colour_at_the_gamuts_edge_adds_chroma(line: str) -> None:
+    C0 = lch(material("pale pink linen")["params"]["base_color"])[1]
+    assert lch(colour_after("pale pink linen", line))[1] > C0 * 1.1
+
+
+# ---------------------------------------------------------------- a change line with a remark beside it
+
+
+@pytest.mark.parametrize(
+    ("phrase", "line", "plain"),
+    [
+        ("light oak flooring", "more matte, it looks plasticky", "more matte"),
+        ("light oak flooring", "it looks plasticky, more matte", "more matte"),
+        ("navy wool", "it reads almost black, lift it a bit", "a bit lighter"),
+        ("pale pink linen", "keep that pink, just a little darker", "a little darker"),
+        ("white ceramic tile", "add some crazing, like an old crackle glaze", "add some crazing"),
+        ("dull brass", "add some brushing, it looks cheap", "add some brushing"),
+    ],
+)
+def test_a_remark_beside_a_change_is_read_past(phrase: str, line: str, plain: str) -> None:
+    said, bare = Session(phrase, LEX), Session(phrase, LEX)
+    assert same_look(said.refine(line), bare.refine(plain))
+    assert said.material != Session(phrase, LEX).material  # it changed
+    assert any("read past" in d.message for d in said.result.diagnostics)
+
+
+def test_a_remark_alone_is_no_change() -> None:
+    """Only beside a change is a remark read past: alone it is not a change line."""
+    session = Session("light oak flooring", LEX)
+    before = session.material
+    with pytest.raises(ValueError):
+        session.refine("it looks plasticky, it reads cheap")
+    assert session.material == before
+
+
+def test_lift_it_is_lighter() -> None:
+    assert colour_after("navy wool", "lift it") == colour_after("navy wool", "lighter")
+
+
+def test_the_same_in_a_colour_is_that_colour() -> None:
+    assert colour_after("dark green tiles", "the same in navy") == colour_after("dark green tiles", "make it navy")
+    assert colour_after("dark green tiles", "what about the same in mustard") == colour_after(
+        "dark green tiles", "make it mustard"
+    )
+
+
+def test_brushing_is_a_feature() -> None:
+    brushed = material("brass with some brushing")
+    assert brushed["model"]["anisotropic"] and "normal" in brushed["maps"]
+
+
+# ---------------------------------------------------------------- plating, names, contradictions
+
+
+def test_plating_is_as_bright_as_the_plating_metal() -> None:
+    chrome = material("chrome")["params"]["roughness"]
+    assert material("chrome plated steel")["params"]["roughness"] == chrome
+    assert material("chrome-plated steel tube")["params"]["roughness"] == chrome
+    assert material("gold plated steel")["params"]["roughness"] == material("gold")["params"]["roughness"]
+    # a plating never roughens: the base is kept when it is the smoother
+    assert material("gold plated polished steel")["params"]["roughness"] <= material("gold")["params"]["roughness"]
+
+
+@pytest.mark.parametrize("text", ["shiny chalky paint", "super glossy chalky paint"])
+def test_a_describing_word_against_the_nouns_own_name_warns(text: str) -> None:
+    (w101,) = [d for d in compiled(text).diagnostics if d.code == "W101"]
+    assert "'chalky'" in w101.message and "chalky paint" in w101.message
+    assert codes("matte chalky paint") == []
+
+
+@pytest.mark.parametrize("text", ["glossy matte", "high-gloss matte", "mirror-polished but totally matte"])
+def test_describing_words_alone_that_contradict_compile_and_warn(text: str) -> None:
+    result = compiled(text)
+    assert result.ir["materials"] and [d.code for d in result.diagnostics if d.severity.value == "warning"] == ["W101"]
+
+
+# ---------------------------------------------------------------- likeness, vessels, hedges
+
+
+@pytest.mark.parametrize(
+    ("text", "plain"),
+    [
+        ("warm greige, like a mushroom", "warm greige paint"),
+        ("almost black, with a hint of green", "almost black paint with a hint of green"),
+        ("a lighter shade of navy", "a lighter navy paint"),
+        ("a paler shade of brown", "a paler brown paint"),
+        ("coffee in a mug", "coffee"),
+        ("clear water in a glass", "clear water"),
+        ("a drizzle of olive oil", "olive oil"),
+        ("not quite white", "almost white paint"),
+        ("absolutely matte paint", "completely matte paint"),
+    ],
+)
+def test_everyday_wrappings_read_as_the_plain_phrase(text: str, plain: str) -> None:
+    assert same_look(material(text), material(plain)), text
+    assert not [d for d in compiled(text).diagnostics if d.severity.value in ("error", "warning")]
+
+
+def test_not_quite_so_is_a_softener_not_a_booster() -> None:
+    shiny = material("shiny steel")["params"]["roughness"]
+    assert material("not quite so shiny steel")["params"]["roughness"] > shiny
