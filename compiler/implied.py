@@ -376,8 +376,8 @@ def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.M
     start = item.span.start - (item.span.col - 1)  # the line's offset: its text is the whole line
     tagged, diags = Tagger.of(lexicon).tag_line(item.text, item.span.line, start)
     words = _colour_said_plainly(tagged, lexicon)
-    dropped = [w.span for w in tagged if not any(w is kept for kept in words)]
-    errors = [d for d in diags if d.is_error and not any(d.span.start == span.start for span in dropped)]
+    dropped = {w.span.start for w in tagged if not any(w is kept for kept in words)}
+    errors = [d for d in diags if d.is_error and (d.span is None or d.span.start not in dropped)]
     if errors or not words:  # a note ('darker than navy' read as 'darker navy') is fine
         return None
     noun = str(teaching()["completions"]["nouns"][0])
