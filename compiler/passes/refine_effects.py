@@ -24,7 +24,7 @@ from ..state import Context, MaterialState
 from .base import noun_of
 from .bracket import Move, Step, bracket_move, scaled_steps
 from .refine_property import refine_property
-from .refine_target import item_text, item_words, move_sigma_too, note, note_unmoved_number, surface
+from .refine_target import highlight_shown, item_text, item_words, move_sigma_too, note, note_unmoved_number, surface
 from .subsurface import refine_translucency
 from .words import Effect, effects_for
 
@@ -134,6 +134,7 @@ def _refine_effect(
     state.note(key, new, rule, item_words(item))
     note_unmoved_number(state, item, key, current, new)
     move_sigma_too(state, key, move, item_words(item), rule)
+    highlight_shown(state, ctx, key, current, new, item_words(item), rule)
 
 
 def _pole(effect: Effect, current: float, limits: tuple[float, float] | None) -> int:

@@ -11,7 +11,7 @@ from ..state import Context, MaterialState
 from .base import noun_of
 from .bracket import Move, bracket_move, scaled_steps
 from .refine_colour import refine_saturation
-from .refine_target import item_words, move_sigma_too, note_unmoved_number, surface
+from .refine_target import highlight_shown, item_words, move_sigma_too, note_unmoved_number, surface
 
 
 def refine_property(
@@ -38,6 +38,7 @@ def refine_property(
     state.note(key, new, rule, item_words(item))
     note_unmoved_number(state, item, key, current, new)
     move_sigma_too(state, key, move, item_words(item), rule)
+    highlight_shown(state, ctx, key, current, new, item_words(item), rule)
 
 
 def acted_on(state: MaterialState, prop: Entry) -> list[str]:

@@ -68,6 +68,25 @@ def move_sigma_too(state: MaterialState, key: str, move: Move, words: tuple[ast.
     state.record(DIFFUSE_SIGMA, new, f"{rule}, on the Oren-Nayar sigma too", words)
 
 
+HIGHLIGHT_MARGIN = 0.05  # how far below the diffuse threshold a first highlight starts (our choice)
+
+
+def highlight_shown(
+    state: MaterialState, ctx: Context, key: str, before: Any, after: Any, words: tuple[ast.Word, ...], rule: str
+) -> None:
+    """'a little shinier' on linen or matte concrete: a roughness step down that would leave the
+    material diffuse (roughness at or above settings.toml diffuse_threshold: no highlight is drawn)
+    goes on to just below the threshold, so the change shows as a first, broad highlight."""
+    threshold = float(ctx.settings.get("diffuse_threshold", 0.85))
+    if key != "roughness" or not isinstance(before, (int, float)) or not isinstance(after, (int, float)):
+        return
+    if after >= before or after < threshold:
+        return
+    shown = threshold - HIGHLIGHT_MARGIN
+    state.params["roughness"] = shown
+    state.note(key, shown, f"{rule}, past the diffuse threshold {threshold:g} so a highlight shows", words)
+
+
 def note_unmoved_number(state: MaterialState, item: ast.RefineItem, key: str, before: Any, after: Any) -> None:
     """A parameter a refinement could not move (it is at its range's end) says so in a note."""
     if not isinstance(before, (int, float)) or not isinstance(after, (int, float)) or abs(after - before) > 1e-6:

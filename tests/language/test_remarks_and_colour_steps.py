@@ -190,3 +190,38 @@ def test_everyday_wrappings_read_as_the_plain_phrase(text: str, plain: str) -> N
 def test_not_quite_so_is_a_softener_not_a_booster() -> None:
     shiny = material("shiny steel")["params"]["roughness"]
     assert material("not quite so shiny steel")["params"]["roughness"] > shiny
+
+
+# ---------------------------------------------------------------- a first highlight, trade words
+
+
+@pytest.mark.parametrize(
+    ("phrase", "line"), [("pale pink linen", "a little shinier"), ("matte grey concrete", "smoother")]
+)
+def test_a_gloss_step_on_a_diffuse_material_shows_a_highlight(phrase: str, line: str) -> None:
+    """Below settings.toml diffuse_threshold a highlight is drawn: the first step goes there."""
+    session = Session(phrase, LEX)
+    assert session.material["model"]["base"] == "diffuse"
+    after = session.refine(line)
+    threshold = LEX.settings.get("diffuse_threshold")
+    assert after["model"]["base"] == "dielectric" and after["params"]["roughness"] < threshold
+    again = session.refine("shinier")["params"]["roughness"]
+    assert again < after["params"]["roughness"]  # and it keeps moving
+
+
+@pytest.mark.parametrize(
+    ("text", "plain"),
+    [
+        ("white plaster with a chalky feel", "white plaster with a chalky finish"),
+        ("the deep teal from the brochure", "deep teal paint"),
+        ("European oak, rustic grade", "European oak"),
+    ],
+)
+def test_trade_and_sales_words_read_as_the_plain_phrase(text: str, plain: str) -> None:
+    assert same_look(material(text), material(plain)), text
+
+
+def test_bubbles_in_glass_compile_and_say_they_are_not_drawn() -> None:
+    result = compiled("green glass with little bubbles")
+    assert result.ir["materials"][0]["model"]["base"] == "glass"
+    assert [d.code for d in result.diagnostics if d.severity.value == "warning"] == ["W120"]
