@@ -22,6 +22,9 @@ from .formulas import round6_list, rounded
 from .params import Params
 
 FLAKE_PARAMS = ("flake_color", "flake_density", "flake_roughness", "flake_size")
+#: a working flag (never in the IR): the flake colour was named ('with gold flakes', 'gold flecks'),
+#: flakes of that metal or colour laid in the finish, seen as named rather than through the pigment
+OWN_FLAKE_COLOUR = "flake_color_named"
 
 
 def has_flakes(params: Mapping[str, Any]) -> bool:
@@ -42,8 +45,12 @@ def flake_params(params: Mapping[str, Any]) -> dict[str, Any]:
     """The IR's flake entries for a material's working params: none without flakes."""
     if not has_flakes(params):
         return {}
+    own = params.get(OWN_FLAKE_COLOUR, False)  # 'gold flecks': named flakes are not under the pigment
+    colour = (
+        list(params["flake_color"]) if own else tinted_flakes(list(params["flake_color"]), list(params["base_color"]))
+    )
     return {
-        "flake_color": round6_list(tinted_flakes(list(params["flake_color"]), list(params["base_color"]))),
+        "flake_color": round6_list(colour),
         "flake_density": rounded(params["flake_density"]),
         "flake_roughness": rounded(params.get("flake_roughness", Params.flake_roughness)),
         "flake_size": rounded(params.get("flake_size", Params.flake_size)),

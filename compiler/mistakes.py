@@ -6,11 +6,11 @@ the key for its message. A user's error with the same key gets that message.
 
 from __future__ import annotations
 
-from importlib import resources
 from typing import Any
 
 from .diagnostics import FailureKey, Mistake
 from .lexicon import Lexicon
+from .package_data import package_folder
 from .parser import ParseFailure, parse_tagged
 from .tagged import Tagged
 from .tagger import Tagger
@@ -21,7 +21,7 @@ __all__ = ["Mistake", "known_mistake", "learn"]
 def _read_table() -> list[dict[str, Any]]:
     import tomllib
 
-    text = resources.files("cnlmc.grammar").joinpath("bad_examples.toml").read_text("utf-8")
+    text = (package_folder("cnlmc.grammar") / "bad_examples.toml").read_text("utf-8")
     table: list[dict[str, Any]] = tomllib.loads(text)["mistake"]
     return table
 

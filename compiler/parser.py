@@ -16,11 +16,11 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
 from functools import lru_cache
-from importlib import resources
 from typing import TYPE_CHECKING, Any, TypedDict
 
 from . import ast
 from .diagnostics import FailureKey
+from .package_data import package_folder
 from .shape_store import recall_shape
 from .syntax import Shape, ShapeCache, ShapeKey
 from .tagged import Candidate, Tagged
@@ -58,7 +58,7 @@ def lark_parser() -> Lark:
     """The LALR parser; its tables come from the disk cache as verified plain data (cnlmc.grammar_cache)."""
     from .grammar_cache import cached_lark
 
-    grammar = resources.files("cnlmc.grammar").joinpath("cnl.lark").read_text("utf-8")
+    grammar = (package_folder("cnlmc.grammar") / "cnl.lark").read_text("utf-8")
     return cached_lark(grammar, lexer_class(), parser="lalr", propagate_positions=False, maybe_placeholders=False)
 
 

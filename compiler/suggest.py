@@ -13,10 +13,11 @@ from bisect import bisect_left
 from collections import Counter, OrderedDict
 from collections.abc import Iterable, Mapping, Sequence
 from functools import lru_cache
-from importlib import resources
 from itertools import chain
 from types import MappingProxyType
 from typing import Any
+
+from .package_data import package_folder
 
 __all__ = ["FormIndex", "allowed_edits", "teaching"]
 
@@ -30,7 +31,7 @@ def teaching() -> Mapping[str, Any]:
     """stdlib/data/teaching.toml, read once per process (immutable package data)."""
     import tomllib
 
-    text = resources.files("cnlmc.stdlib").joinpath("data").joinpath("teaching.toml").read_text("utf-8")
+    text = (package_folder("cnlmc.stdlib") / "data" / "teaching.toml").read_text("utf-8")
     return MappingProxyType(tomllib.loads(text))
 
 

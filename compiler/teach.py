@@ -12,13 +12,13 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
 from functools import lru_cache
-from importlib import resources
 from types import MappingProxyType
 
 from .diagnostics import Diagnostic, did_you_mean
 from .hedges import colour_between
 from .lexicon import CATEGORY_TAGS, Lexicon
 from .measures import without_measures
+from .package_data import package_folder
 from .politeness import without_politeness
 from .suggest import allowed_edits, teaching
 from .tagged import Candidate, Tagged, written_text
@@ -290,6 +290,6 @@ def wordnet_kinds() -> Mapping[str, tuple[str, ...]]:
     """WordNet noun -> its kinds, nearest first (stdlib/data/wordnet_aliases.toml; English only)."""
     import tomllib
 
-    text = resources.files("cnlmc.stdlib").joinpath("data").joinpath("wordnet_aliases.toml").read_text("utf-8")
+    text = (package_folder("cnlmc.stdlib") / "data" / "wordnet_aliases.toml").read_text("utf-8")
     nouns = tomllib.loads(text).get("nouns", {})
     return MappingProxyType({word: tuple(row.get("kind_of", ())) for word, row in nouns.items()})

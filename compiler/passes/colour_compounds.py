@@ -11,7 +11,6 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 from functools import lru_cache
-from importlib import resources
 from types import MappingProxyType
 from typing import Any
 
@@ -19,6 +18,7 @@ from .. import ast
 from ..colour import linear_to_oklab
 from ..diagnostics import Diagnostic, Severity
 from ..lexicon import Lexicon
+from ..package_data import package_folder
 
 __all__ = ["NOTE_CODE", "colour_compounds"]
 
@@ -30,7 +30,7 @@ def rules() -> Mapping[str, Any]:
     """stdlib/data/colour_compounds.toml, read once per process (immutable package data)."""
     import tomllib
 
-    text = resources.files("cnlmc.stdlib").joinpath("data").joinpath("colour_compounds.toml").read_text("utf-8")
+    text = (package_folder("cnlmc.stdlib") / "data" / "colour_compounds.toml").read_text("utf-8")
     return MappingProxyType(tomllib.loads(text))
 
 

@@ -15,6 +15,7 @@ from typing import Any
 from .. import ast
 from ..colour import linear_to_oklab
 from ..diagnostics import Diagnostic, Severity, warning
+from ..flake_params import OWN_FLAKE_COLOUR
 from ..formulas import apply_op
 from ..graphs import graph_params
 from ..lexicon import Entry
@@ -46,10 +47,42 @@ def apply_features(state: MaterialState, ctx: Context, clauses: tuple[ast.Featur
         if clause.word.category == "coats":
             _warn_second_coat(state, clause)
             continue
-        apply_feature(state, ctx, ctx.lexicon.require("features", clause.word.key), clause)
+        entry, share = _of_metal(state, ctx, ctx.lexicon.require("features", clause.word.key), clause)
+        apply_feature(state, ctx, entry, clause, share)
 
 
-def apply_feature(state: MaterialState, ctx: Context, entry: Entry, clause: ast.Feature) -> None:
+METAL_FEATURE = "N126"  # a feature whose colour names a metal read as the metal's own feature
+
+
+def _of_metal(state: MaterialState, ctx: Context, entry: Entry, clause: ast.Feature) -> tuple[Entry, float]:
+    """'black lacquer with gold flecks': flecks of a metal are flakes of it, not mineral speckles
+    (the entry's `of_metal`, at its `of_metal_share` of the clause's weight: flecks are sparse),
+    when the clause's colour is a metal's name (a conductor noun of the lexicon: gold, silver,
+    copper), with a note; any other clause keeps its entry at its own weight."""
+    colour = _colour_of(clause)
+    other = entry.get("of_metal")
+    if other is None or colour is None or colour.base is None:
+        return entry, 1.0
+    metal = ctx.lexicon.entry("nouns", colour.base.key)
+    if metal is None or metal.get("model") != "conductor" or not _takes(state, ctx, other):
+        return entry, 1.0  # 'quartzite with flecks of silver': mica, drawn as speckles
+    text = f"{colour_text(colour)} {clause.word.text}"
+    state.diagnostics.append(
+        Diagnostic(clause.span, Severity.NOTE, METAL_FEATURE, f"read '{text}' as {other} of {colour.base.text}")
+    )
+    return ctx.lexicon.require("features", other), float(entry.get("of_metal_share", 1.0))
+
+
+def _takes(state: MaterialState, ctx: Context, feature: str) -> bool:
+    """Whether the material takes the feature: its adjective's `applies_to` names the material's
+    class or noun, or it has none (flakes lie in paint and plastic, not in stone)."""
+    adjective_key = ctx.lexicon.require("features", feature).get("adjective")
+    classes = ctx.lexicon.require("adjectives", adjective_key).get("applies_to") if adjective_key else None
+    noun = noun_of(state)
+    return not classes or noun.get("class") in classes or noun.key in classes
+
+
+def apply_feature(state: MaterialState, ctx: Context, entry: Entry, clause: ast.Feature, share: float = 1.0) -> None:
     if entry.get("missing"):
         state.diagnostics.append(
             warning(clause.span, MISSING, f"'{clause.word.text}': {entry.get('missing')}", (_drawable_hint(ctx),))
@@ -57,7 +90,7 @@ def apply_feature(state: MaterialState, ctx: Context, entry: Entry, clause: ast.
     if entry.get("finish"):
         _apply_finish(state, ctx, clause)
         return
-    weight = clause_weight(clause, ctx)
+    weight = clause_weight(clause, ctx) * share
     colour = _colour_of(clause)
     if colour is not None and not entry.get("colour"):
         degree = _shade_degree(state, ctx, colour, clause)
@@ -74,10 +107,30 @@ def apply_feature(state: MaterialState, ctx: Context, entry: Entry, clause: ast.
             clause = _with_surface_words_applied(state, ctx, clause)
     if entry.get("maps"):
         used_colour = _draw_maps(state, ctx, entry, clause, weight, colour) or used_colour
+    if entry.get("colour") == "flake" and colour is not None:
+        used_colour = _colour_flakes(state, ctx, colour) or used_colour
     if entry.get("coat"):
         apply_coat_entry(state, ctx, entry.get("coat"), f"features.{entry.key}.coat", (clause.word,))
     _report_unused(state, entry, clause, colour if not used_colour else None)
     _report_other_colours(state, clause)
+
+
+def _colour_flakes(state: MaterialState, ctx: Context, colour: ast.Colour) -> bool:
+    """'with gold flakes': the flakes mirror as the named metal does (its measured F0 times its
+    tint); another colour ('with red flakes') is their colour as named. False when the material has
+    no flakes to colour."""
+    if state.params.get("flake_color") is None:
+        return False
+    metal = ctx.lexicon.entry("nouns", colour.base.key) if colour.base is not None else None
+    if metal is not None and metal.get("model") == "conductor" and not colour.shades:
+        rgb = [b * f for b, f in zip(metal.get("base_color"), metal.get("f0"))]
+        why = f"nouns.{metal.key}: the flakes mirror as {colour.base.text if colour.base else metal.key} does (F0)"
+    else:
+        rgb = resolve_colour(colour, ctx)
+        why = f"colours: {colour_text(colour)} flakes"
+    state.record("flake_color", rgb, why, colour.words, source=metal.get("source") if metal is not None else None)
+    state.params[OWN_FLAKE_COLOUR] = True
+    return True
 
 
 def clause_weight(clause: ast.Feature, ctx: Context) -> float:

@@ -515,7 +515,7 @@ def _apply_maps(state: MaterialState, ctx: Context, adjective: Entry, weight: fl
         if role == "normal" and len(maps) > 1 and _keeps_own_relief(state, ref):
             continue
         drawn = _map_ref(weighted_map(ref, weight), ctx)
-        state.maps[role] = _kept_params(state.maps.get(role), drawn)
+        state.maps[role] = _kept_params(state.maps.get(role), drawn, ref.get("weighted", ()))
         state.note(f"maps.{role}", ref["graph"], f"adjectives.{adjective.key}.maps (weight {weight:g})", words)
 
 
@@ -535,12 +535,19 @@ def _keeps_own_relief(state: MaterialState, ref: dict[str, Any]) -> bool:
     )
 
 
-def _kept_params(before: dict[str, Any] | None, drawn: dict[str, Any]) -> dict[str, Any]:
+def _kept_params(before: dict[str, Any] | None, drawn: dict[str, Any], degrees: Sequence[str] = ()) -> dict[str, Any]:
     """A describing word's map over the same graph and output as the map already there keeps that
-    map's own parameters and sets its own ('fine-grained oak' is oak's grain, finer)."""
+    map's own parameters and sets its own ('fine-grained oak' is oak's grain, finer). A parameter
+    that is the word's degree (its `weighted` ones: rust coverage, scratch strength) never drops
+    below the map's own: 'rusty' on weathering steel, rusted all over, adds no clean steel."""
     if before is None or (before.get("graph"), before.get("output")) != (drawn.get("graph"), drawn.get("output")):
         return drawn
-    return {**drawn, "params": {**before.get("params", {}), **drawn.get("params", {})}}
+    own = before.get("params", {})
+    params = {**own, **drawn.get("params", {})}
+    for name in degrees:
+        if isinstance(own.get(name), (int, float)) and isinstance(params.get(name), (int, float)):
+            params[name] = max(own[name], params[name])
+    return {**drawn, "params": params}
 
 
 def _apply_adjective_coat(state: MaterialState, ctx: Context, adjective: Entry, words: Words) -> None:

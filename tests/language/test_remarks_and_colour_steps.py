@@ -225,3 +225,31 @@ def test_bubbles_in_glass_compile_and_say_they_are_not_drawn() -> None:
     result = compiled("green glass with little bubbles")
     assert result.ir["materials"][0]["model"]["base"] == "glass"
     assert [d.code for d in result.diagnostics if d.severity.value == "warning"] == ["W120"]
+
+
+# ---------------------------------------------------------------- flecks of metal, weathering steel
+
+
+@pytest.mark.parametrize("text", ["black lacquer with gold flecks", "navy lacquer with gold flecks"])
+def test_flecks_of_a_metal_are_sparse_flakes_of_it(text: str) -> None:
+    result = compiled(text)
+    params = result.ir["materials"][0]["params"]
+    gold = LEX.require("nouns", "gold")
+    assert params["flake_color"] == pytest.approx([b * f for b, f in zip(gold.get("base_color"), gold.get("f0"))])
+    paint = material("car paint with metallic flakes")["params"]["flake_density"]
+    assert 0 < params["flake_density"] < 0.5 * paint  # scattered flecks, not a metallic paint's cover
+    assert "N126" in [d.code for d in result.diagnostics]
+    assert "flake_color" not in material("granite with black flecks")["params"]  # mineral flecks stay speckles
+
+
+def test_gold_flakes_keep_their_gold_over_any_pigment() -> None:
+    assert (
+        material("navy lacquer with gold flakes")["params"]["flake_color"]
+        == material("car paint with gold flakes")["params"]["flake_color"]
+    )
+
+
+@pytest.mark.parametrize("text", ["Corten weathering steel", "rusty corten steel"])
+def test_a_word_of_rust_never_takes_rust_off(text: str) -> None:
+    coverage = material(text)["maps"]["mask"]["params"]["coverage"]
+    assert coverage >= material("corten steel")["maps"]["mask"]["params"]["coverage"]
