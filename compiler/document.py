@@ -187,7 +187,14 @@ def _failed_line(
     whole = _whole_line(hedged, text, lexicon)
     if whole is not None:
         taken = _removal_part(text)  # 'no' of 'oak, no grain': read as the removal, and no other note of it
-        diags[:] = [d for d in diags if not read_past(d, whole[1], taken) and not (taken and _said_again(d, whole[1]))]
+        passed = [n for n in whole[1] if n.message.startswith("read past ")]  # a part read past: all its errors go
+        diags[:] = [
+            d
+            for d in diags
+            if not read_past(d, whole[1], taken)
+            and not read_past(d, passed, misplaced=True)
+            and not (taken and _said_again(d, whole[1]))
+        ]
         diags.extend(whole[1])
         return whole[0]
     if notes:  # still no parse: the rest reads the words as reread, and says so

@@ -173,10 +173,16 @@ def finish_dropped(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagg
     entry = lexicon.entry("features", finish.key) if finish is not None else None
     if entry is None or not entry.get("finish"):
         return None
-    kept = [w for w in words if w is not last and not (w is words[0] and _is_article(w))]
+    lead = _leading_with(words)  # 'with a glossier finish', 'give it a glossier finish' ('give it' = 'with')
+    kept = [w for w in words[lead:] if w is not last and not (w is words[lead] and _is_article(w))]
     said = " ".join(w.text for w in main)
     read = " ".join(w.text for w in kept if w.text[:1].isalpha())
     return kept, Diagnostic(main[0].span.to(last.span), Severity.NOTE, NOTE_CODE, f"read '{said}' as '{read}'")
+
+
+def _leading_with(words: Sequence[Tagged]) -> int:
+    """1 when the words open with 'with' (the clause's own word, said of the finish), else 0."""
+    return 1 if len(words) > 1 and any(c.tag == "WITH" for c in words[0].candidates) else 0
 
 
 def postfix_finish(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], Diagnostic] | None:

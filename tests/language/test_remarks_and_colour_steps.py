@@ -253,3 +253,27 @@ def test_gold_flakes_keep_their_gold_over_any_pigment() -> None:
 def test_a_word_of_rust_never_takes_rust_off(text: str) -> None:
     coverage = material(text)["maps"]["mask"]["params"]["coverage"]
     assert coverage >= material("corten steel")["maps"]["mask"]["params"]["coverage"]
+
+
+# ---------------------------------------------------------------- -ness, a comparative finish, an echo
+
+
+@pytest.mark.parametrize(
+    ("line", "plain"),
+    [("less flatness", "less flat"), ("lose the flatness", "less flat"), ("more smoothness", "more smooth")],
+)
+def test_a_quality_named_with_ness_is_its_adjective(line: str, plain: str) -> None:
+    said, bare = Session("navy blue paint", LEX), Session("navy blue paint", LEX)
+    assert said.refine(line)["params"]["roughness"] == bare.refine(plain)["params"]["roughness"]
+
+
+@pytest.mark.parametrize("line", ["with a glossier finish", "give it a glossier finish"])
+def test_a_comparative_said_of_the_finish_after_with_is_the_comparative(line: str) -> None:
+    said, bare = Session("oak worktop", LEX), Session("oak worktop", LEX)
+    assert said.refine(line)["params"]["roughness"] == bare.refine("glossier")["params"]["roughness"]
+
+
+def test_an_echoing_idiom_read_past_leaves_no_error_of_its_words() -> None:
+    session = Session("grey concrete floor", LEX)
+    session.refine("too shiny, can we knock it back")
+    assert not [d for d in session.result.diagnostics if d.severity.value in ("error", "warning")]
