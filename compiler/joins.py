@@ -505,8 +505,12 @@ class Joiner:
         objects = of_tag(thing, "OBJECT")
         entry = self.lexicon.entry("objects", objects[0].key) if objects else None
         key = entry.get("feature") if entry is not None else None
-        if key is None or noun not in out or not of_tag(noun, "NOUN") or self._own_pattern(noun):
+        if entry is None or key is None or noun not in out or not of_tag(noun, "NOUN"):
             return
+        if self._own_pattern(noun):  # 'slate tiles': slate's own colour, the joints in relief
+            key = entry.get("patterned_feature")
+            if key is None:
+                return
         if any(of_tag(t, "FEATURE") and t.text == key for t in out[out.index(noun) + 1 :]):
             return  # 'tiles with grout': said already
         if self._feature_clause(out, noun, key, thing.span):
@@ -551,7 +555,7 @@ class Joiner:
         for k, (text, candidates) in enumerate(said, start=1):
             at = min(s.start + k, max(s.end - 1, s.start))
             clause.append(Tagged(text, Span(at, at, s.line, s.col + at - s.start), candidates, implied_by=implied_by))
-        if rest:
+        if rest and not _a_place(rest):  # 'tiles in the hallway': a place, read past later, joins no clause
             w = rest[0].span
             clause.append(Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), _AND, implied_by=implied_by))
         out[n + 1 : n + 1] = clause
@@ -1036,6 +1040,21 @@ def _ends_noun(tagged: list[Tagged], k: int, out: list[Tagged]) -> bool:
     """Whether a head word at k ends the line after its noun ('brushed steel look': the noun holds
     it); after a comma the word before it describes ('brass, satin finish': the adjective)."""
     return k + 1 == len(tagged) and not (len(out) > 1 and of_tag(out[-2], "COMMA"))
+
+
+def _a_place(words: list[Tagged]) -> bool:
+    """Whether the words say only where the material is used ('in the hallway': a preposition, an
+    article and a place of teaching.toml [politeness]), which cnlmc.politeness reads past."""
+    from .suggest import teaching
+
+    table = teaching()["politeness"]
+    said = [w.text.lower() for w in words if w.text[:1].isalnum()]
+    return (
+        len(said) >= 3
+        and said[0] in table["place_prepositions"]
+        and said[1] in table["place_articles"]
+        and " ".join(said[2:]) in table["places"]
+    )
 
 
 def _in_colour_length(rest: list[Tagged]) -> int:

@@ -103,6 +103,7 @@ class Rules:
         self.qualifiers = frozenset(joined("qualifiers", "words"))
         self.sizes = frozenset(joined("qualifiers", "sizes"))  # "wide oak floorboards"
         self.ordinary = frozenset(joined("qualifiers", "ordinary"))  # "plain white"
+        self.liking = frozenset(joined("qualifiers", "liking"))  # "a nice warm terracotta"
         self.comparison = frozenset(joined("comparison", "words"))  # "lighter than oak"
         self.manners = frozenset(joined("compound_first", "manners"))
         self.participles = frozenset(joined("compound_first", "participles"))
@@ -163,6 +164,8 @@ class WordFormation:
                 return Reading((Part(0, 1, 0, None, compound),), 2, note)
         if first in rules.ordinary and len(words) > 1:  # "plain white", "standard oak"
             return Reading((), 1, f"read '{first}' as the ordinary kind: no effect on the look")
+        if first in rules.liking and len(words) > 1:  # "a nice warm terracotta", "a cosy grey throw"
+            return Reading((), 1, f"read '{first}' as saying you like it: no effect on the look")
         if first in rules.sizes and len(words) > 1 and not self._names_feature(words[1]):  # "wide oak floorboards"
             return Reading((), 1, f"read '{first}' as the size of the pieces: not drawn, no effect on the look")
         if len(words) > 1:

@@ -23,7 +23,7 @@ RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "FEATURE")
 _LISTS = {
     "punctuation": ("trailing", "leading", "quotes", "number_marks"),
     "negation": ("words", "prefixes", "softeners", "emphatic", "emphatic_before"),
-    "qualifiers": ("words", "sizes", "ordinary"),
+    "qualifiers": ("words", "sizes", "ordinary", "liking"),
     "comparison": ("words",),
     "properties": ("endings",),
 }
@@ -41,7 +41,7 @@ def empty_rules() -> dict[str, Any]:
             "emphatic_before": [],
             "soft_adverb": "",
         },
-        "qualifiers": {"words": [], "sizes": [], "ordinary": []},
+        "qualifiers": {"words": [], "sizes": [], "ordinary": [], "liking": []},
         "comparison": {"words": []},
         "properties": {"endings": []},
         "compound_first": {

@@ -19,8 +19,9 @@ def resolve_colour(c: ast.Colour, ctx: Context, start: list[float] | None = None
     """RGB of a colour phrase; shades alone ("dark wood") act on `start`, but a last shade that is
     also a colour ("reddish" in "reddish plastic", "dark reddish oak") is that colour, as "red" would be.
     An adverb's `weight` goes to the shades: "very dark grey" is grey made dark 1.5 times (also when
-    the survey names "dark grey" itself); a plain colour at a weight below 1 ("slightly red") is that
-    share of the way from `start` to the colour."""
+    the survey names "dark grey" itself); a plain colour at a weight below 1 ("slightly red", "almost
+    black") is that share of the way from `start` to the colour in OKLab (a linear blend left
+    'almost black' paint a mid grey, L 0.5)."""
     shades, base = c.shades, c.base
     if base is None and shades and ctx.lexicon.entry("colours", shades[-1].key) is not None:
         shades, base = shades[:-1], shades[-1]
@@ -46,8 +47,8 @@ def _weighted_plain(rgb: list[float], key: str, ctx: Context, start: list[float]
         if weight > 1.0:
             return shade(rgb, _ops(ctx, shade_key, weight - 1.0))
         return shade(list(ctx.lexicon.require("colours", plain_key).get("rgb")), _ops(ctx, shade_key, weight))
-    if weight < 1.0 and start is not None:
-        return [a + weight * (b - a) for a, b in zip(start, rgb)]
+    if weight < 1.0 and start is not None:  # in OKLab: 'almost black' is nearly black to the eye
+        return colour.mix_oklab(start, rgb, weight)
     return rgb
 
 

@@ -277,3 +277,48 @@ def test_an_echoing_idiom_read_past_leaves_no_error_of_its_words() -> None:
     session = Session("grey concrete floor", LEX)
     session.refine("too shiny, can we knock it back")
     assert not [d for d in session.result.diagnostics if d.severity.value in ("error", "warning")]
+
+
+# ---------------------------------------------------------------- 'almost X', tiles of a patterned stone
+
+
+@pytest.mark.parametrize(("text", "most"), [("almost black paint", 0.2), ("not quite black", 0.2)])
+def test_almost_a_colour_is_nearly_that_colour_to_the_eye(text: str, most: float) -> None:
+    """A share of the way in OKLab: a linear blend left 'almost black' paint a mid grey (L 0.5)."""
+    assert lch(material(text)["params"]["base_color"])[0] < most
+
+
+def test_almost_navy_is_a_dark_blue() -> None:
+    L, C, h = lch(material("almost navy")["params"]["base_color"])
+    assert L < 0.45 and C > 0.04 and 220 < h < 300
+
+
+@pytest.mark.parametrize("text", ["slate tiles", "Dark Grey Slate Tiles", "limestone tiles in the hallway"])
+def test_tiles_of_a_patterned_stone_show_their_joints(text: str) -> None:
+    maps = material(text)["maps"]
+    assert maps["normal"]["graph"] == "tiles" and maps["base_color"]["graph"] != "tiles"
+
+
+# ---------------------------------------------------------------- liking, reasons, idioms with their object
+
+
+@pytest.mark.parametrize(("text", "plain"), [("a nice warm terracotta", "a warm terracotta"), ("lovely oak", "oak")])
+def test_a_word_of_liking_has_no_effect_on_the_look(text: str, plain: str) -> None:
+    assert same_look(material(text), material(plain))
+    assert any("you like it" in d.message for d in compiled(text).diagnostics)
+
+
+@pytest.mark.parametrize(
+    ("phrase", "line", "plain"),
+    [
+        ("white marble floor", "less shiny, people will slip", "less shiny"),
+        ("white marble floor", "darker, because the room is bright", "darker"),
+        ("terracotta tiles", "too orange, tone the colour down", "less orange"),
+        ("shiny brass", "too shiny, tone the shine down", "less shiny"),
+        ("sky blue linen", "can we see it in mustard", "make it mustard"),
+        ("dark grey paint", "can it have a hint of blue in it", "with a hint of blue"),
+    ],
+)
+def test_a_reason_or_an_echo_beside_the_change_is_read_past(phrase: str, line: str, plain: str) -> None:
+    said, bare = Session(phrase, LEX), Session(phrase, LEX)
+    assert same_look(said.refine(line), bare.refine(plain))

@@ -525,13 +525,18 @@ def test_a_metal_tone_is_its_colour_not_a_metal(lexicon):
 
 def test_tiles_are_drawn_laid_with_grout_lines(lexicon):
     """objects.toml `feature`: 'terracotta tiles' is terracotta with the tiles graph's grid, as
-    'terracotta with grout'; a material with a colour pattern of its own keeps it ('marble tiles')."""
+    'terracotta with grout'; a material with a colour pattern of its own keeps it and shows the
+    joints in relief (`patterned_feature`: 'marble tiles' = marble's veins, the tiles' normal)."""
     tiles, _ = compiled(lexicon, "terracotta tiles")
     plain, _ = compiled(lexicon, "terracotta")
     graphs = {m.get("graph") for m in tiles.materials[0]["maps"].values()}
     assert "tiles" in graphs and "tiles" not in {m.get("graph") for m in plain.materials[0]["maps"].values()}
     assert "read 'tiles' as laid tiles: with grout" in notes(tiles)
-    assert look_of(lexicon, "marble tiles") == look_of(lexicon, "marble")
+    marble_tiles, _ = compiled(lexicon, "marble tiles")
+    marble, _ = compiled(lexicon, "marble")
+    laid = marble_tiles.materials[0]["maps"]
+    assert laid["base_color"] == marble.materials[0]["maps"]["base_color"]  # the veins stay
+    assert laid["normal"]["graph"] == "tiles" and "read 'tiles' as laid tiles: with joints" in notes(marble_tiles)
 
 
 @pytest.mark.parametrize(
