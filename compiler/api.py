@@ -180,9 +180,29 @@ def _complaint_as_change(words: str, table: Mapping[str, Any], lexicon: Lexicon)
         return _complaint_part(words, table, lexicon)
     parts = words.split(",")
     changed = [_complaint_part(part, table, lexicon) for part in parts]
+    if any(_describing_only(part, lexicon) for part in changed):  # 'lighter, almost white'
+        changed = [f"{_change_phrase(lexicon, table)} {p}" if _describing_only(p, lexicon) else p for p in changed]
     if changed == parts:
         return words
     return ", ".join(" ".join(part.split()) for part in changed if part.strip())
+
+
+DESCRIBING_TAGS = frozenset({"ADJ", "COLOR", "SHADE", "ADV"})
+
+
+def _describing_only(part: str, lexicon: Lexicon) -> bool:
+    """Whether a part of a change line is describing words alone ('almost white', 'almost
+    polished'): said beside comparatives it is a change of the material, as 'make it almost white'."""
+    from .tagger import Tagger
+
+    tagged, problems = Tagger.of(lexicon).tag_line(part, 1, 0)
+    words = [w for w in tagged if w.text[:1].isalnum()]
+    return (
+        bool(words)
+        and not any(d.is_error for d in problems)
+        and all(c.tag in DESCRIBING_TAGS for w in words for c in w.candidates)
+        and any(c.tag != "ADV" for w in words for c in w.candidates)
+    )
 
 
 def _complaint_part(words: str, table: Mapping[str, Any], lexicon: Lexicon) -> str:

@@ -163,7 +163,7 @@ def _comparatives_only(node: ast.Item) -> bool:
 def _courtesy(written: str) -> bool:
     table = teaching()["politeness"]
     said = " ".join(written.lower().split())
-    return said in table["leading"] or said in table["trailing"] or said in table["changes_at_end"]
+    return any(said in table[kind] for kind in ("leading", "trailing", "changes_at_end", "alone"))
 
 
 def _remark(written: str) -> bool:

@@ -322,3 +322,30 @@ def test_a_word_of_liking_has_no_effect_on_the_look(text: str, plain: str) -> No
 def test_a_reason_or_an_echo_beside_the_change_is_read_past(phrase: str, line: str, plain: str) -> None:
     said, bare = Session(phrase, LEX), Session(phrase, LEX)
     assert same_look(said.refine(line), bare.refine(plain))
+
+
+# ---------------------------------------------------------------- 'nothing shiny', describing parts, verdicts
+
+
+def test_nothing_negates_as_not() -> None:
+    assert same_look(material("nothing shiny"), material("not shiny paint"))
+
+
+@pytest.mark.parametrize(
+    ("phrase", "line", "plain"),
+    [
+        ("smooth concrete wall", "lighter, almost white", "lighter, make it almost white"),
+        ("red plastic", "darker, glossy", "darker, make it glossy"),
+        ("matte white cabinets", "actually, try them in a sage green", "make it sage green"),
+    ],
+)
+def test_a_describing_part_beside_a_comparative_is_a_change(phrase: str, line: str, plain: str) -> None:
+    said, bare = Session(phrase, LEX), Session(phrase, LEX)
+    assert same_look(said.refine(line), bare.refine(plain))
+
+
+def test_almost_before_a_colour_is_its_degree_and_alone_a_verdict() -> None:
+    assert colour_after("red plastic", "almost black") != colour_after("red plastic", "black")
+    assert colour_after("smooth concrete wall", "almost, but a bit darker") == colour_after(
+        "smooth concrete wall", "a bit darker"
+    )
