@@ -77,6 +77,8 @@ class Joiner:
             if word.unknown or (before is not None and before.unknown):  # its tags are guesses: E001 says so
                 if before is not None and self._is_artifact_after(before, word, tagged[k + 1 :]):
                     out[-1] = self._artifact(before, word, diags)
+                elif before is not None and self._is_described_artifact(out, word, tagged[k + 1 :]):
+                    out.append(self._painted_artifact(word, diags))  # 'a red bike': red paint
                 elif not word.unknown and of_tag(word, "OBJECT") and not of_tag(word, "NOUN"):
                     out.append(self._object_alone(word, []))  # 'blorf tiles': E001 alone says what is wrong
                 else:
@@ -231,6 +233,32 @@ class Joiner:
         if before.unknown or rest or not of_tag(before, "NOUN") or not word.text.isalpha():
             return False
         return self._artifact_name(word.text.lower()) is not None
+
+    def _is_described_artifact(self, out: list[Tagged], word: Tagged, rest: list[Tagged]) -> bool:
+        """An unknown word WordNet 3.0 lists as an artifact after describing words and no material
+        ('a red bike', 'a red bike with a glossy clear coat'), last on the line or before a clause."""
+        said = [t for t in out if t.text[:1].isalnum() and not of_tag(t, "ARTICLE")]
+        if not said or not word.text.isalpha() or any(t.unknown or of_tag(t, "NOUN") for t in out):
+            return False
+        if not all(any(c.tag in DESCRIBING for c in t.candidates) for t in said):
+            return False
+        if rest and not of_tag(rest[0], "WITH"):
+            return False
+        return self._artifact_name(word.text.lower()) is not None
+
+    def _painted_artifact(self, word: Tagged, diags: list[Diagnostic]) -> Tagged:
+        """The thing read as the everyday noun colours go on (paint), its E001 gone, with a note."""
+        from .suggest import teaching
+
+        noun = str(teaching()["completions"]["nouns"][0])
+        diags[:] = [d for d in diags if not (d.span == word.span and d.code == "E001")]
+        name = self._artifact_name(word.text.lower())
+        note = (
+            f"read '{word.text}' as the thing its colour and finish are on: {noun} "
+            f"(WordNet 3.0 lists '{name}' as an artifact; name its material to choose another)"
+        )
+        diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))
+        return Tagged(word.text, word.span, (Candidate("NOUN", noun, "nouns"),))
 
     def _artifact_name(self, word: str) -> str | None:
         """The WordNet artifact `word` is, also in a plural (-s, -es, -ies)."""
@@ -949,8 +977,8 @@ def _artifact_words() -> frozenset[str]:
 def may_join(tagged: list[Tagged]) -> bool:
     """Whether a line has an object, two nouns side by side, or a head word ('finish', 'look':
     a COAT or FEATURE reading) before another word or after a noun (see Joiner.joined); or ends in
-    an unknown word after a noun ("pewter tankard") or, with no 'with' or comma, in a describing
-    word after a noun ("Eiche geölt")."""
+    an unknown word after a noun ("pewter tankard") or with no noun ("a red bike"), or, with no
+    'with' or comma, in a describing word after a noun ("Eiche geölt")."""
     noun_before = noun_seen = noun_before_last = described_noun = with_seen = unknown_seen = False
     plain = True  # no 'with', no comma
     final = tagged[-1] if tagged else None
@@ -983,7 +1011,7 @@ def may_join(tagged: list[Tagged]) -> bool:
     if final is None:
         return False
     if final.unknown:
-        return noun_before_last
+        return noun_before_last or not noun_seen  # "pewter tankard"; "a red bike" (a described thing)
     final_tags = [c.tag for c in final.candidates]
     if "COAT" in final_tags and not with_seen:
         return True  # "satin varnish": a coat named as the whole material

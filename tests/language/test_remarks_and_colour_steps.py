@@ -349,3 +349,11 @@ def test_almost_before_a_colour_is_its_degree_and_alone_a_verdict() -> None:
     assert colour_after("smooth concrete wall", "almost, but a bit darker") == colour_after(
         "smooth concrete wall", "a bit darker"
     )
+
+
+def test_a_described_thing_without_a_material_is_painted_with_a_note() -> None:
+    """'a red bike': WordNet 3.0 lists 'bike' as an artifact; its colour and finish go on paint."""
+    result = compiled("a red bike with a glossy clear coat")
+    assert same_look(result.ir["materials"][0], material("red paint with a glossy clear coat"))
+    assert any("WordNet 3.0 lists 'bike' as an artifact" in d.message for d in result.diagnostics)
+    assert [d.code for d in compiled("a red blorf").diagnostics if d.is_error] == ["E001"]  # no noun: still an error
