@@ -357,3 +357,10 @@ def test_a_described_thing_without_a_material_is_painted_with_a_note() -> None:
     assert same_look(result.ir["materials"][0], material("red paint with a glossy clear coat"))
     assert any("WordNet 3.0 lists 'bike' as an artifact" in d.message for d in result.diagnostics)
     assert [d.code for d in compiled("a red blorf").diagnostics if d.is_error] == ["E001"]  # no noun: still an error
+
+
+def test_natural_white_is_the_surveys_off_white_in_english_and_german() -> None:
+    assert same_look(material("linen in natural white"), material("off-white linen"))
+    de = lexicon_for(["de"])
+    said = compile_source("Leinen in Naturweiß\n", "t.cnl", de).ir["materials"][0]
+    assert said["params"]["base_color"] == material("off-white linen")["params"]["base_color"]
