@@ -82,7 +82,7 @@ def colour_of(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], 
         end -= tagged is not None  # the paint is what has the colour
     tagged = tagged or _coloured(words[at + 2 : end], texts[at], lexicon)
     if tagged is None:
-        return None
+        return _shade_of_a_material(words, at, end)
     said = " ".join(w.text for w in words[at + 2 : end])
     run = words[start:end]
     whole = run[0].span.to(run[-1].span)
@@ -91,6 +91,24 @@ def colour_of(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], 
         for step, t in enumerate(tagged)
     ]
     return [*words[:start], *read, *words[end:]], _read_as(run, f"{said} {texts[at]}")
+
+
+def _shade_of_a_material(words: Sequence[Tagged], at: int, end: int) -> tuple[list[Tagged], Diagnostic] | None:
+    """'a slightly darker shade of oak': after a comparative, 'a shade of' before a material noun is
+    read past: the comparative of the material ('slightly darker oak'), with a note; None otherwise."""
+    if at == 0 or not any(c.tag == "REFINE" for c in words[at - 1].candidates):
+        return None
+    if end - at < 3 or not any(c.tag == "NOUN" for c in words[end - 1].candidates):
+        return None
+    run = words[at : at + 2]
+    said = " ".join(w.text for w in run)
+    note = Diagnostic(
+        run[0].span.to(run[-1].span),
+        Severity.NOTE,
+        NOTE_CODE,
+        f"read past '{said}': the comparative is of the material",
+    )
+    return [*words[:at], *words[at + 2 :]], note
 
 
 def _coloured(said: Sequence[Tagged], head: str, lexicon: Lexicon) -> list[Tagged] | None:

@@ -364,3 +364,12 @@ def test_natural_white_is_the_surveys_off_white_in_english_and_german() -> None:
     de = lexicon_for(["de"])
     said = compile_source("Leinen in Naturweiß\n", "t.cnl", de).ir["materials"][0]
     assert said["params"]["base_color"] == material("off-white linen")["params"]["base_color"]
+
+
+@pytest.mark.parametrize(
+    ("text", "plain"),
+    [("a slightly darker shade of oak", "slightly darker oak"), ("a darker shade of oak", "darker oak")],
+)
+def test_a_comparative_shade_of_a_material_is_the_materials_comparative(text: str, plain: str) -> None:
+    assert same_look(material(text), material(plain))
+    assert not [d for d in compiled(text).diagnostics if d.is_error]
