@@ -157,6 +157,10 @@ def refined(
     trial = compile_source(text, name, lexicon, seed)
     known = before if before is not None else compile_source(base, name, lexicon, seed)
     if len(trial.materials) > len(known.materials):
+        coated = f"{base}\nwith {words}"  # 'a glossy varnish': under a material, a coat said alone is added
+        clause = compile_source(coated, name, lexicon, seed)
+        if clause.ok and len(clause.materials) == len(known.materials):
+            return coated, clause
         text = f"{base}\n{_change_phrase(lexicon, teaching()['politeness'])} {words}"
         trial = compile_source(text, name, lexicon, seed)
     return text, trial
@@ -180,29 +184,41 @@ def _complaint_as_change(words: str, table: Mapping[str, Any], lexicon: Lexicon)
         return _complaint_part(words, table, lexicon)
     parts = words.split(",")
     changed = [_complaint_part(part, table, lexicon) for part in parts]
-    if any(_describing_only(part, lexicon) for part in changed):  # 'lighter, almost white'
+    if any(_comparative(p, lexicon) for p in changed) and any(_describing_only(p, lexicon) for p in changed):
         changed = [f"{_change_phrase(lexicon, table)} {p}" if _describing_only(p, lexicon) else p for p in changed]
     if changed == parts:
         return words
     return ", ".join(" ".join(part.split()) for part in changed if part.strip())
 
 
-DESCRIBING_TAGS = frozenset({"ADJ", "COLOR", "SHADE", "ADV"})
-
-
 def _describing_only(part: str, lexicon: Lexicon) -> bool:
     """Whether a part of a change line is describing words alone ('almost white', 'almost
     polished'): said beside comparatives it is a change of the material, as 'make it almost white'."""
+    from .joins import DESCRIBING
+
+    words = _part_words(part, lexicon)
+    return (
+        words is not None
+        and bool(words)
+        and all(c.tag in DESCRIBING for w in words for c in w.candidates)
+        and any(c.tag != "ADV" for w in words for c in w.candidates)
+    )
+
+
+def _comparative(part: str, lexicon: Lexicon) -> bool:
+    """Whether a part of a change line opens with a comparative ('lighter', 'a bit darker')."""
+    words = _part_words(part, lexicon)
+    return bool(words) and any(c.tag == "REFINE" for w in words or () for c in w.candidates)
+
+
+def _part_words(part: str, lexicon: Lexicon) -> list[Any] | None:
+    """The part's words as the tagger reads them (marks left out), or None when it has an error."""
     from .tagger import Tagger
 
     tagged, problems = Tagger.of(lexicon).tag_line(part, 1, 0)
-    words = [w for w in tagged if w.text[:1].isalnum()]
-    return (
-        bool(words)
-        and not any(d.is_error for d in problems)
-        and all(c.tag in DESCRIBING_TAGS for w in words for c in w.candidates)
-        and any(c.tag != "ADV" for w in words for c in w.candidates)
-    )
+    if any(d.is_error for d in problems):
+        return None
+    return [w for w in tagged if w.text[:1].isalnum()]
 
 
 def _complaint_part(words: str, table: Mapping[str, Any], lexicon: Lexicon) -> str:

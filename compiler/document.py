@@ -14,7 +14,13 @@ from .line_parts import PART_MARKS, by_parts, material_then_comparatives, part_c
 from .lines import iter_lines
 from .on_clause import likeness_dropped, on_material
 from .parser import ParseFailure, describe_expected, parse_line_shape, parsed_item
-from .relative_clause import clause_after, describing_after, participle_after, relative_material
+from .relative_clause import (
+    clause_after,
+    described_colour_after,
+    describing_after,
+    participle_after,
+    relative_material,
+)
 from .removal import removal_line
 from .shape_store import save_shapes
 from .spans import Span
@@ -250,6 +256,7 @@ def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
         or participle_after(words, text, lexicon)
         or (None if removal else describing_after(words, text, lexicon))  # 'no texture' is no describing word
         or clause_after(words, text, lexicon)
+        or described_colour_after(words, text, lexicon)
     )
     if placed is not None:
         return placed[0], [placed[1]]

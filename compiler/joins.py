@@ -539,8 +539,9 @@ class Joiner:
             key = entry.get("patterned_feature")
             if key is None:
                 return
-        if any(of_tag(t, "FEATURE") and t.text == key for t in out[out.index(noun) + 1 :]):
-            return  # 'tiles with grout': said already
+        said = {c.key for t in out[out.index(noun) + 1 :] for c in of_tag(t, "FEATURE")}
+        if said & {entry.get("feature"), entry.get("patterned_feature")}:
+            return  # 'tiles with grout', 'marble tiles with dark grout': said already
         if self._feature_clause(out, noun, key, thing.span):
             note = f"read '{thing.text}' as laid {thing.text}: with {key}"
             diags.append(Diagnostic(thing.span, Severity.NOTE, NOTE_CODE, note))

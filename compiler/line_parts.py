@@ -35,7 +35,7 @@ def by_parts(text: str, line: int, offset: int, read: Reader) -> tuple[ast.Refin
         return None
     complained = any(_complaint(text[a + 1 : b]) for a, b in zip(cuts, cuts[1:]))
     parts = _parts_read(
-        cuts, text, line, offset, read, lambda w: _courtesy(w) or _remark(w) or (complained and _echo(w)), _likeness
+        cuts, text, line, offset, read, lambda w: _courtesy(w) or (complained and _echo(w)), _remark_or_likeness
     )
     if parts is None:
         return None
@@ -166,16 +166,18 @@ def _courtesy(written: str) -> bool:
     return any(said in table[kind] for kind in ("leading", "trailing", "changes_at_end", "alone"))
 
 
-def _remark(written: str) -> bool:
-    """'it looks plasticky', 'keep that pink': a part that remarks on the material as it is
-    (teaching.toml [politeness] remarks), beside the part that changes it."""
-    return _opens_with(written, teaching()["politeness"]["remarks"])
-
-
-def _likeness(written: str) -> bool:
-    """'like an old crackle glaze': a part that likens the change to something (teaching.toml
-    [hedges] likeness); read past when it does not read as a change of its own."""
-    return _opens_with(written, teaching()["hedges"]["likeness"])
+def _remark_or_likeness(written: str) -> bool:
+    """A part that does not read as a change of its own and only remarks on the material as it is
+    ('it looks plasticky', 'keep that pink', 'people will slip': teaching.toml [politeness] remarks)
+    or likens the change to something ('like an old crackle glaze': [hedges] likeness), beside the
+    part that changes it: read past. A part that reads ('it's too shiny' in a document, 'keep the
+    grain but make it darker') is a change and stays one."""
+    said = f" {' '.join(written.lower().split())} "
+    if " but " in said or any(f" {change} " in said for change in teaching()["politeness"]["changes"] if " " in change):
+        return False  # 'leave the grain but make it darker': a change it could not read keeps its error
+    return _opens_with(written, teaching()["politeness"]["remarks"]) or _opens_with(
+        written, teaching()["hedges"]["likeness"]
+    )
 
 
 def _opens_with(written: str, openers: list[str]) -> bool:

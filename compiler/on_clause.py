@@ -10,6 +10,7 @@ from collections.abc import Sequence
 
 from . import ast
 from .diagnostics import Diagnostic, Severity
+from .joins import DESCRIBING
 from .lexicon import Lexicon
 from .parser import parsed_item, parsed_material
 from .phrase_patterns import alternatives
@@ -110,8 +111,7 @@ def _likeness_of_a_colour(
     from .implied import _implied_noun
 
     said = [w for w in before if w.text[:1].isalnum()]
-    describing = ("ADJ", "COLOR", "SHADE", "ADV")
-    if not said or not all(any(c.tag in describing for c in w.candidates) for w in said):
+    if not said or not all(any(c.tag in DESCRIBING for c in w.candidates) for w in said):
         return None
     noun = str(teaching()["completions"]["nouns"][0])
     material = parsed_material([*said, _implied_noun(noun, said[-1])], text, lexicon.caches.shapes)
@@ -131,8 +131,7 @@ def _described_likeness(
     material: the material with the describing words before it ('warm honey-coloured oak')."""
     after = [w for w in words if w.span.start >= end and w.text[:1].isalnum()]
     said = [w for w in before if w.text[:1].isalnum()]
-    describing = ("ADJ", "COLOR", "SHADE", "ADV")
-    if not after or not all(any(c.tag in describing for c in w.candidates) for w in said):
+    if not after or not all(any(c.tag in DESCRIBING for c in w.candidates) for w in said):
         return None
     material = parsed_material([*said, *after], text, lexicon.caches.shapes)
     if material is None:

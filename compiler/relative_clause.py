@@ -96,6 +96,28 @@ def _only(words: Sequence[Tagged], tags: tuple[str, ...]) -> bool:
     return all(w.candidates and all(c.tag in tags for c in w.candidates) for w in words)
 
 
+def described_colour_after(
+    words: Sequence[Tagged], text: str, lexicon: Lexicon
+) -> tuple[ast.Material, Diagnostic] | None:
+    """'walls in a soft chalky green', 'the front door in a glossy oxblood red': a material, 'in'
+    (or 'with') and an article, then describing words ending in a colour, is those words before the
+    material ('soft chalky green walls'), with a note; None for any other line."""
+    said = [w for w in words if w.text[:1].isalnum()]
+    last = max((i for i, w in enumerate(said) if _has(w, "NOUN")), default=-1)
+    tail = said[last + 1 :]
+    if last < 0 or len(tail) < 3 or not _has(tail[0], "WITH") or not _has(tail[1], "ARTICLE"):
+        return None
+    described = tail[2:]
+    if not _has(described[-1], "COLOR") or not any(_has(w, "ADJ") for w in described):
+        return None
+    if not all(any(c.tag in ("ADJ", "COLOR", "SHADE", "ADV") for c in w.candidates) for w in described):
+        return None
+    head = said[: last + 1]
+    article = _article(head)
+    reading = [*article, *_describing(described), *head[len(article) :]]
+    return _read_as(words, reading, text, lexicon, "the words after 'in' describe the material")
+
+
 def describing_after(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
     """'paint with no gloss', 'plastic without shine': a negated describing word said after the
     material (with or without 'with') is its describing word ('matte paint'), with a note; None when

@@ -78,6 +78,7 @@ class Rules:
         self.quotes = frozenset(joined("punctuation", "quotes"))
         self.number_marks = frozenset(joined("punctuation", "number_marks"))
         self.negation_words = frozenset(joined("negation", "words"))
+        self.strict_negation = frozenset(joined("negation", "strict"))  # "nothing shiny", never "nothing else"
         self.negation_prefixes = joined("negation", "prefixes")
         self.softeners = frozenset(joined("negation", "softeners"))
         self.emphatic = tuple(tuple(e.split()) for e in joined("negation", "emphatic"))  # "at all"
@@ -172,7 +173,7 @@ class WordFormation:
             named = self._resembling_colour_name(first, words[1])
             if named is not None:
                 return named
-            if first in rules.negation_words:
+            if first in rules.negation_words and self._negates_here(first, words[1]):
                 return self._negated_words(words)
             if first in rules.emphatic_before and words[1] in rules.negation_words:
                 return self._emphatic_negation(words)
@@ -552,6 +553,14 @@ class WordFormation:
         return None
 
     # ------------------------------------------------------------ two or more words
+
+    def _negates_here(self, first: str, then: str) -> bool:
+        """Whether the negation word negates what follows: a strict one ('nothing': negation
+        `strict`) only a describing word right after it ('nothing shiny'; not 'nothing too shiny',
+        'nothing else')."""
+        if first not in self.rules.strict_negation:
+            return True
+        return bool(self._kept(self._known(then), ("ADJ", "COLOR", "SHADE")))
 
     def _negated_words(self, words: Sequence[str]) -> Reading | None:
         """'not X' (X's opposite, or without X); 'not too X' = the soft adverb + X; 'not at all X',

@@ -22,7 +22,7 @@ RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "FEATURE")
 
 _LISTS = {
     "punctuation": ("trailing", "leading", "quotes", "number_marks"),
-    "negation": ("words", "prefixes", "softeners", "emphatic", "emphatic_before"),
+    "negation": ("words", "prefixes", "softeners", "emphatic", "emphatic_before", "strict"),
     "qualifiers": ("words", "sizes", "ordinary", "liking"),
     "comparison": ("words",),
     "properties": ("endings",),
@@ -39,6 +39,7 @@ def empty_rules() -> dict[str, Any]:
             "softeners": [],
             "emphatic": [],
             "emphatic_before": [],
+            "strict": [],
             "soft_adverb": "",
         },
         "qualifiers": {"words": [], "sizes": [], "ordinary": [], "liking": []},

@@ -80,6 +80,8 @@ def highlight_shown(
     threshold = float(ctx.settings.get("diffuse_threshold", 0.85))
     if key != "roughness" or not isinstance(before, (int, float)) or not isinstance(after, (int, float)):
         return
+    if state.kind in ("conductor", "glass") or state.coat is not None:
+        return  # drawn with a highlight at any roughness (passes/model.py): no threshold to pass
     if after >= before or after < threshold:
         return
     shown = threshold - HIGHLIGHT_MARGIN

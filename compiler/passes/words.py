@@ -474,9 +474,12 @@ def copy_optics(state: MaterialState, ctx: Context, noun_key: str, rule: str, wo
 
 
 def _plating_brightness(state: MaterialState, entry: Entry, rule: str, words: Words) -> None:
-    """Decorative plating (chrome, nickel, gold) is deposited bright and levels the surface: the
-    plated material is as smooth as the plating metal's own finish when that is smoother, unless a
-    describing word of the phrase set the roughness ('satin chrome plated steel')."""
+    """A metal plated or coated with another ('chrome plated steel', 'gold plated brass', 'zinc
+    coated steel': every metal named before a `colour_target = "material"` word) is as smooth as
+    the plating metal's own noun when that is smoother: decorative plating is deposited bright and
+    levels fine roughness (our choice). A roughness a describing word of the phrase set stays
+    ('polished', 'matte'); the base's relief maps stay too (a plating microns thick follows a cast
+    or hammered surface)."""
     plating = entry.get("roughness")
     current = state.params.get("roughness")
     if plating is None or current is None or plating >= current:

@@ -112,7 +112,29 @@ def test_a_remark_beside_a_change_is_read_past(phrase: str, line: str, plain: st
     said, bare = Session(phrase, LEX), Session(phrase, LEX)
     assert same_look(said.refine(line), bare.refine(plain))
     assert said.material != Session(phrase, LEX).material  # it changed
-    assert any("read past" in d.message for d in said.result.diagnostics)
+    remark = next(part.strip() for part in line.split(",") if plain not in part)
+    last = [d for d in said.result.diagnostics if d.span is not None and d.span.line == 2]
+    assert any(f"read past '{remark}'" in d.message for d in last), [d.message for d in last]
+
+
+@pytest.mark.parametrize(
+    "line", ["leave the grain but make it darker, glossier", "keep the grain but make it darker, glossier"]
+)
+def test_a_remark_opener_before_a_change_it_says_is_not_read_past(line: str) -> None:
+    """A part that says a change after a remark ('... but make it darker') is never dropped silently:
+    read or not, the colour it asks for is not lost with a note."""
+    session = Session("light oak flooring", LEX)
+    try:
+        after = session.refine(line)
+    except ValueError:
+        return  # not read: the line's error says so
+    assert after["params"]["base_color"] != Session("light oak flooring", LEX).material["params"]["base_color"]
+
+
+def test_a_noun_beside_a_describing_word_is_no_describing_part() -> None:
+    """'walnut, matte' has no comparative: the describing part is not rewritten as a change."""
+    after = Session("light oak flooring", LEX).refine("walnut, matte")
+    assert after["params"]["roughness"] == pytest.approx(0.8)
 
 
 def test_a_remark_alone_is_no_change() -> None:
@@ -141,6 +163,10 @@ def test_brushing_is_a_feature() -> None:
 
 
 # ---------------------------------------------------------------- plating, names, contradictions
+
+
+def test_a_describing_word_keeps_its_roughness_under_a_plating() -> None:
+    assert material("gold plated matte steel")["params"]["roughness"] == material("matte steel")["params"]["roughness"]
 
 
 def test_plating_is_as_bright_as_the_plating_metal() -> None:
@@ -209,16 +235,25 @@ def test_a_gloss_step_on_a_diffuse_material_shows_a_highlight(phrase: str, line:
     assert again < after["params"]["roughness"]  # and it keeps moving
 
 
+def test_a_metal_has_a_highlight_at_any_roughness_so_it_steps_as_usual() -> None:
+    session = Session("extremely rough copper", LEX)
+    before = session.material["params"]["roughness"]
+    after = session.refine("a tiny bit smoother")["params"]["roughness"]
+    assert before - 0.05 < after < before  # a small step, no jump to the diffuse threshold
+
+
 @pytest.mark.parametrize(
     ("text", "plain"),
     [
-        ("white plaster with a chalky feel", "white plaster with a chalky finish"),
+        ("white plaster with a glossy feel", "white plaster with a glossy finish"),
         ("the deep teal from the brochure", "deep teal paint"),
         ("European oak, rustic grade", "European oak"),
     ],
 )
 def test_trade_and_sales_words_read_as_the_plain_phrase(text: str, plain: str) -> None:
     assert same_look(material(text), material(plain)), text
+    if "feel" in text:  # the feel is the finish: not the plaster as it is
+        assert not same_look(material(text), material("white plaster"))
 
 
 def test_bubbles_in_glass_compile_and_say_they_are_not_drawn() -> None:
@@ -299,6 +334,14 @@ def test_tiles_of_a_patterned_stone_show_their_joints(text: str) -> None:
     assert maps["normal"]["graph"] == "tiles" and maps["base_color"]["graph"] != "tiles"
 
 
+@pytest.mark.parametrize("text", ["marble tiles with dark grout", "slate tiles with white grout"])
+def test_grout_said_takes_the_place_of_the_implied_joints(text: str) -> None:
+    result = compiled(text)
+    name = result.ir["materials"][0]["name"]
+    assert "grout" in name and "joints" not in name, name
+    assert not any("with joints" in d.message for d in result.diagnostics)
+
+
 # ---------------------------------------------------------------- liking, reasons, idioms with their object
 
 
@@ -329,6 +372,9 @@ def test_a_reason_or_an_echo_beside_the_change_is_read_past(phrase: str, line: s
 
 def test_nothing_negates_as_not() -> None:
     assert same_look(material("nothing shiny"), material("not shiny paint"))
+    session = Session("light oak flooring", LEX)
+    with pytest.raises(ValueError):  # 'nothing too shiny' is not read as 'slightly shiny' (shinier)
+        session.refine("nothing too shiny")
 
 
 @pytest.mark.parametrize(
