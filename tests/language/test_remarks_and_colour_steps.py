@@ -419,3 +419,21 @@ def test_natural_white_is_the_surveys_off_white_in_english_and_german() -> None:
 def test_a_comparative_shade_of_a_material_is_the_materials_comparative(text: str, plain: str) -> None:
     assert same_look(material(text), material(plain))
     assert not [d for d in compiled(text).diagnostics if d.is_error]
+
+
+def test_a_coat_said_alone_under_a_material_is_added_to_it() -> None:
+    said, bare = Session("rough sawn pine", LEX), Session("rough sawn pine", LEX)
+    coated = said.refine("a glossy varnish")
+    assert said.lines[-1] == "with a glossy varnish" and coated == bare.refine("with a glossy varnish")
+    assert Session("oak", LEX).refine("walnut")["params"]["base_color"] == material("walnut")["params"]["base_color"]
+
+
+@pytest.mark.parametrize(
+    ("text", "plain"),
+    [
+        ("walls in a flat pale grey", "flat pale grey walls"),
+        ("the front door in a glossy oxblood red", "glossy oxblood red door"),
+    ],
+)
+def test_describing_words_after_in_describe_the_material(text: str, plain: str) -> None:
+    assert same_look(material(text), material(plain))
