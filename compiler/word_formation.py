@@ -105,6 +105,7 @@ class Rules:
         self.sizes = frozenset(joined("qualifiers", "sizes"))  # "wide oak floorboards"
         self.ordinary = frozenset(joined("qualifiers", "ordinary"))  # "plain white"
         self.liking = frozenset(joined("qualifiers", "liking"))  # "a nice warm terracotta"
+        self.imitation = frozenset(joined("qualifiers", "imitation"))  # "faux sheepskin", "recycled plastic"
         self.comparison = frozenset(joined("comparison", "words"))  # "lighter than oak"
         self.manners = frozenset(joined("compound_first", "manners"))
         self.participles = frozenset(joined("compound_first", "participles"))
@@ -167,6 +168,8 @@ class WordFormation:
             return Reading((), 1, f"read '{first}' as the ordinary kind: no effect on the look")
         if first in rules.liking and len(words) > 1:  # "a nice warm terracotta", "a cosy grey throw"
             return Reading((), 1, f"read '{first}' as saying you like it: no effect on the look")
+        if first in rules.imitation and len(words) > 1:  # "faux sheepskin": it looks like sheepskin
+            return Reading((), 1, f"read '{first}' as what it is made of, not how it looks: drawn as what follows")
         if first in rules.sizes and len(words) > 1 and not self._names_feature(words[1]):  # "wide oak floorboards"
             return Reading((), 1, f"read '{first}' as the size of the pieces: not drawn, no effect on the look")
         if len(words) > 1:

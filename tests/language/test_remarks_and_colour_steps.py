@@ -437,3 +437,15 @@ def test_a_coat_said_alone_under_a_material_is_added_to_it() -> None:
 )
 def test_describing_words_after_in_describe_the_material(text: str, plain: str) -> None:
     assert same_look(material(text), material(plain))
+
+
+@pytest.mark.parametrize(
+    ("text", "plain"),
+    [
+        ("faux sheepskin", "sheepskin"),
+        ("recycled plastic", "plastic"),
+        ("not transparent at all", "not transparent paint"),
+    ],
+)
+def test_what_a_thing_is_made_from_and_emphasis_read_as_the_plain_phrase(text: str, plain: str) -> None:
+    assert same_look(material(text), material(plain))
