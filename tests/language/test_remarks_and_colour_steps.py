@@ -449,3 +449,17 @@ def test_describing_words_after_in_describe_the_material(text: str, plain: str) 
 )
 def test_what_a_thing_is_made_from_and_emphasis_read_as_the_plain_phrase(text: str, plain: str) -> None:
     assert same_look(material(text), material(plain))
+
+
+@pytest.mark.parametrize(
+    ("phrase", "line", "plain"),
+    [
+        ("pine planks", "stain them darker", "darker"),
+        ("pine planks", "too yellow, can we calm that down", "less yellow"),
+        ("glossy red plastic", "and tone the red down", "less red"),
+        ("raw concrete wall", "that's too dark for the room", "less dark"),
+    ],
+)
+def test_verbs_of_a_change_and_where_it_is_read_as_the_change(phrase: str, line: str, plain: str) -> None:
+    said, bare = Session(phrase, LEX), Session(phrase, LEX)
+    assert same_look(said.refine(line), bare.refine(plain))
