@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -225,6 +226,9 @@ def _complaint_part(words: str, table: Mapping[str, Any], lexicon: Lexicon) -> s
     """One part of a line read as a complaint (see _complaint_as_change), or as it was."""
     said = " ".join(words.split())
     low = said.lower()
+    named = _named_complaint(low, table, lexicon)
+    if named is not None:
+        return named
     opened = False
     openers = sorted(table["complaint_openers"], key=len, reverse=True)
     while True:  # "hmm, that's way too shiny": openers one after the other
@@ -239,6 +243,29 @@ def _complaint_part(words: str, table: Mapping[str, Any], lexicon: Lexicon) -> s
         if low.startswith(complaint + " "):
             return f"{complaints[complaint]} {said[len(complaint) + 1 :]}"
     return words
+
+
+DESCRIBING_CATEGORIES = frozenset({"adjectives", "colours", "shades"})
+NAMED_COMPLAINT = re.compile(
+    r"^(?:the|that|this) (?P<what>[a-z' -]+?) (?:is|'s|are|looks|seems) (?P<degree>.*?)\s*too (?P<how>\S+)$"
+)
+
+
+def _named_complaint(low: str, table: Mapping[str, Any], lexicon: Lexicon) -> str | None:
+    """'the brushing is too strong', 'the veining is a bit too busy': a complaint about a feature or
+    property the line names is less of it ('less brushing', 'a bit less veining'); None for any
+    other part (what is too much about it — strong, busy, loud — only says that it is too much)."""
+    found = NAMED_COMPLAINT.match(low)
+    if found is None:
+        return None
+    what = found["what"]
+    if not any(e.category in ("properties", "features") for e in lexicon.lookup(tuple(what.split()))):
+        return None
+    if any(e.category in DESCRIBING_CATEGORIES for e in lexicon.lookup((found["how"],))):
+        return None  # 'the colour is too dark': less dark (the openers' reading), not less colour
+    complaint = f"{found['degree']} too".strip()
+    reading = table["complaints"].get(complaint)
+    return None if reading is None else f"{reading} {what}"
 
 
 def _comparative_next(low: str, degrees: Mapping[str, str], lexicon: Lexicon) -> bool:

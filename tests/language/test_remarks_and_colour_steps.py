@@ -463,3 +463,17 @@ def test_what_a_thing_is_made_from_and_emphasis_read_as_the_plain_phrase(text: s
 def test_verbs_of_a_change_and_where_it_is_read_as_the_change(phrase: str, line: str, plain: str) -> None:
     said, bare = Session(phrase, LEX), Session(phrase, LEX)
     assert same_look(said.refine(line), bare.refine(plain))
+
+
+@pytest.mark.parametrize(
+    ("phrase", "line", "plain"),
+    [
+        ("brushed stainless steel", "the brushing is too strong", "less brushing"),
+        ("white Carrara marble", "the veining is a bit too busy", "a bit less veining"),
+        ("oak", "the grain is too strong", "less grain"),
+        ("oak", "the colour is too dark", "less dark"),  # a describing word says what is too much
+    ],
+)
+def test_a_complaint_about_a_named_feature_is_less_of_it(phrase: str, line: str, plain: str) -> None:
+    said, bare = Session(phrase, LEX), Session(phrase, LEX)
+    assert said.refine(line) == bare.refine(plain)
