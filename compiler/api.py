@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -185,31 +185,33 @@ def _complaint_as_change(words: str, table: Mapping[str, Any], lexicon: Lexicon)
         return _complaint_part(words, table, lexicon)
     parts = words.split(",")
     changed = [_complaint_part(part, table, lexicon) for part in parts]
-    if any(_comparative(p, lexicon) for p in changed) and any(_describing_only(p, lexicon) for p in changed):
-        changed = [f"{_change_phrase(lexicon, table)} {p}" if _describing_only(p, lexicon) else p for p in changed]
+    read = [_part_words(part, lexicon) for part in changed]
+    describing = [_describing_only(words) for words in read]
+    if any(_comparative(words) for words in read) and any(describing):  # 'lighter, almost white'
+        phrase = _change_phrase(lexicon, table)
+        changed = [f"{phrase} {part}" if alone else part for part, alone in zip(changed, describing)]
     if changed == parts:
         return words
     return ", ".join(" ".join(part.split()) for part in changed if part.strip())
 
 
-def _describing_only(part: str, lexicon: Lexicon) -> bool:
-    """Whether a part of a change line is describing words alone ('almost white', 'almost
-    polished'): said beside comparatives it is a change of the material, as 'make it almost white'."""
+def _describing_only(words: list[Any] | None) -> bool:
+    """Whether a part of a change line (its words as tagged) is describing words alone ('almost
+    white', 'almost polished'): said beside comparatives it is a change of the material, as 'make
+    it almost white'."""
     from .joins import DESCRIBING
 
-    words = _part_words(part, lexicon)
     return (
-        words is not None
-        and bool(words)
-        and all(c.tag in DESCRIBING for w in words for c in w.candidates)
-        and any(c.tag != "ADV" for w in words for c in w.candidates)
+        bool(words)
+        and all(c.tag in DESCRIBING for w in words or () for c in w.candidates)
+        and any(c.tag != "ADV" for w in words or () for c in w.candidates)
     )
 
 
-def _comparative(part: str, lexicon: Lexicon) -> bool:
-    """Whether a part of a change line opens with a comparative ('lighter', 'a bit darker')."""
-    words = _part_words(part, lexicon)
-    return bool(words) and any(c.tag == "REFINE" for w in words or () for c in w.candidates)
+def _comparative(words: list[Any] | None) -> bool:
+    """Whether a part of a change line (its words as tagged) has a comparative ('lighter', 'a bit
+    darker')."""
+    return any(c.tag == "REFINE" for w in words or () for c in w.candidates)
 
 
 def _part_words(part: str, lexicon: Lexicon) -> list[Any] | None:
@@ -246,16 +248,24 @@ def _complaint_part(words: str, table: Mapping[str, Any], lexicon: Lexicon) -> s
 
 
 DESCRIBING_CATEGORIES = frozenset({"adjectives", "colours", "shades"})
-NAMED_COMPLAINT = re.compile(
-    r"^(?:the|that|this) (?P<what>[a-z' -]+?) (?:is|'s|are|looks|seems) (?P<degree>.*?)\s*too (?P<how>\S+)$"
-)
+
+
+@lru_cache(maxsize=1)
+def _named_complaint_pattern() -> re.Pattern[str]:
+    """'<lead> <feature> <verb> [degree] too <word>', from teaching.toml [politeness]."""
+    from .suggest import teaching
+
+    table = teaching()["politeness"]
+    leads = "|".join(re.escape(w) for w in table["named_complaint_leads"])
+    verbs = "|".join(re.escape(w) for w in table["named_complaint_verbs"])
+    return re.compile(rf"^(?:{leads}) (?P<what>[a-z' -]+?) (?:{verbs}) (?P<degree>.*?)\s*too (?P<how>\S+)$")
 
 
 def _named_complaint(low: str, table: Mapping[str, Any], lexicon: Lexicon) -> str | None:
     """'the brushing is too strong', 'the veining is a bit too busy': a complaint about a feature or
     property the line names is less of it ('less brushing', 'a bit less veining'); None for any
     other part (what is too much about it — strong, busy, loud — only says that it is too much)."""
-    found = NAMED_COMPLAINT.match(low)
+    found = _named_complaint_pattern().match(low)
     if found is None:
         return None
     what = found["what"]

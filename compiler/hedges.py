@@ -20,7 +20,7 @@ from . import ast
 from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
 from .spans import Span
-from .suggest import teaching
+from .suggest import everyday_noun, teaching
 from .tagged import NOTE_CODE, Candidate, Tagged, written_span
 
 __all__ = [
@@ -287,7 +287,7 @@ def first_line_finish(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Mater
     if dropped is None:
         return None
     kept = [w for w in dropped[0] if w.text[:1].isalnum()]
-    paint = str(teaching()["completions"]["nouns"][0])
+    paint = everyday_noun()
     with_noun = [*kept, _implied(paint, Candidate("NOUN", paint, "nouns"), kept[-1], 1)]
     material = parsed_material(with_noun, item.text, lexicon.caches.shapes)
     if material is None:
@@ -302,7 +302,7 @@ def first_line_finish(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Mater
 
 def _noun_for(head: ast.Word, lexicon: Lexicon) -> str:
     """The noun of the feature's (or coat's) example, or paint for a feature of any surface."""
-    paint = str(teaching()["completions"]["nouns"][0])
+    paint = everyday_noun()
     if head.category == "features" and head.key in teaching()["hedges"]["any_surface"]:
         return paint
     entry = lexicon.entry(head.category, head.key)

@@ -24,10 +24,17 @@ from .colour import linear_to_oklab
 from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
 from .spans import Span
-from .suggest import teaching
+from .suggest import everyday_noun, teaching
 from .tagged import NOTE_CODE, Candidate, Tagged, written_span, written_text
 
-__all__ = ["as_change", "first_line_comparison", "implied_material", "material_change", "starts_with_change"]
+__all__ = [
+    "as_change",
+    "first_line_comparison",
+    "implied_material",
+    "implied_noun",
+    "material_change",
+    "starts_with_change",
+]
 
 #: the readings of a noun that a change to another kind of material takes instead ("make it cream"
 #: under red plastic: the colour; "make it satin" under tile: the finish)
@@ -64,7 +71,7 @@ def implied_material(
     offer, key, written = chosen
     last = said[-1]
     at = words.index(last) + 1
-    implied = [*words[:at], _implied_noun(key, last), *words[at:]]
+    implied = [*words[:at], implied_noun(key, last), *words[at:]]
     return implied, _note(said, written, [o for o in taught.suggestions if o != offer])
 
 
@@ -98,7 +105,7 @@ def _as_described(
         else w
         for w in words
     ]
-    with_noun = [*described, _implied_noun(noun, said[-1])]
+    with_noun = [*described, implied_noun(noun, said[-1])]
     try:
         parse_line_shape(with_noun, lexicon.caches.shapes)
     except ParseFailure:
@@ -125,7 +132,7 @@ def _plating_alone(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagg
     if under is None:
         return None
     hint = "name the surface under the plating to choose another, e.g. 'gold plated brass'"
-    return [*words, _implied_noun(under.key, words[-1])], _note(main, under.key, [], hint=hint)
+    return [*words, implied_noun(under.key, words[-1])], _note(main, under.key, [], hint=hint)
 
 
 def _apply_to_anything(said: Sequence[Tagged], lexicon: Lexicon) -> bool:
@@ -196,7 +203,7 @@ def _added_noun(offer: str, said: Sequence[Tagged], tail: Sequence[Tagged], lexi
     return (nouns[0].key, added) if nouns and added else None
 
 
-def _implied_noun(noun: str, last: Tagged) -> Tagged:
+def implied_noun(noun: str, last: Tagged) -> Tagged:
     """The noun as a word inside the last written word's span (the parser keys words by start,
     and no written word starts there), implied by it."""
     s = last.span
@@ -302,8 +309,8 @@ def _colour_change(
     from .parser import parsed_material
 
     as_colour = [Tagged(w.text, w.span, colours) if w is said else w for w in words]
-    noun = str(teaching()["completions"]["nouns"][0])
-    with_noun = [*as_colour, _implied_noun(noun, as_colour[-1])]
+    noun = everyday_noun()
+    with_noun = [*as_colour, implied_noun(noun, as_colour[-1])]
     material = parsed_material(with_noun, text, lexicon.caches.shapes)
     return as_change(material, with_noun)[0] if material is not None else None
 
@@ -313,7 +320,7 @@ def _compared_list(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material
     names the colour first (the colour is the material's, the others then move it)."""
     from .parser import parsed_material
 
-    noun = str(teaching()["completions"]["nouns"][0])
+    noun = everyday_noun()
     last = item.items[-1]
     implied = Tagged(noun, last.span, (Candidate("NOUN", noun, "nouns"),), implied_by=item.span)
     bare = parsed_material([implied], item.text, lexicon.caches.shapes)
@@ -330,7 +337,7 @@ def _compared_list(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material
 def _closer_alone(item: ast.Refinement, colour: ast.Colour) -> tuple[ast.Material, Diagnostic]:
     """'more like a burnt orange' first: nothing to come closer from, so the colour itself, on the
     everyday noun colours go on."""
-    noun = str(teaching()["completions"]["nouns"][0])
+    noun = everyday_noun()
     group = ast.Group("colour", (), (colour,), (), colour.span)
     implied = ast.Word(noun, noun, "nouns", item.span)
     material = ast.Material(None, (group,), (implied,), None, item.span, item.text)
@@ -345,13 +352,10 @@ def _colour_said_plainly(words: list[Tagged], lexicon: Lexicon) -> list[Tagged]:
     word after it left out ('a lighter navy shade', 'a warmer grey tone': teaching.toml
     [politeness] colour_heads), as the line's own reading did, so a noun can follow the colour."""
     from .hedges import colour_of
+    from .politeness import without_colour_head
 
     rewritten = colour_of(words, lexicon)
-    words = rewritten[0] if rewritten is not None else words
-    heads = teaching()["politeness"]["colour_heads"]
-    if len(words) > 1 and words[-1].text.lower() in heads and any(c.tag == "COLOR" for c in words[-2].candidates):
-        return words[:-1]
-    return words
+    return without_colour_head(rewritten[0] if rewritten is not None else words, teaching()["politeness"])
 
 
 def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
@@ -380,8 +384,8 @@ def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.M
     errors = [d for d in diags if d.is_error and (d.span is None or d.span.start not in dropped)]
     if errors or not words:  # a note ('darker than navy' read as 'darker navy') is fine
         return None
-    noun = str(teaching()["completions"]["nouns"][0])
-    with_noun = [*words, _implied_noun(noun, words[-1])]
+    noun = everyday_noun()
+    with_noun = [*words, implied_noun(noun, words[-1])]
     material = parsed_material(with_noun, item.text, lexicon.caches.shapes)
     if material is None:
         return None

@@ -248,9 +248,9 @@ class Joiner:
 
     def _painted_artifact(self, word: Tagged, diags: list[Diagnostic]) -> Tagged:
         """The thing read as the everyday noun colours go on (paint), its E001 gone, with a note."""
-        from .suggest import teaching
+        from .suggest import everyday_noun
 
-        noun = str(teaching()["completions"]["nouns"][0])
+        noun = everyday_noun()
         diags[:] = [d for d in diags if not (d.span == word.span and d.code == "E001")]
         name = self._artifact_name(word.text.lower())
         note = (
@@ -1072,18 +1072,12 @@ def _ends_noun(tagged: list[Tagged], k: int, out: list[Tagged]) -> bool:
 
 
 def _a_place(words: list[Tagged]) -> bool:
-    """Whether the words say only where the material is used ('in the hallway': a preposition, an
-    article and a place of teaching.toml [politeness]), which cnlmc.politeness reads past."""
+    """Whether the words say only where the material is used ('in the hallway'), which
+    cnlmc.politeness reads past."""
+    from .politeness import is_place
     from .suggest import teaching
 
-    table = teaching()["politeness"]
-    said = [w.text.lower() for w in words if w.text[:1].isalnum()]
-    return (
-        len(said) >= 3
-        and said[0] in table["place_prepositions"]
-        and said[1] in table["place_articles"]
-        and " ".join(said[2:]) in table["places"]
-    )
+    return is_place([w.text.lower() for w in words if w.text[:1].isalnum()], teaching()["politeness"])
 
 
 def _in_colour_length(rest: list[Tagged]) -> int:

@@ -172,12 +172,12 @@ def _remark_or_likeness(written: str) -> bool:
     or likens the change to something ('like an old crackle glaze': [hedges] likeness), beside the
     part that changes it: read past. A part that reads ('it's too shiny' in a document, 'keep the
     grain but make it darker') is a change and stays one."""
+    table = teaching()["politeness"]
     said = f" {' '.join(written.lower().split())} "
-    if " but " in said or any(f" {change} " in said for change in teaching()["politeness"]["changes"] if " " in change):
+    joined = (*table["remark_breaks"], *(change for change in table["changes"] if " " in change))
+    if any(f" {word} " in said for word in joined):
         return False  # 'leave the grain but make it darker': a change it could not read keeps its error
-    return _opens_with(written, teaching()["politeness"]["remarks"]) or _opens_with(
-        written, teaching()["hedges"]["likeness"]
-    )
+    return _opens_with(written, table["remarks"]) or _opens_with(written, teaching()["hedges"]["likeness"])
 
 
 def _opens_with(written: str, openers: list[str]) -> bool:

@@ -15,7 +15,7 @@ from .lexicon import Lexicon
 from .parser import parsed_item, parsed_material
 from .phrase_patterns import alternatives
 from .spans import Span
-from .suggest import teaching
+from .suggest import everyday_noun, teaching
 from .tagged import NOTE_CODE, Candidate, Tagged, written_span, written_text
 
 __all__ = ["implied_with", "likeness_dropped", "on_material"]
@@ -108,13 +108,13 @@ def _likeness_of_a_colour(
     """'warm greige, like a mushroom': describing words alone, then a likeness that names no
     material: the describing words on the everyday noun colours go on (paint, as for describing
     words alone: cnlmc.implied), the likeness read past; None when they do not parse so."""
-    from .implied import _implied_noun
+    from .implied import implied_noun
 
     said = [w for w in before if w.text[:1].isalnum()]
     if not said or not all(any(c.tag in DESCRIBING for c in w.candidates) for w in said):
         return None
-    noun = str(teaching()["completions"]["nouns"][0])
-    material = parsed_material([*said, _implied_noun(noun, said[-1])], text, lexicon.caches.shapes)
+    noun = everyday_noun()
+    material = parsed_material([*said, implied_noun(noun, said[-1])], text, lexicon.caches.shapes)
     if material is None:
         return None
     note = (

@@ -11,7 +11,7 @@ beside them (`marks`: "Hi! brushed steel"); a word inside the phrase is never dr
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 from .diagnostics import Diagnostic, Severity
@@ -19,7 +19,7 @@ from .spans import Span
 from .suggest import teaching
 from .tagged import NOTE_CODE, Tagged
 
-__all__ = ["without_politeness"]
+__all__ = ["is_place", "without_colour_head", "without_politeness"]
 
 
 def without_politeness(
@@ -103,32 +103,49 @@ def _without_last_words(
     soft putty colour'), then where the material is used ('tiles in the hallway'); the runs read
     past, and the place's span (all its errors go with it)."""
     runs: list[list[Tagged]] = []
-    if len(kept) > 1 and kept[-1].text.lower() in table["colour_heads"] and _is_colour(kept[-2]):
-        runs.append(kept[-1:])
-        kept = kept[:-1]
+    headless = without_colour_head(kept, table)
+    if len(headless) < len(kept):
+        runs.append(kept[len(headless) :])
+        kept = headless
     place = _place_at_end(kept, table)
     if not place:
         return kept, runs, []
     return kept[:-place], [*runs, kept[-place:]], [kept[-place].span.to(kept[-1].span)]
 
 
+def without_colour_head(words: list[Tagged], table: Mapping[str, Any]) -> list[Tagged]:
+    """The words without a colour's head word after a colour ('a soft putty colour', 'a lighter
+    navy shade': teaching.toml [politeness] colour_heads)."""
+    if len(words) > 1 and words[-1].text.lower() in table["colour_heads"] and _is_colour(words[-2]):
+        return words[:-1]
+    return words
+
+
 def _is_colour(word: Tagged) -> bool:
     return any(c.tag == "COLOR" for c in word.candidates)
 
 
-def _place_at_end(kept: list[Tagged], table: dict[str, list[str]]) -> int:
+def _place_at_end(kept: list[Tagged], table: Mapping[str, Any]) -> int:
     """How many words at the end say where the material is used ('in the hallway', 'for our
     kitchen'): a preposition, an optional article and a listed place; 0 when none, or when
     nothing would be left before them."""
     lowered = [w.text.lower() for w in kept]
-    places = set(table["places"])
     for size in (2, 1):
-        if len(lowered) < size + 2 or " ".join(lowered[-size:]) not in places:
-            continue
         at = len(lowered) - size - 1  # the article is needed: 'paint in flat' is not a place
-        if lowered[at] in table["place_articles"] and at >= 2 and lowered[at - 1] in table["place_prepositions"]:
+        if at >= 2 and is_place(lowered[at - 1 :], table):
             return len(lowered) - at + 1
     return 0
+
+
+def is_place(said: Sequence[str], table: Mapping[str, Any]) -> bool:
+    """Whether the (lower-case) words are only where the material is used: a preposition, an
+    article and a listed place ('in the hallway', 'under the sink': teaching.toml [politeness])."""
+    return (
+        len(said) >= 3
+        and said[0] in table["place_prepositions"]
+        and said[1] in table["place_articles"]
+        and " ".join(said[2:]) in table["places"]
+    )
 
 
 def _idiom(

@@ -11,6 +11,7 @@ from collections.abc import Sequence
 
 from . import ast
 from .diagnostics import Diagnostic, Severity
+from .joins import DESCRIBING
 from .lexicon import Lexicon
 from .on_clause import implied_with
 from .parser import parsed_material
@@ -110,7 +111,7 @@ def described_colour_after(
     described = tail[2:]
     if not _has(described[-1], "COLOR") or not any(_has(w, "ADJ") for w in described):
         return None
-    if not all(any(c.tag in ("ADJ", "COLOR", "SHADE", "ADV") for c in w.candidates) for w in described):
+    if not all(any(c.tag in DESCRIBING for c in w.candidates) for w in described):
         return None
     head = said[: last + 1]
     article = _article(head)

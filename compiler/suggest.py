@@ -35,6 +35,12 @@ def teaching() -> Mapping[str, Any]:
     return MappingProxyType(tomllib.loads(text))
 
 
+def everyday_noun() -> str:
+    """The everyday noun colours and finishes go on when no material is named: the first of
+    teaching.toml [completions] nouns (paint)."""
+    return str(teaching()["completions"]["nouns"][0])
+
+
 def allowed_edits(word: str) -> int:
     """How many edits a typo of `word` may have (teaching.toml's typo_edits, by its length)."""
     edits = 0

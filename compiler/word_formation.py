@@ -164,12 +164,14 @@ class WordFormation:
             if compound:
                 note = f"read '{first} {words[1]}' as '{same}-{words[1]}' ('{first}' means '{same}' here)"
                 return Reading((Part(0, 1, 0, None, compound),), 2, note)
-        if first in rules.ordinary and len(words) > 1:  # "plain white", "standard oak"
-            return Reading((), 1, f"read '{first}' as the ordinary kind: no effect on the look")
-        if first in rules.liking and len(words) > 1:  # "a nice warm terracotta", "a cosy grey throw"
-            return Reading((), 1, f"read '{first}' as saying you like it: no effect on the look")
-        if first in rules.imitation and len(words) > 1:  # "faux sheepskin": it looks like sheepskin
-            return Reading((), 1, f"read '{first}' as what it is made of, not how it looks: drawn as what follows")
+        passed = (  # "plain white", "a nice warm terracotta", "faux sheepskin": read past, said why
+            (rules.ordinary, "the ordinary kind: no effect on the look"),
+            (rules.liking, "saying you like it: no effect on the look"),
+            (rules.imitation, "what it is made of, not how it looks: drawn as what follows"),
+        )
+        for kind, why in passed:
+            if first in kind and len(words) > 1:
+                return Reading((), 1, f"read '{first}' as {why}")
         if first in rules.sizes and len(words) > 1 and not self._names_feature(words[1]):  # "wide oak floorboards"
             return Reading((), 1, f"read '{first}' as the size of the pieces: not drawn, no effect on the look")
         if len(words) > 1:

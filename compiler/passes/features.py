@@ -124,7 +124,7 @@ def _colour_flakes(state: MaterialState, ctx: Context, colour: ast.Colour) -> bo
     metal = ctx.lexicon.entry("nouns", colour.base.key) if colour.base is not None else None
     if metal is not None and metal.get("model") == "conductor" and not colour.shades:
         rgb = [b * f for b, f in zip(metal.get("base_color"), metal.get("f0"))]
-        why = f"nouns.{metal.key}: the flakes mirror as {colour.base.text if colour.base else metal.key} does (F0)"
+        why = f"nouns.{metal.key}: the flakes mirror as {metal.key} does (F0)"
     else:
         rgb = resolve_colour(colour, ctx)
         why = f"colours: {colour_text(colour)} flakes"
