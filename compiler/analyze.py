@@ -7,7 +7,7 @@ from typing import Any
 
 from . import ast
 from .default_name import name_words
-from .diagnostics import Diagnostic, warning
+from .diagnostics import Diagnostic, error, warning
 from .document import iter_items
 from .ir import JSONDict, document_ir, material_ir
 from .lexicon import Lexicon
@@ -118,8 +118,19 @@ def orphan_line(item: ast.Item, lexicon: Lexicon, diags: list[Diagnostic]) -> as
         if found is not None:
             diags.append(found[1])
             return found[0]
-    diags.append(orphan_refinement(item))
+    keeps_only = isinstance(item, ast.Refinement) and item.keeps_only  # 'thanks' alone
+    diags.append(nothing_to_keep(item) if keeps_only else orphan_refinement(item))
     return None
+
+
+def nothing_to_keep(item: ast.Item) -> Diagnostic:
+    """'thanks', 'keep the grain' with no material above: nothing to keep, and no material named."""
+    return error(
+        item.span,
+        "E003",
+        "nothing to keep: the line names no material and there is none above it",
+        ("write the material first, e.g. 'white varnished oak', then 'keep the grain'",),
+    )
 
 
 def orphan_refinement(item: ast.Item) -> Diagnostic:

@@ -212,6 +212,12 @@ class Refinement:
         taken off it) rather than refining its values."""
         return self.material is not None or bool(self.removed)
 
+    @property
+    def keeps_only(self) -> bool:
+        """The line changes nothing: it keeps the material as it is ('keep the grain', 'perfect':
+        cnlmc.kept)."""
+        return not (self.items or self.coat or self.features or self.groups or self.material or self.removed)
+
 
 Item = Material | Refinement
 

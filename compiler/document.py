@@ -90,6 +90,23 @@ def _removal(text: str, number: int, offset: int, tagger: Tagger, diags: list[Di
     return refinement
 
 
+def _kept(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Refinement | None:
+    """The line as one that keeps the material as it is ('keep the grain', 'perfect': cnlmc.kept),
+    a change line with no change, with its note; None for any other line."""
+    from .kept import kept_line
+
+    kept = kept_line(text, number, offset, tagger)
+    if kept is None:
+        return None
+    diags.append(kept[1])
+    return kept[0]
+
+
+def _said_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Refinement | None:
+    """The line as a removal or as one that keeps the material; None for any other line."""
+    return _removal(text, number, offset, tagger, diags) or _kept(text, number, offset, tagger, diags)
+
+
 def _comparative_reading(
     text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]
 ) -> ast.Refinement | None:
@@ -120,7 +137,7 @@ def _parsed_line(
     text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic], removals: bool = True
 ) -> ast.Item | None:
     words, tag_diags = tagger.tag_line(text, number, offset)
-    if tag_diags and removals and (removal := _removal(text, number, offset, tagger, diags)) is not None:
+    if tag_diags and removals and (removal := _said_line(text, number, offset, tagger, diags)) is not None:
         return removal
     mark = len(diags)
     if tag_diags:  # only unknown words and characters may lack candidates
@@ -145,7 +162,7 @@ def _parsed_line(
     except ParseFailure as failure:
         if removals and (comparative := _comparative_reading(text, number, offset, tagger, diags)) is not None:
             return comparative
-        if removals and (removal := _removal(text, number, offset, tagger, diags)) is not None:
+        if removals and (removal := _said_line(text, number, offset, tagger, diags)) is not None:
             return removal
         return _failed_line(failure, words, text, tagger.lexicon, diags)
     node = shape.build(words, picks, text)
@@ -173,7 +190,7 @@ def _failed_line(
     polite = _politely(words, lexicon)  # 'more of a teal', 'ok, a bit darker': known words, a rewrite
     if polite is not None and (node := _parsed(polite[1], text, lexicon)) is not None:
         diags.extend(polite[0])
-        return node
+        return _as_change(node, polite[1], text, lexicon, diags)
     bare = _without_article(words)  # 'a darker, moodier green': a line of comparatives
     if bare is not None and isinstance(node := _parsed(bare, text, lexicon), ast.Refinement):
         return node
@@ -215,6 +232,18 @@ def _failed_line(
             said = polite_said
     diags.append(said)
     return implied
+
+
+def _as_change(node: ast.Item, words: list[Tagged], text: str, lexicon: Lexicon, diags: list[Diagnostic]) -> ast.Item:
+    """A material read past its change phrase ('more of a cream' under marble) as the change of the
+    material above it names (cnlmc.implied.material_change), with its note; any other node as it is."""
+    from .implied import material_change
+
+    change = material_change(node, words, text, lexicon) if isinstance(node, ast.Material) else None
+    if change is None:
+        return node
+    diags.append(change[1])
+    return change[0]
 
 
 def _implied_reading(

@@ -14,6 +14,7 @@ import os
 import re
 import tomllib
 from collections.abc import Iterable
+from functools import lru_cache
 from importlib import resources
 from importlib.resources.abc import Traversable
 from pathlib import Path
@@ -218,6 +219,17 @@ class Builder:
 # ---------------------------------------------------------------- the xkcd colour survey
 
 SURVEY = "xkcd colour survey (Munroe 2010, https://xkcd.com/color/rgb/, CC0 1.0)"
+
+
+@lru_cache(maxsize=1)
+def _survey_names() -> dict[str, str]:
+    names = tomllib.loads(colour_names_file().read_text("utf-8"))
+    return {name: str(row["hex"]) for name, row in names.items() if row.get("source") == "xkcd"}
+
+
+def survey_hex(name: str) -> str | None:
+    """The colour survey's hex code for a name ('rust': #a83c09), or None."""
+    return _survey_names().get(name)
 
 
 def colour_names_file() -> Traversable:

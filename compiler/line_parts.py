@@ -40,6 +40,11 @@ def by_parts(text: str, line: int, offset: int, read: Reader) -> tuple[ast.Refin
     if parts is None:
         return None
     nodes, notes = parts
+    turned = [_part_around(text, n.span.start - offset) for n in nodes if _no_change(n, text, offset)]
+    if turned and len(turned) < len(nodes):  # 'lighter, not jet black', 'keep that pink, ...': read past
+        nodes = [n for n in nodes if _part_around(text, n.span.start - offset) not in turned]
+        notes = [d for d in notes if d.span is None or not any(a <= d.span.start - offset < b for a, b in turned)]
+        notes += [_read_past(text[a:b], a, line, offset) for a, b in turned]
     found = [n for n in nodes if isinstance(n, ast.Refinement) and not n.removed]
     if len(found) != len(nodes):
         return None
@@ -147,6 +152,30 @@ def _parts_read(
         nodes.append(node)
         notes += said
     return nodes, notes
+
+
+def _no_change(node: ast.Item, text: str, offset: int) -> bool:
+    """A part that keeps the material ('keep that pink': cnlmc.kept) or turns a colour down."""
+    return (isinstance(node, ast.Refinement) and node.keeps_only) or _turned_down(node, text, offset)
+
+
+def _turned_down(node: ast.Item, text: str, offset: int) -> bool:
+    """A part that says only which colour it should not be ('not jet black', read as taking the
+    colour off): beside a part that says what it should be, it is read past."""
+    if not isinstance(node, ast.Refinement) or not node.removed or node.items or node.material is not None:
+        return False
+    if not all(w.category == "colours" for w in node.removed):
+        return False
+    start = _part_around(text, node.span.start - offset)[0]
+    before = text[start : node.span.start - offset]
+    return " ".join(before.lower().split()) in teaching()["removal"]["negations"]
+
+
+def _part_around(text: str, at: int) -> tuple[int, int]:
+    """Where the part (between part marks) that holds column `at` (0-based) starts and ends."""
+    start = max(text.rfind(mark, 0, at) for mark in PART_MARKS) + 1
+    ends = [i for i in (text.find(mark, at) for mark in PART_MARKS) if i >= 0]
+    return start, min(ends, default=len(text))
 
 
 def _comparatives_only(node: ast.Item) -> bool:

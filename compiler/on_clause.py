@@ -131,8 +131,12 @@ def _described_likeness(
     material: the material with the describing words before it ('warm honey-coloured oak')."""
     after = [w for w in words if w.span.start >= end and w.text[:1].isalnum()]
     said = [w for w in before if w.text[:1].isalnum()]
-    if not after or not all(any(c.tag in DESCRIBING for c in w.candidates) for w in said):
-        return None
+    if (
+        not after
+        or any(w.unknown for w in after)
+        or not all(any(c.tag in DESCRIBING for c in w.candidates) for w in said)
+    ):
+        return None  # an unknown word in the likeness ('like a holly leaf'): a thing, not the material
     material = parsed_material([*said, *after], text, lexicon.caches.shapes)
     if material is None:
         return None

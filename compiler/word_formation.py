@@ -106,6 +106,8 @@ class Rules:
         self.ordinary = frozenset(joined("qualifiers", "ordinary"))  # "plain white"
         self.liking = frozenset(joined("qualifiers", "liking"))  # "a nice warm terracotta"
         self.imitation = frozenset(joined("qualifiers", "imitation"))  # "faux sheepskin", "recycled plastic"
+        self.shapes = frozenset(joined("qualifiers", "shapes"))  # "hexagon floor tiles"
+        self.purity = frozenset(joined("qualifiers", "purity"))  # "a clean bright white"
         self.comparison = frozenset(joined("comparison", "words"))  # "lighter than oak"
         self.manners = frozenset(joined("compound_first", "manners"))
         self.participles = frozenset(joined("compound_first", "participles"))
@@ -166,6 +168,8 @@ class WordFormation:
                 return Reading((Part(0, 1, 0, None, compound),), 2, note)
         passed = (  # "plain white", "a nice warm terracotta", "faux sheepskin": read past, said why
             (rules.ordinary, "the ordinary kind: no effect on the look"),
+            (rules.purity, "saying the colour is clean and unmixed: the colour itself"),
+            (rules.shapes, "the shape of the pieces: not drawn (the tiles graph draws a rectangular grid)"),
             (rules.liking, "saying you like it: no effect on the look"),
             (rules.imitation, "what it is made of, not how it looks: drawn as what follows"),
         )

@@ -23,7 +23,7 @@ RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "FEATURE")
 _LISTS = {
     "punctuation": ("trailing", "leading", "quotes", "number_marks"),
     "negation": ("words", "prefixes", "softeners", "emphatic", "emphatic_before", "strict"),
-    "qualifiers": ("words", "sizes", "ordinary", "liking", "imitation"),
+    "qualifiers": ("words", "sizes", "shapes", "ordinary", "purity", "liking", "imitation"),
     "comparison": ("words",),
     "properties": ("endings",),
 }
@@ -42,7 +42,15 @@ def empty_rules() -> dict[str, Any]:
             "strict": [],
             "soft_adverb": "",
         },
-        "qualifiers": {"words": [], "sizes": [], "ordinary": [], "liking": [], "imitation": []},
+        "qualifiers": {
+            "words": [],
+            "sizes": [],
+            "shapes": [],
+            "ordinary": [],
+            "purity": [],
+            "liking": [],
+            "imitation": [],
+        },
         "comparison": {"words": []},
         "properties": {"endings": []},
         "compound_first": {

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
+from dataclasses import replace
 from functools import lru_cache
 from types import MappingProxyType
 from typing import Any
@@ -45,8 +46,38 @@ def colour_compounds(groups: Sequence[ast.Group], lexicon: Lexicon, diags: list[
             second = group.colours[0]
             diags.append(_note(first, second))
             continue
+        if out and _is_hedged_pair(out[-1], group):  # 'blackish green': green, somewhat toward black
+            diags.append(_hedged_note(out[-1], group))
+            out[-1:] = [group, _as_share(out[-1])]
+            continue
         out.append(group)
     return out
+
+
+def _is_hedged_pair(first: ast.Group, second: ast.Group) -> bool:
+    """A hedged colour ('blackish', 'almost black', 'slightly grey') right before a plain colour:
+    the second colour moved toward the first by the hedge's share (applied after it, as 'slightly
+    red' moves the colour there), not a second colour replacing the first."""
+    if not (_single_colour(first) and _single_colour(second)) or second.adverbs or first.colours[0].shades:
+        return False
+    return second.span.start - first.span.end <= 1 and (bool(first.adverbs) or _hedged_word(first.colours[0]))
+
+
+def _hedged_word(c: ast.Colour) -> bool:
+    """A colour word that hedges itself: an X-ish ('blackish') or 'almost X' ('almost black')."""
+    table = rules()["hedged"]
+    assert c.base is not None  # _single_colour
+    written = c.words[-1].text.lower()
+    return written.endswith(tuple(table["suffixes"])) or c.base.key.startswith(tuple(f"{w} " for w in table["leads"]))
+
+
+def _as_share(group: ast.Group) -> ast.Group:
+    """The hedged colour at the hedge's share ('blackish green', 'nearly black navy': the navy leans
+    toward black and stays a navy), whatever its own degree."""
+    adverb = ast.Word(
+        group.colours[0].words[0].text, rules()["hedged"]["adverb"], "adverbs", group.colours[0].words[0].span
+    )
+    return replace(group, adverbs=(adverb,))
 
 
 def _is_compound(first: ast.Group, second: ast.Group, lexicon: Lexicon) -> bool:
@@ -85,6 +116,17 @@ def _agrees(particular: Sequence[float], basic: Sequence[float], basic_key: str)
         return False
     difference = abs(math.degrees(math.atan2(b, a) - math.atan2(b2, a2))) % 360.0
     return min(difference, 360.0 - difference) <= float(rules()["hue"]["max_degrees"])
+
+
+def _hedged_note(first: ast.Group, second: ast.Group) -> Diagnostic:
+    said = " ".join(w.text for w in (*first.adverbs, *first.colours[0].words))
+    toward, colour = first.colours[0].words[-1].key, " ".join(w.text for w in second.colours[0].words)
+    return Diagnostic(
+        first.span.to(second.span),
+        Severity.NOTE,
+        NOTE_CODE,
+        f"read '{said} {colour}' as '{colour}' moved toward {toward}, not two colours",
+    )
 
 
 def _note(first: ast.Colour, second: ast.Colour) -> Diagnostic:

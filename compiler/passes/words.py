@@ -115,7 +115,8 @@ def apply_colour(state: MaterialState, ctx: Context, c: ast.Colour, adverbs: Wor
     if target == "base" and words:
         rgb = keep_pattern_visible(state, ctx, rgb, words, noun_of(state).key)
     _warn_opposed_shades(state, ctx, c)
-    _warn_second_colour(state, param if target == "base" else "coat.color", c)
+    if weight >= 1.0:  # a share of the way ('slightly red', 'blackish') moves the colour, replaces none
+        _warn_second_colour(state, param if target == "base" else "coat.color", c)
     holder[param] = rgb
     text = " ".join([w.text for w in words])  # colour_text(c)
     state.note(param if target == "base" else "coat.color", rgb, f"colours: {text}", (*adverbs, *words))
@@ -164,6 +165,8 @@ def apply_adjective(
     state: MaterialState, ctx: Context, adjective: Entry, group: ast.Group, weight: float, target: str
 ) -> None:
     word = group.adjectives[0]
+    if not group.colours and target == "base" and _survey_colour_instead(state, adjective, word):
+        return
     if not _applies(state, adjective, word, target):
         for c in group.colours:  # "pale honed maple": the colour still holds, on the base
             apply_colour(state, ctx, c, group.adverbs, "base", weight)
@@ -245,6 +248,28 @@ def _effect_list(adjective: Entry, noun: Entry) -> tuple[str, list[Effect]]:
 
 
 COAT_CLASS = "plastic"  # a coat is a clear polymer film (coats.toml: PMMA lacquer, polyurethane varnish)
+
+
+def _survey_colour_instead(state: MaterialState, adjective: Entry, word: ast.Word) -> bool:
+    """'rust linen', 'rust corduroy': a describing word of one class of material ('rust' = rusty:
+    metal only) that the colour survey also names a colour is that colour on any other material,
+    with a note, not ignored (W102); False where the word applies or the survey has no such colour."""
+    from ..colour import hex_to_linear
+    from ..lexicon_load import survey_hex
+
+    classes = adjective.data.get("applies_to")
+    noun = noun_of(state)
+    if not classes or noun.data.get("class") in classes or noun.key in classes:
+        return False
+    hex_code = survey_hex(word.text.lower())
+    if hex_code is None:
+        return False
+    rgb = hex_to_linear(hex_code)
+    state.params["base_color"] = rgb
+    state.note("base_color", rgb, f"colours: {word.text} (survey)", (word,))
+    message = f"read '{word.text}' as the colour {word.text.lower()} ({hex_code}): '{adjective.key}' does not apply to {noun.key}"
+    state.diagnostics.append(Diagnostic(word.span, Severity.NOTE, "N101", message, ()))
+    return True
 
 
 def _applies(state: MaterialState, adjective: Entry, word: ast.Word, target: str = "base") -> bool:

@@ -6,45 +6,18 @@ after a material, and hedges ('not quite white')."""
 
 from __future__ import annotations
 
-import math
-
 import pytest
 
 from cnlmc.api import Session, compile_source, lexicon_for
-from cnlmc.colour import linear_to_oklab
-
-LEX = lexicon_for()
-
-
-def compiled(text: str):
-    return compile_source(text + "\n", "t.cnl", LEX)
-
-
-def material(text: str) -> dict:
-    result = compiled(text)
-    assert result.ir["materials"], [d.message for d in result.diagnostics]
-    return result.ir["materials"][-1]
+from tests.language.meaning import LEX, compiled, lch, material, refined, same_look
 
 
 def codes(text: str) -> list[str]:
     return [d.code for d in compiled(text).diagnostics if d.severity.value in ("error", "warning")]
 
 
-def lch(rgb: list[float]) -> tuple[float, float, float]:
-    L, a, b = linear_to_oklab(rgb)
-    return L, math.hypot(a, b), math.degrees(math.atan2(b, a)) % 360
-
-
 def colour_after(phrase: str, *lines: str) -> list[float]:
-    session = Session(phrase, LEX)
-    for line in lines:
-        session.refine(line)
-    return session.material["params"]["base_color"]
-
-
-def same_look(a: dict, b: dict) -> bool:
-    keys = ("base_color", "roughness", "anisotropy")
-    return a["model"] == b["model"] and all(a["params"].get(k) == b["params"].get(k) for k in keys)
+    return refined(phrase, *lines).material["params"]["base_color"]
 
 
 # ---------------------------------------------------------------- colour steps

@@ -1,0 +1,99 @@
+"""A change line that keeps the material as it is (issue #14): 'keep the grain', 'keep the same
+grey', 'leave the colour as it is though', or an approval alone ('perfect', "that's fine"). Said
+in a session such a line changes nothing: it is read as a change line with no change, and a note
+says so (stdlib/data/teaching.toml [keeping]). A line that asks for something while it keeps
+('keep it matte', 'keep the grain but make it darker') is not one: it reads as before.
+
+Asked only of a line with an unknown word or one that does not parse (cnlmc.document).
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+from typing import TYPE_CHECKING, Any
+
+from . import ast
+from .diagnostics import Diagnostic, Severity
+from .phrase_patterns import alternatives
+from .spans import Span
+from .suggest import teaching
+from .tagged import NOTE_CODE, Tagged
+
+if TYPE_CHECKING:
+    from .tagger import Tagger
+
+__all__ = ["kept_line"]
+
+#: what a kept line may name after its keep phrase, by grammar terminal
+NAMED = ("ADJ", "FEATURE", "COAT", "COLOR", "PROP", "NOUN", "SHADE", "ARTICLE", "AND", "COMMA")
+#: keep phrases that name nothing themselves: a pronoun after them is the material ('keep it matte')
+BARE = ("keep", "leave")
+#: the marks an approval may carry ('perfect!', 'ok, thanks.')
+MARKS = re.compile(r"[,.!?;:…]+")
+
+
+@lru_cache(maxsize=1)
+def _rules() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str], frozenset[str]]:
+    """The openers, the keep phrases and the trailing words as patterns, and the approvals."""
+    table: dict[str, Any] = teaching()["keeping"]
+    opener = re.compile(rf"(?:{alternatives(teaching()['removal']['openers'])})\s*[,!.:;]?\s+")
+    keep = re.compile(rf"(?:{alternatives(table['leading'])})(?=\s|$)")
+    trailing = re.compile(rf"(?:[\s,.!?]+(?:{alternatives(table['trailing'])}))*[\s,.!?]*$")
+    return opener, keep, trailing, frozenset(" ".join(a.split()) for a in table["approvals"])
+
+
+def kept_line(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast.Refinement, Diagnostic] | None:
+    """The line as one that keeps the material (a change line with no change, and the note saying
+    so), or None."""
+    start = len(text) - len(text.lstrip())
+    end = len(text.rstrip())
+    if start == end:
+        return None
+    span = Span(offset + start, offset + end, number, start + 1)
+    if _approval(text) or _keeps(text, start, number, offset, tagger):
+        note = f"read '{text.strip()}' as keeping the material as it is: nothing changes"
+        return ast.Refinement(None, (), span, text), Diagnostic(span, Severity.NOTE, NOTE_CODE, note)
+    return None
+
+
+def _approval(text: str) -> bool:
+    """Whether the line only approves the material ('perfect!', "ok, that's fine")."""
+    approvals = _rules()[3]
+    words = " ".join(MARKS.sub(" ", text.lower()).split())
+    if words in approvals:
+        return True
+    parts = [" ".join(p.split()) for p in MARKS.split(text.lower()) if p.strip()]
+    return len(parts) > 1 and all(part in approvals for part in parts)
+
+
+def _keeps(text: str, start: int, number: int, offset: int, tagger: Tagger) -> bool:
+    """Whether the line opens with a keep phrase (past its openers) and then names only words of
+    the material, with the trailing words read past."""
+    opener, keep, trailing, _approvals = _rules()
+    low = text.lower()
+    at = start
+    for _ in range(3):
+        skipped = opener.match(low, at)
+        if skipped is None:
+            break
+        at = skipped.end()
+    found = keep.match(low, at)
+    if found is None:
+        return False
+    lead = found.end()
+    if low[at:lead].strip() in BARE and low[lead:].split()[:1] in (["it"], ["them"]):
+        return False  # 'keep it matte' asks for matte
+    end = lead + len(trailing.sub("", low[lead:]))
+    if not low[lead:end].strip():
+        return low[at:lead].strip() != "keep"  # 'keep the same', not 'keep' alone
+    masked = " " * lead + text[lead:end] + " " * (len(text) - end)  # columns stay the user's
+    tagged, problems = tagger.tag_line(masked, number, offset)
+    return not any(d.is_error for d in problems) and _names_only(tagged)
+
+
+def _names_only(words: list[Tagged]) -> bool:
+    """Whether every word read names part of the material (a describing word, a feature, a
+    colour, a noun...), and none asks for a change (a comparative, 'with')."""
+    said = [w for w in words if w.candidates and w.implied_by is None]  # not the words 'varnish' alone implies
+    return bool(said) and all(any(c.tag in NAMED for c in w.candidates) for w in said)

@@ -1,0 +1,183 @@
+"""Meaning of everyday lines (issue #14), categories from held-out phrasing: a change line that
+keeps the material as it is ('keep the varnish', 'perfect, thanks'), a hedged colour before another
+('blackish red': a red leaning toward black, not two colours), 'more of an X', a colour turned down
+beside the one asked for ('lighter, not jet black'), a survey colour where a describing word of one
+material class does not apply ('rust felt'), 'too new', and the qualifiers that draw nothing (tile
+shapes, a clean white, poured concrete)."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.language.meaning import compiled, lch, material, refined
+from tests.language.meaning import same_look as look_alike
+
+
+def problems(text: str) -> list[str]:
+    return [d.code for d in compiled(text).diagnostics if d.severity.value in ("error", "warning")]
+
+
+def notes(text: str) -> list[str]:
+    return [d.message for d in compiled(text).diagnostics if d.severity.value == "note"]
+
+
+def hue_gap(a: float, b: float) -> float:
+    return abs((a - b + 180) % 360 - 180)
+
+
+def same_look(a: dict, b: dict) -> bool:
+    return look_alike(a, b, ("base_color", "roughness", "anisotropy", "coat"))
+
+
+# ---------------------------------------------------------------- lines that keep the material
+
+
+@pytest.mark.parametrize(
+    ("phrase", "line"),
+    [
+        ("white varnished oak", "keep the varnish"),
+        ("white varnished oak", "leave the grain as it is, thanks"),
+        ("brushed steel", "keep the same brushing"),
+        ("navy velvet", "keep it the same colour"),
+        ("red plastic", "that's perfect!"),
+        ("red plastic", "great, thanks"),
+        ("red plastic", "don't change the colour"),
+    ],
+)
+def test_a_line_that_keeps_the_material_changes_nothing(phrase: str, line: str) -> None:
+    session = refined(phrase, line)
+    assert session.result.ok, [d.message for d in session.result.diagnostics]
+    assert same_look(session.material, material(phrase))
+    said = [d for d in session.result.diagnostics if d.span.line == 2]
+    assert [d.code for d in said] == ["N101"] and "keeping the material as it is" in said[0].message
+
+
+def test_keep_it_with_a_describing_word_asks_for_it() -> None:
+    """'keep it glossy' is a change (make it glossy), not a line that keeps."""
+    assert (
+        material("matte red plastic\nkeep it glossy")["params"]["roughness"]
+        < material("matte red plastic")["params"]["roughness"]
+    )
+
+
+def test_keep_then_a_change_still_changes() -> None:
+    darker = refined("white oak", "keep the grain but make it darker").material["params"]["base_color"]
+    assert lch(darker)[0] < lch(material("white oak")["params"]["base_color"])[0] - 0.05
+
+
+@pytest.mark.parametrize("line", ["keep the grain", "thanks", "perfect!"])
+def test_a_keeping_line_with_no_material_above_is_an_error(line: str) -> None:
+    assert problems(line) == ["E003"]
+    assert not compiled(line).ok
+
+
+def test_keep_alone_is_still_an_unknown_word() -> None:
+    assert "E001" in problems("oak\nkeep")
+
+
+# ---------------------------------------------------------------- hedged colours before a colour
+
+
+@pytest.mark.parametrize(
+    ("phrase", "plain", "toward"),
+    [
+        ("blackish red paint", "red paint", "darker"),
+        ("whitish blue paint", "blue paint", "lighter"),
+        ("almost black green velvet", "green velvet", "darker"),
+        ("nearly white pink plastic", "pink plastic", "lighter"),
+    ],
+)
+def test_a_hedged_colour_leans_the_next_colour_toward_it(phrase: str, plain: str, toward: str) -> None:
+    L, C, h = lch(material(phrase)["params"]["base_color"])
+    L0, C0, h0 = lch(material(plain)["params"]["base_color"])
+    assert (L < L0 - 0.05) if toward == "darker" else (L > L0 + 0.03)
+    assert hue_gap(h, h0) < 15 and C > 0.03  # still that colour, not black, white or grey
+    assert "W105" not in problems(phrase)
+    assert any("moved toward" in n for n in notes(phrase))
+
+
+def test_two_plain_colours_still_warn() -> None:
+    assert "W105" in problems("red blue paint")
+
+
+def test_a_likeness_to_an_unknown_thing_keeps_the_colour() -> None:
+    """'pale green, like a ginkgo leaf': the thing is not the material; the colour stays."""
+    said = material("dark green, like a ginkgo leaf")
+    assert problems("dark green, like a ginkgo leaf") == []
+    assert hue_gap(lch(said["params"]["base_color"])[2], lch(material("green paint")["params"]["base_color"])[2]) < 20
+
+
+# ---------------------------------------------------------------- change lines
+
+
+def test_more_of_an_orange_is_more_like_orange() -> None:
+    session = refined("red plastic", "more of an orange")
+    assert session.result.ok
+    assert (
+        session.material["params"]["base_color"]
+        == refined("red plastic", "more like orange").material["params"]["base_color"]
+    )
+    assert lch(session.material["params"]["base_color"])[2] > lch(material("red plastic")["params"]["base_color"])[2]
+
+
+def test_more_of_a_material_beside_a_comparative_changes_to_it() -> None:
+    """'deeper, more of a walnut' under pale oak: walnut, then deeper (as the two lines say)."""
+    said = refined("pale oak", "deeper, more of a walnut").material
+    assert same_look(said, refined("pale oak", "make it walnut", "deeper").material)
+
+
+@pytest.mark.parametrize("line", ["lighter, not jet black", "a bit lighter, not pitch black"])
+def test_a_colour_turned_down_beside_a_change_is_read_past(line: str) -> None:
+    session = refined("matte black paint", line)
+    assert session.result.ok, [d.message for d in session.result.diagnostics]
+    assert lch(session.material["params"]["base_color"])[0] > 0.2
+    assert any(d.message.startswith("read past 'not") for d in session.result.diagnostics)
+
+
+def test_too_new_ages_the_material() -> None:
+    session = refined("polished brass", "it looks too new")
+    assert session.result.ok
+    assert session.material["params"]["roughness"] > material("polished brass")["params"]["roughness"]
+
+
+def test_new_contradicts_rusty() -> None:
+    assert "W101" in problems("brand-new rusty steel")
+
+
+def test_a_complaint_said_with_now() -> None:
+    session = refined("glossy white paint", "it's too glossy now")
+    assert session.result.ok
+    assert session.material["params"]["roughness"] > material("glossy white paint")["params"]["roughness"]
+
+
+# ---------------------------------------------------------------- colours and qualifiers
+
+
+@pytest.mark.parametrize("noun", ["felt", "linen", "leather"])
+def test_rust_before_a_material_that_cannot_rust_is_the_colour(noun: str) -> None:
+    L, C, h = lch(material(f"rust {noun}")["params"]["base_color"])
+    assert problems(f"rust {noun}") == []
+    assert 25 < h < 70 and C > 0.08  # an orange-red brown (the survey's rust, #a83c09)
+
+
+def test_rust_on_iron_stays_rust() -> None:
+    assert "mask" in material("rust iron")["maps"]
+
+
+@pytest.mark.parametrize(
+    ("phrase", "plain"),
+    [
+        ("hexagon floor tiles", "floor tiles"),
+        ("a crisp white paint", "white paint"),
+        ("poured concrete", "concrete"),
+        ("exposed brickwork", "exposed brick"),
+        ("a single malt whisky", "whisky"),
+    ],
+)
+def test_qualifiers_that_draw_nothing_are_read_past(phrase: str, plain: str) -> None:
+    assert problems(phrase) == []
+    assert same_look(material(phrase), material(plain))
+
+
+def test_a_tile_shape_says_it_is_not_drawn() -> None:
+    assert any("not drawn" in n for n in notes("hexagonal tiles"))
