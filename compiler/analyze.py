@@ -119,6 +119,8 @@ def orphan_line(item: ast.Item, lexicon: Lexicon, diags: list[Diagnostic]) -> as
             diags.append(found[1])
             return found[0]
     keeps_only = isinstance(item, ast.Refinement) and item.keeps_only  # 'thanks' alone
+    if keeps_only:  # its note said 'nothing changes': the error says why nothing can
+        diags[:] = [d for d in diags if not (d.span == item.span and d.code == "N101")]
     diags.append(nothing_to_keep(item) if keeps_only else orphan_refinement(item))
     return None
 

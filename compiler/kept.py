@@ -26,7 +26,10 @@ if TYPE_CHECKING:
 __all__ = ["kept_line"]
 
 #: what a kept line may name after its keep phrase, by grammar terminal
-NAMED = ("ADJ", "FEATURE", "COAT", "COLOR", "PROP", "NOUN", "SHADE", "ARTICLE", "AND", "COMMA")
+NAMED = ("ADJ", "FEATURE", "COAT", "COLOR", "PROP", "NOUN", "SHADE", "ARTICLE")
+#: the words of a thing kept ('the grain', 'the varnish'): a describing word after one asks for a change
+THINGS = ("FEATURE", "COAT", "PROP", "NOUN")
+DESCRIBING = ("ADJ", "COLOR", "SHADE")
 #: keep phrases that name nothing themselves: a pronoun after them is the material ('keep it matte')
 BARE = ("keep", "leave")
 #: the marks an approval may carry ('perfect!', 'ok, thanks.')
@@ -86,7 +89,7 @@ def _keeps(text: str, start: int, number: int, offset: int, tagger: Tagger) -> b
         return False  # 'keep it matte' asks for matte
     end = lead + len(trailing.sub("", low[lead:]))
     if not low[lead:end].strip():
-        return low[at:lead].strip() != "keep"  # 'keep the same', not 'keep' alone
+        return low[at:lead].strip().endswith("same")  # 'keep the same', not 'keep' or 'keep the' alone
     masked = " " * lead + text[lead:end] + " " * (len(text) - end)  # columns stay the user's
     tagged, problems = tagger.tag_line(masked, number, offset)
     return not any(d.is_error for d in problems) and _names_only(tagged)
@@ -96,4 +99,7 @@ def _names_only(words: list[Tagged]) -> bool:
     """Whether every word read names part of the material (a describing word, a feature, a
     colour, a noun...), and none asks for a change (a comparative, 'with')."""
     said = [w for w in words if w.candidates and w.implied_by is None]  # not the words 'varnish' alone implies
-    return bool(said) and all(any(c.tag in NAMED for c in w.candidates) for w in said)
+    if not said or not all(any(c.tag in NAMED for c in w.candidates) for w in said):
+        return False
+    thing = next((i for i, w in enumerate(said) if any(c.tag in THINGS for c in w.candidates)), len(said))
+    return not any(c.tag in DESCRIBING for w in said[thing + 1 :] for c in w.candidates)  # 'keep the varnish glossy'

@@ -46,7 +46,7 @@ def colour_compounds(groups: Sequence[ast.Group], lexicon: Lexicon, diags: list[
             second = group.colours[0]
             diags.append(_note(first, second))
             continue
-        if out and _is_hedged_pair(out[-1], group):  # 'blackish green': green, somewhat toward black
+        if out and _is_hedged_pair(out[-1], group, lexicon):  # 'blackish green': green, somewhat toward black
             diags.append(_hedged_note(out[-1], group))
             out[-1:] = [group, _as_share(out[-1])]
             continue
@@ -54,13 +54,19 @@ def colour_compounds(groups: Sequence[ast.Group], lexicon: Lexicon, diags: list[
     return out
 
 
-def _is_hedged_pair(first: ast.Group, second: ast.Group) -> bool:
+def _is_hedged_pair(first: ast.Group, second: ast.Group, lexicon: Lexicon) -> bool:
     """A hedged colour ('blackish', 'almost black', 'slightly grey') right before a plain colour:
     the second colour moved toward the first by the hedge's share (applied after it, as 'slightly
     red' moves the colour there), not a second colour replacing the first."""
     if not (_single_colour(first) and _single_colour(second)) or second.adverbs or first.colours[0].shades:
         return False
-    return second.span.start - first.span.end <= 1 and (bool(first.adverbs) or _hedged_word(first.colours[0]))
+    return second.span.start - first.span.end <= 1 and (_softened(first, lexicon) or _hedged_word(first.colours[0]))
+
+
+def _softened(group: ast.Group, lexicon: Lexicon) -> bool:
+    """Adverbs that soften ('slightly', 'almost': weight below 1), not ones that strengthen ('very')."""
+    weights = [lexicon.entry("adverbs", a.key) for a in group.adverbs]
+    return bool(weights) and all(e is not None and float(e.get("weight", 1.0)) < 1.0 for e in weights)
 
 
 def _hedged_word(c: ast.Colour) -> bool:

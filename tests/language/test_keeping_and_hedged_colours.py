@@ -60,6 +60,21 @@ def test_keep_it_with_a_describing_word_asks_for_it() -> None:
     )
 
 
+@pytest.mark.parametrize(
+    ("phrase", "line"),
+    [
+        ("matte red plastic", "keep the varnish glossy"),
+        ("white oak", "keep the grain, dark brown"),
+        ("glossy red plastic", "keep the red and matte"),
+        ("white oak", "stick with the walnut"),
+        ("oak", "keep the"),
+    ],
+)
+def test_a_line_that_asks_for_something_is_no_keeping_line(phrase: str, line: str) -> None:
+    said = compiled(f"{phrase}\n{line}")
+    assert not any("keeping the material" in d.message for d in said.diagnostics)
+
+
 def test_keep_then_a_change_still_changes() -> None:
     darker = refined("white oak", "keep the grain but make it darker").material["params"]["base_color"]
     assert lch(darker)[0] < lch(material("white oak")["params"]["base_color"])[0] - 0.05
@@ -69,6 +84,7 @@ def test_keep_then_a_change_still_changes() -> None:
 def test_a_keeping_line_with_no_material_above_is_an_error(line: str) -> None:
     assert problems(line) == ["E003"]
     assert not compiled(line).ok
+    assert not notes(line)  # no 'nothing changes' note beside the error
 
 
 def test_keep_alone_is_still_an_unknown_word() -> None:
@@ -96,8 +112,9 @@ def test_a_hedged_colour_leans_the_next_colour_toward_it(phrase: str, plain: str
     assert any("moved toward" in n for n in notes(phrase))
 
 
-def test_two_plain_colours_still_warn() -> None:
-    assert "W105" in problems("red blue paint")
+@pytest.mark.parametrize("phrase", ["red blue paint", "very red blue paint"])
+def test_two_plain_colours_still_warn(phrase: str) -> None:
+    assert "W105" in problems(phrase)
 
 
 def test_a_likeness_to_an_unknown_thing_keeps_the_colour() -> None:
@@ -162,6 +179,7 @@ def test_rust_before_a_material_that_cannot_rust_is_the_colour(noun: str) -> Non
 
 def test_rust_on_iron_stays_rust() -> None:
     assert "mask" in material("rust iron")["maps"]
+    assert "W102" in problems("rusty linen")  # 'rusty' is no colour name
 
 
 @pytest.mark.parametrize(
