@@ -30,20 +30,21 @@ NAMED = ("ADJ", "FEATURE", "COAT", "COLOR", "PROP", "NOUN", "SHADE", "ARTICLE")
 #: the words of a thing kept ('the grain', 'the varnish'): a describing word after one asks for a change
 THINGS = ("FEATURE", "COAT", "PROP", "NOUN")
 DESCRIBING = ("ADJ", "COLOR", "SHADE")
-#: keep phrases that name nothing themselves: a pronoun after them is the material ('keep it matte')
-BARE = ("keep", "leave")
 #: the marks an approval may carry ('perfect!', 'ok, thanks.')
 MARKS = re.compile(r"[,.!?;:…]+")
 
 
 @lru_cache(maxsize=1)
-def _rules() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str], frozenset[str]]:
-    """The openers, the keep phrases and the trailing words as patterns, and the approvals."""
+def _rules() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str], frozenset[str], frozenset[str]]:
+    """The openers, the keep phrases and the trailing words as patterns, the approvals, and the
+    pronouns that stand for the material ('keep it matte')."""
     table: dict[str, Any] = teaching()["keeping"]
-    opener = re.compile(rf"(?:{alternatives(teaching()['removal']['openers'])})\s*[,!.:;]?\s+")
+    openers = [*teaching()["removal"]["openers"], *table["approvals"], *table["openers"]]
+    opener = re.compile(rf"(?:{alternatives(openers)})\s*[,!.:;]?\s+")
     keep = re.compile(rf"(?:{alternatives(table['leading'])})(?=\s|$)")
     trailing = re.compile(rf"(?:[\s,.!?]+(?:{alternatives(table['trailing'])}))*[\s,.!?]*$")
-    return opener, keep, trailing, frozenset(" ".join(a.split()) for a in table["approvals"])
+    approvals = frozenset(" ".join(a.split()) for a in table["approvals"])
+    return opener, keep, trailing, approvals, frozenset(teaching()["politeness"]["pronouns"])
 
 
 def kept_line(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast.Refinement, Diagnostic] | None:
@@ -73,7 +74,7 @@ def _approval(text: str) -> bool:
 def _keeps(text: str, start: int, number: int, offset: int, tagger: Tagger) -> bool:
     """Whether the line opens with a keep phrase (past its openers) and then names only words of
     the material, with the trailing words read past."""
-    opener, keep, trailing, _approvals = _rules()
+    opener, keep, trailing, _approvals, pronouns = _rules()
     low = text.lower()
     at = start
     for _ in range(3):
@@ -85,21 +86,25 @@ def _keeps(text: str, start: int, number: int, offset: int, tagger: Tagger) -> b
     if found is None:
         return False
     lead = found.end()
-    if low[at:lead].strip() in BARE and low[lead:].split()[:1] in (["it"], ["them"]):
-        return False  # 'keep it matte' asks for matte
+    said = low[at:lead].split()
+    material_named = said[-1] in pronouns or low[lead:].split()[:1] in [[p] for p in pronouns]
     end = lead + len(trailing.sub("", low[lead:]))
     if not low[lead:end].strip():
         return low[at:lead].strip().endswith("same")  # 'keep the same', not 'keep' or 'keep the' alone
     masked = " " * lead + text[lead:end] + " " * (len(text) - end)  # columns stay the user's
     tagged, problems = tagger.tag_line(masked, number, offset)
-    return not any(d.is_error for d in problems) and _names_only(tagged)
+    return not any(d.is_error for d in problems) and _names_only(tagged, material_named)
 
 
-def _names_only(words: list[Tagged]) -> bool:
+def _names_only(words: list[Tagged], material_named: bool) -> bool:
     """Whether every word read names part of the material (a describing word, a feature, a
-    colour, a noun...), and none asks for a change (a comparative, 'with')."""
+    colour, a noun...), and none asks for a change (a comparative, 'with', a describing word after
+    the thing kept: 'keep the varnish glossy', or after the material named by a pronoun: 'keep it
+    matte', 'keep this glossy')."""
     said = [w for w in words if w.candidates and w.implied_by is None]  # not the words 'varnish' alone implies
     if not said or not all(any(c.tag in NAMED for c in w.candidates) for w in said):
         return False
     thing = next((i for i, w in enumerate(said) if any(c.tag in THINGS for c in w.candidates)), len(said))
+    if material_named and thing == len(said):
+        return False
     return not any(c.tag in DESCRIBING for w in said[thing + 1 :] for c in w.candidates)  # 'keep the varnish glossy'

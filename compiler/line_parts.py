@@ -167,8 +167,10 @@ def _turned_down(node: ast.Item, text: str, offset: int) -> bool:
     if not all(w.category == "colours" for w in node.removed):
         return False
     start = _part_around(text, node.span.start - offset)[0]
-    before = text[start : node.span.start - offset]
-    return " ".join(before.lower().split()) in teaching()["removal"]["negations"]
+    before = text[start : node.span.start - offset].lower().split()
+    if before[:1] and before[0] in teaching()["politeness"]["remark_breaks"]:  # 'lighter, but not white'
+        before = before[1:]
+    return " ".join(before) in teaching()["removal"]["negations"]
 
 
 def _part_around(text: str, at: int) -> tuple[int, int]:

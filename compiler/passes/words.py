@@ -165,7 +165,7 @@ def apply_adjective(
     state: MaterialState, ctx: Context, adjective: Entry, group: ast.Group, weight: float, target: str
 ) -> None:
     word = group.adjectives[0]
-    if not group.colours and target == "base" and _survey_colour_instead(state, adjective, word):
+    if not group.colours and target == "base" and _survey_colour_instead(state, adjective, word, weight):
         return
     if not _applies(state, adjective, word, target):
         for c in group.colours:  # "pale honed maple": the colour still holds, on the base
@@ -250,26 +250,39 @@ def _effect_list(adjective: Entry, noun: Entry) -> tuple[str, list[Effect]]:
 COAT_CLASS = "plastic"  # a coat is a clear polymer film (coats.toml: PMMA lacquer, polyurethane varnish)
 
 
-def _survey_colour_instead(state: MaterialState, adjective: Entry, word: ast.Word) -> bool:
+def _survey_colour_instead(state: MaterialState, adjective: Entry, word: ast.Word, weight: float) -> bool:
     """'rust linen', 'rust corduroy': a describing word of one class of material ('rust' = rusty:
     metal only) that the colour survey also names a colour is that colour on any other material,
-    with a note, not ignored (W102); False where the word applies or the survey has no such colour."""
-    from ..colour import hex_to_linear
+    applied as a colour word is (a share of the way at a softening degree: 'slightly rust linen';
+    W105 after another colour), with a note, not ignored (W102); False where the word applies or the
+    survey has no such colour."""
+    from ..colour import hex_to_linear, mix_oklab
     from ..lexicon_load import survey_hex
 
-    classes = adjective.data.get("applies_to")
     noun = noun_of(state)
-    if not classes or noun.data.get("class") in classes or noun.key in classes:
-        return False
-    hex_code = survey_hex(word.text.lower())
+    hex_code = survey_hex(word.text.lower()) if not _applies_to(noun, adjective) else None
     if hex_code is None:
         return False
-    rgb = hex_to_linear(hex_code)
+    rgb, current = hex_to_linear(hex_code), state.params.get("base_color")
+    if weight < 1.0 and current is not None:
+        rgb = mix_oklab(current, rgb, weight)
+    said = ast.Colour((), ast.Word(word.text, word.text.lower(), "colours", word.span), word.span)
+    if weight >= 1.0:
+        _warn_second_colour(state, "base_color", said)
     state.params["base_color"] = rgb
     state.note("base_color", rgb, f"colours: {word.text} (survey)", (word,))
     message = f"read '{word.text}' as the colour {word.text.lower()} ({hex_code}): '{adjective.key}' does not apply to {noun.key}"
-    state.diagnostics.append(Diagnostic(word.span, Severity.NOTE, "N101", message, ()))
+    state.diagnostics.append(Diagnostic(word.span, Severity.NOTE, SURVEY_COLOUR, message, ()))
     return True
+
+
+SURVEY_COLOUR = "N101"  # a word read by a rule: here, as the survey's colour of its name
+
+
+def _applies_to(noun: Entry, adjective: Entry) -> bool:
+    """Whether the adjective's classes (if any) include the noun or its class."""
+    classes = adjective.data.get("applies_to")
+    return not classes or noun.data.get("class") in classes or noun.key in classes
 
 
 def _applies(state: MaterialState, adjective: Entry, word: ast.Word, target: str = "base") -> bool:
@@ -278,7 +291,7 @@ def _applies(state: MaterialState, adjective: Entry, word: ast.Word, target: str
     if not classes or (target == "coat" and COAT_CLASS in classes):
         return True
     noun = noun_of(state)
-    if target != "coat" and (noun.data.get("class") in classes or noun.key in classes):
+    if target != "coat" and _applies_to(noun, adjective):
         return True
     note = adjective.get("applies_note", f"it applies to {', '.join(classes)}")
     state.diagnostics.append(

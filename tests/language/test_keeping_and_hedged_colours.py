@@ -42,6 +42,8 @@ def same_look(a: dict, b: dict) -> bool:
         ("red plastic", "that's perfect!"),
         ("red plastic", "great, thanks"),
         ("red plastic", "don't change the colour"),
+        ("white oak", "ok, keep the grain"),
+        ("white oak", "no, keep the grain as it is"),
     ],
 )
 def test_a_line_that_keeps_the_material_changes_nothing(phrase: str, line: str) -> None:
@@ -67,6 +69,7 @@ def test_keep_it_with_a_describing_word_asks_for_it() -> None:
         ("white oak", "keep the grain, dark brown"),
         ("glossy red plastic", "keep the red and matte"),
         ("white oak", "stick with the walnut"),
+        ("matte red plastic", "keep this glossy"),
         ("oak", "keep the"),
     ],
 )
@@ -143,12 +146,12 @@ def test_more_of_a_material_beside_a_comparative_changes_to_it() -> None:
     assert same_look(said, refined("pale oak", "make it walnut", "deeper").material)
 
 
-@pytest.mark.parametrize("line", ["lighter, not jet black", "a bit lighter, not pitch black"])
+@pytest.mark.parametrize("line", ["lighter, not jet black", "a bit lighter, not pitch black", "lighter, but not white"])
 def test_a_colour_turned_down_beside_a_change_is_read_past(line: str) -> None:
     session = refined("matte black paint", line)
     assert session.result.ok, [d.message for d in session.result.diagnostics]
     assert lch(session.material["params"]["base_color"])[0] > 0.2
-    assert any(d.message.startswith("read past 'not") for d in session.result.diagnostics)
+    assert any(d.message == f"read past '{line.split(', ')[1]}'" for d in session.result.diagnostics)
 
 
 def test_too_new_ages_the_material() -> None:
@@ -175,6 +178,13 @@ def test_rust_before_a_material_that_cannot_rust_is_the_colour(noun: str) -> Non
     L, C, h = lch(material(f"rust {noun}")["params"]["base_color"])
     assert problems(f"rust {noun}") == []
     assert 25 < h < 70 and C > 0.08  # an orange-red brown (the survey's rust, #a83c09)
+
+
+def test_the_survey_colour_is_applied_as_a_colour_word() -> None:
+    """A softening degree is a share of the way; another colour before it warns, as colours do."""
+    full, slight = (lch(material(p)["params"]["base_color"]) for p in ("rust linen", "slightly rust linen"))
+    assert slight[1] < full[1] - 0.03  # half way from the linen's own colour
+    assert "W105" in problems("red rust linen")
 
 
 def test_rust_on_iron_stays_rust() -> None:
