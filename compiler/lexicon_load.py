@@ -291,16 +291,25 @@ def add_survey_colours(builder: Builder, names: dict[str, Any], source: SourceTe
             continue
         base = colour.hex_to_linear(colours[rest].data["hex"])
         own = colours[name].data
+        drifted = _hue_drifted(own["hex"], colours[rest].data["hex"], rules)
         if (
             colour.linear_to_oklab(colour.hex_to_linear(own["hex"]))[0] - colour.linear_to_oklab(base)[0]
-        ) * direction > 0:
+        ) * direction > 0 and not drifted:
             continue
         shifted = colour.linear_to_hex(colour.apply_ops(base, builder.raw["shades"][first].data["ops"]))
+        why = "drifts from its hue" if drifted else f"is not {'darker' if direction < 0 else 'lighter'} than it"
         own["doc"] = (
-            f"'{name}': {rest} with the shade '{first}' ({shifted}); the {SURVEY} has {own['hex']}, "
-            f"which is not {'darker' if direction < 0 else 'lighter'} than its '{rest}'."
+            f"'{name}': {rest} with the shade '{first}' ({shifted}); the {SURVEY} has {own['hex']}, which {why}."
         )
         own["hex"] = shifted
+    for name in sorted(added):  # "very dark brown" (#1d0200, a red-black): 'very' on dark brown
+        first, _, rest = name.partition(" ")
+        if (
+            first == "very"
+            and rest in colours
+            and _hue_drifted(colours[name].data["hex"], colours[rest].data["hex"], rules)
+        ):
+            del colours[name]
     for a in rules["mix_colours"]:
         for b in rules["mix_colours"]:
             name, spaced = f"{a}-{b}", f"{a} {b}"
@@ -327,6 +336,21 @@ def add_survey_colours(builder: Builder, names: dict[str, Any], source: SourceTe
                 "source": f"computed from the {SURVEY}",
             }
             builder._merge("colours", name, entry, source)
+
+
+def _hue_drifted(hex_code: str, base_hex: str, rules: dict[str, Any]) -> bool:
+    """Whether a survey compound's hue lies further from its colour's than a shade moves it
+    (colour_rules.toml shade_hue_degrees); never for colours too grey to have a hue."""
+    import math
+
+    from . import colour
+
+    (_l1, a1, b1), (_l2, a2, b2) = (colour.linear_to_oklab(colour.hex_to_linear(h)) for h in (hex_code, base_hex))
+    least = float(rules["shade_hue_min_chroma"])
+    if math.hypot(a1, b1) < least or math.hypot(a2, b2) < least:
+        return False
+    gap = abs(math.degrees(math.atan2(b1, a1) - math.atan2(b2, a2))) % 360.0
+    return min(gap, 360.0 - gap) > float(rules["shade_hue_degrees"])
 
 
 def _forms(key: str, entry: RawEntry) -> list[str]:

@@ -209,3 +209,29 @@ def test_qualifiers_that_draw_nothing_are_read_past(phrase: str, plain: str) -> 
 
 def test_a_tile_shape_says_it_is_not_drawn() -> None:
     assert any("not drawn" in n for n in notes("hexagonal tiles"))
+
+
+# ---------------------------------------------------------------- survey shade names that drift in hue
+
+
+@pytest.mark.parametrize(
+    ("phrase", "plain", "toward"),
+    [
+        ("pale blue paint", "blue paint", "lighter"),  # the survey's #d0fefe is a cyan
+        ("very pale blue paint", "pale blue paint", "lighter"),
+        ("very dark brown paint", "dark brown paint", "darker"),  # the survey's #1d0200 is a red-black
+        ("pale peach paint", "peach paint", "lighter"),
+    ],
+)
+def test_a_shade_keeps_the_hue_of_its_colour(phrase: str, plain: str, toward: str) -> None:
+    L, C, h = lch(material(phrase)["params"]["base_color"])
+    L0, _C0, h0 = lch(material(plain)["params"]["base_color"])
+    assert hue_gap(h, h0) < 10 and C > 0.03
+    assert (L < L0) if toward == "darker" else (L > L0)
+
+
+def test_a_shade_name_within_the_hue_keeps_the_survey_colour() -> None:
+    """'light blue' is the survey's #95d0fc (22 degrees from its blue: a shade, kept)."""
+    from cnlmc.colour import hex_to_linear
+
+    assert material("light blue paint")["params"]["base_color"] == pytest.approx(hex_to_linear("#95d0fc"), abs=1e-5)
