@@ -22,6 +22,7 @@ from .passes.subsurface import apply_subsurface, select_subsurface
 from .passes.variants import expand, identifier
 from .passes.words import apply_groups
 from .removed import without_words
+from .spans import Span
 from .state import Context, MaterialState
 
 BUILD_PASSES = (apply_noun, apply_groups, apply_subsurface, apply_coat_clause, apply_inline_refinements)
@@ -118,11 +119,26 @@ def orphan_line(item: ast.Item, lexicon: Lexicon, diags: list[Diagnostic]) -> as
         if found is not None:
             diags.append(found[1])
             return found[0]
+    if isinstance(item, ast.Refinement) and item.removed:  # 'no sheen' first: nothing to take it off
+        from .document import read_without_removal
+
+        plain = read_without_removal(item, lexicon)
+        if plain is not None:
+            diags[:] = [
+                d for d in diags if not (d.code == "N101" and d.span is not None and _within(d.span, item.span))
+            ]
+            diags.extend(plain[1])
+            return plain[0]
     keeps_only = isinstance(item, ast.Refinement) and item.keeps_only  # 'thanks' alone
     if keeps_only:  # its note said 'nothing changes': the error says why nothing can
         diags[:] = [d for d in diags if not (d.span == item.span and d.code == "N101")]
     diags.append(nothing_to_keep(item) if keeps_only else orphan_refinement(item))
     return None
+
+
+def _within(inner: Span, outer: Span) -> bool:
+    """Whether `inner` lies on `outer`'s line, before its end (a note on a line's words)."""
+    return inner.line == outer.line and outer.start - (outer.col - 1) <= inner.start and inner.end <= outer.end
 
 
 def nothing_to_keep(item: ast.Item) -> Diagnostic:

@@ -90,6 +90,19 @@ def _removal(text: str, number: int, offset: int, tagger: Tagger, diags: list[Di
     return refinement
 
 
+def read_without_removal(line: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material, list[Diagnostic]] | None:
+    """A removal line with no material above ('no sheen', 'no gloss at all') read as the words say
+    alone (word formation's negation: 'no sheen' = matte, on the everyday noun), with its notes;
+    None when that reading names no material or has an error."""
+    span = line.span
+    offset = span.start - (span.col - 1)
+    diags: list[Diagnostic] = []
+    node = _parsed_line(line.text, span.line, offset, Tagger.of(lexicon), diags, removals=False)
+    if not isinstance(node, ast.Material) or any(d.is_error for d in diags):
+        return None
+    return node, diags
+
+
 def _kept(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Refinement | None:
     """The line as one that keeps the material as it is ('keep the grain', 'perfect': cnlmc.kept),
     a change line with no change, with its note; None for any other line."""

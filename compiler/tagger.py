@@ -321,9 +321,16 @@ class Tagger:
                 kept = tuple(c for c in word.candidates if c.tag in tags)
                 tagged[k] = Tagged(word.text, word.span, kept, word.unknown)
         comparative = tagged[at]
-        taken = 2 if i + 1 < len(raw) and self.keywords.get(raw[i + 1][0].lower()) == "ARTICLE" else 1
         than = raw[i][0]
         said = " ".join(t.text for t in tagged[at:])
+        current = self._compared_with_current(raw, i)
+        if current:  # 'a lighter grey than that': the comparative alone, on the material above
+            span = self._span(raw, i, current, line_no, offset)
+            words = " ".join(w for w, _c in raw[i : i + current])
+            note = f"read past '{words}': compared with the material above, '{said}' changes it"
+            diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, note))
+            return current
+        taken = 2 if i + 1 < len(raw) and self.keywords.get(raw[i + 1][0].lower()) == "ARTICLE" else 1
         note = (
             f"read '{said} {than}' as '{said}' before the material: the material named after '{than}', "
             f"moved as a refinement line '{said}' under it would move it"
@@ -342,6 +349,14 @@ class Tagger:
             message = f"'{said} {than}' compares with a material, and none is named after '{than}'"
             diags.append(error(where, "E003", message, (f"name the material after '{than}'",)))
         return taken
+
+    def _compared_with_current(self, raw: list[RawToken], i: int) -> int:
+        """How many words 'than that', 'than before' take (the comparison word and the material as it
+        is, to the end of the line or a part mark); 0 for a comparison with a material."""
+        rest = [w.lower() for w, _c in raw[i + 1 :]]
+        end = next((k for k, w in enumerate(rest) if not w[0].isalnum()), len(rest))
+        said = " ".join(rest[:end])
+        return end + 1 if said and said in self.formation().rules.compared_current else 0
 
     def _names_colour(self, rest: list[RawToken]) -> bool:
         """'darker than navy': a colour after the comparison word is compared with (the line reads

@@ -109,6 +109,7 @@ class Rules:
         self.shapes = frozenset(joined("qualifiers", "shapes"))  # "hexagon floor tiles"
         self.purity = frozenset(joined("qualifiers", "purity"))  # "a clean bright white"
         self.comparison = frozenset(joined("comparison", "words"))  # "lighter than oak"
+        self.compared_current = frozenset(joined("comparison", "current"))  # "lighter than that"
         self.manners = frozenset(joined("compound_first", "manners"))
         self.participles = frozenset(joined("compound_first", "participles"))
         self.participle_endings = joined("compound_first", "participle_endings")

@@ -24,7 +24,7 @@ _LISTS = {
     "punctuation": ("trailing", "leading", "quotes", "number_marks"),
     "negation": ("words", "prefixes", "softeners", "emphatic", "emphatic_before", "strict"),
     "qualifiers": ("words", "sizes", "shapes", "ordinary", "purity", "liking", "imitation"),
-    "comparison": ("words",),
+    "comparison": ("words", "current"),
     "properties": ("endings",),
 }
 
@@ -51,7 +51,7 @@ def empty_rules() -> dict[str, Any]:
             "liking": [],
             "imitation": [],
         },
-        "comparison": {"words": []},
+        "comparison": {"words": [], "current": []},
         "properties": {"endings": []},
         "compound_first": {
             "manners": [],

@@ -235,3 +235,61 @@ def test_a_shade_name_within_the_hue_keeps_the_survey_colour() -> None:
     from cnlmc.colour import hex_to_linear
 
     assert material("light blue paint")["params"]["base_color"] == pytest.approx(hex_to_linear("#95d0fc"), abs=1e-5)
+
+
+# ---------------------------------------------------------------- comparisons with the material as it is, removals
+
+
+@pytest.mark.parametrize(
+    ("line", "plain"),
+    [
+        ("a lighter grey than that", "lighter grey"),
+        ("a shade darker than before", "a shade darker"),
+        ("lighter than that, please", "lighter"),
+    ],
+)
+def test_a_comparison_with_the_material_as_it_is_is_the_comparative(line: str, plain: str) -> None:
+    said, bare = refined("grey concrete", line), refined("grey concrete", plain)
+    assert said.result.ok and said.material["params"]["base_color"] == bare.material["params"]["base_color"]
+    assert any(d.message.startswith("read past 'than") for d in said.result.diagnostics)
+
+
+def test_a_comparison_with_a_material_still_names_it() -> None:
+    assert "E003" in problems("lighter than")  # nothing named after 'than'
+    assert material("lighter than oak")["params"]["base_color"] != material("oak")["params"]["base_color"]
+
+
+@pytest.mark.parametrize("line", ["no visible grain", "no grain at all", "without any obvious grain"])
+def test_a_removal_said_with_what_is_seen(line: str) -> None:
+    assert same_look(refined("oak", line).material, refined("oak", "no grain").material)
+
+
+@pytest.mark.parametrize(("phrase", "plain"), [("no sheen", "matte paint"), ("no sheen at all", "matte paint")])
+def test_a_removal_with_no_material_above_reads_as_its_words(phrase: str, plain: str) -> None:
+    assert problems(phrase) == []
+    assert material(phrase)["params"]["roughness"] == material(plain)["params"]["roughness"]
+    assert not any("taking" in n for n in notes(phrase))
+
+
+# ---------------------------------------------------------------- foods
+
+
+@pytest.mark.parametrize(
+    ("phrase", "noun"),
+    [
+        ("runny caramel", "caramel"),
+        ("salted caramel sauce", "caramel"),
+        ("vanilla custard", "custard"),
+        ("liquid mercury", "mercury"),
+    ],
+)
+def test_a_food_named_in_its_state_is_the_food(phrase: str, noun: str) -> None:
+    assert problems(phrase) == []
+    assert same_look(material(phrase), material(noun))
+
+
+def test_a_food_colour_before_another_material_is_the_colour() -> None:
+    leather = material("caramel leather")
+    assert leather["model"]["base"] != "glass" and lch(leather["params"]["base_color"])[2] == pytest.approx(
+        lch(material("caramel")["params"]["base_color"])[2], abs=2
+    )
