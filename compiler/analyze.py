@@ -110,11 +110,18 @@ def orphan_line(item: ast.Item, lexicon: Lexicon, diags: list[Diagnostic]) -> as
     if isinstance(item, ast.Refinement) and item.material is not None:
         return item.material  # 'switch to brass' first: brass
     if isinstance(item, ast.Refinement) and (item.items or item.features or item.coat is not None):
-        from .hedges import first_line_clause, first_line_finish  # a first-line refinement is rare
+        from .hedges import (
+            first_line_clause,
+            first_line_described,
+            first_line_finish,
+        )  # a first-line refinement is rare
         from .implied import first_line_comparison
 
         found = (
-            first_line_comparison(item, lexicon) or first_line_clause(item, lexicon) or first_line_finish(item, lexicon)
+            first_line_comparison(item, lexicon)
+            or first_line_clause(item, lexicon)
+            or first_line_finish(item, lexicon)
+            or first_line_described(item, lexicon)
         )
         if found is not None:
             diags.append(found[1])

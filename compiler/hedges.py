@@ -156,12 +156,42 @@ def _between(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], l
 
     tagged, unknown = Tagger.of(lexicon).tag_line(f"{first.text.lower()}-{second.text.lower()}", 1, 0)
     compound = tagged[0] if len(tagged) == 1 and not unknown else None
-    if compound is None or not any(c.tag == "COLOR" for c in compound.candidates):
-        return list(words), []
     run = words[start : at + 4]
+    if compound is None or not any(c.tag == "COLOR" for c in compound.candidates):
+        return _finish_between(words, run, first, second, lexicon)
     word = _implied(compound.text, next(c for c in compound.candidates if c.tag == "COLOR"), run[-1], 1)
     word = Tagged(word.text, word.span, word.candidates, implied_by=run[0].span.to(run[-1].span))
     return [*words[:start], word, *words[at + 4 :]], [_read_as(run, compound.text)]
+
+
+def _finish_between(
+    words: Sequence[Tagged], run: Sequence[Tagged], first: Tagged, second: Tagged, lexicon: Lexicon
+) -> tuple[list[Tagged], list[Diagnostic]]:
+    """'somewhere between satin and gloss': two finishes that each set the roughness are the first,
+    one step toward the second ('glossier satin'; teaching.toml [hedges] between_steps names the
+    comparative each way), with a note; the words as they were for any other pair."""
+    said, other = _roughness_set(first, lexicon), _roughness_set(second, lexicon)
+    if said is None or other is None or said[1] == other[1]:
+        return list(words), []
+    (key, rough), toward = said, other[1]
+    steps = teaching()["hedges"]["between_steps"]
+    step = steps["smoother"] if toward < rough else steps["rougher"]
+    comparative = _implied(step, Candidate("REFINE", step, "refinements"), run[-1], 1, run[0].span.to(run[-1].span))
+    finish = _implied(first.text, Candidate("ADJ", key, "adjectives"), run[-1], 2, run[0].span.to(run[-1].span))
+    at = list(words).index(run[0])
+    return [*words[:at], comparative, finish, *words[at + len(run) :]], [_read_as(run, f"{step} {first.text}")]
+
+
+def _roughness_set(word: Tagged, lexicon: Lexicon) -> tuple[str, float] | None:
+    """The finish adjective a word names and the roughness it sets ('satin': 0.35), or None."""
+    for candidate in word.candidates:
+        entry = lexicon.entry("adjectives", candidate.key) if candidate.tag == "ADJ" else None
+        if entry is None or entry.get("applies_to"):
+            continue
+        for effect in entry.get("effects", []):
+            if effect.get("param") == "roughness" and effect.get("op") == "set":
+                return entry.key, float(effect["value"])
+    return None
 
 
 def with_implied(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | None:
@@ -298,6 +328,28 @@ def first_line_finish(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Mater
     hint = "name the material to choose another, or write the material first and this line below it"
     typed = [w for w in words if w.text[:1].isalpha()]
     return material, Diagnostic(written_span(typed), Severity.NOTE, NOTE_CODE, message, (hint,))
+
+
+def first_line_described(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
+    """'glossier satin' (as 'somewhere between satin and gloss' reads) with no material above: the
+    describing word on paint, then the comparative (as 'glossier satin paint'), with a note; None
+    for any other line, or a describing word of some materials only."""
+    if len(item.items) != 1 or item.coat is not None or item.features or item.groups:
+        return None
+    said = item.items[0]
+    target = said.target
+    if not isinstance(target, ast.Word) or target.category != "adjectives":
+        return None
+    entry = lexicon.entry("adjectives", target.key)
+    if entry is None or entry.get("applies_to"):
+        return None
+    paint = everyday_noun()
+    noun = ast.Word(paint, paint, "nouns", target.span)
+    group = ast.Group("adjective", (), (), (target,), target.span)
+    step = ast.RefineItem(said.word, None, said.span, said.adverbs)
+    material = ast.Material(None, (group,), (noun,), None, item.span, item.text, (step,))
+    message = f"no material named: read '{said.word.text} {target.text}' as '{said.word.text} {target.text} {paint}'"
+    return material, Diagnostic(item.span, Severity.NOTE, NOTE_CODE, message)
 
 
 def _noun_for(head: ast.Word, lexicon: Lexicon) -> str:

@@ -293,3 +293,43 @@ def test_a_food_colour_before_another_material_is_the_colour() -> None:
     assert leather["model"]["base"] != "glass" and lch(leather["params"]["base_color"])[2] == pytest.approx(
         lch(material("caramel")["params"]["base_color"])[2], abs=2
     )
+
+
+# ---------------------------------------------------------------- between two finishes; dark stones and mill scale
+
+
+@pytest.mark.parametrize(
+    ("phrase", "low", "high"),
+    [
+        ("somewhere between satin and gloss", "glossy paint", "satin paint"),
+        ("somewhere between satin and matte", "satin paint", "matte paint"),
+    ],
+)
+def test_between_two_finishes_lies_between_them(phrase: str, low: str, high: str) -> None:
+    assert problems(phrase) == []
+    r = material(phrase)["params"]["roughness"]
+    assert material(low)["params"]["roughness"] < r < material(high)["params"]["roughness"]
+
+
+def test_between_two_finishes_on_a_material() -> None:
+    oak = material("oak, somewhere between satin and matte")
+    assert (
+        material("satin oak")["params"]["roughness"]
+        < oak["params"]["roughness"]
+        < material("matte oak")["params"]["roughness"]
+    )
+
+
+@pytest.mark.parametrize("phrase", ["slate", "riven slate", "hot-rolled steel"])
+def test_slate_and_mill_scale_read_dark(phrase: str) -> None:
+    from cnlmc.colour import linear_to_oklab
+
+    said = material(phrase)
+    rgb = said["params"]["base_color"]
+    if said["model"]["base"] == "conductor":  # what is seen: the tint times the metal's reflectance at normal incidence
+        rgb = [c * f for c, f in zip(rgb, said["params"]["f0"])]
+    assert linear_to_oklab(rgb)[0] < 0.45
+
+
+def test_black_american_walnut_is_walnut() -> None:
+    assert same_look(material("black american walnut worktop"), material("walnut worktop"))
