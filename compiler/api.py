@@ -261,10 +261,29 @@ def _named_complaint_pattern() -> re.Pattern[str]:
     return re.compile(rf"^(?:{leads}) (?P<what>[a-z' -]+?) (?:{verbs}) (?P<degree>.*?)\s*too (?P<how>\S+)$")
 
 
+@lru_cache(maxsize=1)
+def _much_pattern() -> re.Pattern[str]:
+    """'<lead> <what> <verb> <how much>' ('the red is a bit much'), from teaching.toml [politeness]."""
+    from .suggest import teaching
+
+    table = teaching()["politeness"]
+    leads = "|".join(re.escape(w) for w in table["named_complaint_leads"])
+    verbs = "|".join(re.escape(w) for w in table["named_complaint_verbs"])
+    much = "|".join(re.escape(w) for w in sorted(table["named_complaint_much"], key=len, reverse=True))
+    return re.compile(rf"^(?:{leads}) (?P<what>[a-z' -]+?) (?:{verbs}) (?P<much>{much})$")
+
+
 def _named_complaint(low: str, table: Mapping[str, Any], lexicon: Lexicon) -> str | None:
     """'the brushing is too strong', 'the veining is a bit too busy': a complaint about a feature or
-    property the line names is less of it ('less brushing', 'a bit less veining'); None for any
-    other part (what is too much about it — strong, busy, loud — only says that it is too much)."""
+    property the line names is less of it ('less brushing', 'a bit less veining'); so is one that
+    only says how much is too much, of a colour too ('the red is a bit much' = a bit less red);
+    None for any other part (what is too much about it — strong, busy, loud — only says that it
+    is too much)."""
+    much = _much_pattern().match(low)
+    if much is not None:
+        named = {e.category for e in lexicon.lookup(tuple(much["what"].split()))}
+        if named & {"properties", "features", "colours"}:
+            return f"{table['named_complaint_much'][much['much']]} {much['what']}"
     found = _named_complaint_pattern().match(low)
     if found is None:
         return None

@@ -116,8 +116,33 @@ def _kept(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagn
 
 
 def _said_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Refinement | None:
-    """The line as a removal or as one that keeps the material; None for any other line."""
-    return _removal(text, number, offset, tagger, diags) or _kept(text, number, offset, tagger, diags)
+    """The line as a comparative said as a removal ('less of the orange, please'), a removal or one
+    that keeps the material; None for any other line."""
+    return (
+        _comparative_reading(text, number, offset, tagger, diags)
+        or _removal(text, number, offset, tagger, diags)
+        or _kept(text, number, offset, tagger, diags)
+        or _change_after_kept(text, number, offset, tagger, diags)
+    )
+
+
+def _change_after_kept(
+    text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]
+) -> ast.Refinement | None:
+    """'keep the tiles but make them shinier': the change after what stays (cnlmc.kept), read as a
+    line of its own where it stands, with a note for the part read past; None for any other line."""
+    from .kept import kept_before_change
+
+    found = kept_before_change(text, number, offset, tagger)
+    if found is None:
+        return None
+    start, note = found
+    said: list[Diagnostic] = []
+    node = _parsed_line(" " * start + text[start:], number, offset, tagger, said)
+    if not isinstance(node, ast.Refinement) or any(d.is_error for d in said):
+        return None
+    diags.extend([note, *said])
+    return replace(node, span=Span(offset, offset + len(text.rstrip()), number, 1), text=text)
 
 
 def _comparative_reading(
@@ -173,12 +198,13 @@ def _parsed_line(
     try:
         shape, picks = parse_line_shape(words, tagger.lexicon.caches.shapes)
     except ParseFailure as failure:
-        if removals and (comparative := _comparative_reading(text, number, offset, tagger, diags)) is not None:
-            return comparative
         if removals and (removal := _said_line(text, number, offset, tagger, diags)) is not None:
             return removal
         return _failed_line(failure, words, text, tagger.lexicon, diags)
     node = shape.build(words, picks, text)
+    if isinstance(node, ast.Refinement) and (colour_first := _a_colour_compared(node, words, text)) is not None:
+        diags.append(colour_first[1])  # 'make it a lighter blue': blue, then lighter
+        node = colour_first[0]
     if tag_diags and any(d.is_error for d in diags[mark:]) and (whole := _whole_line(words, text, tagger.lexicon)):
         diags[mark:] = whole[1]  # 'rust on steel', 'deeper, closer to burgundy': the unknown word read
         return whole[0]
@@ -190,6 +216,55 @@ def _parsed_line(
             diags.append(change[1])
             return change[0]
     return node
+
+
+def _a_colour_compared(
+    node: ast.Refinement, words: list[Tagged], text: str
+) -> tuple[ast.Refinement, Diagnostic] | None:
+    """'make it a lighter blue', 'a darker, moodier green': on a change line, an article, comparatives
+    and a colour name the colour the material becomes, then the steps ('blue, then lighter': not the
+    current colour made lighter toward blue, as 'lighter blue' without the article is); None for
+    any other line."""
+    if not node.items or node.groups or node.material is not None or node.removed:
+        return None
+    last = node.items[-1]
+    if not isinstance(last.target, ast.Colour):
+        return None
+    first = next((k for k, w in enumerate(words) if w.span.start == node.items[0].word.span.start), None)
+    if first is None or not any(any(c.tag == "ARTICLE" for c in w.candidates) for w in words[:first]):
+        return None
+    colour = last.target
+    group = ast.Group("colour", (), (colour,), (), colour.span)
+    items = (*node.items[:-1], ast.RefineItem(last.word, None, last.span, last.adverbs))
+    said = " ".join(w.text for w in colour.words)
+    note = Diagnostic(last.span, Severity.NOTE, NOTE_CODE, COLOUR_FIRST.format(step=last.word.text, colour=said))
+    return replace(node, items=items, groups=(group,)), note
+
+
+COLOUR_FIRST = "read '{step} {colour}' as {colour}, then {step}"
+
+
+def colour_first_undone(node: ast.Refinement) -> ast.Refinement | None:
+    """The line as it read before `_a_colour_compared` (the colour the last step's target again),
+    for a first line, where there is no material to change: 'a slightly darker grey' is then the
+    comparison of grey, on paint (cnlmc.implied.first_line_comparison); None for any other line."""
+    if len(node.groups) != 1 or not node.items or node.coat or node.features or node.material or node.removed:
+        return None
+    group, last = node.groups[0], node.items[-1]
+    if group.kind != "colour" or group.adverbs or len(group.colours) != 1 or last.target is not None:
+        return None
+    items = (*node.items[:-1], ast.RefineItem(last.word, group.colours[0], last.span, last.adverbs))
+    return replace(node, items=items, groups=())
+
+
+def is_colour_first_note(diag: Diagnostic, node: ast.Refinement) -> bool:
+    """Whether the diagnostic is the note `_a_colour_compared` gave the line."""
+    last = node.items[-1] if node.items else None
+    group = node.groups[0] if node.groups else None
+    if last is None or group is None or not group.colours:
+        return False
+    said = " ".join(w.text for w in group.colours[0].words)
+    return diag.span == last.span and diag.message == COLOUR_FIRST.format(step=last.word.text, colour=said)
 
 
 def _failed_line(
@@ -206,7 +281,7 @@ def _failed_line(
         return _as_change(node, polite[1], text, lexicon, diags)
     bare = _without_article(words)  # 'a darker, moodier green': a line of comparatives
     if bare is not None and isinstance(node := _parsed(bare, text, lexicon), ast.Refinement):
-        return node
+        return _as_change(node, words, text, lexicon, diags)  # 'make it a lighter blue': blue, then lighter
     hedged, notes = reread(words, lexicon)  # 'a touch of sheen' = 'slightly sheen'
     bare = _without_article(hedged) if notes else None  # 'a paler shade of brown' = 'paler brown'
     if bare is not None and isinstance(node := _parsed(bare, text, lexicon), ast.Refinement):
@@ -252,6 +327,9 @@ def _as_change(node: ast.Item, words: list[Tagged], text: str, lexicon: Lexicon,
     material above it names (cnlmc.implied.material_change), with its note; any other node as it is."""
     from .implied import material_change
 
+    if isinstance(node, ast.Refinement) and (colour_first := _a_colour_compared(node, words, text)) is not None:
+        diags.append(colour_first[1])  # 'make it a lighter blue': blue, then lighter
+        return colour_first[0]
     change = material_change(node, words, text, lexicon) if isinstance(node, ast.Material) else None
     if change is None:
         return node
@@ -339,11 +417,13 @@ def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Ite
 
 
 def _without_article(words: list[Tagged]) -> list[Tagged] | None:
-    """'a darker, moodier green': the comparatives without the article before them, or None."""
+    """'a darker, moodier green', 'a slightly darker grey': the comparatives (and their degree
+    words) without the article before them, or None."""
     main = [w for w in words if w.text[:1].isalpha()]
     if len(main) < 2 or not any(c.tag == "ARTICLE" for c in main[0].candidates):
         return None
-    if not any(c.tag == "REFINE" for c in main[1].candidates):
+    after = next((w for w in main[1:] if not all(c.tag == "ADV" for c in w.candidates)), None)
+    if after is None or not any(c.tag == "REFINE" for c in after.candidates):
         return None
     return [w for w in words if w is not main[0]]
 

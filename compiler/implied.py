@@ -61,6 +61,8 @@ def implied_material(
     said, tail = main[:with_at], main[with_at:]  # a 'with' clause may name a colour by a noun ('gold flakes')
     if said and not tail and _describes_after_a_noun(said):
         return _as_described(words, said, lexicon)
+    if said and not tail and _colour_named_after_a_noun(said):  # 'plaster pink', 'sea glass green'
+        return _on_everyday_noun(words, said, lexicon)
     if not said or any(c.tag in NOT_DESCRIBING for w in said for c in w.candidates):
         return None
     if any(c.tag == "REFINE" for w in said for c in w.candidates) and _compares(text, lexicon):
@@ -88,6 +90,44 @@ def _describes_after_a_noun(said: Sequence[Tagged]) -> bool:
         and all(c.tag in (*DESCRIBING, "NOUN") for w in said for c in w.candidates)
         and any(c.tag == "COLOR" for c in said[-1].candidates)  # it ends in a colour: 'satin black'
     )
+
+
+def _colour_named_after_a_noun(said: Sequence[Tagged]) -> bool:
+    """'soft plaster pink', 'sea glass green': describing words, then a noun (the thing the colour
+    is seen on), then a basic colour term at the end (colour_compounds.toml: 'tin periwinkle' is a
+    misplaced colour, not a name): a colour named after the noun, with no material named."""
+    from .passes.colour_compounds import rules
+
+    basic = rules()["basic_terms"]
+    if len(said) < 2 or not any(c.tag == "COLOR" and c.key in basic for c in said[-1].candidates):
+        return False
+    nouns = [k for k, w in enumerate(said) if any(c.tag == "NOUN" and c.key == w.text.lower() for c in w.candidates)]
+    return (
+        bool(nouns)
+        and nouns[-1] == len(said) - 2
+        and all(any(c.tag in DESCRIBING for c in w.candidates) for w in said[: nouns[0]])
+    )
+
+
+def _on_everyday_noun(
+    words: Sequence[Tagged], said: Sequence[Tagged], lexicon: Lexicon
+) -> tuple[list[Tagged], Diagnostic] | None:
+    """The words with the everyday noun after them when that parses ('plaster pink paint': the
+    colour named after plaster, N122), and the note; None otherwise. The grammar takes a colour
+    named after a noun first only, so describing words before it go after it ('soft plaster pink' =
+    'plaster pink soft paint': the order of describing words does not change what they do)."""
+    from .parser import ParseFailure, parse_line_shape
+
+    noun = everyday_noun()
+    at = words.index(said[-2])
+    for order in (list(words), [*words[: at - len(said) + 2], *words[at:], *words[at - len(said) + 2 : at]]):
+        with_noun = [*order, implied_noun(noun, said[-1])]
+        try:
+            parse_line_shape(with_noun, lexicon.caches.shapes)
+        except ParseFailure:
+            continue
+        return with_noun, _note(said, noun, [])
+    return None
 
 
 def _as_described(
@@ -258,12 +298,13 @@ def _starts_with_one_of(said: str, phrases: Sequence[str]) -> str:
 
 
 def as_change(material: ast.Material, words: Sequence[Tagged]) -> tuple[ast.Refinement, Diagnostic]:
-    """'make it blue': the described words as a change line of the material above (its groups and
-    'with' clauses; the implied noun is dropped), and the note saying so."""
+    """'make it blue': the described words as a change line of the material above (its groups,
+    'with' clauses and inline comparatives: 'a slightly darker grey'; the implied noun is dropped),
+    and the note saying so."""
     typed = [w for w in words if w.text[:1].isalpha() and w.implied_by is None]
     said = typed or [w for w in words if w.text[:1].isalpha()]  # 'between beige and grey': one implied colour
     change = ast.Refinement(
-        None, (), material.span, material.text, material.coat, material.features, groups=material.groups
+        None, material.refinements, material.span, material.text, material.coat, material.features, material.groups
     )
     written = written_text(said)
     message = f"read '{written}' as a change of the material above: its words apply to it"

@@ -23,7 +23,7 @@ from .tagged import NOTE_CODE, Tagged
 if TYPE_CHECKING:
     from .tagger import Tagger
 
-__all__ = ["kept_line"]
+__all__ = ["kept_before_change", "kept_line"]
 
 #: what a kept line may name after its keep phrase, by grammar terminal
 NAMED = ("ADJ", "FEATURE", "COAT", "COLOR", "PROP", "NOUN", "SHADE", "ARTICLE")
@@ -58,6 +58,26 @@ def kept_line(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast.
     if _approval(text) or _keeps(text, start, number, offset, tagger):
         note = f"read '{text.strip()}' as keeping the material as it is: nothing changes"
         return ast.Refinement(None, (), span, text), Diagnostic(span, Severity.NOTE, NOTE_CODE, note)
+    return None
+
+
+def kept_before_change(text: str, number: int, offset: int, tagger: Tagger) -> tuple[int, Diagnostic] | None:
+    """'keep the tiles but make them shinier': where the change after a kept part and its joining
+    word ('but': teaching.toml [politeness] remark_breaks) starts, and the note reading the kept
+    part past; None when no kept part opens the line."""
+    low = text.lower()
+    for joiner in teaching()["politeness"]["remark_breaks"]:
+        found = re.search(rf"[\s,]+{re.escape(joiner)}\s+", low)
+        if found is None or not text[found.end() :].strip():
+            continue
+        kept = text[: found.start()]
+        start = len(kept) - len(kept.lstrip())
+        if _keeps(kept, start, number, offset, tagger):
+            span = Span(offset + start, offset + found.end() - 1, number, start + 1)
+            said = text[start : found.end()].strip()
+            return found.end(), Diagnostic(
+                span, Severity.NOTE, NOTE_CODE, f"read past '{said}': what stays, then the change"
+            )
     return None
 
 

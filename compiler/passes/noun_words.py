@@ -26,8 +26,8 @@ def apply_noun_qualifiers(state: MaterialState, ctx: Context) -> None:
 
 
 def _apply(state: MaterialState, ctx: Context, group: ast.Group, colour: ast.Colour, noun: ast.Word) -> None:
-    if colour.base is not None:  # 'walnut brown': the colour word says the colour
-        _note(state, colour, f"read '{_text(colour)}' as the colour '{colour.base.text}', named after {noun.text}")
+    if colour.base is not None:  # 'plaster pink': the colour word says the colour, as seen on the noun
+        _lean_toward_noun(state, ctx, colour, noun)
         return
     adjective = ctx.lexicon.entry("adjectives", group.adjectives[0].key) if group.adjectives else None
     target = adjective.get("colour_target", "base") if adjective is not None else "base"
@@ -38,6 +38,30 @@ def _apply(state: MaterialState, ctx: Context, group: ast.Group, colour: ast.Col
             return
     param = "coat.color" if target == "coat" and state.coat is not None else "base_color"
     apply_noun_colour(state, ctx, colour, param)
+
+
+def _lean_toward_noun(state: MaterialState, ctx: Context, colour: ast.Colour, noun: ast.Word) -> None:
+    """'plaster pink', 'sea glass green', 'concrete grey': the colour word leans toward the noun's
+    own colour by colour_compounds.toml [named_after] share, in OKLab (plaster pink is a pale pink,
+    not the survey's pink), with a note; a noun without a colour of its own leaves the colour word."""
+    from ..colour import mix_oklab
+    from .colour_compounds import rules
+
+    entry = ctx.lexicon.entry("nouns", noun.key)
+    own = entry.get("base_color") if entry is not None else None
+    current = state.params.get("base_color")
+    assert colour.base is not None
+    if own is None or current is None:
+        _note(state, colour, f"read '{_text(colour)}' as the colour '{colour.base.text}', named after {noun.text}")
+        return
+    share = float(rules()["named_after"]["share"])
+    state.params["base_color"] = mix_oklab(current, list(own), share)
+    state.note("base_color", state.params["base_color"], f"colours: {_text(colour)} (toward {noun.key})", (noun,))
+    _note(
+        state,
+        colour,
+        f"read '{_text(colour)}' as the colour '{colour.base.text}' as seen on {noun.text}: {share:g} of the way toward its colour",
+    )
 
 
 def noun_colour(ctx: Context, colour: ast.Colour) -> list[float] | None:

@@ -304,11 +304,19 @@ def test_a_metal_noun_before_plated_is_the_plating(compile_text):
     assert notes(diags, "N122") == ["read 'titanium plated' as plated with titanium"]
 
 
-def test_a_colour_named_after_a_noun_is_the_colour_with_a_note(compile_text):
+def test_a_colour_named_after_a_noun_is_the_colour_as_seen_on_it_with_a_note(compile_text):
+    """'oak green': green leaning half way (OKLab) toward oak's own colour (colour_compounds.toml
+    [named_after]), as 'plaster pink' is a paler pink."""
+    from cnlmc.colour import mix_oklab
+
     named, diags = compiled(compile_text, "oak green velvet")
     green, _ = compiled(compile_text, "green velvet")
-    assert named["params"]["base_color"] == green["params"]["base_color"]
-    assert notes(diags, "N122") == ["read 'oak green' as the colour 'green', named after oak"]
+    oak, _ = compiled(compile_text, "oak")
+    expected = mix_oklab(green["params"]["base_color"], oak["params"]["base_color"], 0.5)
+    assert named["params"]["base_color"] == pytest.approx(expected, abs=1e-6)
+    assert notes(diags, "N122") == [
+        "read 'oak green' as the colour 'green' as seen on oak: 0.5 of the way toward its colour"
+    ]
 
 
 def test_a_noun_alone_tints_with_its_own_colour(compile_text):

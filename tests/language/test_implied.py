@@ -173,7 +173,7 @@ def test_an_inline_comparative_before_a_colour_alone_implies_the_material_too(te
     result = compiled(text)
     assert result.ok
     assert [n for n in notes(result) if n.startswith("no material named")] == [
-        f"no material named: read '{text}' as '{text} paint'"
+        f"no material named: read '{text}' as '{text} paint' (a comparison as the first line)"
     ]
     assert result.materials[0]["params"] == compiled(f"{text} paint").materials[0]["params"]
     assert result.materials[0]["params"] != compiled(plain).materials[0]["params"]

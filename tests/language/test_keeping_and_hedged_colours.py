@@ -333,3 +333,57 @@ def test_slate_and_mill_scale_read_dark(phrase: str) -> None:
 
 def test_black_american_walnut_is_walnut() -> None:
     assert same_look(material("black american walnut worktop"), material("walnut worktop"))
+
+
+# ---------------------------------------------------------------- colours named after a thing; more change lines
+
+
+@pytest.mark.parametrize(
+    ("phrase", "colour"), [("soft plaster pink", "pink paint"), ("sea glass green", "green paint")]
+)
+def test_a_colour_named_after_a_thing_leans_toward_its_colour(phrase: str, colour: str) -> None:
+    """'plaster pink' is pink as seen on plaster: a paler pink than the survey's, same hue family."""
+    assert problems(phrase) == []
+    L, C, h = lch(material(phrase)["params"]["base_color"])
+    L0, C0, h0 = lch(material(colour)["params"]["base_color"])
+    assert L > L0 and C < C0 and hue_gap(h, h0) < 25
+
+
+def test_an_object_read_as_its_material_names_no_colour() -> None:
+    assert "E002" in problems("smooth peanut butter")  # 'nut' is steel by rule: no 'nut butter' colour
+
+
+@pytest.mark.parametrize(
+    ("phrase", "line", "plain"),
+    [
+        ("terracotta floor tiles", "keep the tiles but make them shinier", "shinier"),
+        ("glossy red plastic", "the red is a bit much", "a bit less red"),
+        ("white oak", "the grain is too much", "less grain"),
+        ("terracotta floor tiles", "too orange, can we push it towards pink?", "less orange, more pink"),
+        ("oak veneer", "less of the orange, please", "less orange"),
+        ("grey concrete", "a slightly darker grey than the sample", "slightly darker grey"),
+    ],
+)
+def test_more_ways_of_saying_a_change(phrase: str, line: str, plain: str) -> None:
+    said, bare = refined(phrase, line), refined(phrase, plain)
+    assert said.result.ok, [d.message for d in said.result.diagnostics]
+    assert same_look(said.material, bare.material)
+    assert said.material != material(phrase)
+
+
+@pytest.mark.parametrize(
+    ("phrase", "plain"),
+    [
+        ("an old rusty wheelbarrow", "old rusty steel"),
+        ("steel with flecks of rust", "steel with spots of rust"),
+    ],
+)
+def test_everyday_words_for_things(phrase: str, plain: str) -> None:
+    assert problems(phrase) == []
+    assert same_look(material(phrase), material(plain))
+
+
+@pytest.mark.parametrize(("phrase", "hue"), [("conker brown leather", (20, 60)), ("blonde ash veneer", (55, 95))])
+def test_everyday_colour_names(phrase: str, hue: tuple[int, int]) -> None:
+    assert problems(phrase) == []
+    assert hue[0] < lch(material(phrase)["params"]["base_color"])[2] < hue[1]
