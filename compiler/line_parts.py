@@ -236,7 +236,7 @@ def _echo(written: str) -> bool:
         return True
     words = _without_edges(words, [*table["trailing"], *table["degree_tails"]], at_start=False)
     said = " ".join(w for w in words if w not in table["echo_read_past"])  # 'back': the tagger reads it past
-    return said in table["idioms"]
+    return said in table["idioms"] or said in table["echoes"]
 
 
 def _without_edges(words: list[str], phrases: list[str] | tuple[str, ...], at_start: bool) -> list[str]:

@@ -321,6 +321,17 @@ def _inside(diag: Diagnostic, spans: Sequence[Span], any_code: bool = False) -> 
     return any(s.start <= at.start and at.end <= s.end for s in spans)
 
 
+def _part_of_a_word(word: Tagged, words: Sequence[Tagged]) -> bool:
+    """A comparative word formation split off a written word ('er' of 'older' = more old: the parts
+    touch) is no hesitation ('er, darker')."""
+    if not word.candidates or not all(c.tag == "REFINE" for c in word.candidates):
+        return False
+    s = word.span
+    return any(
+        o is not word and o.span.line == s.line and (o.span.end == s.start or o.span.start == s.end) for o in words
+    )
+
+
 def _edge_phrase(words: Sequence[Tagged], phrases: Sequence[str], marks: frozenset[str], at_start: bool) -> int:
     """How many words at this edge are a listed phrase (the longest), with the mark beside it. A
     word may hold several ('I'd like' joined by a head-word rule), so the texts are compared joined."""
@@ -329,7 +340,7 @@ def _edge_phrase(words: Sequence[Tagged], phrases: Sequence[str], marks: frozens
     taken = 0
     for n in range(1, len(words)):
         edge = lowered[:n] if at_start else lowered[-n:]
-        if " ".join(edge) in listed:
+        if " ".join(edge) in listed and not _part_of_a_word(words[n - 1] if at_start else words[-n], words):
             taken = n
     if not taken:
         return 0

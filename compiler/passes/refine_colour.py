@@ -9,6 +9,7 @@ paper §4.2), a hue axis on `<colour>.<axis>` (bluer and yellower share 'blue-ye
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from .. import ast
@@ -34,6 +35,10 @@ from .refine_target import item_text, item_words, note
 COLOUR_LIMITS = (0.0, 1.0)
 LIGHTNESS_AXIS = "lightness"  # the axis of darker / lighter: its bracket is on the colour's own key
 NEUTRAL_CHROMA = 1e-4  # an OKLCh chroma below this has no hue to saturate
+#: a named colour below this OKLCh chroma (white, grey, black) has no hue to step toward: 'more grey'
+#: moves the whole colour toward it (lightness too), so black can be made more grey (our choice:
+#: colour_compounds.toml's neutral_chroma reads 0.08 as neutral; the survey's grey has 0.004)
+ACHROMATIC = 0.02
 UNMOVED = 1e-4  # a colour step smaller than this (per linear channel) is no visible change
 
 
@@ -155,6 +160,9 @@ def refine_named_colour(
         return
     _l, a, b = linear_to_oklab(resolve_colour(target, ctx))
     amount = 1.0 - (1.0 - HUE_STEP) ** weight
+    if direction > 0 and math.hypot(a, b) < ACHROMATIC:  # 'more grey' on black: a step of the whole colour
+        _closer(state, item, param, resolve_colour(target, ctx), amount)
+        return
     if direction < 0 and hue_share(apparent(state, param, holder[name]), (a, b)) < NEUTRAL_CHROMA:
         state.diagnostics.append(
             note(item.span, "N105", f"'{item.word.text} {colour_text(target)}': the colour has none of it to take away")

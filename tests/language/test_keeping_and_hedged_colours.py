@@ -387,3 +387,34 @@ def test_everyday_words_for_things(phrase: str, plain: str) -> None:
 def test_everyday_colour_names(phrase: str, hue: tuple[int, int]) -> None:
     assert problems(phrase) == []
     assert hue[0] < lch(material(phrase)["params"]["base_color"])[2] < hue[1]
+
+
+@pytest.mark.parametrize(
+    ("phrase", "line", "plain"),
+    [
+        ("pine planks", "make them look older and rougher", "more weathered and rougher"),
+        ("white marble", "the veining is too busy, can we lose it", "less veining"),
+        ("red plastic", "make it a lighter blue", "make it blue"),
+    ],
+)
+def test_change_lines_with_derived_comparatives_echoes_and_named_colours(phrase: str, line: str, plain: str) -> None:
+    said = refined(phrase, line)
+    assert said.result.ok, [d.message for d in said.result.diagnostics]
+    if line.startswith("make it a lighter"):  # blue, then lighter: a blue lighter than plain blue
+        blue = refined(phrase, plain).material["params"]["base_color"]
+        L, _C, h = lch(said.material["params"]["base_color"])
+        assert L > lch(blue)[0] and hue_gap(h, lch(blue)[2]) < 15
+    else:
+        assert same_look(said.material, refined(phrase, plain).material)
+
+
+def test_more_grey_on_black_moves_toward_grey() -> None:
+    black = material("glossy black plastic")["params"]["base_color"]
+    greyer = refined("glossy black plastic", "more grey").material["params"]["base_color"]
+    assert lch(greyer)[0] > lch(black)[0] + 0.05
+    assert refined("glossy black plastic", "more grey").result.ok
+
+
+def test_a_wine_named_by_its_grape() -> None:
+    assert same_look(material("a glass of merlot"), material("red wine"))
+    assert material("merlot velvet")["model"]["base"] != "glass"  # before another material, the colour
