@@ -8,7 +8,7 @@ from typing import Any
 from . import ast
 from .default_name import name_words
 from .diagnostics import Diagnostic, error, warning
-from .document import colour_first_undone, is_colour_first_note, iter_items
+from .document import iter_items, read_without_removal
 from .ir import JSONDict, document_ir, material_ir
 from .lexicon import Lexicon
 from .params import Params
@@ -109,9 +109,6 @@ def orphan_line(item: ast.Item, lexicon: Lexicon, diags: list[Diagnostic]) -> as
     any other gets W104."""
     if isinstance(item, ast.Refinement) and item.material is not None:
         return item.material  # 'switch to brass' first: brass
-    if isinstance(item, ast.Refinement) and (undone := colour_first_undone(item)) is not None:
-        diags[:] = [d for d in diags if not is_colour_first_note(d, item)]
-        item = undone  # 'a slightly darker grey' first: the comparison of the colour, on paint
     if isinstance(item, ast.Refinement) and (item.items or item.features or item.coat is not None):
         from .hedges import first_line_clause, first_line_described, first_line_finish  # first-line: rare
         from .implied import first_line_comparison
@@ -126,8 +123,6 @@ def orphan_line(item: ast.Item, lexicon: Lexicon, diags: list[Diagnostic]) -> as
             diags.append(found[1])
             return found[0]
     if isinstance(item, ast.Refinement) and item.removed:  # 'no sheen' first: nothing to take it off
-        from .document import read_without_removal
-
         plain = read_without_removal(item, lexicon)
         if plain is not None:
             diags[:] = [

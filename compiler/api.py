@@ -253,12 +253,17 @@ DESCRIBING_CATEGORIES = frozenset({"adjectives", "colours", "shades"})
 @lru_cache(maxsize=1)
 def _named_complaint_pattern() -> re.Pattern[str]:
     """'<lead> <feature> <verb> [degree] too <word>', from teaching.toml [politeness]."""
+    leads, verbs = _complaint_leads_and_verbs()
+    return re.compile(rf"^(?:{leads}) (?P<what>[a-z' -]+?) (?:{verbs}) (?P<degree>.*?)\s*too (?P<how>\S+)$")
+
+
+def _complaint_leads_and_verbs() -> tuple[str, str]:
+    """teaching.toml [politeness] named_complaint_leads and _verbs, each as a regex alternation."""
     from .suggest import teaching
 
     table = teaching()["politeness"]
     leads = "|".join(re.escape(w) for w in table["named_complaint_leads"])
-    verbs = "|".join(re.escape(w) for w in table["named_complaint_verbs"])
-    return re.compile(rf"^(?:{leads}) (?P<what>[a-z' -]+?) (?:{verbs}) (?P<degree>.*?)\s*too (?P<how>\S+)$")
+    return leads, "|".join(re.escape(w) for w in table["named_complaint_verbs"])
 
 
 @lru_cache(maxsize=1)
@@ -266,9 +271,8 @@ def _much_pattern() -> re.Pattern[str]:
     """'<lead> <what> <verb> <how much>' ('the red is a bit much'), from teaching.toml [politeness]."""
     from .suggest import teaching
 
+    leads, verbs = _complaint_leads_and_verbs()
     table = teaching()["politeness"]
-    leads = "|".join(re.escape(w) for w in table["named_complaint_leads"])
-    verbs = "|".join(re.escape(w) for w in table["named_complaint_verbs"])
     much = "|".join(re.escape(w) for w in sorted(table["named_complaint_much"], key=len, reverse=True))
     return re.compile(rf"^(?:{leads}) (?P<what>[a-z' -]+?) (?:{verbs}) (?P<much>{much})$")
 

@@ -161,3 +161,13 @@ def apply_ops(rgb: Sequence[float], ops: Iterable[Mapping[str, Any]]) -> list[fl
         elif kind == "toward":
             out = toward_hue(out, op["oklab"], op["amount"])
     return clamp01(out)
+
+
+def hue_gap(x: Sequence[float], y: Sequence[float], least_chroma: float) -> float | None:
+    """The OKLCh hue angle between two linear colours in degrees (0..180), or None when either has
+    less chroma than `least_chroma` (a grey has no hue to compare)."""
+    (_l1, a1, b1), (_l2, a2, b2) = linear_to_oklab(x), linear_to_oklab(y)
+    if math.hypot(a1, b1) < least_chroma or math.hypot(a2, b2) < least_chroma:
+        return None
+    gap = abs(math.degrees(math.atan2(b1, a1) - math.atan2(b2, a2))) % 360.0
+    return min(gap, 360.0 - gap)

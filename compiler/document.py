@@ -202,9 +202,6 @@ def _parsed_line(
             return removal
         return _failed_line(failure, words, text, tagger.lexicon, diags)
     node = shape.build(words, picks, text)
-    if isinstance(node, ast.Refinement) and (colour_first := _a_colour_compared(node, words, text)) is not None:
-        diags.append(colour_first[1])  # 'make it a lighter blue': blue, then lighter
-        node = colour_first[0]
     if tag_diags and any(d.is_error for d in diags[mark:]) and (whole := _whole_line(words, text, tagger.lexicon)):
         diags[mark:] = whole[1]  # 'rust on steel', 'deeper, closer to burgundy': the unknown word read
         return whole[0]
@@ -216,55 +213,6 @@ def _parsed_line(
             diags.append(change[1])
             return change[0]
     return node
-
-
-def _a_colour_compared(
-    node: ast.Refinement, words: list[Tagged], text: str
-) -> tuple[ast.Refinement, Diagnostic] | None:
-    """'make it a lighter blue', 'a darker, moodier green': on a change line, an article, comparatives
-    and a colour name the colour the material becomes, then the steps ('blue, then lighter': not the
-    current colour made lighter toward blue, as 'lighter blue' without the article is); None for
-    any other line."""
-    if not node.items or node.groups or node.material is not None or node.removed:
-        return None
-    last = node.items[-1]
-    if not isinstance(last.target, ast.Colour):
-        return None
-    first = next((k for k, w in enumerate(words) if w.span.start == node.items[0].word.span.start), None)
-    if first is None or not any(any(c.tag == "ARTICLE" for c in w.candidates) for w in words[:first]):
-        return None
-    colour = last.target
-    group = ast.Group("colour", (), (colour,), (), colour.span)
-    items = (*node.items[:-1], ast.RefineItem(last.word, None, last.span, last.adverbs))
-    said = " ".join(w.text for w in colour.words)
-    note = Diagnostic(last.span, Severity.NOTE, NOTE_CODE, COLOUR_FIRST.format(step=last.word.text, colour=said))
-    return replace(node, items=items, groups=(group,)), note
-
-
-COLOUR_FIRST = "read '{step} {colour}' as {colour}, then {step}"
-
-
-def colour_first_undone(node: ast.Refinement) -> ast.Refinement | None:
-    """The line as it read before `_a_colour_compared` (the colour the last step's target again),
-    for a first line, where there is no material to change: 'a slightly darker grey' is then the
-    comparison of grey, on paint (cnlmc.implied.first_line_comparison); None for any other line."""
-    if len(node.groups) != 1 or not node.items or node.coat or node.features or node.material or node.removed:
-        return None
-    group, last = node.groups[0], node.items[-1]
-    if group.kind != "colour" or group.adverbs or len(group.colours) != 1 or last.target is not None:
-        return None
-    items = (*node.items[:-1], ast.RefineItem(last.word, group.colours[0], last.span, last.adverbs))
-    return replace(node, items=items, groups=())
-
-
-def is_colour_first_note(diag: Diagnostic, node: ast.Refinement) -> bool:
-    """Whether the diagnostic is the note `_a_colour_compared` gave the line."""
-    last = node.items[-1] if node.items else None
-    group = node.groups[0] if node.groups else None
-    if last is None or group is None or not group.colours:
-        return False
-    said = " ".join(w.text for w in group.colours[0].words)
-    return diag.span == last.span and diag.message == COLOUR_FIRST.format(step=last.word.text, colour=said)
 
 
 def _failed_line(
@@ -281,7 +229,7 @@ def _failed_line(
         return _as_change(node, polite[1], text, lexicon, diags)
     bare = _without_article(words)  # 'a darker, moodier green': a line of comparatives
     if bare is not None and isinstance(node := _parsed(bare, text, lexicon), ast.Refinement):
-        return _as_change(node, words, text, lexicon, diags)  # 'make it a lighter blue': blue, then lighter
+        return node
     hedged, notes = reread(words, lexicon)  # 'a touch of sheen' = 'slightly sheen'
     bare = _without_article(hedged) if notes else None  # 'a paler shade of brown' = 'paler brown'
     if bare is not None and isinstance(node := _parsed(bare, text, lexicon), ast.Refinement):
@@ -327,9 +275,6 @@ def _as_change(node: ast.Item, words: list[Tagged], text: str, lexicon: Lexicon,
     material above it names (cnlmc.implied.material_change), with its note; any other node as it is."""
     from .implied import material_change
 
-    if isinstance(node, ast.Refinement) and (colour_first := _a_colour_compared(node, words, text)) is not None:
-        diags.append(colour_first[1])  # 'make it a lighter blue': blue, then lighter
-        return colour_first[0]
     change = material_change(node, words, text, lexicon) if isinstance(node, ast.Material) else None
     if change is None:
         return node

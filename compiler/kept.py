@@ -37,14 +37,14 @@ MARKS = re.compile(r"[,.!?;:…]+")
 @lru_cache(maxsize=1)
 def _rules() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str], frozenset[str], frozenset[str]]:
     """The openers, the keep phrases and the trailing words as patterns, the approvals, and the
-    pronouns that stand for the material ('keep it matte')."""
+    pronouns that stand for the material ('keep it matte': not 'keep this blue', what is kept)."""
     table: dict[str, Any] = teaching()["keeping"]
     openers = [*teaching()["removal"]["openers"], *table["approvals"], *table["openers"]]
     opener = re.compile(rf"(?:{alternatives(openers)})\s*[,!.:;]?\s+")
     keep = re.compile(rf"(?:{alternatives(table['leading'])})(?=\s|$)")
     trailing = re.compile(rf"(?:[\s,.!?]+(?:{alternatives(table['trailing'])}))*[\s,.!?]*$")
     approvals = frozenset(" ".join(a.split()) for a in table["approvals"])
-    return opener, keep, trailing, approvals, frozenset(teaching()["politeness"]["pronouns"])
+    return opener, keep, trailing, approvals, frozenset(table["material_pronouns"])
 
 
 def kept_line(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast.Refinement, Diagnostic] | None:

@@ -13,11 +13,12 @@ from __future__ import annotations
 import os
 import re
 import tomllib
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from functools import lru_cache
 from importlib import resources
 from importlib.resources.abc import Traversable
 from pathlib import Path
+from types import MappingProxyType
 from typing import Any
 
 from .errors import UsageError
@@ -251,7 +252,7 @@ def add_survey_colours(builder: Builder, names: dict[str, Any], source: SourceTe
     (the tagger reads a hyphenated word the lexicon lacks as its spaced form: "blue-grey")."""
     from . import colour
 
-    rules = tomllib.loads(colour_rules_file().read_text(encoding="utf-8"))
+    rules = colour_rules()
     colours = builder.raw["colours"]
     others = {f for c, by in builder.raw.items() if c != "colours" for k, e in by.items() for f in _forms(k, e)}
     others -= {*rules["noun_colours"], *rules["ish_colours"]}
@@ -305,7 +306,7 @@ def add_survey_colours(builder: Builder, names: dict[str, Any], source: SourceTe
     for name in sorted(added):  # "very dark brown" (#1d0200, a red-black): 'very' on dark brown
         first, _, rest = name.partition(" ")
         if (
-            first == "very"
+            first in rules["drifted_degrees"]
             and rest in colours
             and _hue_drifted(colours[name].data["hex"], colours[rest].data["hex"], rules)
         ):
@@ -338,19 +339,21 @@ def add_survey_colours(builder: Builder, names: dict[str, Any], source: SourceTe
             builder._merge("colours", name, entry, source)
 
 
-def _hue_drifted(hex_code: str, base_hex: str, rules: dict[str, Any]) -> bool:
+def _hue_drifted(hex_code: str, base_hex: str, rules: Mapping[str, Any]) -> bool:
     """Whether a survey compound's hue lies further from its colour's than a shade moves it
     (colour_rules.toml shade_hue_degrees); never for colours too grey to have a hue."""
-    import math
-
     from . import colour
 
-    (_l1, a1, b1), (_l2, a2, b2) = (colour.linear_to_oklab(colour.hex_to_linear(h)) for h in (hex_code, base_hex))
-    least = float(rules["shade_hue_min_chroma"])
-    if math.hypot(a1, b1) < least or math.hypot(a2, b2) < least:
-        return False
-    gap = abs(math.degrees(math.atan2(b1, a1) - math.atan2(b2, a2))) % 360.0
-    return min(gap, 360.0 - gap) > float(rules["shade_hue_degrees"])
+    gap = colour.hue_gap(
+        colour.hex_to_linear(hex_code), colour.hex_to_linear(base_hex), float(rules["shade_hue_min_chroma"])
+    )
+    return gap is not None and gap > float(rules["shade_hue_degrees"])
+
+
+@lru_cache(maxsize=1)
+def colour_rules() -> Mapping[str, Any]:
+    """stdlib/data/colour_rules.toml, read once per process (immutable package data)."""
+    return MappingProxyType(tomllib.loads(colour_rules_file().read_text(encoding="utf-8")))
 
 
 def _forms(key: str, entry: RawEntry) -> list[str]:

@@ -40,15 +40,22 @@ def _apply(state: MaterialState, ctx: Context, group: ast.Group, colour: ast.Col
     apply_noun_colour(state, ctx, colour, param)
 
 
+#: nouns whose base colour is not the colour one sees: a metal's is a tint of its measured
+#: reflectance ('chrome yellow', 'iron red' are the colour words; a glass's clear tint does lean
+#: its colour word paler: 'sea glass green')
+TINTED_MODELS = ("conductor",)
+
+
 def _lean_toward_noun(state: MaterialState, ctx: Context, colour: ast.Colour, noun: ast.Word) -> None:
-    """'plaster pink', 'sea glass green', 'concrete grey': the colour word leans toward the noun's
-    own colour by colour_compounds.toml [named_after] share, in OKLab (plaster pink is a pale pink,
-    not the survey's pink), with a note; a noun without a colour of its own leaves the colour word."""
+    """'plaster pink', 'concrete grey', 'oak green': the colour word leans toward the noun's own
+    colour by colour_compounds.toml [named_after] share, in OKLab (plaster pink is a pale pink, not
+    the survey's pink), with a note; a noun whose base colour is no colour one sees (a metal:
+    TINTED_MODELS) or that has none leaves the colour word."""
     from ..colour import mix_oklab
     from .colour_compounds import rules
 
     entry = ctx.lexicon.entry("nouns", noun.key)
-    own = entry.get("base_color") if entry is not None else None
+    own = entry.get("base_color") if entry is not None and entry.get("model") not in TINTED_MODELS else None
     current = state.params.get("base_color")
     assert colour.base is not None
     if own is None or current is None:

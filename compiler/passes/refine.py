@@ -14,18 +14,22 @@ steps, 'slightly darker': half of one). Colour refinements live in passes/refine
 
 from __future__ import annotations
 
+import math
+
 from .. import ast
 from ..diagnostics import Diagnostic, Severity, warning
+from ..lexicon import Entry
 from ..removed import much_less
 from ..state import Context, MaterialState
 from ..tagged import NOTE_CODE
 from .base import colour_seen_through
 from .coats import apply_clauses
+from .colours import colour_text, resolve_colour
 from .refine_colour import refine_colour, refine_named_colour
 from .refine_effects import brings_treatment, refine_adjective
 from .refine_missing_map import add_missing_map
 from .refine_property import acted_on, refine_property
-from .refine_target import item_words, refine_weight
+from .refine_target import item_words, note, refine_weight
 from .words import apply_described, apply_group
 
 __all__ = ["apply_inline_refinements", "apply_refinement", "apply_refinement_line", "refine_property"]
@@ -89,12 +93,63 @@ def apply_refinement_line(state: MaterialState, ctx: Context, line: ast.Refineme
     ('with a glossy varnish' below 'walnut' adds the coat; passes/coats.py)."""
     if line.groups:  # 'make it blue': the describing words apply to the material as it is, then
         apply_described(state, ctx, line.groups)  # the comparatives said with them ('a bit darker, like cream')
-    for item in line.items:
+    items = list(line.items)
+    if items and items[-1].target is not None:  # 'a darker, moodier green': the green first, then both steps
+        items[-1] = named_first(state, ctx, items[-1])
+    for item in items:
         apply_refinement(state, ctx, item)
     if line.removed:  # reached here only when the material above has none of them
         _nothing_removed(state, ctx, line)
     if line.coat is not None or line.features:
         apply_clauses(state, ctx, line.coat, line.features)
+
+
+def named_first(state: MaterialState, ctx: Context, item: ast.RefineItem) -> ast.RefineItem:
+    """A change line's comparative with a target it does not step toward, said as what the
+    material becomes, then the step: 'a lighter blue' under red plastic is blue, then lighter (the
+    paper's 'darker blue' under blue steps the blue, and 'a darker grey' under dark grey steps the
+    dark grey: a colour of the same hue family, colour_rules.toml shade_hue_degrees, is only
+    stepped); 'glossier satin' under oak (as 'somewhere between satin and gloss' reads) is satin,
+    then glossier. Returns the item to apply (without its target when the target was applied)."""
+    entry = ctx.lexicon.require("refinements", item.word.key)
+    target = item.target
+    if isinstance(target, ast.Colour) and entry.get("target") == "colour" and target.base is not None:
+        if not _other_colour(state, ctx, target):
+            return item
+        apply_described(state, ctx, (ast.Group("colour", (), (target,), (), target.span),))
+    elif isinstance(target, ast.Word) and target.category == "adjectives" and entry.get("target") == "roughness":
+        if not _sets_roughness(ctx.lexicon.require("adjectives", target.key)):
+            return item
+        apply_described(state, ctx, (ast.Group("adjective", (), (), (target,), target.span),))
+    else:
+        return item
+    said = f"{item.word.text} {colour_text(target) if isinstance(target, ast.Colour) else target.text}"
+    named = colour_text(target) if isinstance(target, ast.Colour) else target.text
+    state.diagnostics.append(note(item.span, NOTE_CODE, f"read '{said}' as {named}, then {item.word.text}"))
+    return ast.RefineItem(item.word, None, item.span, item.adverbs)
+
+
+def _other_colour(state: MaterialState, ctx: Context, target: ast.Colour) -> bool:
+    """Whether the named colour is of another hue family than the material's (one of the two has a
+    hue and the other none, or their OKLCh hues lie further apart than a shade moves one)."""
+    from ..colour import hue_gap, linear_to_oklab
+    from ..lexicon_load import colour_rules
+
+    rules = colour_rules()
+    current = state.params.get("base_color")
+    if not isinstance(current, list):
+        return False
+    named, least = resolve_colour(target, ctx), float(rules["shade_hue_min_chroma"])
+    gap = hue_gap(current, named, least)
+    if gap is None:  # one of the two, or both, a grey: another family when only one has a hue
+        chroma = [math.hypot(*linear_to_oklab(c)[1:]) for c in (current, named)]
+        return (chroma[0] >= least) != (chroma[1] >= least)
+    return gap > float(rules["shade_hue_degrees"])
+
+
+def _sets_roughness(adjective: Entry) -> bool:
+    """A finish word that sets the roughness ('satin', 'matte', 'glossy')."""
+    return any(e.get("param") == "roughness" and e.get("op") == "set" for e in adjective.get("effects", []))
 
 
 def _nothing_removed(state: MaterialState, ctx: Context, line: ast.Refinement) -> None:

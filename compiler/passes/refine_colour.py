@@ -35,10 +35,6 @@ from .refine_target import item_text, item_words, note
 COLOUR_LIMITS = (0.0, 1.0)
 LIGHTNESS_AXIS = "lightness"  # the axis of darker / lighter: its bracket is on the colour's own key
 NEUTRAL_CHROMA = 1e-4  # an OKLCh chroma below this has no hue to saturate
-#: a named colour below this OKLCh chroma (white, grey, black) has no hue to step toward: 'more grey'
-#: moves the whole colour toward it (lightness too), so black can be made more grey (our choice:
-#: colour_compounds.toml's neutral_chroma reads 0.08 as neutral; the survey's grey has 0.004)
-ACHROMATIC = 0.02
 UNMOVED = 1e-4  # a colour step smaller than this (per linear channel) is no visible change
 
 
@@ -160,7 +156,7 @@ def refine_named_colour(
         return
     _l, a, b = linear_to_oklab(resolve_colour(target, ctx))
     amount = 1.0 - (1.0 - HUE_STEP) ** weight
-    if direction > 0 and math.hypot(a, b) < ACHROMATIC:  # 'more grey' on black: a step of the whole colour
+    if direction > 0 and math.hypot(a, b) < _achromatic():  # 'more grey' on black: a step of the whole colour
         _closer(state, item, param, resolve_colour(target, ctx), amount)
         return
     if direction < 0 and hue_share(apparent(state, param, holder[name]), (a, b)) < NEUTRAL_CHROMA:
@@ -177,6 +173,13 @@ def refine_named_colour(
     holder[name] = new
     note_unmoved(state, item, param, current, new)
     state.note(param, new, f"refinements.{item.word.key} {colour_text(target)}: hue step", item_words(item))
+
+
+def _achromatic() -> float:
+    """The OKLCh chroma under which a named colour has no hue to step toward (colour_rules.toml)."""
+    from ..lexicon_load import colour_rules
+
+    return float(colour_rules()["achromatic_chroma"])
 
 
 def _closer(state: MaterialState, item: ast.RefineItem, param: str, goal: list[float], amount: float) -> None:

@@ -69,7 +69,6 @@ def test_keep_it_with_a_describing_word_asks_for_it() -> None:
         ("white oak", "keep the grain, dark brown"),
         ("glossy red plastic", "keep the red and matte"),
         ("white oak", "stick with the walnut"),
-        ("matte red plastic", "keep this glossy"),
         ("oak", "keep the"),
     ],
 )
@@ -249,7 +248,7 @@ def test_a_shade_name_within_the_hue_keeps_the_survey_colour() -> None:
     ],
 )
 def test_a_comparison_with_the_material_as_it_is_is_the_comparative(line: str, plain: str) -> None:
-    said, bare = refined("grey concrete", line), refined("grey concrete", plain)
+    said, bare = refined("dark grey paint", line), refined("dark grey paint", plain)
     assert said.result.ok and said.material["params"]["base_color"] == bare.material["params"]["base_color"]
     assert any(d.message.startswith("read past 'than") for d in said.result.diagnostics)
 
@@ -418,3 +417,43 @@ def test_more_grey_on_black_moves_toward_grey() -> None:
 def test_a_wine_named_by_its_grape() -> None:
     assert same_look(material("a glass of merlot"), material("red wine"))
     assert material("merlot velvet")["model"]["base"] != "glass"  # before another material, the colour
+
+
+# ---------------------------------------------------------------- a named target of another family is applied first
+
+
+@pytest.mark.parametrize(
+    ("phrase", "line", "toward"),
+    [
+        ("dark grey paint", "a slightly darker grey", "darker"),  # the same family: only the step
+        ("charcoal paint", "a slightly darker grey", "darker"),
+        ("dark grey paint", "a lighter grey than that", "lighter"),
+        ("pale pink paint", "a slightly deeper pink", "darker"),
+    ],
+)
+def test_a_comparative_of_the_materials_own_colour_family_only_steps(phrase: str, line: str, toward: str) -> None:
+    before = lch(material(phrase)["params"]["base_color"])
+    after = lch(refined(phrase, line).material["params"]["base_color"])
+    assert (after[0] < before[0]) if toward == "darker" else (after[0] > before[0])
+    assert abs(after[0] - before[0]) < 0.35  # a step (lighter: half way to white), not a jump to the survey colour
+
+
+@pytest.mark.parametrize(
+    ("line", "low", "high"),
+    [("somewhere between satin and gloss", 0.08, 0.35), ("somewhere between matte and satin", 0.35, 0.8)],
+)
+def test_between_two_finishes_on_a_change_line(line: str, low: float, high: float) -> None:
+    assert low < refined("oak", line).material["params"]["roughness"] < high
+
+
+@pytest.mark.parametrize("phrase", ["chrome yellow paint", "iron red paint"])
+def test_a_colour_named_after_a_metal_is_the_colour_word(phrase: str) -> None:
+    """A metal's base colour is a tint of its reflectance, not a colour one sees: no lean to white."""
+    colour = phrase.split()[1]
+    assert material(phrase)["params"]["base_color"] == material(f"{colour} paint")["params"]["base_color"]
+
+
+@pytest.mark.parametrize("line", ["keep this blue", "keep that blue"])
+def test_keep_this_keeps_what_it_names(line: str) -> None:
+    session = refined("blue paint", line)
+    assert session.result.ok and same_look(session.material, material("blue paint"))
