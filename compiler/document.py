@@ -98,9 +98,21 @@ def read_without_removal(line: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Ma
     offset = span.start - (span.col - 1)
     diags: list[Diagnostic] = []
     node = _parsed_line(line.text, span.line, offset, Tagger.of(lexicon), diags, removals=False)
-    if not isinstance(node, ast.Material) or any(d.is_error for d in diags):
+    if any(d.is_error for d in diags):
         return None
-    return node, diags
+    if node is None and diags:  # 'not metallic': the negation leaves no word, on the everyday noun
+        from .suggest import everyday_noun
+
+        noun = everyday_noun()
+        said = line.text.strip()
+        note = Diagnostic(
+            span,
+            Severity.NOTE,
+            NOTE_CODE,
+            f"no material named: read '{said}' as plain {noun} (the words only say what it is not)",
+        )
+        return ast.Material(None, (), (ast.Word(noun, noun, "nouns", span),), None, span, line.text), [*diags, note]
+    return (node, diags) if isinstance(node, ast.Material) else None
 
 
 def _kept(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Refinement | None:

@@ -120,7 +120,7 @@ def _names_only(words: list[Tagged], material_named: bool) -> bool:
     """Whether every word read names part of the material (a describing word, a feature, a
     colour, a noun...), and none asks for a change (a comparative, 'with', a describing word after
     the thing kept: 'keep the varnish glossy', or after the material named by a pronoun: 'keep it
-    matte', 'keep this glossy')."""
+    matte'; 'keep this blue' keeps what it names)."""
     said = [w for w in words if w.candidates and w.implied_by is None]  # not the words 'varnish' alone implies
     if not said or not all(any(c.tag in NAMED for c in w.candidates) for w in said):
         return False

@@ -457,3 +457,21 @@ def test_a_colour_named_after_a_metal_is_the_colour_word(phrase: str) -> None:
 def test_keep_this_keeps_what_it_names(line: str) -> None:
     session = refined("blue paint", line)
     assert session.result.ok and same_look(session.material, material("blue paint"))
+
+
+@pytest.mark.parametrize(
+    ("phrase", "plain"),
+    [
+        ("white oak, rift sawn", "white oak"),
+        ("quarter sawn sycamore", "sycamore"),
+    ],
+)
+def test_how_boards_are_cut_draws_nothing(phrase: str, plain: str) -> None:
+    assert problems(phrase) == []
+    assert same_look(material(phrase), material(plain))
+    assert any("does not change how" in n for n in notes(phrase))
+
+
+def test_a_negation_alone_is_plain_paint() -> None:
+    assert problems("not metallic") == []
+    assert same_look(material("not metallic"), material("paint"))
