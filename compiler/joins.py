@@ -921,8 +921,9 @@ def _feature_first(out: list[Tagged], diags: list[Diagnostic], lexicon: Lexicon,
     if not of_tag(feature, "FEATURE") or any(c.tag in ("ADJ", "NOUN") for c in feature.candidates):
         return
     entry = lexicon.entry("features", of_tag(feature, "FEATURE")[0].key)
-    if entry is None or entry.get("colour") == "base" or not (entry.get("maps") or entry.get("adjective")):
-        return  # a tint, a cast, a hint before a material is not a look the words draw
+    tint = entry is not None and entry.get("colour") == "base" and not entry.get("coat")
+    if entry is None or tint or not (entry.get("maps") or entry.get("adjective")):
+        return  # a tint, a cast, a hint before a material is not a look the words draw (a glaze with a coat is)
     rest = out[n + 1 :]
     if rest and not of_tag(rest[0], "WITH"):
         return

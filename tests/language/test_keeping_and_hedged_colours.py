@@ -475,3 +475,12 @@ def test_how_boards_are_cut_draws_nothing(phrase: str, plain: str) -> None:
 def test_a_negation_alone_is_plain_paint() -> None:
     assert problems("not metallic") == []
     assert same_look(material("not metallic"), material("paint"))
+
+
+def test_a_crackle_glaze_keeps_its_colour() -> None:
+    """'turquoise crackle glaze': the glaze's colour on the surface, as for a glaze (it was dropped)."""
+    said = material("turquoise crackle glaze")
+    assert (
+        hue_gap(lch(said["params"]["base_color"])[2], lch(material("turquoise glaze")["params"]["base_color"])[2]) < 5
+    )
+    assert problems("crackle-glaze ceramic") == []  # a feature before the material still reads as its clause
