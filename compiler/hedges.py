@@ -188,9 +188,9 @@ def _roughness_set(word: Tagged, lexicon: Lexicon) -> tuple[str, float] | None:
         entry = lexicon.entry("adjectives", candidate.key) if candidate.tag == "ADJ" else None
         if entry is None or entry.get("applies_to"):
             continue
-        for effect in entry.get("effects", []):
-            if effect.get("param") == "roughness" and effect.get("op") == "set":
-                return entry.key, float(effect["value"])
+        value = entry.set_value("roughness")
+        if value is not None:
+            return entry.key, float(value)
     return None
 
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from . import ast
 from .diagnostics import Diagnostic, Severity
@@ -34,17 +34,28 @@ DESCRIBING = ("ADJ", "COLOR", "SHADE")
 MARKS = re.compile(r"[,.!?;:…]+")
 
 
+class Rules(NamedTuple):
+    """teaching.toml [keeping], read: the openers, the keep phrases and the trailing words as
+    patterns, the approvals, and the pronouns that stand for the material ('keep it matte': not
+    'keep this blue', what is kept)."""
+
+    opener: re.Pattern[str]
+    keep: re.Pattern[str]
+    trailing: re.Pattern[str]
+    approvals: frozenset[str]
+    pronouns: frozenset[str]
+
+
 @lru_cache(maxsize=1)
-def _rules() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str], frozenset[str], frozenset[str]]:
-    """The openers, the keep phrases and the trailing words as patterns, the approvals, and the
-    pronouns that stand for the material ('keep it matte': not 'keep this blue', what is kept)."""
+def _rules() -> Rules:
+    """teaching.toml [keeping] as Rules, once per process."""
     table: dict[str, Any] = teaching()["keeping"]
     openers = [*teaching()["removal"]["openers"], *table["approvals"], *table["openers"]]
     opener = re.compile(rf"(?:{alternatives(openers)})\s*[,!.:;]?\s+")
     keep = re.compile(rf"(?:{alternatives(table['leading'])})(?=\s|$)")
     trailing = re.compile(rf"(?:[\s,.!?]+(?:{alternatives(table['trailing'])}))*[\s,.!?]*$")
     approvals = frozenset(" ".join(a.split()) for a in table["approvals"])
-    return opener, keep, trailing, approvals, frozenset(table["material_pronouns"])
+    return Rules(opener, keep, trailing, approvals, frozenset(table["material_pronouns"]))
 
 
 def kept_line(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast.Refinement, Diagnostic] | None:
@@ -83,7 +94,7 @@ def kept_before_change(text: str, number: int, offset: int, tagger: Tagger) -> t
 
 def _approval(text: str) -> bool:
     """Whether the line only approves the material ('perfect!', "ok, that's fine")."""
-    approvals = _rules()[3]
+    approvals = _rules().approvals
     words = " ".join(MARKS.sub(" ", text.lower()).split())
     if words in approvals:
         return True

@@ -93,6 +93,12 @@ class Entry:
         data = self._data  # the data property's common case, without its call (the passes ask often)
         return (self.data if data is None else data).get(name, default)
 
+    def set_value(self, param: str) -> Any:
+        """The value the entry's effects set `param` to ('satin': roughness 0.35), or None."""
+        return next(
+            (e["value"] for e in self.get("effects", []) if e.get("param") == param and e.get("op") == "set"), None
+        )
+
     def __setattr__(self, name: str, value: Any) -> None:
         raise FrozenInstanceError(f"cannot assign to field '{name}'")
 

@@ -18,7 +18,6 @@ import math
 
 from .. import ast
 from ..diagnostics import Diagnostic, Severity, warning
-from ..lexicon import Entry
 from ..removed import much_less
 from ..state import Context, MaterialState
 from ..tagged import NOTE_CODE
@@ -118,14 +117,15 @@ def named_first(state: MaterialState, ctx: Context, item: ast.RefineItem) -> ast
             return item
         apply_described(state, ctx, (ast.Group("colour", (), (target,), (), target.span),))
     elif isinstance(target, ast.Word) and target.category == "adjectives" and entry.get("target") == "roughness":
-        if not _sets_roughness(ctx.lexicon.require("adjectives", target.key)):
+        if ctx.lexicon.require("adjectives", target.key).set_value("roughness") is None:
             return item
         apply_described(state, ctx, (ast.Group("adjective", (), (), (target,), target.span),))
     else:
         return item
-    said = f"{item.word.text} {colour_text(target) if isinstance(target, ast.Colour) else target.text}"
     named = colour_text(target) if isinstance(target, ast.Colour) else target.text
-    state.diagnostics.append(note(item.span, NOTE_CODE, f"read '{said}' as {named}, then {item.word.text}"))
+    state.diagnostics.append(
+        note(item.span, NOTE_CODE, f"read '{item.word.text} {named}' as {named}, then {item.word.text}")
+    )
     return ast.RefineItem(item.word, None, item.span, item.adverbs)
 
 
@@ -145,11 +145,6 @@ def _other_colour(state: MaterialState, ctx: Context, target: ast.Colour) -> boo
         chroma = [math.hypot(*linear_to_oklab(c)[1:]) for c in (current, named)]
         return (chroma[0] >= least) != (chroma[1] >= least)
     return gap > float(rules["shade_hue_degrees"])
-
-
-def _sets_roughness(adjective: Entry) -> bool:
-    """A finish word that sets the roughness ('satin', 'matte', 'glossy')."""
-    return any(e.get("param") == "roughness" and e.get("op") == "set" for e in adjective.get("effects", []))
 
 
 def _nothing_removed(state: MaterialState, ctx: Context, line: ast.Refinement) -> None:

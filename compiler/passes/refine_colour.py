@@ -154,10 +154,11 @@ def refine_named_colour(
     if whole is not None:  # 'closer to burgundy', 'more of a burgundy': the whole colour
         _closer(state, item, param, resolve_colour(target, ctx), 1.0 - (1.0 - float(whole)) ** weight)
         return
-    _l, a, b = linear_to_oklab(resolve_colour(target, ctx))
+    named = resolve_colour(target, ctx)
+    _l, a, b = linear_to_oklab(named)
     amount = 1.0 - (1.0 - HUE_STEP) ** weight
     if direction > 0 and math.hypot(a, b) < _achromatic():  # 'more grey' on black: a step of the whole colour
-        _closer(state, item, param, resolve_colour(target, ctx), amount)
+        _closer(state, item, param, named, amount)
         return
     if direction < 0 and hue_share(apparent(state, param, holder[name]), (a, b)) < NEUTRAL_CHROMA:
         state.diagnostics.append(
