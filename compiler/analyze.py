@@ -6,9 +6,10 @@ from collections.abc import Iterable, Iterator
 from typing import Any
 
 from . import ast
+from .back import reversed_change
 from .default_name import name_words
 from .diagnostics import Diagnostic, error, warning
-from .document import iter_items, read_without_removal
+from .document import iter_items, parse_change_line, read_without_removal
 from .ir import JSONDict, document_ir, material_ir
 from .lexicon import Lexicon
 from .params import Params
@@ -38,12 +39,30 @@ def attach_refinements(doc: ast.Document, lexicon: Lexicon) -> list[tuple[ast.Ma
         elif pairs and item.changes_material and (changed := changed_material(pairs[-1][0], item, lexicon)):
             pairs[-1] = (changed, pairs[-1][1] + after_change(item))  # 'make it walnut': the material above, now walnut
         elif pairs:
-            pairs[-1][1].append(item)
+            add_refinement(pairs[-1][1], item, lexicon, doc.diagnostics)
         else:
             material = orphan_line(item, lexicon, doc.diagnostics)
             if material is not None:
                 pairs.append((material, []))
     return pairs
+
+
+def add_refinement(
+    lines: list[ast.Refinement], item: ast.Refinement, lexicon: Lexicon, diags: list[Diagnostic]
+) -> None:
+    """Append a change line to the material's; 'go back a bit' goes in as the change above,
+    reversed (cnlmc.back), with the note that says so."""
+    if item.back is not None:
+        reversed_line, note = reversed_change(item, _change_above(lines), lexicon, parse_change_line)
+        diags.append(note)
+        item = reversed_line or item
+    lines.append(item)
+
+
+def _change_above(lines: list[ast.Refinement]) -> ast.Refinement | None:
+    """The last change line that is no going back itself ('go back a bit' twice goes back twice
+    from the same change); None when there is none."""
+    return next((line for line in reversed(lines) if line.back is None), None)
 
 
 def after_change(change: ast.Refinement) -> list[ast.Refinement]:
@@ -320,7 +339,7 @@ def _material_groups(
             material = changed
             refinements += after_change(item)
         elif not has_error:
-            refinements.append(item)
+            add_refinement(refinements, item, lexicon, diags)
     if material is not None and material_ok:
         yield material, refinements
 

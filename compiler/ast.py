@@ -182,6 +182,7 @@ class Refinement:
     groups: tuple[Group, ...] = ()  # a change of describing words: 'make it blue', 'turn it matte black'
     material: Material | None = None  # a change to another material: 'make it walnut', 'switch to brass'
     removed: tuple[Word, ...] = ()  # words taken off the material above: 'lose the brushed look', 'no rust'
+    back: str | None = None  # going back on the change above, at this degree: 'go back a bit' (cnlmc.back)
 
     def __init__(
         self,
@@ -194,6 +195,7 @@ class Refinement:
         groups: tuple[Group, ...] = (),
         material: Material | None = None,
         removed: tuple[Word, ...] = (),
+        back: str | None = None,
     ) -> None:
         fields = self.__dict__
         fields["name"] = name
@@ -205,6 +207,7 @@ class Refinement:
         fields["groups"] = groups
         fields["material"] = material
         fields["removed"] = removed
+        fields["back"] = back
 
     @property
     def changes_material(self) -> bool:
@@ -216,7 +219,9 @@ class Refinement:
     def keeps_only(self) -> bool:
         """The line changes nothing: it keeps the material as it is ('keep the grain', 'perfect':
         cnlmc.kept)."""
-        return not (self.items or self.coat or self.features or self.groups or self.material or self.removed)
+        return not (self.items or self.coat or self.features or self.groups or self.material or self.removed) and (
+            self.back is None
+        )
 
 
 Item = Material | Refinement

@@ -4,6 +4,7 @@ Lines end as cnlmc.lines says (CRLF, LF or a lone CR); `iter_lines` is re-export
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 from dataclasses import replace
 
@@ -100,7 +101,7 @@ def read_without_removal(line: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Ma
     node = _parsed_line(line.text, span.line, offset, Tagger.of(lexicon), diags, removals=False)
     if any(d.is_error for d in diags):
         return None
-    if node is None and diags:  # 'not metallic': the negation leaves no word, on the everyday noun
+    if (node is None or _changes_nothing(node)) and diags:  # 'not metallic': no word left, on the everyday noun
         from .suggest import everyday_noun
 
         noun = everyday_noun()
@@ -113,6 +114,10 @@ def read_without_removal(line: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Ma
         )
         return ast.Material(None, (), (ast.Word(noun, noun, "nouns", span),), None, span, line.text), [*diags, note]
     return (node, diags) if isinstance(node, ast.Material) else None
+
+
+def _changes_nothing(node: ast.Item) -> bool:
+    return isinstance(node, ast.Refinement) and node.keeps_only
 
 
 def _kept(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Refinement | None:
@@ -135,7 +140,65 @@ def _said_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
         or _removal(text, number, offset, tagger, diags)
         or _kept(text, number, offset, tagger, diags)
         or _change_after_kept(text, number, offset, tagger, diags)
+        or _going_back(text, number, offset, tagger, diags)
+        or _degree_after(text, number, offset, tagger, diags)
     )
+
+
+_DEGREE_AFTER = re.compile(r"(?P<change>.*\S)\s*,\s*(?:but\s+)?(?:only\s+)?(?P<degree>[a-z][a-z ]*?)[\s.!?]*$")
+
+
+def _degree_after(
+    text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]
+) -> ast.Refinement | None:
+    """'rougher, a little', 'darker, but only slightly': a degree said after the comparatives is
+    their degree (each one said without its own), with a note; None for any other line."""
+    found = _DEGREE_AFTER.match(text.lower())
+    if found is None:
+        return None
+    degree = found["degree"]
+    if not any(e.category == "adverbs" for e in tagger.lexicon.lookup(tuple(degree.split()))):
+        return None
+    said: list[Diagnostic] = []
+    node = _parsed_line(text[: found.end("change")], number, offset, tagger, said)
+    if not isinstance(node, ast.Refinement) or not node.items or any(d.is_error for d in said):
+        return None
+    start = found.start("degree")
+    span = Span(offset + start, offset + start + len(degree), number, start + 1)
+    key = tagger.lexicon.lookup(tuple(degree.split()))[0].key
+    adverb = ast.Word(text[start : start + len(degree)], key, "adverbs", span)
+    items = tuple(item if item.adverbs else replace(item, adverbs=(adverb,)) for item in node.items)
+    note = f"read '{text[start : start + len(degree)]}' as the degree of the change before it"
+    diags.extend([*said, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)])
+    return replace(node, items=items, span=Span(offset, offset + len(text.rstrip()), number, 1), text=text)
+
+
+def _going_back(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Refinement | None:
+    """'go back a bit' (cnlmc.back: reversed where the change above is known), or 'too blue, back a
+    bit': the change before the back part, which is read past with a note; None for any other line."""
+    from .back import back_after_change, back_line
+
+    found = back_line(text, number, offset, tagger)
+    if found is not None:
+        return found
+    tail = back_after_change(text, tagger)
+    if tail is None:
+        return None
+    end, said = tail
+    change: list[Diagnostic] = []
+    node = _parsed_line(text[:end], number, offset, tagger, change)
+    if not isinstance(node, ast.Refinement) or any(d.is_error for d in change):
+        return None
+    start = text.index(said, end)
+    span = Span(offset + start, offset + start + len(said), number, start + 1)
+    note = f"read past '{said}': the change before it says which way"
+    diags.extend([*change, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)])
+    return replace(node, span=Span(offset, offset + len(text.rstrip()), number, 1), text=text)
+
+
+def parse_change_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Item | None:
+    """A line built by the compiler (a reversal: cnlmc.back) parsed as a line of the source is."""
+    return _parsed_line(text, number, offset, tagger, diags, removals=False)
 
 
 def _change_after_kept(
@@ -196,8 +259,11 @@ def _parsed_line(
         fitted, words = fit_unknown_words(tag_diags, words, tagger.lexicon)
         diags.extend(fitted)
         words = [t for t in words if t.candidates]
-    if not words:
-        return None
+    if not words:  # every word read past ('not too yellow', 'not at all rusty'): a line that changes nothing
+        spans = [d.span for d in diags[mark:] if d.span is not None and d.span.line == number]
+        if not spans or any(d.is_error for d in diags[mark:]):
+            return None
+        return ast.Refinement(None, (), spans[0].to(spans[-1]), text)
     if len(words) > MAX_LINE_WORDS:
         diags.append(
             error(
@@ -235,6 +301,10 @@ def _failed_line(
     starts with a change phrase ('make it blue'): cnlmc.implied."""
     from .hedges import finish_dropped, postfix_finish, read_past, reread, with_implied
 
+    named = _material_named_first(words, text, lexicon)  # 'marble: white, honed'
+    if named is not None:
+        diags.append(named[1])
+        return named[0]
     polite = _politely(words, lexicon)  # 'more of a teal', 'ok, a bit darker': known words, a rewrite
     if polite is not None and (node := _parsed(polite[1], text, lexicon)) is not None:
         diags.extend(polite[0])
@@ -280,6 +350,33 @@ def _failed_line(
             said = polite_said
     diags.append(said)
     return implied
+
+
+def _material_named_first(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, Diagnostic] | None:
+    """'marble: white, honed', 'concrete: raw, grey': a name that is a material noun, and after its
+    colon only describing words, is the material they describe (the words, then the noun), with a
+    note; None for any other line."""
+    if len(words) < 3 or not _only_tag(words[0], "NAME") or not _only_tag(words[1], "COLON"):
+        return None
+    head = words[0]
+    offset = head.span.start - head.span.col + 1
+    named, _notes = Tagger.of(lexicon).tag_line(head.text, head.span.line, head.span.start)
+    known = len(named) == 1 and not named[0].unknown
+    nouns = tuple(c for c in named[0].candidates if c.tag == "NOUN" and c.category == "nouns") if known else ()
+    if not nouns:
+        return None
+    end = words[-1].span.end
+    noun = Tagged(head.text, Span(end, end + 1, head.span.line, end - offset + 1), nouns, implied_by=head.span)
+    node = _parsed([*words[2:], noun], text, lexicon)
+    if not isinstance(node, ast.Material):
+        return None
+    said = text[words[2].span.start - offset : end - offset]
+    note = f"read '{head.text}:' as the material the words after it describe: '{said} {head.text.lower()}'"
+    return node, Diagnostic(head.span, Severity.NOTE, NOTE_CODE, note)
+
+
+def _only_tag(word: Tagged, tag: str) -> bool:
+    return len(word.candidates) == 1 and word.candidates[0].tag == tag
 
 
 def _as_change(node: ast.Item, words: list[Tagged], text: str, lexicon: Lexicon, diags: list[Diagnostic]) -> ast.Item:

@@ -805,6 +805,28 @@ def takes_target(word: Tagged, lexicon: Lexicon) -> bool:
     return any(e is not None and e.get("target") == "any" for e in entries)
 
 
+def material_named_first(out: list[Tagged], diags: list[Diagnostic]) -> None:
+    """'walnut, dark, satin', 'walnut; satin': a listing that opens with a material noun and then,
+    after a comma, names only describing words reads every word after the mark as describing the
+    material named first, also one that may be a material itself ('satin' the fabric), with a note
+    (only where the first noun is also a colour: 'walnut' may be the satin's colour)."""
+    first = out[0]
+    if not of_tag(first, "NOUN") or not any(c.tag in DESCRIBING for c in first.candidates):
+        return  # a noun that is no colour ('oak, satin') is read as the material already
+    if out[1].text not in (",", ";"):
+        return
+    rest = [t for t in out[2:] if not (of_tag(t, "COMMA") or of_tag(t, "AND"))]
+    if not rest or any(t.unknown or not any(c.tag in DESCRIBING for c in t.candidates) for t in rest):
+        return
+    for k in range(2, len(out)):
+        word = out[k]
+        if of_tag(word, "NOUN") and any(c.tag in DESCRIBING for c in word.candidates):
+            describing = tuple(c for c in word.candidates if c.tag != "NOUN")
+            out[k] = Tagged(word.text, word.span, describing, word.unknown, word.implied_by)
+            note = f"read '{word.text}' as describing the {out[0].text} (the material named first)"
+            diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))
+
+
 def _only_describing(words: list[Tagged], article: bool = True) -> bool:
     """Whether every word reads only as a describing word (or an article)."""
     allowed = (*DESCRIBING, "ARTICLE") if article else tuple(DESCRIBING)

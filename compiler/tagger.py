@@ -18,7 +18,7 @@ from collections import OrderedDict
 from typing import TYPE_CHECKING
 
 from .diagnostics import Diagnostic, Severity, did_you_mean, error
-from .joins import COMPARED, Joiner, may_join, others_of, takes_target
+from .joins import COMPARED, Joiner, material_named_first, may_join, others_of, takes_target
 from .lexicon import Lexicon
 from .spans import Span, line_span
 from .tagged import NOTE_CODE, Candidate, Tagged
@@ -151,7 +151,7 @@ class Tagger:
         tagged: list[Tagged] = []
         diags: list[Diagnostic] = []
         raw = _plain_words(line)  # raw_tokens' common case: letters only, no mark to drop, no name
-        i = 0
+        i, raw_marks = 0, raw is None
         if raw is None:
             raw = _pattern_tokens(line)
             if raw and not (raw[-1][0][0].isalnum() and raw[0][0][0].isalpha()):
@@ -176,6 +176,10 @@ class Tagger:
                     i += 1
                     continue
             i += self._tag_at(raw, i, line_no, offset, tagged, diags)
+        if raw_marks:
+            tagged = _one_mark_between(tagged)
+            if len(tagged) > 2:
+                material_named_first(tagged, diags)  # 'walnut, dark, satin': satin describes the walnut
         if may_join(tagged):
             tagged = self.joiner.joined(tagged, diags)
         if len(tagged) > 1:
@@ -260,6 +264,8 @@ class Tagger:
             if tagged and self._after_comparative(text, tagged):  # "lighter than oak", "less glossy than glass"
                 return self._than(raw, i, line_no, offset, tagged, diags)
             reading = self.formation().read_at([t.lower() for t, _c in raw[i : i + 5]])  # "not X in the least"
+            if reading is None and _set_off(raw, i):  # "European walnut, book-matched"
+                reading = self.formation().read_set_off(text.lower())
             if reading is not None:
                 return self._formed(reading, raw, i, line_no, offset, tagged, diags)
         tagged.append(self._unknown(raw[i], line_no, offset, diags))
@@ -492,6 +498,29 @@ def _last_target_describes(tagged: list[Tagged], lexicon: Lexicon) -> None:
 
 def _is_separator(word: Tagged) -> bool:
     return bool(word.candidates) and all(c.tag in _SEPARATORS for c in word.candidates)
+
+
+def _set_off(raw: list[RawToken], i: int) -> bool:
+    """Whether raw[i] stands alone as a list item: a mark before it, and a mark or the end after."""
+    return i > 0 and raw[i - 1][0] in _LIST_ITEM_MARKS and (i + 1 == len(raw) or raw[i + 1][0] in _LIST_ITEM_MARKS)
+
+
+_LIST_ITEM_MARKS = frozenset((",", ";", "(", ")", "[", "]"))
+
+
+def _one_mark_between(tagged: list[Tagged]) -> list[Tagged]:
+    """Marks that stand together set words off once: 'walnut (dark), matte' is 'walnut, dark, matte'
+    (a closing bracket then a comma), as is 'walnut, dark,, matte'."""
+    out: list[Tagged] = []
+    for word in tagged:
+        if out and _is_mark(word) and _is_mark(out[-1]):
+            continue
+        out.append(word)
+    return out
+
+
+def _is_mark(word: Tagged) -> bool:
+    return len(word.candidates) == 1 and word.candidates[0].tag == "COMMA"
 
 
 def _dropped_separator(raw: list[RawToken], after: int, tagged: list[Tagged]) -> int:

@@ -108,6 +108,8 @@ class Rules:
         self.imitation = frozenset(joined("qualifiers", "imitation"))  # "faux sheepskin", "recycled plastic"
         self.shapes = frozenset(joined("qualifiers", "shapes"))  # "hexagon floor tiles"
         self.purity = frozenset(joined("qualifiers", "purity"))  # "a clean bright white"
+        self.patterns = frozenset(joined("qualifiers", "patterns"))  # "checkered tiles"
+        self.fillers = frozenset(joined("qualifiers", "fillers"))  # "rougher again, a little"
         self.comparison = frozenset(joined("comparison", "words"))  # "lighter than oak"
         self.compared_current = frozenset(joined("comparison", "current"))  # "lighter than that"
         self.manners = frozenset(joined("compound_first", "manners"))
@@ -159,24 +161,16 @@ class WordFormation:
             found = self._after_manner(f"{first} {words[1]}", first, words[1], 1)
             if found is not None:
                 return found
-        if first in rules.qualifiers and len(words) > 1:  # "kitchen cabinets", "exterior paint"
-            return Reading((), 1, f"read '{first}' as saying where or what for: no effect on the look")
+        if len(words) > 1:  # "kitchen cabinets", "exterior paint", "plain white", "faux sheepskin"
+            why = self._passed_reason(first)
+            if why is not None:
+                return Reading((), 1, f"read '{first}' as {why}")
         if len(words) > 1 and first in rules.first_synonyms:  # "close grained" = fine-grained
             same = rules.first_synonyms[first]
             compound = self._kept(self._known(f"{same}-{words[1]}"), ("ADJ",))
             if compound:
                 note = f"read '{first} {words[1]}' as '{same}-{words[1]}' ('{first}' means '{same}' here)"
                 return Reading((Part(0, 1, 0, None, compound),), 2, note)
-        passed = (  # "plain white", "a nice warm terracotta", "faux sheepskin": read past, said why
-            (rules.ordinary, "the ordinary kind: no effect on the look"),
-            (rules.purity, "saying the colour is clean and unmixed: the colour itself"),
-            (rules.shapes, "the shape of the pieces: not drawn (the tiles graph draws a rectangular grid)"),
-            (rules.liking, "saying you like it: no effect on the look"),
-            (rules.imitation, "what it is made of, not how it looks: drawn as what follows"),
-        )
-        for kind, why in passed:
-            if first in kind and len(words) > 1:
-                return Reading((), 1, f"read '{first}' as {why}")
         if first in rules.sizes and len(words) > 1 and not self._names_feature(words[1]):  # "wide oak floorboards"
             return Reading((), 1, f"read '{first}' as the size of the pieces: not drawn, no effect on the look")
         if len(words) > 1:
@@ -191,6 +185,27 @@ class WordFormation:
             if adverb is not None:
                 return self._prefixed_word(first, adverb, words[1])
         return self.read(first)
+
+    def _passed_reason(self, word: str) -> str | None:
+        """Why a qualifier word is read past ('kitchen': where or what for), or None for other words."""
+        rules = self.rules
+        passed = (
+            (rules.qualifiers, "saying where or what for: no effect on the look"),
+            (rules.ordinary, "the ordinary kind: no effect on the look"),
+            (rules.purity, "saying the colour is clean and unmixed: the colour itself"),
+            (rules.shapes, "the shape of the pieces: not drawn (the tiles graph draws a rectangular grid)"),
+            (rules.liking, "saying you like it: no effect on the look"),
+            (rules.imitation, "what it is made of, not how it looks: drawn as what follows"),
+            (rules.patterns, "the pattern the pieces are laid in: not drawn (a running bond is drawn)"),
+            (rules.fillers, "a word of the conversation: no effect on the look"),
+        )
+        return next((why for kind, why in passed if word in kind), None)
+
+    def read_set_off(self, word: str) -> Reading | None:
+        """A qualifier set off after the material as a list item ('European walnut, book-matched',
+        'oak, kitchen grade'): read past with its note, as before the material."""
+        why = self._passed_reason(word)
+        return None if why is None else Reading((), 1, f"read '{word}' as {why}")
 
     def misplaced(self, word: str) -> tuple[str, str] | None:
         """(message, hint) for a word of the rules that found nothing to apply to ('not steel')."""
@@ -624,6 +639,9 @@ class WordFormation:
                 target = Part(2, 2, 0, None, self._kept(found, ("ADJ",)))
                 text = " ".join(words[:3])
                 return Reading((adverb, target), 3, f"read '{text}' as '{rules.soft_adverb} {words[2]}'")
+            if self._kept(found, ("COLOR", "SHADE")):
+                text = " ".join(words[:3])  # "a warm cream, not too yellow", "oak, not too dark"
+                return Reading((), 3, f"read '{text}' as a limit, not a change: the colour named is kept")
         found = self._resolved(words[1])
         adjective = next((c for c in found if c.tag == "ADJ"), None)
         if adjective is None:

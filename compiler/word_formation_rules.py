@@ -23,7 +23,7 @@ RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "FEATURE")
 _LISTS = {
     "punctuation": ("trailing", "leading", "quotes", "number_marks"),
     "negation": ("words", "prefixes", "softeners", "emphatic", "emphatic_before", "strict"),
-    "qualifiers": ("words", "sizes", "shapes", "ordinary", "purity", "liking", "imitation"),
+    "qualifiers": ("words", "sizes", "shapes", "ordinary", "purity", "liking", "imitation", "patterns", "fillers"),
     "comparison": ("words", "current"),
     "properties": ("endings",),
 }
@@ -50,6 +50,8 @@ def empty_rules() -> dict[str, Any]:
             "purity": [],
             "liking": [],
             "imitation": [],
+            "patterns": [],
+            "fillers": [],
         },
         "comparison": {"words": [], "current": []},
         "properties": {"endings": []},

@@ -14,7 +14,7 @@ that brings a treatment (a map, a coat, a material) must be part of the material
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import NamedTuple
 
 from .. import ast
 from ..diagnostics import Diagnostic, warning
@@ -25,6 +25,7 @@ from .base import noun_of
 from .bracket import Move, Step, bracket_move, scaled_steps
 from .refine_property import refine_property
 from .refine_target import highlight_shown, item_text, item_words, move_sigma_too, note, note_unmoved_number, surface
+from .refine_wear import refine_drawn_maps, refine_missing_treatment, refine_weighted_map
 from .subsurface import refine_translucency
 from .words import Effect, effects_for
 
@@ -51,8 +52,10 @@ def refine_adjective(
     applied = adjective.key in [k for k, _w in state.applied]
     effects = [e for e in effects_for(adjective, state) if e["param"] != "model"]
     if not applied and (brings_treatment(adjective) or not effects):
-        if not _refined_as_property(state, ctx, item, direction, weight):  # 'more grainy' oak: more grain
-            state.diagnostics.append(_absent(state, adjective, item))
+        if _refined_as_property(state, ctx, item, direction, weight):  # 'more grainy' oak: more grain
+            return
+        if not (brings_treatment(adjective) and refine_missing_treatment(state, ctx, adjective, item, direction)):
+            state.diagnostics.append(_absent(state, adjective, item))  # 'more worn' leather: a little wear
         return
     if not applied:
         state.diagnostics.append(
@@ -67,7 +70,9 @@ def refine_adjective(
         _refine_effect(state, ctx, effect, item, direction, Strength(w, weight))
     for role in adjective.get("maps", {}):
         for name in adjective.get("maps")[role].get("weighted", []):
-            _refine_weighted_map(state, role, name, item, direction, Strength(w, weight))
+            refine_weighted_map(state, role, name, item, direction, w, weight)
+    if applied and adjective.get("features_on") and not adjective.get("maps"):  # 'more weathered' bronze
+        refine_drawn_maps(state, ctx, [adjective], item, direction)
 
 
 def _refined_as_property(
@@ -104,7 +109,7 @@ def _target(item: ast.RefineItem) -> ast.Word:
 
 
 def brings_treatment(adjective: Entry) -> bool:
-    return any(adjective.get(field) for field in ("maps", "coat", "material"))
+    return any(adjective.get(field) for field in ("maps", "coat", "material", "features_on"))
 
 
 def _refine_effect(
@@ -202,17 +207,3 @@ def _refine_list_effect(
         state.brackets, key, state.params.get(param), Move(direction, step, strength.adverbs, (0.0, 1.0))
     )
     state.record(param, new, f"refinements.{item.word.key} {_target(item).key}: bracket step", item_words(item))
-
-
-def _refine_weighted_map(
-    state: MaterialState, role: str, name: str, item: ast.RefineItem, direction: int, strength: Strength
-) -> None:
-    ref: dict[str, Any] | None = state.maps.get(role)
-    if ref is None:
-        return
-    key = f"maps.{role}.{name}"
-    w = strength.formula
-    step: Step = (lambda x: x * (1 + w)) if direction > 0 else (lambda x: x / (1 + w))
-    new = bracket_move(state.brackets, key, ref["params"].get(name, 1.0), Move(direction, step, strength.adverbs))
-    ref["params"][name] = new
-    state.note(key, new, f"refinements.{item.word.key} {_target(item).key}: bracket step", item_words(item))
