@@ -181,6 +181,10 @@ def _complaint_as_change(words: str, table: Mapping[str, Any], lexicon: Lexicon)
     """'too dark', "it's way too shiny": the change a complaint asks for ('less dark', 'much less
     shiny'); each part of a line of parts is read so ('more muted, it's a bit loud'); any other
     words as they are."""
+    from .back import goes_back
+
+    if goes_back(words):  # 'ooh too far, go back a little': going back, not a complaint (cnlmc.back)
+        return words
     if "," not in words:
         return _complaint_part(words, table, lexicon)
     parts = words.split(",")

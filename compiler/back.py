@@ -32,7 +32,7 @@ if TYPE_CHECKING:
     from .lexicon import Lexicon
     from .tagger import Tagger
 
-__all__ = ["LineParser", "back_after_change", "back_line", "reversed_change"]
+__all__ = ["LineParser", "back_after_change", "back_line", "change_after_back", "goes_back", "reversed_change"]
 
 #: reads a line of text as the source's lines are read (text, line number, offset, tagger, diagnostics)
 LineParser = Callable[[str, int, int, "Tagger", list[Diagnostic]], "ast.Item | None"]
@@ -43,6 +43,7 @@ class Rules(NamedTuple):
 
     line: re.Pattern[str]
     tail: re.Pattern[str]
+    head: re.Pattern[str]
 
 
 @lru_cache(maxsize=1)
@@ -54,7 +55,8 @@ def _rules() -> Rules:
     trailing = rf"(?:[\s,.!?]+(?:{alternatives(table['trailing'])}))*[\s,.!?]*$"
     line = re.compile(rf"\s*{opener}{back}{trailing}")
     tail = re.compile(rf"(?P<change>.*\S)\s*[,;]\s*{opener}{back}{trailing}")
-    return Rules(line, tail)
+    head = re.compile(rf"\s*{opener}(?:{alternatives(table['phrases'])})[\s,]+(?=\S)")
+    return Rules(line, tail, head)
 
 
 def _degree(found: re.Match[str], tagger: Tagger) -> str | None:
@@ -66,6 +68,11 @@ def _degree(found: re.Match[str], tagger: Tagger) -> str | None:
     if any(e.category == "adverbs" for e in tagger.lexicon.lookup(words)):
         return " ".join(words)
     return None
+
+
+def goes_back(text: str) -> bool:
+    """Whether the whole line only goes back ('ooh too far, go back a little'): no complaint to read."""
+    return _rules().line.match(text.lower()) is not None
 
 
 def back_line(text: str, number: int, offset: int, tagger: Tagger) -> ast.Refinement | None:
@@ -89,6 +96,13 @@ def back_after_change(text: str, tagger: Tagger) -> tuple[int, str] | None:
         return None
     end = found.end("change")
     return end, text[end:].strip(" ,;")
+
+
+def change_after_back(text: str) -> int | None:
+    """'no, go back a bit darker': where the change after the back phrase starts (the back phrase
+    is read past: the change says which way); None when the line does not open so."""
+    found = _rules().head.match(text.lower())
+    return None if found is None else found.end()
 
 
 def reversed_change(

@@ -13,7 +13,7 @@ from .diagnostics import Diagnostic, Severity, error
 from .lexicon import Lexicon
 from .line_parts import PART_MARKS, by_parts, material_then_comparatives, part_cuts
 from .lines import iter_lines
-from .on_clause import likeness_dropped, on_material
+from .on_clause import context_dropped, likeness_dropped, on_material
 from .parser import ParseFailure, describe_expected, parse_line_shape, parsed_item
 from .relative_clause import (
     clause_after,
@@ -176,22 +176,28 @@ def _degree_after(
 def _going_back(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Refinement | None:
     """'go back a bit' (cnlmc.back: reversed where the change above is known), or 'too blue, back a
     bit': the change before the back part, which is read past with a note; None for any other line."""
-    from .back import back_after_change, back_line
+    from .back import back_after_change, back_line, change_after_back
 
     found = back_line(text, number, offset, tagger)
     if found is not None:
         return found
     tail = back_after_change(text, tagger)
-    if tail is None:
+    head = change_after_back(text) if tail is None else None
+    if tail is None and head is None:
         return None
-    end, said = tail
     change: list[Diagnostic] = []
-    node = _parsed_line(text[:end], number, offset, tagger, change)
-    if not isinstance(node, ast.Refinement) or any(d.is_error for d in change):
+    if tail is not None:  # 'too blue, back a bit'
+        end, said = tail
+        node = _parsed_line(text[:end], number, offset, tagger, change)
+        start = text.index(said, end)
+    else:  # 'no, go back a bit darker'
+        assert head is not None
+        node = _parsed_line(" " * head + text[head:], number, offset, tagger, change)
+        said, start = text[:head].strip(" ,"), len(text) - len(text.lstrip())
+    if not isinstance(node, ast.Refinement) or not node.items or any(d.is_error for d in change):
         return None
-    start = text.index(said, end)
     span = Span(offset + start, offset + start + len(said), number, start + 1)
-    note = f"read past '{said}': the change before it says which way"
+    note = f"read past '{said}': the change said with it says which way"
     diags.extend([*change, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)])
     return replace(node, span=Span(offset, offset + len(text.rstrip()), number, 1), text=text)
 
@@ -299,7 +305,7 @@ def _failed_line(
     """The taught error of a line that does not parse, or the line read with its implied material
     when it only describes one ('matte black'), or as a change of the material above when it
     starts with a change phrase ('make it blue'): cnlmc.implied."""
-    from .hedges import finish_dropped, postfix_finish, read_past, reread, with_implied
+    from .hedges import finish_dropped, inside_a_note, postfix_finish, read_past, reread, with_implied
 
     named = _material_named_first(words, text, lexicon)  # 'marble: white, honed'
     if named is not None:
@@ -335,6 +341,7 @@ def _failed_line(
             if not read_past(d, whole[1], taken)
             and not read_past(d, passed, misplaced=True)
             and not (taken and _said_again(d, whole[1]))
+            and not (d.severity is Severity.NOTE and inside_a_note(d, passed))  # and its words' notes
         ]
         diags.extend(whole[1])
         return whole[0]
@@ -431,6 +438,7 @@ def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
         or (None if removal else describing_after(words, text, lexicon))  # 'no texture' is no describing word
         or clause_after(words, text, lexicon)
         or described_colour_after(words, text, lexicon)
+        or context_dropped(words, text, lexicon)
     )
     if placed is not None:
         return placed[0], [placed[1]]

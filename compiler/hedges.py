@@ -157,11 +157,33 @@ def _between(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], l
     tagged, unknown = Tagger.of(lexicon).tag_line(f"{first.text.lower()}-{second.text.lower()}", 1, 0)
     compound = tagged[0] if len(tagged) == 1 and not unknown else None
     run = words[start : at + 4]
+    if compound is None and (pair := _colour_pair(run, first, second)) is not None:
+        return [*words[:start], *pair, *words[at + 4 :]], [_read_as(run, f"{first.text}-ish {second.text}")]
     if compound is None or not any(c.tag == "COLOR" for c in compound.candidates):
         return _finish_between(words, run, first, second, lexicon)
     word = _implied(compound.text, next(c for c in compound.candidates if c.tag == "COLOR"), run[-1], 1)
     word = Tagged(word.text, word.span, word.candidates, implied_by=run[0].span.to(run[-1].span))
     return [*words[:start], word, *words[at + 4 :]], [_read_as(run, compound.text)]
+
+
+def _colour_pair(run: Sequence[Tagged], first: Tagged, second: Tagged) -> list[Tagged] | None:
+    """'between navy and charcoal', two colours with no compound of their own: the first hedged
+    before the second ('navy-ish charcoal': colour_compounds.toml [hedged], half way between them),
+    the colours read as colours only ('charcoal' is also a material); None when either is no colour."""
+    colours = [tuple(c for c in w.candidates if c.tag == "COLOR") for w in (first, second)]
+    if not all(colours) or first.unknown or second.unknown:
+        return None
+    from .passes.colour_compounds import rules
+
+    adverb = str(rules()["hedged"]["adverb"])
+    whole = run[0].span.to(run[-1].span)
+    s = first.span
+    return [
+        _implied(adverb, Candidate("ADV", adverb, "adverbs"), run[0], 0, whole),
+        Tagged(first.text, first.span, colours[0]),
+        # right after the first colour, as a hedged pair stands (its span takes in the "and")
+        Tagged(second.text, Span(s.end + 1, second.span.end, s.line, s.col + s.end + 1 - s.start), colours[1]),
+    ]
 
 
 def _finish_between(

@@ -119,8 +119,8 @@ class Joiner:
                 reading = f"'{nouns[0].key}' (made of {before.text}: the first noun says what the second is made of)"
                 out[-1] = self._join(before, word, nouns, reading, diags)
             elif of_tag(word, "OBJECT"):
-                if k + 1 < len(tagged) and of_tag(tagged[k + 1], "NOUN"):
-                    out.append(word)  # "roof tiles": joined to the noun next
+                if k + 1 < len(tagged) and of_tag(tagged[k + 1], "NOUN") and not tagged[k + 1].unknown:
+                    out.append(word)  # "roof tiles": joined to the noun next (not an unknown word's guess)
                 elif k + 1 < len(tagged) and tagged[k + 1].text.lower() in SPEAKERS:
                     out.append(word)  # "can we ...", "can it be ...": a question, read as politeness
                 elif (
@@ -574,7 +574,9 @@ class Joiner:
             return False
         n = out.index(noun)
         rest = out[n + 1 :]
-        if rest and not of_tag(rest[0], "WITH"):
+        if rest and rest[0].unknown:  # 'tiles behind the hob': the words after are read past later
+            rest = []
+        elif rest and not of_tag(rest[0], "WITH"):
             return False
         coloured = _in_colour_length(rest)
         after = rest[coloured - 1] if coloured else noun
@@ -706,6 +708,7 @@ class Joiner:
         """Whether an object says how or what for while a later word names the material ('wire
         brushed oak', 'car window'): a noun follows, or an object follows one that is not a building
         product ('butcher block countertop': the product names the countertop's material)."""
+        rest = [t for t in rest if not t.unknown]  # an unknown word's tags are guesses ('tiles behind the hob')
         if any(of_tag(t, "NOUN") for t in rest):
             return True
         if not any(of_tag(t, "OBJECT") for t in rest):

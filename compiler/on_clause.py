@@ -18,7 +18,7 @@ from .spans import Span
 from .suggest import everyday_noun, teaching
 from .tagged import NOTE_CODE, Candidate, Tagged, written_span, written_text
 
-__all__ = ["implied_with", "likeness_dropped", "on_material"]
+__all__ = ["context_dropped", "implied_with", "likeness_dropped", "on_material"]
 
 
 def on_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
@@ -143,3 +143,50 @@ def _described_likeness(
     reading = f"{written_text(said)} {written_text(after)}"
     note = f"read '{text.strip()}' as '{reading}': the likeness names the material, the words before it describe it"
     return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
+
+
+def context_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, Diagnostic] | None:
+    """'sage green for the kitchen cabinets', 'rusty corrugated iron on the shed roof', 'gold like a
+    wedding ring', 'white marble, the kind you see in hotels': where the material is, what it is for,
+    where it came from or what it is like, said after the words of the look (teaching.toml [hedges]
+    `context`), is read past: the line is the words before it (colours alone on the everyday noun, as
+    for describing words alone); None when no such words come after a material, a change or colours.
+    Tried last, after the readings of a clause on its material ('rust on steel') and of a likeness."""
+    if not words:
+        return None
+    low = text.lower()
+    line_start = words[0].span.start - (words[0].span.col - 1)
+    table = teaching()["hedges"]
+    pointed = rf"(?:{alternatives(table['context_pointing'])})\s+(?:{alternatives(table['pointing_words'])})"
+    pattern = rf"(?:^|(?<=[\s,;.]))(?:{alternatives(table['context'])}|{pointed})(?=[\s,.!?]|$)"
+    for found in re.finditer(pattern, low):
+        before = [w for w in words if _said_before(w, line_start + found.start())]
+        while before and not before[-1].text[:1].isalnum():  # 'white marble, the kind ...': the comma goes too
+            before.pop()
+        said = [w for w in before if w.text[:1].isalnum()]
+        if not said or any(w.unknown for w in said):
+            continue
+        reading = parsed_item(before, text, lexicon.caches.shapes) or _on_everyday_noun(said, text, lexicon)
+        if reading is None:
+            continue
+        dropped = text[found.start() :].strip()
+        span = Span(line_start + found.start(), line_start + len(text.rstrip()), words[0].span.line, found.start() + 1)
+        note = f"read past '{dropped}': where it is, what it is for or what it is like, not how it looks"
+        return reading, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)
+    return None
+
+
+def _said_before(word: Tagged, at: int) -> bool:
+    """Whether a word stands before offset `at`, or is implied by one that does ('with grout' of
+    'tiles behind the hob': laid tiles)."""
+    said = word.implied_by or word.span
+    return said.start < at
+
+
+def _on_everyday_noun(said: Sequence[Tagged], text: str, lexicon: Lexicon) -> ast.Material | None:
+    """Describing words alone on the everyday noun ('sage green' = sage green paint: cnlmc.implied)."""
+    from .implied import implied_noun
+
+    if not all(any(c.tag in DESCRIBING for c in w.candidates) for w in said):
+        return None
+    return parsed_material([*said, implied_noun(everyday_noun(), said[-1])], text, lexicon.caches.shapes)

@@ -256,7 +256,11 @@ class Tagger:
             return 1
         if text[0].isalpha():
             last = i + 1 == len(raw)
-            if tagged and self.joiner.is_head(tagged[-1], text, last, tagged):  # "satin effect steel", "steel effect"
+            if (
+                tagged
+                and self.joiner.is_head(tagged[-1], text, last, tagged)  # "satin effect steel", "steel effect"
+                and not self._comparison_starts(raw, i)
+            ):
                 tagged[-1] = self.joiner.with_head(
                     tagged[-1], text, self._span(raw, i, 1, line_no, offset), last, diags
                 )
@@ -298,6 +302,16 @@ class Tagger:
         if not reading.parts:  # "shiny, not rusty, iron": the words go, and one separator with them
             return reading.words + _dropped_separator(raw, i + reading.words, tagged)
         return reading.words
+
+    def _comparison_starts(self, raw: list[RawToken], i: int) -> bool:
+        """'like' before 'a', 'my', 'the' ('gold like a wedding ring'): a comparison with a thing
+        starts there, not the suffix of the word before ('leather like vinyl')."""
+        rules = self.formation().rules
+        return (
+            raw[i][0].lower() in rules.like_heads
+            and i + 1 < len(raw)
+            and raw[i + 1][0].lower() in rules.like_not_before
+        )
 
     def _after_comparative(self, text: str, tagged: list[Tagged]) -> bool:
         """A comparison word ('than', 'als': word formation rules) right after a comparative, or

@@ -82,8 +82,10 @@ class Rules:
         self.negation_prefixes = joined("negation", "prefixes")
         self.softeners = frozenset(joined("negation", "softeners"))
         self.emphatic = tuple(tuple(e.split()) for e in joined("negation", "emphatic"))  # "at all"
+        self.pointing = tuple(tuple(e.split()) for e in joined("negation", "pointing"))  # "without the shine"
         self.emphatic_before = frozenset(joined("negation", "emphatic_before"))  # "gar nicht"
         self.soft_adverb = next((x["negation"]["soft_adverb"] for x in layers if x["negation"]["soft_adverb"]), "")
+        self.not_too = {k: v for layer in reversed(layers) for k, v in layer["negation"]["not_too"].items()}
         self.prefixes = {
             form: p["adverb"] for layer in reversed(layers) for p in layer["prefix"] for form in p["forms"]
         }
@@ -125,6 +127,7 @@ class Rules:
         self.resemblance = _merged_resemblance([layer["resemblance"] for layer in layers])
         self.colour_heads = frozenset(self.resemblance["colour_heads"])
         self.like_heads = frozenset(self.resemblance["like_heads"])
+        self.like_not_before = frozenset(self.resemblance["like_not_before"])  # "like a wedding ring"
         self.finish_heads = frozenset(self.resemblance["finish_heads"])
         suffix_forms = [f for s in self.suffixes for f in s["forms"]]
         suffix_forms += [f for name in ("forms", "colour_forms") for f in self.resemblance[name]]
@@ -590,7 +593,7 @@ class WordFormation:
     def _negated_words(self, words: Sequence[str]) -> Reading | None:
         """'not X' (X's opposite, or without X); 'not too X' = the soft adverb + X; 'not at all X',
         'not X at all' = 'not X' (the emphatic words are taken with it)."""
-        before = self._emphatic_at(words, 1)
+        before = self._emphatic_at(words, 1) or self._pointing_at(words)
         if before:  # 'not at all rusty': read as 'not rusty', the words between taken along
             found = self._negated_words([words[0], *words[1 + before :]])
             if found is None:
@@ -623,6 +626,14 @@ class WordFormation:
         )
         return Reading(parts, found.words + 1, found.note.replace(f"'{words[1]} ", f"'{words[0]} {words[1]} ", 1))
 
+    def _pointing_at(self, words: Sequence[str]) -> int:
+        """How many words right after the negation only point at what it negates ('the' of
+        'without the shine'): 0 when none do, or nothing follows them."""
+        for phrase in sorted(self.rules.pointing, key=len, reverse=True):
+            if tuple(words[1 : 1 + len(phrase)]) == phrase and len(words) > 1 + len(phrase):
+                return len(phrase)
+        return 0
+
     def _emphatic_at(self, words: Sequence[str], at: int) -> int:
         """How many words of an emphatic phrase ('at all') start at words[at]: 0 when none does."""
         for phrase in self.rules.emphatic:
@@ -635,10 +646,7 @@ class WordFormation:
         if words[1] in rules.softeners and len(words) > 2 and rules.soft_adverb:
             found = self._resolved(words[2])
             if any(c.tag == "ADJ" for c in found):
-                adverb = Part(0, 1, 0, None, self._adverb(rules.soft_adverb))
-                target = Part(2, 2, 0, None, self._kept(found, ("ADJ",)))
-                text = " ".join(words[:3])
-                return Reading((adverb, target), 3, f"read '{text}' as '{rules.soft_adverb} {words[2]}'")
+                return self._not_too(words, found)
             if self._kept(found, ("COLOR", "SHADE")):
                 text = " ".join(words[:3])  # "a warm cream, not too yellow", "oak, not too dark"
                 return Reading((), 3, f"read '{text}' as a limit, not a change: the colour named is kept")
@@ -648,6 +656,22 @@ class WordFormation:
             return self._negated_unknown(words, found)
         reading = self._opposite_reading(f"{words[0]} {words[1]}", 1, adjective, words[1])
         return Reading(tuple(Part(0, 1, 0, None, p.candidates) for p in reading.parts), reading.words, reading.note)
+
+    def _not_too(self, words: Sequence[str], found: tuple[Candidate, ...]) -> Reading:
+        """'not too shiny' = the finish between (negation `not_too`: satin, never shinier than the
+        material was); any other word = the soft adverb + the word ('not too rough' = slightly
+        rough, 'not too rusty' = slightly rusty)."""
+        soft = self.rules.soft_adverb
+        text = " ".join(words[:3])
+        adjective = next(c for c in found if c.tag == "ADJ")
+        between = self.rules.not_too.get(adjective.key)
+        if between is not None:
+            said = self.spoken().word("adjectives", between)
+            finish = Part(0, 2, 0, None, (Candidate("ADJ", between, "adjectives"),))
+            return Reading((finish,), 3, f"read '{text}' as '{said}' (the finish between)")
+        adverb = Part(0, 1, 0, None, self._adverb(soft))
+        target = Part(2, 2, 0, None, self._kept(found, ("ADJ",)))
+        return Reading((adverb, target), 3, f"read '{text}' as '{soft} {words[2]}'")
 
     def _negated_unknown(self, words: Sequence[str], found: Sequence[Candidate]) -> Reading | None:
         """'white, not yellowed, plastic', 'grey, not red, slate': 'not' and a word that is no

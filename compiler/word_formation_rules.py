@@ -22,7 +22,7 @@ RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "FEATURE")
 
 _LISTS = {
     "punctuation": ("trailing", "leading", "quotes", "number_marks"),
-    "negation": ("words", "prefixes", "softeners", "emphatic", "emphatic_before", "strict"),
+    "negation": ("words", "prefixes", "softeners", "emphatic", "emphatic_before", "strict", "pointing"),
     "qualifiers": ("words", "sizes", "shapes", "ordinary", "purity", "liking", "imitation", "patterns", "fillers"),
     "comparison": ("words", "current"),
     "properties": ("endings",),
@@ -40,7 +40,9 @@ def empty_rules() -> dict[str, Any]:
             "emphatic": [],
             "emphatic_before": [],
             "strict": [],
+            "pointing": [],
             "soft_adverb": "",
+            "not_too": {},
         },
         "qualifiers": {
             "words": [],
@@ -81,6 +83,7 @@ def empty_rules() -> dict[str, Any]:
             "colour_forms": [],
             "colour_heads": [],
             "like_heads": [],
+            "like_not_before": [],
             "finish_heads": [],
             "surface_classes": [],
             "surface": [],
@@ -96,12 +99,16 @@ def check_rules(c: Checker, data: dict[str, Any]) -> dict[str, Any]:
     c.known_keys(data, tuple(rules), (), "section")
     for section, names in _LISTS.items():
         table = c.table(data.get(section, {}), (section,))
-        allowed = (*names, "soft_adverb") if section == "negation" else names
+        allowed = (*names, "soft_adverb", "not_too") if section == "negation" else names
         c.known_keys(table, allowed, (section,))
         for name in names:
             rules[section][name] = _words(c, table.get(name, []), (section, name))
         if section == "negation":
             rules[section]["soft_adverb"] = c.string(table.get("soft_adverb", ""), (section, "soft_adverb"))
+            pairs = c.table(table.get("not_too", {}), (section, "not_too"))
+            rules[section]["not_too"] = {
+                k.lower(): c.string(v, (section, "not_too", k), blank=False).lower() for k, v in pairs.items()
+            }
     rules["prefix"] = [_prefix(c, raw, i) for i, raw in enumerate(c.array(data.get("prefix", []), ("prefix",)))]
     rules["suffix"] = [_suffix(c, raw, i) for i, raw in enumerate(c.array(data.get("suffix", []), ("suffix",)))]
     rules["compounds"] = _compounds(c, data.get("compounds", {}))
@@ -201,6 +208,7 @@ RESEMBLANCE_WORD_LISTS = (
     "colour_forms",
     "colour_heads",
     "like_heads",
+    "like_not_before",
     "finish_heads",
     "surface_classes",
     "not_nearest",
@@ -253,6 +261,8 @@ def check_rule_names(c: Checker, rules: Mapping[str, Any], raw: Mapping[str, Map
     named_adjectives += [
         (("resemblance", "finish_adjectives", k), a) for k, a in resemblance["finish_adjectives"].items()
     ]
+    for key, finish in rules["negation"]["not_too"].items():
+        named_adjectives += [(("negation", "not_too"), key), (("negation", "not_too", key), finish)]
     for apath, adjective in named_adjectives:
         if adjective not in raw["adjectives"]:
             c.fail(apath, f"no adjective named '{adjective}'{did_you_mean(adjective, raw['adjectives'])}")

@@ -189,3 +189,109 @@ def test_a_made_treatment_must_still_be_part_of_the_material():
 )
 def test_chat_words_are_read_past(phrase, said, meant):
     assert look(refined(phrase, said)) == look(refined(phrase, meant))
+
+
+# ---------------------------------------------------------------- where it is, what it is for, what it is like
+
+
+@pytest.mark.parametrize(
+    ("said", "meant"),
+    [
+        ("sage green for the kitchen cabinets", "sage green paint"),
+        ("rusty corrugated iron on the shed roof", "rusty corrugated iron"),
+        ("frosted glass for the shower screen", "frosted glass"),
+        ("gold like a wedding ring", "gold"),
+        ("super shiny red like a new car", "super shiny red paint"),
+        ("raw concrete like a multistorey car park", "raw concrete"),
+        ("white marble, the kind you see in posh hotel bathrooms", "white marble"),
+        ("red cedar cladding on the shed", "red cedar cladding"),
+    ],
+)
+def test_context_after_the_look_is_read_past(said, meant):
+    assert not codes(said)
+    assert same_look(material(said), material(meant))
+    said_notes = notes(said)
+    assert any(n.startswith("read past ") for n in said_notes)
+    assert not any("usual material" in n for n in said_notes)  # the words read past have no notes of their own
+
+
+def test_a_clause_on_its_material_and_a_suffix_like_still_read_as_before():
+    assert same_look(material("rust on steel"), material("steel with rust"))
+    assert same_look(material("leather like vinyl"), material("leathery vinyl"))
+
+
+def test_context_after_a_change_is_read_past():
+    assert look(refined("oak", "darker, like a walnut stain")) == look(refined("oak", "darker"))
+
+
+# ---------------------------------------------------------------- between two colours, and words
+
+
+def test_between_two_colours_with_no_compound_is_half_way():
+    between = lch(material("somewhere between navy and charcoal")["params"]["base_color"])
+    navy, charcoal = (lch(material(f"{c} paint")["params"]["base_color"]) for c in ("navy", "charcoal"))
+    assert min(navy[0], charcoal[0]) < between[0] < max(navy[0], charcoal[0])
+    assert charcoal[1] < between[1] < navy[1]
+    assert not codes("halfway between navy and charcoal paint")
+
+
+@pytest.mark.parametrize(
+    ("said", "meant"),
+    [
+        ("concrete without the shine", "concrete without shine"),
+        ("red toy brick", "red abs"),
+    ],
+)
+def test_everyday_words(said, meant):
+    assert not codes(said)
+    assert same_look(material(said), material(meant))
+
+
+def test_rosier_is_pinker():
+    assert look(refined("polished gold", "rosier")) == look(refined("polished gold", "pinker"))
+
+
+# ---------------------------------------------------------------- limits of a finish, and chat around going back
+
+
+@pytest.mark.parametrize(
+    ("said", "meant"),
+    [
+        ("not too shiny black plastic", "satin black plastic"),
+        ("paint, not too shiny", "satin paint"),
+        ("not too shiny aluminum", "satin aluminum"),
+    ],
+)
+def test_not_too_shiny_is_the_finish_between(said, meant):
+    assert same_look(material(said), material(meant))
+
+
+@pytest.mark.parametrize("line", ["and not so shiny", "not too shiny"])
+def test_not_so_shiny_said_as_a_change_is_less_shiny(line):
+    before = refined("light oak").material["params"]["roughness"]
+    assert refined("light oak", line).material["params"]["roughness"] > before
+
+
+def test_going_back_with_its_chat():
+    assert look(refined("oak", "darker", "ooh too far, go back a little")) == look(
+        refined("oak", "darker", "a little lighter")
+    )
+    assert look(refined("oak", "lighter", "no, go back a bit darker")) == look(
+        refined("oak", "lighter", "a bit darker")
+    )
+
+
+@pytest.mark.parametrize(
+    ("said", "meant"),
+    [
+        ("darkish wood", "slightly dark wood"),
+        ("glossy white kitchen units", "glossy white cabinets"),
+        ("faded red cotton tea towel", "faded red cotton towel"),
+        ("a slightly darker oak than usual", "slightly darker oak"),
+        ("white glossy metro tiles behind the hob", "white glossy tiles"),
+    ],
+)
+def test_more_everyday_words(said, meant):
+    assert not codes(said)
+    assert same_look(material(said), material(meant))
+    assert map_params(material(said)) == map_params(material(meant))

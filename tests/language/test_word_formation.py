@@ -61,7 +61,7 @@ def assert_reads_as(lexicon, text, meaning, note_has=""):
         ("unanodized aluminum", "aluminum", "'raw'"),
         ("not weathered copper", "copper", "without 'weathered'"),
         ("unscratched chrome", "chrome", "without 'scratched'"),
-        ("not too glossy paint", "slightly glossy paint", "'slightly glossy'"),
+        ("not too glossy paint", "satin paint", "'satin' (the finish between)"),
         ("not overly rough stone", "slightly rough stone", "'slightly rough'"),
         ("non-toxic paint", "paint", "no effect"),
         ("anti-fog glass", "glass", "no effect"),
