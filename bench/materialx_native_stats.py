@@ -22,7 +22,7 @@ import OpenImageIO as oiio
 from cnlmc.api import compile_source, emit
 from cnlmc.output import write_artifacts
 
-COVERAGES = [0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.92, 0.95, 0.98, 0.99]
+COVERAGES = [0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.92, 0.95, 0.98, 0.99, 0.995]
 SIZE = "256"
 
 

@@ -13,6 +13,7 @@ runs on every line; only lines it accepts are looked at further.
 from __future__ import annotations
 
 from collections.abc import Callable
+from itertools import takewhile
 from typing import TYPE_CHECKING, Any
 
 from .diagnostics import Diagnostic, Severity
@@ -535,6 +536,8 @@ class Joiner:
         key = entry.get("feature") if entry is not None else None
         if entry is None or key is None or noun not in out or not of_tag(noun, "NOUN"):
             return
+        if self._noun_class(noun) in (entry.get("sheet_classes") or ()):
+            return  # 'stainless steel splashback': one sheet, no grout
         if self._own_pattern(noun):  # 'slate tiles': slate's own colour, the joints in relief
             key = entry.get("patterned_feature")
             if key is None:
@@ -591,6 +594,10 @@ class Joiner:
             clause.append(Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), _AND, implied_by=implied_by))
         out[n + 1 : n + 1] = clause
         return True
+
+    def _noun_class(self, noun: Tagged) -> str | None:
+        entry = self.lexicon.entry("nouns", of_tag(noun, "NOUN")[0].key)
+        return None if entry is None else entry.get("class")
 
     def _own_pattern(self, noun: Tagged) -> bool:
         """Whether the material draws a colour pattern of its own (marble's veins, granite's grains):
@@ -708,7 +715,9 @@ class Joiner:
         """Whether an object says how or what for while a later word names the material ('wire
         brushed oak', 'car window'): a noun follows, or an object follows one that is not a building
         product ('butcher block countertop': the product names the countertop's material)."""
-        rest = [t for t in rest if not t.unknown]  # an unknown word's tags are guesses ('tiles behind the hob')
+        rest = list(
+            takewhile(lambda t: not t.unknown, rest)
+        )  # from an unknown word on: read past ('tiles for a floor')
         if any(of_tag(t, "NOUN") for t in rest):
             return True
         if not any(of_tag(t, "OBJECT") for t in rest):

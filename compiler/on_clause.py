@@ -187,6 +187,7 @@ def _on_everyday_noun(said: Sequence[Tagged], text: str, lexicon: Lexicon) -> as
     """Describing words alone on the everyday noun ('sage green' = sage green paint: cnlmc.implied)."""
     from .implied import implied_noun
 
-    if not all(any(c.tag in DESCRIBING for c in w.candidates) for w in said):
+    said = [w for w in said if not all(c.tag == "ARTICLE" for c in w.candidates)]  # 'a really glossy ...'
+    if not said or not all(any(c.tag in DESCRIBING for c in w.candidates) for w in said):
         return None
     return parsed_material([*said, implied_noun(everyday_noun(), said[-1])], text, lexicon.caches.shapes)

@@ -18,7 +18,7 @@ from collections import OrderedDict
 from typing import TYPE_CHECKING
 
 from .diagnostics import Diagnostic, Severity, did_you_mean, error
-from .joins import COMPARED, Joiner, material_named_first, may_join, others_of, takes_target
+from .joins import COMPARED, Joiner, material_named_first, may_join, of_tag, others_of, takes_target
 from .lexicon import Lexicon
 from .spans import Span, line_span
 from .tagged import NOTE_CODE, Candidate, Tagged
@@ -156,6 +156,7 @@ class Tagger:
             raw = _pattern_tokens(line)
             if raw and not (raw[-1][0][0].isalnum() and raw[0][0][0].isalpha()):
                 raw = self._undecorated(raw)
+            raw = [t for t in raw if t[0] not in _QUOTE_MARKS]  # 'oak, light, "scandi" style': a quoted word
             if ":" in line:
                 i = self._name_prefix(line, raw, line_no, offset, tagged)
         remembered, followers, count = self.memo._entries, self.followers, len(raw)
@@ -197,8 +198,8 @@ class Tagger:
 
     def _undecorated(self, raw: list[RawToken]) -> list[RawToken]:
         """The line's words without decorative punctuation: trailing marks ('.', '!', '...'), one
-        leading bullet ('- ', '* ', '•') or list number ('1.', '2)') and quotes around the whole
-        line (word_formation rules)."""
+        leading bullet ('- ', '* ', '•') or list number ('1.', '2)'), quotes around the whole line
+        (word_formation rules)."""
         rules = self.formation().rules
         lo, hi = 0, len(raw)
         for _round in range(2):  # '"Brushed steel".': the mark, then the quotes, then a mark inside
@@ -299,8 +300,13 @@ class Tagger:
         diags.append(
             Diagnostic(self._span(raw, i, reading.words, line_no, offset), Severity.NOTE, NOTE_CODE, reading.note)
         )
-        if not reading.parts:  # "shiny, not rusty, iron": the words go, and one separator with them
-            return reading.words + _dropped_separator(raw, i + reading.words, tagged)
+        after = i + reading.words
+        item = after == len(raw) or raw[after][0] in _LIST_ITEM_MARKS or (tagged and of_tag(tagged[-1], "AND"))
+        if not reading.parts and item:
+            # "shiny, not rusty, iron", "polished and not tarnished silver": a whole list item goes, and
+            # one separator with it ("wood, all grey": a word read past before another word leaves the
+            # comma where it is)
+            return reading.words + _dropped_separator(raw, after, tagged)
         return reading.words
 
     def _comparison_starts(self, raw: list[RawToken], i: int) -> bool:
@@ -519,6 +525,7 @@ def _set_off(raw: list[RawToken], i: int) -> bool:
     return i > 0 and raw[i - 1][0] in _LIST_ITEM_MARKS and (i + 1 == len(raw) or raw[i + 1][0] in _LIST_ITEM_MARKS)
 
 
+_QUOTE_MARKS = frozenset(('"', "'", "“", "”", "‘", "’", "«", "»", "„", "‚"))
 _LIST_ITEM_MARKS = frozenset((",", ";", "(", ")", "[", "]"))
 
 

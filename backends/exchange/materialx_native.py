@@ -214,7 +214,9 @@ def rust_mask(ctx: Ctx) -> Any:
         in1=patches,
         in2=ctx.node("multiply", "pits_amount", "float", in1=pits, in2=0.15),
     )
-    threshold = (0.5 - coverage) * 1.2 - (1.0 if coverage >= 1.0 else 0.0)
+    # full cover from the last per cent up, continuously (the stats table's 0.99 and 1.0 rows): a
+    # coverage such as 0.9993 ('heavily rusted') covers nearly all of it, as cnlmc's bake does
+    threshold = (0.5 - coverage) * 1.2 - min(max((coverage - 0.99) / 0.01, 0.0), 1.0)
     return ctx.node(
         "smoothstep", "mask", "float", **{"in": pitted}, low=round(threshold - 0.04, 6), high=round(threshold + 0.04, 6)
     )

@@ -295,3 +295,26 @@ def test_more_everyday_words(said, meant):
     assert not codes(said)
     assert same_look(material(said), material(meant))
     assert map_params(material(said)) == map_params(material(meant))
+
+
+@pytest.mark.parametrize(
+    ("said", "meant"),
+    [
+        ("crumbly old sandstone", "weathered old sandstone"),
+        ("weathered grey fence panels", "weathered grey wood"),
+        ("oak with the grain showing through", "oak with grain"),
+        ("concrete with cracks all over it", "concrete with cracks"),
+    ],
+)
+def test_words_from_set_29(said, meant):
+    assert not codes(said)
+    assert same_look(material(said), material(meant))
+
+
+def test_too_clinical_is_too_cold():
+    assert look(refined("white paint", "too clinical")) == look(refined("white paint", "too cold"))
+
+
+def test_rusty_iron_is_mostly_rust():
+    coverage = map_params(material("rusty iron"))["mask"]["coverage"]
+    assert coverage > 0.6 > map_params(material("slightly rusty iron"))["mask"]["coverage"]
