@@ -8,9 +8,11 @@ twice goes back twice from the same change. Said after a change on the same line
 go back a bit') it is read past: the change already says which way (stdlib/data/teaching.toml
 [going_back]).
 
-`back_line` and `back_after_change` read a line (asked by cnlmc.document only for a line with an
-unknown word or one that does not parse); `reversed_change` builds the reversed line where the
-change above is known (cnlmc.analyze).
+`back_line`, `back_after_change` and `change_after_back` read a line (asked by cnlmc.document only
+for a line with an unknown word or one that does not parse; `goes_back` by a session for every
+line, so that a complaint is not read into it); `reversed_change` builds the reversed line where the
+change above is known (cnlmc.analyze). Openers are stripped one at a time, so no pattern backtracks
+over a run of them.
 """
 
 from __future__ import annotations
@@ -39,10 +41,11 @@ LineParser = Callable[[str, int, int, "Tagger", list[Diagnostic]], "ast.Item | N
 
 
 class Rules(NamedTuple):
-    """teaching.toml [going_back] as patterns: a whole line, and a back part ending a line."""
+    """teaching.toml [going_back] as patterns: one opener, the back phrase with its degree and the
+    trailing words to the line's end, and the back phrase before a change ('go back a bit darker')."""
 
-    line: re.Pattern[str]
-    tail: re.Pattern[str]
+    opener: re.Pattern[str]
+    back: re.Pattern[str]
     head: re.Pattern[str]
 
 
@@ -50,13 +53,28 @@ class Rules(NamedTuple):
 def _rules() -> Rules:
     table: dict[str, Any] = teaching()["going_back"]
     openers = [*teaching()["removal"]["openers"], *teaching()["keeping"]["openers"], *table["openers"]]
-    opener = rf"(?:(?:{alternatives(openers)})\s*[,!.:;]?\s+)*"
-    back = rf"(?:{alternatives(table['phrases'])})(?P<degree>(?:\s+[a-z]+){{0,3}}?)"
+    opener = re.compile(rf"(?:{alternatives(openers)})\s*[,!.:;]?\s+")
+    phrases = alternatives(table["phrases"])
     trailing = rf"(?:[\s,.!?]+(?:{alternatives(table['trailing'])}))*[\s,.!?]*$"
-    line = re.compile(rf"\s*{opener}{back}{trailing}")
-    tail = re.compile(rf"(?P<change>.*\S)\s*[,;]\s*{opener}{back}{trailing}")
-    head = re.compile(rf"\s*{opener}(?:{alternatives(table['phrases'])})[\s,]+(?=\S)")
-    return Rules(line, tail, head)
+    back = re.compile(rf"(?:{phrases})(?P<degree>(?:\s+[a-z]+){{0,3}}?){trailing}")
+    head = re.compile(rf"(?:{phrases})[\s,]+(?=\S)")
+    return Rules(opener, back, head)
+
+
+def _past_openers(low: str, at: int) -> int:
+    """Where the words start after up to three openers ('ok,', 'ooh', 'no wait'), one at a time."""
+    at = len(low) - len(low[at:].lstrip())
+    for _ in range(3):
+        found = _rules().opener.match(low, at)
+        if found is None:
+            break
+        at = found.end()
+    return at
+
+
+def _back_at(low: str, at: int) -> re.Match[str] | None:
+    """The back phrase (with its degree and trailing words) filling the line from `at`, past openers."""
+    return _rules().back.match(low, _past_openers(low, at))
 
 
 def _degree(found: re.Match[str], tagger: Tagger) -> str | None:
@@ -72,12 +90,12 @@ def _degree(found: re.Match[str], tagger: Tagger) -> str | None:
 
 def goes_back(text: str) -> bool:
     """Whether the whole line only goes back ('ooh too far, go back a little'): no complaint to read."""
-    return _rules().line.match(text.lower()) is not None
+    return _back_at(text.lower(), 0) is not None
 
 
 def back_line(text: str, number: int, offset: int, tagger: Tagger) -> ast.Refinement | None:
     """The line as one that goes back on the change above (its degree in `back`), or None."""
-    found = _rules().line.match(text.lower())
+    found = _back_at(text.lower(), 0)
     if found is None:
         return None
     degree = _degree(found, tagger)
@@ -91,17 +109,20 @@ def back_line(text: str, number: int, offset: int, tagger: Tagger) -> ast.Refine
 def back_after_change(text: str, tagger: Tagger) -> tuple[int, str] | None:
     """'too blue, back a bit': where the change before the back part ends, and the back part
     (read past); None for any other line."""
-    found = _rules().tail.match(text.lower())
-    if found is None or _degree(found, tagger) is None:
+    low = text.lower()
+    mark = max(low.rfind(","), low.rfind(";"))
+    found = _back_at(low, mark + 1) if mark > 0 else None
+    if found is None or _degree(found, tagger) is None or not low[:mark].strip():
         return None
-    end = found.end("change")
+    end = len(low[:mark].rstrip())
     return end, text[end:].strip(" ,;")
 
 
 def change_after_back(text: str) -> int | None:
     """'no, go back a bit darker': where the change after the back phrase starts (the back phrase
     is read past: the change says which way); None when the line does not open so."""
-    found = _rules().head.match(text.lower())
+    low = text.lower()
+    found = _rules().head.match(low, _past_openers(low, 0))
     return None if found is None else found.end()
 
 

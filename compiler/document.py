@@ -4,7 +4,6 @@ Lines end as cnlmc.lines says (CRLF, LF or a lone CR); `iter_lines` is re-export
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 from dataclasses import replace
 
@@ -145,32 +144,54 @@ def _said_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
     )
 
 
-_DEGREE_AFTER = re.compile(r"(?P<change>.*\S)\s*,\s*(?:but\s+)?(?:only\s+)?(?P<degree>[a-z][a-z ]*?)[\s.!?]*$")
-
-
 def _degree_after(
     text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]
 ) -> ast.Refinement | None:
-    """'rougher, a little', 'darker, but only slightly': a degree said after the comparatives is
-    their degree (each one said without its own), with a note; None for any other line."""
-    found = _DEGREE_AFTER.match(text.lower())
-    if found is None:
+    """'rougher, a little', 'darker, but only slightly', 'lighter a bit': a degree said after the
+    comparatives is their degree (each one said without its own), with a note; None for any other
+    line. Each place the degree may start is tried, the last word first ('bit', then 'a bit')."""
+    low = text.lower()
+    cuts = [end for end in range(len(low.rstrip(" .!?")), 0, -1) if low[end - 1] in " ,"][:_DEGREE_WORDS]
+    for end in cuts:
+        reading = _degree_from(text, low, end, number, offset, tagger)
+        if reading is not None:
+            diags.extend(reading[1])
+            return reading[0]
+    return None
+
+
+_DEGREE_WORDS = 3  # a degree is at most three words ('a little bit'): the places it may start
+
+
+def _degree_from(
+    text: str, low: str, at: int, number: int, offset: int, tagger: Tagger
+) -> tuple[ast.Refinement, list[Diagnostic]] | None:
+    """The line read with the degree starting at `at` (after a space or comma), or None."""
+    degree = low[at:].rstrip(" .!?")
+    head = low[:at].rstrip(" ,")
+    from .suggest import teaching
+
+    between = teaching()["going_back"]["before_degree"]  # 'darker, but only slightly'
+    while head.rsplit(" ", 1)[-1] in between and " " in head:
+        head = head.rsplit(" ", 1)[0].rstrip(" ,")
+    if not degree or not head:
         return None
-    degree = found["degree"]
-    if not any(e.category == "adverbs" for e in tagger.lexicon.lookup(tuple(degree.split()))):
+    entries = tagger.lexicon.lookup(tuple(degree.split()))
+    if not any(e.category == "adverbs" for e in entries):
         return None
     said: list[Diagnostic] = []
-    node = _parsed_line(text[: found.end("change")], number, offset, tagger, said)
+    node = _parsed_line(text[: len(head)], number, offset, tagger, said, removals=False)
     if not isinstance(node, ast.Refinement) or not node.items or any(d.is_error for d in said):
         return None
-    start = found.start("degree")
-    span = Span(offset + start, offset + start + len(degree), number, start + 1)
-    key = tagger.lexicon.lookup(tuple(degree.split()))[0].key
-    adverb = ast.Word(text[start : start + len(degree)], key, "adverbs", span)
+    span = Span(offset + at, offset + at + len(degree), number, at + 1)
+    key = next(e.key for e in entries if e.category == "adverbs")
+    adverb = ast.Word(text[at : at + len(degree)], key, "adverbs", span)
     items = tuple(item if item.adverbs else replace(item, adverbs=(adverb,)) for item in node.items)
-    note = f"read '{text[start : start + len(degree)]}' as the degree of the change before it"
-    diags.extend([*said, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)])
-    return replace(node, items=items, span=Span(offset, offset + len(text.rstrip()), number, 1), text=text)
+    note = Diagnostic(
+        span, Severity.NOTE, NOTE_CODE, f"read '{text[at : at + len(degree)]}' as the degree of the change before it"
+    )
+    line = replace(node, items=items, span=Span(offset, offset + len(text.rstrip()), number, 1), text=text)
+    return line, [*said, note]
 
 
 def _going_back(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Refinement | None:
@@ -188,11 +209,11 @@ def _going_back(text: str, number: int, offset: int, tagger: Tagger, diags: list
     change: list[Diagnostic] = []
     if tail is not None:  # 'too blue, back a bit'
         end, said = tail
-        node = _parsed_line(text[:end], number, offset, tagger, change)
+        node = _parsed_line(text[:end], number, offset, tagger, change, removals=False)
         start = text.index(said, end)
     else:  # 'no, go back a bit darker'
         assert head is not None
-        node = _parsed_line(" " * head + text[head:], number, offset, tagger, change)
+        node = _parsed_line(" " * head + text[head:], number, offset, tagger, change, removals=False)
         said, start = text[:head].strip(" ,"), len(text) - len(text.lstrip())
     if not isinstance(node, ast.Refinement) or not node.items or any(d.is_error for d in change):
         return None
@@ -305,7 +326,14 @@ def _failed_line(
     """The taught error of a line that does not parse, or the line read with its implied material
     when it only describes one ('matte black'), or as a change of the material above when it
     starts with a change phrase ('make it blue'): cnlmc.implied."""
-    from .hedges import finish_dropped, inside_a_note, postfix_finish, read_past, reread, with_implied
+    from .hedges import (
+        finish_dropped,
+        inside_a_note,
+        postfix_finish,
+        read_past,
+        reread,
+        with_implied,
+    )
 
     named = _material_named_first(words, text, lexicon)  # 'marble: white, honed'
     if named is not None:
@@ -372,8 +400,11 @@ def _material_named_first(words: list[Tagged], text: str, lexicon: Lexicon) -> t
     nouns = tuple(c for c in named[0].candidates if c.tag == "NOUN" and c.category == "nouns") if known else ()
     if not nouns:
         return None
+    from .implied import implied_noun
+
     end = words[-1].span.end
-    noun = Tagged(head.text, Span(end, end + 1, head.span.line, end - offset + 1), nouns, implied_by=head.span)
+    placed = implied_noun(nouns[0].key, words[-1])  # inside the last word's span, where no word starts
+    noun = Tagged(head.text, placed.span, nouns, implied_by=head.span)
     node = _parsed([*words[2:], noun], text, lexicon)
     if not isinstance(node, ast.Material):
         return None

@@ -62,7 +62,33 @@ def reread(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], lis
     if said_of is not None:
         out, note = said_of
         notes.append(note)
+    kind = the_kind(out)
+    if kind is not None:
+        out, note = kind
+        notes.append(note)
     return out, notes
+
+
+def the_kind(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | None:
+    """'cherry wood, the reddish kind, satin varnish': 'the' + describing words + a kind word
+    (teaching.toml [hedges] `kinds`), set off as a list item, is those describing words, with a
+    note; None when the line has no such part."""
+    table = teaching()["hedges"]
+    kinds, articles = table["kinds"], table["kind_articles"]
+    texts = [w.text.lower() for w in words]
+    for at, text in enumerate(texts):
+        if text not in articles:
+            continue
+        end = next((k for k in range(at + 1, len(words)) if texts[k] in kinds), None)
+        if end is None or end == at + 1 or end - at > 4:
+            continue
+        said = words[at + 1 : end]
+        if not all(any(c.tag in ("ADJ", "COLOR", "SHADE", "ADV") for c in w.candidates) for w in said):
+            continue
+        if end + 1 < len(words) and words[end + 1].text[:1].isalnum():
+            continue  # 'the reddish kind of oak': the kind names the material after it
+        return [*words[:at], *said, *words[end + 1 :]], _read_as(words[at : end + 1], _joined(said))
+    return None
 
 
 def colour_of(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], Diagnostic] | None:

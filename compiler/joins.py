@@ -817,14 +817,18 @@ def takes_target(word: Tagged, lexicon: Lexicon) -> bool:
     return any(e is not None and e.get("target") == "any" for e in entries)
 
 
-def material_named_first(out: list[Tagged], diags: list[Diagnostic]) -> None:
+def material_named_first(out: list[Tagged], diags: list[Diagnostic], lexicon: Lexicon) -> None:
     """'walnut, dark, satin', 'walnut; satin': a listing that opens with a material noun and then,
     after a comma, names only describing words reads every word after the mark as describing the
     material named first, also one that may be a material itself ('satin' the fabric), with a note
-    (only where the first noun is also a colour: 'walnut' may be the satin's colour)."""
+    (only where the first noun is also a colour, 'walnut' may be the satin's colour, and a hard
+    material a finish is said of: FINISHED_CLASSES; 'ivory, silk' stays ivory silk)."""
     first = out[0]
     if not of_tag(first, "NOUN") or not any(c.tag in DESCRIBING for c in first.candidates):
         return  # a noun that is no colour ('oak, satin') is read as the material already
+    entry = lexicon.entry("nouns", of_tag(first, "NOUN")[0].key)
+    if entry is None or entry.get("class") not in FINISHED_CLASSES:
+        return  # 'ivory, silk', 'cream, silk': the colour of the silk
     if out[1].text not in (",", ";"):
         return
     rest = [t for t in out[2:] if not (of_tag(t, "COMMA") or of_tag(t, "AND"))]
@@ -832,7 +836,7 @@ def material_named_first(out: list[Tagged], diags: list[Diagnostic]) -> None:
         return
     for k in range(2, len(out)):
         word = out[k]
-        if of_tag(word, "NOUN") and any(c.tag in DESCRIBING for c in word.candidates):
+        if of_tag(word, "NOUN") and any(c.tag == "ADJ" for c in word.candidates):  # 'satin': not 'silver' the colour
             describing = tuple(c for c in word.candidates if c.tag != "NOUN")
             out[k] = Tagged(word.text, word.span, describing, word.unknown, word.implied_by)
             note = f"read '{word.text}' as describing the {out[0].text} (the material named first)"
@@ -851,6 +855,8 @@ def _describing(word: Tagged) -> Tagged:
 
 
 #: the marks a product listing sets a finish off by ('Walnut / Satin Lacquer', 'Oak - natural oil')
+#: material classes a finish word is said of after a comma ('walnut, satin'), not the colour of a cloth
+FINISHED_CLASSES = frozenset(("wood", "stone", "metal", "plastic"))
 LISTING_MARKS = frozenset((",", "/", "-", "–", "—", ";"))
 
 

@@ -77,9 +77,12 @@ def kept_before_change(text: str, number: int, offset: int, tagger: Tagger) -> t
     word ('but': teaching.toml [politeness] remark_breaks) starts, and the note reading the kept
     part past; None when no kept part opens the line."""
     low = text.lower()
-    for joiner in teaching()["politeness"]["remark_breaks"]:
-        found = re.search(rf"[\s,]+{re.escape(joiner)}\s+", low)
-        if found is None or not text[found.end() :].strip():
+    joiners = (*teaching()["politeness"]["remark_breaks"], *teaching()["keeping"]["change_joiners"])
+    breaks = (found for joiner in joiners for found in re.finditer(rf"[\s,]+{re.escape(joiner)}\s+", low))
+    for found in sorted(
+        breaks, key=lambda m: -m.start()
+    ):  # the longest kept part first ('keep the grain and colour and make it darker')
+        if not text[found.end() :].strip():
             continue
         kept = text[: found.start()]
         start = len(kept) - len(kept.lstrip())

@@ -159,7 +159,10 @@ def context_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tup
     table = teaching()["hedges"]
     pointed = rf"(?:{alternatives(table['context_pointing'])})\s+(?:{alternatives(table['pointing_words'])})"
     pattern = rf"(?:^|(?<=[\s,;.]))(?:{alternatives(table['context'])}|{pointed})(?=[\s,.!?]|$)"
+    likeness = tuple(w for w in table["context_pointing"] if w.split()[-1] == "like")
     for found in re.finditer(pattern, low):
+        if not found.group(0).startswith(likeness) and _names_a_material(words, line_start + found.start(), lexicon):
+            continue  # 'steel on the oak', 'brass inlay on the walnut': a second material, not a place
         before = [w for w in words if _said_before(w, line_start + found.start())]
         while before and not before[-1].text[:1].isalnum():  # 'white marble, the kind ...': the comma goes too
             before.pop()
@@ -174,6 +177,18 @@ def context_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tup
         note = f"read past '{dropped}': where it is, what it is for or what it is like, not how it looks"
         return reading, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)
     return None
+
+
+def _names_a_material(words: Sequence[Tagged], at: int, lexicon: Lexicon) -> bool:
+    """Whether a word said from offset `at` on is a material's own name ('oak'; not 'roof', an
+    object whose usual material the joins put in its place)."""
+    for word in words:
+        if word.implied_by is not None or word.span.start < at or not word.text[:1].isalpha():
+            continue
+        categories = {e.category for e in lexicon.lookup(tuple(word.text.lower().split()))}
+        if "nouns" in categories and "objects" not in categories:
+            return True
+    return False
 
 
 def _said_before(word: Tagged, at: int) -> bool:

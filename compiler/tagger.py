@@ -156,9 +156,9 @@ class Tagger:
             raw = _pattern_tokens(line)
             if raw and not (raw[-1][0][0].isalnum() and raw[0][0][0].isalpha()):
                 raw = self._undecorated(raw)
-            raw = [t for t in raw if t[0] not in _QUOTE_MARKS]  # 'oak, light, "scandi" style': a quoted word
             if ":" in line:
                 i = self._name_prefix(line, raw, line_no, offset, tagged)
+            raw = raw[:i] + self._unquoted(raw[i:], line)  # the name keeps its marks
         remembered, followers, count = self.memo._entries, self.followers, len(raw)
         while i < count:
             text, col = raw[i]
@@ -180,7 +180,7 @@ class Tagger:
         if raw_marks:
             tagged = _one_mark_between(tagged)
             if len(tagged) > 2:
-                material_named_first(tagged, diags)  # 'walnut, dark, satin': satin describes the walnut
+                material_named_first(tagged, diags, self.lexicon)  # 'walnut, dark, satin': satin describes the walnut
         if may_join(tagged):
             tagged = self.joiner.joined(tagged, diags)
         if len(tagged) > 1:
@@ -195,6 +195,34 @@ class Tagger:
         from .word_formation import WordFormation
 
         return WordFormation.of(self.lexicon, self._candidates)
+
+    def _unquoted(self, raw: list[RawToken], line: str) -> list[RawToken]:
+        """The words without quote marks around a word ('oak, light, "scandi" style'), a mark after a
+        number kept (12" tile: inches), and a bracketed suffix glued to its word ('white(ish)')."""
+        kept = [t for k, t in enumerate(raw) if t[0] not in _QUOTE_MARKS or (k and raw[k - 1][0][:1].isdigit())]
+        return self._bracketed_suffixes(kept) if "(" in line else kept
+
+    def _bracketed_suffixes(self, raw: list[RawToken]) -> list[RawToken]:
+        """'white(ish)': a suffix of the rules said in brackets right after its word is glued to it."""
+        suffixes = self.formation().rules.bracketed_suffixes
+        out: list[RawToken] = []
+        i = 0
+        while i < len(raw):
+            text, col = raw[i]
+            parts = [t for t, _c in raw[i + 1 : i + 4]]
+            if (
+                len(parts) == 3
+                and parts[0] == "("
+                and parts[1].lower() in suffixes
+                and parts[2] == ")"
+                and raw[i + 1][1] == col + len(text)
+            ):
+                out.append((text + parts[1], col))
+                i += 4
+                continue
+            out.append(raw[i])
+            i += 1
+        return out
 
     def _undecorated(self, raw: list[RawToken]) -> list[RawToken]:
         """The line's words without decorative punctuation: trailing marks ('.', '!', '...'), one

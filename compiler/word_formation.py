@@ -77,6 +77,7 @@ class Rules:
         self.leading = frozenset(joined("punctuation", "leading"))
         self.quotes = frozenset(joined("punctuation", "quotes"))
         self.number_marks = frozenset(joined("punctuation", "number_marks"))
+        self.bracketed_suffixes = frozenset(joined("punctuation", "bracketed_suffixes"))  # 'white(ish)'
         self.negation_words = frozenset(joined("negation", "words"))
         self.strict_negation = frozenset(joined("negation", "strict"))  # "nothing shiny", never "nothing else"
         self.negation_prefixes = joined("negation", "prefixes")
@@ -658,9 +659,9 @@ class WordFormation:
         return Reading(tuple(Part(0, 1, 0, None, p.candidates) for p in reading.parts), reading.words, reading.note)
 
     def _not_too(self, words: Sequence[str], found: tuple[Candidate, ...]) -> Reading:
-        """'not too shiny' = the finish between (negation `not_too`: satin, never shinier than the
-        material was); any other word = the soft adverb + the word ('not too rough' = slightly
-        rough, 'not too rusty' = slightly rusty)."""
+        """'not too shiny' = the finish between (negation `not_too`: satin, a set finish); any other
+        word = the soft adverb + the word ('not too rough' = slightly rough, 'not too rusty' =
+        slightly rusty)."""
         soft = self.rules.soft_adverb
         text = " ".join(words[:3])
         adjective = next(c for c in found if c.tag == "ADJ")

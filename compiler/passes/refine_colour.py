@@ -160,6 +160,10 @@ def refine_named_colour(
     if direction > 0 and math.hypot(a, b) < _achromatic():  # 'more grey' on black: a step of the whole colour
         _closer(state, item, param, named, amount)
         return
+    away_from = _away_from_achromatic(_l, math.hypot(a, b), apparent(state, param, holder[name]))
+    if direction < 0 and away_from is not None:  # 'less black' on black: a step toward a mid grey
+        _closer(state, item, param, away_from, amount)
+        return
     if direction < 0 and hue_share(apparent(state, param, holder[name]), (a, b)) < NEUTRAL_CHROMA:
         state.diagnostics.append(
             note(item.span, "N105", f"'{item.word.text} {colour_text(target)}': the colour has none of it to take away")
@@ -174,6 +178,22 @@ def refine_named_colour(
     holder[name] = new
     note_unmoved(state, item, param, current, new)
     state.note(param, new, f"refinements.{item.word.key} {colour_text(target)}: hue step", item_words(item))
+
+
+def _away_from_achromatic(lightness: float, chroma: float, current: list[float]) -> list[float] | None:
+    """The mid grey a step away from a named black or white goes toward (colour_rules.toml
+    `achromatic_away`), where the material's colour is itself near that black or white ('less
+    black' on black plastic; not on navy, which has no black to take away); None otherwise."""
+    from ..lexicon_load import colour_rules
+
+    rule = colour_rules()["achromatic_away"]
+    mid, far = float(rule["mid_lightness"]), float(rule["min_distance"])
+    now_l, now_a, now_b = linear_to_oklab(current)
+    if chroma >= _achromatic() or abs(lightness - mid) < far:
+        return None
+    if math.hypot(now_a, now_b) >= _achromatic() or (now_l - mid) * (lightness - mid) <= 0 or abs(now_l - mid) < far:
+        return None  # a colour with a hue, or one on the other side of the grey or near it
+    return [mid**3] * 3  # OKLab L of a grey is the cube root of its linear value
 
 
 def _achromatic() -> float:
