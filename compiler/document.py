@@ -10,7 +10,7 @@ from dataclasses import replace
 from . import ast
 from .diagnostics import Diagnostic, Severity, error
 from .lexicon import Lexicon
-from .line_parts import PART_MARKS, by_parts, material_then_comparatives, part_cuts
+from .line_parts import PART_MARKS, Reader, by_parts, material_then_comparatives, part_cuts
 from .lines import iter_lines
 from .on_clause import context_dropped, likeness_dropped, on_material
 from .parser import ParseFailure, describe_expected, parse_line_shape, parsed_item
@@ -359,7 +359,7 @@ def _failed_line(
             diags[:] = [d for d in diags if not read_past(d, attempt[1])]  # 'loads' of 'loads of'
             diags.extend(attempt[1])
             return node
-    whole = _whole_line(hedged, text, lexicon)
+    whole = _whole_line(hedged, text, lexicon) or _but_then_comparatives(hedged, text, lexicon)
     if whole is not None:
         taken = _removal_part(text)  # 'no' of 'oak, no grain': read as the removal, and no other note of it
         passed = [n for n in whole[1] if n.message.startswith("read past ")]  # a part read past: all its errors go
@@ -501,12 +501,41 @@ def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Ite
         return None
     at = words[0].span
     number, offset = at.line, at.start - (at.col - 1)
+    read = _part_reader(text, number, offset, lexicon)
+    return by_parts(text, number, offset, read) or material_then_comparatives(text, number, offset, read, lexicon)
+
+
+def _part_reader(text: str, number: int, offset: int, lexicon: Lexicon) -> Reader:
+    """Reads the text from start to end as a line of its own, the rest blanked (columns stay the line's)."""
 
     def read(start: int, end: int, said: list[Diagnostic]) -> ast.Item | None:
         alone = " " * start + text[start:end] + " " * (len(text) - end)
         return parse_line(alone, number, offset, Tagger.of(lexicon), said)
 
-    return by_parts(text, number, offset, read) or material_then_comparatives(text, number, offset, read, lexicon)
+    return read
+
+
+def _but_then_comparatives(
+    words: list[Tagged], text: str, lexicon: Lexicon
+) -> tuple[ast.Item, list[Diagnostic]] | None:
+    """'navy but a bit brighter', 'concrete but lighter grey': a material (or colours), 'but', then
+    comparatives: the material moved by them, as 'navy, a bit brighter' is, with a note."""
+    from .suggest import teaching
+
+    breaks = teaching()["politeness"]["remark_breaks"]  # 'but'
+    joiners = [w for w in words if w.text.lower() in breaks and w.implied_by is None]
+    if len(joiners) != 1 or words[0].implied_by is not None:
+        return None
+    at = words[0].span
+    number, offset = at.line, at.start - (at.col - 1)
+    start = joiners[0].span.start - offset
+    listed = text[:start] + "," + " " * (len(joiners[0].text) - 1) + text[start + len(joiners[0].text) :]
+    found = material_then_comparatives(listed, number, offset, _part_reader(listed, number, offset, lexicon), lexicon)
+    if found is None:
+        return None
+    said = f"{text[:start].strip()}, {text[start + len(joiners[0].text) :].strip()}"
+    note = f"read '{text.strip()}' as '{said}' (the comparatives after '{joiners[0].text}')"
+    return found[0], [*found[1], Diagnostic(joiners[0].span, Severity.NOTE, NOTE_CODE, note)]
 
 
 def _without_article(words: list[Tagged]) -> list[Tagged] | None:

@@ -48,6 +48,8 @@ def reread(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], lis
     i = 0
     while i < len(words):
         n = _quantity_at(words, i, table)
+        if n and i and _is_article(words[i - 1]):
+            n = 0  # 'a hint of green' is the feature 'hint' (with its article), not 'hint of' said bare
         if n and _degree_target(words, i + n, _names_a_feature(words[i : i + n])):
             said = _joined(words[i : i + n])
             word = _degree_word(table[said], words[i : i + n], lexicon)

@@ -418,3 +418,20 @@ def test_inches_keep_their_mark():
 def test_many_openers_and_degree_words_end_in_errors_not_a_crash():
     assert codes("oak\n" + "no " * 40 + "darker")  # a backtracking pattern would take minutes here
     assert "E004" in codes("zzz darker " + "bit " * 300)  # too long: said so, no deep recursion
+
+
+def test_a_quantity_without_its_article_is_a_degree():
+    assert same_look(material("glass with a bit of a greenish tinge"), material("glass with a slightly greenish tinge"))
+
+
+def test_a_state_likeness_after_a_change_is_read_past():
+    said = refined("terracotta pot", "more faded, like it's been out in the sun")
+    assert look(said) == look(refined("terracotta pot", "more faded"))
+
+
+@pytest.mark.parametrize(
+    ("said", "meant"), [("navy but a bit brighter", "navy, a bit brighter"), ("oak but darker", "darker oak")]
+)
+def test_comparatives_after_but(said, meant):
+    assert not codes(said)
+    assert same_look(material(said), material(meant))
