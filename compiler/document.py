@@ -24,7 +24,7 @@ from .relative_clause import (
 from .removal import removal_line
 from .shape_store import save_shapes
 from .spans import Span
-from .tagged import NOTE_CODE, Tagged
+from .tagged import NOTE_CODE, Tagged, only_tag
 from .tagger import Tagger
 
 __all__ = ["iter_items", "iter_lines", "parse_document", "parse_line"]
@@ -167,10 +167,10 @@ def _degree_from(
     text: str, low: str, at: int, number: int, offset: int, tagger: Tagger
 ) -> tuple[ast.Refinement, list[Diagnostic]] | None:
     """The line read with the degree starting at `at` (after a space or comma), or None."""
-    degree = low[at:].rstrip(" .!?")
-    head = low[:at].rstrip(" ,")
     from .suggest import teaching
 
+    degree = low[at:].rstrip(" .!?")
+    head = low[:at].rstrip(" ,")
     between = teaching()["going_back"]["before_degree"]  # 'darker, but only slightly'
     while head.rsplit(" ", 1)[-1] in between and " " in head:
         head = head.rsplit(" ", 1)[0].rstrip(" ,")
@@ -190,7 +190,7 @@ def _degree_from(
     note = Diagnostic(
         span, Severity.NOTE, NOTE_CODE, f"read '{text[at : at + len(degree)]}' as the degree of the change before it"
     )
-    line = replace(node, items=items, span=Span(offset, offset + len(text.rstrip()), number, 1), text=text)
+    line = replace(node, items=items, span=_line_span(text, number, offset), text=text)
     return line, [*said, note]
 
 
@@ -220,7 +220,12 @@ def _going_back(text: str, number: int, offset: int, tagger: Tagger, diags: list
     span = Span(offset + start, offset + start + len(said), number, start + 1)
     note = f"read past '{said}': the change said with it says which way"
     diags.extend([*change, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)])
-    return replace(node, span=Span(offset, offset + len(text.rstrip()), number, 1), text=text)
+    return replace(node, span=_line_span(text, number, offset), text=text)
+
+
+def _line_span(text: str, number: int, offset: int) -> Span:
+    """The span of the whole line, its trailing blanks left out (a line read another way)."""
+    return Span(offset, offset + len(text.rstrip()), number, 1)
 
 
 def parse_change_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Item | None:
@@ -244,7 +249,7 @@ def _change_after_kept(
     if not isinstance(node, ast.Refinement) or any(d.is_error for d in said):
         return None
     diags.extend([note, *said])
-    return replace(node, span=Span(offset, offset + len(text.rstrip()), number, 1), text=text)
+    return replace(node, span=_line_span(text, number, offset), text=text)
 
 
 def _comparative_reading(
@@ -391,7 +396,7 @@ def _material_named_first(words: list[Tagged], text: str, lexicon: Lexicon) -> t
     """'marble: white, honed', 'concrete: raw, grey': a name that is a material noun, and after its
     colon only describing words, is the material they describe (the words, then the noun), with a
     note; None for any other line."""
-    if len(words) < 3 or not _only_tag(words[0], "NAME") or not _only_tag(words[1], "COLON"):
+    if len(words) < 3 or not only_tag(words[0], "NAME") or not only_tag(words[1], "COLON"):
         return None
     head = words[0]
     offset = head.span.start - head.span.col + 1
@@ -411,10 +416,6 @@ def _material_named_first(words: list[Tagged], text: str, lexicon: Lexicon) -> t
     said = text[words[2].span.start - offset : end - offset]
     note = f"read '{head.text}:' as the material the words after it describe: '{said} {head.text.lower()}'"
     return node, Diagnostic(head.span, Severity.NOTE, NOTE_CODE, note)
-
-
-def _only_tag(word: Tagged, tag: str) -> bool:
-    return len(word.candidates) == 1 and word.candidates[0].tag == tag
 
 
 def _as_change(node: ast.Item, words: list[Tagged], text: str, lexicon: Lexicon, diags: list[Diagnostic]) -> ast.Item:

@@ -18,6 +18,7 @@ from collections.abc import Sequence
 
 from . import ast
 from .diagnostics import Diagnostic, Severity
+from .joins import DESCRIBING
 from .lexicon import Lexicon
 from .spans import Span
 from .suggest import everyday_noun, teaching
@@ -85,7 +86,7 @@ def the_kind(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | None:
         if end is None or end == at + 1 or end - at > 4:
             continue
         said = words[at + 1 : end]
-        if not all(any(c.tag in ("ADJ", "COLOR", "SHADE", "ADV") for c in w.candidates) for w in said):
+        if not all(any(c.tag in DESCRIBING for c in w.candidates) for w in said):
             continue
         if end + 1 < len(words) and words[end + 1].text[:1].isalnum():
             continue  # 'the reddish kind of oak': the kind names the material after it

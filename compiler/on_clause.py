@@ -108,15 +108,11 @@ def _likeness_of_a_colour(
     """'warm greige, like a mushroom': describing words alone, then a likeness that names no
     material: the describing words on the everyday noun colours go on (paint, as for describing
     words alone: cnlmc.implied), the likeness read past; None when they do not parse so."""
-    from .implied import implied_noun
-
     said = [w for w in before if w.text[:1].isalnum()]
-    if not said or not all(any(c.tag in DESCRIBING for c in w.candidates) for w in said):
-        return None
-    noun = everyday_noun()
-    material = parsed_material([*said, implied_noun(noun, said[-1])], text, lexicon.caches.shapes)
+    material = _on_everyday_noun(said, text, lexicon)
     if material is None:
         return None
+    noun = everyday_noun()
     note = (
         f"no material named: read '{written_text(said)}' as '{written_text(said)} {noun}', "
         f"and read past '{likeness}': a likeness to a thing"
@@ -169,7 +165,8 @@ def context_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tup
         said = [w for w in before if w.text[:1].isalnum()]
         if not said or any(w.unknown for w in said):
             continue
-        reading = parsed_item(before, text, lexicon.caches.shapes) or _on_everyday_noun(said, text, lexicon)
+        unarticled = [w for w in said if not all(c.tag == "ARTICLE" for c in w.candidates)]  # 'a really glossy ...'
+        reading = parsed_item(before, text, lexicon.caches.shapes) or _on_everyday_noun(unarticled, text, lexicon)
         if reading is None:
             continue
         dropped = text[found.start() :].strip()
@@ -199,10 +196,10 @@ def _said_before(word: Tagged, at: int) -> bool:
 
 
 def _on_everyday_noun(said: Sequence[Tagged], text: str, lexicon: Lexicon) -> ast.Material | None:
-    """Describing words alone on the everyday noun ('sage green' = sage green paint: cnlmc.implied)."""
+    """Describing words alone on the everyday noun ('sage green' = sage green paint: cnlmc.implied);
+    None when a word is no describing word, or they do not parse so."""
     from .implied import implied_noun
 
-    said = [w for w in said if not all(c.tag == "ARTICLE" for c in w.candidates)]  # 'a really glossy ...'
     if not said or not all(any(c.tag in DESCRIBING for c in w.candidates) for w in said):
         return None
     return parsed_material([*said, implied_noun(everyday_noun(), said[-1])], text, lexicon.caches.shapes)

@@ -34,6 +34,11 @@ class Tagged:
     implied_by: Span | None = None
 
 
+def only_tag(word: Tagged, tag: str) -> bool:
+    """Whether the word has one reading, of this grammar tag (a comma, a name, a colon)."""
+    return len(word.candidates) == 1 and word.candidates[0].tag == tag
+
+
 def written_span(words: Sequence[Tagged]) -> Span:
     """From the first word to the last as the user wrote them: a word no one typed stands for the
     words that imply it (its `implied_by`), so a note never points inside a word."""

@@ -21,7 +21,7 @@ from .diagnostics import Diagnostic, Severity, did_you_mean, error
 from .joins import COMPARED, Joiner, material_named_first, may_join, of_tag, others_of, takes_target
 from .lexicon import Lexicon
 from .spans import Span, line_span
-from .tagged import NOTE_CODE, Candidate, Tagged
+from .tagged import NOTE_CODE, Candidate, Tagged, only_tag
 
 if TYPE_CHECKING:  # imported on first use: only a line with an unknown word or punctuation needs it
     from .word_formation import Reading, WordFormation
@@ -199,7 +199,8 @@ class Tagger:
     def _unquoted(self, raw: list[RawToken], line: str) -> list[RawToken]:
         """The words without quote marks around a word ('oak, light, "scandi" style'), a mark after a
         number kept (12" tile: inches), and a bracketed suffix glued to its word ('white(ish)')."""
-        kept = [t for k, t in enumerate(raw) if t[0] not in _QUOTE_MARKS or (k and raw[k - 1][0][:1].isdigit())]
+        quotes = self.formation().rules.quotes - _LIST_ITEM_MARKS  # not the brackets: they set words off
+        kept = [t for k, t in enumerate(raw) if t[0] not in quotes or (k and raw[k - 1][0][:1].isdigit())]
         return self._bracketed_suffixes(kept) if "(" in line else kept
 
     def _bracketed_suffixes(self, raw: list[RawToken]) -> list[RawToken]:
@@ -553,7 +554,6 @@ def _set_off(raw: list[RawToken], i: int) -> bool:
     return i > 0 and raw[i - 1][0] in _LIST_ITEM_MARKS and (i + 1 == len(raw) or raw[i + 1][0] in _LIST_ITEM_MARKS)
 
 
-_QUOTE_MARKS = frozenset(('"', "'", "“", "”", "‘", "’", "«", "»", "„", "‚"))
 _LIST_ITEM_MARKS = frozenset((",", ";", "(", ")", "[", "]"))
 
 
@@ -562,14 +562,10 @@ def _one_mark_between(tagged: list[Tagged]) -> list[Tagged]:
     (a closing bracket then a comma), as is 'walnut, dark,, matte'."""
     out: list[Tagged] = []
     for word in tagged:
-        if out and _is_mark(word) and _is_mark(out[-1]):
+        if out and only_tag(word, "COMMA") and only_tag(out[-1], "COMMA"):
             continue
         out.append(word)
     return out
-
-
-def _is_mark(word: Tagged) -> bool:
-    return len(word.candidates) == 1 and word.candidates[0].tag == "COMMA"
 
 
 def _dropped_separator(raw: list[RawToken], after: int, tagged: list[Tagged]) -> int:
