@@ -12,6 +12,7 @@ from .diagnostics import Diagnostic, Severity, error
 from .lexicon import Lexicon
 from .line_parts import PART_MARKS, Reader, by_parts, material_then_comparatives, part_cuts
 from .lines import iter_lines
+from .noun_first import noun_first_note, noun_first_readings
 from .on_clause import context_dropped, likeness_dropped, on_material
 from .parser import ParseFailure, describe_expected, parse_line_shape, parsed_item
 from .relative_clause import (
@@ -388,6 +389,9 @@ def _failed_line(
         if implied is not None:
             diags.extend(polite[0])
             said = polite_said
+    if implied is None and (first := _noun_first(words, text, lexicon)) is not None:
+        diags.extend(first[1])  # 'steel brushed', 'oak a bit darker': when nothing else reads the line
+        return first[0]
     diags.append(said)
     return implied
 
@@ -527,16 +531,42 @@ def _but_then_comparatives(
     joiners = [w for w in words if w.text.lower() in breaks and w.implied_by is None]
     if len(joiners) != 1 or words[0].implied_by is not None:
         return None
-    at = words[0].span
-    number, offset = at.line, at.start - (at.col - 1)
-    start = joiners[0].span.start - offset
-    listed = text[:start] + "," + " " * (len(joiners[0].text) - 1) + text[start + len(joiners[0].text) :]
-    found = material_then_comparatives(listed, number, offset, _part_reader(listed, number, offset, lexicon), lexicon)
+    start = joiners[0].span.start - _line_offset(words[0])
+    found = _comparatives_after_comma(words[0], text, start, len(joiners[0].text), lexicon)
     if found is None:
         return None
     said = f"{text[:start].strip()}, {text[start + len(joiners[0].text) :].strip()}"
     note = f"read '{text.strip()}' as '{said}' (the comparatives after '{joiners[0].text}')"
     return found[0], [*found[1], Diagnostic(joiners[0].span, Severity.NOTE, NOTE_CODE, note)]
+
+
+def _noun_first(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, list[Diagnostic]] | None:
+    """'steel brushed', 'plastic charcoal grey', 'oak a bit darker': describing words (or
+    comparatives) after the noun with no comma, read as after a comma (cnlmc.noun_first), with a
+    note; None when no place for the comma reads the line."""
+    for listed, k in noun_first_readings(words):
+        node = _parsed(listed, text, lexicon)
+        if isinstance(node, ast.Material):
+            return node, [noun_first_note(words, k)]
+        start = listed[k].span.start - _line_offset(words[0])  # the implied comma, on the space before word k
+        if text[start : start + 1] == " " and (found := _comparatives_after_comma(words[0], text, start, 1, lexicon)):
+            return found[0], [*found[1], noun_first_note(words, k, comparatives=True)]
+    return None
+
+
+def _line_offset(word: Tagged) -> int:
+    """Where the line of `word` starts in the document."""
+    return word.span.start - (word.span.col - 1)
+
+
+def _comparatives_after_comma(
+    first: Tagged, text: str, start: int, width: int, lexicon: Lexicon
+) -> tuple[ast.Material, list[Diagnostic]] | None:
+    """The line with its `width` characters at `start` read as a comma (the rest blank, so every
+    word keeps its place): a material, then comparatives (cnlmc.line_parts), or None."""
+    number, offset = first.span.line, _line_offset(first)
+    listed = text[:start] + "," + " " * (width - 1) + text[start + width :]
+    return material_then_comparatives(listed, number, offset, _part_reader(listed, number, offset, lexicon), lexicon)
 
 
 def _without_article(words: list[Tagged]) -> list[Tagged] | None:

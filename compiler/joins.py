@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     from .spoken import Spoken
     from .word_formation import Rules
 
-__all__ = ["HEAD_HOLDERS", "Joiner", "may_join", "of_tag", "others", "others_of", "takes_target"]
+__all__ = ["HEAD_HOLDERS", "Joiner", "implied_comma", "may_join", "of_tag", "others", "others_of", "takes_target"]
 
 #: The readings a head word ("finish", "look") joins: before the noun (False) or at the line's end (True).
 HEAD_HOLDERS = {False: ("ADJ", "COLOR", "NOUN"), True: ("NOUN",)}
@@ -220,8 +220,7 @@ class Joiner:
         if any(of_tag(t, "COMMA") for t in out[:start]):
             return
         first = out[start]
-        at = first.span.start - 1  # the space before the word: a span of its own (the parser keys words by start)
-        comma = Tagged(",", Span(at, at + 1, first.span.line, first.span.col - 1), _COMMA, implied_by=first.span)
+        comma = implied_comma(first)
         said = " ".join(t.text for t in out[start:end]).replace(" ,", ",")
         noun = out[start - 1].text
         note = f"read '{noun} {said}' as '{noun}, {said}' (describing words after the noun)"
@@ -1084,6 +1083,13 @@ def _main_words(words: list[Tagged]) -> list[Tagged]:
     the material of the phrase."""
     end = next((k for k, t in enumerate(words) if of_tag(t, "WITH") or of_tag(t, "AND")), len(words))
     return words[:end]
+
+
+def implied_comma(first: Tagged) -> Tagged:
+    """A comma implied before `first`: on the space before it, a span of its own (the parser keys
+    words by where they start)."""
+    at = first.span.start - 1
+    return Tagged(",", Span(at, at + 1, first.span.line, first.span.col - 1), _COMMA, implied_by=first.span)
 
 
 def of_tag(word: Tagged, tag: str) -> tuple[Candidate, ...]:

@@ -176,7 +176,9 @@ def test_a_negated_word_after_the_material_describes_it(compile_text, phrase, sa
 
 
 def test_a_plain_describing_word_after_the_material_keeps_its_error(compile_text):
-    result = compile_text("aluminum brushed")
+    """Without a comma it is read as before the noun (tests/language/test_noun_first.py); an adverb
+    left with nothing to modify keeps the error."""
+    result = compile_text("aluminum lightly")
     assert not result.ok and any("comes after the noun" in d.message for d in result.diagnostics)
 
 

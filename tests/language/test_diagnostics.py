@@ -31,17 +31,16 @@ def test_rendered_with_file_line_col_source_and_caret(compile_text):
 
 
 def test_all_errors_of_a_file_are_reported(compile_text):
-    r = compile_text("brushd steel\nvery\npolished brass\nsteel brushed\n")
+    r = compile_text("brushd steel\nvery\npolished brass\nsteel lightly\n")
     assert [(c, line) for c, line, _col, _m in diags(r)] == [("E001", 1), ("E003", 2), ("E002", 4)]
     assert not r.ok
     assert [m["name"] for m in r.materials] == ["polished_brass"]  # the good line still compiles
 
 
 def test_word_in_the_wrong_place(compile_text):
-    r = compile_text("aluminum brushed")
+    r = compile_text("aluminum lightly")
     d = r.diagnostics[0]
-    assert d.message == "'brushed' comes after the noun: describing words come before it"
-    assert d.hints == ("write 'brushed aluminum', not 'aluminum brushed'",)
+    assert d.message == "'lightly' comes after the noun: describing words come before it"
 
 
 @pytest.mark.parametrize(
@@ -50,8 +49,8 @@ def test_word_in_the_wrong_place(compile_text):
         ("steel aluminum", "a second material 'aluminum': a phrase names one material, at its end"),
         ("oak with", "'with' needs a coat after it"),
         ("oak with a glossy", "the coat clause ends at 'glossy' without naming the coat"),
-        ("gold brushed", "the phrase ends at 'brushed' without naming the material"),
-        ("brushed steel darker", "a refinement changes the material above it and stands on its own line"),
+        ("gold brushed very", "the phrase ends at 'very' without naming the material"),
+        ("brushed steel darker and", "a refinement changes the material above it and stands on its own line"),
         ("red or anodized aluminum", "'anodized' cannot follow 'or': an alternative of the same kind must"),
         ("brushed and steel", "'steel' cannot follow 'and': another describing group must"),
     ],

@@ -351,11 +351,6 @@ def test_a_colour_named_after_a_thing_stays_a_colour(colour):
     assert same_look(material(colour), material(f"{colour} paint"))
 
 
-@pytest.mark.parametrize("said", ["steel brushed", "oak oiled", "kitchen cabinets mustard yellow"])
-def test_describing_words_after_the_noun_without_a_comma_keep_their_error_and_hint(said):
-    assert "E002" in codes(said)  # English keeps its comma rule (docs/language.md); the hint reorders
-
-
 def test_a_degree_after_the_change_without_a_comma():
     assert look(refined("grey concrete", "lighter a bit")) == look(refined("grey concrete", "a bit lighter"))
 
