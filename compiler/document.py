@@ -4,7 +4,7 @@ Lines end as cnlmc.lines says (CRLF, LF or a lone CR); `iter_lines` is re-export
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from dataclasses import replace
 
 from . import ast
@@ -338,6 +338,7 @@ def _failed_line(
         postfix_finish,
         read_past,
         reread,
+        with_after_comma,
         with_implied,
     )
 
@@ -359,7 +360,8 @@ def _failed_line(
         diags.extend(notes)
         return node
     clause = postfix_finish(hedged, lexicon) or with_implied(hedged) or finish_dropped(hedged, lexicon)
-    for attempt in _rereadings(hedged, notes, clause):
+    comma_clause = None if _said_with_errors(words, diags) else with_after_comma(hedged)  # 'oak, no grain' is a removal
+    for attempt in _rereadings(hedged, notes, (comma_clause, clause)):
         node = _parsed(attempt[0], text, lexicon)
         if node is not None:
             diags[:] = [d for d in diags if not read_past(d, attempt[1])]  # 'loads' of 'loads of'
@@ -591,16 +593,23 @@ def _politely(words: list[Tagged], lexicon: Lexicon) -> tuple[list[Diagnostic], 
     return (notes, kept) if notes else None
 
 
+def _said_with_errors(words: list[Tagged], diags: list[Diagnostic]) -> bool:
+    """Whether the tagger already found an error on the line of these words (a word it left out)."""
+    line = words[0].span.line if words else None
+    return any(d.is_error and d.span is not None and d.span.line == line for d in diags)
+
+
 def _rereadings(
-    hedged: list[Tagged], notes: list[Diagnostic], clause: tuple[list[Tagged], Diagnostic] | None
+    hedged: list[Tagged], notes: list[Diagnostic], clauses: Sequence[tuple[list[Tagged], Diagnostic] | None]
 ) -> Iterator[tuple[list[Tagged], list[Diagnostic]]]:
     """The line read with its quantity phrases as degrees (when it had any), then as a clause with
-    an implied 'with' ('a subtle sheen') or as the comparatives of a finish ('a glossier finish'):
-    each with its notes (cnlmc.hedges)."""
+    an implied 'with' ('a subtle sheen', 'pale ash, faint grain') or as the comparatives of a finish
+    ('a glossier finish'): each with its notes (cnlmc.hedges)."""
     if notes:
         yield hedged, notes
-    if clause is not None:
-        yield clause[0], [*notes, clause[1]]
+    for clause in clauses:
+        if clause is not None:
+            yield clause[0], [*notes, clause[1]]
 
 
 def _parsed(words: list[Tagged], text: str, lexicon: Lexicon) -> ast.Item | None:

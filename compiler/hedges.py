@@ -261,6 +261,26 @@ def with_implied(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | N
     return [_implied("with", Candidate("WITH", "with", "keywords"), clause, 1), *words], note
 
 
+def with_after_comma(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | None:
+    """'pale ash, faint grain', 'white paint, a touch of sheen' ('slightly sheen' after reread): a
+    feature after the material's last comma is its clause, the comma read as 'with'; the words and
+    the note; None for any other line."""
+    commas = [i for i, w in enumerate(words) if any(c.tag == "COMMA" for c in w.candidates)]
+    if not commas or any(c.tag == "WITH" for w in words for c in w.candidates):
+        return None
+    at = commas[-1]
+    rest = [w for w in words[at + 1 :] if w.text[:1].isalpha()]
+    if not rest or not any(c.tag == "FEATURE" for w in rest for c in w.candidates):
+        return None
+    if any(all(c.tag == "NOUN" for c in w.candidates) for w in rest):
+        return None  # a second material after the comma: its own error
+    comma = words[at]
+    said = " ".join(w.text for w in rest)
+    note = Diagnostic(written_span(rest), Severity.NOTE, NOTE_CODE, f"read ', {said}' as 'with {said}'")
+    with_ = Tagged("with", comma.span, (Candidate("WITH", "with", "keywords"),), implied_by=comma.span)
+    return [*words[:at], with_, *words[at + 1 :]], note
+
+
 def finish_dropped(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], Diagnostic] | None:
     """'a glossier finish', 'a smoother, glossier finish': comparatives said of the finish are the
     comparatives (a change line); the words without the article and the finish word, and the note."""

@@ -621,8 +621,8 @@ class Joiner:
         low = text.lower()
         if before.unknown:
             return False  # its readings are guesses ('please tone': no colour named 'please')
-        if low in self.rules().colour_heads:  # "sand coloured", "cream colored": before a noun or at the end
-            return any(c.tag in ("COLOR", "NOUN") for c in before.candidates)
+        if low in self.rules().colour_heads:  # "sand coloured", "cream colored", "light colour": anywhere
+            return any(c.tag in ("COLOR", "NOUN", "SHADE", "ADJ") for c in before.candidates)
         if low in self.rules().like_heads:  # "leather like vinyl", "mirror like steel"
             return not last and any(c.tag in HEAD_HOLDERS[False] for c in before.candidates)
         if low not in self.rules().heads:
@@ -640,8 +640,13 @@ class Joiner:
 
     def with_head(self, before: Tagged, text: str, span: Span, last: bool, diags: list[Diagnostic]) -> Tagged:
         joined = before.span.to(span)
-        if text.lower() in self.rules().colour_heads:
+        if text.lower() in self.rules().colour_heads and (of_tag(before, "COLOR") or of_tag(before, "NOUN")):
             return self._coloured(before, text, joined, diags)
+        if text.lower() in self.rules().colour_heads:  # 'light colour', 'natural colour': the describing word
+            kept = tuple(c for c in before.candidates if c.tag in ("SHADE", "ADJ"))
+            note = f"read '{before.text} {text}' as '{before.text}' ('{text}' names what it describes)"
+            diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
+            return Tagged(f"{before.text} {text}", joined, kept, before.unknown)
         if text.lower() in self.rules().like_heads and not any(c.tag in ("ADJ", "COLOR") for c in before.candidates):
             return self._resembling(before, text, joined, diags)
         note = f"read '{before.text} {text}' as '{before.text}' ('{text}' names what it describes)"

@@ -25,17 +25,53 @@ __all__ = ["clause_after", "describing_after", "participle_after", "relative_mat
 
 def relative_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Material, Diagnostic] | None:
     """The material with the clause's describing words before it, and the note; None when the line
-    has no relative opener, or its sides are not a material and describing words."""
+    has no relative opener, or its sides are not a material and describing words. A negated opener
+    ('brass that isn't shiny', 'leather that doesn't look plasticky': teaching.toml [hedges]
+    `relative_negated`) is read as the plain one with 'not' before the describing words."""
+    if not words:
+        return None
     table = teaching()["hedges"]
     low = text.lower()
+    negated = re.search(r"\s(?:" + alternatives(table["relative_negated"]) + r")\s", low)
+    if negated is not None:
+        return _negated_relative(words, text, negated.start(), negated.end(), lexicon)
     opener = re.search(r"\s(?:" + alternatives(table["relative"]) + r")\s", low)
-    if opener is None or not words:
+    if opener is None:
         return None
-    tail = re.search(r"\s(?:" + alternatives(table["relative_tails"]) + r")[\s.!,]*$", low[opener.end() - 1 :])
-    end = opener.end() - 1 + tail.start() if tail is not None else len(text)
+    return _relative_reading(words, text, opener.start(), opener.end(), lexicon)
+
+
+def _negated_relative(
+    words: Sequence[Tagged], text: str, start: int, end: int, lexicon: Lexicon
+) -> tuple[ast.Material, Diagnostic] | None:
+    """The line tagged again with the negated opener blanked but for a 'not' at its end (every
+    other word keeps its place), then read as a relative clause that opens there."""
+    line, line_start = words[0].span.line, words[0].span.start - (words[0].span.col - 1)
+    said = text[:start] + " " * (end - start - 4) + "not " + text[end:]
+    again, problems = Tagger.of(lexicon).tag_line(said, line, line_start)
+    if any(d.is_error for d in problems) or not again:
+        return None
+    found = _relative_reading(again, said, start, end - 4, lexicon)
+    if found is None and not [w for w in again if w.span.start - line_start >= start]:
+        found = _read_as(again, list(again), said, lexicon, "what it is not leaves it as it is")  # 'not plasticky'
+    if found is None:
+        return None
+    note = found[1].message.replace(f"'{said.strip()}'", f"'{text.strip()}'", 1)
+    return found[0], Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
+
+
+def _relative_reading(
+    words: Sequence[Tagged], text: str, start: int, end: int, lexicon: Lexicon
+) -> tuple[ast.Material, Diagnostic] | None:
+    """The words before text[start:end] (the opener, its spaces included) as the material, those
+    after it (up to a tail read past) as describing it."""
+    tail = re.search(
+        r"\s(?:" + alternatives(teaching()["hedges"]["relative_tails"]) + r")[\s.!,]*$", text.lower()[end - 1 :]
+    )
+    stop = end - 1 + tail.start() if tail is not None else len(text)
     line_start = words[0].span.start - (words[0].span.col - 1)
-    before = [w for w in words if w.span.start - line_start < opener.start()]
-    after = [w for w in words if opener.end() <= w.span.start - line_start < end]
+    before = [w for w in words if w.span.start - line_start < start]
+    after = [w for w in words if end <= w.span.start - line_start < stop]
     if not before or not after or any(w.unknown for w in (*before, *after)):
         return None
     if not all(any(c.tag in ("ADJ", "COLOR", "SHADE", "ADV", "REFINE") for c in w.candidates) for w in after):

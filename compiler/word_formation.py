@@ -108,6 +108,7 @@ class Rules:
         self.sizes = frozenset(joined("qualifiers", "sizes"))  # "wide oak floorboards"
         self.ordinary = frozenset(joined("qualifiers", "ordinary"))  # "plain white"
         self.liking = frozenset(joined("qualifiers", "liking"))  # "a nice warm terracotta"
+        self.cost = frozenset(joined("qualifiers", "cost"))  # "a cheap pine shelf"
         self.imitation = frozenset(joined("qualifiers", "imitation"))  # "faux sheepskin", "recycled plastic"
         self.shapes = frozenset(joined("qualifiers", "shapes"))  # "hexagon floor tiles"
         self.purity = frozenset(joined("qualifiers", "purity"))  # "a clean bright white"
@@ -199,6 +200,7 @@ class WordFormation:
             (rules.purity, "saying the colour is clean and unmixed: the colour itself"),
             (rules.shapes, "the shape of the pieces: not drawn (the tiles graph draws a rectangular grid)"),
             (rules.liking, "saying you like it: no effect on the look"),
+            (rules.cost, "what it costs, not how it looks: no effect on the look"),
             (rules.imitation, "what it is made of, not how it looks: drawn as what follows"),
             (rules.patterns, "the pattern the pieces are laid in: not drawn (a running bond is drawn)"),
             (rules.fillers, "a word of the conversation: no effect on the look"),

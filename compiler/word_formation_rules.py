@@ -23,7 +23,18 @@ RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "FEATURE")
 _LISTS = {
     "punctuation": ("trailing", "leading", "quotes", "number_marks", "bracketed_suffixes"),
     "negation": ("words", "prefixes", "softeners", "emphatic", "emphatic_before", "strict", "pointing"),
-    "qualifiers": ("words", "sizes", "shapes", "ordinary", "purity", "liking", "imitation", "patterns", "fillers"),
+    "qualifiers": (
+        "words",
+        "sizes",
+        "shapes",
+        "ordinary",
+        "purity",
+        "liking",
+        "cost",
+        "imitation",
+        "patterns",
+        "fillers",
+    ),
     "comparison": ("words", "current"),
     "properties": ("endings",),
 }
@@ -51,6 +62,7 @@ def empty_rules() -> dict[str, Any]:
             "ordinary": [],
             "purity": [],
             "liking": [],
+            "cost": [],
             "imitation": [],
             "patterns": [],
             "fillers": [],

@@ -62,9 +62,14 @@ def _shaded_name(key: str, ctx: Context) -> tuple[str, str] | None:
 
 def opposed_shades(c: ast.Colour, ctx: Context) -> tuple[str, str] | None:
     """The first two shade words of a colour that pull opposite ways (lighter and darker, or more and
-    less chroma: "light dark grey", "pale deep red"), inner one first; else None. A colour's own
-    name is a name ("pale dark slate grey" is a pale version of that colour)."""
+    less chroma: "light dark beech", "pale deep cherry"), inner one first; else None. The shade word
+    that opens a two-word colour name counts as the innermost ("pale dark grey", "dark pale green":
+    the survey's "dark grey" and "pale green"); a longer name is a name ("pale dark slate grey" is a
+    pale version of that colour)."""
     words = [(w.text, w.key) for w in reversed(c.shades)]  # nearest the colour first, as applied
+    named = c.base.text.lower().split() if c.base is not None else []
+    if len(named) == 2:
+        words.insert(0, (named[0], named[0]))
     pulls = [(text, _pull(ctx, key)) for text, key in words if ctx.lexicon.entry("shades", key) is not None]
     for i, (inner, a) in enumerate(pulls):
         for outer, b in pulls[i + 1 :]:

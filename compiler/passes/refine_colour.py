@@ -123,7 +123,7 @@ def refine_saturation(state: MaterialState, ctx: Context, item: ast.RefineItem, 
     _l, a, b = linear_to_oklab(apparent(state, "base_color", current))
     if (a * a + b * b) ** 0.5 < NEUTRAL_CHROMA:
         state.diagnostics.append(
-            note(item.span, "N105", f"'{item.word.text}' has no hue to act on: the colour is a neutral grey")
+            note(item.span, "N105", f"'{item_text(item)}' has no hue to act on: the colour is a neutral grey")
         )
         return
     factor = ctx.lexicon.require("properties", "colour").get("step")["value"] ** weight
@@ -164,6 +164,9 @@ def refine_named_colour(
     if direction < 0 and away_from is not None:  # 'less black' on black: a step toward a mid grey
         _closer(state, item, param, away_from, amount)
         return
+    if direction < 0 and param == "base_color" and _a_mid_grey(_l, math.hypot(a, b)):
+        refine_saturation(state, ctx, item, 1, weight)  # 'less grey' on sage green: more of its own hue
+        return
     if direction < 0 and hue_share(apparent(state, param, holder[name]), (a, b)) < NEUTRAL_CHROMA:
         state.diagnostics.append(
             note(item.span, "N105", f"'{item.word.text} {colour_text(target)}': the colour has none of it to take away")
@@ -194,6 +197,15 @@ def _away_from_achromatic(lightness: float, chroma: float, current: list[float])
     if math.hypot(now_a, now_b) >= _achromatic() or (now_l - mid) * (lightness - mid) <= 0 or abs(now_l - mid) < far:
         return None  # a colour with a hue, or one on the other side of the grey or near it
     return [mid**3] * 3  # OKLab L of a grey is the cube root of its linear value
+
+
+def _a_mid_grey(lightness: float, chroma: float) -> bool:
+    """A named colour without a hue nearer the mid grey than a black or white is (colour_rules.toml
+    `achromatic_away`): 'grey', 'gray', not 'white'."""
+    from ..lexicon_load import colour_rules
+
+    rule = colour_rules()["achromatic_away"]
+    return chroma < _achromatic() and abs(lightness - float(rule["mid_lightness"])) < float(rule["min_distance"])
 
 
 def _achromatic() -> float:

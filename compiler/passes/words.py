@@ -123,7 +123,7 @@ def apply_colour(state: MaterialState, ctx: Context, c: ast.Colour, adverbs: Wor
 
 
 def _warn_opposed_shades(state: MaterialState, ctx: Context, c: ast.Colour) -> None:
-    pair = opposed_shades(c, ctx) if len(c.shades) > 1 else None
+    pair = opposed_shades(c, ctx) if c.shades else None
     if pair is not None:
         inner, outer = pair
         state.diagnostics.append(

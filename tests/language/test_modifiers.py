@@ -249,6 +249,22 @@ def test_shades_that_pull_opposite_ways_warn_and_the_outer_one_wins(text, outer,
     assert codes("light pale beech") == []  # both lighter: no contradiction
 
 
+@pytest.mark.parametrize(
+    "text,outer,inner",
+    [
+        ("pale dark grey paint", "pale", "dark"),
+        ("dark pale green wool", "dark", "pale"),
+        ("light deep red silk", "light", "deep"),
+    ],
+)
+def test_a_shade_against_the_shade_that_opens_a_colour_name_warns(text, outer, inner):
+    """'dark grey' is one of the survey's names, and 'pale' before it still contradicts its 'dark'."""
+    (w101,) = [d for d in compiled(text).diagnostics if d.code == "W101"]
+    assert w101.message == f"'{outer}' contradicts '{inner}': '{outer}' wins"
+    assert codes("pale dark slate grey paint") == []  # a longer name is a name
+    assert codes("light light grey paint") == codes("pale light blue paint") == []
+
+
 @pytest.mark.parametrize("word,like", [("finely", "lightly"), ("coarsely", "heavily"), ("freshly", "fully")])
 def test_manner_adverbs_read_as_degrees(word, like):
     assert params(f"{word} brushed nickel") == params(f"{like} brushed nickel")

@@ -1,0 +1,99 @@
+"""Categories of everyday phrasing brought by held-out sets 32-34 (issue #14): 'less grey' on a
+coloured material, negated relative clauses, a feature after a comma, the ordinary and the cheap
+kind, likenesses without an article."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.language.meaning import compiled, lch, material, refined, same_look
+
+
+def problems(text: str) -> list[str]:
+    return [d.code for d in compiled(text).diagnostics if d.severity.value in ("error", "warning")]
+
+
+def notes(text: str) -> list[str]:
+    return [d.message for d in compiled(text).diagnostics if d.severity.value == "note"]
+
+
+@pytest.mark.parametrize("phrase", ["sage green paint", "navy blue wool", "dusty pink velvet"])
+def test_less_grey_on_a_colour_is_more_of_its_own_hue(phrase):
+    before = lch(refined(phrase).material["params"]["base_color"])
+    after = lch(refined(phrase, "less grey").material["params"]["base_color"])
+    assert after[1] > before[1] * 1.1  # chroma up
+    assert abs(after[2] - before[2]) < 2  # hue kept
+
+
+def test_less_grey_on_a_neutral_says_there_is_no_hue():
+    session = refined("black plastic", "less grey")
+    said = [d.message for d in session.result.diagnostics if d.code == "N105"]
+    assert said == ["'less grey' has no hue to act on: the colour is a neutral grey"]
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [
+        ("brass that isn't shiny", "not shiny brass"),
+        ("metal that isnt shiny", "not shiny metal"),
+        ("steel that is not polished", "not polished steel"),
+        ("tiles which aren't glossy", "not glossy tiles"),
+        ("oak that doesn't look varnished", "not varnished oak"),
+    ],
+)
+def test_a_negated_relative_clause_negates_its_describing_words(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+    assert any(n.startswith(f"read '{said}' as ") for n in notes(said))
+
+
+def test_a_negated_likeness_that_names_nothing_to_take_away_leaves_the_material():
+    assert problems("leather that doesn't look plasticky") == []
+    assert same_look(material("leather that doesn't look plasticky"), material("leather"))
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [
+        ("pale ash, faint grain", "pale ash with faint grain"),
+        ("marble, grey veins", "marble with grey veins"),
+        ("white paint, touch of sheen", "white paint with a slight sheen"),
+        ("walnut, bit of grain", "walnut with slightly grain"),
+    ],
+)
+def test_a_feature_after_the_comma_is_the_material_s_clause(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+    assert material(said)["maps"] == material(same_as)["maps"]
+
+
+def test_a_removal_after_the_comma_stays_a_removal():
+    assert any("taking 'grain' off" in n for n in notes("oak, no grain"))
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [
+        ("light colour oak", "light oak"),
+        ("dark colour walnut", "dark walnut"),
+        ("natural colour linen", "natural linen"),
+        ("oak floor planks light colour", "light oak floor planks"),
+    ],
+)
+def test_colour_after_a_shade_or_describing_word_names_what_it_describes(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [
+        ("lighter than normal oak", "lighter than oak"),
+        ("cheap pine shelf", "pine shelf"),
+        ("budget laminate", "laminate"),
+    ],
+)
+def test_the_usual_kind_and_what_it_costs_are_read_past(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+    assert any("no effect on the look" in n for n in notes(said))
