@@ -6,7 +6,7 @@ from collections.abc import Iterable, Iterator
 from typing import Any
 
 from . import ast
-from .back import reversed_change
+from .back import WHOLE, reversed_change, taken_back
 from .default_name import name_words
 from .diagnostics import Diagnostic, error, warning
 from .document import iter_items, parse_change_line, read_without_removal
@@ -33,25 +33,33 @@ FINAL_PASSES = (lay_conformal_coats, select_model, select_subsurface, check_valu
 def attach_refinements(doc: ast.Document, lexicon: Lexicon) -> list[tuple[ast.Material, list[ast.Refinement]]]:
     """Pair each material line with the refinement lines below it."""
     pairs: list[tuple[ast.Material, list[ast.Refinement]]] = []
+    kept = 0  # the change lines an 'undo' cannot take back: those before the material last changed
     for item in doc.items:
         if isinstance(item, ast.Material):
             pairs.append((item, []))
+            kept = 0
         elif pairs and item.changes_material and (changed := changed_material(pairs[-1][0], item, lexicon)):
             pairs[-1] = (changed, pairs[-1][1] + after_change(item))  # 'make it walnut': the material above, now walnut
+            kept = len(pairs[-1][1])
         elif pairs:
-            add_refinement(pairs[-1][1], item, lexicon, doc.diagnostics)
+            add_refinement(pairs[-1][1], item, lexicon, doc.diagnostics, kept)
         else:
             material = orphan_line(item, lexicon, doc.diagnostics)
             if material is not None:
                 pairs.append((material, []))
+                kept = 0
     return pairs
 
 
 def add_refinement(
-    lines: list[ast.Refinement], item: ast.Refinement, lexicon: Lexicon, diags: list[Diagnostic]
+    lines: list[ast.Refinement], item: ast.Refinement, lexicon: Lexicon, diags: list[Diagnostic], kept: int = 0
 ) -> None:
     """Append a change line to the material's; 'go back a bit' goes in as the change above,
-    reversed (cnlmc.back), with the note that says so."""
+    reversed (cnlmc.back), with the note that says so; 'undo' takes the last line back, down to the
+    first `kept` (those before a change of material)."""
+    if item.back == WHOLE:  # 'undo', 'scrap that': the line above goes, exactly
+        diags.append(taken_back(item, lines.pop() if len(lines) > kept else None))
+        return
     if item.back is not None:
         reversed_line, note = reversed_change(item, _change_above(lines), lexicon, parse_change_line)
         diags.append(note)

@@ -34,8 +34,19 @@ if TYPE_CHECKING:
     from .lexicon import Lexicon
     from .tagger import Tagger
 
-__all__ = ["LineParser", "back_after_change", "back_line", "change_after_back", "goes_back", "reversed_change"]
+__all__ = [
+    "WHOLE",
+    "LineParser",
+    "back_after_change",
+    "back_line",
+    "change_after_back",
+    "goes_back",
+    "reversed_change",
+    "taken_back",
+]
 
+#: the degree of a line that takes the whole change above back ('undo', 'scrap that': [going_back] whole)
+WHOLE = "*whole*"
 #: reads a line of text as the source's lines are read (text, line number, offset, tagger, diagnostics)
 LineParser = Callable[[str, int, int, "Tagger", list[Diagnostic]], "ast.Item | None"]
 
@@ -54,7 +65,7 @@ def _rules() -> Rules:
     table: dict[str, Any] = teaching()["going_back"]
     openers = [*teaching()["removal"]["openers"], *teaching()["keeping"]["openers"], *table["openers"]]
     opener = re.compile(rf"(?:{alternatives(openers)})\s*[,!.:;]?\s+")
-    phrases = alternatives(table["phrases"])
+    phrases = alternatives([*table["phrases"], *table["whole"]])
     trailing = rf"(?:[\s,.!?]+(?:{alternatives(table['trailing'])}))*[\s,.!?]*$"
     back = re.compile(rf"(?:{phrases})(?P<degree>(?:\s+[a-z]+){{0,3}}?){trailing}")
     head = re.compile(rf"(?:{phrases})[\s,]+(?=\S)")
@@ -101,6 +112,9 @@ def back_line(text: str, number: int, offset: int, tagger: Tagger) -> ast.Refine
     degree = _degree(found, tagger)
     if degree is None:
         return None
+    phrase = text.lower()[found.start() : found.start("degree")].strip()
+    if not degree and phrase in teaching()["going_back"]["whole"]:
+        degree = WHOLE
     start = len(text) - len(text.lstrip())
     span = Span(offset + start, offset + len(text.rstrip()), number, start + 1)
     return ast.Refinement(None, (), span, text, back=degree)
@@ -124,6 +138,15 @@ def change_after_back(text: str) -> int | None:
     low = text.lower()
     found = _rules().head.match(low, _past_openers(low, 0))
     return None if found is None else found.end()
+
+
+def taken_back(back: ast.Refinement, above: ast.Refinement | None) -> Diagnostic:
+    """The note of a line that takes the line above back whole ('undo'), or says there is none."""
+    said = back.text.strip()
+    if above is None:
+        return Diagnostic(back.span, Severity.NOTE, NOTE_CODE, f"'{said}': nothing to take back (no change above)")
+    note = f"read '{said}' as taking back the line above ('{above.text.strip()}')"
+    return Diagnostic(back.span, Severity.NOTE, NOTE_CODE, note)
 
 
 def reversed_change(

@@ -126,7 +126,7 @@ def _refine_effect(
     if isinstance(current, list):
         _refine_list_effect(state, effect, item, direction, strength)
         return
-    pole = _pole(effect, current, limits)
+    pole = _pole(effect, current, limits) or _pole_from_noun(state, key, effect)
     if pole == 0:
         return
     param_direction = direction * pole
@@ -156,6 +156,17 @@ def _pole(effect: Effect, current: float, limits: tuple[float, float] | None) ->
     if abs(value - centre) > MIDDLE * (high - low):
         return _sign(value - centre)  # glossy, matte: a pole
     return _sign(value - current)  # satin: a target in the middle
+
+
+def _pole_from_noun(state: MaterialState, key: str, effect: Effect) -> int:
+    """A middle target the parameter already stands at ('less frosted' on frosted glass at 0.5): the
+    way the adjective took the parameter from the noun's own value (glass 0.0 -> frosted 0.5: up);
+    0 when the noun set none, or the same."""
+    value = effect.get("value")
+    if effect["op"] != "set" or not isinstance(value, (int, float)):
+        return 0
+    own = next((s.value for s in state.provenance.get(key, ()) if s.rule.startswith("nouns.")), None)
+    return _sign(value - own) if isinstance(own, (int, float)) else 0
 
 
 def _sign(x: float) -> int:

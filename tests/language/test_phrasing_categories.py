@@ -97,3 +97,35 @@ def test_the_usual_kind_and_what_it_costs_are_read_past(said, same_as):
     assert problems(said) == []
     assert same_look(material(said), material(same_as))
     assert any("no effect on the look" in n for n in notes(said))
+
+
+@pytest.mark.parametrize(("line", "way"), [("less frosted", -1), ("more frosted", 1)])
+def test_a_middle_finish_already_reached_moves_from_the_noun_s_own_value(line, way):
+    """'frosted' sets glass to a middle roughness; 'less frosted' there goes back toward clear glass."""
+    before = refined("frosted glass").material["params"]["roughness"]
+    after = refined("frosted glass", line).material["params"]["roughness"]
+    assert (after - before) * way > 0.05
+
+
+@pytest.mark.parametrize("line", ["undo", "undo that last one", "scrap that", "ok, undo that please"])
+def test_undo_takes_the_line_above_back_exactly(line):
+    start = refined("matte grey plastic").material["params"]
+    session = refined("matte grey plastic", "darker", "glossier", line)
+    darker = refined("matte grey plastic", "darker").material["params"]
+    assert session.material["params"] == darker != start
+    assert any("as taking back the line above ('glossier')" in d.message for d in session.result.diagnostics)
+
+
+def test_undo_twice_and_with_nothing_above():
+    start = refined("oak").material["params"]
+    assert refined("oak", "darker", "glossier", "undo", "undo").material["params"] == start
+    session = refined("oak", "undo")
+    assert session.material["params"] == start
+    assert any("nothing to take back" in d.message for d in session.result.diagnostics)
+
+
+def test_undo_never_reaches_past_a_change_of_material():
+    changed = refined("oak", "darker", "make it walnut").material["params"]
+    session = refined("oak", "darker", "make it walnut", "undo")
+    assert session.material["params"] == changed
+    assert any("nothing to take back" in d.message for d in session.result.diagnostics)
