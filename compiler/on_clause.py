@@ -154,9 +154,12 @@ def context_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tup
     line_start = words[0].span.start - (words[0].span.col - 1)
     table = teaching()["hedges"]
     pointed = rf"(?:{alternatives(table['context_pointing'])})\s+(?:{alternatives(table['pointing_words'])})"
-    pattern = rf"(?:^|(?<=[\s,;.]))(?:{alternatives(table['context'])}|{pointed})(?=[\s,.!?]|$)"
+    bare = alternatives(table["context_unknown"])
+    pattern = rf"(?:^|(?<=[\s,;.]))(?:{alternatives(table['context'])}|{pointed}|(?P<bare>{bare}))(?=[\s,.!?]|$)"
     likeness = tuple(w for w in table["context_pointing"] if w.split()[-1] == "like")
     for found in re.finditer(pattern, low):
+        if found.group("bare") and not _unknown_after(words, line_start + found.end()):
+            continue  # 'oak, like walnut': a material after the likeness word
         if not found.group(0).startswith(likeness) and _names_a_material(words, line_start + found.start(), lexicon):
             continue  # 'steel on the oak', 'brass inlay on the walnut': a second material, not a place
         before = [w for w in words if _said_before(w, line_start + found.start())]
@@ -174,6 +177,15 @@ def context_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tup
         note = f"read past '{dropped}': where it is, what it is for or what it is like, not how it looks"
         return reading, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)
     return None
+
+
+def _unknown_after(words: Sequence[Tagged], at: int) -> bool:
+    """Whether the last word said from offset `at` on is one the lexicon does not know, and no word
+    there is a material's own name ('like old buildings', 'like soot'; not 'like walnut')."""
+    said = [w for w in words if w.implied_by is None and w.span.start >= at and w.text[:1].isalpha()]
+    if not said or not said[-1].unknown:
+        return False
+    return not any(not w.unknown and any(c.tag == "NOUN" for c in w.candidates) for w in said)
 
 
 def _names_a_material(words: Sequence[Tagged], at: int, lexicon: Lexicon) -> bool:

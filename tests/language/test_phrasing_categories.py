@@ -129,3 +129,22 @@ def test_undo_never_reaches_past_a_change_of_material():
     session = refined("oak", "darker", "make it walnut", "undo")
     assert session.material["params"] == changed
     assert any("nothing to take back" in d.message for d in session.result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [
+        ("sandstone like old buildings", "sandstone"),
+        ("green copper roof like on old churches", "green copper roof"),
+        ("ultra matte black, like soot", "ultra matte black"),
+        ("looks like dark chocolate", "dark chocolate"),
+        ("it looks like polished brass", "polished brass"),
+    ],
+)
+def test_what_it_is_like_said_without_an_article_is_read_past(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+
+
+def test_a_likeness_to_a_material_keeps_its_error():
+    assert "E001" in problems("oak, like walnut") or "E002" in problems("oak, like walnut")
