@@ -91,7 +91,17 @@ class Joiner:
                 diags.append(Diagnostic(_joined_span(out[-1], word), Severity.NOTE, NOTE_CODE, note))
                 out.pop()
                 continue
-            if before is not None and of_tag(before, "OBJECT") and not others(before) and nouns:
+            if (
+                before is not None
+                and of_tag(before, "OBJECT")
+                and not others(before)
+                and k + 1 == len(tagged)
+                and word.span.start - before.span.end <= 1  # 'a glass of merlot' is the wine
+                and self._colour_of_the_thing(before, word)
+            ):  # 'jumper cream', 'cushion charcoal': the colour of the thing, not a material
+                out[-1] = self._object_alone(before, diags)
+                out.append(Tagged(word.text, word.span, of_tag(word, "COLOR"), word.unknown))
+            elif before is not None and of_tag(before, "OBJECT") and not others(before) and nouns:
                 out[-1] = self._join(before, word, nouns, f"'{word.text}' ('{before.text}' names the object)", diags)
                 formed.append((out[-1], word if of_tag(word, "OBJECT") else before))  # 'floor tiles': the tiles
             elif (
@@ -104,6 +114,15 @@ class Joiner:
                 out[-1:] = self._look_of(before, thing, looks)
                 if not nouns:
                     formed.append((out[-1], word))
+            elif (
+                before is not None
+                and of_tag(word, "OBJECT")
+                and not _noun_next(tagged, k)
+                and self._colour_of_the_thing(word, before)
+            ):  # 'cream jumper', 'charcoal cushion': the colour of the thing, not its material
+                out[-1] = Tagged(before.text, before.span, of_tag(before, "COLOR"), before.unknown)
+                out.append(self._object_alone(word, diags))
+                formed.append((out[-1], word))
             elif before is not None and of_tag(word, "OBJECT") and of_tag(before, "NOUN") and not _noun_next(tagged, k):
                 made = of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' (the material of the {word.text})", diags)
@@ -728,6 +747,24 @@ class Joiner:
             return False
         entries = [self.lexicon.entry(c.category, c.key) for c in of_tag(word, "OBJECT")]
         return not any(e is not None and e.get("product") for e in entries)
+
+    def _colour_of_the_thing(self, thing: Tagged, word: Tagged) -> bool:
+        """Whether a noun that is also a colour, said with an object, is the thing's colour: its
+        class is one no thing is made of (teaching.toml [things] `colour_classes`: 'jumper cream',
+        'cream jumper', 'chocolate sofa'), and the thing's usual material is not of it; 'slate tiles',
+        'copper pot', 'ivory keys' keep their materials."""
+        from .suggest import teaching
+
+        if not of_tag(word, "COLOR") or not of_tag(word, "NOUN") or others(thing):
+            return False
+        never = set(teaching()["things"]["colour_classes"])
+        usual = self.lexicon.require("objects", of_tag(thing, "OBJECT")[0].key).data["material"]
+        usual_entry = self.lexicon.entry("nouns", usual)
+        kind = usual_entry.get("class") if usual_entry is not None else None
+        entries = [self.lexicon.entry("nouns", c.key) for c in of_tag(word, "NOUN")]
+        if thing.text.lower().endswith(" of") or usual == "water":
+            return False  # 'a glass of merlot', 'a pint of stout': a serving is named for what is in it
+        return kind not in never and all(e is not None and e.get("class") in never for e in entries)
 
     def _object_alone(self, word: Tagged, diags: list[Diagnostic]) -> Tagged:
         """An object with no material noun beside it: its other readings, else its material."""

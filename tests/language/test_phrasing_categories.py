@@ -148,3 +148,22 @@ def test_what_it_is_like_said_without_an_article_is_read_past(said, same_as):
 
 def test_a_likeness_to_a_material_keeps_its_error():
     assert "E001" in problems("oak, like walnut") or "E002" in problems("oak, like walnut")
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [("knitted jumper cream", "knitted cream jumper"), ("sofa chocolate", "chocolate sofa")],
+)
+def test_a_colour_noun_said_with_a_thing_is_the_thing_s_colour(said, same_as):
+    """'cream' is a liquid, no jumper's material: before or after the jumper it is its colour."""
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+    assert material(same_as)["model"]["base"] == "diffuse"  # the fabric, not a liquid
+    assert "fabric" in str(material(same_as)["maps"])
+
+
+@pytest.mark.parametrize(
+    "said", ["terracotta vase", "slate tiles", "copper pot", "walnut cabinets", "ivory piano keys"]
+)
+def test_a_noun_things_are_made_of_stays_the_thing_s_material(said):
+    assert not any("the usual material" in n for n in notes(said)), notes(said)
