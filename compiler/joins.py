@@ -750,9 +750,9 @@ class Joiner:
 
     def _colour_of_the_thing(self, thing: Tagged, word: Tagged) -> bool:
         """Whether a noun that is also a colour, said with an object, is the thing's colour: its
-        class is one no thing is made of (teaching.toml [things] `colour_classes`: 'jumper cream',
-        'cream jumper', 'chocolate sofa'), and the thing's usual material is not of it; 'slate tiles',
-        'copper pot', 'ivory keys' keep their materials."""
+        class is one no thing is made of (teaching.toml [things] `colour_classes`) and the thing is
+        one people dye or upholster (its usual material's class in `dyed_classes`): 'jumper cream',
+        'cream jumper', 'chocolate sofa'; 'chocolate bar', 'coffee mug', 'slate tiles' keep theirs."""
         from .suggest import teaching
 
         if not of_tag(word, "COLOR") or not of_tag(word, "NOUN") or others(thing):
@@ -764,7 +764,8 @@ class Joiner:
         entries = [self.lexicon.entry("nouns", c.key) for c in of_tag(word, "NOUN")]
         if thing.text.lower().endswith(" of") or usual == "water":
             return False  # 'a glass of merlot', 'a pint of stout': a serving is named for what is in it
-        return kind not in never and all(e is not None and e.get("class") in never for e in entries)
+        dressed = set(teaching()["things"]["dyed_classes"])
+        return kind in dressed and all(e is not None and e.get("class") in never for e in entries)
 
     def _object_alone(self, word: Tagged, diags: list[Diagnostic]) -> Tagged:
         """An object with no material noun beside it: its other readings, else its material."""
