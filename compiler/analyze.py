@@ -333,21 +333,23 @@ def _material_groups(
     material: ast.Material | None = None
     refinements: list[ast.Refinement] = []
     material_ok = False
+    kept = 0  # the lines an 'undo' cannot take back: those before the material last changed
     for item, has_error in items:
         if isinstance(item, ast.Material):
             if material is not None and material_ok:
                 yield material, refinements
-            material, refinements, material_ok = item, [], not has_error
+            material, refinements, material_ok, kept = item, [], not has_error, 0
         elif material is None and has_error:
             diags.append(orphan_refinement(item))
         elif material is None:
             material = orphan_line(item, lexicon, diags)  # 'paler blue' first: its own material
-            material_ok = material is not None
+            material_ok, kept = material is not None, 0
         elif not has_error and item.changes_material and (changed := changed_material(material, item, lexicon)):
             material = changed
             refinements += after_change(item)
+            kept = len(refinements)
         elif not has_error:
-            add_refinement(refinements, item, lexicon, diags)
+            add_refinement(refinements, item, lexicon, diags, kept)
     if material is not None and material_ok:
         yield material, refinements
 

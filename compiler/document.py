@@ -5,6 +5,7 @@ Lines end as cnlmc.lines says (CRLF, LF or a lone CR); `iter_lines` is re-export
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
+from contextvars import ContextVar
 from dataclasses import replace
 
 from . import ast
@@ -29,6 +30,12 @@ from .tagged import NOTE_CODE, Tagged, only_tag
 from .tagger import Tagger
 
 __all__ = ["iter_items", "iter_lines", "parse_document", "parse_line"]
+
+#: whether describing words after the noun may be read as after a comma (off while the parts of a
+#: line so read are read, so the reading never nests)
+_NOUN_FIRST: ContextVar[bool] = ContextVar("noun_first", default=True)
+#: the most words a line read so may have (listings are short; each place for the comma is a parse)
+NOUN_FIRST_WORDS = 12
 
 MAX_LINE_CHARS = 2000
 MAX_LINE_WORDS = 64
@@ -392,7 +399,9 @@ def _failed_line(
             diags.extend(polite[0])
             said = polite_said
     if implied is None and (first := _noun_first(words, text, lexicon)) is not None:
-        diags.extend(first[1])  # 'steel brushed', 'oak a bit darker': when nothing else reads the line
+        diags.extend(
+            d for d in first[1] if d not in diags
+        )  # 'steel brushed', 'oak a bit darker': when nothing else reads the line
         return first[0]
     diags.append(said)
     return implied
@@ -546,12 +555,22 @@ def _noun_first(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
     """'steel brushed', 'plastic charcoal grey', 'oak a bit darker': describing words (or
     comparatives) after the noun with no comma, read as after a comma (cnlmc.noun_first), with a
     note; None when no place for the comma reads the line."""
+    said = [w for w in words if w.text[:1].isalnum()]
+    if not _NOUN_FIRST.get() or len(said) > NOUN_FIRST_WORDS:
+        return None  # a part of a line read by it ('oak, a bit darker'), or a long line: no second try
     for listed, k in noun_first_readings(words):
         node = _parsed(listed, text, lexicon)
         if isinstance(node, ast.Material):
             return node, [noun_first_note(words, k)]
         start = listed[k].span.start - _line_offset(words[0])  # the implied comma, on the space before word k
-        if text[start : start + 1] == " " and (found := _comparatives_after_comma(words[0], text, start, 1, lexicon)):
+        if text[start : start + 1] != " ":
+            continue
+        token = _NOUN_FIRST.set(False)
+        try:
+            found = _comparatives_after_comma(words[0], text, start, 1, lexicon)
+        finally:
+            _NOUN_FIRST.reset(token)
+        if found is not None:
             return found[0], [*found[1], noun_first_note(words, k, comparatives=True)]
     return None
 

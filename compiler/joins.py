@@ -641,7 +641,7 @@ class Joiner:
         if before.unknown:
             return False  # its readings are guesses ('please tone': no colour named 'please')
         if low in self.rules().colour_heads:  # "sand coloured", "cream colored", "light colour": anywhere
-            return any(c.tag in ("COLOR", "NOUN", "SHADE", "ADJ") for c in before.candidates)
+            return any(c.tag in ("COLOR", "NOUN", "SHADE") for c in before.candidates) or _colour_describing(before)
         if low in self.rules().like_heads:  # "leather like vinyl", "mirror like steel"
             return not last and any(c.tag in HEAD_HOLDERS[False] for c in before.candidates)
         if low not in self.rules().heads:
@@ -661,16 +661,13 @@ class Joiner:
         joined = before.span.to(span)
         if text.lower() in self.rules().colour_heads and (of_tag(before, "COLOR") or of_tag(before, "NOUN")):
             return self._coloured(before, text, joined, diags)
-        if text.lower() in self.rules().colour_heads:  # 'light colour', 'natural colour': the describing word
-            kept = tuple(c for c in before.candidates if c.tag in ("SHADE", "ADJ"))
-            note = f"read '{before.text} {text}' as '{before.text}' ('{text}' names what it describes)"
-            diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
-            return Tagged(f"{before.text} {text}", joined, kept, before.unknown)
         if text.lower() in self.rules().like_heads and not any(c.tag in ("ADJ", "COLOR") for c in before.candidates):
             return self._resembling(before, text, joined, diags)
         note = f"read '{before.text} {text}' as '{before.text}' ('{text}' names what it describes)"
         diags.append(Diagnostic(joined, Severity.NOTE, NOTE_CODE, note))
-        kept = tuple(c for c in before.candidates if c.tag in self._holders(text.lower(), last))
+        colour_head = text.lower() in self.rules().colour_heads  # 'light colour', 'natural colour': the word itself
+        holders = ("SHADE", "ADJ") if colour_head else self._holders(text.lower(), last)
+        kept = tuple(c for c in before.candidates if c.tag in holders)
         # 'satin finish': the finish, never the fabric (at the line's end too: 'a satin finish')
         if any(c.tag == "ADJ" for c in kept):
             kept = tuple(c for c in kept if c.tag != "NOUN")
@@ -1126,6 +1123,14 @@ def _main_words(words: list[Tagged]) -> list[Tagged]:
     the material of the phrase."""
     end = next((k for k, t in enumerate(words) if of_tag(t, "WITH") or of_tag(t, "AND")), len(words))
     return words[:end]
+
+
+def _colour_describing(word: Tagged) -> bool:
+    """A describing word that says a colour before 'colour' ('natural colour': teaching.toml
+    [things] `colour_describing`); other adjectives before it ('rusty coloured') are not read so."""
+    from .suggest import teaching
+
+    return word.text.lower() in teaching()["things"]["colour_describing"]
 
 
 def implied_comma(first: Tagged) -> Tagged:

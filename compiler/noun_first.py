@@ -69,11 +69,15 @@ def noun_first_note(words: Sequence[Tagged], k: int, comparatives: bool = False)
     """'read 'steel brushed' as 'brushed steel' (describing words go before the noun)'; for
     comparatives, which follow the material: 'read 'oak a bit darker' as 'oak, a bit darker''."""
     end = next((j for j in range(k, len(words)) if of_tag(words[j], "WITH")), len(words))
+    lead = 0  # 'the steel brushed' = 'the brushed steel': an article stays first
+    while lead < k - 1 and (words[lead].unknown or all(c.tag == "ARTICLE" for c in words[lead].candidates)):
+        lead += 1
     head, after, clause = _text(words[:k]), _text(words[k:end]), _text(words[end:])
     if comparatives:
         message = f"read '{_text(words)}' as '{head}, {_text(words[k:])}' (a comma after the material)"
     else:
-        reordered = " ".join(part for part in (after, head, clause) if part)
+        parts = (_text(words[:lead]), after, _text(words[lead:k]), clause)
+        reordered = " ".join(part for part in parts if part)
         message = f"read '{_text(words)}' as '{reordered}' (describing words go before the noun)"
     return Diagnostic(_whole(words), Severity.NOTE, NOTE_CODE, message)
 

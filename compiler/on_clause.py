@@ -163,6 +163,8 @@ def context_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tup
         if not found.group(0).startswith(likeness) and _names_a_material(words, line_start + found.start(), lexicon):
             continue  # 'steel on the oak', 'brass inlay on the walnut': a second material, not a place
         before = [w for w in words if _said_before(w, line_start + found.start())]
+        if found.group("bare"):  # 'oak like soot': 'oak like' was joined as a likeness; the words as said alone
+            before = _tagged_alone(text[: found.start()], words[0].span.line, line_start, lexicon)
         while before and not before[-1].text[:1].isalnum():  # 'white marble, the kind ...': the comma goes too
             before.pop()
         said = [w for w in before if w.text[:1].isalnum()]
@@ -177,6 +179,14 @@ def context_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tup
         note = f"read past '{dropped}': where it is, what it is for or what it is like, not how it looks"
         return reading, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)
     return None
+
+
+def _tagged_alone(text: str, line: int, line_start: int, lexicon: Lexicon) -> list[Tagged]:
+    """The words of `text` (the start of a line) tagged as a line of their own; [] on an error."""
+    from .tagger import Tagger
+
+    words, problems = Tagger.of(lexicon).tag_line(text, line, line_start)
+    return [] if any(d.is_error for d in problems) else words
 
 
 def _unknown_after(words: Sequence[Tagged], at: int) -> bool:

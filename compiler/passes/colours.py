@@ -64,18 +64,26 @@ def opposed_shades(c: ast.Colour, ctx: Context) -> tuple[str, str] | None:
     """The first two shade words of a colour that pull opposite ways (lighter and darker, or more and
     less chroma: "light dark beech", "pale deep cherry"), inner one first; else None. The shade word
     that opens a two-word colour name counts as the innermost ("pale dark grey", "dark pale green":
-    the survey's "dark grey" and "pale green"); a longer name is a name ("pale dark slate grey" is a
+    the survey's "dark grey" and "pale green") when it says lightness, by its lightness only ("pale
+    dusty pink" agrees); a longer name is a name ("pale dark slate grey" is a
     pale version of that colour)."""
     words = [(w.text, w.key) for w in reversed(c.shades)]  # nearest the colour first, as applied
-    named = c.base.text.lower().split() if c.base is not None else []
-    if len(named) == 2:
-        words.insert(0, (named[0], named[0]))
     pulls = [(text, _pull(ctx, key)) for text, key in words if ctx.lexicon.entry("shades", key) is not None]
+    named = c.base.text.lower().split() if c.base is not None else []
+    if len(named) == 2 and named[0] in _lightness_shades() and ctx.lexicon.entry("shades", named[0]) is not None:
+        pulls.insert(0, (named[0], (_pull(ctx, named[0])[0], 0.0)))  # its lightness only ('pale dusty pink' agrees)
     for i, (inner, a) in enumerate(pulls):
         for outer, b in pulls[i + 1 :]:
             if any(x * y < 0 for x, y in zip(a, b)):
                 return inner, outer
     return None
+
+
+def _lightness_shades() -> frozenset[str]:
+    """The shades that say lightness (colour_rules.toml [shade_directions]: dark, deep, light, pale)."""
+    from ..lexicon_load import colour_rules
+
+    return frozenset(colour_rules()["shade_directions"])
 
 
 def _pull(ctx: Context, shade_key: str) -> tuple[float, float]:

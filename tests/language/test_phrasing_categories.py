@@ -167,3 +167,31 @@ def test_a_colour_noun_said_with_a_thing_is_the_thing_s_colour(said, same_as):
 )
 def test_a_noun_things_are_made_of_stays_the_thing_s_material(said):
     assert not any("the usual material" in n for n in notes(said)), notes(said)
+
+
+def test_a_likeness_after_a_material_keeps_the_material_and_its_name():
+    assert same_look(material("oak like soot"), material("oak"))
+    assert material("sandstone like old buildings")["name"] == "sandstone"
+
+
+def test_undo_in_a_compiled_file_never_reaches_past_a_change_of_material():
+    """The file path (compile_source, the CLI) keeps the same rule as a session."""
+    undone = compiled("oak\ndarker\nmake it walnut\nundo").ir["materials"][-1]["params"]
+    assert undone == compiled("oak\ndarker\nmake it walnut").ir["materials"][-1]["params"]
+    assert compiled("oak\ndarker\nglossier\nundo").ir["materials"][-1]["params"] == material("oak\ndarker")["params"]
+
+
+@pytest.mark.parametrize("said", ["pale dusty pink paint", "bright dusty rose paint"])
+def test_a_shade_that_says_no_lightness_opening_a_name_does_not_contradict(said):
+    assert problems(said) == []
+
+
+@pytest.mark.parametrize("said", ["rusty coloured steel", "a glass of merlot"])
+def test_readings_that_stay_as_they_were(said):
+    assert not any("the usual material" in n or "names what it describes" in n for n in notes(said))
+
+
+def test_an_article_stays_first_in_the_note():
+    assert "read 'the steel brushed' as 'the brushed steel' (describing words go before the noun)" in notes(
+        "the steel brushed"
+    )
