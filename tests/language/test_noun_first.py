@@ -80,7 +80,7 @@ def test_a_colour_name_stays_a_colour(colour):
         ("smooth peanut butter", "a word read as two ('pea nut') is a guess"),
         ("steel lightly", "an adverb with nothing to modify"),
         ("aluminum brushed and", "a line that ends in 'and'"),
-        ("steel aluminum", "two materials"),
+        ("steel aluminum brushed", "two materials"),
     ],
 )
 def test_lines_it_does_not_read_keep_their_errors(said, why):
