@@ -542,7 +542,7 @@ def _but_then_comparatives(
     joiners = [w for w in words if w.text.lower() in breaks and w.implied_by is None]
     if len(joiners) != 1 or words[0].implied_by is not None:
         return None
-    start = joiners[0].span.start - _line_offset(words[0])
+    start = joiners[0].span.start - words[0].span.line_start
     found = _comparatives_after_comma(words[0], text, start, len(joiners[0].text), lexicon)
     if found is None:
         return None
@@ -562,7 +562,7 @@ def _noun_first(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
         node = _parsed(listed, text, lexicon)
         if isinstance(node, ast.Material):
             return node, [noun_first_note(words, k)]
-        start = listed[k].span.start - _line_offset(words[0])  # the implied comma, on the space before word k
+        start = listed[k].span.start - words[0].span.line_start  # the implied comma, on the space before word k
         if text[start : start + 1] != " ":
             continue
         token = _NOUN_FIRST.set(False)
@@ -575,17 +575,12 @@ def _noun_first(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
     return None
 
 
-def _line_offset(word: Tagged) -> int:
-    """Where the line of `word` starts in the document."""
-    return word.span.start - (word.span.col - 1)
-
-
 def _comparatives_after_comma(
     first: Tagged, text: str, start: int, width: int, lexicon: Lexicon
 ) -> tuple[ast.Material, list[Diagnostic]] | None:
     """The line with its `width` characters at `start` read as a comma (the rest blank, so every
     word keeps its place): a material, then comparatives (cnlmc.line_parts), or None."""
-    number, offset = first.span.line, _line_offset(first)
+    number, offset = first.span.line, first.span.line_start
     listed = text[:start] + "," + " " * (width - 1) + text[start + width :]
     return material_then_comparatives(listed, number, offset, _part_reader(listed, number, offset, lexicon), lexicon)
 

@@ -754,14 +754,14 @@ class Joiner:
 
         if not of_tag(word, "COLOR") or not of_tag(word, "NOUN") or others(thing):
             return False
-        never = set(teaching()["things"]["colour_classes"])
+        table = teaching()["things"]
         usual = self.lexicon.require("objects", of_tag(thing, "OBJECT")[0].key).data["material"]
+        if thing.text.lower().endswith(" of") or usual in table["serving_materials"]:
+            return False  # 'a glass of merlot', 'a pint of stout': a serving is named for what is in it
+        never, dressed = set(table["colour_classes"]), set(table["dyed_classes"])
         usual_entry = self.lexicon.entry("nouns", usual)
         kind = usual_entry.get("class") if usual_entry is not None else None
         entries = [self.lexicon.entry("nouns", c.key) for c in of_tag(word, "NOUN")]
-        if thing.text.lower().endswith(" of") or usual == "water":
-            return False  # 'a glass of merlot', 'a pint of stout': a serving is named for what is in it
-        dressed = set(teaching()["things"]["dyed_classes"])
         return kind in dressed and all(e is not None and e.get("class") in never for e in entries)
 
     def _object_alone(self, word: Tagged, diags: list[Diagnostic]) -> Tagged:

@@ -16,8 +16,7 @@ from itertools import takewhile
 
 from .diagnostics import Diagnostic, Severity
 from .joins import implied_comma, of_tag
-from .spans import Span
-from .tagged import NOTE_CODE, Tagged
+from .tagged import NOTE_CODE, Tagged, written_span
 
 __all__ = ["noun_first_note", "noun_first_readings"]
 
@@ -79,13 +78,8 @@ def noun_first_note(words: Sequence[Tagged], k: int, comparatives: bool = False)
         parts = (_text(words[:lead]), after, _text(words[lead:k]), clause)
         reordered = " ".join(part for part in parts if part)
         message = f"read '{_text(words)}' as '{reordered}' (describing words go before the noun)"
-    return Diagnostic(_whole(words), Severity.NOTE, NOTE_CODE, message)
+    return Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, message)
 
 
 def _text(words: Sequence[Tagged]) -> str:
     return " ".join(w.text for w in words if w.implied_by is None)
-
-
-def _whole(words: Sequence[Tagged]) -> Span:
-    written = [w for w in words if w.implied_by is None] or list(words)
-    return written[0].span.to(written[-1].span)

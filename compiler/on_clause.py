@@ -28,7 +28,7 @@ def on_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[a
     if joining is None or not words:
         return None
     start, end = joining
-    line_start = words[0].span.start - (words[0].span.col - 1)
+    line_start = words[0].span.line_start
     known = [w for w in words if not (w.unknown and start <= w.span.start - line_start < end)]
     before = [w for w in known if w.span.start - line_start < start]
     after = [w for w in known if w.span.start - line_start >= end]
@@ -81,12 +81,12 @@ def likeness_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tu
         bare = re.search(r",\s*like\b", text.lower())
         if bare is None or not words:
             return None
-        line_start = words[0].span.start - (words[0].span.col - 1)
+        line_start = words[0].span.line_start
         before = [w for w in words if w.span.start - line_start < bare.start()]
         return _described_likeness(words, before, line_start + bare.end(), text, lexicon) if before else None
     if not words:
         return None
-    line_start = words[0].span.start - (words[0].span.col - 1)
+    line_start = words[0].span.line_start
     before = [w for w in words if w.span.start - line_start < found.start()]
     if not before or any(w.unknown for w in before):
         return None
@@ -151,7 +151,7 @@ def context_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tup
     if not words:
         return None
     low = text.lower()
-    line_start = words[0].span.start - (words[0].span.col - 1)
+    line_start = words[0].span.line_start
     table = teaching()["hedges"]
     pointed = rf"(?:{alternatives(table['context_pointing'])})\s+(?:{alternatives(table['pointing_words'])})"
     bare = alternatives(table["context_unknown"])

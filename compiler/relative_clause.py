@@ -46,7 +46,7 @@ def _negated_relative(
 ) -> tuple[ast.Material, Diagnostic] | None:
     """The line tagged again with the negated opener blanked but for a 'not' at its end (every
     other word keeps its place), then read as a relative clause that opens there."""
-    line, line_start = words[0].span.line, words[0].span.start - (words[0].span.col - 1)
+    line, line_start = words[0].span.line, words[0].span.line_start
     said = text[:start] + " " * (end - start - 4) + "not " + text[end:]
     again, problems = Tagger.of(lexicon).tag_line(said, line, line_start)
     if any(d.is_error for d in problems) or not again:
@@ -69,7 +69,7 @@ def _relative_reading(
         r"\s(?:" + alternatives(teaching()["hedges"]["relative_tails"]) + r")[\s.!,]*$", text.lower()[end - 1 :]
     )
     stop = end - 1 + tail.start() if tail is not None else len(text)
-    line_start = words[0].span.start - (words[0].span.col - 1)
+    line_start = words[0].span.line_start
     before = [w for w in words if w.span.start - line_start < start]
     after = [w for w in words if end <= w.span.start - line_start < stop]
     if not before or not after or any(w.unknown for w in (*before, *after)):

@@ -25,6 +25,11 @@ class Span:
         fields["col"] = col
 
     @property
+    def line_start(self) -> int:
+        """Where the line of this span starts in the text (its column 1)."""
+        return self.start - (self.col - 1)
+
+    @property
     def end_col(self) -> int:
         return self.col + (self.end - self.start)
 
