@@ -120,9 +120,47 @@ def oklab_to_linear_in_gamut(lab: Sequence[float]) -> list[float]:
 
 
 def shift_lightness(rgb: Sequence[float], toward: float, amount: float) -> list[float]:
-    """OKLab L moved toward `toward` (0 black, 1 white) by `amount`; chroma kept where the gamut allows."""
+    """OKLab L moved toward `toward` (0 black, 1 white) by `amount`; chroma kept where the gamut
+    allows; a yellow made darker keeps the hue people still call yellow (`darkened_yellow`)."""
     L, a, b = linear_to_oklab(rgb)
-    return oklab_to_linear_in_gamut((L + (toward - L) * amount, a, b))
+    lightness = L + (toward - L) * amount
+    return oklab_to_linear_in_gamut((lightness, *darkened_yellow(L, lightness, a, b)))
+
+
+# A yellow darkened at a constant OKLCh hue turns olive: in the xkcd colour survey
+# (stdlib/data/colour_names.toml) the names that stay yellow below OKLab L 0.85 ("dark yellow",
+# "mustard yellow", "brownish yellow", "yellow ochre", "yellowish brown") lie at hue 87-101, while
+# the hue of "yellow" itself (109.7, L 0.97) is named "olive" at L 0.54 (113.9). So the hue at which
+# a colour is still yellow falls with its lightness: 110 at L 0.97, 6 degrees less per 0.1 of L,
+# never below 88 (tests/test_colour_darkened_yellow.py checks the line against the survey's names).
+YELLOW_LINE = (0.97, 110.0, 60.0, 88.0)  # L where the line starts, its hue there, degrees per unit L, least hue
+YELLOW_OFFSETS = (8.0, 14.0)  # degrees past the line a yellow may lie (fully turned; not turned: olive, khaki)
+YELLOW_LEAST_CHROMA = 0.04  # a grey with a trace of yellow has no hue to keep
+
+
+def yellow_hue_at(lightness: float) -> float:
+    """The OKLCh hue at which the survey still names a colour of this OKLab lightness yellow."""
+    start, hue, per_unit, least = YELLOW_LINE
+    return max(least, min(hue, hue - per_unit * (start - lightness)))
+
+
+def darkened_yellow(was: float, lightness: float, a: float, b: float) -> tuple[float, float]:
+    """OKLab a, b of a colour whose lightness went from `was` down to `lightness`. A yellow (a hue on
+    or near the survey's line at `was`) turns as the line does, so it stays what the survey calls
+    yellow (a mustard, an ochre) instead of an olive; chroma kept. Olives and khakis (well past the
+    line), oranges and greens, greys, and a colour made lighter stay as they were."""
+    chroma = math.hypot(a, b)
+    if lightness >= was or chroma < YELLOW_LEAST_CHROMA:
+        return a, b
+    hue = math.degrees(math.atan2(b, a)) % 360.0
+    goal = yellow_hue_at(lightness)
+    offset = hue - yellow_hue_at(was)
+    full, none = YELLOW_OFFSETS
+    if offset >= none or hue <= goal:
+        return a, b
+    share = 1.0 if offset <= full else (none - offset) / (none - full)
+    turned = math.radians(max(goal, hue - (yellow_hue_at(was) - goal) * share))
+    return chroma * math.cos(turned), chroma * math.sin(turned)
 
 
 def scale_chroma(rgb: Sequence[float], scale: float) -> list[float]:

@@ -12,7 +12,7 @@ from .spec import OUTPUT_ROLES, Graph, GraphInput, GraphParam, GraphScale, NodeS
 TOP_KEYS = ("name", "doc", "params", "inputs", "nodes", "outputs", "presets", "scale", "palette")
 SCALE_KEYS = ("metres_per_unit", "feature", "what", "measure", "axis", "source")
 SCALE_AXES = ("u", "v", "any")
-PALETTE_KEYS = ("max_chroma", "lightness", "dark_below", "dark_params", "source")
+PALETTE_KEYS = ("max_chroma", "lightness", "lightness_curve", "dark_below", "dark_params", "source")
 REF_KEYS = ("node", "param", "input", "mul", "add")
 IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]{0,63}")  # names that end up in node names and file names
 
@@ -244,6 +244,8 @@ def check_palette(c: Checker, raw, params: dict[str, GraphParam]) -> dict:
         low, high = (c.number(b, "palette.lightness") for b in bounds)
         if not 0 <= low <= high <= 1:
             c.fail("palette.lightness", f"expected 0 <= min <= max <= 1, got [{low}, {high}]")
+    if "lightness_curve" in table and not 0.25 <= c.number(table["lightness_curve"], "palette.lightness_curve") <= 4:
+        c.fail("palette.lightness_curve", "expected an exponent in [0.25, 4]")
     if "dark_below" in table:
         c.number(table["dark_below"], "palette.dark_below")
     settings = c.table(table.get("dark_params", {}), "palette.dark_params")

@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from ..colour import apply_ops, linear_to_oklab, oklab_to_linear, oklab_to_linear_in_gamut
+from ..colour import apply_ops, darkened_yellow, linear_to_oklab, oklab_to_linear, oklab_to_linear_in_gamut
 from ..degrees import weighted_shade
 
 MAX_LIGHTNESS_GIVEN = 0.1  # OKLab L a hue or chroma step may give up for its chroma (our choice)
@@ -105,6 +105,15 @@ def _chroma_kept(L: float, a: float, b: float) -> float:
 
 def _fits(lab: Sequence[float]) -> bool:
     return all(-1e-7 <= c <= 1 + 1e-7 for c in oklab_to_linear(lab))
+
+
+def yellow_kept(rgb: list[float], darker: list[float]) -> list[float]:
+    """A step that made `rgb` darker (the paper's linear 'darker' keeps the OKLCh hue): a yellow's
+    hue turned as the survey's yellows turn (colour.darkened_yellow), so it darkens to a mustard,
+    not an olive; anything else as the step gave it."""
+    (was, _a, _b), (L, a, b) = linear_to_oklab(rgb), linear_to_oklab(darker)
+    turned = darkened_yellow(was, L, a, b)
+    return darker if turned == (a, b) else oklab_to_linear_in_gamut((L, *turned))
 
 
 def scaled_ops(ops: Ops, weight: float) -> Ops:

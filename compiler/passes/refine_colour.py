@@ -28,6 +28,7 @@ from .colour_steps import (
     opposite_ops,
     scaled_ops,
     shade_step,
+    yellow_kept,
 )
 from .colours import colour_text, resolve_colour
 from .refine_target import item_text, item_words, note
@@ -47,7 +48,8 @@ def refine_colour(state: MaterialState, entry: Entry, item: ast.RefineItem, dire
         axis = entry.get("axis", entry.key)
         key = param if axis == LIGHTNESS_AXIS else f"{param}.{axis}"
     else:
-        step = scaled_steps(entry.get("step"), weight)[0]  # the paper's step, on the parameter itself
+        paper = scaled_steps(entry.get("step"), weight)[0]  # the paper's step, on the parameter itself
+        step = lambda x: yellow_kept(x, paper(x))
         key = param
     current = holder[name]
     new = bracket_move(state.brackets, key, current, Move(direction, step, weight, COLOUR_LIMITS))

@@ -27,7 +27,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from .. import ast
-from ..colour import linear_to_oklab, oklab_to_linear_in_gamut
+from ..colour import darkened_yellow, linear_to_oklab, oklab_to_linear_in_gamut
 from ..graphs import graph_palette
 from ..lexicon import LexiconCaches
 from ..state import Context, MaterialState
@@ -76,13 +76,25 @@ def _carried_colour(ctx: Context, rgb: list[float], graph: str, palette: Mapping
 def _carry(ctx: Context, rgb: list[float], palette: Mapping[str, Any]) -> Carried:
     low, high = _lightness_band(ctx.settings, palette)
     lab = linear_to_oklab(rgb)
-    held = min(max(lab[0], low), high)
+    held = _held_lightness(lab[0], low, high, palette)
     chroma = math.hypot(lab[1], lab[2])
     cap = float(palette.get("max_chroma", math.inf))
     factor = cap / chroma if chroma > cap else 1.0
     if abs(held - lab[0]) < 1e-6 and factor == 1.0:
         return lab[0], held, chroma, factor, None
-    return lab[0], held, chroma, factor, tuple(oklab_to_linear_in_gamut([held, lab[1] * factor, lab[2] * factor]))
+    a, b = darkened_yellow(lab[0], held, lab[1] * factor, lab[2] * factor)
+    return lab[0], held, chroma, factor, tuple(oklab_to_linear_in_gamut([held, a, b]))
+
+
+def _held_lightness(lightness: float, low: float, high: float, palette: Mapping[str, Any]) -> float:
+    """The named colour's OKLab lightness inside the band: clamped, or, for a graph whose palette
+    has a `lightness_curve` (a material whose own colours span the band, fired clay), placed in it
+    as the named colour stands among colours: low + (high - low) * L^curve (white: the band's top,
+    black: its bottom)."""
+    curve = palette.get("lightness_curve")
+    if curve is None:
+        return min(max(lightness, low), high)
+    return float(low + (high - low) * min(max(lightness, 0.0), 1.0) ** float(curve))
 
 
 def _lightness_band(settings: Mapping[str, Any], palette: Mapping[str, Any]) -> tuple[float, float]:

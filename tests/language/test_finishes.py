@@ -204,6 +204,25 @@ def test_dull_glass_is_hazed():
     assert params("dull quartz")["roughness"] > params("quartz")["roughness"]
 
 
+@pytest.mark.parametrize("metal", ["brass", "gold", "silver", "chrome", "copper"])
+def test_a_dull_metal_has_lost_its_gloss(metal):
+    """'dull brass' / 'brass that isn't shiny': past the glossy band (everyday.toml's 0.25), whatever
+    the metal's own roughness (a multiple of brass's 0.12 left it glossy)."""
+    dull = params(f"dull {metal}")["roughness"]
+    assert dull >= 0.25 and dull > params(metal)["roughness"]
+    assert params(f"{metal} that isn't shiny")["roughness"] == pytest.approx(dull)
+
+
+def test_the_metal_between_rust_patches_is_dark_and_rough():
+    """Rusting steel carries a dark oxide film and pits between the patches: the clean metal the rust
+    map shows between them is darker and rougher than the clean iron (the preview showed chrome)."""
+    clean, rusty = params("iron"), params("rusty iron")
+    assert max(rusty["base_color"]) < 0.5 * min(clean["base_color"])
+    assert rusty["roughness"] >= 0.55
+    slightly = params("slightly rusty iron")
+    assert max(rusty["base_color"]) < max(slightly["base_color"]) < max(clean["base_color"])
+
+
 def test_a_clear_plastic_takes_what_a_process_does_to_glass():
     """Plexiglass is a plastic whose model is glass: smoke and tint absorb in it as in glass."""
     assert params("smoked plexiglass")["base_color"] == pytest.approx(

@@ -10,7 +10,7 @@ from cnlmc.graphs import graph_names, graph_palette, graph_params
 
 def test_a_palette_cannot_be_changed_by_a_caller():
     palette = graph_palette("brick")
-    assert palette["lightness"] == (0.3, 0.55)
+    assert palette["lightness"] == (0.3, 0.8)
     with pytest.raises(TypeError):
         palette["max_chroma"] = 9.0  # type: ignore[index]
     with pytest.raises(AttributeError):

@@ -74,7 +74,38 @@ def test_red_brick_is_a_brick_red_and_its_mortar_stays_mortar():
     hue = np.degrees(np.arctan2(bricks[:, 2], bricks[:, 1]))
     assert 0.05 < np.median(chroma) <= 0.13  # a brick red, not a paint red (xkcd red: chroma 0.25)
     assert 0 < np.median(hue) < 60  # red
-    assert np.percentile(bricks[:, 0], 95) - np.percentile(bricks[:, 0], 5) > 0.05  # bricks still vary
+    spread = np.percentile(bricks[:, 0], 95) - np.percentile(bricks[:, 0], 5)
+    assert spread > 0.08 * np.median(bricks[:, 0])  # bricks still vary (the palette multiplies: relative)
+    assert 0.45 < np.median(bricks[:, 0]) < 0.56  # a fired red, near physicallybased.info's Brick (L 0.51)
+
+
+@pytest.mark.parametrize(
+    "phrase,lightness,hue",
+    [
+        ("yellow brick", (0.7, 0.82), (85, 102)),  # a buff stock: light, and yellow rather than olive
+        ("cream brick", (0.7, 0.82), (80, 105)),
+        ("white brick", (0.75, 0.85), None),  # the lightest brick, not a mid grey
+        ("black brick", (0.25, 0.36), None),
+        ("blue brick", (0.36, 0.48), (240, 290)),  # a dark engineering brick
+    ],
+)
+def test_a_brick_colour_takes_its_place_among_bricks(phrase, lightness, hue):
+    """Fired clay runs from dark engineering bricks through reds to pale stocks: the named colour's
+    lightness places it in that run (stdlib/graphs/brick.toml palette.lightness_curve)."""
+    baked = _baked(phrase, ("color", "mask"))
+    bricks = _oklab(baked["color"].reshape(-1, 3)[baked["mask"].reshape(-1) > 0.95])
+    assert lightness[0] < np.median(bricks[:, 0]) < lightness[1]
+    if hue is not None:
+        median_hue = np.degrees(np.arctan2(np.median(bricks[:, 2]), np.median(bricks[:, 1]))) % 360
+        assert hue[0] < median_hue < hue[1]
+
+
+def test_brick_lightness_keeps_the_order_of_the_named_colours():
+    medians = []
+    for phrase in ("black brick", "blue brick", "red brick", "yellow brick", "white brick"):
+        baked = _baked(phrase, ("color", "mask"))
+        medians.append(np.median(_oklab(baked["color"].reshape(-1, 3)[baked["mask"].reshape(-1) > 0.95])[:, 0]))
+    assert medians == sorted(medians)
 
 
 def test_grey_slate_is_grey():

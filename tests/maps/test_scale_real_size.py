@@ -106,6 +106,7 @@ mask = "noise"
         (('measure = "mask"', 'measure = "colour"'), "scale.measure", "not an output"),
         (('axis = "any"', 'axis = "w"'), "scale.axis", "one of u, v, any"),
         (("max_chroma = 0.1", "max_chroma = 3"), "palette.max_chroma", "[0, 0.4]"),
+        (("max_chroma = 0.1", "max_chroma = 0.1\nlightness_curve = 9"), "palette.lightness_curve", "[0.25, 4]"),
         (("dark_params = { scale = 1.5 }", "dark_params = { scale = 9 }"), "palette.dark_params.scale", "outside"),
         (("dark_params = { scale = 1.5 }", "dark_params = { scal = 1 }"), "palette.dark_params.scal", "did you mean"),
     ],

@@ -106,13 +106,13 @@ vec3 cnlm_lambert(vec3 wo, vec3 wi, vec3 albedo) {
 
 vec3 cnlm_surface_albedo(vec2 uv) {
     if (!cnlm_map_bound(cnlm_map_base_color)) {
-        return vec3(1, 1, 1);  // the IR's base colour where no map is bound
+        return vec3(0.412, 0.398, 0.384);  // the IR's base colour where no map is bound
     }
     return texture(cnlm_map_base_color, uv).rgb;
 }
 
 float cnlm_surface_alpha(vec2 uv) {
-    float r = cnlm_map_bound(cnlm_map_roughness) ? texture(cnlm_map_roughness, uv).r : 0.5;
+    float r = cnlm_map_bound(cnlm_map_roughness) ? texture(cnlm_map_roughness, uv).r : 0.6;
     float a = cnlm_alpha_of(r);
     return clamp(a, CNLM_ALPHA_MIRROR, 1.0);
 }
