@@ -26,7 +26,8 @@ from .relative_clause import (
 from .removal import removal_line
 from .shape_store import save_shapes
 from .spans import Span
-from .tagged import NOTE_CODE, Tagged, only_tag
+from .syntax import Shape
+from .tagged import NOTE_CODE, Candidate, Tagged, only_tag
 from .tagger import Tagger
 
 __all__ = ["iter_items", "iter_lines", "parse_document", "parse_line"]
@@ -455,18 +456,59 @@ def _implied_reading(
     from .teach import teach_syntax_error
 
     taught = teach_syntax_error(_syntax_error(failure, words, lexicon), words, lexicon)
-    implied = implied_material(taught, words, lexicon, text)
+    implied = implied_material(taught, words, lexicon, text) or _implied_before_comma(words, lexicon, text)
     if implied is None:
         return None, taught
     with_noun, note = implied
     try:
         shape, picks = parse_line_shape(with_noun, lexicon.caches.shapes)
     except ParseFailure:
-        return None, taught
+        clause = _comma_clause_after_implied(with_noun, note, lexicon)  # 'white, a touch of sheen'
+        if clause is None:
+            return None, taught
+        (shape, picks), with_noun, note = clause
     material = shape.build(with_noun, picks, text)
     if isinstance(material, ast.Material) and starts_with_change(text):
         return as_change(material, words)
     return material, note
+
+
+def _implied_before_comma(words: list[Tagged], lexicon: Lexicon, text: str) -> tuple[list[Tagged], Diagnostic] | None:
+    """'white, a touch of sheen': the describing words before the first comma with their implied
+    material (cnlmc.implied), the rest of the line after them; None when the part before the comma
+    is not read so or the rest names no feature."""
+    from .implied import implied_material
+    from .teach import teach_syntax_error
+
+    comma = next((i for i, w in enumerate(words) if any(c.tag == "COMMA" for c in w.candidates)), 0)
+    rest = words[comma + 1 :]
+    if not comma or not any(c.tag == "FEATURE" for w in rest for c in w.candidates):
+        return None
+    failure = _failure_of(words[:comma], lexicon)
+    if failure is None:
+        return None
+    taught = teach_syntax_error(_syntax_error(failure, words[:comma], lexicon), words[:comma], lexicon)
+    implied = implied_material(taught, words[:comma], lexicon, text)
+    return None if implied is None else ([*implied[0], *words[comma:]], implied[1])
+
+
+def _comma_clause_after_implied(
+    words: list[Tagged], note: Diagnostic, lexicon: Lexicon
+) -> tuple[tuple[Shape, list[Candidate]], list[Tagged], Diagnostic] | None:
+    """The implied material's line read with its feature after the comma as its clause ('white,
+    a touch of sheen' = 'white paint with a touch of sheen'): the parse, the words and one note
+    saying both readings; None when it does not parse so either."""
+    from .hedges import with_after_comma
+
+    clause = with_after_comma(words)
+    if clause is None:
+        return None
+    try:
+        parsed = parse_line_shape(clause[0], lexicon.caches.shapes)
+    except ParseFailure:
+        return None
+    both = Diagnostic(note.span, note.severity, note.code, f"{note.message}; {clause[1].message}")
+    return parsed, clause[0], both
 
 
 def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, list[Diagnostic]] | None:
@@ -555,6 +597,8 @@ def _noun_first(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
     """'steel brushed', 'plastic charcoal grey', 'oak a bit darker': describing words (or
     comparatives) after the noun with no comma, read as after a comma (cnlmc.noun_first), with a
     note; None when no place for the comma reads the line."""
+    from .hedges import with_after_comma
+
     said = [w for w in words if w.text[:1].isalnum()]
     if not _NOUN_FIRST.get() or len(said) > NOUN_FIRST_WORDS:
         return None  # a part of a line read by it ('oak, a bit darker'), or a long line: no second try
@@ -562,6 +606,9 @@ def _noun_first(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
         node = _parsed(listed, text, lexicon)
         if isinstance(node, ast.Material):
             return node, [noun_first_note(words, k)]
+        clause = with_after_comma(listed)  # 'paint mostly matte, a little sheen'
+        if clause is not None and isinstance(node := _parsed(clause[0], text, lexicon), ast.Material):
+            return node, [noun_first_note(words, k), clause[1]]
         start = listed[k].span.start - words[0].span.line_start  # the implied comma, on the space before word k
         if text[start : start + 1] != " ":
             continue

@@ -256,6 +256,8 @@ def with_implied(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | N
     if any(all(c.tag == "NOUN" for c in w.candidates) for w in main):
         return None  # a material is named: its error is a mistake, not a clause
     clause = next(w for w in main if any(c.tag == "FEATURE" for c in w.candidates))
+    if any(any(c.tag == "COMMA" for c in w.candidates) for w in words[: words.index(clause)]):
+        return None  # 'white, a touch of sheen': the white thing (a material implied) with its clause
     written = " ".join(w.text for w in main)
     note = Diagnostic(written_span(main), Severity.NOTE, NOTE_CODE, f"read '{written}' as 'with {written}'")
     return [_implied("with", Candidate("WITH", "with", "keywords"), clause, 1), *words], note

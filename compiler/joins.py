@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Any
 
 from .diagnostics import Diagnostic, Severity
 from .spans import Span
-from .tagged import NOTE_CODE, Candidate, Tagged
+from .tagged import NOTE_CODE, Candidate, Tagged, only_tag
 
 if TYPE_CHECKING:
     from .lexicon import Lexicon
@@ -71,8 +71,13 @@ class Joiner:
         out: list[Tagged] = []
         formed: list[tuple[Tagged, Tagged]] = []  # (the joined noun, its object word): 'marble tiles'
         looks: list[tuple[Tagged, Tagged]] = []  # (the noun, the look word): 'marble-effect laminate'
+        mark_after_thing = False  # 'sofa, green velvet': the listing's comma goes with the thing
         for k, word in enumerate(tagged):
             before = out[-1] if out else None
+            if mark_after_thing and only_tag(word, "COMMA"):
+                mark_after_thing = False
+                continue
+            mark_after_thing = False
             if word.unknown and self._names_use(word, tagged[k + 1 :], diags):  # "guitar varnish", "boat paint"
                 continue
             if word.unknown or (before is not None and before.unknown):  # its tags are guesses: E001 says so
@@ -152,6 +157,9 @@ class Joiner:
                 elif not others(word) and self._named_later(word, _main_words(tagged[k + 1 :])):
                     note = f"read '{word.text}' as saying how or what for, not what: the material is named later"
                     diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))  # "wire brushed oak"
+                    mark_after_thing = all(
+                        of_tag(w, "ARTICLE") for w in out
+                    )  # 'my worktop, black granite': it opens a listing
                 else:
                     out.append(self._object_alone(word, diags))
                     formed.append((out[-1], word))

@@ -5,7 +5,8 @@ A designer who types "brushed steel, please" or "I want matte black plastic" mea
 rejecting the line over a courtesy teaches nothing useful, and the note still tells them the words
 are not part of the language. Only whole phrases listed in stdlib/data/teaching.toml [politeness]
 are dropped, and only at the start (`leading`) or the end (`trailing`) of a line, with a mark
-beside them (`marks`: "Hi! brushed steel"); a word inside the phrase is never dropped. Runs only for a line with an unknown word
+beside them (`marks`: "Hi! brushed steel"); inside the line only the single courtesy words listed in
+`anywhere` ("no gloss please, matt dark green"), never a phrase. Runs only for a line with an unknown word
 (the unknown-word path of cnlmc.document), so ordinary lines pay nothing.
 """
 
@@ -65,6 +66,8 @@ def without_politeness(
         dropped += [compared] if compared else []
     kept, said_last, where = _without_last_words(kept, table)
     dropped += said_last
+    kept, inside = _without_courtesy_inside(kept, table["anywhere"])
+    dropped += inside
     idiom = _idiom(kept, table["idioms"], tag) if tag is not None and not put else None
     if idiom is not None:
         said_run, put, kept = idiom
@@ -94,6 +97,15 @@ def without_politeness(
             note = f"read past '{text}': a phrase names the material only, so politeness is left out"
         out.append(Diagnostic(run[0].span.to(run[-1].span), Severity.NOTE, NOTE_CODE, note))
     return out, (kept + put if idiom is not None else put + kept)
+
+
+def _without_courtesy_inside(kept: list[Tagged], words: Sequence[str]) -> tuple[list[Tagged], list[list[Tagged]]]:
+    """The words without a courtesy said inside the line, which never carries meaning ('no gloss
+    please, matt dark green': teaching.toml [politeness] anywhere), each one as a run read past."""
+    inside = [w for w in kept if w.text.lower() in words]
+    if not inside or len(inside) == len(kept):
+        return kept, []
+    return [w for w in kept if w not in inside], [[w] for w in inside]
 
 
 def _without_last_words(

@@ -176,9 +176,15 @@ def test_politeness_at_the_edges_is_read_past_with_a_note(text):
     assert not [d for d in result.diagnostics if d.severity.value == "warning"]
 
 
-def test_politeness_inside_a_phrase_is_still_an_unknown_word():
-    codes = [d.code for d in compiled("polished please copper").diagnostics if d.is_error]
-    assert "E001" in codes
+def test_a_courtesy_word_inside_a_phrase_is_read_past_with_a_note():
+    """'please' carries no meaning wherever it stands (teaching.toml [politeness] anywhere); a phrase
+    of courtesy ('thank you') inside a line is still an unknown word."""
+    result = compiled("polished please copper")
+    assert not [d for d in result.diagnostics if d.is_error]
+    assert "read past 'please': a phrase names the material only, so politeness is left out" in [
+        d.message for d in result.diagnostics
+    ]
+    assert "E001" in [d.code for d in compiled("polished thank you copper").diagnostics if d.is_error]
 
 
 def test_politeness_alone_is_still_an_error():

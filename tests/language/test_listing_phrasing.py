@@ -1,0 +1,140 @@
+"""Categories of everyday phrasing brought by held-out sets 36-37 (issue #14): the thing first in a
+listing ('sofa, green velvet'), possessives and courtesy inside a line, 'X looking', a colour then
+a feature ('white, a touch of sheen'), noun-first words before a clause, a complaint run on after
+a change."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.language.meaning import compiled, material, refined, same_look
+
+
+def problems(text: str) -> list[str]:
+    return [d.code for d in compiled(text).diagnostics if d.severity.value in ("error", "warning")]
+
+
+def notes(text: str) -> list[str]:
+    return [d.message for d in compiled(text).diagnostics if d.severity.value == "note"]
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as", "thing"),
+    [
+        ("sofa, green velvet", "green velvet", "sofa"),
+        ("tabletop, oiled oak", "oiled oak", "tabletop"),
+        ("kitchen worktop, black granite", "black granite", "worktop"),
+        ("the chair, oak", "oak", "chair"),
+        ("our worktop, white marble", "white marble", "worktop"),
+    ],
+)
+def test_a_thing_first_in_a_listing_names_what_the_material_is_for(said, same_as, thing):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+    assert f"read '{thing}' as saying how or what for, not what: the material is named later" in notes(said)
+
+
+def test_a_thing_after_other_words_keeps_its_comma_reading():
+    """The comma goes with the thing only where the thing opens the line: 'oak chair, oiled' is the
+    oiled oak of the chair."""
+    assert same_look(material("oak chair, oiled"), material("oiled oak"))
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [
+        ("my oak", "oak"),
+        ("my front door, dark blue", "front door, dark blue"),
+        ("our brushed steel", "brushed steel"),
+    ],
+)
+def test_a_possessive_is_a_determiner(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+
+
+def test_courtesy_inside_a_line_is_read_past():
+    said = "no gloss please, matt dark green"
+    assert problems(said) == []
+    assert same_look(material(said), material("no gloss, matt dark green"))
+    assert "read past 'please': a phrase names the material only, so politeness is left out" in notes(said)
+
+
+def test_courtesy_alone_is_still_not_a_material():
+    assert "E001" in problems("please please")
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [
+        ("rusty looking iron", "rusty iron"),
+        ("old looking oak", "old oak"),
+        ("kinda rusty looking iron", "kinda rusty iron"),
+    ],
+)
+def test_x_looking_with_a_space_is_x(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [
+        ("white, a touch of sheen", "white paint with a touch of sheen"),
+        ("off white, some sheen", "off white paint with some sheen"),
+        ("matte black, some scratches", "matte black paint with some scratches"),
+        ("dark grey, fine speckles", "dark grey paint with fine speckles"),
+        ("leather, bit of a sheen", "leather with a bit of a sheen"),
+    ],
+)
+def test_a_colour_then_a_feature_is_the_implied_material_with_its_clause(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+
+
+def test_the_implied_material_and_its_clause_are_one_note():
+    assert (
+        "no material named: read 'white' as 'white paint'; read ', slightly sheen' as 'with slightly sheen'"
+        in notes("white, a touch of sheen")
+    )
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as", "read"),
+    [
+        (
+            "paint mostly matte, a little sheen",
+            "paint, mostly matte, a little sheen",
+            "read 'paint mostly matte, a little sheen' as 'mostly matte paint, a little sheen' (describing words go before the noun)",
+        ),
+        (
+            "steel brushed, light scratches",
+            "brushed steel with light scratches",
+            "read 'steel brushed, light scratches' as 'brushed steel, light scratches' (describing words go before the noun)",
+        ),
+    ],
+)
+def test_noun_first_words_before_a_clause_after_a_comma(said, same_as, read):
+    assert "E002" not in problems(said)
+    assert same_look(material(said), material(same_as))
+    assert read in notes(said)
+
+
+def test_a_comma_before_the_noun_keeps_the_lines_own_reading():
+    assert problems("oak, satin") == []
+    assert not any("describing words go before the noun" in n for n in notes("oak, satin"))
+
+
+@pytest.mark.parametrize("line", ["lighter please its too dark", "lighter it's too dark"])
+def test_a_complaint_run_on_after_a_change_is_read_as_its_own_part(line):
+    before = refined("walnut").material["params"]["base_color"]
+    after = refined("walnut", line).material["params"]["base_color"]
+    assert sum(after) > sum(before)
+
+
+def test_a_likeness_is_not_cut_before_its_pronoun():
+    """'like it's been waxed' has no complaint in it: no comma is put before 'it's'."""
+    from cnlmc.api import _comma_before_complaint
+
+    assert _comma_before_complaint("like it's been waxed", ["it's"]) == "like it's been waxed"
+    assert _comma_before_complaint("lighter its too dark", ["its"]) == "lighter, its too dark"
