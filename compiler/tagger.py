@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import re
 from collections import OrderedDict
+from collections.abc import Container
 from typing import TYPE_CHECKING
 
 from .diagnostics import Diagnostic, Severity, did_you_mean, error
@@ -164,7 +165,7 @@ class Tagger:
             text, col = raw[i]
             low = text.lower()
             seconds = followers.get(low)
-            if seconds is None or i + 1 == count or raw[i + 1][0].lower() not in seconds:
+            if seconds is None or i + 1 == count or not self._follows(raw[i + 1][0].lower(), seconds):
                 key = (low,)  # the common case: a one-word entry (WordMemo.get written out)
                 candidates = remembered.get(key)
                 if candidates is not None:
@@ -268,7 +269,10 @@ class Tagger:
         text = raw[i][0]
         for n in self.lengths_from.get(text.lower(), ()):
             if i + n <= len(raw):
-                candidates = self._candidates(tuple([t.lower() for t, _c in raw[i : i + n]]))
+                said = tuple([t.lower() for t, _c in raw[i : i + n]])
+                candidates = self._candidates(said)
+                if not candidates and n > 1:  # 'stainless steal': the entry that sounds the same
+                    candidates = self._heard_entry(said, self._span(raw, i, n, line_no, offset), diags)
                 if candidates and n > 1 and self._gives_way(raw, i, n):
                     continue  # "dull red wine": 'dull' then the noun 'red wine', not the colour 'dull red'
                 if candidates:
@@ -304,6 +308,25 @@ class Tagger:
                 return self._formed(reading, raw, i, line_no, offset, tagged, diags)
         tagged.append(self._unknown(raw[i], line_no, offset, diags))
         return 1
+
+    def _follows(self, word: str, seconds: Container[str]) -> bool:
+        """Whether a word (or, for a word the lexicon lacks, the word it sounds like: 'steal') may
+        follow as an entry's next word; a known word never reaches the word formation rules."""
+        if word in seconds:
+            return True
+        return not self._candidates((word,)) and self.formation().rules.homophones.get(word, word) in seconds
+
+    def _heard_entry(self, said: tuple[str, ...], span: Span, diags: list[Diagnostic]) -> tuple[Candidate, ...]:
+        """The entry of several words one of which sounds like what was written ('stainless steal'),
+        with a note; () when there is none."""
+        sounds = self.formation().rules.homophones
+        heard = tuple([sounds.get(w, w) for w in said])
+        candidates = self._candidates(heard) if heard != said else ()
+        if candidates:
+            changed = [f"'{w}' as '{h}'" for w, h in zip(said, heard) if w != h]
+            note = f"read {', '.join(changed)} (a word that sounds the same)"
+            diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, note))
+        return candidates
 
     def _formed(
         self,

@@ -120,6 +120,7 @@ class Rules:
         self.participles = frozenset(joined("compound_first", "participles"))
         self.participle_endings = joined("compound_first", "participle_endings")
         self.first_synonyms = _merged_table(layers, "compound_first", "synonyms")
+        self.homophones = _merged_table(layers, "homophones", "words")  # 'stainless steal
         self.first_degrees = _merged_table(layers, "compound_first", "degrees")
         firsts = {*self.manners, *self.first_synonyms, *self.first_degrees}
         self.first_parts = tuple(
@@ -239,6 +240,7 @@ class WordFormation:
 
     def _read(self, word: str) -> Reading | None:
         rules = (
+            self._homophone,
             self._joined,
             self._negated,
             self._prefixed,
@@ -263,6 +265,12 @@ class WordFormation:
 
     def _known(self, word: str) -> tuple[Candidate, ...]:
         return self.lookup((word,)) if word else ()
+
+    def _homophone(self, word: str) -> Reading | None:
+        """A real word a spell-checker leaves that sounds like a lexicon word ('stainless steal')."""
+        meant = self.rules.homophones.get(word)
+        found = self._known(meant) if meant else ()
+        return _whole(found, f"read '{word}' as '{meant}' (a word that sounds the same)") if found else None
 
     def _joined(self, word: str) -> Reading | None:
         if not self.rules.join or "-" not in word:

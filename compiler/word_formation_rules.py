@@ -89,6 +89,7 @@ def empty_rules() -> dict[str, Any]:
             "made_of": [],
         },
         "wordnet": {"file": "", "noun_roots": {}, "adjectives": []},
+        "homophones": {"words": {}},
         "resemblance": {
             "forms": [],
             "endings": [],
@@ -126,6 +127,7 @@ def check_rules(c: Checker, data: dict[str, Any]) -> dict[str, Any]:
     rules["compounds"] = _compounds(c, data.get("compounds", {}))
     rules["compound_first"] = _compound_first(c, data.get("compound_first", {}))
     rules["wordnet"] = _wordnet(c, data.get("wordnet", {}))
+    rules["homophones"] = _homophones(c, data.get("homophones", {}))
     rules["resemblance"] = _resemblance(c, data.get("resemblance", {}))
     return rules
 
@@ -182,6 +184,15 @@ def _compounds(c: Checker, raw: object) -> dict[str, Any]:
     out["made_of"] = _words(c, table.get("made_of", []), ("compounds", "made_of"))
     out["min_part"] = int(c.number(table.get("min_part", out["min_part"]), ("compounds", "min_part"), 1, 20))
     return out
+
+
+def _homophones(c: Checker, raw: object) -> dict[str, Any]:
+    """[homophones]: a word a spell-checker leaves that sounds like a lexicon word ('steal': steel)."""
+    path: tuple[str | int, ...] = ("homophones",)
+    table = c.table(raw, path)
+    c.known_keys(table, ("words",), path)
+    pairs = c.table(table.get("words", {}), (*path, "words"))
+    return {"words": {k.lower(): c.string(v, (*path, "words", k), blank=False).lower() for k, v in pairs.items()}}
 
 
 def _compound_first(c: Checker, raw: object) -> dict[str, Any]:

@@ -8,6 +8,7 @@ formulas saturate inside each parameter's range (compiler/degrees.py).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from types import MappingProxyType
 from typing import Any, NamedTuple
@@ -112,6 +113,8 @@ def apply_colour(state: MaterialState, ctx: Context, c: ast.Colour, adverbs: Wor
     current = holder.get(param)
     rgb = resolve_colour(c, ctx, start=current, weight=weight)
     words = c.words
+    if target == "base" and words and _colour_of_ageing(state, ctx, rgb, (*adverbs, *words), weight):
+        return
     if target == "base" and words:
         rgb = keep_pattern_visible(state, ctx, rgb, words, noun_of(state).key)
     _warn_opposed_shades(state, ctx, c)
@@ -120,6 +123,36 @@ def apply_colour(state: MaterialState, ctx: Context, c: ast.Colour, adverbs: Wor
     holder[param] = rgb
     text = " ".join([w.text for w in words])  # colour_text(c)
     state.note(param if target == "base" else "coat.color", rgb, f"colours: {text}", (*adverbs, *words))
+
+
+def _colour_of_ageing(state: MaterialState, ctx: Context, rgb: list[float], words: Words, weight: float) -> bool:
+    """'green copper', 'copper gone green': a colour word on a bare metal that is the colour the metal
+    turns by itself (settings.metal_colour_ageing) draws that ageing at the word's weight instead
+    of a tinted film, with a note; False for any other colour or material."""
+    if state.kind != "conductor":
+        return False
+    noun = noun_of(state)
+    for key, rule in (ctx.lexicon.settings.get("metal_colour_ageing") or {}).items():
+        if noun.key not in rule["nouns"] or not _hue_within(rgb, rule["hues"], float(rule["least_chroma"])):
+            continue
+        adjective = ctx.lexicon.require("adjectives", key)
+        state.applied.append((adjective.key, words[-1]))
+        _apply_maps(state, ctx, adjective, weight, words)
+        said = " ".join(w.text for w in words)
+        message = f"read '{said}' on {noun.key} as {key}: the colour {noun.key} turns by itself (settings.metal_colour_ageing)"
+        state.diagnostics.append(
+            Diagnostic(words[0].span.to(words[-1].span), Severity.NOTE, SURVEY_COLOUR, message, ())
+        )
+        return True
+    return False
+
+
+def _hue_within(rgb: list[float], hues: Sequence[float], least_chroma: float) -> bool:
+    from ..colour import linear_to_oklab
+
+    _l, a, b = linear_to_oklab(rgb)
+    hue = math.degrees(math.atan2(b, a)) % 360.0
+    return math.hypot(a, b) >= least_chroma and hues[0] <= hue <= hues[1]
 
 
 def _warn_opposed_shades(state: MaterialState, ctx: Context, c: ast.Colour) -> None:

@@ -138,3 +138,33 @@ def test_a_likeness_is_not_cut_before_its_pronoun():
 
     assert _comma_before_complaint("like it's been waxed", ["it's"]) == "like it's been waxed"
     assert _comma_before_complaint("lighter its too dark", ["its"]) == "lighter, its too dark"
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as", "note"),
+    [
+        ("brushed stainless steal", "brushed stainless steel", "read 'steal' as 'steel' (a word that sounds the same)"),
+        ("guilt frame", "gilt frame", "read 'guilt' as 'gilt' (a word that sounds the same)"),
+        ("laquered oak", "lacquered oak", "read 'laquered' as 'lacquered' (a word that sounds the same)"),
+    ],
+)
+def test_a_word_a_spell_checker_leaves_reads_as_the_word_it_sounds_like(said, same_as, note):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+    assert note in notes(said)
+
+
+@pytest.mark.parametrize("said", ["green copper", "copper roof gone green with age", "blue green bronze"])
+def test_the_colour_a_copper_alloy_turns_by_itself_is_its_patina(said):
+    """Copper weathers to verdigris: 'green copper' is a patinated copper, not a green film over it."""
+    m = material(said)
+    assert m["maps"]["base_color"]["graph"] == "patina" and m["params"]["coat"] is None
+    assert any(
+        "the colour copper turns by itself" in n or "the colour bronze turns by itself" in n for n in notes(said)
+    )
+
+
+@pytest.mark.parametrize("said", ["red copper", "green steel", "copper with a green lacquer", "green painted copper"])
+def test_any_other_colour_on_a_metal_keeps_its_film_or_coat(said):
+    m = material(said)
+    assert "patina" not in str(m.get("maps", {}))
