@@ -341,6 +341,7 @@ def _failed_line(
     when it only describes one ('matte black'), or as a change of the material above when it
     starts with a change phrase ('make it blue'): cnlmc.implied."""
     from .hedges import (
+        comparison_shared,
         finish_dropped,
         inside_a_note,
         postfix_finish,
@@ -367,7 +368,12 @@ def _failed_line(
         diags[:] = [d for d in diags if not read_past(d, notes)]
         diags.extend(notes)
         return node
-    clause = postfix_finish(hedged, lexicon) or with_implied(hedged) or finish_dropped(hedged, lexicon)
+    clause = (
+        postfix_finish(hedged, lexicon)
+        or with_implied(hedged)
+        or finish_dropped(hedged, lexicon)
+        or comparison_shared(hedged)  # 'more worn and weathered'
+    )
     comma_clause = None if _said_with_errors(words, diags) else with_after_comma(hedged)  # 'oak, no grain' is a removal
     for attempt in _rereadings(hedged, notes, (comma_clause, clause)):
         node = _parsed(attempt[0], text, lexicon)
@@ -377,7 +383,9 @@ def _failed_line(
             return node
     whole = _whole_line(hedged, text, lexicon) or _but_then_comparatives(hedged, text, lexicon)
     if whole is not None:
-        taken = _removal_part(text)  # 'no' of 'oak, no grain': read as the removal, and no other note of it
+        taken = _removal_part(
+            text, _but_at(words)
+        )  # 'no' of 'oak, no grain': read as the removal, and no other note of it
         passed = [n for n in whole[1] if n.message.startswith("read past ")]  # a part read past: all its errors go
         diags[:] = [
             d
@@ -534,12 +542,24 @@ def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
     return _by_parts(words, text, lexicon)
 
 
-def _removal_part(text: str) -> bool:
-    """Whether a part after the first (a comma apart) opens with a removal phrase ('oak, no grain')."""
+def _removal_part(text: str, but: int | None = None) -> bool:
+    """Whether a part after the first (a comma apart, or after the line's 'but' at `but`) opens with
+    a removal phrase ('oak, no grain', 'wood floor but not orange')."""
     from .removal import opens_removal
 
     points = part_cuts(text)
+    if but is not None and opens_removal(text[but:].split(None, 1)[-1]):
+        return True
     return any(opens_removal(text[a + 1 : b]) for a, b in list(zip(points, points[1:]))[1:])
+
+
+def _but_at(words: list[Tagged]) -> int | None:
+    """Where in the line its one 'but' stands (teaching.toml [politeness] remark_breaks), or None."""
+    from .suggest import teaching
+
+    breaks = teaching()["politeness"]["remark_breaks"]
+    joiners = [w for w in words if w.text.lower() in breaks and w.implied_by is None]
+    return joiners[0].span.start - words[0].span.line_start if len(joiners) == 1 else None
 
 
 def _said_again(diag: Diagnostic, notes: list[Diagnostic]) -> bool:
@@ -582,9 +602,9 @@ def _but_then_comparatives(
 
     breaks = teaching()["politeness"]["remark_breaks"]  # 'but'
     joiners = [w for w in words if w.text.lower() in breaks and w.implied_by is None]
-    if len(joiners) != 1 or words[0].implied_by is not None:
+    start = _but_at(words)
+    if start is None or words[0].implied_by is not None:
         return None
-    start = joiners[0].span.start - words[0].span.line_start
     found = _comparatives_after_comma(words[0], text, start, len(joiners[0].text), lexicon)
     if found is None:
         return None

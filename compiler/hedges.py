@@ -474,6 +474,35 @@ def _degree_word(key: str, run: Sequence[Tagged], lexicon: Lexicon) -> Tagged | 
     return _implied(key, Candidate("ADV", key, "adverbs"), run[-1], 1, whole=run[0].span.to(run[-1].span))
 
 
+def comparison_shared(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | None:
+    """'more worn and weathered', 'less shiny and less yellow': a comparison word ('more', 'less')
+    before describing words joined by 'and' compares each of them ('more worn, more weathered'); the
+    words so read and the note, None for any other line."""
+    first = words[0] if words else None
+    refine = next((c for c in first.candidates if c.tag == "REFINE"), None) if first is not None else None
+    if first is None or refine is None or first.text.lower() not in ("more", "less"):
+        return None
+    out: list[Tagged] = [first]
+    for k, word in enumerate(words[1:], start=1):
+        after = words[k + 1] if k + 1 < len(words) else None
+        if any(c.tag == "AND" for c in word.candidates) and after is not None and _describes(after):
+            comma = Tagged(",", word.span, (Candidate("COMMA", ",", "keyword"),), implied_by=word.span)
+            out += [comma, _implied(first.text, refine, word, 1)]
+        else:
+            out.append(word)
+    if len(out) == len(words):
+        return None
+    said = " ".join(w.text for w in words)
+    read = " ".join(w.text for w in out).replace(" ,", ",")
+    return out, Diagnostic(first.span.to(words[-1].span), Severity.NOTE, NOTE_CODE, f"read '{said}' as '{read}'")
+
+
+def _describes(word: Tagged) -> bool:
+    return any(c.tag in ("ADJ", "COLOR", "SHADE", "PROP") for c in word.candidates) and not any(
+        c.tag == "REFINE" for c in word.candidates
+    )
+
+
 def _implied(text: str, candidate: Candidate, inside: Tagged, step: int, whole: Span | None = None) -> Tagged:
     """A word no one typed, placed `step` characters into `inside`'s span (each implied word of a
     line at its own step, so each keeps its own start), implied by `whole` (default: that word)."""

@@ -22,6 +22,9 @@ __all__ = ["PART_MARKS", "by_parts", "material_then_comparatives", "part_cuts"]
 
 #: the marks that set parts apart
 PART_MARKS = frozenset((",", ";"))
+#: what a removal part takes off as 'much less' of it where the material has none of the word: a
+#: property ('oak, no grain') or a colour ('wood floor, not orange': its hue moved away from orange)
+TAKEN_AS_LESS = frozenset(("properties", "colours"))
 
 #: reads the line's text from start to end (columns) as a line of its own, its problems to the list
 Reader = Callable[[int, int, list[Diagnostic]], "ast.Item | None"]
@@ -82,7 +85,7 @@ def material_then_comparatives(
         if taken_off is not None:  # 'varnished oak, no varnish': the word goes
             moved = replace(taken_off, span=moved.span.to(node.span), text=text)
         else:  # 'walnut, a bit darker'; 'oak, no grain' = much less grain, as the change line 'no grain' is
-            items = node.items or tuple(much_less(w, said) for w in node.removed if w.category == "properties")
+            items = node.items or tuple(much_less(w, said) for w in node.removed if w.category in TAKEN_AS_LESS)
             if not items:  # 'white paint, no texture': nothing to take off, as the change line says
                 listed = ", ".join(dict.fromkeys(f"'{w.text}'" for w in node.removed))
                 warned.append(warning(node.span, "W122", f"the material has no {listed} to take off"))

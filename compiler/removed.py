@@ -58,9 +58,11 @@ def _feature_named(feature: ast.Feature, keys: frozenset[str], lexicon: Lexicon)
 def much_less(word: ast.Word, said: ast.Word | None = None) -> ast.RefineItem:
     """'much less <property>', said by the removal's word (its span and text), or by the removal
     phrase `said` ('no' of 'oak, no grain', whose words name the material: oak_no_grain): what
-    taking off a property the material's noun brings means ('no veins' under marble)."""
+    taking off a property the material's noun brings means ('no veins' under marble); of a colour,
+    its hue moved away ('oak, not orange')."""
+    target: ast.Word | ast.Colour = ast.Colour((), word, word.span) if word.category == "colours" else word
     if said is None:
         less = ast.Word(word.text, "less", "refinements", word.span)
-        return ast.RefineItem(less, word, word.span, (ast.Word(word.text, "much", "adverbs", word.span),))
+        return ast.RefineItem(less, target, word.span, (ast.Word(word.text, "much", "adverbs", word.span),))
     much = ast.Word("", "much", "adverbs", said.span)  # said by the phrase: no word of the name
-    return ast.RefineItem(said, word, said.span.to(word.span), (much,))
+    return ast.RefineItem(said, target, said.span.to(word.span), (much,))

@@ -149,10 +149,12 @@ def _other_colour(state: MaterialState, ctx: Context, target: ast.Colour) -> boo
 
 def _nothing_removed(state: MaterialState, ctx: Context, line: ast.Refinement) -> None:
     """'lose the shine' under a material without 'shiny': its comparatives applied (less gloss), a
-    note; a property its noun brings ('no veins' under marble): much less of it, a note; with
-    neither ('no rust' under clean steel), W122."""
+    note; a property its noun brings ('no veins' under marble), or a colour whose hue the material
+    has ('not orange' under oak): much less of it, a note; with neither ('no rust' under clean
+    steel), W122."""
     listed = ", ".join(dict.fromkeys(f"'{w.text}'" for w in line.removed))
     properties = [w for w in line.removed if w.category == "properties" and _acts(state, ctx, w)]
+    properties += [w for w in line.removed if w.category == "colours" and _has_hue_of(state, ctx, w)]
     if not line.items and properties:
         for word in properties:
             apply_refinement(state, ctx, much_less(word))
@@ -165,6 +167,22 @@ def _nothing_removed(state: MaterialState, ctx: Context, line: ast.Refinement) -
         return
     hint = "name what the material has, e.g. 'lose the brushing' under 'brushed steel'"
     state.diagnostics.append(warning(line.span, "W122", f"the material above has no {listed} to take off", (hint,)))
+
+
+def _has_hue_of(state: MaterialState, ctx: Context, word: ast.Word) -> bool:
+    """Whether the material's colour has some of the named colour's hue ('not orange' under oak:
+    its hue moves away; under navy there is none to take off)."""
+    from ..colour import linear_to_oklab
+    from .colour_steps import hue_share
+
+    current = state.params.get("base_color")
+    if not isinstance(current, list):
+        return False
+    _l, a, b = linear_to_oklab(resolve_colour(ast.Colour((), word, word.span), ctx))
+    return math.hypot(a, b) > NO_HUE and hue_share(current, (a, b)) > NO_HUE
+
+
+NO_HUE = 0.02  # OKLab chroma (or share of a hue) below which a colour has none of it (our choice)
 
 
 def _acts(state: MaterialState, ctx: Context, word: ast.Word) -> bool:

@@ -168,3 +168,52 @@ def test_the_colour_a_copper_alloy_turns_by_itself_is_its_patina(said):
 def test_any_other_colour_on_a_metal_keeps_its_film_or_coat(said):
     m = material(said)
     assert "patina" not in str(m.get("maps", {}))
+
+
+@pytest.mark.parametrize(
+    ("first", "line", "read"),
+    [
+        ("red brick", "more worn and weathered", "read 'more worn and weathered' as 'more worn, more weathered'"),
+        ("oak", "less shiny and yellow", "read 'less shiny and yellow' as 'less shiny, less yellow'"),
+        ("oak", "more grain and contrast", "read 'more grain and contrast' as 'more grain, more contrast'"),
+    ],
+)
+def test_a_comparison_word_compares_each_describing_word_joined_by_and(first, line, read):
+    session = refined(first, line)
+    said = [d.message for d in session.result.diagnostics]
+    assert read in said and not [d for d in session.result.diagnostics if d.is_error]
+    parts = refined(first, ", ".join(read.split(" as '")[1].rstrip("'").split(", ")))
+    assert same_look(session.material, parts.material)
+
+
+def test_polish_it_more_is_more_polished():
+    more = refined("marble", "polish it more").material["params"]["roughness"]
+    assert more < refined("marble").material["params"]["roughness"]
+    assert same_look(refined("marble", "polish it more").material, refined("marble", "more polished").material)
+
+
+def test_bling_is_shine():
+    less = refined("yellow gold", "less bling").material["params"]["roughness"]
+    assert less > refined("yellow gold").material["params"]["roughness"]
+
+
+@pytest.mark.parametrize("said", ["wood floor but not orange", "oak, not orange"])
+def test_not_a_colour_the_material_has_moves_its_hue_away(said):
+    from tests.language.meaning import lch
+
+    plain = lch(material(said.split(",")[0].split(" but")[0])["params"]["base_color"])
+    moved = lch(material(said)["params"]["base_color"])
+    assert problems(said) == []
+    assert moved[1] < plain[1] and moved[2] > plain[2]  # less chroma, the hue turned away from orange (toward yellow)
+
+
+def test_not_a_colour_under_a_material_with_none_of_it_warns():
+    session = refined("navy paint", "not orange")
+    assert "W122" in [d.code for d in session.result.diagnostics]
+    session = refined("oak", "not orange")
+    assert "W122" not in [d.code for d in session.result.diagnostics]
+
+
+def test_sorta_like_is_a_likeness():
+    assert problems("sorta like slate but lighter") == []
+    assert same_look(material("sorta like slate but lighter"), material("slate, lighter"))
