@@ -27,7 +27,7 @@ from .removal import removal_line
 from .shape_store import save_shapes
 from .spans import Span
 from .syntax import Shape
-from .tagged import NOTE_CODE, Candidate, Tagged, only_tag
+from .tagged import NOTE_CODE, Candidate, Tagged, only_tag, written_span, written_text
 from .tagger import Tagger
 
 __all__ = ["iter_items", "iter_lines", "parse_document", "parse_line"]
@@ -321,6 +321,8 @@ def _parsed_line(
             return removal
         return _failed_line(failure, words, text, tagger.lexicon, diags)
     node = shape.build(words, picks, text)
+    if isinstance(node, ast.Material) and node.refinements and (toward := _toward_colour_noun(node, words)):
+        return toward  # 'more charcoal', 'a bit more terracotta': the colour, not a new material
     if tag_diags and any(d.is_error for d in diags[mark:]) and (whole := _whole_line(words, text, tagger.lexicon)):
         diags[mark:] = whole[1]  # 'rust on steel', 'deeper, closer to burgundy': the unknown word read
         return whole[0]
@@ -332,6 +334,28 @@ def _parsed_line(
             diags.append(change[1])
             return change[0]
     return node
+
+
+#: comparatives that need a target ('more' of what?): before a noun that is also a colour, its colour
+_NEEDS_TARGET = frozenset(("more", "less"))
+
+
+def _toward_colour_noun(node: ast.Material, words: list[Tagged]) -> ast.Refinement | None:
+    """'more charcoal', 'lighter, more terracotta': 'more' or 'less' with nothing after it but a noun
+    that is also a colour is a change of the colour above toward (or away from) that colour, not a
+    new material with a comparative of nothing; None for any other material."""
+    if len(node.nouns) != 1 or node.groups or node.coat or node.features:
+        return None
+    item, noun = node.refinements[-1], node.nouns[0]  # 'lighter, more charcoal': the last compares
+    if item.target is not None or item.word.key not in _NEEDS_TARGET:
+        return None
+    said = next((w for w in words if w.span.start == noun.span.start), None)
+    colour = next((c for c in said.candidates if c.tag == "COLOR"), None) if said is not None else None
+    if colour is None:
+        return None
+    named = ast.Colour((), ast.Word(noun.text, colour.key, colour.category, noun.span), noun.span)
+    toward = ast.RefineItem(item.word, named, item.span.to(noun.span), item.adverbs)
+    return ast.Refinement(None, (*node.refinements[:-1], toward), node.span, node.text)
 
 
 def _failed_line(
@@ -381,7 +405,11 @@ def _failed_line(
             diags[:] = [d for d in diags if not read_past(d, attempt[1])]  # 'loads' of 'loads of'
             diags.extend(attempt[1])
             return node
-    whole = _whole_line(hedged, text, lexicon) or _but_then_comparatives(hedged, text, lexicon)
+    whole = (
+        _whole_line(hedged, text, lexicon)
+        or _but_then_comparatives(hedged, text, lexicon)
+        or _clause_first(hedged, notes, text, lexicon)
+    )
     if whole is not None:
         taken = _removal_part(
             text, _but_at(words)
@@ -498,6 +526,36 @@ def _implied_before_comma(words: list[Tagged], lexicon: Lexicon, text: str) -> t
     taught = teach_syntax_error(_syntax_error(failure, words[:comma], lexicon), words[:comma], lexicon)
     implied = implied_material(taught, words[:comma], lexicon, text)
     return None if implied is None else ([*implied[0], *words[comma:]], implied[1])
+
+
+def _clause_first(
+    words: list[Tagged], notes: list[Diagnostic], text: str, lexicon: Lexicon
+) -> tuple[ast.Item, list[Diagnostic]] | None:
+    """'a touch of sheen, off white', 'some sheen, otherwise matt': a feature clause said first and
+    the material (or its colour, a material implied) after the comma, read as that material with the
+    clause; the notes of the reread words and one saying so. None for any other line."""
+    from .hedges import with_after_comma
+
+    comma = next((i for i, w in enumerate(words) if only_tag(w, "COMMA")), None)
+    if comma is None or comma == 0 or comma + 1 == len(words):
+        return None
+    first, rest = words[:comma], words[comma + 1 :]
+    if not any(c.tag == "FEATURE" for w in first for c in w.candidates):
+        return None
+    if any(c.tag in ("NOUN", "COMMA", "WITH") for w in first for c in w.candidates):
+        return None
+    reordered = [*rest, words[comma], *first]
+    said = [with_after_comma(reordered), _implied_before_comma(reordered, lexicon, text)]
+    for reading in said:
+        if reading is None:
+            continue
+        clause = _comma_clause_after_implied(reading[0], reading[1], lexicon) if reading is said[1] else None
+        tokens, note = (clause[1], clause[2]) if clause is not None else reading
+        node = _parsed(tokens, text, lexicon)
+        if isinstance(node, ast.Material):
+            moved = f"read '{written_text(words)}' as '{written_text(rest)}, {written_text(first)}' (the clause after its material)"
+            return node, [*notes, note, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, moved)]
+    return None
 
 
 def _comma_clause_after_implied(

@@ -39,6 +39,7 @@ def without_politeness(
     compared: list[Tagged] = []  # the other side of a comparison ('than black')
     put: list[Tagged] = []
     rewritten: list[Tagged] | None = None
+    where_said: list[Span] = []  # the trailing phrases read past: every error inside them goes
     for at_start, phrases in ((True, table["leading"]), (False, table["trailing"])):
         while len(kept) > 1:
             if at_start and rewritten is None and tag is not None:  # 'ok, more of a teal': after the politeness
@@ -60,6 +61,8 @@ def without_politeness(
             if not taken:
                 break
             dropped.append(kept[:taken] if at_start else kept[-taken:])
+            if not at_start:  # 'oak, nothing else': the words' own misplacement (E002) goes with them
+                where_said.append(dropped[-1][0].span.to(dropped[-1][-1].span))
             kept = kept[taken:] if at_start else kept[:-taken]
     if not compared:  # 'eggshell rather than flat', 'oak instead of walnut': the alternative turned down
         kept, compared = _without_turned_down(kept, table["turned_down"])
@@ -79,7 +82,7 @@ def without_politeness(
     if not dropped:
         return diags, kept
     spans = [w.span for run in dropped for w in run] + read_as
-    out = [d for d in diags if not _inside(d, spans) and not _inside(d, where, any_code=True)]  # their words' errors
+    out = [d for d in diags if not _inside(d, spans) and not _inside(d, [*where, *where_said], any_code=True)]
     changing = frozenset((*table["changes"], *table["changes_at_end"]))  # 'make it', 'instead': not courtesy
     for run in dropped:
         text = " ".join(w.text for w in run if w.text[:1].isalnum())

@@ -217,3 +217,51 @@ def test_not_a_colour_under_a_material_with_none_of_it_warns():
 def test_sorta_like_is_a_likeness():
     assert problems("sorta like slate but lighter") == []
     assert same_look(material("sorta like slate but lighter"), material("slate, lighter"))
+
+
+@pytest.mark.parametrize(("first", "line"), [("black lacquer", "more charcoal"), ("oak", "a bit more charcoal")])
+def test_more_of_a_noun_that_is_a_colour_is_that_colour(first, line):
+    """'more charcoal' under black lacquer is a step toward the colour charcoal, not a new charcoal
+    material with a comparative of nothing (W104)."""
+    from tests.language.meaning import lch
+
+    session = refined(first, line)
+    assert not [d for d in session.result.diagnostics if d.code == "W104" or d.is_error]
+    assert session.material["model"] == refined(first).material["model"]
+    before, after = (lch(s.material["params"]["base_color"]) for s in (refined(first), session))
+    charcoal = lch(material("charcoal paint")["params"]["base_color"])
+    assert abs(after[0] - charcoal[0]) < abs(before[0] - charcoal[0])  # its lightness toward charcoal's
+    assert after[1] <= max(before[1], charcoal[1]) + 1e-6  # toward a near-grey: no colour of its own added
+
+
+def test_a_comparative_list_ending_in_a_colour_noun_moves_in_turn():
+    assert same_look(
+        refined("oak", "lighter, more charcoal").material, refined("oak", "lighter", "more charcoal").material
+    )
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [
+        ("off white, nothing fancy", "off white"),
+        ("oak, nothing else", "oak"),
+        ("bare pine, no stain, nothing else", "bare pine, no stain"),
+    ],
+)
+def test_nothing_fancy_at_the_end_is_read_past(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [
+        ("a touch of sheen, off white", "off white, a touch of sheen"),
+        ("fine scratches, brushed steel", "brushed steel with fine scratches"),
+        ("some sheen, oak", "oak with some sheen"),
+    ],
+)
+def test_a_clause_said_first_is_the_clause_of_the_material_after_it(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+    assert any("(the clause after its material)" in n for n in notes(said))
