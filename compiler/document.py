@@ -295,11 +295,13 @@ def _parsed_line(
         return removal
     mark = len(diags)
     if tag_diags:  # only unknown words and characters may lack candidates
-        from .teach import fit_unknown_words  # the teaching modules load only for a line with a problem
+        from .teach import TYPO_CODE, fit_unknown_words  # the teaching modules load only for a line with a problem
 
         fitted, words = fit_unknown_words(tag_diags, words, tagger.lexicon)
         diags.extend(fitted)
         words = [t for t in words if t.candidates]
+        if any(d.code == TYPO_CODE for d in fitted):  # a typo read as its word joins as that word would
+            words = tagger.joiner.joined(words, diags)
     if not words:  # every word read past ('not too yellow', 'not at all rusty'): a line that changes nothing
         spans = [d.span for d in diags[mark:] if d.span is not None and d.span.line == number]
         if not spans or any(d.is_error for d in diags[mark:]):
@@ -365,6 +367,7 @@ def _failed_line(
     when it only describes one ('matte black'), or as a change of the material above when it
     starts with a change phrase ('make it blue'): cnlmc.implied."""
     from .hedges import (
+        but_after_noun,
         comparison_shared,
         finish_dropped,
         inside_a_note,
@@ -398,8 +401,10 @@ def _failed_line(
         or finish_dropped(hedged, lexicon)
         or comparison_shared(hedged)  # 'more worn and weathered'
     )
-    comma_clause = None if _said_with_errors(words, diags) else with_after_comma(hedged)  # 'oak, no grain' is a removal
-    for attempt in _rereadings(hedged, notes, (comma_clause, clause)):
+    said_with_errors = _said_with_errors(words, diags)  # 'oak, no grain' is a removal; 'floor but not orange' too
+    comma_clause = None if said_with_errors else with_after_comma(hedged)
+    but_clause = None if said_with_errors else but_after_noun(hedged)  # 'grey paint but not too shiny'
+    for attempt in _rereadings(hedged, notes, (comma_clause, clause, but_clause)):
         node = _parsed(attempt[0], text, lexicon)
         if node is not None:
             diags[:] = [d for d in diags if not read_past(d, attempt[1])]  # 'loads' of 'loads of'
@@ -633,8 +638,8 @@ def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Ite
     (cnlmc.line_parts; the other parts blanked, so columns stay the line's): one refinement of its
     parts ('deeper, more of a burgundy'), else a material moved by the comparative parts after it
     ('walnut, a bit darker')."""
-    if not any(w.text in PART_MARKS for w in words) or words[0].implied_by is not None:
-        return None
+    if not any(mark in text for mark in PART_MARKS) or words[0].implied_by is not None:
+        return None  # (the text's marks: a word read with its mark, 'overall,', is one tagged word)
     at = words[0].span
     number, offset = at.line, at.start - (at.col - 1)
     read = _part_reader(text, number, offset, lexicon)

@@ -253,8 +253,8 @@ def with_implied(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | N
         return None  # a coat alone has its own reading ('varnish' = wood with varnish: cnlmc.implied)
     if any(c.tag in NOT_A_CLAUSE for w in main for c in w.candidates):
         return None
-    if any(all(c.tag == "NOUN" for c in w.candidates) for w in main):
-        return None  # a material is named: its error is a mistake, not a clause
+    if any(all(c.tag == "NOUN" for c in w.candidates) or any(c.tag == "OBJECT" for c in w.candidates) for w in main):
+        return None  # a material is named (or a thing that has one): its error is a mistake, not a clause
     clause = next(w for w in main if any(c.tag == "FEATURE" for c in w.candidates))
     if any(any(c.tag == "COMMA" for c in w.candidates) for w in words[: words.index(clause)]):
         return None  # 'white, a touch of sheen': the white thing (a material implied) with its clause
@@ -472,6 +472,31 @@ def _degree_word(key: str, run: Sequence[Tagged], lexicon: Lexicon) -> Tagged | 
     if entry is None:
         return None
     return _implied(key, Candidate("ADV", key, "adverbs"), run[-1], 1, whole=run[0].span.to(run[-1].span))
+
+
+def but_after_noun(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | None:
+    """'grey paint but not too shiny', 'glass but not frosted': 'but' right after the material and
+    before its describing words sets them off as a comma would ('grey paint, but not too shiny');
+    the words with that comma and the note, None for any other line."""
+    for k in range(1, len(words) - 1):
+        word, before = words[k], words[k - 1]
+        after = next((w for w in words[k + 1 :] if not all(c.tag == "ADV" for c in w.candidates)), words[k + 1])
+        if word.text.lower() not in BUT_WORDS or not any(c.tag == "AND" for c in word.candidates):
+            continue
+        if not any(c.tag == "NOUN" for c in before.candidates) or before.unknown or not _describes(after):
+            return None
+        at = word.span.start - 1
+        comma = Tagged(",", Span(at, at + 1, word.span.line, word.span.col - 1), _COMMA_READING, implied_by=word.span)
+        said = " ".join(w.text for w in words)
+        note = f"read '{said}' as '{' '.join(w.text for w in words[:k])}, {' '.join(w.text for w in words[k:])}'"
+        return [*words[:k], comma, *words[k:]], Diagnostic(
+            before.span.to(words[-1].span), Severity.NOTE, NOTE_CODE, note
+        )
+    return None
+
+
+BUT_WORDS = ("but", "yet")  # keywords.toml AND words that set describing words off after the material
+_COMMA_READING = (Candidate("COMMA", ",", "keyword"),)
 
 
 def comparison_shared(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | None:

@@ -80,6 +80,11 @@ class Joiner:
             mark_after_thing = False
             if word.unknown and self._names_use(word, tagged[k + 1 :], diags):  # "guitar varnish", "boat paint"
                 continue
+            if before is not None and self._contents_of(before, word):  # 'white ceramic coffee mug'
+                note = f"read '{before.text}' as what the {word.text} holds, not what it is made of"
+                diags.append(Diagnostic(before.span, Severity.NOTE, NOTE_CODE, note))
+                out.pop()
+                before = out[-1] if out else None
             if word.unknown or (before is not None and before.unknown):  # its tags are guesses: E001 says so
                 if before is not None and self._is_artifact_after(before, word, tagged[k + 1 :]):
                     out[-1] = self._artifact(before, word, diags)
@@ -257,9 +262,14 @@ class Joiner:
     def _is_artifact_after(self, before: Tagged, word: Tagged, rest: list[Tagged]) -> bool:
         """An unknown word after a material noun, last on the line, that WordNet 3.0 lists as an
         artifact ("pewter tankard"): the thing made of the material."""
-        if before.unknown or rest or not of_tag(before, "NOUN") or not word.text.isalpha():
+        if before.unknown or not self._artifact_run(rest) or not of_tag(before, "NOUN") or not word.text.isalpha():
             return False
         return self._artifact_name(word.text.lower()) is not None
+
+    def _artifact_run(self, rest: list[Tagged]) -> bool:
+        """Whether the words after a thing's name are the rest of it ('guitar neck', 'phone case':
+        unknown words WordNet lists as artifacts), or there are none."""
+        return all(t.unknown and t.text.isalpha() and self._artifact_name(t.text.lower()) for t in rest)
 
     def _is_described_artifact(self, out: list[Tagged], word: Tagged, rest: list[Tagged]) -> bool:
         """An unknown word WordNet 3.0 lists as an artifact after describing words and no material
@@ -269,7 +279,7 @@ class Joiner:
             return False
         if not all(any(c.tag in DESCRIBING for c in t.candidates) for t in said):
             return False
-        if rest and not of_tag(rest[0], "WITH"):
+        if rest and not of_tag(rest[0], "WITH") and not self._artifact_run(rest):
             return False
         return self._artifact_name(word.text.lower()) is not None
 
@@ -286,6 +296,10 @@ class Joiner:
         )
         diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))
         return Tagged(word.text, word.span, (Candidate("NOUN", noun, "nouns"),))
+
+    def names_artifact(self, word: str) -> bool:
+        """Whether WordNet 3.0 lists `word` (or its singular) as an artifact: a real thing's name."""
+        return self._artifact_name(word.lower()) is not None
 
     def _artifact_name(self, word: str) -> str | None:
         """The WordNet artifact `word` is, also in a plural (-s, -es, -ies)."""
@@ -753,6 +767,27 @@ class Joiner:
         entries = [self.lexicon.entry(c.category, c.key) for c in of_tag(word, "OBJECT")]
         return not any(e is not None and e.get("product") for e in entries)
 
+    def _contents_of(self, before: Tagged, word: Tagged) -> bool:
+        """Whether a noun before a thing is what the thing holds ('coffee mug', 'wine bottle', 'milk
+        jug'): its class is one of teaching.toml [things] `contents_classes` (a liquid) and the
+        thing's usual material is neither that nor a dyed one ('cream jumper' is its colour; 'a
+        glass of merlot' is the wine: other readings)."""
+        from .suggest import teaching
+
+        if before.unknown or word.unknown or not of_tag(word, "OBJECT") or not of_tag(before, "NOUN") or others(word):
+            return False
+        table = teaching()["things"]
+        classes = table["contents_classes"]
+        held = [self.lexicon.entry("nouns", c.key) for c in of_tag(before, "NOUN")]
+        if not all(e is not None and e.get("class") in classes for e in held):
+            return False
+        usual = self.lexicon.entry(
+            "nouns", str(self.lexicon.require("objects", of_tag(word, "OBJECT")[0].key).data["material"])
+        )
+        if usual is None or usual.get("class") in classes:
+            return False
+        return usual.get("class") not in table["dyed_classes"]  # 'cream jumper': its colour
+
     def _colour_of_the_thing(self, thing: Tagged, word: Tagged) -> bool:
         """Whether a noun that is also a colour, said with an object, is the thing's colour: its
         class is one no thing is made of (teaching.toml [things] `colour_classes`) and the thing is
@@ -1099,8 +1134,8 @@ def may_join(tagged: list[Tagged]) -> bool:
         noun_seen = noun_seen or noun
     if final is None:
         return False
-    if final.unknown:
-        return noun_before_last or not noun_seen  # "pewter tankard"; "a red bike" (a described thing)
+    if final.unknown:  # "pewter tankard"; "a red bike" (a described thing); "red phone case" (a thing of two words)
+        return noun_before_last or not noun_seen or (len(tagged) > 1 and tagged[-2].unknown)
     final_tags = [c.tag for c in final.candidates]
     if "COAT" in final_tags and not with_seen:
         return True  # "satin varnish": a coat named as the whole material

@@ -147,7 +147,7 @@ def _parts_read(
             continue
         said: list[Diagnostic] = []
         node = read(start + 1, end, said)
-        if node is None or any(d.is_error for d in said):
+        if node is None or any(d.is_error for d in said) or isinstance(node, ast.Material):  # a remark is no material
             if not past_if_unread(written):
                 return None
             notes.append(_read_past(written, start + 1, line, offset))

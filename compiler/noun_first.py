@@ -65,7 +65,10 @@ def _split(said: Sequence[Tagged]) -> bool:
 
 
 def _a_colour_name(said: Sequence[Tagged]) -> bool:
-    return all(any(c.tag in _COLOUR_WORDS for c in w.candidates) for w in said)
+    """Whether the words may all name one colour ('terracotta red', 'pale slate'); a colour's name
+    ends in a colour, never in a shade alone ('walnut dark' is walnut, dark)."""
+    ends = any(c.tag == "COLOR" for c in said[-1].candidates)
+    return ends and all(any(c.tag in _COLOUR_WORDS for c in w.candidates) for w in said)
 
 
 def noun_first_note(words: Sequence[Tagged], k: int, comparatives: bool = False) -> Diagnostic:

@@ -61,8 +61,8 @@ def without_politeness(
             if not taken:
                 break
             dropped.append(kept[:taken] if at_start else kept[-taken:])
-            if not at_start:  # 'oak, nothing else': the words' own misplacement (E002) goes with them
-                where_said.append(dropped[-1][0].span.to(dropped[-1][-1].span))
+            if not at_start or _set_off(dropped[-1], kept, taken, marks):  # 'oak, nothing else', 'no, keep the colour':
+                where_said.append(dropped[-1][0].span.to(dropped[-1][-1].span))  # their own E002 goes too
             kept = kept[taken:] if at_start else kept[:-taken]
     if not compared:  # 'eggshell rather than flat', 'oak instead of walnut': the alternative turned down
         kept, compared = _without_turned_down(kept, table["turned_down"])
@@ -147,9 +147,22 @@ def _place_at_end(kept: list[Tagged], table: Mapping[str, Any]) -> int:
     lowered = [w.text.lower() for w in kept]
     for size in (2, 1):
         at = len(lowered) - size - 1  # the article is needed: 'paint in flat' is not a place
-        if at >= 2 and is_place(lowered[at - 1 :], table):
+        if at >= 2 and is_place(lowered[at - 1 :], table) and not _substrate(kept[: at - 1], lowered[at - 1]):
             return len(lowered) - at + 1
     return 0
+
+
+def _set_off(run: Sequence[Tagged], kept: Sequence[Tagged], taken: int, marks: frozenset[str]) -> bool:
+    """Whether the leading phrase `run` (the first `taken` words of `kept`) is set off by a mark
+    after it ('no, keep the colour'): an interjection, not a word of the line."""
+    return run[-1].text in marks or (taken < len(kept) and kept[taken].text in marks)
+
+
+def _substrate(before: Sequence[Tagged], preposition: str) -> bool:
+    """Whether the thing after 'on' is what the words before lie on ('celadon glaze on a bowl',
+    'varnish on a table': a finish or feature with no material of its own, read by cnlmc.on_clause),
+    not where a material is used."""
+    return preposition == "on" and not any(c.tag == "NOUN" for w in before for c in w.candidates)
 
 
 def is_place(said: Sequence[str], table: Mapping[str, Any]) -> bool:

@@ -24,9 +24,10 @@ from .writer import image_library
 class ProgressBar:
     """A one-line bar on stderr, drawn only when stderr is a terminal and there is more than one map."""
 
-    def __init__(self, stream: TextIO = sys.stderr, width: int = 30):
-        self.stream, self.width = stream, width
-        self.enabled = stream.isatty()
+    def __init__(self, stream: TextIO | None = None, width: int = 30):
+        self.stream = stream if stream is not None else sys.stderr  # the stderr of this call, not of the import
+        self.width = width
+        self.enabled = self.stream.isatty()
 
     def __call__(self, done: int, total: int, name: str) -> None:
         if not self.enabled or total <= 1:

@@ -35,8 +35,8 @@ def shown_host(bound: str) -> str:
     return lan_address() if bound in ("0.0.0.0", "::", "") else bound
 
 
-def print_qr(url: str, out: TextIO = sys.stdout) -> None:
-    """The URL as a QR code in the terminal (a phone's camera opens it)."""
+def print_qr(url: str, out: TextIO | None = None) -> None:
+    """The URL as a QR code in the terminal (a phone's camera opens it); on this call's stdout by default."""
     import segno  # only when the studio is served on the network
 
-    segno.make(url, error="m").terminal(out=out, compact=True)
+    segno.make(url, error="m").terminal(out=out if out is not None else sys.stdout, compact=True)

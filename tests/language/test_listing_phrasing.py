@@ -265,3 +265,90 @@ def test_a_clause_said_first_is_the_clause_of_the_material_after_it(said, same_a
     assert problems(said) == []
     assert same_look(material(said), material(same_as))
     assert any("(the clause after its material)" in n for n in notes(said))
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as", "held"),
+    [
+        (
+            "white ceramic coffee mug",
+            "white ceramic mug",
+            "read 'coffee' as what the mug holds, not what it is made of",
+        ),
+        (
+            "green glass wine bottle",
+            "green glass bottle",
+            "read 'wine' as what the bottle holds, not what it is made of",
+        ),
+        ("coffee mug", "mug", "read 'coffee' as what the mug holds, not what it is made of"),
+    ],
+)
+def test_a_liquid_before_a_container_is_what_it_holds(said, same_as, held):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+    assert held in notes(said)
+
+
+def test_a_glass_of_a_liquid_is_still_the_liquid():
+    assert material("a glass of merlot")["model"]["base"] == material("merlot")["model"]["base"]
+    assert same_look(material("a glass of merlot"), material("merlot"))
+
+
+@pytest.mark.parametrize(("said", "same_as"), [("walnut dark", "dark walnut"), ("oak light", "light oak")])
+def test_a_shade_after_the_noun_is_not_a_colour_name(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [
+        ("grey paint but not too shiny", "grey paint, not too shiny"),
+        ("glass but not frosted", "glass, not frosted"),
+        ("chrome but slightly satin", "chrome, but slightly satin"),
+        ("steel but brushed", "brushed steel"),
+    ],
+)
+def test_but_after_the_material_sets_its_describing_words_off(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+
+
+@pytest.mark.parametrize(
+    ("said", "thing"),
+    [
+        ("celadon glaze on a bowl", "bowl"),
+        ("varnish on a table", "table"),
+        ("pale green celadon glaze on a tea bowl", "bowl"),
+    ],
+)
+def test_a_finish_on_a_thing_is_the_things_material_with_that_finish(said, thing):
+    """'varnish on a table': the table's wood with varnish, not varnish paint with a place read past."""
+    assert problems(said) == []
+    assert material(said)["name"].startswith(thing)
+    assert not any(n.startswith("read past 'on ") for n in notes(said))
+
+
+def test_a_material_on_a_place_still_reads_the_place_past():
+    assert "read past 'on the floor': where the material is used, not how it looks" in notes("oak on the floor")
+
+
+def test_an_interjection_set_off_by_a_comma_is_read_past_with_its_own_error():
+    session = refined("white marble", "no, keep the colour, just less shiny")
+    assert not [d for d in session.result.diagnostics if d.is_error]
+    assert session.material["params"]["roughness"] > refined("white marble").material["params"]["roughness"]
+
+
+@pytest.mark.parametrize(
+    ("first", "line", "same_as"),
+    [
+        ("rusty steel", "darker overall, it's sitting in a damp alley", "darker"),
+        ("oak", "a bit less shiny please, it should read as a natural oil not a lacquer", "a bit less shiny"),
+        ("birch", "shinier, as if it had a clear lacquer on it", "shinier"),
+    ],
+)
+def test_a_reason_after_the_change_is_read_past(first, line, same_as):
+    session = refined(first, line)
+    assert not [d for d in session.result.diagnostics if d.is_error]
+    assert any(d.message.startswith("read past '") for d in session.result.diagnostics)
+    assert same_look(session.material, refined(first, same_as).material)

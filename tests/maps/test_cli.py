@@ -99,3 +99,15 @@ def test_bake_of_uniform_materials_leaves_no_folder_behind(tmp_path):
     done = cnlmc("bake", str(src), "-o", str(tmp_path / "maps"))
     assert done.returncode == 0 and "uniform, no maps to bake" in done.stderr
     assert sorted(p.name for p in tmp_path.iterdir()) == ["plain.cnl"]  # no folder, no lock file
+
+
+def test_the_progress_bar_writes_to_the_stderr_of_its_call(monkeypatch):
+    """Its stream is this call's stderr, not the one at import (a closed one in an embedding run)."""
+    import io
+    import sys
+
+    from cnlmc.backends.maps.commands import ProgressBar
+
+    replaced = io.StringIO()
+    monkeypatch.setattr(sys, "stderr", replaced)
+    assert ProgressBar().stream is replaced
