@@ -352,3 +352,29 @@ def test_a_reason_after_the_change_is_read_past(first, line, same_as):
     assert not [d for d in session.result.diagnostics if d.is_error]
     assert any(d.message.startswith("read past '") for d in session.result.diagnostics)
     assert same_look(session.material, refined(first, same_as).material)
+
+
+@pytest.mark.parametrize(
+    ("first", "line", "same_as"),
+    [
+        ("light oak", "can u make it darker", "darker"),
+        ("concrete", "abit lighter", "a bit lighter"),
+        ("navy velvet", "slightly more towards purple", "slightly more purple"),
+        ("gold", "more scratched up", "more scratched"),
+    ],
+)
+def test_texting_forms_of_a_change(first, line, same_as):
+    session = refined(first, line)
+    assert not [d for d in session.result.diagnostics if d.is_error]
+    assert same_look(session.material, refined(first, same_as).material)
+
+
+def test_nah_go_back_is_going_back():
+    session = refined("blue car paint", "darker", "nah go back a bit")
+    darker = refined("blue car paint", "darker").material["params"]["base_color"]
+    assert sum(session.material["params"]["base_color"]) > sum(darker)
+
+
+def test_hint_of_without_its_article_is_a_degree():
+    assert problems("white paint, hint of sheen") == []
+    assert same_look(material("white paint, hint of sheen"), material("white paint with a hint of sheen"))
