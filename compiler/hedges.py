@@ -270,6 +270,8 @@ def with_after_comma(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic]
     commas = [i for i, w in enumerate(words) if any(c.tag == "COMMA" for c in w.candidates)]
     if not commas or any(c.tag == "WITH" for w in words for c in w.candidates):
         return None
+    words = _feature_part_last(words, commas)  # 'oak, visible grain, matt' = 'oak, matt, visible grain'
+    commas = [i for i, w in enumerate(words) if any(c.tag == "COMMA" for c in w.candidates)]
     at = commas[-1]
     rest = [w for w in words[at + 1 :] if w.text[:1].isalpha()]
     if not rest or not any(c.tag == "FEATURE" for w in rest for c in w.candidates):
@@ -281,6 +283,27 @@ def with_after_comma(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic]
     note = Diagnostic(written_span(rest), Severity.NOTE, NOTE_CODE, f"read ', {said}' as 'with {said}'")
     with_ = Tagged("with", comma.span, (Candidate("WITH", "with", "keywords"),), implied_by=comma.span)
     return [*words[:at], with_, *words[at + 1 :]], note
+
+
+def _feature_part_last(words: Sequence[Tagged], commas: list[int]) -> list[Tagged]:
+    """The words with a middle part that names a feature and no material ('visible grain' of 'oak,
+    visible grain, matt') moved after the last part, where a clause stands; as they were otherwise."""
+    cuts = [*commas, len(words)]
+    parts = [list(words[a:b]) for a, b in zip(cuts, cuts[1:])]  # each with its leading comma
+    middle = [p for p in parts[:-1] if _names_feature_only(p[1:])]
+    if len(middle) != 1 or _names_feature_only(parts[-1][1:]):
+        return list(words)
+    moved = [w for p in parts if p is not middle[0] for w in p]
+    return [*words[: commas[0]], *moved, *middle[0]]
+
+
+def _names_feature_only(part: Sequence[Tagged]) -> bool:
+    said = [w for w in part if w.text[:1].isalpha()]
+    return (
+        bool(said)
+        and any(c.tag == "FEATURE" for w in said for c in w.candidates)
+        and not any(all(c.tag == "NOUN" for c in w.candidates) for w in said)
+    )
 
 
 def finish_dropped(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], Diagnostic] | None:

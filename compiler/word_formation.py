@@ -214,6 +214,12 @@ class WordFormation:
         why = self._passed_reason(word)
         return None if why is None else Reading((), 1, f"read '{word}' as {why}")
 
+    def read_use_last(self, word: str) -> Reading | None:
+        """A word saying where or what for, last on the line ('mustard yellow accent', 'oak
+        kitchen'): read past with its note; None for any other word (a courtesy phrase ending the
+        line, 'would be nice', is politeness's to read)."""
+        return self.read_set_off(word) if word in self.rules.qualifiers else None
+
     def misplaced(self, word: str) -> tuple[str, str] | None:
         """(message, hint) for a word of the rules that found nothing to apply to ('not steel')."""
         rules = self.rules

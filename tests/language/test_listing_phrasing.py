@@ -378,3 +378,22 @@ def test_nah_go_back_is_going_back():
 def test_hint_of_without_its_article_is_a_degree():
     assert problems("white paint, hint of sheen") == []
     assert same_look(material("white paint, hint of sheen"), material("white paint with a hint of sheen"))
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"),
+    [
+        ("oak, visible grain, matt", "matt oak with visible grain"),
+        ("marble, grey veins, polished", "polished marble with grey veins"),
+    ],
+)
+def test_a_feature_part_in_the_middle_of_a_listing_is_its_clause(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+
+
+@pytest.mark.parametrize(("said", "same_as"), [("mustard yellow accent", "mustard yellow"), ("oak kitchen", "oak")])
+def test_a_word_of_use_last_on_the_line_is_read_past(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+    assert any("saying where or what for" in n for n in notes(said))
