@@ -397,3 +397,12 @@ def test_a_word_of_use_last_on_the_line_is_read_past(said, same_as):
     assert problems(said) == []
     assert same_look(material(said), material(same_as))
     assert any("saying where or what for" in n for n in notes(said))
+
+
+@pytest.mark.parametrize(
+    ("said", "same_as"), [("old school chalkboard", "chalkboard"), ("green oak frame", "oak frame")]
+)
+def test_names_that_are_not_what_their_words_say(said, same_as):
+    """'old school' is a style, not an age; green oak is unseasoned oak, not a green one."""
+    assert "E001" not in problems(said) and "E002" not in problems(said)
+    assert same_look(material(said), material(same_as))
