@@ -295,13 +295,11 @@ def _parsed_line(
         return removal
     mark = len(diags)
     if tag_diags:  # only unknown words and characters may lack candidates
-        from .teach import TYPO_CODE, fit_unknown_words  # the teaching modules load only for a line with a problem
+        from .teach import fit_unknown_words  # the teaching modules load only for a line with a problem
 
         fitted, words = fit_unknown_words(tag_diags, words, tagger.lexicon)
         diags.extend(fitted)
         words = [t for t in words if t.candidates]
-        if any(d.code == TYPO_CODE for d in fitted):  # a typo read as its word joins as that word would
-            words = tagger.joiner.joined(words, diags)
     if not words:  # every word read past ('not too yellow', 'not at all rusty'): a line that changes nothing
         spans = [d.span for d in diags[mark:] if d.span is not None and d.span.line == number]
         if not spans or any(d.is_error for d in diags[mark:]):
@@ -638,8 +636,8 @@ def _by_parts(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Ite
     (cnlmc.line_parts; the other parts blanked, so columns stay the line's): one refinement of its
     parts ('deeper, more of a burgundy'), else a material moved by the comparative parts after it
     ('walnut, a bit darker')."""
-    if not any(mark in text for mark in PART_MARKS) or words[0].implied_by is not None:
-        return None  # (the text's marks: a word read with its mark, 'overall,', is one tagged word)
+    if not any(w.text in PART_MARKS for w in words) or words[0].implied_by is not None:
+        return None
     at = words[0].span
     number, offset = at.line, at.start - (at.col - 1)
     read = _part_reader(text, number, offset, lexicon)
@@ -661,19 +659,16 @@ def _but_then_comparatives(
 ) -> tuple[ast.Item, list[Diagnostic]] | None:
     """'navy but a bit brighter', 'concrete but lighter grey': a material (or colours), 'but', then
     comparatives: the material moved by them, as 'navy, a bit brighter' is, with a note."""
-    from .suggest import teaching
-
-    breaks = teaching()["politeness"]["remark_breaks"]  # 'but'
-    joiners = [w for w in words if w.text.lower() in breaks and w.implied_by is None]
     start = _but_at(words)
     if start is None or words[0].implied_by is not None:
         return None
-    found = _comparatives_after_comma(words[0], text, start, len(joiners[0].text), lexicon)
+    joiner = next(w for w in words if w.span.start - words[0].span.line_start == start)  # the 'but'
+    found = _comparatives_after_comma(words[0], text, start, len(joiner.text), lexicon)
     if found is None:
         return None
-    said = f"{text[:start].strip()}, {text[start + len(joiners[0].text) :].strip()}"
-    note = f"read '{text.strip()}' as '{said}' (the comparatives after '{joiners[0].text}')"
-    return found[0], [*found[1], Diagnostic(joiners[0].span, Severity.NOTE, NOTE_CODE, note)]
+    said = f"{text[:start].strip()}, {text[start + len(joiner.text) :].strip()}"
+    note = f"read '{text.strip()}' as '{said}' (the comparatives after '{joiner.text}')"
+    return found[0], [*found[1], Diagnostic(joiner.span, Severity.NOTE, NOTE_CODE, note)]
 
 
 def _noun_first(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, list[Diagnostic]] | None:

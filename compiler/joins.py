@@ -768,25 +768,15 @@ class Joiner:
         return not any(e is not None and e.get("product") for e in entries)
 
     def _contents_of(self, before: Tagged, word: Tagged) -> bool:
-        """Whether a noun before a thing is what the thing holds ('coffee mug', 'wine bottle', 'milk
-        jug'): its class is one of teaching.toml [things] `contents_classes` (a liquid) and the
-        thing's usual material is neither that nor a dyed one ('cream jumper' is its colour; 'a
-        glass of merlot' is the wine: other readings)."""
+        """Whether a noun before a thing is what the thing holds: a drink before a vessel ('coffee
+        mug', 'wine bottle', 'milk jug': teaching.toml [things] `drinks`, `vessels`); 'cream mug' is
+        its colour and 'a glass of merlot' the wine (other readings)."""
         from .suggest import teaching
 
         if before.unknown or word.unknown or not of_tag(word, "OBJECT") or not of_tag(before, "NOUN") or others(word):
             return False
         table = teaching()["things"]
-        classes = table["contents_classes"]
-        held = [self.lexicon.entry("nouns", c.key) for c in of_tag(before, "NOUN")]
-        if not all(e is not None and e.get("class") in classes for e in held):
-            return False
-        usual = self.lexicon.entry(
-            "nouns", str(self.lexicon.require("objects", of_tag(word, "OBJECT")[0].key).data["material"])
-        )
-        if usual is None or usual.get("class") in classes:
-            return False
-        return usual.get("class") not in table["dyed_classes"]  # 'cream jumper': its colour
+        return before.text.lower() in table["drinks"] and word.text.lower() in table["vessels"]
 
     def _colour_of_the_thing(self, thing: Tagged, word: Tagged) -> bool:
         """Whether a noun that is also a colour, said with an object, is the thing's colour: its

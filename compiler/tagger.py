@@ -304,8 +304,8 @@ class Tagger:
             reading = self.formation().read_at([t.lower() for t, _c in raw[i : i + 5]])  # "not X in the least"
             if reading is None and _set_off(raw, i):  # "European walnut, book-matched"
                 reading = self.formation().read_set_off(text.lower())
-            elif reading is None and 0 < i == len(raw) - 1:  # "mustard yellow accent"
-                reading = self.formation().read_use_last(text.lower())
+            elif reading is None and 0 < i == len(raw) - 1 and raw[i - 1][0][:1].isalpha():  # "mustard yellow accent"
+                reading = self.formation().read_use_last(text.lower(), raw[i - 1][0].lower())
             if reading is not None:
                 return self._formed(reading, raw, i, line_no, offset, tagged, diags)
         tagged.append(self._unknown(raw[i], line_no, offset, diags))

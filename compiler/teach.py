@@ -14,7 +14,7 @@ from dataclasses import replace
 from functools import lru_cache
 from types import MappingProxyType
 
-from .diagnostics import Diagnostic, Severity, did_you_mean
+from .diagnostics import Diagnostic, did_you_mean
 from .hedges import colour_between
 from .lexicon import CATEGORY_TAGS, Lexicon
 from .measures import without_measures
@@ -50,47 +50,9 @@ def fit_unknown_words(
             continue
         categories = teaching()["slots"][slot_of(words, index)]
         suggestions = _form_typos(words, index, lexicon) + lexicon.suggest(words[index].text, categories)
-        typo = _plain_typo(words[index], suggestions, lexicon)
-        if typo is not None:  # 'mahogony', 'leathr': one word within reach, read as it, warned
-            message = f"read '{words[index].text}' as '{typo.text}' (a typo?)"
-            out.append(Diagnostic(diag.span, Severity.WARNING, TYPO_CODE, message, (f"write '{typo.text}'",)))
-            fitted[index] = typo
-            continue
         out.append(replace(diag, hints=did_you_mean(suggestions), suggestions=tuple(suggestions)))
         fitted[index] = _guessed(words[index], categories)
     return out, fitted
-
-
-TYPO_CODE = "W130"  # an unknown word read as the one lexicon word a typo of it is (docs/language.md)
-TYPO_LEAST_LETTERS = 5  # shorter words are too easily another word ('tin'/'tan'): did you mean only
-
-
-def _plain_typo(word: Tagged, suggestions: Sequence[str], lexicon: Lexicon) -> Tagged | None:
-    """The word as the single-word suggestion it is a typo of ('mahogony': mahogany, 'leathr':
-    leather), the nearest when no other is as near ('aluminun': aluminum, not aluminium), tagged in
-    its place; None when the word is short, not letters, or no suggestion or two as near are within
-    its reach (a guess, not a typo)."""
-    from rapidfuzz.distance import OSA
-
-    from .tagger import Tagger
-
-    low = word.text.lower()
-    if len(low) < TYPO_LEAST_LETTERS or not low.isalpha() or Tagger.of(lexicon).joiner.names_artifact(low):
-        return None  # ('phone' is a thing WordNet knows, not a typo of 'hone')
-    reach = allowed_edits(low)
-    for offered in (suggestions, lexicon.suggest(low)):  # the slot's words, then any ('black leathr boots')
-        near = sorted({(OSA.distance(low, s.lower()), s) for s in offered if " " not in s})
-        near = [(d, s) for d, s in near if d <= reach]
-        if near:
-            break
-    if not near:
-        return None
-    nearest = [tagged_word(s, lexicon) for d, s in near if d == near[0][0]]
-    if any(t is None for t in nearest) or len({t.candidates for t in nearest if t is not None}) != 1:
-        return None  # two words as near: a guess, not a typo ('alumnium': aluminium and aluminum are one)
-    keys = {c.key for t in nearest if t is not None for c in t.candidates}
-    found = next((t for t in nearest if t is not None and t.text.lower() in keys), nearest[0])  # 'brushed', not 'brush'
-    return None if found is None else Tagged(found.text, word.span, found.candidates)
 
 
 def tagged_word(word: str, lexicon: Lexicon) -> Tagged | None:

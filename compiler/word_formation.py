@@ -137,6 +137,12 @@ class Rules:
         self.suffix_words = frozenset(f.lstrip("-") for f in suffix_forms)  # 'coloured', 'finished': not participles
 
 
+#: words after which a last word of use is a place phrase's (cnlmc.politeness reads it past whole)
+USE_LAST_NOT_AFTER = frozenset(
+    ("in", "for", "on", "at", "the", "a", "an", "my", "our", "your", "their", "of", "to", "by")
+)
+
+
 class WordFormation:
     """Reads unknown words by the rules of one lexicon; see the module doc."""
 
@@ -214,11 +220,14 @@ class WordFormation:
         why = self._passed_reason(word)
         return None if why is None else Reading((), 1, f"read '{word}' as {why}")
 
-    def read_use_last(self, word: str) -> Reading | None:
-        """A word saying where or what for, last on the line ('mustard yellow accent', 'oak
-        kitchen'): read past with its note; None for any other word (a courtesy phrase ending the
-        line, 'would be nice', is politeness's to read)."""
-        return self.read_set_off(word) if word in self.rules.qualifiers else None
+    def read_use_last(self, word: str, before: str) -> Reading | None:
+        """A word saying where or what for, last on the line right after a word of the material
+        ('mustard yellow accent', 'oak kitchen'): read past with its note; None for any other word,
+        or after a preposition or an article ('tiles in the hallway': a place politeness reads past,
+        'would be nice': a courtesy)."""
+        if word not in self.rules.qualifiers or before in USE_LAST_NOT_AFTER:
+            return None
+        return self.read_set_off(word)
 
     def misplaced(self, word: str) -> tuple[str, str] | None:
         """(message, hint) for a word of the rules that found nothing to apply to ('not steel')."""

@@ -106,14 +106,18 @@ def _warn_dangling(state: MaterialState, group: ast.Group) -> None:
     )
 
 
-def apply_colour(state: MaterialState, ctx: Context, c: ast.Colour, adverbs: Words, target: str, weight: float) -> None:
+def apply_colour(
+    state: MaterialState, ctx: Context, c: ast.Colour, adverbs: Words, target: str, weight: float, ageing: bool = True
+) -> None:
+    """A colour word on the base (or the coat); `ageing`: it may name the colour a bare metal turns by
+    itself ('green copper'), not when it qualifies a describing word ('green tinted copper')."""
     param, holder = _colour_slot(state, target)
     if param == "base_color":
         colour_seen_through(state, c.words)
     current = holder.get(param)
     rgb = resolve_colour(c, ctx, start=current, weight=weight)
     words = c.words
-    if target == "base" and words and _colour_of_ageing(state, ctx, rgb, (*adverbs, *words), weight):
+    if ageing and target == "base" and words and _colour_of_ageing(state, ctx, rgb, (*adverbs, *words), weight):
         return
     if target == "base" and words:
         rgb = keep_pattern_visible(state, ctx, rgb, words, noun_of(state).key)
@@ -202,7 +206,7 @@ def apply_adjective(
         return
     if not _applies(state, adjective, word, target):
         for c in group.colours:  # "pale honed maple": the colour still holds, on the base
-            apply_colour(state, ctx, c, group.adverbs, "base", weight)
+            apply_colour(state, ctx, c, group.adverbs, "base", weight, ageing=False)
         return
     if state.applied:
         _check_opposition(state, ctx, adjective, word)
@@ -661,7 +665,7 @@ def _apply_qualifier(
         apply_colour(state, ctx, c, adverbs, "coat", weight)
         pigment_base(state, ctx)
         return
-    apply_colour(state, ctx, c, adverbs, "base", weight)
+    apply_colour(state, ctx, c, adverbs, "base", weight, ageing=False)  # 'green tinted copper': a film
 
 
 def pigment_base(state: MaterialState, ctx: Context) -> None:

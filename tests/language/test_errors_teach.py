@@ -40,31 +40,15 @@ def test_the_phrases_here_are_not_in_the_everyday_set():
     assert not listed & {p.lower() for p in PHRASES}
 
 
-@pytest.mark.parametrize("text,word,expected", [("glas", "glas", "glass"), ("polished brss", "brss", "brass")])
+@pytest.mark.parametrize(
+    "text,word,expected",
+    [("pewtr", "pewtr", "pewter"), ("mahagony", "mahagony", "mahogany"), ("brushed alumnium", "alumnium", "aluminium")],
+)
 def test_a_typo_gets_its_word(compile_text, text, word, expected):
-    """A short word is too easily another word to be read as one: 'did you mean'."""
     (e,) = [d for d in errors(compile_text, text) if d.code == "E001"]
     assert e.message == f"unknown word '{word}'"
     assert e.suggestions[0] == expected
     assert e.hints[0].startswith(f"did you mean '{expected}'")
-
-
-@pytest.mark.parametrize(
-    "text,word,expected",
-    [("pewtr", "pewtr", "pewter"), ("mahagony", "mahagony", "mahogany"), ("brushed alumnium", "alumnium", "aluminum")],
-)
-def test_a_longer_typo_within_reach_of_one_word_is_read_as_it_with_a_warning(compile_text, text, word, expected):
-    result = compile_text(text)
-    assert not [d for d in result.diagnostics if d.is_error]
-    (w,) = [d for d in result.diagnostics if d.code == "W130"]
-    assert w.message == f"read '{word}' as '{expected}' (a typo?)"
-    assert result.materials
-
-
-@pytest.mark.parametrize("text", ["blorf oak", "gunmetal grey phone case"])
-def test_a_word_near_nothing_or_a_real_thing_is_no_typo(compile_text, text):
-    """'phone' is a thing WordNet knows, not a typo of 'hone'."""
-    assert "W130" not in [d.code for d in compile_text(text).diagnostics]
 
 
 def test_a_noun_slot_suggests_nouns_and_a_modifier_slot_modifiers(compile_text, stdlib):
@@ -243,8 +227,8 @@ def test_the_colour_word_still_colours_a_wood_that_is_not_a_species_of_it(compil
 
 
 def test_a_refinement_line_typo_gets_its_refinement(compile_text):
-    result = compile_text("copper\nroughr\n")
-    assert [(d.code, d.message) for d in result.diagnostics] == [("W130", "read 'roughr' as 'rougher' (a typo?)")]
+    (e,) = errors(compile_text, "copper\nroughr\n")
+    assert e.code == "E001" and e.suggestions[0] == "rougher"
 
 
 @pytest.mark.parametrize(
@@ -273,7 +257,7 @@ def test_a_describing_word_after_the_noun_moves_before_it(compile_text):
 
 
 def test_a_typo_in_the_first_word_of_a_two_word_noun_offers_the_noun(compile_text):
-    (e,) = errors(compile_text, "stanless steel")
+    (e,) = errors(compile_text, "stainles steel")
     assert e.suggestions[0] == "stainless steel"
 
 

@@ -287,3 +287,9 @@ def test_wax_and_oil_dress_cloth():
     assert warnings("waxed twill") == [] and material("waxed twill")["model"]["coat"] is True
     assert warnings("oiled denim") == []
     assert luminance(params("oiled denim")["base_color"]) < luminance(params("denim")["base_color"])
+
+
+@pytest.mark.parametrize("metal", ["gold", "aluminium", "copper"])
+def test_a_metal_that_does_not_rust_keeps_its_colour_under_rusty(metal):
+    """The oxide film between the rust patches is iron's: on other metals 'rusty' only roughens."""
+    assert params(f"rusty {metal}")["base_color"] == pytest.approx(params(metal)["base_color"])

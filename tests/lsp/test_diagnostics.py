@@ -68,7 +68,7 @@ async def test_incremental_change_is_applied(client):
         )
     )
     after = await wait_diagnostics(client, uri, 2)
-    assert [d.code for d in after] == ["W130"]  # read as 'plastic', with a warning on the typed word
+    assert [d.code for d in after] == ["E001"]
     assert after[0].range.start == start
 
 
