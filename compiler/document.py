@@ -369,6 +369,7 @@ def _failed_line(
         comparison_shared,
         finish_dropped,
         inside_a_note,
+        named_then_compared,
         postfix_finish,
         read_past,
         reread,
@@ -398,6 +399,7 @@ def _failed_line(
         or with_implied(hedged)
         or finish_dropped(hedged, lexicon)
         or comparison_shared(hedged)  # 'more worn and weathered'
+        or named_then_compared(hedged)  # 'grain more visible', 'stain darker'
     )
     said_with_errors = _said_with_errors(words, diags)  # 'oak, no grain' is a removal; 'floor but not orange' too
     comma_clause = None if said_with_errors else with_after_comma(hedged)

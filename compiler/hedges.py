@@ -522,6 +522,27 @@ BUT_WORDS = ("but", "yet")  # keywords.toml AND words that set describing words 
 _COMMA_READING = (Candidate("COMMA", ",", "keyword"),)
 
 
+def named_then_compared(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | None:
+    """'grain more visible', 'stain darker', 'veins stronger', 'the brushing less obvious': a feature
+    or property named, then its comparative (and perhaps a word of how visible, read past): the
+    comparative before it ('more grain', 'darker stain'), with a note; None for any other line."""
+    said = [w for w in words if w.text[:1].isalpha()]
+    if said and any(c.tag == "ARTICLE" for c in said[0].candidates):
+        said = said[1:]
+    if len(said) not in (2, 3):
+        return None
+    named, compared, rest = said[0], said[1], said[2:]
+    if named.unknown or not any(c.tag in ("PROP", "FEATURE") for c in named.candidates):
+        return None
+    if not any(c.tag == "REFINE" for c in compared.candidates):
+        return None
+    if rest and not all(c.tag == "ADV" for c in rest[0].candidates):
+        return None
+    read = f"{compared.text} {named.text}"
+    note = f"read '{' '.join(w.text for w in said)}' as '{read}'"
+    return [compared, named], Diagnostic(named.span.to(said[-1].span), Severity.NOTE, NOTE_CODE, note)
+
+
 def comparison_shared(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | None:
     """'more worn and weathered', 'less shiny and less yellow': a comparison word ('more', 'less')
     before describing words joined by 'and' compares each of them ('more worn, more weathered'); the

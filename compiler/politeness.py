@@ -149,6 +149,9 @@ def _place_at_end(kept: list[Tagged], table: Mapping[str, Any]) -> int:
         at = len(lowered) - size - 1  # the article is needed: 'paint in flat' is not a place
         if at >= 2 and is_place(lowered[at - 1 :], table) and not _substrate(kept[: at - 1], lowered[at - 1]):
             return len(lowered) - at + 1
+        at += 1  # no article ('teal tiles in bathroom'): only a place that is no word of the lexicon
+        if at >= 2 and all(not w.candidates or w.unknown for w in kept[at:]) and is_place(lowered[at - 1 :], table):
+            return len(lowered) - at + 1
     return 0
 
 

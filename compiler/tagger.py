@@ -290,6 +290,8 @@ class Tagger:
             return 1
         if text[0].isalpha():
             last = i + 1 == len(raw)
+            if tagged and self._particle_of_participle(text, tagged[-1], diags):  # 'scratched up'
+                return 1
             if (
                 tagged
                 and self.joiner.is_head(tagged[-1], text, last, tagged)  # "satin effect steel", "steel effect"
@@ -310,6 +312,19 @@ class Tagger:
                 return self._formed(reading, raw, i, line_no, offset, tagged, diags)
         tagged.append(self._unknown(raw[i], line_no, offset, diags))
         return 1
+
+    def _particle_of_participle(self, text: str, before: Tagged, diags: list[Diagnostic]) -> bool:
+        """'more scratched up', 'beaten up leather': a particle after a participle says nothing the
+        participle does not (teaching.toml [politeness] participle_particles): read past, a note."""
+        from .suggest import teaching
+
+        if text.lower() not in teaching()["politeness"]["participle_particles"] or before.unknown:
+            return False
+        if not before.text.lower().endswith(("ed", "en")) or not any(c.tag == "ADJ" for c in before.candidates):
+            return False
+        note = f"read '{before.text} {text}' as '{before.text}'"
+        diags.append(Diagnostic(before.span, Severity.NOTE, NOTE_CODE, note))
+        return True
 
     def _follows(self, word: str, seconds: Container[str]) -> bool:
         """Whether a word (or, for a word the lexicon lacks, the word it sounds like: 'steal') may

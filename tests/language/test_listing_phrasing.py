@@ -420,3 +420,37 @@ def test_a_word_of_use_last_on_the_line_is_read_past(said, same_as):
 def test_old_school_is_a_style_not_an_age(said, same_as):
     assert "E001" not in problems(said) and "E002" not in problems(said)
     assert same_look(material(said), material(same_as))
+
+
+@pytest.mark.parametrize(
+    ("first", "line", "same_as"),
+    [
+        ("pine", "stain darker", "darker stain"),
+        ("marble", "veins stronger", "stronger veins"),
+        ("brushed steel", "make the brushing less obvious", "less brushing"),
+        ("walnut", "make the grain more visible", "more grain"),
+    ],
+)
+def test_a_feature_named_before_its_comparative(first, line, same_as):
+    session = refined(first, line)
+    assert not [d for d in session.result.diagnostics if d.is_error]
+    assert session.material == refined(first, same_as).material or same_look(
+        session.material, refined(first, same_as).material
+    )
+
+
+@pytest.mark.parametrize(("said", "same_as"), [("teal tiles in bathroom", "teal tiles"), ("oak in kitchen", "oak")])
+def test_a_place_without_its_article_is_read_past(said, same_as):
+    assert problems(said) == []
+    assert same_look(material(said), material(same_as))
+
+
+def test_a_place_that_is_a_word_of_the_lexicon_needs_its_article():
+    assert "E002" in problems("paint in flat")
+
+
+def test_a_particle_after_a_participle_is_read_past():
+    session = refined("stainless steel", "more scratched up")
+    assert not [d for d in session.result.diagnostics if d.is_error]
+    assert same_look(session.material, refined("stainless steel", "more scratched").material)
+    assert "read 'scratched up' as 'scratched'" in [d.message for d in session.result.diagnostics]
