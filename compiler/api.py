@@ -185,7 +185,7 @@ def _complaint_as_change(words: str, table: Mapping[str, Any], lexicon: Lexicon)
 
     if goes_back(words):  # 'ooh too far, go back a little': going back, not a complaint (cnlmc.back)
         return words
-    words = _comma_before_complaint(words, table["inner_complaint_openers"])
+    words = _comma_before_complaint(words, table["inner_complaint_openers"], table["inner_complaint_not_after"])
     if "," not in words:
         return _complaint_part(words, table, lexicon)
     parts = words.split(",")
@@ -200,14 +200,14 @@ def _complaint_as_change(words: str, table: Mapping[str, Any], lexicon: Lexicon)
     return ", ".join(" ".join(part.split()) for part in changed if part.strip())
 
 
-def _comma_before_complaint(words: str, openers: Sequence[str]) -> str:
+def _comma_before_complaint(words: str, openers: Sequence[str], not_after: Sequence[str] = ()) -> str:
     """A change run on into its complaint without a comma ('lighter please its too dark'): the
     comma put before the complaint's opener (teaching.toml [politeness] inner_complaint_openers),
     so each part is read; not after a likeness ('like it's been waxed') nor at the line's start."""
     said = words.split()
     low = [w.lower() for w in said]
     for k in range(1, len(said)):
-        if low[k] in openers and not said[k - 1].endswith(",") and low[k - 1] not in ("like", "if", "though", "as"):
+        if low[k] in openers and not said[k - 1].endswith(",") and low[k - 1] not in not_after:
             if "too" in low[k + 1 :]:  # a complaint, not a remark ('it's fine')
                 return " ".join(said[:k]) + ", " + " ".join(said[k:])
     return words

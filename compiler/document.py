@@ -336,10 +336,6 @@ def _parsed_line(
     return node
 
 
-#: comparatives that need a target ('more' of what?): before a noun that is also a colour, its colour
-_NEEDS_TARGET = frozenset(("more", "less"))
-
-
 def _toward_colour_noun(node: ast.Material, words: list[Tagged]) -> ast.Refinement | None:
     """'more charcoal', 'lighter, more terracotta': 'more' or 'less' with nothing after it but a noun
     that is also a colour is a change of the colour above toward (or away from) that colour, not a
@@ -347,7 +343,9 @@ def _toward_colour_noun(node: ast.Material, words: list[Tagged]) -> ast.Refineme
     if len(node.nouns) != 1 or node.groups or node.coat or node.features:
         return None
     item, noun = node.refinements[-1], node.nouns[0]  # 'lighter, more charcoal': the last compares
-    if item.target is not None or item.word.key not in _NEEDS_TARGET:
+    from .suggest import teaching
+
+    if item.target is not None or item.word.key not in teaching()["politeness"]["bare_comparisons"]:
         return None
     said = next((w for w in words if w.span.start == noun.span.start), None)
     colour = next((c for c in said.candidates if c.tag == "COLOR"), None) if said is not None else None
@@ -521,7 +519,7 @@ def _implied_before_comma(words: list[Tagged], lexicon: Lexicon, text: str) -> t
     from .implied import implied_material
     from .teach import teach_syntax_error
 
-    comma = next((i for i, w in enumerate(words) if any(c.tag == "COMMA" for c in w.candidates)), 0)
+    comma = _first_comma(words) or 0
     rest = words[comma + 1 :]
     if not comma or not any(c.tag == "FEATURE" for w in rest for c in w.candidates):
         return None
@@ -541,8 +539,8 @@ def _clause_first(
     clause; the notes of the reread words and one saying so. None for any other line."""
     from .hedges import with_after_comma
 
-    comma = next((i for i, w in enumerate(words) if only_tag(w, "COMMA")), None)
-    if comma is None or comma == 0 or comma + 1 == len(words):
+    comma = _first_comma(words)
+    if not comma or comma + 1 == len(words):
         return None
     first, rest = words[:comma], words[comma + 1 :]
     if not any(c.tag == "FEATURE" for w in first for c in w.candidates):
@@ -550,17 +548,20 @@ def _clause_first(
     if any(c.tag in ("NOUN", "COMMA", "WITH") for w in first for c in w.candidates):
         return None
     reordered = [*rest, words[comma], *first]
-    said = [with_after_comma(reordered), _implied_before_comma(reordered, lexicon, text)]
-    for reading in said:
-        if reading is None:
-            continue
-        clause = _comma_clause_after_implied(reading[0], reading[1], lexicon) if reading is said[1] else None
-        tokens, note = (clause[1], clause[2]) if clause is not None else reading
+    implied = _implied_before_comma(reordered, lexicon, text)  # 'off white, a touch of sheen'
+    with_implied = _comma_clause_after_implied(*implied, lexicon) if implied is not None else None
+    readings = [with_after_comma(reordered), with_implied[1:] if with_implied is not None else None]
+    for tokens, note in (r for r in readings if r is not None):
         node = _parsed(tokens, text, lexicon)
         if isinstance(node, ast.Material):
             moved = f"read '{written_text(words)}' as '{written_text(rest)}, {written_text(first)}' (the clause after its material)"
             return node, [*notes, note, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, moved)]
     return None
+
+
+def _first_comma(words: list[Tagged]) -> int | None:
+    """Where the line's first comma (or mark read as one) stands, or None."""
+    return next((i for i, w in enumerate(words) if any(c.tag == "COMMA" for c in w.candidates)), None)
 
 
 def _comma_clause_after_implied(
@@ -616,13 +617,19 @@ def _removal_part(text: str, but: int | None = None) -> bool:
     return any(opens_removal(text[a + 1 : b]) for a, b in list(zip(points, points[1:]))[1:])
 
 
-def _but_at(words: list[Tagged]) -> int | None:
-    """Where in the line its one 'but' stands (teaching.toml [politeness] remark_breaks), or None."""
+def _but_word(words: list[Tagged]) -> Tagged | None:
+    """The line's one 'but' (teaching.toml [politeness] remark_breaks), or None."""
     from .suggest import teaching
 
     breaks = teaching()["politeness"]["remark_breaks"]
     joiners = [w for w in words if w.text.lower() in breaks and w.implied_by is None]
-    return joiners[0].span.start - words[0].span.line_start if len(joiners) == 1 else None
+    return joiners[0] if len(joiners) == 1 else None
+
+
+def _but_at(words: list[Tagged]) -> int | None:
+    """Where in the line (its column from 0) its one 'but' stands, or None."""
+    but = _but_word(words)
+    return None if but is None else but.span.start - words[0].span.line_start
 
 
 def _said_again(diag: Diagnostic, notes: list[Diagnostic]) -> bool:
@@ -661,10 +668,10 @@ def _but_then_comparatives(
 ) -> tuple[ast.Item, list[Diagnostic]] | None:
     """'navy but a bit brighter', 'concrete but lighter grey': a material (or colours), 'but', then
     comparatives: the material moved by them, as 'navy, a bit brighter' is, with a note."""
-    start = _but_at(words)
-    if start is None or words[0].implied_by is not None:
+    joiner = _but_word(words)
+    if joiner is None or words[0].implied_by is not None:
         return None
-    joiner = next(w for w in words if w.span.start - words[0].span.line_start == start)  # the 'but'
+    start = joiner.span.start - words[0].span.line_start
     found = _comparatives_after_comma(words[0], text, start, len(joiner.text), lexicon)
     if found is None:
         return None

@@ -15,6 +15,7 @@ Runs only for a line that failed to parse (cnlmc.document): the hot path never r
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import replace
 
 from . import ast
 from .diagnostics import Diagnostic, Severity
@@ -501,25 +502,23 @@ def but_after_noun(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] |
     """'grey paint but not too shiny', 'glass but not frosted': 'but' right after the material and
     before its describing words sets them off as a comma would ('grey paint, but not too shiny');
     the words with that comma and the note, None for any other line."""
+    from .joins import implied_comma
+
+    breaks = teaching()["politeness"]["describing_breaks"]
     for k in range(1, len(words) - 1):
         word, before = words[k], words[k - 1]
         after = next((w for w in words[k + 1 :] if not all(c.tag == "ADV" for c in w.candidates)), words[k + 1])
-        if word.text.lower() not in BUT_WORDS or not any(c.tag == "AND" for c in word.candidates):
+        if word.text.lower() not in breaks or not any(c.tag == "AND" for c in word.candidates):
             continue
         if not any(c.tag == "NOUN" for c in before.candidates) or before.unknown or not _describes(after):
             return None
-        at = word.span.start - 1
-        comma = Tagged(",", Span(at, at + 1, word.span.line, word.span.col - 1), _COMMA_READING, implied_by=word.span)
+        comma = implied_comma(word)
         said = " ".join(w.text for w in words)
         note = f"read '{said}' as '{' '.join(w.text for w in words[:k])}, {' '.join(w.text for w in words[k:])}'"
         return [*words[:k], comma, *words[k:]], Diagnostic(
             before.span.to(words[-1].span), Severity.NOTE, NOTE_CODE, note
         )
     return None
-
-
-BUT_WORDS = ("but", "yet")  # keywords.toml AND words that set describing words off after the material
-_COMMA_READING = (Candidate("COMMA", ",", "keyword"),)
 
 
 def named_then_compared(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic] | None:
@@ -547,16 +546,17 @@ def comparison_shared(words: Sequence[Tagged]) -> tuple[list[Tagged], Diagnostic
     """'more worn and weathered', 'less shiny and less yellow': a comparison word ('more', 'less')
     before describing words joined by 'and' compares each of them ('more worn, more weathered'); the
     words so read and the note, None for any other line."""
+    from .joins import implied_comma
+
     first = words[0] if words else None
     refine = next((c for c in first.candidates if c.tag == "REFINE"), None) if first is not None else None
-    if first is None or refine is None or first.text.lower() not in ("more", "less"):
+    if first is None or refine is None or first.text.lower() not in teaching()["politeness"]["bare_comparisons"]:
         return None
     out: list[Tagged] = [first]
     for k, word in enumerate(words[1:], start=1):
         after = words[k + 1] if k + 1 < len(words) else None
         if any(c.tag == "AND" for c in word.candidates) and after is not None and _describes(after):
-            comma = Tagged(",", word.span, (Candidate("COMMA", ",", "keyword"),), implied_by=word.span)
-            out += [comma, _implied(first.text, refine, word, 1)]
+            out += [replace(implied_comma(word), span=word.span), _implied(first.text, refine, word, 1)]
         else:
             out.append(word)
     if len(out) == len(words):

@@ -297,10 +297,6 @@ class Joiner:
         diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))
         return Tagged(word.text, word.span, (Candidate("NOUN", noun, "nouns"),))
 
-    def names_artifact(self, word: str) -> bool:
-        """Whether WordNet 3.0 lists `word` (or its singular) as an artifact: a real thing's name."""
-        return self._artifact_name(word.lower()) is not None
-
     def _artifact_name(self, word: str) -> str | None:
         """The WordNet artifact `word` is, also in a plural (-s, -es, -ies)."""
         if self.artifacts is None:

@@ -258,12 +258,9 @@ def _without_pronoun(
     describing = verb is not None or any(c.tag == "ADJ" for c in said.candidates)  # 'matt it a bit'
     if describing and rest and all(any(c.tag == "ADV" for c in w.candidates) for w in rest):
         return [*rest, said], kept[1], past  # 'polish it a bit' = 'a bit polished'
-    if describing and len(rest) == 1 and rest[0].text.lower() in MORE_OR_LESS:
+    if describing and len(rest) == 1 and rest[0].text.lower() in teaching()["politeness"]["bare_comparisons"]:
         return [rest[0], said], kept[1], past  # 'polish it more' = 'more polished'
     return [said, *rest], kept[1], past
-
-
-MORE_OR_LESS = ("more", "less")  # after 'polish it': the comparison of the verb's describing word
 
 
 def _result_words(rest: list[Tagged]) -> tuple[list[Tagged], list[Span]]:

@@ -137,12 +137,6 @@ class Rules:
         self.suffix_words = frozenset(f.lstrip("-") for f in suffix_forms)  # 'coloured', 'finished': not participles
 
 
-#: words after which a last word of use is a place phrase's (cnlmc.politeness reads it past whole)
-USE_LAST_NOT_AFTER = frozenset(
-    ("in", "for", "on", "at", "the", "a", "an", "my", "our", "your", "their", "of", "to", "by")
-)
-
-
 class WordFormation:
     """Reads unknown words by the rules of one lexicon; see the module doc."""
 
@@ -225,7 +219,10 @@ class WordFormation:
         ('mustard yellow accent', 'oak kitchen'): read past with its note; None for any other word,
         or after a preposition or an article ('tiles in the hallway': a place politeness reads past,
         'would be nice': a courtesy)."""
-        if word not in self.rules.qualifiers or before in USE_LAST_NOT_AFTER:
+        from .suggest import teaching
+
+        table = teaching()["politeness"]  # a place phrase's words: cnlmc.politeness reads it past whole
+        if word not in self.rules.qualifiers or before in (*table["place_prepositions"], *table["place_articles"]):
             return None
         return self.read_set_off(word)
 
