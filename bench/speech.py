@@ -9,6 +9,7 @@ shared; wall time is printed too). Peer in the same process: a grammar of the te
 the floor of what constraining can do (and how much the lexicon-sized grammar costs).
 Goals (issue #18): IR-equal >= 95 % clean, >= 85 % at 20 dB SNR; RTF <= 0.3.
 --quick: the tests' subset of phrases (tests/speech).
+--enrol: also each voice enrolled (cnlmc listen --enrol): the enrolment script read by that voice.
 Held-out split: phrases drawn (seeded) from the lexicon's own examples (Phrases.held_out), never
 looked at while tuning; scored apart with the same grammar. The load average is printed with the
 RTF (the machine is shared: under load RTF is pessimistic).
@@ -25,11 +26,12 @@ from collections import defaultdict
 from pathlib import Path
 
 from cnlmc.api import lexicon_for
+from cnlmc.speech.enrol import Aligner, Script, enrol_recording
 from cnlmc.speech.grammar import Grammar
 from cnlmc.speech.model import SpeechModel
 from cnlmc.speech.recogniser import Recogniser
 from cnlmc.speech.settings import SpeechSettings
-from cnlmc.speech.testset import SPEEDS, VOICES, Phrases, Scorer, read_pcm, synthesize
+from cnlmc.speech.testset import SPEEDS, VOICES, Phrases, Scorer, read_aloud, read_pcm, synthesize
 
 
 def phrase_grammar(phrases: Phrases) -> Grammar:
@@ -39,16 +41,18 @@ def phrase_grammar(phrases: Phrases) -> Grammar:
     return grammar
 
 
-def run(recogniser: Recogniser, scorer: Scorer, items: list, label: str) -> None:
+def run(recogniser: Recogniser | dict[str, Recogniser], scorer: Scorer, items: list, label: str) -> None:
+    """`recogniser`: one for every voice, or one per voice (each adapted to its voice: --enrol)."""
     cells: dict[tuple, list[tuple[bool, bool]]] = defaultdict(list)
     cpu = wall = audio = 0.0
     judged: list[tuple[float, bool]] = []  # (confidence, IR-equal) of each utterance heard
     for utterance, pcm in items:
         c0, w0 = time.process_time(), time.perf_counter()
-        heard = recogniser.decode(pcm, refining=utterance.refinement)
+        chosen = recogniser[utterance.voice] if isinstance(recogniser, dict) else recogniser
+        heard = chosen.decode(pcm, refining=utterance.refinement)
         cpu += time.process_time() - c0
         wall += time.perf_counter() - w0
-        audio += len(pcm) / 2 / recogniser.settings.sample_rate
+        audio += len(pcm) / 2 / chosen.settings.sample_rate
         text = heard.text if heard else None
         right = scorer.ir_equal(utterance, text)
         cells[utterance.cell].append((text == utterance.text, right))
@@ -96,6 +100,12 @@ def main() -> None:
     parser.add_argument("--speeds", default=",".join(map(str, SPEEDS)), help="words a minute, e.g. 160 (default: all)")
     parser.add_argument("--prior-exponent", type=float, help="override speech.toml's (0: every word alike)")
     parser.add_argument("--noise-floor-db", type=float, help="override speech.toml's noise floor (0: off)")
+    parser.add_argument(
+        "--enrol",
+        action="store_true",
+        help="also decode with each voice enrolled: the enrolment script read by that voice at 160 wpm, clean",
+    )
+    parser.add_argument("--no-base", action="store_true", help="with --enrol: skip the speaker-independent runs")
     args = parser.parse_args()
     lexicon = lexicon_for()
     t0 = time.perf_counter()
@@ -123,18 +133,37 @@ def main() -> None:
     with tempfile.TemporaryDirectory(prefix="cnlmc-speech-bench-") as folder:
         items = spoken(phrases, speeds, Path(folder), model.settings.sample_rate)
         held_items = [] if args.no_held_out else spoken(held_out, speeds, Path(folder), model.settings.sample_rate)
-    run(recogniser, scorer, items, "lexicon grammar, tuning phrases")
-    if held_items:
-        held_scorer = Scorer(lexicon, held_out, model.settings.undo)
-        run(
-            recogniser,
-            held_scorer,
-            held_items,
-            f"lexicon grammar, held-out phrases ({len(held_out.materials)} + {len(held_out.refinements)})",
-        )
+    held_label = f"held-out phrases ({len(held_out.materials)} + {len(held_out.refinements)})"
+    held_scorer = Scorer(lexicon, held_out, model.settings.undo)
+    runs: list[tuple[str, Recogniser | dict[str, Recogniser]]] = (
+        [] if args.no_base else [("lexicon grammar", recogniser)]
+    )
+    if args.enrol:
+        runs.append(("enrolled voices", enrolled(model)))
+    for label, chosen in runs:
+        run(chosen, scorer, items, f"{label}, tuning phrases")
+        if held_items:
+            run(chosen, held_scorer, held_items, f"{label}, {held_label}")
     if not args.no_peer:
         peer = Recogniser(phrase_grammar(phrases), model.dictionary, model.settings)
         run(peer, scorer, items, "peer: the test phrases only")
+
+
+def enrolled(model: SpeechModel) -> dict[str, Recogniser]:
+    """Per test voice, the recogniser adapted to it: the enrolment script (stdlib/speech/enrol.toml,
+    everyday English, none of the test phrases) read by that voice at 160 wpm, clean."""
+    script = Script.bundled()
+    aligner = Aligner(model.settings, script)
+    rate = model.settings.sample_rate
+    found: dict[str, Recogniser] = {}
+    with tempfile.TemporaryDirectory(prefix="cnlmc-speech-enrol-") as folder:
+        for voice in VOICES:
+            c0 = time.process_time()
+            pcm = read_pcm(read_aloud(script.sentences, voice, 160, Path(folder), rate))
+            adapted = enrol_recording(pcm, aligner, script)
+            print(f"enrolled {voice}: {adapted.seconds:.0f} s of speech, {time.process_time() - c0:.1f} s CPU")
+            found[voice] = model.recogniser(adapted)
+    return found
 
 
 def spoken(phrases: Phrases, speeds: tuple[int, ...], folder: Path, rate: int) -> list:

@@ -121,3 +121,34 @@ def _sounddevice() -> Any:
 
 def is_wav(path: str) -> bool:
     return Path(path).suffix.lower() in (".wav", ".wave")
+
+
+PAUSE_FRAME_S = 0.01  # the level is measured every 10 ms
+PAUSE_BELOW_DB = 30.0  # a frame this far under the speech's loud frames (90th percentile) is a pause
+MIN_PAUSE_S = 0.15  # shorter quiet stretches are inside a sentence (stops, closures)
+
+
+def split_at_pauses(pcm: bytes, rate: int, parts: int) -> list[bytes] | None:
+    """A recording of `parts` sentences read with a pause after each, cut in the middle of its
+    `parts - 1` longest pauses (a pause: at least MIN_PAUSE_S under the speech by PAUSE_BELOW_DB);
+    None when it has fewer pauses than that."""
+    samples = np.frombuffer(pcm, dtype="<i2").astype(np.float64)
+    size = max(1, int(rate * PAUSE_FRAME_S))
+    count = samples.size // size
+    if parts < 1 or count < 2:
+        return None
+    levels = np.sqrt(np.mean(samples[: count * size].reshape(count, size) ** 2, axis=1))
+    quiet = levels < np.percentile(levels, 90) * 10 ** (-PAUSE_BELOW_DB / 20)
+    pauses = [run for run in _runs(quiet) if run[1] - run[0] >= MIN_PAUSE_S / PAUSE_FRAME_S]
+    inner = [run for run in pauses if run[0] > 0 and run[1] < count]  # not the silence at either end
+    if len(inner) < parts - 1:
+        return None
+    longest = sorted(sorted(inner, key=lambda run: run[0] - run[1])[: parts - 1])
+    cuts = [0, *(((start + end) // 2) * size * 2 for start, end in longest), len(pcm)]
+    return [pcm[a:b] for a, b in zip(cuts, cuts[1:])]
+
+
+def _runs(flags: np.ndarray) -> list[tuple[int, int]]:
+    """[start, end) of each run of True."""
+    edges = np.diff(np.concatenate(([0], flags.astype(np.int8), [0])))
+    return list(zip(np.flatnonzero(edges == 1).tolist(), np.flatnonzero(edges == -1).tolist()))

@@ -8,12 +8,16 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from cnlmc.backends.registry import Command, TargetUnavailable, UnknownTarget, get_target
 
 from ..cli import FRONT_END_COMMANDS
 from ..commands import EXIT_ERRORS, EXIT_OK, add_lexicon_arguments, deliver, lexicon_of, print_notes, run_target
 from ..errors import UsageError
+
+if TYPE_CHECKING:
+    from .voice import Voice
 
 
 class ListenCommand(Command):
@@ -39,9 +43,26 @@ class ListenCommand(Command):
             help="print the recogniser's grammar (Sphinx FSG) for a session's first utterance and stop",
         )
         parser.add_argument("--option", action="append", default=[], metavar="KEY=VALUE", help="a backend option")
+        parser.add_argument(
+            "--voice",
+            metavar="FILE",
+            help="an enrolled voice (made with --enrol): the recogniser adapted to your speech",
+        )
+        parser.add_argument(
+            "--enrol",
+            action="store_true",
+            help="read the enrolment script aloud (microphone, or --from a recording of it) and write --voice FILE",
+        )
+        parser.add_argument(
+            "--enrol-script", action="store_true", help="print the sentences --enrol asks you to read, and stop"
+        )
         add_lexicon_arguments(parser)
 
     def run(self, args: argparse.Namespace) -> int:
+        if args.enrol_script or args.enrol:
+            from .enrol_command import enrol, print_script
+
+            return print_script() if args.enrol_script else enrol(args)
         from .audio import microphone, read_wav, utterances
         from .listen import SOURCE_NAME, Listener
         from .model import SpeechModel
@@ -54,6 +75,7 @@ class ListenCommand(Command):
         lexicon = lexicon_of(args)
         folders = [spec for spec in args.lexicon if Path(spec).is_dir()]
         try:
+            voice = load_voice(args.voice)
             model = SpeechModel.of(lexicon, folders)
             if args.grammar:
                 sys.stdout.write(model.grammar.fsg_text())
@@ -63,7 +85,7 @@ class ListenCommand(Command):
                 print(f"note: no pronunciation for: {words}; add them to speech/pronunciations.toml", file=sys.stderr)
             rate = model.settings.sample_rate
             audio = utterances(read_wav(args.wav, rate), rate) if args.wav else microphone(rate)
-            recogniser = model.recogniser()
+            recogniser = model.recogniser(voice)
             threshold = model.settings.min_confidence if args.min_confidence is None else args.min_confidence
             listener = Listener(lexicon, model.settings.undo, threshold, args.seed)
             if not args.wav:
@@ -85,3 +107,16 @@ class ListenCommand(Command):
             return EXIT_ERRORS
         print_notes(emitted)
         return deliver(emitted.artifacts, args.output, protect=[args.wav] if args.wav else [])
+
+
+def load_voice(path: str | None) -> Voice | None:
+    """The enrolled voice of --voice (a UsageError saying what to do when it cannot be used)."""
+    if path is None:
+        return None
+    from .recogniser import model_files
+    from .voice import Voice, VoiceError, acoustic_model
+
+    try:
+        return Voice.load(path, acoustic_model(model_files().acoustic))
+    except VoiceError as exc:
+        raise UsageError(str(exc)) from None

@@ -15,6 +15,7 @@ from .pronounce import Pronunciations
 from .recogniser import Recogniser, model_files, pocketsphinx_module
 from .settings import SpeechSettings
 from .vocabulary import Vocabulary, joined_colours, sayable_vocabulary
+from .voice import Voice
 
 
 @dataclass(frozen=True)
@@ -41,8 +42,9 @@ class SpeechModel:
         dictionary, missing = pronunciations.dictionary_text(), frozenset(pronunciations.missing)
         return cls(vocabulary, first, later, dictionary, missing, settings)
 
-    def recogniser(self) -> Recogniser:
-        return Recogniser(self.grammar, self.dictionary, self.settings, self.later)
+    def recogniser(self, voice: Voice | None = None) -> Recogniser:
+        """The recogniser of this model, adapted to an enrolled speaker's `voice` when given."""
+        return Recogniser(self.grammar, self.dictionary, self.settings, self.later, voice)
 
 
 def weighed(grammar: Grammar, context: str, smoothing: float) -> Grammar:

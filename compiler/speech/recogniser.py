@@ -13,6 +13,7 @@ from .settings import SpeechSettings
 
 if TYPE_CHECKING:
     from .grammar import Grammar
+    from .voice import Voice
 
 
 FIRST, LATER = "first", "later"  # the searches: an utterance that starts a material, one said after it
@@ -46,6 +47,14 @@ def model_files() -> ModelFiles:
     return ModelFiles(root / "en-us" / "en-us", root / "en-us" / "cmudict-en-us.dict", root / "en-us" / "en-us.lm.bin")
 
 
+def _written_means(folder: Path, voice: Voice) -> Path:
+    from .sphinx_files import gaussians_bytes
+
+    path = folder / "means"
+    path.write_bytes(gaussians_bytes(voice.means))
+    return path
+
+
 @dataclass(frozen=True)
 class Hypothesis:
     """What was heard: the best complete phrase, its confidence (its share of the n-best list's
@@ -69,10 +78,19 @@ class Recogniser:
     with the settings' narrow beams (fast); when it reaches no complete phrase, a second pass with
     the wide beams of `settings.retry` (made on first need) searches the utterance again. `later`,
     when given, is the grammar searched for utterances said after a material (refining=True): the
-    same phrases weighed for that context (cnlmc.speech.branches)."""
+    same phrases weighed for that context (cnlmc.speech.branches). `voice`, when given, is an enrolled
+    speaker's voice (cnlmc.speech.voice): its adapted means replace the model's."""
 
-    def __init__(self, grammar: Grammar, dictionary: str, settings: SpeechSettings, later: Grammar | None = None):
+    def __init__(
+        self,
+        grammar: Grammar,
+        dictionary: str,
+        settings: SpeechSettings,
+        later: Grammar | None = None,
+        voice: Voice | None = None,
+    ):
         self.settings = settings
+        self.voice = voice
         if later is not None and [t[:2] for t in later.transitions] != [t[:2] for t in grammar.transitions]:
             raise ValueError("the later grammar must have the first one's structure (one FSG checks both)")
         self.grammar_texts = {FIRST: grammar.fsg_text(FIRST), LATER: (later or grammar).fsg_text(LATER)}
@@ -86,6 +104,8 @@ class Recogniser:
         with tempfile.TemporaryDirectory(prefix="cnlmc-speech-") as folder:
             dict_path = Path(folder) / "words.dict"
             dict_path.write_text(self.dictionary, "utf-8")
+            if self.voice is not None:  # read when the decoder is made: the folder may go after
+                search = {**search, "mean": str(_written_means(Path(folder), self.voice))}
             config = ps.Config(
                 hmm=str(model_files().acoustic),
                 dict=str(dict_path),

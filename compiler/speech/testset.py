@@ -111,6 +111,22 @@ def synthesize(utterance: Utterance, folder: Path, rate: int) -> Path:
     return noisy
 
 
+def read_aloud(sentences: tuple[str, ...], voice: str, speed: int, folder: Path, rate: int) -> Path:
+    """The enrolment script read by an espeak-ng voice as one WAV at `rate`: the sentences in order,
+    half a second of silence after each, as `cnlmc listen --enrol-script` asks a reader to pause
+    (what `cnlmc listen --enrol --from` reads)."""
+    out = folder / f"enrol_{voice}_{speed}.wav"
+    if not out.exists():
+        pause = folder / "pause.wav"
+        _run(["sox", "-n", "-r", str(rate), "-c", "1", "-b", "16", str(pause), "trim", "0", str(READING_PAUSE_S)])
+        said = [synthesize(Utterance(s, voice, speed, False, False), folder, rate) for s in sentences]
+        _run(["sox", *(str(p) for part in said for p in (part, pause)), str(out)])
+    return out
+
+
+READING_PAUSE_S = 0.5  # the test reader's pause after each sentence of the enrolment script
+
+
 def add_noise(clean: Path, out: Path, snr_db: float) -> None:
     """White noise (sox synth) mixed in at `snr_db` below the speech's RMS (over its voiced part)."""
     pcm = read_pcm(clean)

@@ -37,6 +37,9 @@ class ServeCommand(Command):
         )
         parser.add_argument("--open", action="store_true", help="open the studio in the default browser")
         parser.add_argument("--lexicon", "-L", action="append", default=[], help="an overlay name or lexicon folder")
+        parser.add_argument(
+            "--voice", metavar="FILE", help="an enrolled voice for the Speak button (made with cnlmc listen --enrol)"
+        )
 
     def run(self, args: argparse.Namespace) -> int:
         try:
@@ -52,7 +55,10 @@ class ServeCommand(Command):
         if not 0 <= args.port <= 65535:
             raise UsageError(f"--port {args.port}: a port is 0 to 65535")
         folders = tuple(spec for spec in args.lexicon if Path(spec).is_dir())
-        studio = Studio(lexicon, args.host, args.port, self.initial_text(args.file), lexicon_folders=folders)
+        voice = enrolled_voice(args.voice)
+        studio = Studio(
+            lexicon, args.host, args.port, self.initial_text(args.file), lexicon_folders=folders, voice=voice
+        )
         listening = listen(args.host, args.port)
         studio.port = listening.getsockname()[1]
         announce(studio.host, studio.port, studio.token, args.open)
@@ -66,6 +72,21 @@ class ServeCommand(Command):
 
         limit = studio_settings().limits.max_document_bytes
         return read_text(path, limit=limit)
+
+
+def enrolled_voice(path: str | None) -> object:
+    """--voice FILE read before the server starts (a UsageError now, not on the first utterance)."""
+    if path is None:
+        return None
+    try:
+        from ..speech.command import load_voice
+        from ..speech.recogniser import SpeechUnavailable
+    except ImportError as exc:  # numpy missing: speech is not installed
+        raise UsageError(f"--voice needs speech input: {exc}; install it with: pip install 'cnlmc[speech]'") from None
+    try:
+        return load_voice(path)
+    except SpeechUnavailable as exc:
+        raise UsageError(str(exc)) from None
 
 
 def listen(host: str, port: int) -> socket.socket:

@@ -18,6 +18,7 @@ from collections.abc import Awaitable, Callable
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
+from typing import Any
 
 from aiohttp import web
 from aiohttp.typedefs import Middleware
@@ -52,10 +53,11 @@ class Studio:
     composer: MarkerComposer = field(default_factory=MarkerComposer)
     root: Path = field(default_factory=lambda: Path(tempfile.mkdtemp(prefix="cnlmc-studio-")))
     lexicon_folders: tuple[str, ...] = ()  # the user's lexicon folders (their speech pronunciations)
+    voice: Any = None  # an enrolled speaker's voice (cnlmc.speech.voice.Voice) for the Speak button
     ears: StudioEars = field(init=False)
 
     def __post_init__(self) -> None:
-        self.ears = StudioEars(self.lexicon, self.lexicon_folders)
+        self.ears = StudioEars(self.lexicon, self.lexicon_folders, self.voice)
         if self.token is None and not is_loopback(self.host):
             self.token = secrets.token_urlsafe(16)
 

@@ -6,6 +6,7 @@ it, 'undo' steps back; below the confidence threshold nothing changes and the pa
 heard and the alternatives. The silence before and after the speech is cut first
 (cnlmc.speech.audio.speech_span), as `cnlmc listen` cuts a recording at its pauses.
 
+With `cnlmc serve --voice FILE` the recogniser is adapted to an enrolled speaker (cnlmc.speech.voice).
 One recogniser serves every tab (loaded on the first utterance: pocketsphinx is an optional extra,
 imported only then); a lock keeps one decode at a time."""
 
@@ -19,9 +20,10 @@ from ..speech.settings import SpeechSettings
 
 
 class StudioEars:
-    def __init__(self, lexicon: Lexicon, folders: tuple[str, ...] = ()) -> None:
+    def __init__(self, lexicon: Lexicon, folders: tuple[str, ...] = (), voice: Any = None) -> None:
         self.lexicon = lexicon
         self.folders = folders
+        self.voice = voice  # an enrolled voice (cnlmc.speech.voice.Voice: `cnlmc serve --voice`), or None
         self.lock = threading.Lock()
         self.settings = SpeechSettings.bundled()  # the threshold, 'undo', the rate the page records at
         self.rate = self.settings.sample_rate
@@ -43,6 +45,6 @@ class StudioEars:
         from ..speech.recogniser import SpeechUnavailable
 
         try:
-            self.recogniser = SpeechModel.of(self.lexicon, self.folders, self.settings).recogniser()
+            self.recogniser = SpeechModel.of(self.lexicon, self.folders, self.settings).recogniser(self.voice)
         except SpeechUnavailable as exc:
             raise ValueError(str(exc)) from None
