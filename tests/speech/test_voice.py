@@ -264,3 +264,19 @@ def test_the_studio_hears_with_the_served_voice(acoustic: AcousticModel) -> None
     ears = StudioEars(lexicon_for(), (), voice)
     ears._load()
     assert ears.recogniser.voice is voice
+
+
+@needs_tools
+def test_enrolling_at_the_microphone_prompts_each_sentence(speech: SpeechModel, folder: Path) -> None:
+    """enrol_live, as `listen --enrol` runs it at the microphone: fed the sentences as recorded
+    utterances (the first a 50 ms click that cannot be a sentence: it is asked for again)."""
+    from cnlmc.speech.enrol import enrol_live
+
+    script = Script.bundled()
+    said = [_said(sentence, "en-us+m3", folder) for sentence in script.sentences]
+    click = b"\x00\x10" * 800
+    told: list[str] = []
+    voice = enrol_live(iter([click, *said]), Aligner(speech.settings, script), script, told.append)
+    assert voice.sentences == len(script.sentences)
+    assert told[0].startswith(f"[1/{len(script.sentences)}] read: ") and told[1].startswith("[1/")
+    assert "read again: " in told[1] and told[-1].endswith(script.sentences[-1])
