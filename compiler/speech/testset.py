@@ -63,13 +63,15 @@ class Phrases:
         return cls(tuple(materials), tuple(refinements), str(data["base"]))
 
     @classmethod
-    def held_out(cls, lexicon: Lexicon, sayable: Callable[[str], bool], exclude: Phrases) -> Phrases:
+    def held_out(
+        cls, lexicon: Lexicon, sayable: Callable[[str], bool], exclude: Phrases, seed_key: str = "seed"
+    ) -> Phrases:
         """Phrases drawn (seeded) from the lexicon's own `example` fields, per category as
         test_phrases.toml's [held_out] says: never looked at while tuning, only scored. An example
         is kept when the grammar can say it; it is a refinement when it names no material alone."""
         data: dict[str, Any] = tomllib.loads(speech_data("test_phrases.toml"))
         spec = data["held_out"]
-        draw = random.Random(int(spec["seed"]))
+        draw = random.Random(int(spec[seed_key]))
         seen = {*exclude.materials, *exclude.refinements}
         materials: list[str] = []
         refinements: list[str] = []
@@ -81,6 +83,9 @@ class Phrases:
                 named = compile_source(text, "<held-out>", lexicon).materials
                 (materials if named else refinements).append(text)
         return cls(tuple(materials), tuple(refinements), exclude.base)
+
+    def joined(self, other: Phrases) -> Phrases:
+        return Phrases(self.materials + other.materials, self.refinements + other.refinements, self.base)
 
     def utterances(self, voices: tuple[str, ...], speeds: tuple[int, ...], noisy: tuple[bool, ...]) -> list[Utterance]:
         said = [(t, False) for t in self.materials] + [(t, True) for t in self.refinements]
