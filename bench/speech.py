@@ -32,7 +32,16 @@ from cnlmc.speech.grammar import Grammar
 from cnlmc.speech.model import SpeechModel
 from cnlmc.speech.recogniser import Recogniser
 from cnlmc.speech.settings import SpeechSettings
-from cnlmc.speech.testset import SPEEDS, VOICES, Phrases, Scorer, read_aloud, read_pcm, synthesize
+from cnlmc.speech.testset import (
+    SPEEDS,
+    VOICES,
+    Phrases,
+    Scorer,
+    held_out_spec,
+    read_aloud,
+    read_pcm,
+    synthesize,
+)
 
 
 def phrase_grammar(phrases: Phrases) -> Grammar:
@@ -132,6 +141,7 @@ def main() -> None:
     scorer = Scorer(lexicon, phrases, model.settings.undo)
     held_out = Phrases.held_out(lexicon, recogniser.fsg.accept, phrases)
     fresh = Phrases.held_out(lexicon, recogniser.fsg.accept, phrases.joined(held_out), "fresh_seed")
+    seeds = held_out_spec()
     with tempfile.TemporaryDirectory(prefix="cnlmc-speech-bench-") as folder:
         items = spoken(phrases, speeds, Path(folder), model.settings.sample_rate)
         splits = (
@@ -139,12 +149,12 @@ def main() -> None:
             if args.no_held_out
             else [
                 (
-                    f"held-out phrases, seed 18, read in session 22 ({len(held_out.materials)} + {len(held_out.refinements)})",
+                    f"held-out phrases, seed {seeds['seed']}, read in session 22 ({len(held_out.materials)} + {len(held_out.refinements)})",
                     held_out,
                     spoken(held_out, speeds, Path(folder), model.settings.sample_rate),
                 ),
                 (
-                    f"held-out phrases, seed 22, unread ({len(fresh.materials)} + {len(fresh.refinements)})",
+                    f"held-out phrases, seed {seeds['fresh_seed']}, unread ({len(fresh.materials)} + {len(fresh.refinements)})",
                     fresh,
                     spoken(fresh, speeds, Path(folder), model.settings.sample_rate),
                 ),

@@ -13,6 +13,7 @@ import numpy as np
 
 from ..errors import UsageError
 from ..inputs import read_bytes
+from .noise_floor import frame_levels
 from .recogniser import SpeechUnavailable, pocketsphinx_module
 
 MAX_WAV_BYTES = 256 << 20  # our choice: about 2 hours of 16 kHz speech
@@ -124,21 +125,28 @@ def is_wav(path: str) -> bool:
 
 
 PAUSE_FRAME_S = 0.01  # the level is measured every 10 ms
-PAUSE_BELOW_DB = 30.0  # a frame this far under the speech's loud frames (90th percentile) is a pause
+PAUSE_SHARE = 1 / 3  # a pause is under a third of the way (in dB) from the quiet frames to the loud ones
+LEVEL_PERCENTILES = (10.0, 90.0)  # the quiet frames' level (the room) and the loud frames' (the speech)
+LEVEL_RANGE_DB = 80.0  # digital silence counts as this far under the speech
 MIN_PAUSE_S = 0.15  # shorter quiet stretches are inside a sentence (stops, closures)
 
 
 def split_at_pauses(pcm: bytes, rate: int, parts: int) -> list[bytes] | None:
     """A recording of `parts` sentences read with a pause after each, cut in the middle of its
-    `parts - 1` longest pauses (a pause: at least MIN_PAUSE_S under the speech by PAUSE_BELOW_DB);
-    None when it has fewer pauses than that."""
-    samples = np.frombuffer(pcm, dtype="<i2").astype(np.float64)
+    `parts - 1` longest pauses; None when it has fewer. A pause: at least MIN_PAUSE_S of frames
+    whose level is under PAUSE_SHARE of the way from the room's level to the speech's, in dB (so
+    a noisy room's pauses count as well as a synthesiser's digital silence)."""
     size = max(1, int(rate * PAUSE_FRAME_S))
-    count = samples.size // size
+    levels = frame_levels(np.frombuffer(pcm, dtype="<i2").astype(np.float64), size)
+    count = levels.size
     if parts < 1 or count < 2:
         return None
-    levels = np.sqrt(np.mean(samples[: count * size].reshape(count, size) ** 2, axis=1))
-    quiet = levels < np.percentile(levels, 90) * 10 ** (-PAUSE_BELOW_DB / 20)
+    room, speech = np.percentile(levels, LEVEL_PERCENTILES)
+    if speech <= 0.0:
+        return None  # silence throughout
+    decibels = 20 * np.log10(np.maximum(levels, speech * 10 ** (-LEVEL_RANGE_DB / 20)) / speech)
+    floor = max(20 * np.log10(max(room, 1e-12) / speech), -LEVEL_RANGE_DB)
+    quiet = decibels < floor * (1 - PAUSE_SHARE)
     pauses = [run for run in _runs(quiet) if run[1] - run[0] >= MIN_PAUSE_S / PAUSE_FRAME_S]
     inner = [run for run in pauses if run[0] > 0 and run[1] < count]  # not the silence at either end
     if len(inner) < parts - 1:

@@ -46,7 +46,7 @@ class ListenCommand(Command):
         parser.add_argument(
             "--voice",
             metavar="FILE",
-            help="an enrolled voice (made with --enrol): the recogniser adapted to your speech",
+            help="your enrolled voice: the recogniser adapted to your speech (with --enrol: the file it writes)",
         )
         parser.add_argument(
             "--enrol",
@@ -60,8 +60,9 @@ class ListenCommand(Command):
 
     def run(self, args: argparse.Namespace) -> int:
         if args.enrol_script or args.enrol:
-            from .enrol_command import enrol, print_script
+            from .enrol_command import enrol, print_script, refuse_unused
 
+            refuse_unused(args)
             return print_script() if args.enrol_script else enrol(args)
         from .audio import microphone, read_wav, utterances
         from .listen import SOURCE_NAME, Listener

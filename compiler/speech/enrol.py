@@ -150,16 +150,24 @@ def enrol_recording(pcm: bytes, aligner: Aligner, script: Script) -> Voice:
 
 
 def enrol_live(segments: Iterator[bytes], aligner: Aligner, script: Script, tell: Callable[[str], None]) -> Voice:
-    """From the microphone: each sentence prompted, then the next utterance heard is aligned to it
-    (read again when it cannot be followed, up to `ATTEMPTS` times; then the next sentence)."""
+    """From the microphone: each sentence prompted, then the utterances heard are aligned to it,
+    each alone and all of them joined (a sentence read with a pause inside comes as two); asked
+    for again when it cannot be followed, up to `ATTEMPTS` utterances, then left out (and said so)."""
     aligned: list[Aligned] = []
+    count = len(script.sentences)
     for number, sentence in enumerate(script.sentences, 1):
-        for attempt in range(ATTEMPTS):
-            tell(f"[{number}/{len(script.sentences)}] read{' again' if attempt else ''}: {sentence}")
-            found = aligner.align(next(segments), sentence)
-            if found is not None:
-                aligned.append(found)
-                break
+        heard: list[bytes] = []
+        found: Aligned | None = None
+        while found is None and len(heard) < ATTEMPTS:
+            tell(f"[{number}/{count}] read{' again' if heard else ''}: {sentence}")
+            heard.append(next(segments))
+            found = aligner.align(heard[-1], sentence)
+            if found is None and len(heard) > 1:
+                found = aligner.align(b"".join(heard), sentence)
+        if found is None:
+            tell(f"[{number}/{count}] could not follow that sentence; going on without it")
+        else:
+            aligned.append(found)
     return voice_from(aligned, script, aligner.model)
 
 

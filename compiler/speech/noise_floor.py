@@ -37,16 +37,20 @@ class NoiseFloor:
 
     def missing_rms(self, samples: np.ndarray, rate: int) -> float:
         """The RMS of the noise to add so that the pauses reach the floor (0 when they do)."""
-        size = max(1, int(rate * self.frame_ms / 1000))
-        count = samples.size // size
-        if not self.below_speech_db or count < 2:
+        levels = frame_levels(samples, max(1, int(rate * self.frame_ms / 1000)))
+        if not self.below_speech_db or levels.size < 2:
             return 0.0
-        frames = samples[: count * size].reshape(count, size)
-        levels = np.sqrt(np.mean(frames**2, axis=1))
         speech = float(np.percentile(levels, self.speech_percentile))
         pause = float(np.percentile(levels, self.pause_percentile))
         target = speech * 10 ** (-self.below_speech_db / 20)
         return float(np.sqrt(max(0.0, target**2 - pause**2)))
+
+
+def frame_levels(samples: np.ndarray, size: int) -> np.ndarray:
+    """The RMS of each whole frame of `size` samples."""
+    count = samples.size // size
+    levels: np.ndarray = np.sqrt(np.mean(samples[: count * size].reshape(count, size) ** 2, axis=1))
+    return levels
 
 
 def coloured_noise(size: int, rate: int, slope: float, rng: np.random.Generator) -> np.ndarray:

@@ -69,8 +69,7 @@ class Phrases:
         """Phrases drawn (seeded) from the lexicon's own `example` fields, per category as
         test_phrases.toml's [held_out] says: never looked at while tuning, only scored. An example
         is kept when the grammar can say it; it is a refinement when it names no material alone."""
-        data: dict[str, Any] = tomllib.loads(speech_data("test_phrases.toml"))
-        spec = data["held_out"]
+        spec = held_out_spec()
         draw = random.Random(int(spec[seed_key]))
         seen = {*exclude.materials, *exclude.refinements}
         materials: list[str] = []
@@ -90,6 +89,12 @@ class Phrases:
     def utterances(self, voices: tuple[str, ...], speeds: tuple[int, ...], noisy: tuple[bool, ...]) -> list[Utterance]:
         said = [(t, False) for t in self.materials] + [(t, True) for t in self.refinements]
         return [Utterance(t, v, s, n, r) for n in noisy for v in voices for s in speeds for t, r in said]
+
+
+def held_out_spec() -> dict[str, Any]:
+    """test_phrases.toml's [held_out]: the seeds and how many phrases per category."""
+    data: dict[str, Any] = tomllib.loads(speech_data("test_phrases.toml"))
+    return dict(data["held_out"])
 
 
 def _spoken(example: str) -> str:

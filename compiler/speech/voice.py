@@ -24,6 +24,10 @@ from __future__ import annotations
 import hashlib
 import io
 import json
+import struct
+import tokenize
+import zipfile
+import zlib
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -32,7 +36,9 @@ import numpy as np
 
 from .sphinx_files import FeatureSpec, ModelFormatError, read_ciphones, read_gaussians, read_log_weights
 
-VARIANCE_FLOOR = 1e-4  # pocketsphinx's varfloor: the model's smallest variances are floored so
+VOICE_FILE_ERRORS = (ValueError, KeyError, EOFError, TypeError, AttributeError, zipfile.BadZipFile, zlib.error)
+
+VARIANCE_FLOOR = 1e-4  # pocketsphinx's varfloor: it floors the model's variances at this when loading
 FORMAT = "cnlmc-voice"
 VERSION = 1
 MIN_POSTERIOR = 1e-6  # smaller shares of a frame are left out of the statistics
@@ -74,7 +80,11 @@ class AcousticModel:
 
 @lru_cache(maxsize=2)
 def acoustic_model(folder: Path) -> AcousticModel:
-    return AcousticModel.read(folder)
+    """The acoustic model in `folder` (VoiceError when it is not one adaptation can read)."""
+    try:
+        return AcousticModel.read(folder)
+    except (ModelFormatError, struct.error, OSError, UnicodeDecodeError) as exc:
+        raise VoiceError(f"the acoustic model in {folder} cannot be adapted to a voice: {exc}") from None
 
 
 @dataclass(frozen=True)
@@ -214,26 +224,57 @@ class Voice:
     @classmethod
     def load(cls, path: str | Path, model: AcousticModel) -> Voice:
         """A voice file made by `cnlmc listen --enrol` for this acoustic model (VoiceError otherwise)."""
-        try:
-            with np.load(path, allow_pickle=False) as data:
-                meta = json.loads(str(data["meta"]))
-                means = np.asarray(data["means"], dtype=np.float64)
-        except FileNotFoundError:
-            raise VoiceError(
-                f"{path}: no such voice file; make one with: cnlmc listen --enrol --voice {path}"
-            ) from None
-        except OSError as exc:
-            raise VoiceError(f"{path}: cannot read the voice file ({exc.strerror or exc})") from None
-        except (ValueError, KeyError, EOFError):
-            raise VoiceError(f"{path}: not a voice file made by cnlmc listen --enrol") from None
+        meta, means = _read_voice_file(path)
+        again = f"enrol again: cnlmc listen --enrol --voice {path}"
         if meta.get("format") != FORMAT or meta.get("version") != VERSION:
-            raise VoiceError(
-                f"{path}: not a voice file of this cnlmc (format {meta.get('format')} {meta.get('version')})"
-            )
+            raise VoiceError(f"{path}: made by another version of cnlmc; {again}")
         if meta.get("model") != model.fingerprint or means.shape != model.means.shape:
-            raise VoiceError(
-                f"{path}: made for another acoustic model; enrol again: cnlmc listen --enrol --voice {path}"
-            )
+            raise VoiceError(f"{path}: made for another acoustic model; {again}")
         if not np.all(np.isfinite(means)):
-            raise VoiceError(f"{path}: the voice file is damaged (values that are not numbers); enrol again")
-        return cls(means, meta["model"], int(meta["sentences"]), float(meta["seconds"]), int(meta["frames"]))
+            raise VoiceError(f"{path}: the voice file is damaged (values that are not numbers); {again}")
+        try:
+            return cls(
+                means, str(meta["model"]), _count(meta["sentences"]), _number(meta["seconds"]), _count(meta["frames"])
+            )
+        except VOICE_FILE_ERRORS:
+            raise VoiceError(f"{path}: the voice file is damaged; {again}") from None
+
+
+def _count(value: object) -> int:
+    if not isinstance(value, int) or value < 0:
+        raise ValueError(value)
+    return value
+
+
+def _number(value: object) -> float:
+    if not isinstance(value, int | float):
+        raise ValueError(value)
+    return float(value)
+
+
+def is_voice_file(path: str | Path) -> bool:
+    """Whether `path` is a voice file of cnlmc's, of any version or model (enrolling again replaces it)."""
+    try:
+        meta, _ = _read_voice_file(path)
+    except VoiceError:
+        return False
+    return meta.get("format") == FORMAT
+
+
+def _read_voice_file(path: str | Path) -> tuple[dict[str, object], np.ndarray]:
+    """The metadata and the means of a voice file (VoiceError for anything that is not one)."""
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            meta = json.loads(str(data["meta"]))
+            means = np.asarray(data["means"], dtype=np.float64)
+    except FileNotFoundError:
+        raise VoiceError(f"{path}: no such voice file; make one with: cnlmc listen --enrol --voice {path}") from None
+    except IsADirectoryError:
+        raise VoiceError(f"{path}: a folder, not a voice file") from None
+    except OSError as exc:
+        raise VoiceError(f"{path}: cannot read the voice file ({exc.strerror or exc})") from None
+    except (*VOICE_FILE_ERRORS, tokenize.TokenError):
+        raise VoiceError(f"{path}: not a voice file made by cnlmc listen --enrol") from None
+    if not isinstance(meta, dict):
+        raise VoiceError(f"{path}: not a voice file made by cnlmc listen --enrol")
+    return meta, means

@@ -78,11 +78,9 @@ def enrolled_voice(path: str | None) -> object:
     """--voice FILE read before the server starts (a UsageError now, not on the first utterance)."""
     if path is None:
         return None
-    try:
-        from ..speech.command import load_voice
-        from ..speech.recogniser import SpeechUnavailable
-    except ImportError as exc:  # numpy missing: speech is not installed
-        raise UsageError(f"--voice needs speech input: {exc}; install it with: pip install 'cnlmc[speech]'") from None
+    from ..speech.command import load_voice
+    from ..speech.recogniser import SpeechUnavailable
+
     try:
         return load_voice(path)
     except SpeechUnavailable as exc:
