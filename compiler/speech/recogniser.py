@@ -91,11 +91,12 @@ class Recogniser:
     ):
         self.settings = settings
         self.voice = voice
+        self.search = {**settings.decoder, **(settings.voice_decoder if voice is not None else {})}
         if later is not None and [t[:2] for t in later.transitions] != [t[:2] for t in grammar.transitions]:
             raise ValueError("the later grammar must have the first one's structure (one FSG checks both)")
         self.grammar_texts = {FIRST: grammar.fsg_text(FIRST), LATER: (later or grammar).fsg_text(LATER)}
         self.dictionary = dictionary
-        self.decoder, self.fsg = self._loaded(settings.decoder)
+        self.decoder, self.fsg = self._loaded(self.search)
         self.wide: Any = None
 
     def _loaded(self, search: dict[str, float | bool | str]) -> tuple[Any, Any]:
@@ -134,7 +135,7 @@ class Recogniser:
         heard = self._search(self.decoder, samples, search)
         if heard is None and self.settings.retry:
             if self.wide is None:
-                self.wide = self._loaded({**self.settings.decoder, **self.settings.retry})[0]
+                self.wide = self._loaded({**self.search, **self.settings.retry})[0]
             heard = self._search(self.wide, samples, search)
         return heard
 

@@ -40,6 +40,7 @@ class SpeechSettings:
     decoder: dict[str, float | bool | str]
     noise_floor: NoiseFloor
     retry: dict[str, float | bool]  # the second pass's search settings (empty: no second pass)
+    voice_decoder: dict[str, float | bool | str]  # what changes in the search for an enrolled voice
 
     def same_spelling(self, one: str, other: str) -> bool:
         """Whether two forms differ only by spelling (British/American: 'aluminium', 'aluminum')."""
@@ -73,6 +74,7 @@ class SpeechSettings:
             spellings=tuple((str(a), str(b)) for a, b in data["vocabulary"]["spellings"]),
             noise_floor=_noise_floor(recogniser["noise_floor"]),
             retry={str(k): float(v) for k, v in recogniser.get("retry", {}).items()},
+            voice_decoder={str(k): _search_value(v) for k, v in recogniser.get("voice", {}).items()},
         )
 
 
