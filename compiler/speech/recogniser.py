@@ -92,6 +92,8 @@ class Recogniser:
         self.settings = settings
         self.voice = voice
         self.search = {**settings.decoder, **(settings.voice_decoder if voice is not None else {})}
+        wide = {**self.search, **settings.retry}
+        self.retry = wide if wide != self.search else None  # no second pass that would search the same way
         if later is not None and [t[:2] for t in later.transitions] != [t[:2] for t in grammar.transitions]:
             raise ValueError("the later grammar must have the first one's structure (one FSG checks both)")
         self.grammar_texts = {FIRST: grammar.fsg_text(FIRST), LATER: (later or grammar).fsg_text(LATER)}
@@ -133,9 +135,9 @@ class Recogniser:
         samples = self.settings.noise_floor.apply(samples, self.settings.sample_rate)
         search = LATER if refining else FIRST
         heard = self._search(self.decoder, samples, search)
-        if heard is None and self.settings.retry:
+        if heard is None and self.retry is not None:
             if self.wide is None:
-                self.wide = self._loaded({**self.search, **self.settings.retry})[0]
+                self.wide = self._loaded(self.retry)[0]
             heard = self._search(self.wide, samples, search)
         return heard
 
