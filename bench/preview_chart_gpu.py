@@ -40,7 +40,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from preview_chart import (  # noqa: E402  (bench/ is not a package)
+from preview_chart import (  # bench/ is not a package: found through sys.path above
     MITSUBA_SPP,
     NATIVE_MODEL,
     REALTIME,
