@@ -237,7 +237,8 @@ def hue_family(rgb: Sequence[float]) -> str:
 
 def apparent_colour(m: Mapping[str, Any], mixture: bool = False) -> RGB:
     """The colour a person sees: base_color, times the measured F0 for a conductor (its tint),
-    times a coat's round-trip transmittance tint (params.coat.color: a black lacquer is black). A
+    times a coat's round-trip transmittance tint (params.coat.color: a black lacquer is black); a
+    metal's colour map without a mask is a tint over its reflectance (a tarnish): its mean. A
     layer drawn over the surface by a mask (rust, patina) is named when it covers most of it: the
     mean colour of the layer (its baked colour weighted by the mask, MASK_TEXELS² texels) when the
     mask's mean is at least LAYER_NAMED (clearly most of the surface; at half and half either may be
@@ -248,12 +249,14 @@ def apparent_colour(m: Mapping[str, Any], mixture: bool = False) -> RGB:
     base = [float(c) for c in p.get("base_color", (1.0, 1.0, 1.0))]
     if m["model"]["base"] == "glass" and p.get("transmission_depth"):
         base = seen_through_the_body(base, float(p["transmission_depth"]))
+    maps = m.get("maps") or {}
+    if m["model"]["base"] == "conductor" and "base_color" in maps and "mask" not in maps:
+        base = _map_mean(json.dumps({"base_color": maps["base_color"]}, sort_keys=True), tuple(base))  # a tarnish
     if m["model"]["base"] == "conductor" and p.get("f0"):
         base = [b * float(f) for b, f in zip(base, p["f0"])]
     coat = p.get("coat") or {}
     if coat.get("color"):  # a tinted coat: the light crosses it on the way in and out (its round-trip tint)
         base = [b * float(c) for b, c in zip(base, coat["color"])]
-    maps = m.get("maps") or {}
     if "mask" in maps and "base_color" in maps:
         base = _masked_mean(json.dumps(maps, sort_keys=True), tuple(base), mixture)
     return (min(base[0], 1.0), min(base[1], 1.0), min(base[2], 1.0))
@@ -275,6 +278,16 @@ def seen_through_the_body(colour: Sequence[float], depth: float) -> list[float]:
 DISC_RINGS = 64
 MASK_TEXELS = 64
 LAYER_NAMED = 0.6
+
+
+@functools.lru_cache(maxsize=256)
+def _map_mean(maps_json: str, own: tuple[float, ...]) -> list[float]:
+    """The mean of a baked colour map over a material of colour `own` (a metal's tint map: the film
+    of a tarnish over its own colour)."""
+    from cnlmc.backends.maps.bake import bake
+
+    baked = bake(json.loads(maps_json), {"base_color": list(own)}, size=MASK_TEXELS)["base_color"]
+    return [float(c) for c in baked.reshape(-1, 3).mean(axis=0)]
 
 
 @functools.lru_cache(maxsize=256)
