@@ -9,6 +9,7 @@ from contextvars import ContextVar
 from dataclasses import replace
 
 from . import ast
+from .degree_after import degrees_after
 from .diagnostics import Diagnostic, Severity, error
 from .lexicon import Lexicon
 from .line_parts import PART_MARKS, Reader, by_parts, material_then_comparatives, part_cuts
@@ -314,6 +315,8 @@ def _parsed_line(
             )
         )
         return None
+    words, after = degrees_after(words)  # 'shiny af': very shiny
+    diags.extend(after)
     try:
         shape, picks = parse_line_shape(words, tagger.lexicon.caches.shapes)
     except ParseFailure as failure:
@@ -379,6 +382,12 @@ def _failed_line(
     if named is not None:
         diags.append(named[1])
         return named[0]
+    listed = _slashes_listing(words)  # 'matte/black/rubber': a list, not alternatives
+    if listed is not None and (node := _parsed(listed, text, lexicon)) is not None:
+        whole_line = words[0].span.to(words[-1].span)
+        note = f"read '{written_text(words)}' as a list: a slash between words of different kinds is a comma"
+        diags.append(Diagnostic(whole_line, Severity.NOTE, NOTE_CODE, note))
+        return node
     polite = _politely(words, lexicon)  # 'more of a teal', 'ok, a bit darker': known words, a rewrite
     if polite is not None and (node := _parsed(polite[1], text, lexicon)) is not None:
         diags.extend(polite[0])
@@ -758,6 +767,23 @@ def _rereadings(
     for clause in clauses:
         if clause is not None:
             yield clause[0], [*notes, clause[1]]
+
+
+def _slashes_listing(words: list[Tagged]) -> list[Tagged] | None:
+    """'matte/black/rubber': a slash between words of different kinds lists them, as a comma does
+    (between words of one kind it offers alternatives: 'copper/brass'); None when no slash does."""
+    from .joins import implied_comma
+
+    out = list(words)
+    for i in range(1, len(words) - 1):
+        if words[i].text != "/" or _kinds(words[i - 1]) & _kinds(words[i + 1]):
+            continue
+        out[i] = implied_comma(words[i + 1])
+    return out if out != words else None
+
+
+def _kinds(word: Tagged) -> set[str]:
+    return {c.tag for c in word.candidates}
 
 
 def _parsed(words: list[Tagged], text: str, lexicon: Lexicon) -> ast.Item | None:

@@ -131,6 +131,7 @@ class References:
             )
         self._name(entry, key, "param", PROPERTY_PARAMS, "parameter a property can change")
         self._name(entry, key, "map_param", sorted(all_graph_params()), "graph parameter")
+        self._name(entry, key, "draws", self.raw["features"], "feature")
         step = entry.data.get("step", {})
         if step.get("op") == "blend" and entry.data.get("param") != "base_color":
             entry.checker("step").fail(

@@ -80,6 +80,11 @@ class Synset:
     names: list[str] = field(default_factory=list)
 
 
+#: lemmas this short are chemical symbols and abbreviations ('v', 'u', 'in', 'co', 'pc'): a person
+#: typing them means 'very', 'you', a preposition, never vanadium or indium; none is aliased.
+SYMBOL_LENGTH = 2
+
+
 def parse_data(path: Path) -> dict[int, Synset]:
     """A WNDB data.* file -> offset -> Synset (wndb(5WN): offset lex_filenum ss_type w_cnt ...)."""
     out: dict[int, Synset] = {}
@@ -203,6 +208,8 @@ def noun_entries(
         for syn_off, path in hyponym_paths(data, off).items():
             for lemma in data[syn_off].words:
                 w = word(lemma)
+                if len(w) <= SYMBOL_LENGTH:  # chemical symbols ('v' vanadium, 'in' indium): never a user's noun
+                    continue
                 senses = index.get(lemma.lower(), [])
                 sense = senses.index(syn_off) if syn_off in senses else 99
                 candidates.setdefault(w, []).append((sense, order, len(path), path, name))

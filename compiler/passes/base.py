@@ -123,3 +123,9 @@ def through_depth(colour: Sequence[float], depth: float, other: float) -> list[f
     """A glass colour, the transmittance through `depth`, restated as the transmittance through
     `other` (Beer-Lambert: colour^(other / depth))."""
     return [max(float(c), 0.0) ** (other / depth) for c in colour]
+
+
+def applies_to(noun: Entry, adjective: Entry) -> bool:
+    """Whether the adjective's classes (if any) include the noun or its class."""
+    classes = adjective.data.get("applies_to")
+    return not classes or noun.data.get("class") in classes or noun.key in classes

@@ -4,12 +4,14 @@ refinements other passes make (refine_effects' 'more grainy' on a wood)."""
 from __future__ import annotations
 
 from .. import ast
-from ..diagnostics import warning
+from ..diagnostics import Diagnostic, Severity, warning
 from ..graphs import graph_params
 from ..lexicon import Entry
 from ..state import Context, MaterialState
+from ..tagged import NOTE_CODE
 from .base import noun_of
 from .bracket import Move, bracket_move, scaled_steps
+from .feature_maps import draw_feature
 from .refine_colour import refine_saturation
 from .refine_target import highlight_shown, item_words, move_sigma_too, note_unmoved_number, surface
 
@@ -22,7 +24,7 @@ def refine_property(
     if prop.get("invert"):
         direction = -direction
     if prop.get("map_param"):
-        _refine_map_param(state, prop, item, direction, weight)
+        _refine_map_param(state, ctx, prop, item, direction, weight)
         return
     param = prop.get("param")
     if param == "saturation":
@@ -52,10 +54,15 @@ def acted_on(state: MaterialState, prop: Entry) -> list[str]:
     ]
 
 
-def _refine_map_param(state: MaterialState, prop: Entry, item: ast.RefineItem, direction: int, weight: float) -> None:
+def _refine_map_param(
+    state: MaterialState, ctx: Context, prop: Entry, item: ast.RefineItem, direction: int, weight: float
+) -> None:
     name = prop.get("map_param")
     graphs = prop.get("graphs")
     roles = acted_on(state, prop)
+    if not roles and direction > 0 and prop.get("draws"):
+        draw_absent_feature(state, ctx, prop, item, weight)
+        return
     if not roles:
         what = "no procedural map" if not state.maps else f"no map with '{name}'"
         if graphs:
@@ -80,3 +87,18 @@ def _refine_map_param(state: MaterialState, prop: Entry, item: ast.RefineItem, d
         ref["params"][name] = new
         state.note(key, new, f"refinements.{item.word.key} {prop.key}: bracket step", item_words(item))
         note_unmoved_number(state, item, key, current, new)
+
+
+def draw_absent_feature(state: MaterialState, ctx: Context, prop: Entry, item: ast.RefineItem, weight: float) -> None:
+    """'copper | more patina': more of a feature the material has none of draws it, as a clause
+    naming it would ('with a patina'), with a note saying so."""
+    feature = ctx.lexicon.require("features", str(prop.get("draws")))
+    said = " ".join(w.text for w in sorted(item_words(item), key=lambda w: w.span.start))
+    unfit = draw_feature(state, ctx, feature, weight, item_words(item))
+    noun = noun_of(state).key
+    if unfit is not None:
+        note = unfit.get("applies_note", f"it applies to {', '.join(unfit.get('applies_to'))}")
+        state.diagnostics.append(warning(item.span, "W102", f"'{said}' does not apply to {noun}: {note}", ()))
+        return
+    message = f"'{said}': {noun} had none, so it has some now (as 'with {feature.key}')"
+    state.diagnostics.append(Diagnostic(item.span, Severity.NOTE, NOTE_CODE, message, ()))

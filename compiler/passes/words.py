@@ -20,7 +20,7 @@ from ..formulas import apply_op, describe
 from ..lexicon import Entry, LexiconCaches
 from ..params import COAT_PARAMS, PARAMS, ranges
 from ..state import Context, MaterialState
-from .base import _map_ref, colour_seen_through, noun_of
+from .base import _map_ref, applies_to, colour_seen_through, noun_of
 from .colour_compounds import colour_compounds
 from .colours import colour_text, opposed_shades, resolve_colour
 from .diffuse_sigma import DIFFUSE_SIGMA, PARAM_BOUNDS, move_sigma
@@ -297,7 +297,7 @@ def _survey_colour_instead(state: MaterialState, adjective: Entry, word: ast.Wor
     from ..lexicon_load import survey_hex
 
     noun = noun_of(state)
-    hex_code = survey_hex(word.text.lower()) if not _applies_to(noun, adjective) else None
+    hex_code = survey_hex(word.text.lower()) if not applies_to(noun, adjective) else None
     if hex_code is None:
         return False
     rgb, current = hex_to_linear(hex_code), state.params.get("base_color")
@@ -316,19 +316,13 @@ def _survey_colour_instead(state: MaterialState, adjective: Entry, word: ast.Wor
 SURVEY_COLOUR = "N101"  # a word read by a rule: here, as the survey's colour of its name
 
 
-def _applies_to(noun: Entry, adjective: Entry) -> bool:
-    """Whether the adjective's classes (if any) include the noun or its class."""
-    classes = adjective.data.get("applies_to")
-    return not classes or noun.data.get("class") in classes or noun.key in classes
-
-
 def _applies(state: MaterialState, adjective: Entry, word: ast.Word, target: str = "base") -> bool:
     """Whether the adjective applies to its material; in a coat clause, to the coat ('a clear lacquer')."""
     classes = adjective.data.get("applies_to")
     if not classes or (target == "coat" and COAT_CLASS in classes):
         return True
     noun = noun_of(state)
-    if target != "coat" and _applies_to(noun, adjective):
+    if target != "coat" and applies_to(noun, adjective):
         return True
     note = adjective.get("applies_note", f"it applies to {', '.join(classes)}")
     state.diagnostics.append(

@@ -1,0 +1,62 @@
+"""A degree said after its describing word (issue #14, texting and speech): 'shiny af', 'rough as
+hell', 'matte to the max'. The adverb (an alias of a degree word, stdlib/lexicon/adverbs.toml) is
+read before the word it follows, with a note; stdlib/data/teaching.toml [hedges] `after_the_word`
+lists the forms said after. Without this the grammar would give the adverb to the next describing
+word ('shiny af matte leather': very matte) or warn that it modifies nothing."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from .diagnostics import Diagnostic, Severity
+from .spans import Span
+from .tagged import NOTE_CODE, Candidate, Tagged
+
+#: tags of the words a degree word can qualify (the describing words)
+QUALIFIED = frozenset({"ADJ", "SHADE", "PROP", "REFINE", "COAT", "FEATURE"})
+
+
+def degrees_after(words: Sequence[Tagged]) -> tuple[list[Tagged], list[Diagnostic]]:
+    """The words with each after-the-word degree moved before the describing word it follows, and a
+    note for each; the words as they were when there is none (the common case: no table read)."""
+    out: list[Tagged] = []
+    notes: list[Diagnostic] = []
+    for word in words:
+        degree = _after(word) if out and _qualified(out[-1]) else None
+        if degree is None:
+            out.append(word)
+            continue
+        before, moved = _placed(out[-1], degree, word.span)
+        out[-1:] = [before, moved]
+        note = f"read '{out[-1].text} {word.text}' as '{degree} {moved.text}'"
+        notes.append(
+            Diagnostic(
+                moved.implied_by.to(word.span) if moved.implied_by else word.span, Severity.NOTE, NOTE_CODE, note
+            )
+        )
+    return out, notes
+
+
+def _qualified(word: Tagged) -> bool:
+    return any(c.tag in QUALIFIED for c in word.candidates) and len(word.text) > 1
+
+
+def _after(word: Tagged) -> str | None:
+    """The degree word a word said after its describing word stands for, or None."""
+    if not any(c.tag == "ADV" for c in word.candidates):
+        return None
+    from .suggest import teaching  # read only for an adverb after a describing word
+
+    table: dict[str, str] = teaching()["hedges"]["after_the_word"]
+    return table.get(word.text.lower())
+
+
+def _placed(word: Tagged, degree: str, said: Span) -> tuple[Tagged, Tagged]:
+    """The degree word at the describing word's start, and that word one character in (the parser
+    keys words by start), both implied by what was said."""
+    s = word.span
+    before = Tagged(
+        degree, Span(s.start, s.end, s.line, s.col), (Candidate("ADV", degree, "adverbs"),), implied_by=said
+    )
+    moved = Tagged(word.text, Span(s.start + 1, s.end, s.line, s.col + 1), word.candidates, implied_by=s)
+    return before, moved
