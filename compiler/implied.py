@@ -210,9 +210,19 @@ def _first_added_noun(
         offers = sorted(offers, key=lambda o: everyday.get(o.split()[-1], len(everyday)))
     for offer in offers:
         added = _added_noun(offer, said, tail, lexicon)
-        if added is not None:
+        if added is not None and _every_word_applies(said, added[0], lexicon):
             return (offer, *added)
     return None
+
+
+def _every_word_applies(said: Sequence[Tagged], noun: str, lexicon: Lexicon) -> bool:
+    """Whether every describing word said applies to the noun ('white glaze shiny': a glaze is for
+    ceramics, so not the copper that 'shiny' offers first)."""
+    from .passes.base import applies_to
+
+    entry = lexicon.entry("nouns", noun)
+    adjectives = [lexicon.entry("adjectives", c.key) for w in said for c in w.candidates if c.tag == "ADJ"]
+    return entry is None or all(a is None or applies_to(entry, a) for a in adjectives)
 
 
 SAME_COLOUR = 0.1  # OKLab distance under which a colour and a noun's own colour are the same family

@@ -13,7 +13,7 @@ import math
 from typing import Any
 
 from .. import ast
-from ..colour import linear_to_oklab
+from ..colour import linear_to_oklab, oklab_to_linear_in_gamut
 from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .bracket import Move, Step, bracket_move, scaled_steps
@@ -188,7 +188,8 @@ def refine_named_colour(
 def _away_from_achromatic(lightness: float, chroma: float, current: list[float]) -> list[float] | None:
     """The mid grey a step away from a named black or white goes toward (colour_rules.toml
     `achromatic_away`), where the material's colour is itself near that black or white ('less
-    black' on black plastic; not on navy, which has no black to take away); None otherwise."""
+    black' on black plastic; not on navy, which has no black to take away); for a colour with a hue
+    ('too white' on limed oak) that colour at the mid lightness; None otherwise."""
     from ..lexicon_load import colour_rules
 
     rule = colour_rules()["achromatic_away"]
@@ -196,8 +197,10 @@ def _away_from_achromatic(lightness: float, chroma: float, current: list[float])
     now_l, now_a, now_b = linear_to_oklab(current)
     if chroma >= _achromatic() or abs(lightness - mid) < far:
         return None
-    if math.hypot(now_a, now_b) >= _achromatic() or (now_l - mid) * (lightness - mid) <= 0 or abs(now_l - mid) < far:
-        return None  # a colour with a hue, or one on the other side of the grey or near it
+    if (now_l - mid) * (lightness - mid) <= 0 or abs(now_l - mid) < far:
+        return None  # a colour on the other side of the grey or near it
+    if math.hypot(now_a, now_b) >= _achromatic():  # 'too white' on limed oak: its own hue, toward the mid lightness
+        return oklab_to_linear_in_gamut([mid, now_a, now_b])
     return [mid**3] * 3  # OKLab L of a grey is the cube root of its linear value
 
 
