@@ -88,3 +88,15 @@ def test_more_of_a_feature_that_cannot_form_warns_and_less_of_an_absent_one_stil
     copper = refined("copper")
     copper.refine("less patina")
     assert not copper.material.get("maps") and "W106" in [d.code for d in copper.result.diagnostics]
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [
+        ("black stone with small white points", "black stone with small white speckles"),
+        ("red paint with rust showing thru", "red paint with rust"),
+    ],
+)
+def test_chat_words_for_features(said, meant):
+    assert same_look(material(said), material(meant))
+    assert material(said)["maps"] == material(meant)["maps"]
