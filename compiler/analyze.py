@@ -239,8 +239,14 @@ def _variant_name(name: str, variant: dict[str, Any] | None) -> str:
 
 
 def _phrase(material: ast.Material) -> str:
-    text = material.text
-    return text.split(":", 1)[1].strip() if material.name else text.strip()
+    """The line's words after its name: 'hull: oak' and a schedule code said without its colon
+    ('PT-02 matt emulsion') alike."""
+    text = material.text.strip()
+    if not material.name:
+        return text
+    if ":" in text:
+        return text.split(":", 1)[1].strip()
+    return text[len(material.name.text) :].strip() if text.startswith(material.name.text) else text
 
 
 def analyze(doc: ast.Document, ctx: Context) -> tuple[list[MaterialState], list[Diagnostic]]:

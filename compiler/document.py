@@ -608,7 +608,7 @@ def _whole_line(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.I
         or (None if removal else describing_after(words, text, lexicon))  # 'no texture' is no describing word
         or clause_after(words, text, lexicon)
         or described_colour_after(words, text, lexicon)
-        or context_dropped(words, text, lexicon)
+        or context_dropped(words, text, lexicon, lambda before: _noun_first_item(before, text, lexicon))
     )
     if placed is not None:
         return placed[0], [placed[1]]
@@ -687,6 +687,13 @@ def _but_then_comparatives(
     said = f"{text[:start].strip()}, {text[start + len(joiner.text) :].strip()}"
     note = f"read '{text.strip()}' as '{said}' (the comparatives after '{joiner.text}')"
     return found[0], [*found[1], Diagnostic(joiner.span, Severity.NOTE, NOTE_CODE, note)]
+
+
+def _noun_first_item(words: list[Tagged], text: str, lexicon: Lexicon) -> ast.Item | None:
+    """The words read noun first ('Eiche hell'), without the note: for a part of a line whose own
+    note says how the line was read."""
+    found = _noun_first(words, text, lexicon)
+    return found[0] if found is not None else None
 
 
 def _noun_first(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, list[Diagnostic]] | None:

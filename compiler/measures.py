@@ -48,8 +48,8 @@ def _written(words: Sequence[Tagged]) -> str:
 
 
 def _measure_runs(words: Sequence[Tagged], units: frozenset[str]) -> list[tuple[int, int]]:
-    """(start, end) of each measure, with the separator before it at the line's end ('marble, 2cm')
-    or after it at the line's start ('2cm, walnut')."""
+    """(start, end) of each measure, with the separator before it at the line's end ('marble, 2cm'),
+    after it at the line's start ('2cm, walnut') or between two ('porcelain, 300x600, matt')."""
     runs: list[tuple[int, int]] = []
     k = 0
     while k < len(words):
@@ -65,8 +65,8 @@ def _measure_runs(words: Sequence[Tagged], units: frozenset[str]) -> list[tuple[
         start = k
         if end == len(words) and start > 0 and words[start - 1].text in SEPARATORS:
             start -= 1
-        elif start == 0 and end < len(words) and words[end].text in SEPARATORS:
-            end += 1
+        elif end < len(words) and words[end].text in SEPARATORS and (start == 0 or words[start - 1].text in SEPARATORS):
+            end += 1  # '2cm, walnut'; 'porcelain, 300x600, matt': one of its two commas goes with it
         runs.append((start, end))
         k = end
     return runs if len(runs) and _leaves_words(words, runs) else []

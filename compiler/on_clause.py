@@ -6,7 +6,7 @@ the language, so the tagger leaves them out)."""
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from . import ast
 from .diagnostics import Diagnostic, Severity
@@ -141,13 +141,20 @@ def _described_likeness(
     return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
 
 
-def context_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, Diagnostic] | None:
+def context_dropped(
+    words: Sequence[Tagged],
+    text: str,
+    lexicon: Lexicon,
+    read: Callable[[list[Tagged]], ast.Item | None] | None = None,
+) -> tuple[ast.Item, Diagnostic] | None:
     """'sage green for the kitchen cabinets', 'rusty corrugated iron on the shed roof', 'gold like a
     wedding ring', 'white marble, the kind you see in hotels': where the material is, what it is for,
     where it came from or what it is like, said after the words of the look (teaching.toml [hedges]
     `context`), is read past: the line is the words before it (colours alone on the everyday noun, as
     for describing words alone); None when no such words come after a material, a change or colours.
-    Tried last, after the readings of a clause on its material ('rust on steel') and of a likeness."""
+    Tried last, after the readings of a clause on its material ('rust on steel') and of a likeness.
+    `read`: another reading of the words before it ('Eiche hell wie unser Esstisch': the describing
+    word after the noun), tried when they do not parse as they stand."""
     if not words:
         return None
     low = text.lower()
@@ -172,6 +179,8 @@ def context_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tup
             continue
         unarticled = [w for w in said if not all(c.tag == "ARTICLE" for c in w.candidates)]  # 'a really glossy ...'
         reading = parsed_item(before, text, lexicon.caches.shapes) or _on_everyday_noun(unarticled, text, lexicon)
+        if reading is None and read is not None:
+            reading = read(before)
         if reading is None:
             continue
         dropped = text[found.start() :].strip()

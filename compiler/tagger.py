@@ -86,7 +86,9 @@ def _plain_words(line: str) -> list[tuple[str, int]] | None:
 
 
 RawToken = tuple[str, int]  # a word's text and 0-based column
-_COLON = (Candidate("COLON", ":", "punct"),)  # the name's colon (a Candidate is frozen)
+_COLON = (Candidate("COLON", ":", "punct"),)
+#: a finish schedule's code ('PT-02', 'FIN-07', 'WD3'): letters, an optional mark, digits
+SCHEDULE_CODE = re.compile(r"[A-Za-z]{1,4}[-.]?\d{1,4}[A-Za-z]?")  # the name's colon (a Candidate is frozen)
 WordKey = tuple[str, ...]  # the lower-case words of a (multi-word) form
 
 #: How many word forms a Tagger remembers (known, inflected and unknown ones alike). An entry is
@@ -159,6 +161,8 @@ class Tagger:
                 raw = self._undecorated(raw)
             if ":" in line:
                 i = self._name_prefix(line, raw, line_no, offset, tagged)
+            elif len(raw) > 1 and SCHEDULE_CODE.fullmatch(raw[0][0]) and not self._candidates((raw[0][0].lower(),)):
+                i = self._code_name(raw, line_no, offset, tagged, diags)
             raw = raw[:i] + self._unquoted(raw[i:], line)  # the name keeps its marks
         remembered, followers, count = self.memo._entries, self.followers, len(raw)
         while i < count:
@@ -261,6 +265,20 @@ class Tagger:
         tagged.append(Tagged(text, span, (Candidate("NAME", text, "name"),)))
         tagged.append(Tagged(":", line_span(line_no, raw[colon][1] + 1, 1, offset), _COLON))
         return colon + 1
+
+    def _code_name(
+        self, raw: list[RawToken], line_no: int, offset: int, tagged: list[Tagged], diags: list[Diagnostic]
+    ) -> int:
+        """'PT-02 matt emulsion, off-white': a finish schedule's code first names the material, as
+        'PT-02: ...' does (NAME and a colon implied on the space after it), with a note."""
+        text, col = raw[0]
+        span = line_span(line_no, col + 1, len(text), offset)
+        tagged.append(Tagged(text, span, (Candidate("NAME", text, "name"),)))
+        colon = line_span(line_no, col + len(text) + 1, 1, offset)
+        tagged.append(Tagged(":", colon, _COLON, implied_by=span))
+        note = f"read '{text}' as the material's name (a schedule code), as '{text}: ...' names it"
+        diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, note))
+        return 1
 
     def _tag_at(
         self, raw: list[RawToken], i: int, line_no: int, offset: int, tagged: list[Tagged], diags: list[Diagnostic]
