@@ -382,6 +382,13 @@ def _failed_line(
     if named is not None:
         diags.append(named[1])
         return named[0]
+    compared = _compared_after_noun(words, text, lexicon)  # 'copper darker than a penny'
+    if compared is not None:
+        diags[:] = [
+            d for d in diags if not (d.span and d.span.start >= compared[2])
+        ]  # its notes and errors: this one says it
+        diags.append(compared[1])
+        return compared[0]
     listed = _slashes_listing(words)  # 'matte/black/rubber': a list, not alternatives
     if listed is not None and (node := _parsed(listed, text, lexicon)) is not None:
         whole_line = words[0].span.to(words[-1].span)
@@ -774,6 +781,43 @@ def _rereadings(
     for clause in clauses:
         if clause is not None:
             yield clause[0], [*notes, clause[1]]
+
+
+def _compared_after_noun(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, Diagnostic, int] | None:
+    """'copper darker than a penny', 'brushed nickel less shiny than a faucet': a material, a
+    comparative (with its degree words; 'more'/'less' with the word it compares) and 'than' + what
+    it is compared with: the material one step that way, as the inline comparative ('darker
+    copper'), what it is compared with read past; the reading, its note and where the comparative
+    starts (the notes from there on are replaced by this one). None for any other line."""
+    than_words = Tagger.of(lexicon).formation().rules.comparison
+    line_start = words[0].span.line_start if words else 0
+    before_than = [
+        i
+        for i, w in enumerate(words)
+        if text[w.span.end - line_start :].split(None, 1)[:1] in ([t] for t in than_words)
+    ]
+    if not before_than or before_than[0] + 1 >= len(words):  # the tagger drops 'than' (and 'a'): 'darker', 'penny'
+        return None
+    at = before_than[0]
+    start = at if _tagged(words[at], "REFINE") else at - 1  # 'less shiny than': 'less' compares 'shiny'
+    if start < 1 or not _tagged(words[start], "REFINE"):
+        return None
+    while start > 1 and _tagged(words[start - 1], "ADV"):  # 'a bit darker than'
+        start -= 1
+    node = _parsed([*words[start : at + 1], *words[:start]], text, lexicon)
+    if not isinstance(node, ast.Material):
+        return None
+    thing = words[at + 1].span.to(words[-1].span)
+    comparative, material = written_text(words[start : at + 1]), written_text(words[:start])
+    other = text[words[at].span.end - line_start :].split(None, 1)[1].strip()  # after 'than': 'a penny'
+    note = (
+        f"read '{text.strip()}' as '{comparative} {material}': one step {comparative}, not measured against '{other}'"
+    )
+    return node, Diagnostic(words[0].span.to(thing), Severity.NOTE, NOTE_CODE, note), words[start].span.start
+
+
+def _tagged(word: Tagged, tag: str) -> bool:
+    return any(c.tag == tag for c in word.candidates)
 
 
 def _slashes_listing(words: list[Tagged]) -> list[Tagged] | None:

@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from cnlmc.api import compile_source, lexicon_for
-from tests.language.meaning import compiled, material, refined, same_look
+from tests.language.meaning import compiled, lch, material, refined, same_look
 
 
 @pytest.mark.parametrize(
@@ -90,3 +90,35 @@ def test_aniline_leather_is_smoother_than_pigmented_leather_and_low_iron_glass_l
     clear = material("low-iron glass")["params"]["base_color"]
     float_glass = material("glass")["params"]["base_color"]
     assert max(clear) - min(clear) < max(float_glass) - min(float_glass)
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [
+        ("copper darker than a penny", "darker copper"),
+        ("concrete rougher than sandpaper", "rougher concrete"),
+        ("brushed nickel less shiny than a normal faucet", "less shiny brushed nickel"),
+        ("oak a bit lighter than my table", "a bit lighter oak"),
+    ],
+)
+def test_a_material_compared_with_a_thing_is_one_step_that_way(said, meant):
+    assert same_look(material(said), material(meant))
+    result = compiled(said)
+    assert result.ok and any("not measured against" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [
+        ("brown swayed jacket", "brown suede jacket"),
+        ("would floor", "wood floor"),
+        ("shiny but also totally matte black paint", "shiny but totally matte black paint"),
+    ],
+)
+def test_dictation_words(said, meant):
+    assert same_look(material(said), material(meant))
+
+
+def test_more_green_than_blue_moves_teal_toward_green():
+    teal, greener = material("teal paint"), material("teal paint more green than blue")
+    assert lch(greener["params"]["base_color"])[2] < lch(teal["params"]["base_color"])[2]  # hue angle toward green
