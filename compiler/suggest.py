@@ -9,6 +9,7 @@ far-fetched look-alike (pewter -> water, beech -> bleach: 2-3 edits on 5-7 lette
 
 from __future__ import annotations
 
+import re
 from bisect import bisect_left
 from collections import Counter, OrderedDict
 from collections.abc import Iterable, Mapping, Sequence
@@ -32,7 +33,25 @@ def teaching() -> Mapping[str, Any]:
     import tomllib
 
     text = (package_folder("cnlmc.stdlib") / "data" / "teaching.toml").read_text("utf-8")
-    return MappingProxyType(tomllib.loads(text))
+    return MappingProxyType(with_unmarked_contractions(tomllib.loads(text)))
+
+
+#: a contraction typed or dictated without its apostrophe that is another word: not added
+UNMARKED_WORDS = frozenset(("its", "were", "well", "shed", "wed", "id", "ill", "hell", "lets", "shell", "whore"))
+APOSTROPHE = re.compile(r"(?<=\w)['’](?=\w)")
+
+
+def with_unmarked_contractions(data: Any) -> Any:
+    """The teaching's phrase lists with each phrase holding a contraction also as typed without its
+    apostrophe ("that's gone" -> "thats gone", "what's a good" -> "whats a good"), unless that makes
+    a single other word ('it's' -> 'its'): dictation and phones leave the mark out."""
+    if isinstance(data, dict):
+        return {k: with_unmarked_contractions(v) for k, v in data.items()}
+    if not isinstance(data, list) or not all(isinstance(x, str) for x in data):
+        return data
+    extra = [APOSTROPHE.sub("", x) for x in data if APOSTROPHE.search(x)]
+    seen = set(data)
+    return data + [x for x in dict.fromkeys(extra) if x not in seen and x not in UNMARKED_WORDS]
 
 
 def everyday_noun() -> str:

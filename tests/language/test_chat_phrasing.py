@@ -100,3 +100,18 @@ def test_more_of_a_feature_that_cannot_form_warns_and_less_of_an_absent_one_stil
 def test_chat_words_for_features(said, meant):
     assert same_look(material(said), material(meant))
     assert material(said)["maps"] == material(meant)["maps"]
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [("copper thats gone green", "copper that's gone green"), ("brass thats gone dull", "brass that's gone dull")],
+)
+def test_a_contraction_without_its_apostrophe_reads_as_with_it(said, meant):
+    assert same_look(material(said), material(meant))
+
+
+def test_a_contraction_that_is_another_word_without_its_apostrophe_is_not_added():
+    from cnlmc.suggest import with_unmarked_contractions
+
+    data = with_unmarked_contractions({"x": ["it's", "that's gone", "we'll"], "y": {"k": ["don't"]}})
+    assert data == {"x": ["it's", "that's gone", "we'll", "thats gone"], "y": {"k": ["don't", "dont"]}}
