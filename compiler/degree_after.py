@@ -26,7 +26,7 @@ def degrees_after(words: Sequence[Tagged]) -> tuple[list[Tagged], list[Diagnosti
         if degree is None:
             out.append(word)
             continue
-        before, moved = _placed(out[-1], degree, word.span)
+        before, moved = placed_before(out[-1], degree, word.span)
         out[-1:] = [before, moved]
         note = f"read '{out[-1].text} {word.text}' as '{degree} {moved.text}'"
         notes.append(
@@ -51,7 +51,7 @@ def _after(word: Tagged) -> str | None:
     return table.get(word.text.lower())
 
 
-def _placed(word: Tagged, degree: str, said: Span) -> tuple[Tagged, Tagged]:
+def placed_before(word: Tagged, degree: str, said: Span) -> tuple[Tagged, Tagged]:
     """The degree word at the describing word's start, and that word one character in (the parser
     keys words by start), both implied by what was said."""
     s = word.span
@@ -60,3 +60,24 @@ def _placed(word: Tagged, degree: str, said: Span) -> tuple[Tagged, Tagged]:
     )
     moved = Tagged(word.text, Span(s.start + 1, s.end, s.line, s.col + 1), word.candidates, implied_by=s)
     return before, moved
+
+
+def simile(words: Sequence[Tagged]) -> tuple[list[Tagged], Span, str] | None:
+    """'rough as sandpaper', 'smooth as a mirror metal', 'shiny as glass': a describing word, then
+    'as' and a thing (up to a comma or the end): the describing word at 'very' (a simile says it
+    strongly), the thing left out; the words, the span left out and the word's text. None when no
+    'as' follows a describing word."""
+    for i in range(1, len(words) - 1):
+        if words[i].text.lower() != "as" or not _qualified(words[i - 1]):
+            continue
+        end = next((k for k in range(i + 1, len(words)) if not words[k].text[:1].isalnum()), len(words))
+        nouns = [k for k in range(i + 1, end) if any(c.tag == "NOUN" for c in words[k].candidates)]
+        named_before = any(c.tag == "NOUN" for w in words[: i - 1] for c in w.candidates)
+        if end == len(words) and len(nouns) > 1 and not named_before:
+            end = nouns[-1]  # 'smooth as a mirror metal': the last noun is the material
+        if end <= i + 1:
+            continue
+        before, moved = placed_before(words[i - 1], "very", words[i].span.to(words[end - 1].span))
+        out = [*words[: i - 1], before, moved, *words[end:]]
+        return out, words[i].span.to(words[end - 1].span), words[i - 1].text
+    return None

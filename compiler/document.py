@@ -9,7 +9,7 @@ from contextvars import ContextVar
 from dataclasses import replace
 
 from . import ast
-from .degree_after import degrees_after
+from .degree_after import degrees_after, simile
 from .diagnostics import Diagnostic, Severity, error
 from .lexicon import Lexicon
 from .line_parts import PART_MARKS, Reader, by_parts, material_then_comparatives, part_cuts
@@ -317,6 +317,10 @@ def _parsed_line(
         return None
     words, after = degrees_after(words)  # 'shiny af': very shiny
     diags.extend(after)
+    if tag_diags and any(w.unknown and w.text.lower() == "as" for w in words):
+        likened = _simile_reading(words, text, tagger.lexicon, diags)  # 'concrete smooth as glass'
+        if likened is not None:
+            return likened
     try:
         shape, picks = parse_line_shape(words, tagger.lexicon.caches.shapes)
     except ParseFailure as failure:
@@ -382,6 +386,9 @@ def _failed_line(
     if named is not None:
         diags.append(named[1])
         return named[0]
+    likened = _simile_reading(words, text, lexicon, diags)  # 'rough as sandpaper': very rough
+    if likened is not None:
+        return likened
     compared = _compared_after_noun(words, text, lexicon)  # 'copper darker than a penny'
     if compared is not None:
         diags[:] = [
@@ -781,6 +788,27 @@ def _rereadings(
     for clause in clauses:
         if clause is not None:
             yield clause[0], [*notes, clause[1]]
+
+
+def _simile_reading(words: list[Tagged], text: str, lexicon: Lexicon, diags: list[Diagnostic]) -> ast.Item | None:
+    """The line read with its simile ('concrete smooth as glass' = very smooth concrete: cnlmc.
+    degree_after.simile), the errors inside the simile replaced by a note; None when it has none or
+    does not read so."""
+    likened = simile(words)
+    if likened is None:
+        return None
+    node = _parsed(likened[0], text, lexicon) or _noun_first_item(likened[0], text, lexicon)
+    if node is None:
+        return None
+    left, word = likened[1], likened[2]
+    diags[:] = [d for d in diags if not (d.span and left.start <= d.span.start < left.end)]
+    said = text[left.start - words[0].span.line_start : left.end - words[0].span.line_start]
+    diags.append(
+        Diagnostic(
+            left, Severity.NOTE, NOTE_CODE, f"read '{word} {said}' as 'very {word}': a likeness says it strongly"
+        )
+    )
+    return node
 
 
 def _compared_after_noun(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, Diagnostic, int] | None:

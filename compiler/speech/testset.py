@@ -175,6 +175,10 @@ def read_pcm(path: Path) -> bytes:
 
 
 def _run(command: list[str]) -> None:
+    """Run a tool; sox in its repeatable mode (-R: its dither seeded), so that the same utterance is
+    the same audio in every run (unseeded dither made a test decode flip about once in many runs)."""
+    if command[0] == "sox":
+        command = ["sox", "-R", *command[1:]]
     subprocess.run(command, check=True, capture_output=True, timeout=60)
 
 

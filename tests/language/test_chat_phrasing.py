@@ -115,3 +115,17 @@ def test_a_contraction_that_is_another_word_without_its_apostrophe_is_not_added(
 
     data = with_unmarked_contractions({"x": ["it's", "that's gone", "we'll"], "y": {"k": ["don't"]}})
     assert data == {"x": ["it's", "that's gone", "we'll", "thats gone"], "y": {"k": ["don't", "dont"]}}
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [
+        ("concrete smooth as glass", "very smooth concrete"),
+        ("steel, shiny as a mirror", "very shiny steel"),
+        ("old iron, high roughness", "old rough iron"),
+        ("deep navy blue plastic, low roughness", "deep navy blue glossy plastic"),
+        ("teal plastic albedo, kinda satin", "teal plastic, kinda satin"),
+    ],
+)
+def test_similes_and_a_3d_artists_words(said, meant):
+    assert same_look(material(said), material(meant))
