@@ -62,13 +62,24 @@ def placed_before(word: Tagged, degree: str, said: Span) -> tuple[Tagged, Tagged
     return before, moved
 
 
-def simile(words: Sequence[Tagged]) -> tuple[list[Tagged], Span, str] | None:
+def simile_word() -> str:
+    """The word of a simile ('as': teaching.toml [hedges] simile)."""
+    from .suggest import teaching
+
+    return str(teaching()["hedges"]["simile"]["word"])
+
+
+def simile(words: Sequence[Tagged]) -> tuple[list[Tagged], Span, str, str] | None:
     """'rough as sandpaper', 'smooth as a mirror metal', 'shiny as glass': a describing word, then
-    'as' and a thing (up to a comma or the end): the describing word at 'very' (a simile says it
-    strongly), the thing left out; the words, the span left out and the word's text. None when no
-    'as' follows a describing word."""
+    the simile's word and a thing (up to a comma or the end): the describing word at the simile's
+    degree (teaching.toml [hedges] simile: 'very', a simile says it strongly), the thing left out;
+    the words, the span left out, the word's text and the degree. None when no simile follows a
+    describing word."""
+    from .suggest import teaching
+
+    said, degree = simile_word(), str(teaching()["hedges"]["simile"]["degree"])
     for i in range(1, len(words) - 1):
-        if words[i].text.lower() != "as" or not _qualified(words[i - 1]):
+        if words[i].text.lower() != said or not _qualified(words[i - 1]):
             continue
         end = next((k for k in range(i + 1, len(words)) if not words[k].text[:1].isalnum()), len(words))
         nouns = [k for k in range(i + 1, end) if any(c.tag == "NOUN" for c in words[k].candidates)]
@@ -77,7 +88,7 @@ def simile(words: Sequence[Tagged]) -> tuple[list[Tagged], Span, str] | None:
             end = nouns[-1]  # 'smooth as a mirror metal': the last noun is the material
         if end <= i + 1:
             continue
-        before, moved = placed_before(words[i - 1], "very", words[i].span.to(words[end - 1].span))
-        out = [*words[: i - 1], before, moved, *words[end:]]
-        return out, words[i].span.to(words[end - 1].span), words[i - 1].text
+        left = words[i].span.to(words[end - 1].span)
+        before, moved = placed_before(words[i - 1], degree, left)
+        return [*words[: i - 1], before, moved, *words[end:]], left, words[i - 1].text, degree
     return None

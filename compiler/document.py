@@ -9,8 +9,9 @@ from contextvars import ContextVar
 from dataclasses import replace
 
 from . import ast
-from .degree_after import degrees_after, simile
+from .degree_after import degrees_after, simile, simile_word
 from .diagnostics import Diagnostic, Severity, error
+from .joins import of_tag
 from .lexicon import Lexicon
 from .line_parts import PART_MARKS, Reader, by_parts, material_then_comparatives, part_cuts
 from .lines import iter_lines
@@ -317,7 +318,7 @@ def _parsed_line(
         return None
     words, after = degrees_after(words)  # 'shiny af': very shiny
     diags.extend(after)
-    if tag_diags and any(w.unknown and w.text.lower() == "as" for w in words):
+    if tag_diags and any(w.unknown and w.text.lower() == simile_word() for w in words):
         likened = _simile_reading(words, text, tagger.lexicon, diags)  # 'concrete smooth as glass'
         if likened is not None:
             return likened
@@ -800,14 +801,11 @@ def _simile_reading(words: list[Tagged], text: str, lexicon: Lexicon, diags: lis
     node = _parsed(likened[0], text, lexicon) or _noun_first_item(likened[0], text, lexicon)
     if node is None:
         return None
-    left, word = likened[1], likened[2]
+    _, left, word, degree = likened
     diags[:] = [d for d in diags if not (d.span and left.start <= d.span.start < left.end)]
     said = text[left.start - words[0].span.line_start : left.end - words[0].span.line_start]
-    diags.append(
-        Diagnostic(
-            left, Severity.NOTE, NOTE_CODE, f"read '{word} {said}' as 'very {word}': a likeness says it strongly"
-        )
-    )
+    note = f"read '{word} {said}' as '{degree} {word}': a likeness says it strongly"
+    diags.append(Diagnostic(left, Severity.NOTE, NOTE_CODE, note))
     return node
 
 
@@ -819,18 +817,13 @@ def _compared_after_noun(words: list[Tagged], text: str, lexicon: Lexicon) -> tu
     starts (the notes from there on are replaced by this one). None for any other line."""
     than_words = Tagger.of(lexicon).formation().rules.comparison
     line_start = words[0].span.line_start if words else 0
-    before_than = [
-        i
-        for i, w in enumerate(words)
-        if text[w.span.end - line_start :].split(None, 1)[:1] in ([t] for t in than_words)
-    ]
-    if not before_than or before_than[0] + 1 >= len(words):  # the tagger drops 'than' (and 'a'): 'darker', 'penny'
+    at = next((i for i, w in enumerate(words) if _next_word(text, w.span.end - line_start) in than_words), None)
+    if at is None or at + 1 >= len(words):  # the tagger drops 'than' (and 'a'): 'darker', 'penny'
         return None
-    at = before_than[0]
-    start = at if _tagged(words[at], "REFINE") else at - 1  # 'less shiny than': 'less' compares 'shiny'
-    if start < 1 or not _tagged(words[start], "REFINE"):
+    start = at if of_tag(words[at], "REFINE") else at - 1  # 'less shiny than': 'less' compares 'shiny'
+    if start < 1 or not of_tag(words[start], "REFINE"):
         return None
-    while start > 1 and _tagged(words[start - 1], "ADV"):  # 'a bit darker than'
+    while start > 1 and of_tag(words[start - 1], "ADV"):  # 'a bit darker than'
         start -= 1
     node = _parsed([*words[start : at + 1], *words[:start]], text, lexicon)
     if not isinstance(node, ast.Material):
@@ -844,8 +837,10 @@ def _compared_after_noun(words: list[Tagged], text: str, lexicon: Lexicon) -> tu
     return node, Diagnostic(words[0].span.to(thing), Severity.NOTE, NOTE_CODE, note), words[start].span.start
 
 
-def _tagged(word: Tagged, tag: str) -> bool:
-    return any(c.tag == tag for c in word.candidates)
+def _next_word(text: str, at: int) -> str:
+    """The lower-case word of the line's text that follows column `at` ('' at its end)."""
+    rest = text[at:].split(None, 1)
+    return rest[0].lower() if rest else ""
 
 
 def _slashes_listing(words: list[Tagged]) -> list[Tagged] | None:
@@ -855,13 +850,13 @@ def _slashes_listing(words: list[Tagged]) -> list[Tagged] | None:
 
     out = list(words)
     for i in range(1, len(words) - 1):
-        if words[i].text != "/" or _kinds(words[i - 1]) & _kinds(words[i + 1]):
+        if words[i].text != "/" or _tags(words[i - 1]) & _tags(words[i + 1]):
             continue
         out[i] = implied_comma(words[i + 1])
     return out if out != words else None
 
 
-def _kinds(word: Tagged) -> set[str]:
+def _tags(word: Tagged) -> set[str]:
     return {c.tag for c in word.candidates}
 
 

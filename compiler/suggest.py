@@ -29,29 +29,40 @@ RECENT_WORDS = 256
 
 @lru_cache(maxsize=1)
 def teaching() -> Mapping[str, Any]:
-    """stdlib/data/teaching.toml, read once per process (immutable package data)."""
+    """stdlib/data/teaching.toml, read once per process (immutable package data), its phrases also
+    without their apostrophes (with_unmarked_contractions)."""
+    return MappingProxyType(with_unmarked_contractions(_teaching_file()))
+
+
+@lru_cache(maxsize=1)
+def _teaching_file() -> dict[str, Any]:
+    """stdlib/data/teaching.toml as written."""
     import tomllib
 
-    text = (package_folder("cnlmc.stdlib") / "data" / "teaching.toml").read_text("utf-8")
-    return MappingProxyType(with_unmarked_contractions(tomllib.loads(text)))
+    return tomllib.loads((package_folder("cnlmc.stdlib") / "data" / "teaching.toml").read_text("utf-8"))
 
 
-#: a contraction typed or dictated without its apostrophe that is another word: not added
-UNMARKED_WORDS = frozenset(("its", "were", "well", "shed", "wed", "id", "ill", "hell", "lets", "shell", "whore"))
 APOSTROPHE = re.compile(r"(?<=\w)['’](?=\w)")
 
 
-def with_unmarked_contractions(data: Any) -> Any:
+def with_unmarked_contractions(data: dict[str, Any]) -> dict[str, Any]:
     """The teaching's phrase lists with each phrase holding a contraction also as typed without its
     apostrophe ("that's gone" -> "thats gone", "what's a good" -> "whats a good"), unless that makes
-    a single other word ('it's' -> 'its'): dictation and phones leave the mark out."""
+    one of its [unmarked_contractions] not_words ('it's' -> 'its'): dictation and phones leave the
+    mark out (the teaching's own not_words where `data` has none)."""
+    table = data.get("unmarked_contractions") or _teaching_file()["unmarked_contractions"]
+    unmarked: dict[str, Any] = _unmarked(data, frozenset(table["not_words"]))
+    return unmarked
+
+
+def _unmarked(data: Any, not_words: frozenset[str]) -> Any:
     if isinstance(data, dict):
-        return {k: with_unmarked_contractions(v) for k, v in data.items()}
+        return {k: _unmarked(v, not_words) for k, v in data.items()}
     if not isinstance(data, list) or not all(isinstance(x, str) for x in data):
         return data
     extra = [APOSTROPHE.sub("", x) for x in data if APOSTROPHE.search(x)]
     seen = set(data)
-    return data + [x for x in dict.fromkeys(extra) if x not in seen and x not in UNMARKED_WORDS]
+    return data + [x for x in dict.fromkeys(extra) if x not in seen and x not in not_words]
 
 
 def everyday_noun() -> str:

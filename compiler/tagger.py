@@ -86,9 +86,17 @@ def _plain_words(line: str) -> list[tuple[str, int]] | None:
 
 
 RawToken = tuple[str, int]  # a word's text and 0-based column
-_COLON = (Candidate("COLON", ":", "punct"),)
+
+
+def _named(tagged: list[Tagged], text: str, span: Span, colon: Tagged) -> None:
+    """A line's name (NAME) and its colon, written ('hull: ...') or implied ('PT-02 ...')."""
+    tagged.append(Tagged(text, span, (Candidate("NAME", text, "name"),)))
+    tagged.append(colon)
+
+
+_COLON = (Candidate("COLON", ":", "punct"),)  # the name's colon (a Candidate is frozen)
 #: a finish schedule's code ('PT-02', 'FIN-07', 'WD3'): letters, an optional mark, digits
-SCHEDULE_CODE = re.compile(r"[A-Za-z]{1,4}[-.]?\d{1,4}[A-Za-z]?")  # the name's colon (a Candidate is frozen)
+SCHEDULE_CODE = re.compile(r"[A-Za-z]{1,4}[-.]?\d{1,4}[A-Za-z]?")
 WordKey = tuple[str, ...]  # the lower-case words of a (multi-word) form
 
 #: How many word forms a Tagger remembers (known, inflected and unknown ones alike). An entry is
@@ -262,8 +270,7 @@ class Tagger:
         first_col, (last_text, last_col) = raw[0][1], raw[colon - 1]
         text = raw[0][0] if colon == 1 else " ".join([t for t, _c in raw[:colon]])  # 'm12', 'hull', 'deck two'
         span = line_span(line_no, first_col + 1, last_col + len(last_text) - first_col, offset)
-        tagged.append(Tagged(text, span, (Candidate("NAME", text, "name"),)))
-        tagged.append(Tagged(":", line_span(line_no, raw[colon][1] + 1, 1, offset), _COLON))
+        _named(tagged, text, span, Tagged(":", line_span(line_no, raw[colon][1] + 1, 1, offset), _COLON))
         return colon + 1
 
     def _code_name(
@@ -273,9 +280,9 @@ class Tagger:
         'PT-02: ...' does (NAME and a colon implied on the space after it), with a note."""
         text, col = raw[0]
         span = line_span(line_no, col + 1, len(text), offset)
-        tagged.append(Tagged(text, span, (Candidate("NAME", text, "name"),)))
-        colon = line_span(line_no, col + len(text) + 1, 1, offset)
-        tagged.append(Tagged(":", colon, _COLON, implied_by=span))
+        _named(
+            tagged, text, span, Tagged(":", line_span(line_no, col + len(text) + 1, 1, offset), _COLON, implied_by=span)
+        )
         note = f"read '{text}' as the material's name (a schedule code), as '{text}: ...' names it"
         diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, note))
         return 1

@@ -11,7 +11,7 @@ from ..degrees import weighted_map_value
 from ..graphs import graph_params
 from ..lexicon import Entry
 from ..state import Context, MaterialState
-from .base import _map_ref, applies_to, noun_of
+from .base import _map_ref
 
 __all__ = ["draw_feature_maps", "graphs_of", "roles_of", "weighted_map"]
 
@@ -29,25 +29,6 @@ def draw_feature_maps(
                     state.maps[role] = _map_ref(weighted_map(ref, weight), ctx)
         for role in roles_of(state, graph):
             state.note(f"maps.{role}", graph, rule, words)
-
-
-def draw_feature(
-    state: MaterialState, ctx: Context, entry: Entry, weight: float, words: tuple[ast.Word, ...]
-) -> Entry | None:
-    """A feature's maps at the weight: its own, or those of the adjective it stands for ('rust
-    spots': what 'rusty' draws, at the feature's own weight). None when drawn; the adjective when
-    it does not apply to the material (nothing drawn: rust on oak)."""
-    if entry.get("maps"):
-        draw_feature_maps(state, ctx, entry, weight, words)
-        return None
-    adjective = ctx.lexicon.require("adjectives", str(entry.get("adjective")))
-    if not applies_to(noun_of(state), adjective):
-        return adjective
-    weight *= float(entry.get("weight", 1.0))
-    for role, ref in adjective.get("maps", {}).items():
-        state.maps[role] = _map_ref(weighted_map(ref, weight), ctx)
-        state.note(f"maps.{role}", ref["graph"], f"adjectives.{adjective.key}.maps (weight {weight:g})", words)
-    return None
 
 
 def graphs_of(entry: Entry) -> list[str]:

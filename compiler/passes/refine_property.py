@@ -9,11 +9,11 @@ from ..graphs import graph_params
 from ..lexicon import Entry
 from ..state import Context, MaterialState
 from ..tagged import NOTE_CODE
-from .base import noun_of
+from .base import applies_to, noun_of
 from .bracket import Move, bracket_move, scaled_steps
-from .feature_maps import draw_feature
 from .refine_colour import refine_saturation
 from .refine_target import highlight_shown, item_words, move_sigma_too, note_unmoved_number, surface
+from .words import draw_feature
 
 
 def refine_property(
@@ -94,11 +94,12 @@ def draw_absent_feature(state: MaterialState, ctx: Context, prop: Entry, item: a
     naming it would ('with a patina'), with a note saying so."""
     feature = ctx.lexicon.require("features", str(prop.get("draws")))
     said = " ".join(w.text for w in sorted(item_words(item), key=lambda w: w.span.start))
-    unfit = draw_feature(state, ctx, feature, weight, item_words(item))
     noun = noun_of(state).key
-    if unfit is not None:
-        note = unfit.get("applies_note", f"it applies to {', '.join(unfit.get('applies_to'))}")
+    drawn = ctx.lexicon.entry("adjectives", str(feature.get("adjective"))) if feature.get("adjective") else None
+    if drawn is not None and not applies_to(noun_of(state), drawn):  # rust on oak: nothing drawn
+        note = drawn.get("applies_note", f"it applies to {', '.join(drawn.get('applies_to'))}")
         state.diagnostics.append(warning(item.span, "W102", f"'{said}' does not apply to {noun}: {note}", ()))
         return
+    draw_feature(state, ctx, feature, weight, item_words(item))
     message = f"'{said}': {noun} had none, so it has some now (as 'with {feature.key}')"
     state.diagnostics.append(Diagnostic(item.span, Severity.NOTE, NOTE_CODE, message, ()))

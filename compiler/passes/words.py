@@ -246,10 +246,15 @@ def _draw_feature_on(state: MaterialState, ctx: Context, adjective: Entry, weigh
     key = table.get(noun.key) or table.get(noun.data.get("class"))
     if key is None:
         return
-    entry = ctx.lexicon.require("features", key)
+    draw_feature(state, ctx, ctx.lexicon.require("features", key), weight, words)
+
+
+def draw_feature(state: MaterialState, ctx: Context, entry: Entry, weight: float, words: Words) -> None:
+    """A feature's maps at the weight: its own, or those of the adjective it stands for ('rust
+    spots': what 'rusty' draws, at the feature's own weight)."""
     if entry.get("maps"):
         draw_feature_maps(state, ctx, entry, weight, words)
-    elif entry.get("adjective"):  # 'rust spots': what 'rusty' draws, at the feature's weight
+    elif entry.get("adjective"):
         drawn = ctx.lexicon.require("adjectives", str(entry.get("adjective")))
         _apply_maps(state, ctx, drawn, weight * float(entry.get("weight", 1.0)), words)
 
