@@ -66,3 +66,11 @@ def test_less_black_lightens_a_near_black_colour():
     session = refined("navy paint")
     L0 = lch(session.material["params"]["base_color"])[0]
     assert lch(session.refine("less black")["params"]["base_color"])[0] > L0
+
+
+def test_filled_travertine_keeps_few_open_pores_and_filling_is_for_travertine():
+    open_face = material("travertine")["maps"]["base_color"]["params"]["coverage"]
+    filled = material("filled travertine")["maps"]
+    assert filled["base_color"]["params"]["coverage"] < open_face / 2
+    assert filled["normal"]["params"]["coverage"] == filled["base_color"]["params"]["coverage"]
+    assert "W102" in [d.code for d in compiled("filled marble").diagnostics]
