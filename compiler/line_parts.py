@@ -76,6 +76,8 @@ def material_then_comparatives(
     parts = _parts_read(cuts[1:], text, line, offset, read, _courtesy)
     if parts is None or not parts[0] or not all(_comparatives_only(n) or _removal(n) for n in parts[0]):
         return None
+    if any(_comparatives_only(n) and _bare_like(n, text, offset) for n in parts[0]):
+        return None
     moved = material
     warned: list[Diagnostic] = []
     for node in parts[0]:
@@ -184,14 +186,22 @@ def _part_around(text: str, at: int) -> tuple[int, int]:
 
 
 def _comparatives_only(node: ast.Item) -> bool:
-    """A part of comparatives and nothing else ('a bit darker'; not 'more red': a colour named is a
-    refinement line's step, not a new colour)."""
+    """A part of comparatives and nothing else ('a bit darker', 'less yellow': a colour step moves
+    the material as the change line would, passes/refine.py); not a bare 'like' before a colour
+    ('paint, like navy' is no step towards navy: it stays an error)."""
     return (
         isinstance(node, ast.Refinement)
         and bool(node.items)
         and not (node.groups or node.coat or node.features or node.material or node.removed)
-        and not any(isinstance(item.target, ast.Colour) for item in node.items)
     )
+
+
+def _bare_like(node: ast.Item, text: str, offset: int) -> bool:
+    """A part whose colour step is a bare 'like' as written ('paint, like navy': no step towards
+    navy; it stays an error)."""
+    assert isinstance(node, ast.Refinement)
+    written = [text[item.word.span.start - offset : item.word.span.end - offset].lower() for item in node.items]
+    return any(isinstance(item.target, ast.Colour) and said == "like" for item, said in zip(node.items, written))
 
 
 def _courtesy(written: str) -> bool:

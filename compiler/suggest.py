@@ -127,6 +127,14 @@ class FormIndex:
                 out.append(form)
         return out[:limit]
 
+    def typos(self, word: str) -> list[tuple[int, str]]:
+        """(edits, form) of every form, of any category, within allowed_edits(word) edits of it."""
+        low = word.lower()
+        typos = self._recent.get(low)
+        if typos is None:
+            return [(edits, self.forms[i]) for edits, i in self._all_typos(low)]
+        return [(edits, self.forms[i]) for edits, i in typos]
+
     def forget_words(self) -> None:
         """Drop the typos remembered for recent words (the index itself stays)."""
         self._recent.clear()

@@ -39,7 +39,9 @@ __all__ = [
     "raw_tokens",
 ]
 
-TOKEN_RE = re.compile(r"[^\W\d_](?:[\w'’\-]*\w)?|\d+(?:\.\d+)?%?|[,;:&]|\S", re.UNICODE)
+#: 'w/' (with) is one token before a space or a word ('brass w/ patina', 'oak w/grain'); else a
+#: word, a number, a mark
+TOKEN_RE = re.compile(r"[wW]/(?=\s|$|[^\W\d_])|[^\W\d_](?:[\w'’\-]*\w)?|\d+(?:\.\d+)?%?|[,;:&]|\S", re.UNICODE)
 OPEN_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "REFINE")
 # a word that is a feature and an adjective or coat reads as the feature where both parse: only a 'with'
 # clause takes a feature ("with a matte finish": the surface; "with a blue glaze and fine cracks": two clauses)
@@ -190,6 +192,8 @@ class Tagger:
                     i += 1
                     continue
             i += self._tag_at(raw, i, line_no, offset, tagged, diags)
+        if not raw_marks and len(tagged) > 1 and of_tag(tagged[-1], "COMMA"):
+            tagged.pop()  # a mark spoken at the end of a line: 'brushed steel period'
         if raw_marks:
             tagged = _one_mark_between(tagged)
             if len(tagged) > 2:
@@ -245,7 +249,7 @@ class Tagger:
         rules = self.formation().rules
         lo, hi = 0, len(raw)
         for _round in range(2):  # '"Brushed steel".': the mark, then the quotes, then a mark inside
-            while hi - lo > 1 and raw[hi - 1][0] in rules.trailing:
+            while hi - lo > 1 and raw[hi - 1][0].lower() in rules.trailing:
                 hi -= 1
             if hi - lo > 1 and raw[lo][0] in rules.leading:
                 lo += 1
@@ -292,15 +296,24 @@ class Tagger:
     ) -> int:
         """Tag the entry starting at raw[i], longest multi-word form first; returns how many words it took."""
         text = raw[i][0]
-        for n in self.lengths_from.get(text.lower(), ()):
+        lengths, slipped = self.lengths_from.get(text.lower()), None
+        if lengths is None and i + 1 < len(raw) and text[:1].isalpha() and not self._candidates((text.lower(),)):
+            slipped = self.formation().entry_slip(text.lower(), raw[i + 1][0].lower(), self.followers)
+            lengths = self.lengths_from.get(slipped) if slipped else None  # 'stainls steel'
+        for n in lengths or ():
             if i + n <= len(raw):
                 said = tuple([t.lower() for t, _c in raw[i : i + n]])
+                if slipped:
+                    said = (slipped, *said[1:])
                 candidates = self._candidates(said)
                 if not candidates and n > 1:  # 'stainless steal': the entry that sounds the same
                     candidates = self._heard_entry(said, self._span(raw, i, n, line_no, offset), diags)
                 if candidates and n > 1 and self._gives_way(raw, i, n):
                     continue  # "dull red wine": 'dull' then the noun 'red wine', not the colour 'dull red'
                 if candidates:
+                    if slipped:
+                        note = f"read '{text}' as '{slipped}' (a slip of the keyboard)"
+                        diags.append(Diagnostic(self._span(raw, i, 1, line_no, offset), Severity.NOTE, NOTE_CODE, note))
                     tagged.append(
                         Tagged(
                             " ".join([t for t, _c in raw[i : i + n]]),
@@ -335,8 +348,32 @@ class Tagger:
                 reading = self.formation().read_use_last(text.lower(), raw[i - 1][0].lower())
             if reading is not None:
                 return self._formed(reading, raw, i, line_no, offset, tagged, diags)
+        if self._possessor(raw, i, tagged):  # 'grandma's old oak table'
+            diags.append(
+                Diagnostic(
+                    self._span(raw, i, 1, line_no, offset), Severity.NOTE, NOTE_CODE, _POSSESSOR_NOTE.format(text)
+                )
+            )
+            return 1
         tagged.append(self._unknown(raw[i], line_no, offset, diags))
         return 1
+
+    def _possessor(self, raw: list[RawToken], i: int, tagged: list[Tagged]) -> bool:
+        """Whether an unknown word says whose the thing is ('grandma's', 'the kids', teaching.toml
+        [possessors]): first in the line (after its name) or after an article, before more words."""
+        from .suggest import teaching
+
+        if i + 1 == len(raw) or not raw[i + 1][0][:1].isalpha():
+            return False
+        if tagged and not any(of_tag(tagged[-1], tag) for tag in ("ARTICLE", "COLON")):
+            return False
+        table = teaching()["possessors"]
+        word = raw[i][0].lower().replace("’", "'")
+        if word in table["not_possessive"]:
+            return False
+        if word.endswith(("'s", "s'")):
+            return word[:-2].isalpha()
+        return word.endswith("s") and (word[:-1] in table["people"] or word in table["people"])
 
     def _particle_of_participle(self, text: str, before: Tagged, diags: list[Diagnostic]) -> bool:
         """'more scratched up', 'beaten up leather': a particle after a participle says nothing the
@@ -356,18 +393,18 @@ class Tagger:
         follow as an entry's next word; a known word never reaches the word formation rules."""
         if word in seconds:
             return True
-        return not self._candidates((word,)) and self.formation().rules.homophones.get(word, word) in seconds
+        return not self._candidates((word,)) and self.formation().heard(word)[0] in seconds
 
     def _heard_entry(self, said: tuple[str, ...], span: Span, diags: list[Diagnostic]) -> tuple[Candidate, ...]:
         """The entry of several words one of which sounds like what was written ('stainless steal'),
         with a note; () when there is none."""
-        sounds = self.formation().rules.homophones
-        heard = tuple([sounds.get(w, w) for w in said])
-        candidates = self._candidates(heard) if heard != said else ()
+        formation = self.formation()
+        heard = [formation.heard(w) if not self._candidates((w,)) else (w, "") for w in said]
+        meant = tuple([h for h, _why in heard])
+        candidates = self._candidates(meant) if meant != said else ()
         if candidates:
-            changed = [f"'{w}' as '{h}'" for w, h in zip(said, heard) if w != h]
-            note = f"read {', '.join(changed)} (a word that sounds the same)"
-            diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, note))
+            changed = [f"'{w}' as '{h}' ({why})" for w, (h, why) in zip(said, heard) if w != h]
+            diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read {', '.join(changed)}"))
         return candidates
 
     def _formed(
@@ -645,6 +682,9 @@ def _dropped_separator(raw: list[RawToken], after: int, tagged: list[Tagged]) ->
     if after < len(raw) and raw[after][0] in (",", ";"):
         return 1
     return 0
+
+
+_POSSESSOR_NOTE = "read '{}' past: it says whose the thing is, not what it is made of"
 
 
 def _unknown_message(text: str) -> str:

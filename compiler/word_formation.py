@@ -24,7 +24,7 @@ remembers what it read (bounded), and lives in lexicon.caches.word_formation.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Container, Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -35,6 +35,7 @@ from .word_formation_rules import RESEMBLANCE_WORD_LISTS
 
 if TYPE_CHECKING:  # imported when first needed: the tagger imports this module only for an unknown word
     from .lexicon import Lexicon
+    from .typos import Slips
     from .wordnet import WordNet
 
 __all__ = ["NOTE_CODE", "Part", "Reading", "Rules", "WordFormation"]
@@ -121,6 +122,7 @@ class Rules:
         self.participle_endings = joined("compound_first", "participle_endings")
         self.first_synonyms = _merged_table(layers, "compound_first", "synonyms")
         self.homophones = _merged_table(layers, "homophones", "words")  # 'stainless steal
+        self.typos = _merged_typos([layer["typos"] for layer in layers])
         self.first_degrees = _merged_table(layers, "compound_first", "degrees")
         firsts = {*self.manners, *self.first_synonyms, *self.first_degrees}
         self.first_parts = tuple(
@@ -148,6 +150,7 @@ class WordFormation:
         self.wordnet_readings: WordNet | None = None  # read on first use
         self.resemblance = Resemblance(lexicon, self.rules.resemblance)
         self.spoken_words: Spoken | None = None  # made on first use
+        self.slips: Slips | None = None  # made on the first unknown word a slip may explain
 
     @classmethod
     def of(cls, lexicon: Lexicon, lookup: Lookup) -> WordFormation:
@@ -263,6 +266,7 @@ class WordFormation:
             self._feature_derived,
             self._split,
             self._head,
+            self._slip,
         )
         for rule in rules:
             found = rule(word)
@@ -283,6 +287,51 @@ class WordFormation:
         meant = self.rules.homophones.get(word)
         found = self._known(meant) if meant else ()
         return _whole(found, f"read '{word}' as '{meant}' (a word that sounds the same)") if found else None
+
+    def _slip(self, word: str) -> Reading | None:
+        """A slip of the keyboard ('brushd', 'alumnium'): the one lexicon word it is near (cnlmc.typos)."""
+        meant = self.slip_of(word)
+        found = self._known(meant) if meant else ()
+        return _whole(found, f"read '{word}' as '{meant}' (a slip of the keyboard)") if found else None
+
+    def slip_of(self, word: str) -> str | None:
+        """The one lexicon word an unknown word is a slip of, or None (cnlmc.typos)."""
+        slips = self._slips()
+        return None if slips is None else slips.meant(word, lambda a, b: self._known(a) == self._known(b))
+
+    def entry_slip(self, word: str, after: str, followers: Mapping[str, Container[str]]) -> str | None:
+        """The first word of an entry of several words that an unknown word is a slip of, where the
+        word after it is that entry's second ('stainls steel': stainless; one slip more than a word
+        alone may hold, as the entry's second word confirms it), or None."""
+        slips = self._slips()
+        if slips is None:
+            return None
+        heard = self.heard(after)[0] if not self._known(after) else after
+        starts = [first for first, seconds in followers.items() if after in seconds or heard in seconds]
+        return slips.meant_among(word, starts, extra=1)
+
+    def _slips(self) -> Slips | None:
+        """The slips index of these rules (None: this language reads no slips), made on first use."""
+        rules = self.rules.typos
+        if rules["off"] or not rules["reach"]:
+            return None
+        if self.slips is None:
+            from .suggest import teaching
+            from .typos import Slips, real_words
+
+            never = set(teaching()["never_suggest"])  # a slip of 'whit' is not a crude word
+            vocabulary = {w for form in self.lexicon.forms for w in form} - never
+            self.slips = Slips(vocabulary, real_words(rules["file"]), rules["reach"])
+        return self.slips
+
+    def heard(self, word: str) -> tuple[str, str]:
+        """The word an unknown word stands for inside an entry of several words ('stainless steal',
+        'soft tuch'), and why: a word that sounds the same, a slip, or itself ("")."""
+        sounds = self.rules.homophones.get(word)
+        if sounds is not None:
+            return sounds, "a word that sounds the same"
+        slipped = self.slip_of(word)
+        return (slipped, "a slip of the keyboard") if slipped else (word, "")
 
     def _joined(self, word: str) -> Reading | None:
         if not self.rules.join or "-" not in word:
@@ -729,6 +778,15 @@ def _merged_wordnet(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:
         "file": next((layer["file"] for layer in layers if layer["file"]), ""),
         "noun_roots": roots,
         "adjectives": list(dict.fromkeys(a for layer in layers for a in layer["adjectives"])),
+    }
+
+
+def _merged_typos(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:
+    """The [typos] rules of all layers: the first file and reach given; off when a layer says so."""
+    return {
+        "file": next((layer["file"] for layer in layers if layer["file"]), ""),
+        "reach": next((layer["reach"] for layer in layers if layer["reach"]), []),
+        "off": any(layer["off"] for layer in layers),
     }
 
 

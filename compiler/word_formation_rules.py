@@ -90,6 +90,7 @@ def empty_rules() -> dict[str, Any]:
         },
         "wordnet": {"file": "", "noun_roots": {}, "adjectives": []},
         "homophones": {"words": {}},
+        "typos": {"file": "", "reach": [], "off": False},
         "resemblance": {
             "forms": [],
             "endings": [],
@@ -128,6 +129,7 @@ def check_rules(c: Checker, data: dict[str, Any]) -> dict[str, Any]:
     rules["compound_first"] = _compound_first(c, data.get("compound_first", {}))
     rules["wordnet"] = _wordnet(c, data.get("wordnet", {}))
     rules["homophones"] = _homophones(c, data.get("homophones", {}))
+    rules["typos"] = _typos(c, data.get("typos", {}))
     rules["resemblance"] = _resemblance(c, data.get("resemblance", {}))
     return rules
 
@@ -193,6 +195,33 @@ def _homophones(c: Checker, raw: object) -> dict[str, Any]:
     c.known_keys(table, ("words",), path)
     pairs = c.table(table.get("words", {}), (*path, "words"))
     return {"words": {k.lower(): c.string(v, (*path, "words", k), blank=False).lower() for k, v in pairs.items()}}
+
+
+def _typos(c: Checker, raw: object) -> dict[str, Any]:
+    """[typos]: file (the real words never read as a slip, in stdlib/data), reach (a list of
+    {letters, edits}: a word of at least `letters` letters may be `edits` slips from the lexicon
+    word it is read as), off (true: this layer's language reads no slips; cnlmc.typos)."""
+    path: tuple[str | int, ...] = ("typos",)
+    table = c.table(raw, path)
+    c.known_keys(table, ("file", "reach", "off"), path)
+    name = c.string(table.get("file", ""), (*path, "file"))
+    if name and not wordnet_file(name).is_file():
+        c.fail((*path, "file"), f"no file '{name}' in stdlib/data (scripts/gen_real_words.py writes one)")
+    reach = []
+    for i, step in enumerate(c.array(table.get("reach", []), (*path, "reach"))):
+        step = c.table(step, (*path, "reach", i))
+        c.known_keys(step, ("letters", "edits"), (*path, "reach", i))
+        reach.append({key: _count(c, step.get(key), (*path, "reach", i, key)) for key in ("letters", "edits")})
+    off = table.get("off", False)
+    if not isinstance(off, bool):
+        c.fail((*path, "off"), "must be true or false")
+    return {"file": name, "reach": reach, "off": off}
+
+
+def _count(c: Checker, value: object, path: tuple[str | int, ...]) -> int:
+    if not isinstance(value, int) or isinstance(value, bool) or value < 0:
+        c.fail(path, "must be a whole number, 0 or more")
+    return value
 
 
 def _compound_first(c: Checker, raw: object) -> dict[str, Any]:

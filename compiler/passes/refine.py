@@ -47,11 +47,20 @@ def apply_inline_refinements(state: MaterialState, ctx: Context) -> MaterialStat
     ('less yellow gold' is gold, less yellow) and a gloss word after 'more' / 'less' is only the
     refinement's target ('less glossy plastic' is plastic, a step less glossy)."""
     for item in state.selection.refinements:
-        if item.target is not None and _describes_material(state, ctx, item):
+        if item.target is not None and _said_after_material(state.selection, item.target):
+            item = named_first(state, ctx, item)  # 'walnut, more red' moves walnut as the line 'more red'
+        elif item.target is not None and _describes_material(state, ctx, item):
             apply_group(state, ctx, _as_group(item.target), target="base")
         if not add_missing_map(state, ctx, item):  # 'rustier iron' = slightly rusty iron
             apply_refinement(state, ctx, item)
     return state
+
+
+def _said_after_material(material: ast.Material, target: ast.Word | ast.Colour) -> bool:
+    """Whether a comparative's target comes after the material's nouns ('walnut, more red', the
+    parts after the material that cnlmc.line_parts reads): it changes the material as the same
+    change line would, and is not one of its describing words."""
+    return bool(material.nouns) and target.span.start > max(noun.span.end for noun in material.nouns)
 
 
 def _describes_material(state: MaterialState, ctx: Context, item: ast.RefineItem) -> bool:

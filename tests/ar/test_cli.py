@@ -54,9 +54,9 @@ def test_ar_without_a_marker_is_a_clear_error_and_writes_nothing(tmp_path):
 
 
 def test_ar_with_a_bad_phrase_reports_it(tmp_path, photo):
-    r = cnlmc("ar", str(photo), "polished goldd", "-o", str(tmp_path / "o.png"))
+    r = cnlmc("ar", str(photo), "polished glod", "-o", str(tmp_path / "o.png"))
     assert r.returncode == 1
-    assert "unknown word 'goldd'" in r.stderr
+    assert "unknown word 'glod'" in r.stderr
 
 
 def test_preview_command_renders_a_png(tmp_path):

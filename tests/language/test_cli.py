@@ -27,9 +27,9 @@ def test_compile_from_stdin_to_a_file(tmp_path):
 def test_errors_exit_1_and_write_nothing(tmp_path):
     out = tmp_path / "m.json"
     out.write_text("previous")
-    r = cnlmc("compile", "-", "-o", str(out), stdin="polished brasz\n")
+    r = cnlmc("compile", "-", "-o", str(out), stdin="polished bras\n")
     assert r.returncode == 1
-    assert "<stdin>:1:10: error[E001]: unknown word 'brasz'" in r.stderr
+    assert "<stdin>:1:10: error[E001]: unknown word 'bras'" in r.stderr
     assert "did you mean 'brass'?" in r.stderr
     assert out.read_text() == "previous"
     assert "Traceback" not in r.stderr

@@ -529,7 +529,7 @@ def test_an_object_before_a_coat_alone_is_what_the_coat_is_on(phrase, same_as):
 
 @pytest.mark.parametrize(
     ("phrase", "wanted"),
-    [("blu boat paint", "blue"), ("brushd steel", "brushed"), ("shny guitar lacquer", "shiny")],
+    [("blu boat paint", "blue"), ("shny guitar lacquer", "shiny")],
 )
 def test_a_misspelling_still_gets_its_did_you_mean(phrase, wanted):
     result = compile_source(phrase, "t.cnl", LEX)

@@ -86,8 +86,8 @@ def test_session_refines_like_the_paper(paper):
 
 def test_session_rejects_a_bad_refinement_and_keeps_the_material(paper):
     s = Session("blue anodized aluminum", lexicon=paper)
-    with pytest.raises(ValueError, match="unknown word 'darkr'"):
-        s.refine("darkr")
+    with pytest.raises(ValueError, match="unknown word 'drkr'"):
+        s.refine("drkr")
     assert s.material["params"]["base_color"] == [0.0, 0.0, 1.0]
 
 

@@ -130,12 +130,12 @@ def test_a_streamed_document_with_an_error_writes_nothing(tmp_path):
     """The error is found after many materials were written to the staged temp: exit 1, the
     output untouched, no temp left, nothing on stdout."""
     source = tmp_path / "late.cnl"
-    source.write_text(mixed_source(300) + "m999: brushd steel\n", encoding="utf-8")
+    source.write_text(mixed_source(300) + "m999: brshd steel\n", encoding="utf-8")
     out = tmp_path / "late.ir.json"
     out.write_text("before\n")
     r = cnlmc("compile", str(source), "-o", str(out))
     assert r.returncode == 1
-    assert "late.cnl:301:7: error[E001]" in r.stderr and "brushd" in r.stderr
+    assert "late.cnl:301:7: error[E001]" in r.stderr and "brshd" in r.stderr
     assert out.read_text() == "before\n"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["late.cnl", "late.ir.json"]
     r = cnlmc("compile", str(source))

@@ -62,7 +62,7 @@ async def test_incremental_change_is_applied(client):
             types.VersionedTextDocumentIdentifier(uri=uri, version=2),
             [
                 types.TextDocumentContentChangePartial(
-                    range=types.Range(start, types.Position(start.line, start.character + 7)), text="plastik"
+                    range=types.Range(start, types.Position(start.line, start.character + 7)), text="plastid"
                 )
             ],
         )

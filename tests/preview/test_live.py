@@ -45,7 +45,7 @@ def test_darker_halves_the_colour_and_the_picture_follows(session):
 def test_a_misspelling_is_reported_with_a_caret_and_changes_nothing(session):
     session.draw()
     before = session.material
-    step = session.step("dakrer")
+    step = session.step("barker")  # a real word: never read as a slip (cnlmc.typos)
     assert not step.ok
     assert "error[E001]" in step.text and "^" in step.text and "did you mean 'darker'" in step.text
     assert session.material == before and session.lines == []
@@ -86,10 +86,12 @@ def test_cli_interactive_with_piped_input(renderer, tmp_path):
     material.write_text("white varnished oak\n")
     out = tmp_path / "p.png"
     proc = run_cnlmc(
-        "preview", str(material), "-o", str(out), "--size", "64", "--interactive", stdin="darker\nlightr\n"
+        "preview", str(material), "-o", str(out), "--size", "64", "--interactive", stdin="darker\nfighter\n"
     )
     assert proc.returncode == 0, proc.stderr
-    assert "base_color" in proc.stdout and "did you mean" in proc.stdout  # 'lightr' is no word: did you mean 'lighter'
+    assert (
+        "base_color" in proc.stdout and "did you mean" in proc.stdout
+    )  # 'fighter' is a real word, no slip: did you mean 'lighter'
     assert cv2.imread(str(out)) is not None
     assert "Traceback" not in proc.stderr
 

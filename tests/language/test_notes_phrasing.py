@@ -1,0 +1,135 @@
+"""Phrasing of quick notes, dictation and everyday speech (issue #14, categories of held-out sets
+46-48): a colour comparative after the material ('pine, less yellow'), 'w/' for 'with', punctuation
+spoken into dictation ('comma', 'period'), and a possessive before the material ('grandma's old oak
+table')."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.language.meaning import compiled, material, refined, same_look
+
+
+@pytest.mark.parametrize(
+    "first, change",
+    [("pine", "less yellow"), ("walnut", "more red"), ("grey plastic", "a bit more blue"), ("oak", "less orange")],
+)
+def test_a_colour_comparative_after_the_material_moves_it_as_the_change_line_does(first, change):
+    said = material(f"{first}, {change}")
+    assert said["params"]["base_color"] == refined(first, change).material["params"]["base_color"]
+    assert said["params"]["base_color"] != material(first)["params"]["base_color"]
+    assert same_look(material(f"{first} but {change}"), said)
+
+
+def test_more_of_a_colour_after_the_material_does_not_name_that_colour_first():
+    # 'walnut, more red' is walnut a step redder, not red-stained walnut made redder still
+    walnut, redder = material("walnut")["params"]["base_color"], material("walnut, more red")["params"]["base_color"]
+    red_walnut = material("red walnut")["params"]["base_color"]
+    assert redder[0] < red_walnut[0] and redder[0] > walnut[0]
+
+
+def test_a_named_colour_with_a_step_after_the_material_is_named_then_stepped():
+    moved = compiled("oak, darker red")
+    assert any("as red, then darker" in d.message for d in moved.diagnostics)
+    assert moved.ir["materials"][0]["params"]["base_color"][0] > moved.ir["materials"][0]["params"]["base_color"][2]
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [
+        ("brass w/ patina", "brass with patina"),
+        ("oak w/grain", "oak with grain"),
+        ("marble w/ grey veins", "marble with grey veins"),
+        ("copper W/ a green patina", "copper with a green patina"),
+    ],
+)
+def test_w_slash_is_with(said, meant):
+    a, b = material(said), material(meant)
+    assert same_look(a, b) and a.get("maps") == b.get("maps")
+
+
+def test_a_slash_after_other_letters_still_offers_alternatives():
+    assert len(compiled("copper/brass").ir["materials"]) == 2
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [
+        ("oak floor comma matte finish", "oak floor, matte finish"),
+        ("brushed steel period", "brushed steel"),
+        ("Brushed steel Period.", "brushed steel"),
+        ("white paint comma satin", "white paint, satin"),
+    ],
+)
+def test_punctuation_spoken_into_dictation(said, meant):
+    result = compiled(said)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert same_look(material(said), material(meant))
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [
+        ("grandma's old oak table", "old oak table"),
+        ("grandmas old oak table", "old oak table"),
+        ("my dad's old leather jacket", "my old leather jacket"),
+        ("the kids plastic toys", "the plastic toys"),
+        ("the kids' plastic toys", "the plastic toys"),
+        ("the client’s walnut desk", "the walnut desk"),
+    ],
+)
+def test_a_possessive_before_the_material_is_read_past_with_a_note(said, meant):
+    result = compiled(said)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert same_look(material(said), material(meant))
+    assert any("says whose the thing is" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize("said", ["grandmas", "it's brushed steel oak", "xyzzys oak", "oak grandma's"])
+def test_what_is_not_a_possessive_before_the_material_is_not_read_past(said):
+    assert not any("says whose" in d.message for d in compiled(said).diagnostics)
+
+
+@pytest.mark.parametrize(
+    "said, meant, slip",
+    [
+        ("brushd alu", "brushed alu", "brushd"),
+        ("carara marble", "carrara marble", "carara"),
+        ("mahogony", "mahogany", "mahogony"),
+        ("brused brass", "brushed brass", "brused"),
+        ("alumnium", "aluminium", "alumnium"),
+        ("anodzed aluminium", "anodized aluminium", "anodzed"),
+        ("vlevet cushion", "velvet cushion", "vlevet"),
+    ],
+)
+def test_a_slip_of_the_keyboard_reads_as_the_one_word_it_is_near(said, meant, slip):
+    result = compiled(said)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert same_look(material(said), material(meant))
+    assert any(
+        d.message.startswith(f"read '{slip}' as") and "slip of the keyboard" in d.message for d in result.diagnostics
+    )
+
+
+@pytest.mark.parametrize(
+    "said, why",
+    [
+        ("mate black metal", "a real English word ('mate') is never a slip"),
+        ("chrom", "two words equally near that end alike (chrome, chroma)"),
+        ("shny paint", "a word of four letters holds no slip"),
+        ("mahagony", "two slips in eight letters are beyond the reach"),
+    ],
+)
+def test_what_is_not_read_as_a_slip_stays_an_error_with_its_offer(said, why):
+    result = compiled(said)
+    assert not result.ok, why
+    assert not any("slip of the keyboard" in d.message for d in result.diagnostics), why
+
+
+def test_german_reads_no_slips():
+    from cnlmc.api import compile_source
+    from cnlmc.lexicon_load import load
+
+    assert any("slip of the keyboard" in d.message for d in compiled("brushd steel").diagnostics)
+    result = compile_source("brushd Stahl", "t.cnl", load([], "de"))
+    assert not result.ok and not any("slip of the keyboard" in d.message for d in result.diagnostics)
