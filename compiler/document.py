@@ -387,6 +387,9 @@ def _failed_line(
     if named is not None:
         diags.append(named[1])
         return named[0]
+    made = _made_of_reading(words, text, lexicon, diags)  # 'wood of oak', 'a cloak of grey wool'
+    if made is not None:
+        return made
     likened = _simile_reading(words, text, lexicon, diags)  # 'rough as sandpaper': very rough
     if likened is not None:
         return likened
@@ -469,6 +472,27 @@ def _failed_line(
         return first[0]
     diags.append(said)
     return implied
+
+
+def _made_of_reading(words: list[Tagged], text: str, lexicon: Lexicon, diags: list[Diagnostic]) -> ast.Item | None:
+    """The line as the material after its 'of' when the words before name a thing or a kind
+    (cnlmc.made_of), the errors of those words read past; None when the rest is no material."""
+    from .hedges import read_past
+    from .made_of import made_of
+
+    found = made_of(words, text)
+    if found is None:
+        return None
+    rest, note = found
+    said: list[Diagnostic] = []
+    node = _parsed(rest, text, lexicon)
+    if node is None and (failure := _failure_of(rest, lexicon)) is not None:
+        node = _failed_line(failure, rest, text, lexicon, said)
+    if not isinstance(node, ast.Material) or any(d.is_error for d in said):
+        return None
+    diags[:] = [d for d in diags if not read_past(d, [note])]
+    diags.extend([note, *said])
+    return node
 
 
 def _material_named_first(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[ast.Item, Diagnostic] | None:

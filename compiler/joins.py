@@ -228,7 +228,10 @@ class Joiner:
         said = " ".join(t.text for t in tagged[thing : noun + 1])
         note = f"read '{said}' as '{made[0].key}' (the material of the {tagged[thing].text})"
         diags.append(Diagnostic(tagged[thing].span.to(material.span), Severity.NOTE, NOTE_CODE, note))
-        joined = Tagged(said, material.span, made)
+        named = " ".join(
+            t.text for t in (*tagged[thing:after], material)
+        )  # 'cloak of wool': its describing words stay theirs
+        joined = Tagged(named, material.span, made)
         return [*tagged[:thing], *tagged[after:noun], joined, *tagged[noun + 1 :]]
 
     def _postfix(self, out: list[Tagged], diags: list[Diagnostic]) -> None:
@@ -1089,7 +1092,7 @@ def may_join(tagged: list[Tagged]) -> bool:
     a COAT or FEATURE reading) before another word or after a noun (see Joiner.joined); or ends in
     an unknown word after a noun ("pewter tankard") or with no noun ("a red bike"), or, with no
     'with' or comma, in a describing word after a noun ("Eiche geölt")."""
-    noun_before = noun_seen = noun_before_last = described_noun = with_seen = unknown_seen = False
+    noun_before = noun_seen = noun_before_last = described_noun = with_seen = unknown_seen = shade_before = False
     plain = True  # no 'with', no comma
     final = tagged[-1] if tagged else None
     for word in tagged:
@@ -1113,8 +1116,9 @@ def may_join(tagged: list[Tagged]) -> bool:
                     with_seen = True
                 if tag == "WITH" or not described_noun:  # "Buche massiv, geölt": a comma in the run stays plain
                     plain = False
-        if (noun and noun_before) or (head and (word is not final or noun_before)):
-            return True
+        if (noun and noun_before) or (head and (word is not final or noun_before or shade_before)):
+            return True  # shade_before: 'oak, dark colour' ends in its colour head
+        shade_before = any(c.tag in ("SHADE", "COLOR") for c in word.candidates)
         described_noun = describing and (noun_before or described_noun)
         noun_before_last, noun_before = noun_before, noun
         noun_seen = noun_seen or noun

@@ -133,3 +133,44 @@ def test_german_reads_no_slips():
     assert any("slip of the keyboard" in d.message for d in compiled("brushd steel").diagnostics)
     result = compile_source("brushd Stahl", "t.cnl", load([], "de"))
     assert not result.ok and not any("slip of the keyboard" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [
+        ("wood of oak", "oak"),
+        ("cloth of cotton, white colour", "white cotton"),
+        ("a wizard's staff of yew", "yew"),
+        ("the floor of tiles terracotta", "terracotta tiles"),
+        ("wood of oak, light colour", "light oak"),
+    ],
+)
+def test_a_thing_or_kind_of_a_material_is_the_material(said, meant):
+    result = compiled(said)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert same_look(material(said), material(meant))
+    assert any("(the material of the" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize("said", ["veins of gold", "a hint of blue", "two coats of varnish"])
+def test_of_after_a_feature_or_a_quantity_keeps_its_reading(said):
+    assert not any("(the material of the" in d.message for d in compiled(said).diagnostics)
+
+
+def test_a_thing_of_a_material_keeps_its_describing_words_once_in_the_name():
+    assert material("a cloak of grey wool")["name"] == "grey_cloak_of_wool"
+
+
+@pytest.mark.parametrize("shade", ["dark", "light"])
+def test_a_shade_with_its_colour_head_after_the_material(shade):
+    assert same_look(material(f"oak, {shade} colour"), material(f"{shade} oak"))
+
+
+def test_the_real_word_list_is_sorted_lower_case_and_never_a_lexicon_word():
+    from cnlmc.lexicon_load import load
+    from cnlmc.typos import real_words
+
+    words = real_words("real_words.txt")
+    vocabulary = {w for form in load([], None).forms for w in form}
+    assert len(words) > 5000 and {"barker", "fighter", "plastid"} <= words
+    assert all(w.isalpha() and w == w.lower() for w in words) and not words & vocabulary
