@@ -334,6 +334,10 @@ def _parsed_line(
     if tag_diags and any(d.is_error for d in diags[mark:]) and (whole := _whole_line(words, text, tagger.lexicon)):
         diags[mark:] = whole[1]  # 'rust on steel', 'deeper, closer to burgundy': the unknown word read
         return whole[0]
+    if tag_diags and any(d.is_error for d in diags[mark:]):  # "it's brushed steel": guesses parsed it
+        stated = _statement_reading(words, text, tagger.lexicon, diags)
+        if stated is not None:
+            return stated
     if tag_diags and isinstance(node, ast.Material):  # a change phrase read past: 'make it walnut'
         from .implied import material_change
 
@@ -470,8 +474,43 @@ def _failed_line(
             d for d in first[1] if d not in diags
         )  # 'steel brushed', 'oak a bit darker': when nothing else reads the line
         return first[0]
+    if implied is None and (stated := _statement_reading(words, text, lexicon, diags)) is not None:
+        return stated  # 'the table is oak', 'the throne was hewn from black basalt': when nothing else reads it
     diags.append(said)
     return implied
+
+
+#: the readings of the words before a statement's copula: a thing ('the table', 'the oak floor')
+_SUBJECT_TAGS = frozenset(("ARTICLE", "NOUN", "OBJECT", "NAME", "COLON"))
+
+
+def _statement_reading(words: list[Tagged], text: str, lexicon: Lexicon, diags: list[Diagnostic]) -> ast.Item | None:
+    """The line said as a statement about the thing, read as what it says of the material
+    (cnlmc.statements), the errors of the words read past gone; None when it is no statement."""
+    from .statements import read_statement, statement
+
+    found = statement(text) if words else None
+    if found is None:
+        return None
+    at = words[0].span
+    line_start = at.start - (at.col - 1)
+    subject = [w for w in words if w.implied_by is None and w.span.start - line_start < found.copula[0]]
+    if not all(w.unknown or any(c.tag in _SUBJECT_TAGS for c in w.candidates) for w in subject):
+        return None  # 'darker, it's sitting in a damp alley', 'duller like its old': no thing before it
+    names_material = any(
+        "nouns" in {e.category for e in lexicon.lookup((part,))} for w in subject for part in w.text.lower().split()
+    )
+
+    def parse(alone: str, said: list[Diagnostic]) -> ast.Item | None:
+        return parse_line(alone, at.line, line_start, Tagger.of(lexicon), said)
+
+    reading = read_statement(text, found, at.line, line_start, parse, names_material)
+    if reading is None:
+        return None
+    # the line's first reading failed: what it said goes, the statement's reading says it again
+    diags[:] = [d for d in diags if not (d.span is not None and d.span.line == at.line)]
+    diags.extend(reading[1])
+    return replace(reading[0], text=text)
 
 
 def _made_of_reading(words: list[Tagged], text: str, lexicon: Lexicon, diags: list[Diagnostic]) -> ast.Item | None:

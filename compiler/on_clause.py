@@ -165,7 +165,7 @@ def context_dropped(
     pattern = rf"(?:^|(?<=[\s,;.]))(?:{alternatives(table['context'])}|{pointed}|(?P<bare>{bare}))(?=[\s,.!?]|$)"
     likeness = tuple(w for w in table["context_pointing"] if w.split()[-1] == "like")
     for found in re.finditer(pattern, low):
-        if found.group("bare") and not _unknown_after(words, line_start + found.end()):
+        if found.group("bare") and not _unknown_after(words, line_start + found.end(), lexicon):
             continue  # 'oak, like walnut': a material after the likeness word
         if not found.group(0).startswith(likeness) and _names_a_material(words, line_start + found.start(), lexicon):
             continue  # 'steel on the oak', 'brass inlay on the walnut': a second material, not a place
@@ -198,13 +198,22 @@ def _tagged_alone(text: str, line: int, line_start: int, lexicon: Lexicon) -> li
     return [] if any(d.is_error for d in problems) else words
 
 
-def _unknown_after(words: Sequence[Tagged], at: int) -> bool:
-    """Whether the last word said from offset `at` on is one the lexicon does not know, and no word
-    there is a material's own name ('like old buildings', 'like soot'; not 'like walnut')."""
+def _unknown_after(words: Sequence[Tagged], at: int, lexicon: Lexicon) -> bool:
+    """Whether the last word said from offset `at` on is one the lexicon does not know or knows only
+    as a thing, and no word there is a material's own name ('like old buildings', 'like soot', 'like
+    window'; not 'like walnut')."""
     said = [w for w in words if w.implied_by is None and w.span.start >= at and w.text[:1].isalpha()]
-    if not said or not said[-1].unknown:
+    if not said or not (said[-1].unknown or _only_a_thing(said[-1], lexicon)):
         return False
-    return not any(not w.unknown and any(c.tag == "NOUN" for c in w.candidates) for w in said)
+    return not any(
+        not w.unknown and not _only_a_thing(w, lexicon) and any(c.tag == "NOUN" for c in w.candidates) for w in said
+    )
+
+
+def _only_a_thing(word: Tagged, lexicon: Lexicon) -> bool:
+    """Whether the lexicon knows the word only as an object ('window', 'phone'; not 'glass')."""
+    categories = {e.category for e in lexicon.lookup(tuple(word.text.lower().split()))}
+    return categories == {"objects"}
 
 
 def _names_a_material(words: Sequence[Tagged], at: int, lexicon: Lexicon) -> bool:

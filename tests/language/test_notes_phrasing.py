@@ -174,3 +174,47 @@ def test_the_real_word_list_is_sorted_lower_case_and_never_a_lexicon_word():
     vocabulary = {w for form in load([], None).forms for w in form}
     assert len(words) > 5000 and {"barker", "fighter", "plastid"} <= words
     assert all(w.isalpha() and w == w.lower() for w in words) and not words & vocabulary
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [("clear glass, like window", "clear glass"), ("black metal, like phone", "black metal")],
+)
+def test_a_bare_like_before_a_thing_is_read_past(said, meant):
+    result = compiled(said)
+    assert result.ok and same_look(material(said), material(meant))
+    assert any("read past 'like" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize("said", ["oak, like walnut", "paint, like navy"])
+def test_a_bare_like_before_a_material_or_colour_stays_an_error(said):
+    assert not compiled(said).ok
+
+
+@pytest.mark.parametrize(
+    "said, meant, read_past",
+    [
+        ("it's brushed steel", "brushed steel", "it's"),
+        ("it is brushed steel", "brushed steel", "it is"),
+        ("the table is oak", "oak", "the table is"),
+        ("the walls are white paint", "white paint", "the walls are"),
+        ("the throne was hewn from black basalt", "black basalt", "the throne was hewn from"),
+        ("the walls were painted a faded duck-egg blue", "faded duck-egg blue paint", "the walls were painted"),
+        ("the oak table is varnished", "varnished oak", "is"),
+        ("the steel is brushed", "brushed steel", "is"),
+    ],
+)
+def test_a_statement_about_the_thing_reads_as_what_it_says_of_the_material(said, meant, read_past):
+    result = compiled(said)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert same_look(material(said), material(meant))
+    assert any(d.message.startswith(f"read past '{read_past}': a statement") for d in result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    "first, line",
+    [("rusty steel", "darker, it's sitting in a damp alley"), ("light oak flooring", "it looks plasticky, more matte")],
+)
+def test_a_remark_or_reason_is_no_statement(first, line):
+    session = refined(first, line)
+    assert not any("a statement about" in d.message for d in session.result.diagnostics)
