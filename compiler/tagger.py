@@ -39,9 +39,12 @@ __all__ = [
     "raw_tokens",
 ]
 
-#: 'w/' (with) is one token before a space or a word ('brass w/ patina', 'oak w/grain'); else a
-#: word, a number, a mark
-TOKEN_RE = re.compile(r"[wW]/(?=\s|$|[^\W\d_])|[^\W\d_](?:[\w'’\-]*\w)?|\d+(?:\.\d+)?%?|[,;:&]|\S", re.UNICODE)
+#: 'w/' (with) is one token before a space or a word ('brass w/ patina', 'oak w/grain'); so is
+#: '3d' ('3d printed'); else a word, a number, a mark
+TOKEN_RE = re.compile(
+    r"[wW]/(?=\s|$|[^\W\d_])|3[dD](?:-[^\W\d_]+)*(?![\w-])|[^\W\d_](?:[\w'’\-]*\w)?|\d+(?:\.\d+)?%?|[,;:&]|\S",
+    re.UNICODE,
+)
 OPEN_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "REFINE")
 # a word that is a feature and an adjective or coat reads as the feature where both parse: only a 'with'
 # clause takes a feature ("with a matte finish": the surface; "with a blue glaze and fine cracks": two clauses)

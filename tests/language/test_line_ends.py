@@ -54,7 +54,7 @@ def test_a_lone_cr_ends_a_line_in_the_cli_display():
 
 
 def test_form_feed_and_line_separator_are_not_line_ends_in_the_cli():
-    r = cnlmc("compile", "-", stdin="polished\x0c brass\u2028 brasz\n")
+    r = cnlmc("compile", "-", stdin="polished\x0c brass\u2028 xyzzy\n")
     assert r.returncode == 1
     assert "<stdin>:1:" in r.stderr and "<stdin>:2:" not in r.stderr
     assert "\\x0c" in r.stderr and "\\u2028" in r.stderr
