@@ -186,8 +186,8 @@ class WordFormation:
             named = self._resembling_colour_name(first, words[1])
             if named is not None:
                 return named
-            if first in rules.negation_words and self._negates_here(first, words[1]):
-                return self._negated_words(words)
+            if first in rules.negation_words and self._negates_here(first, words[1]) and not self._two_words(words):
+                return self._negated_words(words)  # not 'no clear coat': the coat is what is taken off
             if first in rules.emphatic_before and words[1] in rules.negation_words:
                 return self._emphatic_negation(words)
             adverb = rules.prefixes.get(first)
@@ -653,6 +653,11 @@ class WordFormation:
         return None
 
     # ------------------------------------------------------------ two or more words
+
+    def _two_words(self, words: Sequence[str]) -> bool:
+        """Whether the two words after the first name one entry ('no clear coat': the coat, not
+        'clear' negated)."""
+        return len(words) > 2 and bool(self.lookup((words[1], words[2])))
 
     def _negates_here(self, first: str, then: str) -> bool:
         """Whether the negation word negates what follows: a strict one ('nothing': negation

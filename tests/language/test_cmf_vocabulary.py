@@ -86,3 +86,28 @@ def test_two_names_of_one_material_side_by_side_are_one():
     result = compiled("inox stainless steel")
     assert result.ok and any("both words name it" in d.message for d in result.diagnostics)
     assert same_look(material("inox stainless steel"), material("stainless steel"))
+
+
+def test_no_before_a_two_word_coat_takes_the_coat_off_not_the_first_word():
+    result = compiled("raw alu, no clear coat")
+    assert not material("raw alu, no clear coat")["model"]["coat"]
+    assert any("taking 'clear coat' off" in d.message for d in result.diagnostics)
+    assert material("not clear glass")["params"] == material("frosted glass")["params"]  # 'not X' alone still negates X
+
+
+@pytest.mark.parametrize("phrase, hue", [("blued steel", (225, 300)), ("oil rubbed bronze", (40, 100))])
+def test_dark_metal_finishes_keep_their_hue(phrase, hue):
+    m = material(phrase)
+    l, c, h = lch([b * f for b, f in zip(m["params"]["base_color"], m["params"]["f0"])])
+    assert l < 0.45 and c >= 0.04 and hue[0] <= h <= hue[1], (l, c, h)
+
+
+def test_piano_black_is_a_black_mirror_gloss_and_still_a_colour_before_a_noun():
+    assert material("piano black")["params"]["roughness"] <= 0.05
+    assert lch(material("piano black")["params"]["base_color"])[0] < 0.25
+    leather = material("piano black leather")
+    assert "leather" in leather["name"] and lch(leather["params"]["base_color"])[0] < 0.25
+
+
+def test_carbon_fibre_twill_is_carbon_fibre():
+    assert same_look(material("carbon fibre twill, clear coat"), material("carbon fibre with a clear coat"))
