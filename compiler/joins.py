@@ -151,6 +151,9 @@ class Joiner:
             elif before is not None and nouns and self._is_kind_of(before, nouns):
                 reading = f"'{nouns[0].key}' (made of {before.text}: the first noun says what the second is made of)"
                 out[-1] = self._join(before, word, nouns, reading, diags)
+            elif before is not None and nouns and self._is_class_of(word, of_tag(before, "NOUN")):
+                reading = f"'{nouns[0].key}' ('{before.text}' is its class, said first)"  # 'plastic ABS', 'wood oak'
+                out[-1] = self._join(before, word, nouns, reading, diags)
             elif of_tag(word, "OBJECT"):
                 if k + 1 < len(tagged) and of_tag(tagged[k + 1], "NOUN") and not tagged[k + 1].unknown:
                     out.append(word)  # "roof tiles": joined to the noun next (not an unknown word's guess)

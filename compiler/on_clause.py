@@ -120,13 +120,26 @@ def _likeness_of_a_colour(
     return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
 
 
+def _class_of_the_likeness(word: Tagged, after: Sequence[Tagged], lexicon: Lexicon) -> bool:
+    """Whether a noun before the likeness is the class of the material the likeness names ('wood
+    very light, like maple': maple is a wood): said as 'something', it goes."""
+    own = [w for w in after if not _only_a_thing(w, lexicon)]  # 'like window' names a thing, not a wood
+    classes = {
+        entry.get("class")
+        for w in own
+        for c in w.candidates
+        if c.tag == "NOUN" and (entry := lexicon.entry("nouns", c.key)) is not None
+    }
+    return any(c.tag == "NOUN" and c.key in classes for c in word.candidates)
+
+
 def _described_likeness(
     words: Sequence[Tagged], before: Sequence[Tagged], end: int, text: str, lexicon: Lexicon
 ) -> tuple[ast.Material, Diagnostic] | None:
     """'something warm, like a honey-coloured oak': describing words, then the likeness names the
     material: the material with the describing words before it ('warm honey-coloured oak')."""
     after = [w for w in words if w.span.start >= end and w.text[:1].isalnum()]
-    said = [w for w in before if w.text[:1].isalnum()]
+    said = [w for w in before if w.text[:1].isalnum() and not _class_of_the_likeness(w, after, lexicon)]
     if (
         not after
         or any(w.unknown for w in after)
@@ -136,7 +149,7 @@ def _described_likeness(
     material = parsed_material([*said, *after], text, lexicon.caches.shapes)
     if material is None:
         return None
-    reading = f"{written_text(said)} {written_text(after)}"
+    reading = " ".join(part for part in (written_text(said), written_text(after)) if part)
     note = f"read '{text.strip()}' as '{reading}': the likeness names the material, the words before it describe it"
     return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
 

@@ -218,3 +218,18 @@ def test_a_statement_about_the_thing_reads_as_what_it_says_of_the_material(said,
 def test_a_remark_or_reason_is_no_statement(first, line):
     session = refined(first, line)
     assert not any("a statement about" in d.message for d in session.result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [("wood very light, like maple", "very light maple"), ("metal, shiny, like chrome", "shiny chrome")],
+)
+def test_a_class_noun_then_a_likeness_of_a_material_of_that_class_is_that_material(said, meant):
+    result = compiled(said)
+    assert result.ok and same_look(material(said), material(meant))
+    assert any("the likeness names the material" in d.message for d in result.diagnostics)
+
+
+@pytest.mark.parametrize("said, meant", [("plastic ABS", "ABS"), ("wood oak", "oak"), ("stone granite", "granite")])
+def test_a_class_said_before_its_material_is_the_material(said, meant):
+    assert compiled(said).ok and same_look(material(said), material(meant))
