@@ -622,12 +622,15 @@ class Joiner:
             return False
         n = out.index(noun)
         rest = out[n + 1 :]
+        last = noun
         if rest and rest[0].unknown:  # 'tiles behind the hob': the words after are read past later
             rest = []
+        elif rest and of_tag(rest[0], "COMMA") and _describing_only(rest):  # 'white tiles, glossy': the clause last
+            n, last, rest = len(out) - 1, rest[-1], []
         elif rest and not of_tag(rest[0], "WITH"):
             return False
         coloured = _in_colour_length(rest)
-        after = rest[coloured - 1] if coloured else noun
+        after = rest[coloured - 1] if coloured else last
         n, rest = n + coloured, rest[coloured:]
         s = after.span
         clause = [Tagged("with", Span(s.end, s.end, s.line, s.col + s.end - s.start), _WITH, implied_by=implied_by)]
@@ -1141,6 +1144,16 @@ def may_join(tagged: list[Tagged]) -> bool:
         return True  # "blue glaze": perhaps a finish substance named as the whole material
     colour_last = ("COLOR" in final_tags or "SHADE" in final_tags) and "NOUN" not in final_tags  # "Schiefer dunkelgrau"
     return plain and noun_seen and ("ADJ" in final_tags or colour_last)
+
+
+def _describing_only(words: list[Tagged]) -> bool:
+    """Whether words after a noun only describe it, set off by commas or not ('white tiles, glossy')."""
+    said = [w for w in words if not of_tag(w, "COMMA")]
+    return (
+        bool(said)
+        and not any(w.unknown for w in said)
+        and all(any(c.tag in DESCRIBING for c in w.candidates) and not of_tag(w, "NOUN") for w in said)
+    )
 
 
 def _more_things(out: list[Tagged], word: Tagged, said: list[Tagged]) -> bool:

@@ -13,7 +13,7 @@ from dataclasses import replace
 from . import ast
 from .diagnostics import Diagnostic, Severity, warning
 from .lexicon import Lexicon
-from .removed import much_less, without_words
+from .removed import much_less, step_away, without_words
 from .spans import Span
 from .suggest import teaching
 from .tagged import NOTE_CODE
@@ -80,9 +80,15 @@ def material_then_comparatives(
         return None
     moved = material
     warned: list[Diagnostic] = []
+    stepped: list[Span] = []  # the parts read as a step away, not as taking a colour off
     for node in parts[0]:
         assert isinstance(node, ast.Refinement)
         said = _removal_said(node, text, offset)
+        if node.removed and _colour_said_again(node.removed, moved, lexicon):  # 'soft black, not jet black'
+            items = tuple(step_away(w, said) for w in node.removed)
+            moved = replace(moved, span=moved.span.to(node.span), text=text, refinements=(*moved.refinements, *items))
+            stepped.append(node.span)
+            continue
         taken_off = without_words(moved, node.removed, lexicon) if node.removed else None
         if taken_off is not None:  # 'varnished oak, no varnish': the word goes
             moved = replace(taken_off, span=moved.span.to(node.span), text=text)
@@ -92,7 +98,38 @@ def material_then_comparatives(
                 listed = ", ".join(dict.fromkeys(f"'{w.text}'" for w in node.removed))
                 warned.append(warning(node.span, "W122", f"the material has no {listed} to take off"))
             moved = replace(moved, span=moved.span.to(node.span), text=text, refinements=(*moved.refinements, *items))
-    return moved, [*first, *parts[1], *warned]
+    kept = [_as_step_away(d) if _said_as_taken_off(d, stepped) else d for d in parts[1]]
+    return moved, [*first, *kept, *warned]
+
+
+def _said_as_taken_off(diag: Diagnostic, stepped: list[Span]) -> bool:
+    """The removal's own note ('as taking ... off') of a part read as a step away instead."""
+    at = diag.span
+    return (
+        at is not None
+        and "off the material above" in diag.message
+        and any(at.start <= part.end and part.start <= at.end for part in stepped)
+    )
+
+
+def _as_step_away(diag: Diagnostic) -> Diagnostic:
+    """The removal's note said again as a step away ("read 'not jet black' as a step away from
+    'jet black'"), over the same words."""
+    said, _, taken = diag.message.partition(" as taking ")
+    listed = taken.removesuffix(" off the material above")
+    message = f"{said} as a step away from {listed}: the colour said before is that colour already"
+    return replace(diag, message=message)
+
+
+def _colour_said_again(removed: tuple[ast.Word, ...], material: ast.Material, lexicon: Lexicon) -> bool:
+    """Whether each word turned down is a colour the material already names, by another name or the
+    same ('soft black, not jet black', 'white but not stark white'): not the colour taken off, but
+    its extreme turned down, a step away from it."""
+    named = [c.base.key for g in material.groups for c in g.colours if c.base is not None]
+    if not removed or not named or any(w.category != "colours" for w in removed):
+        return False
+    rgb = {key: lexicon.require("colours", key).get("rgb") for key in {*named, *(w.key for w in removed)}}
+    return all(any(rgb[w.key] == rgb[key] for key in named) for w in removed)
 
 
 def _removal_said(node: ast.Refinement, text: str, offset: int) -> ast.Word | None:

@@ -8,7 +8,7 @@ from __future__ import annotations
 from . import ast
 from .lexicon import Lexicon
 
-__all__ = ["much_less", "without_words"]
+__all__ = ["much_less", "step_away", "without_words"]
 
 
 def without_words(material: ast.Material, removed: tuple[ast.Word, ...], lexicon: Lexicon) -> ast.Material | None:
@@ -66,3 +66,12 @@ def much_less(word: ast.Word, said: ast.Word | None = None) -> ast.RefineItem:
         return ast.RefineItem(less, target, word.span, (ast.Word(word.text, "much", "adverbs", word.span),))
     much = ast.Word("", "much", "adverbs", said.span)  # said by the phrase: no word of the name
     return ast.RefineItem(said, target, said.span.to(word.span), (much,))
+
+
+def step_away(word: ast.Word, said: ast.Word | None = None) -> ast.RefineItem:
+    """'less <colour>', said by the removal phrase `said` ('not' of 'not jet black' after 'black':
+    a step away from the extreme the colour already is, cnlmc.line_parts), or by the colour word."""
+    target = ast.Colour((), word, word.span)
+    if said is None:
+        return ast.RefineItem(ast.Word(word.text, "less", "refinements", word.span), target, word.span)
+    return ast.RefineItem(said, target, said.span.to(word.span))

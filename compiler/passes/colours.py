@@ -40,13 +40,15 @@ def _ops(ctx: Context, shade_key: str, weight: float) -> list[dict[str, Any]]:
 
 def _weighted_plain(rgb: list[float], key: str, ctx: Context, start: list[float] | None, weight: float) -> list[float]:
     """A colour word without separate shades at an adverb weight: a shaded survey name ("dark teal")
-    takes its shade once more or less; any other colour is simply itself, or part of the way to it."""
+    takes its shade once more ('very dark grey'), or lies that share of the way from the plain
+    colour to it in OKLab ('fairly dark grey': three quarters of the way from grey to the survey's
+    dark grey, so it stays dark); any other colour is simply itself, or part of the way to it."""
     shaded = _shaded_name(key, ctx)
     if shaded is not None:
         shade_key, plain_key = shaded
         if weight > 1.0:
             return shade(rgb, _ops(ctx, shade_key, weight - 1.0))
-        return shade(list(ctx.lexicon.require("colours", plain_key).get("rgb")), _ops(ctx, shade_key, weight))
+        return colour.mix_oklab(list(ctx.lexicon.require("colours", plain_key).get("rgb")), rgb, weight)
     if weight < 1.0 and start is not None:  # in OKLab: 'almost black' is nearly black to the eye
         return colour.mix_oklab(start, rgb, weight)
     return rgb

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.language.meaning import compiled, material, refined, same_look
+from tests.language.meaning import compiled, lch, material, refined, same_look
 
 
 @pytest.mark.parametrize(
@@ -233,3 +233,29 @@ def test_a_class_noun_then_a_likeness_of_a_material_of_that_class_is_that_materi
 @pytest.mark.parametrize("said, meant", [("plastic ABS", "ABS"), ("wood oak", "oak"), ("stone granite", "granite")])
 def test_a_class_said_before_its_material_is_the_material(said, meant):
     assert compiled(said).ok and same_look(material(said), material(meant))
+
+
+@pytest.mark.parametrize(
+    "said, plain, lighter",
+    [("black paint, not jet black", "black paint", True), ("white but not stark white", "white paint", False)],
+)
+def test_not_the_extreme_of_the_colour_said_is_a_step_away_from_it(said, plain, lighter):
+    result = compiled(said)
+    assert result.ok and any("as a step away from" in d.message for d in result.diagnostics)
+    moved, before = lch(material(said)["params"]["base_color"])[0], lch(material(plain)["params"]["base_color"])[0]
+    assert (moved > before + 0.05) if lighter else (moved < before - 0.05)
+    assert lch(material(said)["params"]["base_color"])[1] < 0.04  # still a neutral
+
+
+@pytest.mark.parametrize("said", ["white tiles, glossy", "white subway tile, glossy", "tiles, white"])
+def test_laid_tiles_keep_their_grout_with_describing_words_after_a_comma(said):
+    assert material(said)["maps"]["base_color"]["graph"] == "tiles"
+
+
+@pytest.mark.parametrize(
+    "said, band",
+    [("fairly dark grey paint", (0.35, 0.45)), ("slightly dark grey paint", (0.45, 0.6))],
+)
+def test_a_softened_survey_shade_lies_between_the_plain_colour_and_the_survey_colour(said, band):
+    lightness = lch(material(said)["params"]["base_color"])[0]
+    assert band[0] <= lightness <= band[1], lightness
