@@ -259,3 +259,22 @@ def test_laid_tiles_keep_their_grout_with_describing_words_after_a_comma(said):
 def test_a_softened_survey_shade_lies_between_the_plain_colour_and_the_survey_colour(said, band):
     lightness = lch(material(said)["params"]["base_color"])[0]
     assert band[0] <= lightness <= band[1], lightness
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [
+        ("iron encrusted with rust", "iron with rust"),
+        ("steel covered in scratches", "steel with scratches"),
+        ("stylized cartoon wood planks", "wood planks"),
+        ("tileable rock", "rock"),
+        ("black alcantara headliner", "black alcantara"),
+        ("steering wheel leather", "leather"),
+        ("cotton canvas tent, khaki", "khaki cotton canvas"),
+    ],
+)
+def test_coverings_asset_words_and_car_trim(said, meant):
+    result = compiled(said)
+    assert result.ok, [d.message for d in result.diagnostics]
+    a, b = material(said), material(meant)
+    assert same_look(a, b) and a.get("maps") == b.get("maps")
