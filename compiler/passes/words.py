@@ -20,6 +20,7 @@ from ..formulas import apply_op, describe
 from ..lexicon import Entry, LexiconCaches
 from ..params import COAT_PARAMS, PARAMS, ranges
 from ..state import Context, MaterialState
+from ..tagged import NOTE_CODE
 from .base import _map_ref, applies_to, colour_seen_through, noun_of
 from .colour_compounds import colour_compounds
 from .colours import colour_text, opposed_shades, resolve_colour
@@ -96,6 +97,10 @@ def _has_unknown(group: ast.Group) -> bool:
 
 def _warn_dangling(state: MaterialState, group: ast.Group) -> None:
     text = " ".join(w.text for w in group.adverbs)
+    if text.lower() in _hedges_before_a_noun():  # 'some kind of metal': a hedge on the material named
+        note = f"read past '{text}': a hedge on the material named, not a degree"
+        state.diagnostics.append(Diagnostic(group.span, Severity.NOTE, NOTE_CODE, note))
+        return
     state.diagnostics.append(
         warning(
             group.span,
@@ -676,3 +681,10 @@ def pigment_base(state: MaterialState, ctx: Context) -> None:
         value = apply_op("blend", state.params["base_color"], coat["color"], 1.0, pigment)
         words = [w for s in state.provenance.get("coat.color", [])[-1:] for w in s.words]
         state.record("base_color", value, f"coats.{coat['name']}: pigment {pigment} of the coat colour", words)
+
+
+def _hedges_before_a_noun() -> frozenset[str]:
+    """teaching.toml [hedges] `before_a_noun`: degree words that hedge the noun after them."""
+    from ..suggest import teaching
+
+    return frozenset(teaching()["hedges"]["before_a_noun"])

@@ -278,3 +278,16 @@ def test_coverings_asset_words_and_car_trim(said, meant):
     assert result.ok, [d.message for d in result.diagnostics]
     a, b = material(said), material(meant)
     assert same_look(a, b) and a.get("maps") == b.get("maps")
+
+
+@pytest.mark.parametrize(
+    "said, meant", [("some kind of metal", "metal"), ("kind of velvet", "velvet"), ("sort of a tweed", "tweed")]
+)
+def test_a_hedge_before_a_noun_is_read_past_not_warned(said, meant):
+    result = compiled(said)
+    codes = [d.code for d in result.diagnostics]
+    assert result.ok and "W103" not in codes and same_look(material(said), material(meant))
+
+
+def test_a_dangling_degree_before_a_noun_still_warns():
+    assert "W103" in [d.code for d in compiled("very oak").diagnostics]
