@@ -142,7 +142,12 @@ class Joiner:
             elif before is not None and nouns and self._finish_noun(before) is not None:
                 out[-1:] = self._finish_of(before, word, diags)
                 _plating_first(out)
-            elif before is not None and nouns and {c.key for c in of_tag(before, "NOUN")} & {c.key for c in nouns}:
+            elif (
+                before is not None
+                and nouns
+                and before.text.lower() != word.text.lower()  # 'gold gold': a repeat, not two names
+                and {c.key for c in of_tag(before, "NOUN")} & {c.key for c in nouns}
+            ):
                 same = tuple(c for c in nouns if c.key in {b.key for b in of_tag(before, "NOUN")})
                 out[-1] = self._join(before, word, same, f"'{same[0].key}' (both words name it)", diags)
             elif before is not None and nouns and self._is_class_of(before, nouns):
