@@ -111,3 +111,12 @@ def test_piano_black_is_a_black_mirror_gloss_and_still_a_colour_before_a_noun():
 
 def test_carbon_fibre_twill_is_carbon_fibre():
     assert same_look(material("carbon fibre twill, clear coat"), material("carbon fibre with a clear coat"))
+
+
+@pytest.mark.parametrize("noun", ["leather", "oak", "walnut", "pine"])
+def test_old_organic_materials_stay_brown_where_weathered_ones_grey(noun):
+    old, weathered, plain = (
+        lch(material(p)["params"]["base_color"]) for p in (f"old {noun}", f"weathered {noun}", noun)
+    )
+    assert old[1] >= 0.04 and abs(old[2] - plain[2]) < 15, old  # aged indoors: amber, the hue kept
+    assert weathered[1] < old[1]  # outdoors: greyer

@@ -391,7 +391,11 @@ def test_everyday_colour_names(phrase: str, hue: tuple[int, int]) -> None:
 @pytest.mark.parametrize(
     ("phrase", "line", "plain"),
     [
-        ("pine planks", "make them look older and rougher", "more weathered and rougher"),
+        (
+            "pine planks",
+            "make them look older and rougher",
+            "more aged and rougher",
+        ),  # older: aged (indoors), not weathered
         ("white marble", "the veining is too busy, can we lose it", "less veining"),
         ("red plastic", "make it a lighter blue", "make it blue"),
     ],
