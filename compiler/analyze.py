@@ -180,12 +180,14 @@ def nothing_to_keep(item: ast.Item) -> Diagnostic:
 
 
 def orphan_refinement(item: ast.Item) -> Diagnostic:
-    return warning(
-        item.span,
-        "W104",
-        "a refinement needs a material above it",
-        ("write the material first, e.g. 'blue anodized aluminum' then 'darker'",),
-    )
+    hint = "write the material first, e.g. 'blue anodized aluminum' then 'darker'"
+    if isinstance(item, ast.Refinement) and item.groups and not item.items:  # 'make it navy blue' first
+        line_start = item.span.start - (item.span.col - 1)
+        said = " ".join(
+            item.text[item.groups[0].span.start - line_start : item.groups[-1].span.end - line_start].split()
+        )
+        hint = f"write the material first, or its words alone: '{said}' (the material they describe is implied)"
+    return warning(item.span, "W104", "a refinement needs a material above it", (hint,))
 
 
 def material_name(material: ast.Material, used: dict[str, int]) -> str:

@@ -291,3 +291,10 @@ def test_a_hedge_before_a_noun_is_read_past_not_warned(said, meant):
 
 def test_a_dangling_degree_before_a_noun_still_warns():
     assert "W103" in [d.code for d in compiled("very oak").diagnostics]
+
+
+def test_a_change_of_describing_words_with_no_material_above_offers_the_words_alone():
+    result = compiled("make it navy blue")
+    (warned,) = [d for d in result.diagnostics if d.code == "W104"]
+    assert "'navy blue'" in warned.hints[0]
+    assert compiled("navy blue").ok  # the offer compiles
