@@ -176,8 +176,11 @@ def _sign(x: float) -> int:
 def _step(
     ctx: Context, effect: Effect, current: float, param_direction: int, direction: int, strength: Strength
 ) -> Step:
-    """The adjective's formula at the weight step when it moves the value the right way; else the
-    parameter's own property step (properties.toml)."""
+    """The adjective's formula at the weight step when it moves the value the right way by a
+    visible amount; else the parameter's own property step (properties.toml). Visible: at least
+    the settings' `visible_step_share` of that property step ('less shiny' on piano black: the
+    factor of 'shiny' moves roughness 0.02 -> 0.027, which no one sees, so it takes the step of
+    'rougher', 0.12; the paper overlay's share is 0: its formulas step exactly)."""
     op, value, amount = effect["op"], effect.get("value"), effect.get("amount")
     w = strength.formula
     formula: Step = (
@@ -185,13 +188,23 @@ def _step(
         if direction > 0
         else (lambda x: invert_op(op, x, value, w, amount))
     )
-    if op != "set" and (formula(current) - current) * param_direction > MIN_MOVE:
-        return formula
     prop = _property_of(ctx, effect["param"])
     if prop is None:
         return formula
     up, down = scaled_steps(prop.get("step"), strength.adverbs)
-    return up if param_direction > 0 else down
+    own = up if param_direction > 0 else down
+    moved = (formula(current) - current) * param_direction
+    if op != "set" and moved > MIN_MOVE and not _invisible(op, current, moved, abs(own(current) - current), ctx):
+        return formula
+    return own
+
+
+def _invisible(op: str, current: float, moved: float, own_step: float, ctx: Context) -> bool:
+    """Whether a factor's step is too small to see: near zero (below one property step) a factor
+    hardly moves the value ('less shiny' on piano black, roughness 0.02), so a move below the
+    settings' `visible_step_share` of the property's step is none (0 in the paper overlay)."""
+    share = float(ctx.settings.get("visible_step_share", 0.0))
+    return op == "mul" and abs(current) < own_step and moved < share * own_step
 
 
 def _property_of(ctx: Context, param: str) -> Entry | None:

@@ -298,3 +298,15 @@ def test_a_change_of_describing_words_with_no_material_above_offers_the_words_al
     (warned,) = [d for d in result.diagnostics if d.code == "W104"]
     assert "'navy blue'" in warned.hints[0]
     assert compiled("navy blue").ok  # the offer compiles
+
+
+@pytest.mark.parametrize("first", ["piano black", "chrome"])
+def test_less_shiny_on_a_mirror_is_a_visible_step(first):
+    before = material(first)["params"]["roughness"]
+    after = refined(first, "less shiny").material["params"]["roughness"]
+    assert after - before >= 0.05, (before, after)
+
+
+def test_a_factor_step_away_from_zero_keeps_its_formula():
+    # the paper's 'stronger brushing' (x 1.1 at the weight step) is kept where the factor moves visibly
+    assert refined("brushed aluminum", "stronger brushing").material["params"]["roughness"] == pytest.approx(0.198)
