@@ -142,13 +142,7 @@ class Joiner:
             elif before is not None and nouns and self._finish_noun(before) is not None:
                 out[-1:] = self._finish_of(before, word, diags)
                 _plating_first(out)
-            elif (
-                before is not None
-                and nouns
-                and before.text.lower() != word.text.lower()  # 'gold gold': a repeat, not two names
-                and {c.key for c in of_tag(before, "NOUN")} & {c.key for c in nouns}
-            ):
-                same = tuple(c for c in nouns if c.key in {b.key for b in of_tag(before, "NOUN")})
+            elif before is not None and nouns and (same := _same_entry(before, word, nouns)):
                 out[-1] = self._join(before, word, same, f"'{same[0].key}' (both words name it)", diags)
             elif before is not None and nouns and self._is_class_of(before, nouns):
                 made = of_tag(before, "NOUN")
@@ -1149,6 +1143,15 @@ def may_join(tagged: list[Tagged]) -> bool:
         return True  # "blue glaze": perhaps a finish substance named as the whole material
     colour_last = ("COLOR" in final_tags or "SHADE" in final_tags) and "NOUN" not in final_tags  # "Schiefer dunkelgrau"
     return plain and noun_seen and ("ADJ" in final_tags or colour_last)
+
+
+def _same_entry(before: Tagged, word: Tagged, nouns: tuple[Candidate, ...]) -> tuple[Candidate, ...]:
+    """The noun readings two different words side by side share ('HPL laminate', 'inox stainless
+    steel': two names of one material); () for a repeat ('gold gold') or none shared."""
+    if before.text.lower() == word.text.lower():
+        return ()
+    keys = {c.key for c in of_tag(before, "NOUN")}
+    return tuple(c for c in nouns if c.key in keys)
 
 
 def _describing_only(words: list[Tagged]) -> bool:

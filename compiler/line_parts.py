@@ -13,6 +13,7 @@ from dataclasses import replace
 from . import ast
 from .diagnostics import Diagnostic, Severity, warning
 from .lexicon import Lexicon
+from .removal import TAKEN_OFF_NOTE
 from .removed import much_less, step_away, without_words
 from .spans import Span
 from .suggest import teaching
@@ -80,14 +81,14 @@ def material_then_comparatives(
         return None
     moved = material
     warned: list[Diagnostic] = []
-    stepped: list[Span] = []  # the parts read as a step away, not as taking a colour off
+    stepped: list[tuple[Span, str]] = []  # the parts read as a step away (and their colours), not taken off
     for node in parts[0]:
         assert isinstance(node, ast.Refinement)
         said = _removal_said(node, text, offset)
         if node.removed and _colour_said_again(node.removed, moved, lexicon):  # 'soft black, not jet black'
             items = tuple(step_away(w, said) for w in node.removed)
             moved = replace(moved, span=moved.span.to(node.span), text=text, refinements=(*moved.refinements, *items))
-            stepped.append(node.span)
+            stepped.append((node.span, ", ".join(f"'{w.text}'" for w in node.removed)))
             continue
         taken_off = without_words(moved, node.removed, lexicon) if node.removed else None
         if taken_off is not None:  # 'varnished oak, no varnish': the word goes
@@ -98,26 +99,21 @@ def material_then_comparatives(
                 listed = ", ".join(dict.fromkeys(f"'{w.text}'" for w in node.removed))
                 warned.append(warning(node.span, "W122", f"the material has no {listed} to take off"))
             moved = replace(moved, span=moved.span.to(node.span), text=text, refinements=(*moved.refinements, *items))
-    kept = [_as_step_away(d) if _said_as_taken_off(d, stepped) else d for d in parts[1]]
+    kept = [_as_step_away(d, stepped, text, offset) for d in parts[1]]
     return moved, [*first, *kept, *warned]
 
 
-def _said_as_taken_off(diag: Diagnostic, stepped: list[Span]) -> bool:
-    """The removal's own note ('as taking ... off') of a part read as a step away instead."""
+def _as_step_away(diag: Diagnostic, stepped: list[tuple[Span, str]], text: str, offset: int) -> Diagnostic:
+    """The removal's own note of a part read as a step away instead, said again over the same
+    words ("read 'not jet black' as a step away from 'jet black'"); any other diagnostic as it is."""
     at = diag.span
-    return (
-        at is not None
-        and "off the material above" in diag.message
-        and any(at.start <= part.end and part.start <= at.end for part in stepped)
-    )
-
-
-def _as_step_away(diag: Diagnostic) -> Diagnostic:
-    """The removal's note said again as a step away ("read 'not jet black' as a step away from
-    'jet black'"), over the same words."""
-    said, _, taken = diag.message.partition(" as taking ")
-    listed = taken.removesuffix(" off the material above")
-    message = f"{said} as a step away from {listed}: the colour said before is that colour already"
+    if at is None or diag.severity is not Severity.NOTE or TAKEN_OFF_NOTE not in diag.message:
+        return diag
+    listed = next((colours for part, colours in stepped if at.start <= part.end and part.start <= at.end), None)
+    if listed is None:
+        return diag
+    said = " ".join(text[at.start - offset : at.end - offset].split())
+    message = f"read '{said}' as a step away from {listed}: the colour said before is that colour already"
     return replace(diag, message=message)
 
 

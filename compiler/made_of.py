@@ -47,9 +47,10 @@ def made_of(words: list[Tagged], text: str) -> tuple[list[Tagged], Diagnostic] |
 
 
 def _after_determiners(words: list[Tagged], end: int) -> int:
-    """Where the words after the line's articles and possessives start, before `end`."""
+    """Where the words after the line's articles start, before `end` (a possessive was read past by
+    the tagger: 'a wizard's staff of yew')."""
     i = 0
-    while i < end and (of_tag(words[i], "ARTICLE") or words[i].text.lower().endswith(("'s", "’s"))):
+    while i < end and of_tag(words[i], "ARTICLE"):
         i += 1
     return i
 

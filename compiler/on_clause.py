@@ -223,10 +223,14 @@ def _unknown_after(words: Sequence[Tagged], at: int, lexicon: Lexicon) -> bool:
     )
 
 
+def _categories(word: Tagged, lexicon: Lexicon) -> set[str]:
+    """The lexicon categories that know the word as written."""
+    return {e.category for e in lexicon.lookup(tuple(word.text.lower().split()))}
+
+
 def _only_a_thing(word: Tagged, lexicon: Lexicon) -> bool:
     """Whether the lexicon knows the word only as an object ('window', 'phone'; not 'glass')."""
-    categories = {e.category for e in lexicon.lookup(tuple(word.text.lower().split()))}
-    return categories == {"objects"}
+    return _categories(word, lexicon) == {"objects"}
 
 
 def _names_a_material(words: Sequence[Tagged], at: int, lexicon: Lexicon) -> bool:
@@ -235,7 +239,7 @@ def _names_a_material(words: Sequence[Tagged], at: int, lexicon: Lexicon) -> boo
     for word in words:
         if word.implied_by is not None or word.span.start < at or not word.text[:1].isalpha():
             continue
-        categories = {e.category for e in lexicon.lookup(tuple(word.text.lower().split()))}
+        categories = _categories(word, lexicon)
         if "nouns" in categories and "objects" not in categories:
             return True
     return False

@@ -28,6 +28,8 @@ if TYPE_CHECKING:
 
 __all__ = ["opens_removal", "removal_line", "removal_phrase"]
 
+TAKEN_OFF_NOTE = "off the material above"  # the end of a removal's note (cnlmc.line_parts says it again as a step)
+
 #: the word categories a removal takes off, by grammar terminal (a property: the words of its name)
 REMOVABLE = ("ADJ", "FEATURE", "COAT", "COLOR", "PROP")
 #: terminals that may stand between them ('the rust and the scratches')
@@ -71,7 +73,7 @@ def removal_line(text: str, number: int, offset: int, tagger: Tagger) -> tuple[a
     shift = words[0].span.col - 1 - start  # the note spans the whole removal, its openers too ('can we lose the')
     said_span = replace(span, start=span.start - shift, col=start + 1)
     listed = ", ".join(dict.fromkeys(f"'{w.text}'" for w in removed))
-    message = f"read '{text.strip()}' as taking {listed} off the material above"
+    message = f"read '{text.strip()}' as taking {listed} {TAKEN_OFF_NOTE}"
     return ast.Refinement(None, (), span, text, removed=removed), Diagnostic(
         said_span, Severity.NOTE, NOTE_CODE, message
     )
