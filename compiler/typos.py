@@ -13,6 +13,11 @@ reading is applied where a suggestion is only offered). Never read as a slip:
 - a word with two lexicon words equally near that name different things and both end as it does
   ('chrom': chrome or chroma) — it stays an error, with both offered.
 
+A word spelt as it sounds, its consonants in place and only vowels changed, reaches further
+([typos] `vowels`: from `letters` letters, up to `edits` vowels): 'mahagony' is mahogany, two
+substitutions, where an edit reach would allow one (our choice: a vowel heard but not seen is
+the commonest spelling slip of long words; the consonant frame keeps the reading unambiguous).
+
 Only the tagger's unknown words come here (the last word formation rule, and inside an entry of
 several words: cnlmc.word_formation.WordFormation.heard), so the hot path of known words never does.
 """
@@ -34,11 +39,20 @@ class Slips:
     """The lexicon's words indexed for slips, the real words to leave alone, and the reach."""
 
     def __init__(
-        self, vocabulary: Iterable[str], real: frozenset[str], reach: Sequence[Mapping[str, int]] = ()
+        self,
+        vocabulary: Iterable[str],
+        real: frozenset[str],
+        reach: Sequence[Mapping[str, int]] = (),
+        vowels: Mapping[str, int] | None = None,
     ) -> None:
-        self.index = FormIndex({word: (_WORD,) for word in vocabulary if word.isalpha()})
+        words = [word for word in vocabulary if word.isalpha()]
+        self.index = FormIndex({word: (_WORD,) for word in words})
         self.real = real
         self.reach = sorted(((step["letters"], step["edits"]) for step in reach or _DEFAULT_REACH), reverse=True)
+        self.vowels = dict(vowels or _DEFAULT_VOWELS)
+        self.frames: dict[str, list[str]] = {}
+        for word in words:
+            self.frames.setdefault(consonant_frame(word), []).append(word)
 
     def edits_allowed(self, word: str, extra: int = 0) -> int:
         """How many slips a word of this length may hold (0: none is read), with `extra` more for
@@ -47,12 +61,26 @@ class Slips:
         return edits + extra if edits and len(word) >= ENTRY_EXTRA_LETTERS else edits
 
     def near(self, word: str) -> list[tuple[int, str]]:
-        """(slips, lexicon word) of every lexicon word within the reach of `word`, fewest first."""
+        """(slips, lexicon word) of every lexicon word within the reach of `word`, fewest first;
+        when none is, the words it differs from in vowels only, within the vowel reach."""
         low = word.lower()
         allowed = self.edits_allowed(low)
         if not allowed or not low.isalpha():
             return []
-        return sorted((edits, form) for edits, form in self.index.typos(low) if edits <= allowed)
+        found = sorted((edits, form) for edits, form in self.index.typos(low) if edits <= allowed)
+        return found or self.vowels_apart(low)
+
+    def vowels_apart(self, low: str) -> list[tuple[int, str]]:
+        """(vowels changed, lexicon word) of the words with `low`'s consonant frame, within the
+        vowel reach (see the module doc); [] for a word shorter than its `letters`."""
+        if len(low) < self.vowels["letters"]:
+            return []
+        found = []
+        for form in self.frames.get(consonant_frame(low), ()):
+            changed = sum(a != b for a, b in zip(low, form))
+            if 0 < changed <= self.vowels["edits"]:
+                found.append((changed, form))
+        return sorted(found)
 
     def within_reach(self, word: str) -> bool:
         """Whether some lexicon word is within a slip's reach (scripts/gen_real_words.py)."""
@@ -99,6 +127,16 @@ ENTRY_EXTRA_LETTERS = 7
 
 #: the reach when none is given: one slip from 5 letters, two from 10 (the stdlib rules')
 _DEFAULT_REACH = ({"letters": 5, "edits": 1}, {"letters": 10, "edits": 2})
+
+#: the vowel reach when none is given: two vowels from 7 letters (the stdlib rules')
+_DEFAULT_VOWELS = {"letters": 7, "edits": 2}
+
+_VOWELS = frozenset("aeiouy")
+
+
+def consonant_frame(word: str) -> str:
+    """The word with each vowel (y counted as one) replaced by '*': 'mahagony' -> 'm*h*g*n**'."""
+    return "".join("*" if ch in _VOWELS else ch for ch in word)
 
 
 @lru_cache(maxsize=4)

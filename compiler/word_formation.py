@@ -321,7 +321,7 @@ class WordFormation:
 
             never = set(teaching()["never_suggest"])  # a slip of 'whit' is not a crude word
             vocabulary = {w for form in self.lexicon.forms for w in form} - never
-            self.slips = Slips(vocabulary, real_words(rules["file"]), rules["reach"])
+            self.slips = Slips(vocabulary, real_words(rules["file"]), rules["reach"], rules["vowels"])
         return self.slips
 
     def heard(self, word: str) -> tuple[str, str]:
@@ -787,10 +787,12 @@ def _merged_wordnet(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:
 
 
 def _merged_typos(layers: Sequence[dict[str, Any]]) -> dict[str, Any]:
-    """The [typos] rules of all layers: the first file and reach given; off when a layer says so."""
+    """The [typos] rules of all layers: the first file, reach and vowel reach given; off when a
+    layer says so."""
     return {
         "file": next((layer["file"] for layer in layers if layer["file"]), ""),
         "reach": next((layer["reach"] for layer in layers if layer["reach"]), []),
+        "vowels": next((layer["vowels"] for layer in layers if layer["vowels"]), None),
         "off": any(layer["off"] for layer in layers),
     }
 

@@ -90,7 +90,7 @@ def empty_rules() -> dict[str, Any]:
         },
         "wordnet": {"file": "", "noun_roots": {}, "adjectives": []},
         "homophones": {"words": {}},
-        "typos": {"file": "", "reach": [], "off": False},
+        "typos": {"file": "", "reach": [], "vowels": None, "off": False},
         "resemblance": {
             "forms": [],
             "endings": [],
@@ -200,10 +200,11 @@ def _homophones(c: Checker, raw: object) -> dict[str, Any]:
 def _typos(c: Checker, raw: object) -> dict[str, Any]:
     """[typos]: file (the real words never read as a slip, in stdlib/data), reach (a list of
     {letters, edits}: a word of at least `letters` letters may be `edits` slips from the lexicon
-    word it is read as), off (true: this layer's language reads no slips; cnlmc.typos)."""
+    word it is read as), vowels ({letters, edits}: a word of at least `letters` letters spelt with
+    up to `edits` vowels changed), off (true: this layer's language reads no slips; cnlmc.typos)."""
     path: tuple[str | int, ...] = ("typos",)
     table = c.table(raw, path)
-    c.known_keys(table, ("file", "reach", "off"), path)
+    c.known_keys(table, ("file", "reach", "vowels", "off"), path)
     name = c.string(table.get("file", ""), (*path, "file"))
     if name and not wordnet_file(name).is_file():
         c.fail((*path, "file"), f"no file '{name}' in stdlib/data (scripts/gen_real_words.py writes one)")
@@ -212,10 +213,15 @@ def _typos(c: Checker, raw: object) -> dict[str, Any]:
         step = c.table(step, (*path, "reach", i))
         c.known_keys(step, ("letters", "edits"), (*path, "reach", i))
         reach.append({key: _count(c, step.get(key), (*path, "reach", i, key)) for key in ("letters", "edits")})
+    vowels = None
+    if "vowels" in table:
+        step = c.table(table["vowels"], (*path, "vowels"))
+        c.known_keys(step, ("letters", "edits"), (*path, "vowels"))
+        vowels = {key: _count(c, step.get(key), (*path, "vowels", key)) for key in ("letters", "edits")}
     off = table.get("off", False)
     if not isinstance(off, bool):
         c.fail((*path, "off"), "must be true or false")
-    return {"file": name, "reach": reach, "off": off}
+    return {"file": name, "reach": reach, "vowels": vowels, "off": off}
 
 
 def _count(c: Checker, value: object, path: tuple[str | int, ...]) -> int:

@@ -81,7 +81,7 @@ def near_words(real: set[str]) -> list[str]:
 
     lexicon = load([], None)
     vocabulary = {word for form in lexicon.forms for word in form}
-    slips = Slips(vocabulary, frozenset(), reach())
+    slips = Slips(vocabulary, frozenset(), reach(), vowel_reach())
     unknown = sorted(word for word in real if word not in vocabulary)
     near = {word for word in unknown if slips.within_reach(word)}
     near.update(_near_entry_starts(slips, unknown, sorted(lexicon.followers)))
@@ -110,6 +110,14 @@ def reach() -> list[dict[str, int]]:
 
     rules = tomllib.loads((ROOT / "stdlib" / "lexicon" / "word_formation.toml").read_text("utf-8"))
     return list(rules["typos"]["reach"])
+
+
+def vowel_reach() -> dict[str, int]:
+    """The stdlib word formation rules' [typos] vowel reach."""
+    import tomllib
+
+    rules = tomllib.loads((ROOT / "stdlib" / "lexicon" / "word_formation.toml").read_text("utf-8"))
+    return dict(rules["typos"]["vowels"])
 
 
 def render(words: list[str]) -> str:

@@ -12,7 +12,7 @@ from .spec import OUTPUT_ROLES, Graph, GraphInput, GraphParam, GraphScale, NodeS
 TOP_KEYS = ("name", "doc", "params", "inputs", "nodes", "outputs", "presets", "scale", "palette")
 SCALE_KEYS = ("metres_per_unit", "feature", "what", "measure", "axis", "source")
 SCALE_AXES = ("u", "v", "any")
-PALETTE_KEYS = ("max_chroma", "lightness", "lightness_curve", "dark_below", "dark_params", "source")
+PALETTE_KEYS = ("max_chroma", "lightness", "lightness_curve", "dark_below", "dark_params", "shade", "source")
 REF_KEYS = ("node", "param", "input", "mul", "add")
 IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]{0,63}")  # names that end up in node names and file names
 
@@ -231,8 +231,9 @@ def check_scale(c: Checker, raw, outputs: dict[str, str]) -> GraphScale:
 
 def check_palette(c: Checker, raw, params: dict[str, GraphParam]) -> dict:
     """The `[palette]` table (what a colour word does to the graph's colours; read by the compiler's
-    compiler/passes/textured_colour.py): OKLab chroma cap and lightness range, and the graph
-    parameters a dark named colour sets (light veins in a black marble)."""
+    compiler/passes/textured_colour.py): OKLab chroma cap and lightness range, the graph
+    parameters a dark named colour sets (light veins in a black marble), and the parameters a
+    'darker' / 'lighter' step moves (`shade`: the graph's own colours, toward black or a light end)."""
     table = c.table(raw, "palette")
     c.known_keys(table, PALETTE_KEYS, "palette")
     if "max_chroma" in table and not 0 <= c.number(table["max_chroma"], "palette.max_chroma") <= 0.4:
@@ -254,6 +255,11 @@ def check_palette(c: Checker, raw, params: dict[str, GraphParam]) -> dict:
         v = c.number(value, f"palette.dark_params.{name}")
         if not params[name].low <= v <= params[name].high:
             c.fail(f"palette.dark_params.{name}", f"{v} is outside the range [{params[name].low}, {params[name].high}]")
+    shade = c.table(table.get("shade", {}), "palette.shade")
+    c.known_keys(shade, ("darken", "lighten"), "palette.shade")
+    for way, name in shade.items():
+        if c.string(name, f"palette.shade.{way}") not in params:
+            c.fail(f"palette.shade.{way}", f"'{name}' is not a parameter of this graph")
     c.string(table.get("source", ""), "palette.source")
     return dict(table)
 

@@ -31,12 +31,14 @@ from .colour_steps import (
     yellow_kept,
 )
 from .colours import colour_text, resolve_colour
+from .layer_shade import shade_layers
 from .refine_target import item_text, item_words, note
 
 COLOUR_LIMITS = (0.0, 1.0)
 LIGHTNESS_AXIS = "lightness"  # the axis of darker / lighter: its bracket is on the colour's own key
 NEUTRAL_CHROMA = 1e-4  # an OKLCh chroma below this has no hue to saturate
 UNMOVED = 1e-4  # a colour step smaller than this (per linear channel) is no visible change
+MID_GREY = [0.18, 0.18, 0.18]  # where the base colour cannot move, a layer takes the step a mid grey would
 
 
 def refine_colour(state: MaterialState, entry: Entry, item: ast.RefineItem, direction: int, weight: float) -> None:
@@ -55,6 +57,10 @@ def refine_colour(state: MaterialState, entry: Entry, item: ast.RefineItem, dire
     new = bracket_move(state.brackets, key, current, Move(direction, step, weight, COLOUR_LIMITS))
     holder[name] = new
     state.note(param, new, f"refinements.{entry.key}: bracket step", item_words(item))
+    if param == "base_color" and key == param:  # darker / lighter: a layer's own colours follow
+        moved = max(abs(a - b) for a, b in zip(current, new)) > UNMOVED
+        before, after = (current, new) if moved else (MID_GREY, step(MID_GREY))  # a metal at its top
+        shade_layers(state, before, after, item_words(item))
     note_unmoved(state, item, param, current, new)
 
 
