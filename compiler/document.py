@@ -81,7 +81,56 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
             )
         )
         return None
-    return _parsed_line(text, number, offset, tagger, diags)
+    mark = len(diags)
+    node = _parsed_line(text, number, offset, tagger, diags)
+    if any(d.is_error for d in diags[mark:]) and (
+        passed := _english_read_past(text, number, offset, tagger, diags[mark:])
+    ):
+        diags[mark:] = passed[1]
+        return passed[0]
+    return node
+
+
+def _english_read_past(
+    text: str, number: int, offset: int, tagger: Tagger, said: list[Diagnostic]
+) -> tuple[ast.Item, list[Diagnostic]] | None:
+    """The line read without its unknown words of English that say nothing cnlmc can show, each
+    with its warning (cnlmc.read_past: 'gnarled yew'); None when it may not be or does not read."""
+    from .read_past import passable_words, warning
+
+    formation = tagger.formation()
+    slips = formation.slips_index()
+    if slips is None:  # a language that reads no slips has no word list either (German)
+        return None
+
+    def word_of(diag: Diagnostic) -> str:
+        span = diag.span
+        return text[span.col - 1 : span.col - 1 + span.end - span.start] if span and span.line == number else ""
+
+    def near(word: str) -> bool:
+        return any(edits == 1 for edits, _form in slips.index.typos(word))
+
+    passed = passable_words([d for d in said if d.is_error], word_of, near)
+    if not passed:
+        return None
+    blanked = list(text)
+    for diag in passed:
+        assert diag.span is not None
+        blanked[diag.span.col - 1 : diag.span.col - 1 + diag.span.end - diag.span.start] = " " * (
+            diag.span.end - diag.span.start
+        )
+    again: list[Diagnostic] = []
+    node = _parsed_line("".join(blanked), number, offset, tagger, again)
+    if not isinstance(node, ast.Material) or not _noun_said(node, text) or any(d.is_error for d in again):
+        return None  # 'glossy guitar' is not glossy paint: the material must be named, not implied
+    return replace(node, text=text), [*again, *(warning(d, word_of(d)) for d in passed)]
+
+
+def _noun_said(node: ast.Material, text: str) -> bool:
+    """Whether one of the material's nouns is written on the line where it stands (not implied by
+    describing words: 'glossy' read as glossy paint)."""
+    start = node.span.start - (node.span.col - 1)
+    return any(text[n.span.start - start : n.span.end - start].lower() == n.text.lower() for n in node.nouns)
 
 
 def _removal(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Refinement | None:

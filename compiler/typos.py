@@ -46,7 +46,7 @@ class Slips:
         vowels: Mapping[str, int] | None = None,
     ) -> None:
         words = [word for word in vocabulary if word.isalpha()]
-        self.index = FormIndex({word: (_WORD,) for word in words})
+        self.index = FormIndex(dict.fromkeys(words, (_WORD,)))
         self.real = real
         self.reach = sorted(((step["letters"], step["edits"]) for step in reach or _DEFAULT_REACH), reverse=True)
         self.vowels = dict(vowels or _DEFAULT_VOWELS)

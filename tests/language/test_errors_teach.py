@@ -42,7 +42,7 @@ def test_the_phrases_here_are_not_in_the_everyday_set():
 
 @pytest.mark.parametrize(
     "text,word,expected",
-    [("mahagony", "mahagony", "mahogany"), ("brushed alumimun", "alumimun", "aluminum")],
+    [("mahgonay", "mahgonay", "mahogany"), ("brushed alumimun", "alumimun", "aluminum")],
 )
 def test_a_typo_gets_its_word(compile_text, text, word, expected):
     """Typos beyond the reach of a slip read as its word (cnlmc.typos) are offered."""

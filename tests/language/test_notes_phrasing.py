@@ -117,7 +117,8 @@ def test_a_slip_of_the_keyboard_reads_as_the_one_word_it_is_near(said, meant, sl
         ("mate black metal", "a real English word ('mate') is never a slip"),
         ("chrom", "two words equally near that end alike (chrome, chroma)"),
         ("shny paint", "a word of four letters holds no slip"),
-        ("mahagony", "two slips in eight letters are beyond the reach"),
+        ("mahgonay", "two slips in eight letters are beyond the reach (not vowels alone)"),
+        ("mahagoni", "three vowels changed are beyond the vowel reach"),
     ],
 )
 def test_what_is_not_read_as_a_slip_stays_an_error_with_its_offer(said, why):

@@ -1,0 +1,93 @@
+"""Words cnlmc does not know but English does, names said short, and words spelt as heard (issue
+#14, categories of held-out sets 48-52): cnlmc.read_past (W123), WordFormation._clipped, the vowel
+reach of cnlmc.typos."""
+
+from __future__ import annotations
+
+import pytest
+
+from cnlmc.read_past import english
+from tests.language.meaning import compiled, material, same_look
+
+
+def _codes(result, severity: str) -> list[str]:
+    return [d.code for d in result.diagnostics if d.severity.value == severity]
+
+
+@pytest.mark.parametrize(
+    "said, plain",
+    [
+        ("a sickly chartreuse green paint", "chartreuse green paint"),
+        ("a wizard's staff of gnarled yew", "yew"),
+        ("moonlit marble", "marble"),
+        ("honest oak", "oak"),
+        ("mirrored aviator lenses", "mirrored lenses"),
+    ],
+)
+def test_an_english_word_that_shows_nothing_is_read_past_with_a_warning_naming_it(said, plain):
+    result = compiled(said)
+    assert result.ok and _codes(result, "error") == []
+    warned = [d for d in result.diagnostics if d.code == "W123"]
+    assert len(warned) == 1 and "read past" in warned[0].message
+    assert same_look(result.ir["materials"][0], material(plain))
+
+
+@pytest.mark.parametrize(
+    "said, why",
+    [
+        ("xyzzy oak", "no English word"),
+        ("PETG", "no English word (a product name)"),
+        ("heat staining on steel", "'heat' is a slip from lexicon words (hat, seat)"),
+        ("tighter weave", "a comparative is a change asked for"),
+        ("glossy guitar", "the material would be implied, not named"),
+        ("guitar", "nothing left to read"),
+        ("zombie vampire werewolf oak", "three words read past are too many"),
+        ("Eiche vergraut", "German reads no English words"),
+    ],
+)
+def test_what_is_not_read_past_stays_an_error(said, why):
+    lexicon = "de" if said.startswith("Eiche") else None
+    from cnlmc.api import compile_source, lexicon_for
+
+    result = compile_source(said, "t.cnl", lexicon_for([lexicon] if lexicon else []))
+    assert not result.ok, why
+    assert "E001" in _codes(result, "error") and "W123" not in _codes(result, "warning"), why
+
+
+@pytest.mark.parametrize("word", ["gnarled", "sides", "retaining", "chipped", "saddle-like", "moth-eaten", "sickly"])
+def test_english_words_and_their_inflections(word):
+    assert english(word)
+
+
+@pytest.mark.parametrize("word", ["petg", "xyzzy", "worbla", "d2"])
+def test_not_english(word):
+    assert not english(word)
+
+
+@pytest.mark.parametrize(
+    "short, whole",
+    [
+        ("black patent", "black patent leather"),
+        ("barely tarnished sterling", "barely tarnished sterling silver"),
+        ("cherry red patent", "cherry red patent leather"),
+        ("croc", "croc leather"),
+    ],
+)
+def test_a_name_said_short_is_the_material_it_starts(short, whole):
+    result = compiled(short)
+    assert result.ok and any("said short" in d.message for d in result.diagnostics)
+    assert same_look(result.ir["materials"][0], material(whole))
+
+
+@pytest.mark.parametrize("said", ["patent shoes", "oak kitchen", "medium grey"])
+def test_a_name_is_said_short_only_where_the_noun_stands(said):
+    assert not any("said short" in d.message for d in compiled(said).diagnostics)
+
+
+@pytest.mark.parametrize(
+    "said, meant", [("mahagony", "mahogany"), ("mahogony veneer", "mahogany veneer"), ("travertene", "travertine")]
+)
+def test_a_word_spelt_as_heard_is_read_as_the_word(said, meant):
+    result = compiled(said)
+    assert result.ok and any("slip of the keyboard" in d.message for d in result.diagnostics)
+    assert same_look(result.ir["materials"][0], material(meant))
