@@ -130,7 +130,8 @@ def _noun_said(node: ast.Material, text: str) -> bool:
     """Whether one of the material's nouns is written on the line where it stands (not implied by
     describing words: 'glossy' read as glossy paint)."""
     start = node.span.start - (node.span.col - 1)
-    return any(text[n.span.start - start : n.span.end - start].lower() == n.text.lower() for n in node.nouns)
+    written = (text[n.span.start - start : n.span.end - start].strip().lower() for n in node.nouns)
+    return any(said and said in noun.text.lower() for said, noun in zip(written, node.nouns))
 
 
 def _removal(text: str, number: int, offset: int, tagger: Tagger, diags: list[Diagnostic]) -> ast.Refinement | None:

@@ -72,8 +72,15 @@ class Joiner:
         formed: list[tuple[Tagged, Tagged]] = []  # (the joined noun, its object word): 'marble tiles'
         looks: list[tuple[Tagged, Tagged]] = []  # (the noun, the look word): 'marble-effect laminate'
         mark_after_thing = False  # 'sofa, green velvet': the listing's comma goes with the thing
+        skip = 0  # label words read past ('colour: red'): how many more to pass
         for k, word in enumerate(tagged):
             before = out[-1] if out else None
+            if skip:
+                skip -= 1
+                if skip == 0 and of_tag(word, "COLOR"):  # 'colour tea': the colour, not the drink
+                    word = Tagged(word.text, word.span, of_tag(word, "COLOR"), word.unknown)
+                else:
+                    continue
             if mark_after_thing and only_tag(word, "COMMA"):
                 mark_after_thing = False
                 continue
@@ -137,6 +144,12 @@ class Joiner:
                 made = of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' (the material of the {word.text})", diags)
                 formed.append((out[-1], word))
+            elif (label := self._colour_label(before, word, tagged[k + 1 :])) is not None:
+                skip = label  # 'plastic, colour red', 'colour: red', 'glass colour tea': the colour after it
+                note = f"read '{word.text}' as naming the colour after it"
+                diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))
+                if before is not None and of_tag(before, "NOUN") and k + 1 < len(tagged):
+                    out.append(implied_comma(tagged[k + 1]))  # 'plastic colour red' = 'plastic, red
             elif before is not None and self.is_head(before, word.text, _ends_noun(tagged, k, out), out):
                 out[-1] = self.with_head(before, word.text, word.span, _ends_noun(tagged, k, out), diags)
             elif before is not None and nouns and self._finish_noun(before) is not None:
@@ -661,6 +674,31 @@ class Joiner:
         diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read '{text}' as {reading}"))
         return Tagged(text, span, candidates, a.unknown or b.unknown)
 
+    def has_colour_label(self, tagged: list[Tagged]) -> bool:
+        """Whether a line says 'colour' as a label before a colour ('colour: red'; see _colour_label)."""
+        return any(
+            self._colour_label(tagged[k - 1] if k else None, word, tagged[k + 1 :]) is not None
+            for k, word in enumerate(tagged)
+        )
+
+    def _colour_label(self, before: Tagged | None, word: Tagged, after: list[Tagged]) -> int | None:
+        """'colour' said as a label before the colour it names ('plastic, colour red', 'colour:
+        red', 'colour is dark bordeaux', 'glass colour tea'): how many words after it are read
+        past with it (':' or 'is'; then 1 for the colour itself, 0 for a shade), or None when the
+        word is no such label ('cream colour paint': the colour of the word before)."""
+        if word.text.lower() not in self.rules().colour_heads or not (of_tag(word, "PROP") or of_tag(word, "NAME")):
+            return None
+        if before is not None and (of_tag(before, "COLOR") or of_tag(before, "SHADE") or of_tag(before, "ADJ")):
+            return None
+        at = 0
+        while at < len(after) and (only_tag(after[at], "COLON") or after[at].text.lower() in _LABEL_LINKS):
+            at += 1
+        if at >= len(after) or after[at].unknown:
+            return None
+        if of_tag(after[at], "COLOR"):
+            return at + 1  # the colour itself comes through the skip, as a colour
+        return at if of_tag(after[at], "SHADE") else None
+
     def is_head(self, before: Tagged, text: str, last: bool, line: list[Tagged]) -> bool:
         """A head word (word_formation rules) that belongs to the word before it: after a
         describing word before the noun ("satin finish steel"), or after the noun at the end of
@@ -852,6 +890,9 @@ _AND = (Candidate("AND", "and", "keyword"),)
 _FINISH = (Candidate("FEATURE", "finish", "features"),)
 #: The readings of the words that may come before a coat named as the whole material ('a glossy, red powder coat').
 _BEFORE_A_COAT = frozenset(("ADV", "ADJ", "COLOR", "SHADE", "ARTICLE", "COMMA", "AND", "OR", "NAME", "COLON", "PROP"))
+
+#: Words between a colour label and its colour ("colour is red"; "the colour of sand" is the colour of a thing)
+_LABEL_LINKS = frozenset(("is", "=", "-"))
 
 #: The readings of a comparative's target the tagger keeps before 'than' (also read by the tagger).
 COMPARED = frozenset(("COLOR", "ADJ", "PROP"))

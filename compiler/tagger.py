@@ -201,7 +201,7 @@ class Tagger:
             tagged = _one_mark_between(tagged)
             if len(tagged) > 2:
                 material_named_first(tagged, diags, self.lexicon)  # 'walnut, dark, satin': satin describes the walnut
-        if may_join(tagged):
+        if may_join(tagged) or (_has_label_tags(tagged) and self.joiner.has_colour_label(tagged)):
             tagged = self.joiner.joined(tagged, diags)
         if len(tagged) > 1:
             _last_target_describes(tagged, self.lexicon)
@@ -700,3 +700,9 @@ def _unknown_message(text: str) -> str:
     if text[0].isdigit():
         return f"numbers are not part of the language: '{text}' (describe the look in words)"
     return f"unexpected character '{text}'"
+
+
+def _has_label_tags(tagged: list[Tagged]) -> bool:
+    """Whether some word may be a label ('colour: red', 'plastic, colour red'): a property or a
+    name (checked before the word formation rules are read: most lines have neither)."""
+    return any(c.tag in ("PROP", "NAME") for t in tagged for c in t.candidates)

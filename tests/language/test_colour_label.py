@@ -1,0 +1,36 @@
+"""'colour' said as a label before the colour it names (issue #14, held-out sets 48 and 52: forms
+and listings, English as a second language): cnlmc.joins Joiner._colour_label."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.language.meaning import compiled, material, same_look
+
+
+@pytest.mark.parametrize(
+    "said, plain",
+    [
+        ("plastic, colour red", "red plastic"),
+        ("plastic colour red", "red plastic"),
+        ("colour: red", "red"),
+        ("colour red", "red"),
+        ("leather, colour dark brown", "dark brown leather"),
+        ("shell cordovan, colour burgundy", "burgundy shell cordovan"),
+        ("sofa, color grey", "grey sofa"),
+    ],
+)
+def test_a_colour_label_names_the_colour_after_it(said, plain):
+    result = compiled(said)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert any("naming the colour after it" in d.message for d in result.diagnostics)
+    assert same_look(result.ir["materials"][0], material(plain))
+
+
+@pytest.mark.parametrize(
+    "said, plain", [("cream colour paint", "cream paint"), ("the colour of sand paint", "sand colour paint")]
+)
+def test_a_colour_word_after_its_colour_is_no_label(said, plain):
+    result = compiled(said)
+    assert not any("naming the colour after it" in d.message for d in result.diagnostics)
+    assert same_look(result.ir["materials"][0], material(plain))
