@@ -9,7 +9,7 @@ from . import ast
 from .back import WHOLE, reversed_change, taken_back
 from .default_name import name_words
 from .diagnostics import Diagnostic, error, warning
-from .document import iter_items, parse_change_line, read_without_removal
+from .document import iter_items, parse_change_line, read_change_alone, read_without_removal
 from .ir import JSONDict, document_ir, material_ir
 from .lexicon import Lexicon
 from .params import Params
@@ -157,6 +157,10 @@ def orphan_line(item: ast.Item, lexicon: Lexicon, diags: list[Diagnostic]) -> as
             ]
             diags.extend(plain[1])
             return plain[0]
+    if isinstance(item, ast.Refinement) and (alone := read_change_alone(item, lexicon)) is not None:
+        diags[:] = [d for d in diags if not (d.code == "N101" and d.span is not None and _within(d.span, item.span))]
+        diags.extend(alone[1])  # 'make it navy blue' first: navy blue, its material implied
+        return alone[0]
     keeps_only = isinstance(item, ast.Refinement) and item.keeps_only  # 'thanks' alone
     if keeps_only:  # its note said 'nothing changes': the error says why nothing can
         diags[:] = [d for d in diags if not (d.span == item.span and d.code == "N101")]

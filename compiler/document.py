@@ -176,6 +176,25 @@ def read_without_removal(line: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Ma
     return (node, diags) if isinstance(node, ast.Material) else None
 
 
+def read_change_alone(line: ast.Refinement, lexicon: Lexicon) -> tuple[ast.Material, list[Diagnostic]] | None:
+    """A change line of describing words with no material above ('make it navy blue', 'hey can you
+    make it pillar box red please') read as its words alone, the material they describe implied,
+    with a note; None when they do not read so."""
+    if not line.groups or line.items:
+        return None
+    span = line.span
+    offset = span.start - (span.col - 1)
+    first, last = line.groups[0].span, line.groups[-1].span
+    alone = " " * (first.start - offset) + line.text[first.start - offset : last.end - offset]
+    diags: list[Diagnostic] = []
+    node = _parsed_line(alone, span.line, offset, Tagger.of(lexicon), diags, removals=False)
+    if not isinstance(node, ast.Material) or any(d.is_error for d in diags):
+        return None
+    said = alone.strip()
+    note = f"no material above: read '{line.text.strip()}' as its words alone, '{said}'"
+    return replace(node, text=line.text), [*diags, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)]
+
+
 def _changes_nothing(node: ast.Item) -> bool:
     return isinstance(node, ast.Refinement) and node.keeps_only
 

@@ -87,8 +87,11 @@ def test_a_change_line_of_gloss_words_moves_the_roughness():
     assert changed["roughness"] < matte["roughness"]
 
 
-def test_a_change_line_alone_needs_a_material_above():
-    result = compiled("turn it teal")
+def test_a_change_line_alone_is_its_words_alone():
+    result = compiled("turn it teal")  # no material above: teal, its material implied
+    assert [m["params"] for m in result.materials] == [m["params"] for m in compiled("teal").materials]
+    assert not [d.code for d in result.diagnostics if d.severity.name == "WARNING"]
+    result = compiled("turn it darker")  # nothing to change
     assert not result.materials
     assert [d.code for d in result.diagnostics if d.severity.name == "WARNING"] == ["W104"]
 

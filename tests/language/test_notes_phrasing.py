@@ -294,11 +294,20 @@ def test_a_dangling_degree_before_a_noun_still_warns():
     assert "W103" in [d.code for d in compiled("very oak").diagnostics]
 
 
-def test_a_change_of_describing_words_with_no_material_above_offers_the_words_alone():
-    result = compiled("make it navy blue")
-    (warned,) = [d for d in result.diagnostics if d.code == "W104"]
-    assert "'navy blue'" in warned.hints[0]
-    assert compiled("navy blue").ok  # the offer compiles
+@pytest.mark.parametrize(
+    "first, alone",
+    [("make it navy blue", "navy blue"), ("hey can you make it pillar box red please", "pillar box red")],
+)
+def test_a_change_of_describing_words_with_no_material_above_is_its_words_alone(first, alone):
+    result = compiled(first)
+    assert result.ok and "W104" not in [d.code for d in result.diagnostics]
+    assert any("its words alone" in d.message for d in result.diagnostics)
+    assert same_look(result.ir["materials"][0], material(alone))
+
+
+def test_a_change_with_nothing_to_change_still_warns():
+    (warned,) = [d for d in compiled("make it darker").diagnostics if d.code == "W104"]
+    assert "write the material first" in warned.hints[0]
 
 
 @pytest.mark.parametrize("first", ["piano black", "chrome"])

@@ -4,7 +4,7 @@ the change line 'make it ...' (cnlmc.said_refinement); a refinement word is adde
 
 from __future__ import annotations
 
-from cnlmc.api import lexicon_for
+from cnlmc.api import compile_source, lexicon_for
 from cnlmc.said_refinement import refined
 from cnlmc.speech.listen import Listener
 from cnlmc.speech.recogniser import Hypothesis
@@ -19,8 +19,11 @@ def test_describing_words_are_a_change_and_a_refinement_word_stays():
     assert text == "red plastic\ndarker" and len(result.materials) == 1
 
 
-def test_with_no_material_above_nothing_is_refined():
-    _text, result = refined("", "lavender", LEX, "t.cnl")
+def test_with_no_material_above_the_words_start_the_material():
+    _text, result = refined("", "lavender", LEX, "t.cnl")  # 'make it lavender' first: its words alone
+    (alone,) = compile_source("lavender", "t.cnl", LEX).materials
+    assert [m["params"] for m in result.materials] == [alone["params"]]
+    _text, result = refined("", "darker", LEX, "t.cnl")  # nothing to darken
     assert not result.materials
 
 

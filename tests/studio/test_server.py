@@ -145,7 +145,7 @@ async def test_errors_are_messages_never_tracebacks(client: TestClient[Any, Any]
     for answer in (
         await ask(socket, "nonsense"),
         await ask(socket, "edit"),
-        await ask(socket, "refine", words="purple"),
+        await ask(socket, "refine", words="darker"),  # nothing above to darken
         await ask(socket, "undo"),
         await ask(socket, "export", key="glb", text="bleu plastik"),
         await ask(socket, "export", key="no-such-export", text=PHRASE),
