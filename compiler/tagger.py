@@ -503,12 +503,29 @@ class Tagger:
             hint = f"write '{than}' once"
             diags.append(error(twice, "E002", f"'{raw[i + taken][0]}' a second time", (hint,)))
             return taken + 1
+        finish = self._compared_finish(raw, i + taken, line_no, offset)
+        if finish is not None:  # 'shinier than satin': the finish, not the cloth (cnlmc.passes.finish_ladder)
+            tagged.append(finish)
+            return taken + 1
         rest = raw[i + taken :]
         if not any(self._may_name_material(t) for t, _c in rest) and not self._names_colour(rest):  # 'lighter than'
             where = self._span(raw, i, 1, line_no, offset)
             message = f"'{said} {than}' compares with a material, and none is named after '{than}'"
             diags.append(error(where, "E003", message, (f"name the material after '{than}'",)))
         return taken
+
+    def _compared_finish(self, raw: list[RawToken], at: int, line_no: int, offset: int) -> Tagged | None:
+        """The word at `at` as a finish alone ('than satin', 'than gloss' at the line's end or before
+        a mark or 'but': a finish adjective that sets roughness), its other readings dropped; None
+        for any other word."""
+        if at >= len(raw) or (at + 1 < len(raw) and raw[at + 1][0][:1].isalnum() and raw[at + 1][0].lower() != "but"):
+            return None
+        finishes = tuple(
+            c
+            for c in self._candidates((raw[at][0].lower(),))
+            if c.tag == "ADJ" and self.lexicon.require("adjectives", c.key).set_value("roughness") is not None
+        )
+        return Tagged(raw[at][0], self._span(raw, at, 1, line_no, offset), finishes) if finishes else None
 
     def _compared_with_current(self, raw: list[RawToken], i: int) -> int:
         """How many words 'than that', 'than before' take (the comparison word and the material as it

@@ -28,6 +28,7 @@ from .refine_colour import refine_colour, refine_named_colour
 from .refine_effects import brings_treatment, refine_adjective
 from .refine_missing_map import add_missing_map
 from .refine_property import acted_on, refine_property
+from .finish_ladder import beyond_finish
 from .refine_target import item_words, note, refine_weight
 from .words import apply_described, apply_group
 
@@ -51,6 +52,8 @@ def apply_inline_refinements(state: MaterialState, ctx: Context) -> MaterialStat
             item = named_first(state, ctx, item)  # 'walnut, more red' moves walnut as the line 'more red'
         elif item.target is not None and _describes_material(state, ctx, item):
             apply_group(state, ctx, _as_group(item.target), target="base")
+        if beyond_finish(state, ctx, item):  # 'shinier than satin': past satin, toward glossy
+            continue
         if not add_missing_map(state, ctx, item):  # 'rustier iron' = slightly rusty iron
             apply_refinement(state, ctx, item)
     return state

@@ -1,0 +1,42 @@
+"""A comparative said against a named finish (issue #14, held-out sets 46, 49, 51: 'shinier than
+satin'): the finish after 'than' is the finish, not the cloth, and the comparative lands part way
+to the next finish of settings.toml finish_ladder (compiler/passes/finish_ladder.py)."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.language.meaning import material
+
+
+def roughness(text: str) -> float:
+    return float(material(text)["params"]["roughness"])
+
+
+@pytest.mark.parametrize(
+    "said, low, high",
+    [
+        ("shinier than satin", 0.08, 0.35),  # between satin and glossy: a glossy surface
+        ("duller than gloss", 0.08, 0.35),
+        ("glossier than matte", 0.35, 0.8),
+        ("rougher than satin", 0.35, 0.8),
+        ("glossier than mirror", 0.0, 0.0100001),
+    ],
+)
+def test_a_comparative_against_a_finish_lies_between_it_and_the_next(said, low, high):
+    assert low < roughness(said) < high or roughness(said) == pytest.approx(high)
+
+
+def test_shinier_than_satin_is_glossy_and_no_cloth():
+    said = material("shinier than satin")
+    assert said["params"]["roughness"] < 0.25  # the glossy band of the everyday sets
+    assert not said.get("maps")  # not satin cloth's weave
+
+
+def test_the_adverbs_scale_how_far():
+    slight, plain, much = (roughness(f"{a}shinier than satin") for a in ("a bit ", "", "much "))
+    assert 0.35 > slight > plain > much >= 0.08
+
+
+def test_a_comparative_against_a_material_still_steps_the_material():
+    assert material("lighter than oak")["params"]["base_color"] != material("oak")["params"]["base_color"]
