@@ -24,11 +24,11 @@ from ..tagged import NOTE_CODE
 from .base import colour_seen_through
 from .coats import apply_clauses
 from .colours import colour_text, resolve_colour
+from .finish_ladder import beyond_finish
 from .refine_colour import refine_colour, refine_named_colour
 from .refine_effects import brings_treatment, refine_adjective
 from .refine_missing_map import add_missing_map
 from .refine_property import acted_on, refine_property
-from .finish_ladder import beyond_finish
 from .refine_target import item_words, note, refine_weight
 from .words import apply_described, apply_group
 
