@@ -229,7 +229,11 @@ SAME_COLOUR = 0.1  # OKLab distance under which a colour and a noun's own colour
 
 
 def _misspelt_noun_of_that_colour(offer: str, said: Sequence[Tagged], lexicon: Lexicon) -> bool:
+    from .read_past import english
+
     written = [w.text for w in said]
+    if english(said[-1].text):  # 'blush' is a word (not a misspelt 'plush'); 'terracota' is not
+        return False
     words = offer.split()
     if len(words) != sum(len(t.split()) for t in written) or offer.lower() == " ".join(written).lower():
         return False

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import re
 from collections import OrderedDict
-from collections.abc import Container
+from collections.abc import Collection
 from typing import TYPE_CHECKING
 
 from .diagnostics import Diagnostic, Severity, did_you_mean, error
@@ -391,18 +391,21 @@ class Tagger:
         diags.append(Diagnostic(before.span, Severity.NOTE, NOTE_CODE, note))
         return True
 
-    def _follows(self, word: str, seconds: Container[str]) -> bool:
+    def _follows(self, word: str, seconds: Collection[str]) -> bool:
         """Whether a word (or, for a word the lexicon lacks, the word it sounds like: 'steal') may
         follow as an entry's next word; a known word never reaches the word formation rules."""
         if word in seconds:
             return True
-        return not self._candidates((word,)) and self.formation().heard(word)[0] in seconds
+        return not self._candidates((word,)) and self.formation().heard(word, seconds)[0] in seconds
 
     def _heard_entry(self, said: tuple[str, ...], span: Span, diags: list[Diagnostic]) -> tuple[Candidate, ...]:
         """The entry of several words one of which sounds like what was written ('stainless steal'),
         with a note; () when there is none."""
         formation = self.formation()
-        heard = [formation.heard(w) if not self._candidates((w,)) else (w, "") for w in said]
+        heard: list[tuple[str, str]] = []
+        for k, w in enumerate(said):  # a later word is heard among the words its word before allows
+            among = self.followers.get(heard[k - 1][0], ()) if k == 1 else ()
+            heard.append(formation.heard(w, among) if not self._candidates((w,)) else (w, ""))
         meant = tuple([h for h, _why in heard])
         candidates = self._candidates(meant) if meant != said else ()
         if candidates:

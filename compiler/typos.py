@@ -103,11 +103,15 @@ class Slips:
         ending = [form for form in fewest if form[-1] == low[-1]]
         return ending[0] if len(ending) == 1 else None
 
-    def meant_among(self, word: str, forms: Sequence[str], extra: int = 0) -> str | None:
+    def meant_among(self, word: str, forms: Sequence[str], extra: int = 0, shortest: int = 0) -> str | None:
         """The one of `forms` that `word` is fewest slips from, within the reach plus `extra` (for a
-        word of ENTRY_EXTRA_LETTERS or more), or None (none there, two equally near, a real word)."""
+        word of ENTRY_EXTRA_LETTERS or more), or None (none there, two equally near, a real word).
+        `shortest`: a word of that many letters or more holds one slip at least (the words around
+        it confirm the entry)."""
         low = word.lower()
         allowed = self.edits_allowed(low, extra)
+        if shortest and len(low) >= shortest:
+            allowed = max(allowed, 1)
         if not allowed or not low.isalpha() or low in self.real or not forms:
             return None
         from rapidfuzz import process  # only needed when a word is unknown

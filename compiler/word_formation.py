@@ -24,7 +24,7 @@ remembers what it read (bounded), and lives in lexicon.caches.word_formation.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Container, Mapping, Sequence
+from collections.abc import Callable, Collection, Container, Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -41,6 +41,7 @@ if TYPE_CHECKING:  # imported when first needed: the tagger imports this module 
 __all__ = ["NOTE_CODE", "Part", "Reading", "Rules", "WordFormation"]
 
 MAX_REMEMBERED = 4096  # readings kept; a full memo starts over
+ENTRY_SLIP_LETTERS = 4  # an entry's later word may hold a slip from this many letters (its word before confirms it)
 
 Lookup = Callable[[tuple[str, ...]], tuple[Candidate, ...]]  # the tagger's (memoised) look-up
 
@@ -336,7 +337,7 @@ class WordFormation:
             return None
         heard = self.heard(after)[0] if not self._known(after) else after
         starts = [first for first, seconds in followers.items() if after in seconds or heard in seconds]
-        return slips.meant_among(word, starts, extra=1)
+        return slips.meant_among(word, starts, extra=1, shortest=ENTRY_SLIP_LETTERS)
 
     def slips_index(self) -> Slips | None:
         """The slips index of these rules, or None where this language reads no slips."""
@@ -356,13 +357,17 @@ class WordFormation:
             self.slips = Slips(vocabulary, real_words(rules["file"]), rules["reach"], rules["vowels"])
         return self.slips
 
-    def heard(self, word: str) -> tuple[str, str]:
+    def heard(self, word: str, among: Collection[str] = ()) -> tuple[str, str]:
         """The word an unknown word stands for inside an entry of several words ('stainless steal',
-        'soft tuch'), and why: a word that sounds the same, a slip, or itself ("")."""
+        'soft tuch'), and why: a word that sounds the same, a slip, or itself (""). `among`: the
+        words the entry's word before it allows next; a slip of one of them is read from four
+        letters, the word before confirming it ('sterling siver': silver, not river)."""
         sounds = self.rules.homophones.get(word)
         if sounds is not None:
             return sounds, "a word that sounds the same"
         slipped = self.slip_of(word)
+        if slipped is None and among and (slips := self._slips()) is not None:
+            slipped = slips.meant_among(word, sorted(among), extra=1, shortest=ENTRY_SLIP_LETTERS)
         return (slipped, "a slip of the keyboard") if slipped else (word, "")
 
     def _joined(self, word: str) -> Reading | None:

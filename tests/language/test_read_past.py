@@ -91,3 +91,18 @@ def test_a_word_spelt_as_heard_is_read_as_the_word(said, meant):
     result = compiled(said)
     assert result.ok and any("slip of the keyboard" in d.message for d in result.diagnostics)
     assert same_look(result.ir["materials"][0], material(meant))
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [("sterling siver", "sterling silver"), ("soft tuch black", "soft touch black"), ("spce grey", "space grey")],
+)
+def test_a_short_slip_inside_a_name_of_several_words_is_read_where_the_name_confirms_it(said, meant):
+    result = compiled(said)
+    assert result.ok and any("slip of the keyboard" in d.message for d in result.diagnostics)
+    assert same_look(result.ir["materials"][0], material(meant))
+
+
+@pytest.mark.parametrize("said", ["blck steel", "shny paint"])
+def test_a_short_slip_alone_stays_an_error(said):
+    assert not compiled(said).ok
