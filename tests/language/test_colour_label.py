@@ -34,3 +34,9 @@ def test_a_colour_word_after_its_colour_is_no_label(said, plain):
     result = compiled(said)
     assert not any("naming the colour after it" in d.message for d in result.diagnostics)
     assert same_look(result.ir["materials"][0], material(plain))
+
+
+@pytest.mark.parametrize("said", ["oak, clear colour", "wood of oak, clear colour", "clear colour oak"])
+def test_clear_colour_is_a_light_colour_as_second_language_speakers_say_it(said):
+    assert same_look(material(said), material("light oak"))
+    assert material("clear glass")["model"]["base"] == "glass"  # 'clear' alone stays clear
