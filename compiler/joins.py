@@ -79,7 +79,8 @@ class Joiner:
                 skip -= 1
                 if skip == 0 and of_tag(word, "COLOR"):  # 'colour tea': the colour, not the drink
                     word = Tagged(word.text, word.span, of_tag(word, "COLOR"), word.unknown)
-                else:
+                else:  # a link read past with the label ('colour is brown'): no error of its own
+                    diags[:] = [d for d in diags if not (d.code == "E001" and d.span == word.span)]
                     continue
             if mark_after_thing and only_tag(word, "COMMA"):
                 mark_after_thing = False
@@ -148,6 +149,9 @@ class Joiner:
                 skip = label  # 'plastic, colour red', 'colour: red', 'glass colour tea': the colour after it
                 note = f"read '{word.text}' as naming the colour after it"
                 diags.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))
+                if before is not None and only_tag(before, "ARTICLE"):  # 'wood, the colour is brown'
+                    out.pop()
+                    before = out[-1] if out else None
                 if before is not None and of_tag(before, "NOUN") and k + 1 < len(tagged):
                     out.append(implied_comma(tagged[k + 1]))  # 'plastic colour red' = 'plastic, red
             elif before is not None and self.is_head(before, word.text, _ends_noun(tagged, k, out), out):

@@ -333,7 +333,7 @@ class WordFormation:
         word after it is that entry's second ('stainls steel': stainless; one slip more than a word
         alone may hold, as the entry's second word confirms it), or None."""
         slips = self._slips()
-        if slips is None:
+        if slips is None or word in self.rules.comparison:
             return None
         heard = self.heard(after)[0] if not self._known(after) else after
         starts = [first for first, seconds in followers.items() if after in seconds or heard in seconds]
@@ -366,7 +366,7 @@ class WordFormation:
         if sounds is not None:
             return sounds, "a word that sounds the same"
         slipped = self.slip_of(word)
-        if slipped is None and among and (slips := self._slips()) is not None:
+        if slipped is None and among and word not in self.rules.comparison and (slips := self._slips()) is not None:
             slipped = slips.meant_among(word, sorted(among), extra=1, shortest=ENTRY_SLIP_LETTERS)
         return (slipped, "a slip of the keyboard") if slipped else (word, "")
 

@@ -10,7 +10,8 @@ them alone without loading a dictionary.
     .venv/bin/python scripts/gen_real_words.py            # rewrite stdlib/data/real_words.txt
     .venv/bin/python scripts/gen_real_words.py --check    # exit 1 when the committed file is stale
 
-Real words: every single-word lemma of WordNet 3.0's index.noun/verb/adj/adv, their irregular
+Real words: English's closed-class words (FUNCTION_WORDS below: WordNet leaves them out) and every
+single-word lemma of WordNet 3.0's index.noun/verb/adj/adv, their irregular
 forms (the *.exc files), and their regular inflections by part of speech (nouns -s, verbs -s,
 -ed, -ing, adjectives -er, -est, -ly, with the usual spelling rules). Reach: cnlmc.typos.reach (teaching.toml [typos]). Provenance: Princeton University,
 "WordNet 3.0" (2006), https://wordnet.princeton.edu/ (licence: the WordNet 3.0 licence,
@@ -72,6 +73,23 @@ def _inflect(word: str, suffix: str) -> str:
     return word + suffix
 
 
+#: English's closed-class words, which WordNet (nouns, verbs, adjectives, adverbs) leaves out: never a
+#: slip either ('than' is not a mistyped 'tan', 'that' not 'thai')
+FUNCTION_WORDS = """
+a an the this that these those my your his her its our their mine yours ours theirs whose which what
+who whom i me you he him she it we us they them myself yourself itself ourselves themselves
+and or but nor so yet if then than because although though while whereas unless until since as
+of to in on at by for from with without within into onto upon about above below under over
+between among through across along around against toward towards behind beyond beside besides
+near off out up down after before during except like unlike per via
+am is are was were be been being have has had having do does did doing done
+can could shall should will would may might must ought
+not no nor yes all any both each either every few many more most much neither none other
+several some such own same too very just only also even still already again ever never here there
+where when why how whether once twice
+""".split()
+
+
 def near_words(real: set[str]) -> list[str]:
     """The real words the lexicon lacks within a slip's reach of a lexicon word, or one slip more
     of the first word of an entry of several words (cnlmc.typos: Slips.meant, Slips.meant_among)."""
@@ -82,19 +100,25 @@ def near_words(real: set[str]) -> list[str]:
     lexicon = load([], None)
     vocabulary = {word for form in lexicon.forms for word in form}
     slips = Slips(vocabulary, frozenset(), reach(), vowel_reach())
-    unknown = sorted(word for word in real if word not in vocabulary)
+    unknown = sorted(word for word in real | set(FUNCTION_WORDS) if word not in vocabulary)
     near = {word for word in unknown if slips.within_reach(word)}
-    near.update(_near_entry_starts(slips, unknown, sorted(lexicon.followers)))
+    parts = {*lexicon.followers, *(w for seconds in lexicon.followers.values() for w in seconds)}
+    near.update(_near_entry_starts(slips, unknown, sorted(parts)))
     return sorted(near)
 
 
 def _near_entry_starts(slips: object, words: list[str], starts: list[str]) -> set[str]:
-    """The words within the reach of some entry's first word, one slip more from 7 letters."""
+    """The words within the reach of some entry's first or second word: one slip more from 7
+    letters, one slip from 4 (cnlmc.word_formation ENTRY_SLIP_LETTERS: the entry confirms it)."""
     import numpy as np
     from rapidfuzz.distance import OSA
     from rapidfuzz.process import cdist
 
-    allowed = np.array([slips.edits_allowed(w, extra=1) for w in words])  # type: ignore[attr-defined]
+    from cnlmc.word_formation import ENTRY_SLIP_LETTERS
+
+    allowed = np.array(
+        [max(slips.edits_allowed(w, extra=1), int(len(w) >= ENTRY_SLIP_LETTERS)) for w in words]  # type: ignore[attr-defined]
+    )
     out: set[str] = set()
     for at in range(0, len(words), 5000):
         chunk = words[at : at + 5000]

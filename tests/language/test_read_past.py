@@ -106,3 +106,24 @@ def test_a_short_slip_inside_a_name_of_several_words_is_read_where_the_name_conf
 @pytest.mark.parametrize("said", ["blck steel", "shny paint"])
 def test_a_short_slip_alone_stays_an_error(said):
     assert not compiled(said).ok
+
+
+@pytest.mark.parametrize(
+    "said, plain",
+    [
+        ("the knife is from steel", "steel"),
+        ("a door from wood", "wood"),
+        ("the handle is made with brass", "brass"),
+        ("the table has a dark oak finish", "dark oak"),
+        ("the floor is wood, the color is brown", "brown wood"),
+    ],
+)
+def test_what_second_language_speakers_say_for_made_of_and_has(said, plain):
+    result = compiled(said)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert same_look(result.ir["materials"][0], material(plain))
+
+
+@pytest.mark.parametrize("said", ["m: more yellow than white plastic", "whit oak"])
+def test_a_function_word_or_a_real_word_is_never_a_slip_inside_a_name(said):
+    assert not any("slip of the keyboard" in d.message for d in compiled(said).diagnostics)
