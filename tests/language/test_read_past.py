@@ -127,3 +127,25 @@ def test_what_second_language_speakers_say_for_made_of_and_has(said, plain):
 @pytest.mark.parametrize("said", ["m: more yellow than white plastic", "whit oak"])
 def test_a_function_word_or_a_real_word_is_never_a_slip_inside_a_name(said):
     assert not any("slip of the keyboard" in d.message for d in compiled(said).diagnostics)
+
+
+@pytest.mark.parametrize(
+    "change, key, sign",
+    [
+        ("the colour should be lighter", "base_color", 1),
+        ("the color must be more red", "base_color", 0),
+        ("the finish must be more matte", "roughness", 1),
+        ("make more shiny please", "roughness", -1),
+        ("make darker", "base_color", -1),
+    ],
+)
+def test_a_change_with_its_property_named_or_without_it_is_the_change(change, key, sign):
+    from tests.language.meaning import refined
+
+    before = material("oak")["params"][key]
+    after = refined("oak", change).material["params"][key]
+    assert after != before
+    if sign and key == "roughness":
+        assert (after - before) * sign > 0
+    elif sign:
+        assert (sum(after) - sum(before)) * sign > 0
