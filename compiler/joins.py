@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Any
 
 from .diagnostics import Diagnostic, Severity
 from .spans import Span
-from .tagged import NOTE_CODE, Candidate, Tagged, only_tag
+from .tagged import NOTE_CODE, Candidate, Tagged, only_tag, written_text
 
 if TYPE_CHECKING:
     from .lexicon import Lexicon
@@ -677,6 +677,45 @@ class Joiner:
         text = f"{a.text} {b.text}"
         diags.append(Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read '{text}' as {reading}"))
         return Tagged(text, span, candidates, a.unknown or b.unknown)
+
+    def own_pattern_named(self, tagged: list[Tagged], diags: list[Diagnostic]) -> list[Tagged]:
+        """'white marble with grey', 'black granite with white': a 'with' clause of a colour alone
+        on a material that draws a pattern of its own names the colour of that pattern's feature
+        (features.toml: a feature of colour "map" whose graph is the material's own: veins,
+        speckles), not a second colour of the material; the feature's word is implied after the
+        colour, with a note. The line as it was otherwise."""
+        at = next((k for k, w in enumerate(tagged) if of_tag(w, "WITH")), None)
+        if at is None or at == 0 or at + 1 >= len(tagged):
+            return tagged
+        said = [w for w in tagged[at + 1 :] if not only_tag(w, "ARTICLE")]  # to the line's end: not a list
+        if not said or not of_tag(said[-1], "COLOR") or any(w.unknown for w in said):
+            return tagged
+        if not all(of_tag(w, "COLOR") or of_tag(w, "SHADE") or of_tag(w, "ADV") for w in said):
+            return tagged
+        noun = next((w for w in reversed(tagged[:at]) if of_tag(w, "NOUN")), None)
+        feature = self._pattern_feature(noun) if noun is not None else None
+        if noun is None or feature is None:
+            return tagged
+        last = said[-1]
+        span = Span(last.span.end, last.span.end, last.span.line, last.span.col + len(last.text))
+        implied = Tagged(feature, span, (Candidate("FEATURE", feature, "features"),), implied_by=last.span)
+        note = f"read 'with {written_text(said)}' as 'with {written_text(said)} {feature}': the colour of {noun.text}'s own {feature}"
+        diags.append(Diagnostic(tagged[at].span.to(last.span), Severity.NOTE, NOTE_CODE, note))
+        k = tagged.index(last) + 1
+        return [*tagged[:k], implied, *tagged[k:]]
+
+    def _pattern_feature(self, noun: Tagged) -> str | None:
+        """The feature that draws the noun's own colour pattern (marble: veins), or None."""
+        entry = self.lexicon.entry("nouns", of_tag(noun, "NOUN")[0].key)
+        maps = entry.get("maps") if entry is not None else None
+        graph = maps.get("base_color", {}).get("graph") if maps else None
+        if graph is None:
+            return None
+        for key, feature in self.lexicon.all_of("features").items():
+            feature_maps = feature.get("maps") or {}
+            if feature.get("colour") == "map" and feature_maps.get("base_color", {}).get("graph") == graph:
+                return key
+        return None
 
     def has_colour_label(self, tagged: list[Tagged]) -> bool:
         """Whether a line says 'colour' as a label before a colour ('colour: red'; see _colour_label)."""

@@ -203,6 +203,8 @@ class Tagger:
                 material_named_first(tagged, diags, self.lexicon)  # 'walnut, dark, satin': satin describes the walnut
         if may_join(tagged) or (_has_label_tags(tagged) and self.joiner.has_colour_label(tagged)):
             tagged = self.joiner.joined(tagged, diags)
+        if any(c.tag == "WITH" for t in tagged for c in t.candidates):  # 'white marble with grey'
+            tagged = self.joiner.own_pattern_named(tagged, diags)
         if len(tagged) > 1:
             _last_target_describes(tagged, self.lexicon)
         return tagged, diags

@@ -40,3 +40,23 @@ def test_a_colour_word_after_its_colour_is_no_label(said, plain):
 def test_clear_colour_is_a_light_colour_as_second_language_speakers_say_it(said):
     assert same_look(material(said), material("light oak"))
     assert material("clear glass")["model"]["base"] == "glass"  # 'clear' alone stays clear
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [
+        ("white marble with grey", "white marble with grey veins"),
+        ("marble, white with grey", "white marble with grey veins"),
+        ("black granite with white", "black granite with white speckles"),
+    ],
+)
+def test_a_colour_alone_in_a_with_clause_names_the_material_s_own_pattern(said, meant):
+    result = compiled(said)
+    assert result.ok and "W105" not in [d.code for d in result.diagnostics]
+    assert any("own" in d.message and "with" in d.message for d in result.diagnostics)
+    assert material(said)["maps"] == material(meant)["maps"]
+    assert same_look(material(said), material(meant))
+
+
+def test_a_colour_alone_in_a_with_clause_on_a_plain_material_is_still_a_second_colour():
+    assert "W105" in [d.code for d in compiled("white plastic with black").diagnostics]
