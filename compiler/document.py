@@ -550,7 +550,9 @@ def _failed_line(
 
 
 #: the readings of the words before a statement's copula: a thing ('the table', 'the oak floor')
-_SUBJECT_TAGS = frozenset(("ARTICLE", "NOUN", "OBJECT", "NAME", "COLON"))
+_SUBJECT_TAGS = frozenset(
+    ("ARTICLE", "NOUN", "OBJECT", "NAME", "COLON", "ADJ", "COLOR", "SHADE", "ADV")
+)  # "the old radio"
 
 
 def _statement_reading(words: list[Tagged], text: str, lexicon: Lexicon, diags: list[Diagnostic]) -> ast.Item | None:
@@ -573,7 +575,9 @@ def _statement_reading(words: list[Tagged], text: str, lexicon: Lexicon, diags: 
     def parse(alone: str, said: list[Diagnostic]) -> ast.Item | None:
         return parse_line(alone, at.line, line_start, Tagger.of(lexicon), said)
 
-    reading = read_statement(text, found, at.line, line_start, parse, names_material)
+    colours = [w for w in subject if not names_material and any(c.tag in ("COLOR", "SHADE") for c in w.candidates)]
+    kept = [(w.span.start - line_start, w.span.end - line_start) for w in colours]  # 'the red chair is plastic'
+    reading = read_statement(text, found, at.line, line_start, parse, names_material, kept)
     if reading is None:
         return None
     # the line's first reading failed: what it said goes, the statement's reading says it again

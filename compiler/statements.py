@@ -12,7 +12,7 @@ it stay one line ('oak table varnished': varnished oak). Only a line that does n
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 from . import ast
 from .diagnostics import Diagnostic, Severity
@@ -52,14 +52,24 @@ def statement(text: str) -> Statement | None:
 
 
 def read_statement(
-    text: str, found: Statement, line: int, offset: int, parse: Parse, names_material: bool
+    text: str,
+    found: Statement,
+    line: int,
+    offset: int,
+    parse: Parse,
+    names_material: bool,
+    kept: Sequence[tuple[int, int]] = (),
 ) -> tuple[ast.Material, list[Diagnostic]] | None:
     """The line read as its statement: the copula blanked where the subject names the material,
-    else the subject too; the material and its notes, or None when that does not read."""
+    else the subject too but for its colour words (`kept`, columns: 'the red chair is plastic' is
+    red plastic); the material and its notes, or None when that does not read."""
     start = found.copula[0] if names_material else found.subject[0]
     end = found.copula[1]
     said: list[Diagnostic] = []
-    node = parse(text[:start] + " " * (end - start) + text[end:], said)
+    blanked = list(text[:start] + " " * (end - start) + text[end:])
+    for first, last in kept:
+        blanked[first:last] = text[first:last]
+    node = parse("".join(blanked), said)
     if not isinstance(node, ast.Material) or any(d.is_error for d in said):
         return None
     gone = " ".join(text[start:end].split())

@@ -149,3 +149,18 @@ def test_a_change_with_its_property_named_or_without_it_is_the_change(change, ke
         assert (after - before) * sign > 0
     elif sign:
         assert (sum(after) - sum(before)) * sign > 0
+
+
+@pytest.mark.parametrize(
+    "said, plain",
+    [
+        ("the red chair is plastic", "red plastic"),
+        ("the dark red sofa was velvet", "dark red velvet"),
+        ("the big table was dark oak", "dark oak"),
+        ("the old radio was bakelite", "bakelite"),
+    ],
+)
+def test_a_statement_keeps_the_colour_said_of_the_thing(said, plain):
+    result = compiled(said)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert same_look(result.ir["materials"][0], material(plain))
