@@ -88,7 +88,30 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
     ):
         diags[mark:] = passed[1]
         return passed[0]
+    if any(d.is_error for d in diags[mark:]) and (fixed := _corrected(text, number, offset, tagger)):
+        diags[mark:] = fixed[1]  # 'natural matt no wait satin': the correction's word
+        return fixed[0]
     return node
+
+
+def _corrected(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast.Item, list[Diagnostic]] | None:
+    """The line read with its mid-line correction (cnlmc.corrections), with a note; None when it
+    has none or does not read so."""
+    from .corrections import correction
+
+    lexicon = tagger.lexicon
+    found = correction(text, lambda word: {entry.tag for entry in lexicon.lookup((word,))})
+    if found is None:
+        return None
+    said: list[Diagnostic] = []
+    node = parse_line(found.text, number, offset, tagger, said)
+    if node is None or any(d.is_error for d in said):
+        return None
+    span = Span(offset + found.start, offset + found.end, number, found.start + 1)
+    note = f"read past '{found.dropped} {found.marker}': a correction, the word after it said instead"
+    if not found.dropped:  # 'no actually a lot lighter'
+        note = f"read past '{found.marker}': a correction, what follows said instead"
+    return replace(node, text=text), [*said, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)]
 
 
 def _english_read_past(

@@ -164,3 +164,34 @@ def test_a_statement_keeps_the_colour_said_of_the_thing(said, plain):
     result = compiled(said)
     assert result.ok, [d.message for d in result.diagnostics]
     assert same_look(result.ir["materials"][0], material(plain))
+
+
+@pytest.mark.parametrize(
+    "said, plain",
+    [
+        ("oak matt no wait satin", "satin oak"),
+        ("red, sorry, blue velvet", "blue velvet"),
+        ("brushed steel i mean brass", "brushed brass"),
+    ],
+)
+def test_a_correction_said_mid_line_keeps_the_word_after_it(said, plain):
+    result = compiled(said)
+    assert result.ok and any("a correction" in d.message for d in result.diagnostics)
+    assert same_look(result.ir["materials"][0], material(plain))
+
+
+def test_a_correction_said_first_on_a_change_line_is_read_past():
+    from tests.language.meaning import refined
+
+    plain = refined("grey linen", "a lot lighter").material
+    corrected = refined("grey linen", "no actually a lot lighter").material
+    assert corrected["params"] == plain["params"]
+
+
+def test_a_correction_marker_between_words_of_different_kinds_drops_nothing():
+    assert not any("a correction" in d.message for d in compiled("matt sorry oak").diagnostics)
+
+
+@pytest.mark.parametrize("said", ["concrete with a satin sealer", "stone with a clear sealant"])
+def test_a_sealer_is_a_clear_coat(said):
+    assert material(said)["model"]["coat"]
