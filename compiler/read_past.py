@@ -68,7 +68,8 @@ def _base(word: str, ending: str, replacement: str) -> str:
 
 
 def _comparing(word: str) -> bool:
-    """'tighter', 'glossiest': a comparative or superlative of an English adjective."""
+    """'tighter', 'glossiest': a comparative or superlative (an -er / -est word that is not itself
+    a lemma: the word list holds no adjective's irregular forms, so 'springier' is not one)."""
     low = word.lower()
     return any(low.endswith(end) and len(low) > len(end) + 2 for end in _COMPARING) and low not in _words()
 

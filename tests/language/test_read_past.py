@@ -38,7 +38,7 @@ def test_an_english_word_that_shows_nothing_is_read_past_with_a_warning_naming_i
         ("xyzzy oak", "no English word"),
         ("PETG", "no English word (a product name)"),
         ("heat staining on steel", "'heat' is a slip from lexicon words (hat, seat)"),
-        ("tighter weave", "a comparative is a change asked for"),
+        ("springier foam", "a comparative is a change asked for"),
         ("glossy guitar", "the material would be implied, not named"),
         ("guitar", "nothing left to read"),
         ("zombie vampire werewolf oak", "three words read past are too many"),
@@ -195,3 +195,12 @@ def test_a_correction_marker_between_words_of_different_kinds_drops_nothing():
 @pytest.mark.parametrize("said", ["concrete with a satin sealer", "stone with a clear sealant"])
 def test_a_sealer_is_a_clear_coat(said):
     assert material(said)["model"]["coat"]
+
+
+@pytest.mark.parametrize("change, finer", [("a tighter weave", True), ("finer weave", True), ("a looser weave", False)])
+def test_a_weave_said_tighter_or_looser_scales_the_pattern(change, finer):
+    from tests.language.meaning import refined
+
+    before = material("grey tweed")["maps"]["normal"]["params"].get("scale", 1.0)
+    after = refined("grey tweed", change).material["maps"]["normal"]["params"]["scale"]
+    assert (after > before) == finer and after != before
