@@ -16,8 +16,8 @@ https://wordnet.princeton.edu/ (licence: the WordNet 3.0 licence, BSD-style). En
 
 from __future__ import annotations
 
-import argparse
 import re
+import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -47,18 +47,10 @@ def words(folder: Path) -> list[str]:
 
 
 def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n", 1)[0])
-    parser.add_argument("--wordnet", type=Path, default=WORDNET)
-    parser.add_argument("--check", action="store_true")
-    args = parser.parse_args()
-    text = HEADER + "".join(f"{w}\n" for w in words(args.wordnet))
-    if args.check:
-        fresh = OUT.exists() and OUT.read_text("utf-8") == text
-        print("english_words.txt is " + ("fresh" if fresh else "stale"))
-        return 0 if fresh else 1
-    OUT.write_text(text, "utf-8")
-    print(f"wrote {OUT.relative_to(ROOT)}: {len(text.splitlines()) - HEADER.count(chr(10))} words")
-    return 0
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from gen_real_words import word_list_main
+
+    return word_list_main(__doc__, OUT, HEADER, lambda folder: HEADER + "".join(f"{w}\n" for w in words(folder)))
 
 
 if __name__ == "__main__":

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -148,19 +149,25 @@ def render(words: list[str]) -> str:
     return HEADER + "".join(f"{word}\n" for word in words)
 
 
-def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n", 1)[0])
+def word_list_main(doc: str, out: Path, header: str, make: Callable[[Path], str]) -> int:
+    """The command line of a word-list generator: `make(wordnet folder)` -> the file's text, written
+    to `out`, or with --check compared with it (exit 1 when stale)."""
+    parser = argparse.ArgumentParser(description=doc.split("\n", 1)[0])
     parser.add_argument("--wordnet", type=Path, default=WORDNET)
     parser.add_argument("--check", action="store_true")
     args = parser.parse_args()
-    text = render(near_words(inflected(lemmas(args.wordnet))))
+    text = make(args.wordnet)
     if args.check:
-        fresh = OUT.exists() and OUT.read_text("utf-8") == text
-        print("real_words.txt is " + ("fresh" if fresh else "stale"))
+        fresh = out.exists() and out.read_text("utf-8") == text
+        print(f"{out.name} is " + ("fresh" if fresh else "stale"))
         return 0 if fresh else 1
-    OUT.write_text(text, "utf-8")
-    print(f"wrote {OUT.relative_to(ROOT)}: {len(text.splitlines()) - HEADER.count(chr(10))} words")
+    out.write_text(text, "utf-8")
+    print(f"wrote {out.relative_to(ROOT)}: {len(text.splitlines()) - header.count(chr(10))} words")
     return 0
+
+
+def main() -> int:
+    return word_list_main(__doc__, OUT, HEADER, lambda folder: render(near_words(inflected(lemmas(folder)))))
 
 
 if __name__ == "__main__":

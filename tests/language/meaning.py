@@ -1,5 +1,6 @@
 """Helpers of the meaning tests (issue #14): a phrase compiled with the standard lexicon, its
-material, a change session, colours in OKLCh, and whether two materials look the same."""
+material, a change session, colours in OKLCh, whether two materials look the same, and whether a
+phrase reads as another with a note."""
 
 from __future__ import annotations
 
@@ -36,3 +37,11 @@ def refined(phrase: str, *lines: str) -> Session:
 
 def same_look(a: dict, b: dict, keys: tuple[str, ...] = ("base_color", "roughness", "anisotropy")) -> bool:
     return a["model"] == b["model"] and all(a["params"].get(k) == b["params"].get(k) for k in keys)
+
+
+def reads_as(said: str, plain: str, note: str = "") -> None:
+    """`said` compiles, with a diagnostic that says `note`, to the look of `plain`."""
+    result = compiled(said)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert not note or any(note in d.message for d in result.diagnostics), [d.message for d in result.diagnostics]
+    assert same_look(result.ir["materials"][0], material(plain))

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.language.meaning import compiled, material, same_look
+from tests.language.meaning import compiled, material, reads_as, same_look
 
 
 @pytest.mark.parametrize(
@@ -21,10 +21,7 @@ from tests.language.meaning import compiled, material, same_look
     ],
 )
 def test_a_colour_label_names_the_colour_after_it(said, plain):
-    result = compiled(said)
-    assert result.ok, [d.message for d in result.diagnostics]
-    assert any("naming the colour after it" in d.message for d in result.diagnostics)
-    assert same_look(result.ir["materials"][0], material(plain))
+    reads_as(said, plain, "naming the colour after it")
 
 
 @pytest.mark.parametrize(

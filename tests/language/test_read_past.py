@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from cnlmc.read_past import english
-from tests.language.meaning import compiled, material, same_look
+from tests.language.meaning import compiled, material, reads_as, same_look
 
 
 def _codes(result, severity: str) -> list[str]:
@@ -74,9 +74,7 @@ def test_not_english(word):
     ],
 )
 def test_a_name_said_short_is_the_material_it_starts(short, whole):
-    result = compiled(short)
-    assert result.ok and any("said short" in d.message for d in result.diagnostics)
-    assert same_look(result.ir["materials"][0], material(whole))
+    reads_as(short, whole, "said short")
 
 
 @pytest.mark.parametrize("said", ["patent shoes", "oak kitchen", "medium grey"])
@@ -88,9 +86,7 @@ def test_a_name_is_said_short_only_where_the_noun_stands(said):
     "said, meant", [("mahagony", "mahogany"), ("mahogony veneer", "mahogany veneer"), ("travertene", "travertine")]
 )
 def test_a_word_spelt_as_heard_is_read_as_the_word(said, meant):
-    result = compiled(said)
-    assert result.ok and any("slip of the keyboard" in d.message for d in result.diagnostics)
-    assert same_look(result.ir["materials"][0], material(meant))
+    reads_as(said, meant, "slip of the keyboard")
 
 
 @pytest.mark.parametrize(
@@ -98,9 +94,7 @@ def test_a_word_spelt_as_heard_is_read_as_the_word(said, meant):
     [("sterling siver", "sterling silver"), ("soft tuch black", "soft touch black"), ("spce grey", "space grey")],
 )
 def test_a_short_slip_inside_a_name_of_several_words_is_read_where_the_name_confirms_it(said, meant):
-    result = compiled(said)
-    assert result.ok and any("slip of the keyboard" in d.message for d in result.diagnostics)
-    assert same_look(result.ir["materials"][0], material(meant))
+    reads_as(said, meant, "slip of the keyboard")
 
 
 @pytest.mark.parametrize("said", ["blck steel", "shny paint"])
@@ -119,9 +113,7 @@ def test_a_short_slip_alone_stays_an_error(said):
     ],
 )
 def test_what_second_language_speakers_say_for_made_of_and_has(said, plain):
-    result = compiled(said)
-    assert result.ok, [d.message for d in result.diagnostics]
-    assert same_look(result.ir["materials"][0], material(plain))
+    reads_as(said, plain)
 
 
 @pytest.mark.parametrize("said", ["m: more yellow than white plastic", "whit oak"])
@@ -161,9 +153,7 @@ def test_a_change_with_its_property_named_or_without_it_is_the_change(change, ke
     ],
 )
 def test_a_statement_keeps_the_colour_said_of_the_thing(said, plain):
-    result = compiled(said)
-    assert result.ok, [d.message for d in result.diagnostics]
-    assert same_look(result.ir["materials"][0], material(plain))
+    reads_as(said, plain)
 
 
 @pytest.mark.parametrize(
@@ -175,9 +165,7 @@ def test_a_statement_keeps_the_colour_said_of_the_thing(said, plain):
     ],
 )
 def test_a_correction_said_mid_line_keeps_the_word_after_it(said, plain):
-    result = compiled(said)
-    assert result.ok and any("a correction" in d.message for d in result.diagnostics)
-    assert same_look(result.ir["materials"][0], material(plain))
+    reads_as(said, plain, "a correction")
 
 
 def test_a_correction_said_first_on_a_change_line_is_read_past():
