@@ -208,6 +208,8 @@ class Joiner:
         elif (finish := self._finish_alone(out)) is not None:
             self._finish_on_substrate(out, finish, diags)  # "blue glaze", "red enamel"
         _feature_colour_list(out, diags)
+        if len(out) > 3:
+            _feature_then_colour(out, diags, self.spoken().with_word)  # 'granite, speckled grey'
         if len(out) > 1:
             _feature_first(out, diags, self.lexicon, self.spoken().with_word)
         if len(out) > 1 and _ends_in_describing(out) and self.rules().postfix:
@@ -1151,6 +1153,30 @@ def _feature_first(out: list[Tagged], diags: list[Diagnostic], lexicon: Lexicon,
         w = rest[0].span
         joint = [Tagged("and", Span(w.start + 1, w.start + 1, w.line, w.col + 1), _AND, implied_by=said_span)]
     out[start:] = [*own, noun, with_word, *words, *joint, *rest]
+
+
+def _feature_then_colour(out: list[Tagged], diags: list[Diagnostic], with_text: str = "with") -> None:
+    """'granite, speckled grey', 'stoneware, speckled oatmeal': after the material and a comma, a
+    feature said as a participle, then a colour to the line's end, is the material in that colour
+    with the feature ('grey granite with speckles'), as 'speckled grey granite' reads; a note says
+    so. Any other line is left as it is."""
+    if len(out) < 4 or not of_tag(out[0], "NOUN") or out[0].unknown or not only_tag(out[1], "COMMA"):
+        return
+    feature = out[2]
+    if not only_tag(feature, "FEATURE") or not feature.text.lower().endswith("ed"):
+        return
+    colour = out[3:]
+    if _colour_end(colour, 0) != len(colour) or any(t.unknown for t in colour):
+        return
+    noun = out[0]
+    said = f"{feature.text} {' '.join(t.text for t in colour)}"
+    note = f"read '{noun.text}, {said}' as '{' '.join(t.text for t in colour)} {noun.text} {with_text} {feature.text}'"
+    diags.append(Diagnostic(noun.span.to(colour[-1].span), Severity.NOTE, NOTE_CODE, note))
+    at = colour[-1].span  # the 'with': empty, after the colour (the parser keys words by where they start)
+    with_word = Tagged(
+        "with", Span(at.end, at.end, at.line, at.col + at.end - at.start), _WITH, implied_by=feature.span
+    )
+    out[:] = [*colour, noun, with_word, feature]
 
 
 def _feature_noun(word: Tagged, key: str) -> str:

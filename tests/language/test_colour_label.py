@@ -57,3 +57,12 @@ def test_a_colour_alone_in_a_with_clause_names_the_material_s_own_pattern(said, 
 
 def test_a_colour_alone_in_a_with_clause_on_a_plain_material_is_still_a_second_colour():
     assert "W105" in [d.code for d in compiled("white plastic with black").diagnostics]
+
+
+@pytest.mark.parametrize(
+    "said, meant",
+    [("granite, speckled grey", "speckled grey granite"), ("stoneware, speckled oatmeal", "speckled oatmeal stoneware")],
+)
+def test_a_feature_then_a_colour_after_the_comma_reads_as_before_the_noun(said, meant):
+    assert material(said)["maps"] == material(meant)["maps"]
+    assert same_look(material(said), material(meant))
