@@ -83,14 +83,14 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
         return None
     mark = len(diags)
     node = _parsed_line(text, number, offset, tagger, diags)
+    if any(d.is_error for d in diags[mark:]) and (fixed := _corrected(text, number, offset, tagger)):
+        diags[mark:] = fixed[1]  # 'natural matt no wait satin': the correction's word
+        return fixed[0]
     if any(d.is_error for d in diags[mark:]) and (
         passed := _english_read_past(text, number, offset, tagger, diags[mark:])
     ):
         diags[mark:] = passed[1]
         return passed[0]
-    if any(d.is_error for d in diags[mark:]) and (fixed := _corrected(text, number, offset, tagger)):
-        diags[mark:] = fixed[1]  # 'natural matt no wait satin': the correction's word
-        return fixed[0]
     return node
 
 
@@ -104,7 +104,7 @@ def _corrected(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast
     if found is None:
         return None
     said: list[Diagnostic] = []
-    node = parse_line(found.text, number, offset, tagger, said)
+    node = _parsed_line(found.text, number, offset, tagger, said)  # one correction a line: no nesting
     if node is None or any(d.is_error for d in said):
         return None
     span = Span(offset + found.start, offset + found.end, number, found.start + 1)
@@ -598,15 +598,26 @@ def _statement_reading(words: list[Tagged], text: str, lexicon: Lexicon, diags: 
     def parse(alone: str, said: list[Diagnostic]) -> ast.Item | None:
         return parse_line(alone, at.line, line_start, Tagger.of(lexicon), said)
 
+    reading = read_statement(text, found, at.line, line_start, parse, names_material)
     colours = [w for w in subject if not names_material and any(c.tag in ("COLOR", "SHADE") for c in w.candidates)]
-    kept = [(w.span.start - line_start, w.span.end - line_start) for w in colours]  # 'the red chair is plastic'
-    reading = read_statement(text, found, at.line, line_start, parse, names_material, kept)
+    if reading is not None and colours:  # 'the red chair is plastic': the thing's colour is the material's
+        kept = [(w.span.start - line_start, w.span.end - line_start) for w in colours]
+        coloured = read_statement(text, found, at.line, line_start, parse, names_material, kept)
+        reading = coloured if coloured is not None and _only_coloured(reading[0], coloured[0]) else reading
     if reading is None:
         return None
     # the line's first reading failed: what it said goes, the statement's reading says it again
     diags[:] = [d for d in diags if not (d.span is not None and d.span.line == at.line)]
     diags.extend(reading[1])
     return replace(reading[0], text=text)
+
+
+def _only_coloured(plain: ast.Material, coloured: ast.Material) -> bool:
+    """Whether the subject's colour only colours the material the statement names: the same nouns
+    (not a species the colour names with it: 'the black chair is oak' is not black oak) and no
+    colour of its own said after the copula ('the green door is painted red')."""
+    same = [n.key for n in plain.nouns] == [n.key for n in coloured.nouns]
+    return same and not any(g.colours for g in plain.groups)
 
 
 def _made_of_reading(words: list[Tagged], text: str, lexicon: Lexicon, diags: list[Diagnostic]) -> ast.Item | None:

@@ -229,10 +229,10 @@ SAME_COLOUR = 0.1  # OKLab distance under which a colour and a noun's own colour
 
 
 def _misspelt_noun_of_that_colour(offer: str, said: Sequence[Tagged], lexicon: Lexicon) -> bool:
-    from .read_past import english
+    from .read_past import english_noun
 
     written = [w.text for w in said]
-    if english(said[-1].text):  # 'blush' is a word (not a misspelt 'plush'); 'terracota' is not
+    if english_noun(said[-1].text):  # 'blush' is a word (not a misspelt 'plush'); 'terracota' is not
         return False
     words = offer.split()
     if len(words) != sum(len(t.split()) for t in written) or offer.lower() == " ".join(written).lower():

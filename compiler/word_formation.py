@@ -152,7 +152,6 @@ class WordFormation:
         self.resemblance = Resemblance(lexicon, self.rules.resemblance)
         self.spoken_words: Spoken | None = None  # made on first use
         self.slips: Slips | None = None  # made on the first unknown word a slip may explain
-        self.clipped_names: dict[str, tuple[str, ...]] | None = None  # made on first use
 
     @classmethod
     def of(cls, lexicon: Lexicon, lookup: Lookup) -> WordFormation:
@@ -195,10 +194,7 @@ class WordFormation:
             adverb = rules.prefixes.get(first)
             if adverb is not None:
                 return self._prefixed_word(first, adverb, words[1])
-        found = self.read(first)
-        if found is None and (len(words) == 1 or not words[1][:1].isalnum()):  # last: 'black patent'
-            return self._clipped(first)
-        return found
+        return self.read(first)
 
     def _passed_reason(self, word: str) -> str | None:
         """Why a qualifier word is read past ('kitchen': where or what for), or None for other words."""
@@ -278,30 +274,6 @@ class WordFormation:
             if found is not None:
                 return found
         return None
-
-    def _clipped(self, word: str) -> Reading | None:
-        """'patent' = patent leather, 'croc' = croc leather: the first word of one material's name
-        of several words whose last word names a material or its kind, said short as 'stainless'
-        is, where the material's noun stands (last on the line or before a mark: read_at); None
-        when no such name or several materials start with the word."""
-        if self.misplaced(word) is not None:  # 'oak kitchen': a qualifier, not kitchen foil
-            return None
-        names = self._clipped_names().get(word, ())
-        found = self.lookup(tuple(names[0].split())) if len(names) == 1 else ()
-        return _whole(found, f"read '{word}' as '{names[0]}' (the name said short)") if found else None
-
-    def _clipped_names(self) -> dict[str, tuple[str, ...]]:
-        """First word -> the material names of several words it starts (one per material)."""
-        if self.clipped_names is None:
-            kinds = {str(e.get("class")) for e in self.lexicon.all_of("nouns").values() if e.get("class")}
-            by_first: dict[str, dict[tuple[str, ...], str]] = {}
-            for form in self.lexicon.forms:
-                nouns = tuple(sorted(c.key for c in self.lookup(form) if c.tag == "NOUN"))
-                last_is_material = form[-1] in kinds or any(c.tag == "NOUN" for c in self.lookup(form[-1:]))
-                if len(form) == 2 and nouns and last_is_material:
-                    by_first.setdefault(form[0], {}).setdefault(nouns, " ".join(form))
-            self.clipped_names = {first: tuple(names.values()) for first, names in by_first.items()}
-        return self.clipped_names
 
     def _names_feature(self, word: str) -> bool:
         """Whether the word is a feature ('large veins', 'large flakes': there a size is the

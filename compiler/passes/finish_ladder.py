@@ -26,7 +26,7 @@ def beyond_finish(state: MaterialState, ctx: Context, item: ast.RefineItem) -> b
     entry = ctx.lexicon.require("refinements", item.word.key)
     if entry.get("target") != ROUGHNESS or item.target is not None:
         return False
-    finish = _compared_finish(state.selection, ctx, item)
+    finish = _finish_after_than(state.selection, ctx, item)
     if finish is None:
         return False
     value = float(ctx.lexicon.require("adjectives", finish.key).set_value(ROUGHNESS))
@@ -45,7 +45,7 @@ def beyond_finish(state: MaterialState, ctx: Context, item: ast.RefineItem) -> b
     return True
 
 
-def _compared_finish(material: ast.Material, ctx: Context, item: ast.RefineItem) -> ast.Word | None:
+def _finish_after_than(material: ast.Material, ctx: Context, item: ast.RefineItem) -> ast.Word | None:
     """The finish adjective right after the item's comparison word ('shinier than satin'), or None."""
     formation = ctx.lexicon.caches.word_formation
     if formation is None:

@@ -17,30 +17,34 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from .. import ast
+from ..colour import luminance
 from ..graphs import graph_palette
 from ..state import MaterialState
 
-LUMA = (0.2126, 0.7152, 0.0722)
 TINY = 1e-6
 
 
 def shade_layers(
     state: MaterialState, before: Sequence[float], after: Sequence[float], words: tuple[ast.Word, ...]
-) -> None:
-    """Move every colour layer's shade parameters by the base colour's step `before` -> `after`."""
-    was, now = _luminance(before), _luminance(after)
+) -> bool:
+    """Move every colour layer's shade parameters by the base colour's step `before` -> `after`;
+    whether a layer moved."""
+    was, now = luminance(before), luminance(after)
     if was < TINY or abs(now - was) < TINY:
-        return
-    ratio = now / was
+        return False
+    ratio, moved = now / was, False
     for role, ref in state.maps.items():
         shade = graph_palette(str(ref.get("graph", ""))).get("shade")
         if role != "base_color" or not shade:
             continue
         params = ref.setdefault("params", {})
         dark, light = _shaded(float(params.get(shade["darken"], 0.0)), float(params.get(shade["lighten"], 0.0)), ratio)
+        was_shade = (params.get(shade["darken"], 0.0), params.get(shade["lighten"], 0.0))
         params[shade["darken"]], params[shade["lighten"]] = round(dark, 6), round(light, 6)
+        moved = moved or was_shade != (params[shade["darken"]], params[shade["lighten"]])
         rule = f"stdlib/graphs/{ref['graph']}.toml palette.shade: the layer's own colours step with the material's"
         state.note(f"maps.{role}", dict(params), rule, words)
+    return moved
 
 
 def _shaded(dark: float, light: float, ratio: float) -> tuple[float, float]:
@@ -61,7 +65,3 @@ def _shaded(dark: float, light: float, ratio: float) -> tuple[float, float]:
 
 def _unit(x: float) -> float:
     return min(max(x, 0.0), 1.0)
-
-
-def _luminance(rgb: Sequence[float]) -> float:
-    return sum(w * float(c) for w, c in zip(LUMA, rgb))

@@ -60,7 +60,8 @@ def refine_colour(state: MaterialState, entry: Entry, item: ast.RefineItem, dire
     if param == "base_color" and key == param:  # darker / lighter: a layer's own colours follow
         moved = max(abs(a - b) for a, b in zip(current, new)) > UNMOVED
         before, after = (current, new) if moved else (MID_GREY, step(MID_GREY))  # a metal at its top
-        shade_layers(state, before, after, item_words(item))
+        if shade_layers(state, before, after, item_words(item)):
+            return  # the layer moved: the line did something ('tarnished silver', then 'lighter')
     note_unmoved(state, item, param, current, new)
 
 

@@ -134,14 +134,14 @@ def test_more_colour_keeps_its_meaning(compile_text):
 
 @pytest.mark.parametrize(
     "phrase",
-    ["paint, like navy", "oak, like walnut", "white paint in flat", "1950 oak"],
+    ["paint, like navy", "oak, like walnut", "white paint in flat", "honest oak", "1950 oak"],
 )
 def test_readings_that_must_not_swallow_words(compile_text, phrase):
     """A bare 'like' after a material, a place word without its article, '-est' on a word that only
     ends so, a number before a non-metal: each stays an error rather than being read past (review of session
     14; a colour step after a comma, 'walnut, more red', reads as the change line since session 24:
-    tests/language/test_notes_phrasing.py; 'honest oak' is oak with a warning naming 'honest' since
-    session 25: tests/language/test_read_past.py)."""
+    tests/language/test_notes_phrasing.py; an unknown noun of English is read past with a warning
+    since session 25, an adjective such as 'honest' is not: tests/language/test_read_past.py)."""
     assert not compile_text(phrase).ok
 
 

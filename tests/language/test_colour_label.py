@@ -61,7 +61,10 @@ def test_a_colour_alone_in_a_with_clause_on_a_plain_material_is_still_a_second_c
 
 @pytest.mark.parametrize(
     "said, meant",
-    [("granite, speckled grey", "speckled grey granite"), ("stoneware, speckled oatmeal", "speckled oatmeal stoneware")],
+    [
+        ("granite, speckled grey", "speckled grey granite"),
+        ("stoneware, speckled oatmeal", "speckled oatmeal stoneware"),
+    ],
 )
 def test_a_feature_then_a_colour_after_the_comma_reads_as_before_the_noun(said, meant):
     assert material(said)["maps"] == material(meant)["maps"]

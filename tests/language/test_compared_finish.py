@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.language.meaning import material
+from tests.language.meaning import compiled, material
 
 
 def roughness(text: str) -> float:
@@ -29,8 +29,14 @@ def test_a_comparative_against_a_finish_lies_between_it_and_the_next(said, low, 
 
 def test_shinier_than_satin_is_glossy_and_no_cloth():
     said = material("shinier than satin")
-    assert said["params"]["roughness"] < 0.25  # the glossy band of the everyday sets
+    assert said["params"]["roughness"] == pytest.approx((0.35 + 0.08) / 2)  # halfway: satin to glossy
     assert not said.get("maps")  # not satin cloth's weave
+    result = compiled("shinier than satin")
+    assert any("to the next finish" in step["rule"] for step in _provenance(result, "roughness"))
+
+
+def _provenance(result, param: str) -> list[dict]:
+    return result.ir["materials"][0].get("provenance", {}).get(param, [])
 
 
 def test_the_adverbs_scale_how_far():
