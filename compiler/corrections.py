@@ -1,7 +1,8 @@
 """A correction said mid-line, as dictation and chat have them (issue #14): 'oak flooring natural
 matt no wait satin' is natural satin oak, 'red, sorry, blue velvet' is blue velvet. The marker
 (teaching.toml [corrections] markers) and the word before it that the word after it replaces are
-read past, with a note. Only a line that does not read otherwise comes here (cnlmc.document), and
+read past, with a note. Only a line that does not read otherwise comes here (cnlmc.document),
+before any of its words is read past (cnlmc.read_past), one correction a line; and
 the word before is dropped only when it is of a kind the word after is too (a colour for a colour,
 a describing word for a describing word: the lexicon's readings of the two words alone).
 """
