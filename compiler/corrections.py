@@ -1,5 +1,5 @@
-"""A correction said mid-line, as dictation and chat have them (issue #14): 'oak flooring natural
-matt no wait satin' is natural satin oak, 'red, sorry, blue velvet' is blue velvet. The marker
+"""A correction said mid-line, as dictation and chat have them (issue #14): 'oak matt no wait
+satin' is satin oak, 'red, sorry, blue velvet' is blue velvet. The marker
 (teaching.toml [corrections] markers) and the word before it that the word after it replaces are
 read past, with a note. Only a line that does not read otherwise comes here (cnlmc.document),
 before any of its words is read past (cnlmc.read_past), one correction a line; and
