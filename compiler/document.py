@@ -84,7 +84,7 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
     mark = len(diags)
     node = _parsed_line(text, number, offset, tagger, diags)
     if any(d.is_error for d in diags[mark:]) and (fixed := _corrected(text, number, offset, tagger)):
-        diags[mark:] = fixed[1]  # 'natural matt no wait satin': the correction's word
+        diags[mark:] = fixed[1]  # 'oak matt no wait satin': the correction's word
         return fixed[0]
     if any(d.is_error for d in diags[mark:]) and (
         passed := _english_read_past(text, number, offset, tagger, diags[mark:])
