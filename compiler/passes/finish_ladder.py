@@ -20,13 +20,16 @@ ROUGHNESS = "roughness"
 HALF = 0.5  # of the way to the next finish, for a comparative said plainly
 
 
-def beyond_finish(state: MaterialState, ctx: Context, item: ast.RefineItem) -> bool:
+def beyond_finish(
+    state: MaterialState, ctx: Context, item: ast.RefineItem, said: ast.Material | ast.Refinement | None = None
+) -> bool:
     """Set roughness past the finish the comparative is said against (see the module doc); False
-    when the item is no roughness comparative or no finish follows its 'than'."""
+    when the item is no roughness comparative or no finish follows its 'than'. `said`: the line the
+    item stands in (the material's own line when None)."""
     entry = ctx.lexicon.require("refinements", item.word.key)
-    if entry.get("target") != ROUGHNESS or item.target is not None:
+    if entry.get("target") != ROUGHNESS:
         return False
-    finish = _finish_after_than(state.selection, ctx, item)
+    finish = _finish_after_than(said if said is not None else state.selection, ctx, item)
     if finish is None:
         return False
     value = float(ctx.lexicon.require("adjectives", finish.key).set_value(ROUGHNESS))
@@ -45,18 +48,22 @@ def beyond_finish(state: MaterialState, ctx: Context, item: ast.RefineItem) -> b
     return True
 
 
-def _finish_after_than(material: ast.Material, ctx: Context, item: ast.RefineItem) -> ast.Word | None:
-    """The finish adjective right after the item's comparison word ('shinier than satin'), or None."""
+def _finish_after_than(said: ast.Material | ast.Refinement, ctx: Context, item: ast.RefineItem) -> ast.Word | None:
+    """The finish adjective right after the item's comparison word ('shinier than satin': the
+    item's target, or a describing word of the line), or None."""
     formation = ctx.lexicon.caches.word_formation
     if formation is None:
         return None
-    line_start = material.span.start - material.span.col + 1
-    for group in material.groups:
-        for word in group.adjectives:
-            between = material.text[item.word.span.end - line_start : word.span.start - line_start].lower().split()
-            if between and between[0] in formation.rules.comparison and len(between) <= 2:
-                if ctx.lexicon.require("adjectives", word.key).set_value(ROUGHNESS) is not None:
-                    return word
+    line_start = said.span.start - said.span.col + 1
+    target = [item.target] if isinstance(item.target, ast.Word) and item.target.category == "adjectives" else []
+    nouns = said.nouns if isinstance(said, ast.Material) else ()
+    for word in [*target, *(w for group in said.groups for w in group.adjectives)]:
+        if any(noun.span.start >= word.span.end for noun in nouns):
+            continue  # 'glossier than a satin black plastic': compared with a material, not a finish
+        between = said.text[item.word.span.end - line_start : word.span.start - line_start].lower().split()
+        if between and between[0] in formation.rules.comparison and len(between) <= 2:
+            if ctx.lexicon.require("adjectives", word.key).set_value(ROUGHNESS) is not None:
+                return word
     return None
 
 

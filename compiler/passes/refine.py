@@ -48,12 +48,12 @@ def apply_inline_refinements(state: MaterialState, ctx: Context) -> MaterialStat
     ('less yellow gold' is gold, less yellow) and a gloss word after 'more' / 'less' is only the
     refinement's target ('less glossy plastic' is plastic, a step less glossy)."""
     for item in state.selection.refinements:
+        if beyond_finish(state, ctx, item):  # 'shinier than satin', 'red paint, shinier than satin'
+            continue
         if item.target is not None and _said_after_material(state.selection, item.target):
             item = named_first(state, ctx, item)  # 'walnut, more red' moves walnut as the line 'more red'
         elif item.target is not None and _describes_material(state, ctx, item):
             apply_group(state, ctx, _as_group(item.target), target="base")
-        if beyond_finish(state, ctx, item):  # 'shinier than satin': past satin, toward glossy
-            continue
         if not add_missing_map(state, ctx, item):  # 'rustier iron' = slightly rusty iron
             apply_refinement(state, ctx, item)
     return state
@@ -104,7 +104,7 @@ def apply_refinement_line(state: MaterialState, ctx: Context, line: ast.Refineme
     ('with a glossy varnish' below 'walnut' adds the coat; passes/coats.py)."""
     if line.groups:  # 'make it blue': the describing words apply to the material as it is, then
         apply_described(state, ctx, line.groups)  # the comparatives said with them ('a bit darker, like cream')
-    items = list(line.items)
+    items = [item for item in line.items if not beyond_finish(state, ctx, item, line)]  # 'shinier than satin'
     if items and items[-1].target is not None:  # 'a darker, moodier green': the green first, then both steps
         items[-1] = named_first(state, ctx, items[-1])
     for item in items:

@@ -46,3 +46,18 @@ def test_the_adverbs_scale_how_far():
 
 def test_a_comparative_against_a_material_still_steps_the_material():
     assert material("lighter than oak")["params"]["base_color"] != material("oak")["params"]["base_color"]
+
+
+@pytest.mark.parametrize(
+    "said, change",
+    [("red paint, shinier than satin", None), ("oak, shinier than satin", None), ("red paint", "shinier than satin")],
+)
+def test_the_ladder_reads_the_comparison_after_a_material_and_on_a_change_line(said, change):
+    from tests.language.meaning import refined
+
+    found = refined(said, change).material if change else material(said)
+    assert found["params"]["roughness"] == pytest.approx((0.35 + 0.08) / 2)
+
+
+def test_a_comparative_with_its_finish_but_no_than_is_still_a_step():
+    assert roughness("glossier satin") == pytest.approx(0.25)  # satin, then one step glossier
