@@ -940,7 +940,7 @@ _BEFORE_A_COAT = frozenset(("ADV", "ADJ", "COLOR", "SHADE", "ARTICLE", "COMMA", 
 _LABEL_LINKS = frozenset(("is", "=", "-"))
 
 #: The readings of a comparative's target the tagger keeps before 'than' (also read by the tagger).
-COMPARED = frozenset(("COLOR", "ADJ", "PROP"))
+COMPARED = frozenset(("COLOR", "ADJ", "PROP", "SHADE"))  # "more dark than oak": a shade compared too
 #: The readings of the words a comparative at the start of a line may follow ('m1: a bit lighter').
 _BEFORE_A_COMPARATIVE = frozenset(("NAME", "COLON", "ADV", "ARTICLE"))
 

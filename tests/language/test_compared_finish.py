@@ -61,3 +61,12 @@ def test_the_ladder_reads_the_comparison_after_a_material_and_on_a_change_line(s
 
 def test_a_comparative_with_its_finish_but_no_than_is_still_a_step():
     assert roughness("glossier satin") == pytest.approx(0.25)  # satin, then one step glossier
+
+
+@pytest.mark.parametrize(
+    "said, plain", [("more dark than oak", "darker oak"), ("more dark than normal oak", "darker oak")]
+)
+def test_more_with_a_shade_before_than_compares_as_the_comparative_does(said, plain):
+    assert material(said)["params"]["base_color"] != material("oak")["params"]["base_color"]
+    dark = material(said)["params"]["base_color"]
+    assert sum(dark) < sum(material("oak")["params"]["base_color"])
