@@ -13,6 +13,7 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from .spans import blanked
 from .suggest import teaching
 
 __all__ = ["Correction", "correction"]
@@ -38,7 +39,7 @@ def correction(text: str, kinds: Callable[[str], set[str]]) -> Correction | None
     if first is not None and text[first.end() :].strip():
         start = len(text) - len(text.lstrip())
         said = text[start : first.end()].strip(" ,")
-        return Correction(" " * first.end() + text[first.end() :], "", said, start, first.end())
+        return Correction(blanked(text, [(0, first.end())]), "", said, start, first.end())
     pattern = r"[\s,]+(?:" + alternatives + r")[\s,]+"
     for found in re.finditer(pattern, text.lower()):
         before = re.search(r"([A-Za-z][\w'-]*)\s*$", text[: found.start()])
@@ -48,6 +49,7 @@ def correction(text: str, kinds: Callable[[str], set[str]]) -> Correction | None
         if not kinds(before.group(1).lower()) & kinds(after.group(1).lower()):
             continue
         start, end = before.start(1), found.end()
-        blanked = text[:start] + " " * (end - start) + text[end:]
-        return Correction(blanked, before.group(1), text[found.start() : found.end()].strip(" ,"), start, end)
+        return Correction(
+            blanked(text, [(start, end)]), before.group(1), text[found.start() : found.end()].strip(" ,"), start, end
+        )
     return None

@@ -27,7 +27,7 @@ from .relative_clause import (
 )
 from .removal import removal_line
 from .shape_store import save_shapes
-from .spans import Span
+from .spans import Span, blanked
 from .syntax import Shape
 from .tagged import NOTE_CODE, Candidate, Tagged, only_tag, written_span, written_text
 from .tagger import Tagger
@@ -136,14 +136,9 @@ def _english_read_past(
     passed = passable_words([d for d in said if d.is_error], word_of, near)
     if not passed:
         return None
-    blanked = list(text)
-    for diag in passed:
-        assert diag.span is not None
-        blanked[diag.span.col - 1 : diag.span.col - 1 + diag.span.end - diag.span.start] = " " * (
-            diag.span.end - diag.span.start
-        )
+    columns = [(d.span.col - 1, d.span.col - 1 + d.span.end - d.span.start) for d in passed if d.span is not None]
     again: list[Diagnostic] = []
-    node = _parsed_line("".join(blanked), number, offset, tagger, again)
+    node = _parsed_line(blanked(text, columns), number, offset, tagger, again)
     if not isinstance(node, ast.Material) or not _noun_said(node, text) or any(d.is_error for d in again):
         return None  # 'glossy guitar' is not glossy paint: the material must be named, not implied
     return replace(node, text=text), [*again, *(warning(d, word_of(d)) for d in passed)]

@@ -736,7 +736,8 @@ class Joiner:
         if before is not None and (of_tag(before, "COLOR") or of_tag(before, "SHADE") or of_tag(before, "ADJ")):
             return None
         at = 0
-        while at < len(after) and (only_tag(after[at], "COLON") or after[at].text.lower() in _LABEL_LINKS):
+        links = self.rules().colour_label_links
+        while at < len(after) and (only_tag(after[at], "COLON") or after[at].text.lower() in links):
             at += 1
         if at >= len(after) or after[at].unknown:
             return None
@@ -935,9 +936,6 @@ _AND = (Candidate("AND", "and", "keyword"),)
 _FINISH = (Candidate("FEATURE", "finish", "features"),)
 #: The readings of the words that may come before a coat named as the whole material ('a glossy, red powder coat').
 _BEFORE_A_COAT = frozenset(("ADV", "ADJ", "COLOR", "SHADE", "ARTICLE", "COMMA", "AND", "OR", "NAME", "COLON", "PROP"))
-
-#: Words between a colour label and its colour ("colour is red"; "the colour of sand" is the colour of a thing)
-_LABEL_LINKS = frozenset(("is", "=", "-"))
 
 #: The readings of a comparative's target the tagger keeps before 'than' (also read by the tagger).
 COMPARED = frozenset(("COLOR", "ADJ", "PROP", "SHADE"))  # "more dark than oak": a shade compared too

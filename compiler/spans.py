@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 
@@ -46,3 +47,12 @@ def line_span(line: int, col: int, length: int, line_offset: int) -> Span:
     """A span on `line` starting at 1-based `col`, given the line's offset in the file."""
     start = line_offset + col - 1
     return Span(start, start + length, line, col)
+
+
+def blanked(text: str, ranges: Iterable[tuple[int, int]]) -> str:
+    """`text` with each [start, end) of `ranges` (indices into it) turned to spaces: the words read
+    past, every other column where the user wrote it (so spans of the rest stay true)."""
+    chars = list(text)
+    for start, end in ranges:
+        chars[start:end] = " " * (end - start)
+    return "".join(chars)

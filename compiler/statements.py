@@ -17,7 +17,7 @@ from collections.abc import Callable, Sequence
 from . import ast
 from .diagnostics import Diagnostic, Severity
 from .phrase_patterns import alternatives
-from .spans import Span
+from .spans import Span, blanked
 from .suggest import teaching
 from .tagged import NOTE_CODE
 
@@ -66,10 +66,7 @@ def read_statement(
     start = found.copula[0] if names_material else found.subject[0]
     end = found.copula[1]
     said: list[Diagnostic] = []
-    blanked = list(text[:start] + " " * (end - start) + text[end:])
-    for first, last in kept:
-        blanked[first:last] = text[first:last]
-    node = parse("".join(blanked), said)
+    node = parse(blanked(text, _between(start, end, kept)), said)  # the subject and copula, but its colours
     if not isinstance(node, ast.Material) or any(d.is_error for d in said):
         return None
     gone = " ".join(text[start:end].split())
@@ -79,3 +76,13 @@ def read_statement(
     else:  # 'the table is oak', "it's brushed steel"
         note = f"read past '{gone}': a statement about the thing; what follows names the material"
     return node, [Diagnostic(span, Severity.NOTE, NOTE_CODE, note), *said]
+
+
+def _between(start: int, end: int, kept: Sequence[tuple[int, int]]) -> list[tuple[int, int]]:
+    """[start, end) less the `kept` ranges inside it (sorted), as ranges."""
+    gaps, at = [], start
+    for first, last in sorted(kept):
+        if first > at:
+            gaps.append((at, first))
+        at = max(at, last)
+    return [*gaps, (at, end)] if at < end else gaps

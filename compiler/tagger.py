@@ -521,10 +521,11 @@ class Tagger:
 
     def _compared_finish(self, raw: list[RawToken], at: int, line_no: int, offset: int) -> Tagged | None:
         """The word at `at` as a finish alone ('than satin', 'than gloss' at the line's end or before
-        a mark or 'but': a finish adjective that sets roughness), its other readings dropped; None
-        for any other word."""
-        if at >= len(raw) or (at + 1 < len(raw) and raw[at + 1][0][:1].isalnum() and raw[at + 1][0].lower() != "but"):
-            return None
+        a mark or a joining word, 'but': a finish adjective that sets roughness), its other readings
+        dropped; None for any other word."""
+        after = raw[at + 1][0] if at + 1 < len(raw) else ""
+        if at >= len(raw) or (after[:1].isalnum() and self.keywords.get(after.lower()) != "AND"):
+            return None  # a word after the finish: compared with a material ('than satin paint')
         finishes = tuple(
             c
             for c in self._candidates((raw[at][0].lower(),))

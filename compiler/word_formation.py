@@ -132,6 +132,7 @@ class Rules:
         self.wordnet = _merged_wordnet([layer["wordnet"] for layer in layers])
         self.resemblance = _merged_resemblance([layer["resemblance"] for layer in layers])
         self.colour_heads = frozenset(self.resemblance["colour_heads"])
+        self.colour_label_links = frozenset(self.resemblance["colour_label_links"])  # "colour is red"
         self.like_heads = frozenset(self.resemblance["like_heads"])
         self.like_not_before = frozenset(self.resemblance["like_not_before"])  # "like a wedding ring"
         self.finish_heads = frozenset(self.resemblance["finish_heads"])
@@ -297,14 +298,14 @@ class WordFormation:
 
     def slip_of(self, word: str) -> str | None:
         """The one lexicon word an unknown word is a slip of, or None (cnlmc.typos)."""
-        slips = self._slips()
+        slips = self.slips_index()
         return None if slips is None else slips.meant(word, lambda a, b: self._known(a) == self._known(b))
 
     def entry_slip(self, word: str, after: str, followers: Mapping[str, Container[str]]) -> str | None:
         """The first word of an entry of several words that an unknown word is a slip of, where the
         word after it is that entry's second ('stainls steel': stainless; one slip more than a word
         alone may hold, as the entry's second word confirms it), or None."""
-        slips = self._slips()
+        slips = self.slips_index()
         if slips is None or word in self.rules.comparison:
             return None
         heard = self.heard(after)[0] if not self._known(after) else after
@@ -312,10 +313,6 @@ class WordFormation:
         return slips.meant_among(word, starts, extra=1, shortest=ENTRY_SLIP_LETTERS)
 
     def slips_index(self) -> Slips | None:
-        """The slips index of these rules, or None where this language reads no slips."""
-        return self._slips()
-
-    def _slips(self) -> Slips | None:
         """The slips index of these rules (None: this language reads no slips), made on first use."""
         rules = self.rules.typos
         if rules["off"] or not rules["reach"]:
@@ -338,7 +335,12 @@ class WordFormation:
         if sounds is not None:
             return sounds, "a word that sounds the same"
         slipped = self.slip_of(word)
-        if slipped is None and among and word not in self.rules.comparison and (slips := self._slips()) is not None:
+        if (
+            slipped is None
+            and among
+            and word not in self.rules.comparison
+            and (slips := self.slips_index()) is not None
+        ):
             slipped = slips.meant_among(word, sorted(among), extra=1, shortest=ENTRY_SLIP_LETTERS)
         return (slipped, "a slip of the keyboard") if slipped else (word, "")
 
