@@ -163,9 +163,13 @@ def darkened_yellow(was: float, lightness: float, a: float, b: float) -> tuple[f
     return chroma * math.cos(turned), chroma * math.sin(turned)
 
 
-def scale_chroma(rgb: Sequence[float], scale: float) -> list[float]:
-    """OKLCh chroma times `scale` at the same L and hue."""
+def scale_chroma(rgb: Sequence[float], scale: float, keep: float = 0.0) -> list[float]:
+    """OKLCh chroma times `scale` at the same L and hue; lowered, never below min(C, keep) (a pale
+    tint of a muted colour keeps the chroma its hue is seen at: 'pale oak' stays a wood colour)."""
     L, a, b = linear_to_oklab(rgb)
+    chroma = math.hypot(a, b)
+    if chroma > 0.0 and scale < 1.0:
+        scale = max(scale, min(chroma, keep) / chroma)
     return oklab_to_linear_in_gamut((L, a * scale, b * scale))
 
 
@@ -195,7 +199,7 @@ def apply_ops(rgb: Sequence[float], ops: Iterable[Mapping[str, Any]]) -> list[fl
         elif kind == "lightness":
             out = shift_lightness(out, op["toward"], op["amount"])
         elif kind == "chroma":
-            out = scale_chroma(out, op["scale"])
+            out = scale_chroma(out, op["scale"], op.get("keep", 0.0))
         elif kind == "toward":
             out = toward_hue(out, op["oklab"], op["amount"])
     return clamp01(out)

@@ -21,8 +21,8 @@ def degrees_after(words: Sequence[Tagged]) -> tuple[list[Tagged], list[Diagnosti
     note for each; the words as they were when there is none (the common case: no table read)."""
     out: list[Tagged] = []
     notes: list[Diagnostic] = []
-    for word in words:
-        degree = _after(word) if out and _qualified(out[-1]) else None
+    for k, word in enumerate(words):
+        degree = _after(word, words[k + 1 :]) if out and _qualified(out[-1]) else None
         if degree is None:
             out.append(word)
             continue
@@ -41,14 +41,20 @@ def _qualified(word: Tagged) -> bool:
     return any(c.tag in QUALIFIED for c in word.candidates) and len(word.text) > 1
 
 
-def _after(word: Tagged) -> str | None:
-    """The degree word a word said after its describing word stands for, or None."""
-    if not any(c.tag == "ADV" for c in word.candidates):
+def _after(word: Tagged, rest: Sequence[Tagged]) -> str | None:
+    """The degree word a word said after its describing word stands for, or None: a form only said
+    after ('af'), or a degree adverb of several words with nothing after it to qualify ('aged a
+    bit', 'rough a little, oiled': the line or its part ends there)."""
+    adverb = next((c for c in word.candidates if c.tag == "ADV"), None)
+    if adverb is None:
         return None
     from .suggest import teaching  # read only for an adverb after a describing word
 
     table: dict[str, str] = teaching()["hedges"]["after_the_word"]
-    return table.get(word.text.lower())
+    said = table.get(word.text.lower())
+    if said is None and " " in word.text.strip() and (not rest or any(c.tag == "COMMA" for c in rest[0].candidates)):
+        return adverb.key  # a degree said as a noun phrase ('a bit', 'a little') follows its word; 'very' does not
+    return said
 
 
 def placed_before(word: Tagged, degree: str, said: Span) -> tuple[Tagged, Tagged]:

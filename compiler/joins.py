@@ -295,8 +295,14 @@ class Joiner:
 
     def _artifact_run(self, rest: list[Tagged]) -> bool:
         """Whether the words after a thing's name are the rest of it ('guitar neck', 'phone case':
-        unknown words WordNet lists as artifacts), or there are none."""
-        return all(t.unknown and t.text.isalpha() and self._artifact_name(t.text.lower()) for t in rest)
+        unknown words WordNet lists as artifacts) up to the line's end, a comma or a 'with' clause
+        ('copper bar top, aged a bit', 'bronze case with patina')."""
+        for t in rest:
+            if only_tag(t, "COMMA") or of_tag(t, "WITH"):
+                return True
+            if not (t.unknown and t.text.isalpha() and self._artifact_name(t.text.lower())):
+                return False
+        return True
 
     def _is_described_artifact(self, out: list[Tagged], word: Tagged, rest: list[Tagged]) -> bool:
         """An unknown word WordNet 3.0 lists as an artifact after describing words and no material
@@ -641,7 +647,9 @@ class Joiner:
         n = out.index(noun)
         rest = out[n + 1 :]
         last = noun
-        if rest and rest[0].unknown:  # 'tiles behind the hob': the words after are read past later
+        if rest and (
+            rest[0].unknown or _a_place(rest)
+        ):  # 'tiles behind the hob', 'tiles of the bathroom': read past later
             rest = []
         elif rest and of_tag(rest[0], "COMMA") and _describing_only(rest):  # 'white tiles, glossy': the clause last
             n, last, rest = len(out) - 1, rest[-1], []

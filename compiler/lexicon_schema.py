@@ -41,6 +41,8 @@ SHADE_OPS = {
     "chroma": ("scale",),  # OKLCh chroma times scale
     "toward": ("oklab", "amount"),  # OKLab a, b toward a colour's ("reddish")
 }
+#: fields an operation may have besides those it needs
+SHADE_OP_OPTIONS = {"chroma": ("keep",)}  # a lowered chroma stays at least min(C, keep) ('pale oak' is a wood colour)
 PARAM_SPECS = {s.name: s for s in PARAMS}
 #: What an adjective's formula may change: the scalar parameters, the base colour and the model.
 #: (A metal's optics come whole from a noun: `material = "copper"`.)
@@ -321,11 +323,11 @@ def _check_ops(c: Checker, value: object, spec: FieldSpec, path: Path_) -> None:
 
 def check_shade_op(c: Checker, raw: object, path: Path_) -> None:
     """saturate (amount), blend (value = [r, g, b], amount), mul (value), and in OKLab: lightness
-    (toward = 0 or 1, amount), chroma (scale) or toward (oklab = [L, a, b], amount)."""
+    (toward = 0 or 1, amount), chroma (scale, and optionally keep) or toward (oklab = [L, a, b], amount)."""
     op_table = c.table(raw, path, "an operation table { op = ..., ... }")
     op = c.choice(c.required(op_table, "op", path), SHADE_OPS, (*path, "op"), "colour operation")
     needs = SHADE_OPS[op]
-    c.known_keys(op_table, ("op", *needs), path, f"field for op = '{op}'")
+    c.known_keys(op_table, ("op", *needs, *SHADE_OP_OPTIONS.get(op, ())), path, f"field for op = '{op}'")
     for name in needs:
         c.required(op_table, name, path, f" (op = '{op}' takes {' and '.join(needs)})")
     if op == "saturate":
@@ -338,6 +340,8 @@ def check_shade_op(c: Checker, raw: object, path: Path_) -> None:
         c.number(op_table["amount"], (*path, "amount"), 0.0, 1.0)
     elif op == "chroma":
         c.number(op_table["scale"], (*path, "scale"), 0.0, 4.0)
+        if "keep" in op_table:
+            c.number(op_table["keep"], (*path, "keep"), 0.0, 0.4)
     elif op == "toward":
         c.rgb(op_table["oklab"], (*path, "oklab"), -1.0, 1.0)
         c.number(op_table["amount"], (*path, "amount"), 0.0, 1.0)

@@ -77,13 +77,24 @@ def likeness_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tu
     the material, set off by a comma, is read past (teaching.toml [hedges] `likeness`); None when
     the words before it are not a material."""
     found = re.search(r",\s*(?:" + alternatives(teaching()["hedges"]["likeness"]) + r")\b", text.lower())
-    if found is None:  # 'something light, like birch': a bare 'like' names the material only after describing words
-        bare = re.search(r",\s*like\b", text.lower())
-        if bare is None or not words:
+    bare = re.search(r",\s*like\b", text.lower()) if found is None else None
+    if bare is not None and _possessive_after(text, bare.end()):
+        found = bare  # 'dark brown, like grandad's wireless': a thing, as after 'like a'
+    elif (
+        bare is not None
+    ):  # 'something light, like birch': a bare 'like' names the material only after describing words
+        if not words:
             return None
         line_start = words[0].span.line_start
         before = [w for w in words if w.span.start - line_start < bare.start()]
-        return _described_likeness(words, before, line_start + bare.end(), text, lexicon) if before else None
+        if not before:
+            return None
+        end = line_start + bare.end()
+        return _described_likeness(words, before, end, text, lexicon) or _restated_colour(
+            words, before, end, text, lexicon
+        )
+    if found is None:
+        return None
     if not words:
         return None
     line_start = words[0].span.line_start
@@ -100,6 +111,35 @@ def likeness_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tu
     start = line_start + found.start() + 1 + (len(text[found.start() + 1 :]) - len(text[found.start() + 1 :].lstrip()))
     span = Span(start, line_start + len(text.rstrip()), words[0].span.line, start - line_start + 1)
     return material, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)
+
+
+def _possessive_after(text: str, at: int) -> bool:
+    """Whether the word after offset `at` says whose a thing is ('like grandad's wireless')."""
+    from .tagger import possessive
+
+    rest = text[at:].split()
+    return len(rest) > 1 and possessive(rest[0])
+
+
+def _restated_colour(
+    words: Sequence[Tagged], before: Sequence[Tagged], end: int, text: str, lexicon: Lexicon
+) -> tuple[ast.Material, Diagnostic] | None:
+    """'greyish green, like sage', 'slime green, like really really green': colours alone, then a
+    bare 'like' and colours alone: the person says the colour again, as they mean it; the words
+    after 'like' on the everyday noun (paint), with a note. None when either side is not describing
+    words alone."""
+    after = [w for w in words if w.span.start >= end and w.text[:1].isalnum()]
+    said = [w for w in before if w.text[:1].isalnum()]
+    if not said or not all(w.candidates and all(c.tag in DESCRIBING for c in w.candidates) for w in said):
+        return None  # 'paint, like navy': a material before the likeness keeps its error
+    material = _on_everyday_noun(after, text, lexicon)
+    if material is None:
+        return None
+    note = (
+        f"read '{written_text(after)}' as the colour '{written_text(said)}' said again, as meant; "
+        f"no material named: on {everyday_noun()}"
+    )
+    return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, note)
 
 
 def _likeness_of_a_colour(

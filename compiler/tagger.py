@@ -366,19 +366,11 @@ class Tagger:
     def _possessor(self, raw: list[RawToken], i: int, tagged: list[Tagged]) -> bool:
         """Whether an unknown word says whose the thing is ('grandma's', 'the kids', teaching.toml
         [possessors]): first in the line (after its name) or after an article, before more words."""
-        from .suggest import teaching
-
         if i + 1 == len(raw) or not raw[i + 1][0][:1].isalpha():
             return False
         if tagged and not any(of_tag(tagged[-1], tag) for tag in ("ARTICLE", "COLON")):
             return False
-        table = teaching()["possessors"]
-        word = raw[i][0].lower().replace("’", "'")
-        if word in table["not_possessive"]:
-            return False
-        if word.endswith(("'s", "s'")):
-            return word[:-2].isalpha()
-        return word.endswith("s") and (word[:-1] in table["people"] or word in table["people"])
+        return possessive(raw[i][0])
 
     def _particle_of_participle(self, text: str, before: Tagged, diags: list[Diagnostic]) -> bool:
         """'more scratched up', 'beaten up leather': a particle after a participle says nothing the
@@ -450,12 +442,13 @@ class Tagger:
 
     def _comparison_starts(self, raw: list[RawToken], i: int) -> bool:
         """'like' before 'a', 'my', 'the' ('gold like a wedding ring'): a comparison with a thing
-        starts there, not the suffix of the word before ('leather like vinyl')."""
+        starts there, not the suffix of the word before ('leather like vinyl'); so before a
+        possessive ('like grandad's wireless')."""
         rules = self.formation().rules
         return (
             raw[i][0].lower() in rules.like_heads
             and i + 1 < len(raw)
-            and raw[i + 1][0].lower() in rules.like_not_before
+            and (raw[i + 1][0].lower() in rules.like_not_before or possessive(raw[i + 1][0]))
         )
 
     def _after_comparative(self, text: str, tagged: list[Tagged]) -> bool:
@@ -729,3 +722,17 @@ def _has_label_tags(tagged: list[Tagged]) -> bool:
     """Whether some word may be a label ('colour: red', 'plastic, colour red'): a property or a
     name (checked before the word formation rules are read: most lines have neither)."""
     return any(c.tag in ("PROP", "NAME") for t in tagged for c in t.candidates)
+
+
+def possessive(said: str) -> bool:
+    """Whether a word says whose a thing is ('grandma's', 'the kids', 'my grandads'): an
+    apostrophe's possessive, or a word for a person or pet with an 's' (teaching.toml [possessors])."""
+    from .suggest import teaching
+
+    table = teaching()["possessors"]
+    word = said.lower().replace("’", "'")
+    if word in table["not_possessive"]:
+        return False
+    if word.endswith(("'s", "s'")):
+        return word[:-2].isalpha()
+    return word.endswith("s") and (word[:-1] in table["people"] or word in table["people"])

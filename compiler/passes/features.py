@@ -47,11 +47,26 @@ def apply_features(state: MaterialState, ctx: Context, clauses: tuple[ast.Featur
         if clause.word.category == "coats":
             _warn_second_coat(state, clause)
             continue
-        entry, share = _of_metal(state, ctx, ctx.lexicon.require("features", clause.word.key), clause)
+        entry = _by_class(state, ctx, ctx.lexicon.require("features", clause.word.key), clause)
+        entry, share = _of_metal(state, ctx, entry, clause)
         apply_feature(state, ctx, entry, clause, share)
 
 
-METAL_FEATURE = "N126"  # a feature whose colour names a metal read as the metal's own feature
+def _by_class(state: MaterialState, ctx: Context, entry: Entry, clause: ast.Feature) -> Entry:
+    """'olive wood with dark lines' = grain, 'marble with grey lines' = veins: a word that names
+    another feature on each class of material (the entry's `by_class`; its `any` on every other
+    class), with a note; the entry itself where it names none."""
+    by_class = entry.get("by_class", {})
+    kind = noun_of(state).get("class")
+    other = by_class.get(kind, by_class.get("any"))
+    if other is None:
+        return entry
+    note = f"read '{clause.word.text}' as {other} (on {kind})"
+    state.diagnostics.append(Diagnostic(clause.word.span, Severity.NOTE, FEATURE_READING, note))
+    return ctx.lexicon.require("features", other)
+
+
+FEATURE_READING = "N126"  # a feature read as another: flecks of a metal, lines on stone or wood
 
 
 def _of_metal(state: MaterialState, ctx: Context, entry: Entry, clause: ast.Feature) -> tuple[Entry, float]:
@@ -68,7 +83,7 @@ def _of_metal(state: MaterialState, ctx: Context, entry: Entry, clause: ast.Feat
         return entry, 1.0  # 'quartzite with flecks of silver': mica, drawn as speckles
     text = f"{colour_text(colour)} {clause.word.text}"
     state.diagnostics.append(
-        Diagnostic(clause.span, Severity.NOTE, METAL_FEATURE, f"read '{text}' as {other} of {colour.base.text}")
+        Diagnostic(clause.span, Severity.NOTE, FEATURE_READING, f"read '{text}' as {other} of {colour.base.text}")
     )
     return ctx.lexicon.require("features", other), float(entry.get("of_metal_share", 1.0))
 
