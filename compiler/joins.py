@@ -96,6 +96,8 @@ class Joiner:
             if word.unknown or (before is not None and before.unknown):  # its tags are guesses: E001 says so
                 if before is not None and self._is_artifact_after(before, word, tagged[k + 1 :]):
                     out[-1] = self._artifact(before, word, diags)
+                elif before is not None and self._is_artifact_after_finish(before, word, tagged[k + 1 :]):
+                    self._finish_on_artifact(before, word, diags)  # 'white enamel dial': the enamel
                 elif before is not None and self._is_described_artifact(out, word, tagged[k + 1 :]):
                     out.append(self._painted_artifact(word, diags))  # 'a red bike': red paint
                 elif not word.unknown and of_tag(word, "OBJECT") and not of_tag(word, "NOUN"):
@@ -292,6 +294,25 @@ class Joiner:
         if before.unknown or not self._artifact_run(rest) or not of_tag(before, "NOUN") or not word.text.isalpha():
             return False
         return self._artifact_name(word.text.lower()) is not None
+
+    def ends_in_a_finished_thing(self, tagged: list[Tagged]) -> bool:
+        """Whether the line ends in a WordNet artifact after a finish substance ('white enamel dial'),
+        which may_join does not see (it reads no lexicon)."""
+        return len(tagged) > 1 and self._is_artifact_after_finish(tagged[-2], tagged[-1], [])
+
+    def _is_artifact_after_finish(self, before: Tagged, word: Tagged, rest: list[Tagged]) -> bool:
+        """A WordNet artifact after a finish substance named as the material ('white enamel dial',
+        'celadon glaze bowl': Joiner._finish_alone reads it on its substrate)."""
+        if before.unknown or not word.unknown or not word.text.isalpha() or not self._artifact_run(rest):
+            return False
+        return self._substance(before) is not None and self._artifact_name(word.text.lower()) is not None
+
+    def _finish_on_artifact(self, before: Tagged, word: Tagged, diags: list[Diagnostic]) -> None:
+        """The thing after a finish read past, its error gone, with a note."""
+        diags[:] = [d for d in diags if not (d.span == word.span and d.code in ("E001", "E002"))]
+        name = self._artifact_name(word.text.lower())
+        note = f"read '{before.text} {word.text}' as '{before.text}' (the finish of the {word.text}: WordNet 3.0 lists '{name}' as an artifact)"
+        diags.append(Diagnostic(before.span.to(word.span), Severity.NOTE, NOTE_CODE, note))
 
     def _artifact_run(self, rest: list[Tagged]) -> bool:
         """Whether the words after a thing's name are the rest of it ('guitar neck', 'phone case':

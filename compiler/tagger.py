@@ -201,7 +201,11 @@ class Tagger:
             tagged = _one_mark_between(tagged)
             if len(tagged) > 2:
                 material_named_first(tagged, diags, self.lexicon)  # 'walnut, dark, satin': satin describes the walnut
-        if may_join(tagged) or (_has_label_tags(tagged) and self.joiner.has_colour_label(tagged)):
+        if (
+            may_join(tagged)
+            or (_has_label_tags(tagged) and self.joiner.has_colour_label(tagged))
+            or (diags and self.joiner.ends_in_a_finished_thing(tagged))
+        ):
             tagged = self.joiner.joined(tagged, diags)
         if any(c.tag == "WITH" for t in tagged for c in t.candidates):  # 'white marble with grey'
             tagged = self.joiner.own_pattern_named(tagged, diags)
