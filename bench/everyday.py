@@ -415,8 +415,11 @@ def check_material(
 
 
 def quantity(m: Mapping[str, Any], key: str) -> Any:
-    """The value a refinement direction is measured on."""
+    """The value a refinement direction is measured on. A diffuse-only surface's roughness is read
+    on its Oren-Nayar sigma (how flat its shading is), above every surface with a highlight: 1 + sigma."""
     if key == "roughness":
+        if m["model"]["base"] == "diffuse" and not m["params"].get("coat"):
+            return 1.0 + float(m["params"].get("diffuse_roughness", 0.0))
         return effective_roughness(m)
     if key == "lightness":
         return oklch(apparent_colour(m))[0]

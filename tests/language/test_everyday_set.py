@@ -287,6 +287,12 @@ def test_directions():
     assert ev.direction(ev.quantity(dark, "lightness"), ev.quantity(light, "lightness")) == "up"
 
 
+def test_a_diffuse_surface_is_rougher_by_its_oren_nayar_sigma_and_rougher_than_any_highlight():
+    flat, flatter = material("diffuse", diffuse_roughness=0.5), material("diffuse", diffuse_roughness=0.6)
+    assert ev.direction(ev.quantity(flat, "roughness"), ev.quantity(flatter, "roughness")) == "up"
+    assert ev.direction(ev.quantity(flat, "roughness"), ev.quantity(material(roughness=0.9), "roughness")) == "down"
+
+
 def test_differences_name_what_differs():
     a, b = material(roughness=0.3), material(roughness=0.36)
     assert ev.differences(a, a) == []
