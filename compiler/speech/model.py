@@ -10,6 +10,7 @@ from pathlib import Path
 from ..lexicon import Lexicon
 from .branches import CONTEXTS, bundled_counts, weigh_branches
 from .grammar import Grammar, build_grammar, closed_words
+from .homophones import with_homophones_pooled
 from .prior import WordPrior
 from .pronounce import Pronunciations
 from .recogniser import Recogniser, model_files, pocketsphinx_module
@@ -37,7 +38,8 @@ class SpeechModel:
         words = vocabulary.words() | closed_words(settings)
         pronunciations = Pronunciations(words, model_files().dictionary, folders, british=settings.british_variants)
         vocabulary = vocabulary.without(pronunciations.missing | joined_colours(vocabulary, pronunciations.english))
-        grammar = build_grammar(vocabulary, settings, word_prior(vocabulary, settings))
+        prior = with_homophones_pooled(vocabulary, pronunciations.table, word_prior(vocabulary, settings))
+        grammar = build_grammar(vocabulary, settings, prior)
         first, later = (weighed(grammar, context, settings.branch_smoothing) for context in CONTEXTS)
         dictionary, missing = pronunciations.dictionary_text(), frozenset(pronunciations.missing)
         return cls(vocabulary, first, later, dictionary, missing, settings)

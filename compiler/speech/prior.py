@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -21,10 +21,18 @@ class WordPrior:
     log_probability: dict[str, float]
     floor: float
     exponent: float
+    forms: dict[str, float] = field(default_factory=dict)  # scaled log weights set per form (homophones)
 
     def of(self, form: str) -> float:
-        """A form's scaled log weight: its rarest word's (a multi-word form is as hard as its hardest word)."""
+        """A form's scaled log weight: its rarest word's (a multi-word form is as hard as its hardest
+        word), or the weight set for it."""
+        if form in self.forms:
+            return self.forms[form]
         return self.exponent * min(self.log_probability.get(word, self.floor) for word in form.split())
+
+    def with_forms(self, forms: dict[str, float]) -> WordPrior:
+        """This prior with the given forms' scaled log weights set."""
+        return replace(self, forms={**self.forms, **forms})
 
     @classmethod
     def from_model(cls, pocketsphinx: Any, path: Path, words: Iterable[str], exponent: float) -> WordPrior:

@@ -310,3 +310,33 @@ def test_after_a_material_changes_are_likelier_than_new_materials(model: SpeechM
     assert first["start.describing"] > first["start.refinement"]  # 'matte black' starts paint; 'darker' nothing
     assert 0 < later["start.undo"] and 0 < first["start.refinement"]  # never impossible
     assert [t[:2] for t in model.grammar.transitions] == [t[:2] for t in model.later.transitions]
+
+
+def test_spellings_of_one_sound_weigh_as_all_of_them(model: SpeechModel) -> None:
+    """'grey' and 'gray' sound alike: each arc weighs as the two together (cnlmc.speech.homophones),
+    so neither loses to 'grape' on the strength of a split share; a word of its own sound keeps its own."""
+    by_source: dict[int, dict[str, float]] = defaultdict(dict)
+    for transition in model.grammar.transitions:
+        if len(transition) == 4:
+            by_source[transition[0]][transition[3]] = transition[2]
+    colours = [arcs for arcs in by_source.values() if {"grey", "gray", "grape"} <= set(arcs)]
+    assert colours
+    for arcs in colours:
+        assert arcs["grey"] == pytest.approx(arcs["gray"])
+        assert sum(arcs.values()) <= 1.0 + 1e-6
+
+
+def test_pooling_sums_the_spellings_probabilities() -> None:
+    import math
+
+    from cnlmc.speech.homophones import with_homophones_pooled
+    from cnlmc.speech.prior import WordPrior
+    from cnlmc.speech.vocabulary import Vocabulary
+
+    prior = WordPrior({"grey": math.log(0.01), "gray": math.log(0.03), "grape": math.log(0.02)}, math.log(1e-7), 0.5)
+    table = {"grey": ["G R EY"], "gray": ["G R EY"], "grape": ["G R EY P"]}
+    pooled = with_homophones_pooled(Vocabulary({"colours": ("grape", "gray", "grey")}), table, prior)
+    assert pooled is not None
+    assert pooled.of("grey") == pytest.approx(0.5 * math.log(0.04)) == pytest.approx(pooled.of("gray"))
+    assert pooled.of("grape") == prior.of("grape")
+    assert with_homophones_pooled(Vocabulary({"colours": ("grey",)}), table, None) is None
