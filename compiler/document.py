@@ -473,11 +473,17 @@ def _failed_line(
         with_after_comma,
         with_implied,
     )
+    from .sense_said import kind_said, sense_said
 
     named = _material_named_first(words, text, lexicon)  # 'marble: white, honed'
     if named is not None:
         diags.append(named[1])
         return named[0]
+    sensed = sense_said(words, text, lexicon) or kind_said(words, text, lexicon)  # 'teak, the colour not the wood'
+    if sensed is not None:
+        diags[:] = [d for d in diags if not (d.is_error and d.span is not None and d.span.start >= sensed[2])]
+        diags.append(sensed[1])
+        return sensed[0]
     made = _made_of_reading(words, text, lexicon, diags)  # 'wood of oak', 'a cloak of grey wool'
     if made is not None:
         return made

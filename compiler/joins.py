@@ -210,6 +210,8 @@ class Joiner:
         elif (finish := self._finish_alone(out)) is not None:
             self._finish_on_substrate(out, finish, diags)  # "blue glaze", "red enamel"
         _feature_colour_list(out, diags)
+        _feature_with_finish_head(out, diags)  # 'with a wood grain effect': the grain
+        _coloured_feature(out, diags)  # 'terrazzo with coloured chips'
         if len(out) > 3:
             _feature_then_colour(out, diags, self.spoken().with_word)  # 'granite, speckled grey'
         if len(out) > 1:
@@ -1102,6 +1104,44 @@ def _ends_in_describing(out: list[Tagged]) -> bool:
     )
 
 
+def _feature_with_finish_head(out: list[Tagged], diags: list[Diagnostic]) -> None:
+    """'laminate with a wood grain effect', 'a speckle look': a feature, then a word of the finish
+    feature ('effect', 'look', 'finish') that only names it as a look: the feature, the head read
+    past with a note (a noun before the head is a look of that material: Joiner._look_of)."""
+    for k in range(len(out) - 1, 0, -1):
+        head, before = out[k], out[k - 1]
+        if not _only_finish(head) or not any(c.tag == "FEATURE" and c.key != "finish" for c in before.candidates):
+            continue
+        if k + 1 < len(out) and not (of_tag(out[k + 1], "COMMA") or of_tag(out[k + 1], "AND")):
+            continue
+        note = f"read '{before.text} {head.text}' as '{before.text}'"
+        diags.append(Diagnostic(before.span.to(head.span), Severity.NOTE, NOTE_CODE, note))
+        del out[k]
+
+
+#: 'multicoloured', 'colourful' (adverbs_degrees.toml [visible]): what 'coloured' says before a feature
+_COLOURED_FEATURE = (Candidate("ADV", "visible", "adverbs"),)
+
+
+def _coloured_feature(out: list[Tagged], diags: list[Diagnostic]) -> None:
+    """'terrazzo with coloured chips': 'coloured' (a colour word's -ed form) in a 'with' clause right
+    before a feature says its pieces have colours, as 'colourful' does (the graph draws one colour),
+    with a note; elsewhere ('red coloured plastic') it stays the colour's head."""
+    with_at = next((k for k, t in enumerate(out) if of_tag(t, "WITH")), None)
+    if with_at is None:
+        return
+    for k in range(with_at + 1, len(out) - 1):
+        word = out[k]
+        if only_tag(word, "PROP") and word.text.lower().endswith("ed") and of_tag(out[k + 1], "FEATURE"):
+            out[k] = Tagged(word.text, word.span, _COLOURED_FEATURE)
+            note = f"read '{word.text} {out[k + 1].text}' as colourful {out[k + 1].text} (the pattern draws one colour)"
+            diags.append(Diagnostic(word.span.to(out[k + 1].span), Severity.NOTE, NOTE_CODE, note))
+
+
+def _only_finish(word: Tagged) -> bool:
+    return bool(word.candidates) and all(c.tag == "FEATURE" and c.key == "finish" for c in word.candidates)
+
+
 def _feature_colour_list(out: list[Tagged], diags: list[Diagnostic]) -> None:
     """'flecks of red and green', 'veins of gold, grey and white': a feature's graph draws one colour
     (its color_r/g/b), so the first colour after 'of' is the feature's and the others are left out,
@@ -1238,6 +1278,7 @@ def may_join(tagged: list[Tagged]) -> bool:
     an unknown word after a noun ("pewter tankard") or with no noun ("a red bike"), or, with no
     'with' or comma, in a describing word after a noun ("Eiche geölt")."""
     noun_before = noun_seen = noun_before_last = described_noun = with_seen = unknown_seen = shade_before = False
+    feature_before = False  # 'a wood grain effect': a feature, then the finish head
     plain = True  # no 'with', no comma
     final = tagged[-1] if tagged else None
     for word in tagged:
@@ -1261,8 +1302,9 @@ def may_join(tagged: list[Tagged]) -> bool:
                     with_seen = True
                 if tag == "WITH" or not described_noun:  # "Buche massiv, geölt": a comma in the run stays plain
                     plain = False
-        if (noun and noun_before) or (head and (word is not final or noun_before or shade_before)):
+        if (noun and noun_before) or (head and (word is not final or noun_before or shade_before or feature_before)):
             return True  # shade_before: 'oak, dark colour' ends in its colour head
+        feature_before = any(c.tag == "FEATURE" for c in word.candidates)
         shade_before = any(c.tag in ("SHADE", "COLOR") for c in word.candidates)
         described_noun = describing and (noun_before or described_noun)
         noun_before_last, noun_before = noun_before, noun

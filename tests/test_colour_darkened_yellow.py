@@ -83,4 +83,6 @@ def test_only_a_darkened_yellow_turns_and_never_its_chroma(was, to, hue, chroma)
     assert math.hypot(new_a, new_b) == pytest.approx(chroma, abs=1e-12)
     if (new_a, new_b) != (a, b):
         turned = math.degrees(math.atan2(new_b, new_a)) % 360.0
-        assert to < was and yellow_hue_at(to) <= turned < hue  # toward orange, never past the line
+        assert (
+            to < was and yellow_hue_at(to) <= turned <= hue
+        )  # toward orange (a turn may be below float precision), never past the line
