@@ -230,7 +230,8 @@ class Tagger:
         return self._bracketed_suffixes(kept) if "(" in line else kept
 
     def _bracketed_suffixes(self, raw: list[RawToken]) -> list[RawToken]:
-        """'white(ish)': a suffix of the rules said in brackets right after its word is glued to it."""
+        """'white(ish)', 'grey (ish)': a suffix of the rules said in brackets right after its word (or
+        after one space) is glued to it."""
         suffixes = self.formation().rules.bracketed_suffixes
         out: list[RawToken] = []
         i = 0
@@ -242,7 +243,7 @@ class Tagger:
                 and parts[0] == "("
                 and parts[1].lower() in suffixes
                 and parts[2] == ")"
-                and raw[i + 1][1] == col + len(text)
+                and raw[i + 1][1] - (col + len(text)) <= 1  # 'grey (ish)': a space may stand before it
             ):
                 out.append((text + parts[1], col))
                 i += 4
@@ -357,6 +358,10 @@ class Tagger:
                 reading = self.formation().read_use_last(text.lower(), raw[i - 1][0].lower())
             if reading is not None:
                 return self._formed(reading, raw, i, line_no, offset, tagged, diags)
+        alone = self._prefix_alone(raw, i)  # 'medium oak': the mid tone ('medium rough': somewhat rough)
+        if alone is not None:
+            tagged.append(Tagged(text, self._span(raw, i, 1, line_no, offset), (Candidate("SHADE", alone, "shades"),)))
+            return 1
         if self._possessor(raw, i, tagged):  # 'grandma's old oak table'
             diags.append(
                 Diagnostic(
@@ -366,6 +371,15 @@ class Tagger:
             return 1
         tagged.append(self._unknown(raw[i], line_no, offset, diags))
         return 1
+
+    def _prefix_alone(self, raw: list[RawToken], i: int) -> str | None:
+        """The shade a prefix word names when no describing word follows it for it to qualify
+        (word formation [[prefix]] `alone`: 'medium oak', 'mid grey'; not 'medium rough')."""
+        shade = self.formation().rules.prefix_alone.get(raw[i][0].lower())
+        if shade is None or i + 1 == len(raw):
+            return None
+        after = self._candidates((raw[i + 1][0].lower(),))
+        return shade if after and not any(c.tag in ("ADJ", "ADV", "PROP") for c in after) else None
 
     def _possessor(self, raw: list[RawToken], i: int, tagged: list[Tagged]) -> bool:
         """Whether an unknown word says whose the thing is ('grandma's', 'the kids', teaching.toml

@@ -92,6 +92,9 @@ class Rules:
         self.prefixes = {
             form: p["adverb"] for layer in reversed(layers) for p in layer["prefix"] for form in p["forms"]
         }
+        self.prefix_alone = {  # 'medium oak': the shade a prefix word names standing alone
+            form: p["alone"] for layer in reversed(layers) for p in layer["prefix"] for form in p["forms"] if p["alone"]
+        }
         self.prefix_endings = {
             form: tuple(p["endings"]) for layer in reversed(layers) for p in layer["prefix"] for form in p["forms"]
         }

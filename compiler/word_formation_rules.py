@@ -141,11 +141,12 @@ def _words(c: Checker, value: object, path: tuple[str | int, ...], blank: bool =
 
 def _prefix(c: Checker, raw: object, i: int) -> dict[str, Any]:
     table = c.table(raw, ("prefix", i))
-    c.known_keys(table, ("forms", "adverb", "endings", "doc"), ("prefix", i))
+    c.known_keys(table, ("forms", "adverb", "endings", "alone", "doc"), ("prefix", i))
     return {
         "forms": _words(c, c.required(table, "forms", ("prefix", i)), ("prefix", i, "forms")),
         "endings": _words(c, table.get("endings", [""]), ("prefix", i, "endings"), blank=True),
         "adverb": c.string(c.required(table, "adverb", ("prefix", i)), ("prefix", i, "adverb"), blank=False),
+        "alone": c.string(table.get("alone", ""), ("prefix", i, "alone"), blank=True),
         "doc": c.string(c.required(table, "doc", ("prefix", i)), ("prefix", i, "doc"), blank=False),
     }
 
@@ -339,3 +340,6 @@ def check_rule_names(c: Checker, rules: Mapping[str, Any], raw: Mapping[str, Map
     for path, name in named:
         if name not in adverbs:
             c.fail(path, f"no adverb named '{name}'{did_you_mean(name, adverbs)}")
+    for i, p in enumerate(rules["prefix"]):
+        if p["alone"] and p["alone"] not in raw["shades"]:
+            c.fail(("prefix", i, "alone"), f"no shade named '{p['alone']}'{did_you_mean(p['alone'], raw['shades'])}")

@@ -185,3 +185,26 @@ def test_a_thing_after_a_finish_named_as_its_material_is_read_past(said, plain):
 @pytest.mark.parametrize("said", ["glossy guitar", "polished bras"])
 def test_a_thing_after_a_plain_describing_word_keeps_its_error(said):
     assert not compiled(said).ok  # no material named ('bras' is a slip of brass, and an artifact)
+
+
+# ---------------------------------------------------------------- mid tones and a spaced '(ish)'
+
+
+@pytest.mark.parametrize("said", ["mid-tone oak", "medium oak", "mid oak"])
+def test_a_mid_tone_is_half_way_to_mid_grey(said):
+    (L, _, h), (L0, _, h0) = lch(material(said)["params"]["base_color"]), lch(material("oak")["params"]["base_color"])
+    assert abs(L - 0.6) <= abs(L0 - 0.6) and abs(L - (L0 + 0.6) / 2) < 0.01 and abs(h - h0) < 1
+
+
+def test_a_mid_tone_of_black_is_a_grey_not_a_black():
+    assert 0.25 < lch(material("mid-tone black paint")["params"]["base_color"])[0] < 0.35
+
+
+def test_medium_still_grades_a_describing_word():
+    assert (
+        0.5 < material("medium rough plastic")["params"]["roughness"] < material("rough plastic")["params"]["roughness"]
+    )
+
+
+def test_ish_in_brackets_after_a_space_is_the_suffix():
+    reads_as("grey (ish) porcelain", "greyish porcelain")
