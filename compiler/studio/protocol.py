@@ -11,8 +11,10 @@ background and sent when ready.
   hover {text, line, character} -> hover {markdown, range} | hover {}
   export {key, text}            -> exported {url, name, notes}
   ar_model {text}               -> ar_model {glb, usdz, notes}
+  hear_chunk {pcm}              -> hearing {seconds}  (the utterance so far, streamed while recording)
   hear {pcm}                    -> analysis {..., text, heard, message} | heard {message[, heard]}
-                                   (pcm: one utterance, base64 16-bit mono PCM at hello's speech.rate)
+                                   (pcm: the rest of the utterance after its chunks, or all of it:
+                                   base64 16-bit mono PCM at hello's speech.rate)
 and, unasked, chips {words, text} after an analysis that made a history step.
 
 Messages are read as they arrive and answered in order by one task: an edit is numbered when it
@@ -58,6 +60,7 @@ class Dispatcher:
         self.socket = socket
         self.initial_text = initial_text
         self.chip_task: asyncio.Task[None] | None = None
+        self.streamed = bytearray()  # the utterance's chunks so far (hear_chunk), until its `hear`
         #: (request, its edit number or None, when it was read: time.perf_counter())
         self.queue: asyncio.Queue[tuple[JSONDict, int | None, float]] = asyncio.Queue(QUEUED_REQUESTS)
 
@@ -194,11 +197,24 @@ class Dispatcher:
             "notes": glb.notes + usdz.notes,
         }
 
+    async def op_hear_chunk(self, message: JSONDict) -> JSONDict:
+        """A part of the utterance being recorded: kept until its `hear` (an utterance over the
+        length limit is refused, and its chunks dropped)."""
+        try:
+            self.streamed += _audio(message, self._utterance_bytes(), len(self.streamed))
+        except ValueError:
+            self.streamed.clear()
+            raise
+        return {"op": "hearing", "seconds": len(self.streamed) / 2 / self.ears.rate}
+
     async def op_hear(self, message: JSONDict) -> JSONDict:
-        limits = self.session.settings.limits
-        pcm = _audio(message, self.ears.rate * 2 * limits.max_utterance_seconds)
+        streamed, self.streamed = bytes(self.streamed), bytearray()
+        pcm = streamed + _audio(message, self._utterance_bytes(), len(streamed))
         answer = await self.in_thread(self.session.speak, self.ears, pcm)
         return answer if answer.get("op") == "heard" else await self.analysed(answer)
+
+    def _utterance_bytes(self) -> int:
+        return self.ears.rate * 2 * self.session.settings.limits.max_utterance_seconds
 
     def url(self, relative: str) -> str:
         return f"/files/{self.session.id}/{relative}"
@@ -219,13 +235,14 @@ def _text(message: JSONDict, key: str) -> str:
     return value
 
 
-def _audio(message: JSONDict, max_bytes: int) -> bytes:
-    """The utterance of a `hear` request: 16-bit PCM, at most `max_bytes`."""
+def _audio(message: JSONDict, max_bytes: int, before: int = 0) -> bytes:
+    """The audio of a `hear` or `hear_chunk` request: 16-bit PCM that, after the `before` bytes of
+    the utterance already streamed, keeps it within `max_bytes`."""
     try:
         pcm = base64.b64decode(_text(message, "pcm"), validate=True)
     except binascii.Error:
         raise ValueError("the request's audio is not base64") from None
-    if len(pcm) % 2 or len(pcm) > max_bytes:
+    if len(pcm) % 2 or before + len(pcm) > max_bytes:
         raise ValueError(f"an utterance is 16-bit audio of at most {max_bytes // 2} samples")
     return pcm
 

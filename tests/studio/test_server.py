@@ -7,6 +7,8 @@ from __future__ import annotations
 import asyncio
 import json
 import re
+import shutil
+import subprocess
 import zipfile
 from collections.abc import AsyncIterator
 from pathlib import Path
@@ -26,6 +28,8 @@ from aiohttp.test_utils import TestClient, TestServer  # noqa: E402
 from cnlmc.api import lexicon_for  # noqa: E402
 from cnlmc.studio.server import Studio, make_app  # noqa: E402
 from cnlmc.studio.settings import studio_settings  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[2]
 
 PHRASE = "lightly brushed, blue anodized aluminum"
 
@@ -330,3 +334,60 @@ async def test_a_spoken_utterance_that_is_not_audio_or_silence_changes_nothing(c
     undone = await ask(socket, "undo")  # the document is still the typed one: one step, nothing to undo
     assert undone["op"] == "error" and "nothing to undo" in undone["message"]
     await socket.close()
+
+
+async def test_an_utterance_streamed_in_chunks_is_heard_as_one(client: TestClient[Any, Any]) -> None:
+    """`hear_chunk` keeps each part of the utterance while it is recorded; `hear` adds the rest and
+    hears the whole (silence here: 'no phrase'); the length limit counts the chunks, and an utterance
+    refused for its length leaves no chunks behind for the next one."""
+    import base64
+
+    socket = await client.ws_connect("/ws")
+    hello = await socket.receive_json()
+    rate, seconds = hello["speech"]["rate"], hello["speech"]["max_seconds"]
+    half = base64.b64encode(bytes(rate)).decode()  # half a second of silence
+    first = await ask(socket, "hear_chunk", pcm=half)
+    second = await ask(socket, "hear_chunk", pcm=half)
+    assert (first["op"], first["seconds"], second["seconds"]) == ("hearing", 0.5, 1.0)
+    too_much = base64.b64encode(bytes(2 * rate * seconds - 2 * rate + 4)).decode()  # 2 samples past the limit
+    refused = await ask(socket, "hear_chunk", pcm=too_much)
+    assert refused["op"] == "error" and "at most" in refused["message"], refused
+    restarted = await ask(socket, "hear_chunk", pcm=half)
+    assert restarted["seconds"] == 0.5  # the refused utterance's chunks are gone
+    pytest.importorskip("pocketsphinx", reason="speech input needs pocketsphinx (pip install 'cnlmc[speech]')")
+    heard = await ask(socket, "hear", pcm=half)
+    assert heard["op"] == "heard" and "no phrase" in heard["message"], heard
+    again = await ask(socket, "hear_chunk", pcm=half)
+    assert again["seconds"] == 0.5  # `hear` ended the utterance: the next one starts empty
+    await socket.close()
+
+
+def test_the_pages_streamed_resampling_joins_as_one_utterance() -> None:
+    """speech.js's Resampler fed 4096-sample blocks (as the page's audio processor gives them) gives
+    the samples resampling the whole recording gives, at 44.1 and 48 kHz."""
+    node = shutil.which("node")
+    if node is None:
+        pytest.skip("node is missing: run scripts/setup.sh")
+    module = (ROOT / "compiler" / "studio" / "static" / "speech.js").as_uri()
+    script = f"""
+import {{ Resampler, resample }} from {json.dumps(module)};
+const out = [];
+for (const rate of [44100, 48000]) {{
+  const all = new Float32Array(rate * 2);
+  for (let i = 0; i < all.length; i++) all[i] = Math.sin(2 * Math.PI * 300 * i / rate);
+  const whole = resample(all, rate, 16000);
+  const r = new Resampler(rate, 16000);
+  const parts = [];
+  for (let i = 0; i < all.length; i += 4096) parts.push(...r.next(all.subarray(i, i + 4096)));
+  let err = 0;
+  for (let i = 0; i < Math.min(whole.length, parts.length); i++) err = Math.max(err, Math.abs(parts[i] - whole[i]));
+  out.push([whole.length, parts.length, err]);
+}}
+console.log(JSON.stringify(out));
+"""
+    run = subprocess.run(
+        [node, "--input-type=module", "-e", script], capture_output=True, text=True, timeout=60, check=False
+    )
+    assert run.returncode == 0, run.stderr
+    for whole, parts, err in json.loads(run.stdout):
+        assert (parts, err) == (whole, 0.0)

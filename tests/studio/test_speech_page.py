@@ -17,6 +17,7 @@ from .conftest import BROWSER_ARGS, CHROMIUM, STARTUP_SECONDS, Server, require_b
 
 pytestmark = pytest.mark.slow
 HEAR_SECONDS = 120  # the first utterance loads the recogniser; a loaded 2-core machine is slow
+SENT: list[str] = []
 
 
 def spoken(folder: Path, text: str) -> tuple[Path, float]:
@@ -53,6 +54,8 @@ def page_hearing(server: Server, wav: Path) -> Iterator[Any]:
         page = context.new_page()
         problems: list[str] = []
         page.on("pageerror", lambda e: problems.append(f"uncaught: {e}"))
+        SENT.clear()  # the WebSocket requests the page sends (the streamed utterance's chunks among them)
+        page.on("websocket", lambda socket: socket.on("framesent", lambda frame: SENT.append(str(frame))))
         page.goto(server.url)
         page.wait_for_selector("body[data-ready='1']", state="attached", timeout=STARTUP_SECONDS * 1000)
         yield page
@@ -84,6 +87,8 @@ def test_the_first_utterance_starts_the_material(server: Server, tmp_path: Path)
         message = say(page, seconds)
         assert message.startswith("heard 'white varnished oak'"), message
         assert editor_text(page) == "white varnished oak"
+        ops = [op for frame in SENT for op in ('"hear_chunk"', '"hear"') if f'"op":{op}' in frame.replace(" ", "")]
+        assert ops.count('"hear_chunk"') >= 2 * int(seconds) - 1 and ops[-1] == '"hear"', ops  # streamed, then ended
         assert "oak" in page.inner_text("#materials")
 
 

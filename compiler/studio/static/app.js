@@ -183,13 +183,16 @@ class Studio {
     }
   }
 
-  // The microphone button: the first press records, the second (or the length limit) sends the
-  // utterance; the server applies it as `cnlmc listen` does and says what it heard.
+  // The microphone button: the first press records and streams the utterance to the server, the
+  // second (or the length limit) sends its rest; the server applies it as `cnlmc listen` does and
+  // says what it heard.
   async speak() {
     const button = $("speak");
     if (!this.microphone) {
       this.microphone = new Microphone(this.hello.speech.rate, this.hello.speech.max_seconds);
       this.microphone.onLimit = () => this.speak();
+      // each part goes to the server while the person speaks (answered in order, before the `hear`)
+      this.microphone.onChunk = (pcm) => this.ask("hear_chunk", { pcm }).catch(fail);
     }
     if (this.microphoneStarting) return; // a second press while the browser asks for the microphone
     if (!this.microphone.recording) {
