@@ -22,6 +22,11 @@ def material(text: str) -> dict:
     return result.ir["materials"][-1]
 
 
+def graphs(text: str) -> dict[str, str]:
+    """Each map slot of the phrase's material and the graph that draws it."""
+    return {slot: spec["graph"] for slot, spec in (material(text).get("maps") or {}).items()}
+
+
 def lch(rgb: list[float]) -> tuple[float, float, float]:
     """OKLCh lightness, chroma and hue (degrees) of a linear RGB colour."""
     L, a, b = linear_to_oklab(rgb)

@@ -9,13 +9,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from cnlmc.colour import linear_to_oklab, scale_chroma
-from tests.language.meaning import compiled, lch, material, reads_as, same_look
-
-
-def graphs(text: str) -> dict[str, str]:
-    """Each map slot of the phrase's material and the graph that draws it."""
-    return {slot: spec["graph"] for slot, spec in (material(text).get("maps") or {}).items()}
-
+from tests.language.meaning import compiled, graphs, lch, material, reads_as, same_look
 
 # ---------------------------------------------------------------- a thing's part, then more words
 

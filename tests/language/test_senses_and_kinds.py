@@ -5,11 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.language.meaning import compiled, material, reads_as
-
-
-def graphs(text: str) -> dict[str, str]:
-    return {slot: spec["graph"] for slot, spec in (material(text).get("maps") or {}).items()}
+from tests.language.meaning import compiled, graphs, material, reads_as
 
 
 @pytest.mark.parametrize(
