@@ -80,9 +80,8 @@ def likeness_dropped(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tu
     bare = re.search(r",\s*like\b", text.lower()) if found is None else None
     if bare is not None and _possessive_after(text, bare.end()):
         found = bare  # 'dark brown, like grandad's wireless': a thing, as after 'like a'
-    elif (
-        bare is not None
-    ):  # 'something light, like birch': a bare 'like' names the material only after describing words
+    elif bare is not None:
+        # 'something light, like birch': a bare 'like' names the material only after describing words
         if not words:
             return None
         line_start = words[0].span.line_start

@@ -14,7 +14,7 @@ from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
 from .parser import parsed_material
 from .phrase_patterns import alternatives
-from .suggest import teaching
+from .suggest import everyday_noun, teaching
 from .tagged import NOTE_CODE, Tagged, written_span
 
 
@@ -58,8 +58,6 @@ def _in_sense(head: list[Tagged], sense: Tagged, colour: bool, text: str, lexico
             *joined[:-1],
             Tagged(joined[-1].text, joined[-1].span, tuple(c for c in joined[-1].candidates if c.tag == "COLOR")),
         ]
-        from .suggest import everyday_noun
-
         return parsed_material([*joined, implied_noun(everyday_noun(), joined[-1])], text, lexicon.caches.shapes)
     return parsed_material(joined, text, lexicon.caches.shapes) or parsed_material(head, text, lexicon.caches.shapes)
 

@@ -30,7 +30,9 @@ def with_homophones_pooled(
     for forms in vocabulary.forms.values():
         groups: dict[tuple[frozenset[str], ...], list[str]] = defaultdict(list)
         for form in forms:
-            groups[sound_of(form, table)].append(form)
+            sound = sound_of(form, table)
+            if all(sound):  # a word with no pronunciation sounds like nothing else
+                groups[sound].append(form)
         for group in groups.values():
             if len(group) > 1:
                 logs = [prior.of(form) / prior.exponent for form in group]
