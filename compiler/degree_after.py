@@ -22,7 +22,7 @@ def degrees_after(words: Sequence[Tagged]) -> tuple[list[Tagged], list[Diagnosti
     out: list[Tagged] = []
     notes: list[Diagnostic] = []
     for k, word in enumerate(words):
-        degree = _after(word, words[k + 1 :]) if out and _qualified(out[-1]) else None
+        degree = _after(word, words, k + 1) if out and _qualified(out[-1]) else None
         if degree is None:
             out.append(word)
             continue
@@ -41,7 +41,7 @@ def _qualified(word: Tagged) -> bool:
     return any(c.tag in QUALIFIED for c in word.candidates) and len(word.text) > 1
 
 
-def _after(word: Tagged, rest: Sequence[Tagged]) -> str | None:
+def _after(word: Tagged, words: Sequence[Tagged], next_at: int) -> str | None:
     """The degree word a word said after its describing word stands for, or None: a form only said
     after ('af'), or a degree adverb of several words with nothing after it to qualify ('aged a
     bit', 'rough a little, oiled': the line or its part ends there)."""
@@ -52,7 +52,8 @@ def _after(word: Tagged, rest: Sequence[Tagged]) -> str | None:
 
     table: dict[str, str] = teaching()["hedges"]["after_the_word"]
     said = table.get(word.text.lower())
-    if said is None and " " in word.text.strip() and (not rest or any(c.tag == "COMMA" for c in rest[0].candidates)):
+    ends = next_at == len(words) or any(c.tag == "COMMA" for c in words[next_at].candidates)
+    if said is None and " " in word.text.strip() and ends:
         return adverb.key  # a degree said as a noun phrase ('a bit', 'a little') follows its word; 'very' does not
     return said
 

@@ -1282,7 +1282,7 @@ def may_join(tagged: list[Tagged]) -> bool:
     plain = True  # no 'with', no comma
     final = tagged[-1] if tagged else None
     for word in tagged:
-        noun = head = describing = False
+        noun = head = describing = feature = False
         if word.unknown:
             unknown_seen = True
         for candidate in word.candidates:
@@ -1293,6 +1293,7 @@ def may_join(tagged: list[Tagged]) -> bool:
                 noun = True
             elif tag == "COAT" or tag == "FEATURE" or tag == "PROP":  # PROP: 'coloured' (colour + -ed)
                 head = True
+                feature = feature or tag == "FEATURE"
             elif tag == "ADJ":
                 describing = True
             elif tag == "WITH" or tag == "COMMA":
@@ -1304,7 +1305,7 @@ def may_join(tagged: list[Tagged]) -> bool:
                     plain = False
         if (noun and noun_before) or (head and (word is not final or noun_before or shade_before or feature_before)):
             return True  # shade_before: 'oak, dark colour' ends in its colour head
-        feature_before = any(c.tag == "FEATURE" for c in word.candidates)
+        feature_before = feature
         shade_before = any(c.tag in ("SHADE", "COLOR") for c in word.candidates)
         described_noun = describing and (noun_before or described_noun)
         noun_before_last, noun_before = noun_before, noun
