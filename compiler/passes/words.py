@@ -26,6 +26,7 @@ from .colour_compounds import colour_compounds
 from .colours import colour_text, opposed_shades, resolve_colour
 from .diffuse_sigma import DIFFUSE_SIGMA, PARAM_BOUNDS, move_sigma
 from .feature_maps import draw_feature_maps, weighted_map
+from .negated_finish import already_not
 from .order import canonical_groups, gloss_on_coat, stage_of
 from .textured_colour import keep_pattern_visible
 
@@ -213,6 +214,8 @@ def apply_adjective(
         for c in group.colours:  # "pale honed maple": the colour still holds, on the base
             apply_colour(state, ctx, c, group.adverbs, "base", weight, ageing=False)
         return
+    if already_not(state, ctx, word):
+        return  # 'glossy paint but not mirror': glossy is not mirror already
     if state.applied:
         _check_opposition(state, ctx, adjective, word)
     _check_noun_name(state, ctx, adjective, word)

@@ -85,3 +85,28 @@ def test_a_feature_named_as_an_effect_is_the_feature(said, plain):
 
 def test_what_the_material_is_ready_for_is_read_past():
     reads_as("sandblasted steel, ready for primer", "sandblasted steel", "read past")
+
+
+# ---------------------------------------------------------------- a finish, then one it already is not
+
+
+@pytest.mark.parametrize(
+    "said, plain",
+    [
+        ("glossy paint but not mirror", "glossy paint"),
+        ("satin paint but not glossy", "satin paint"),
+        ("white paint, satin but not glossy", "white satin paint"),
+        ("glossy paint but not matte", "glossy paint"),
+    ],
+)
+def test_a_negated_finish_the_finish_said_already_excludes_is_read_past(said, plain):
+    reads_as(said, plain, "already")
+    assert not [d for d in compiled(said).diagnostics if d.code == "W101"]
+
+
+def test_a_negated_finish_between_the_finish_and_the_middle_still_contradicts():
+    assert "W101" in [d.code for d in compiled("glossy paint but not shiny").diagnostics]
+
+
+def test_a_negated_finish_alone_is_still_its_opposite():
+    assert material("not glossy paint")["params"]["roughness"] == material("matte paint")["params"]["roughness"]
