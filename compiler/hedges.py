@@ -236,13 +236,12 @@ def _finish_between(
 
 def _roughness_set(word: Tagged, lexicon: Lexicon) -> tuple[str, float] | None:
     """The finish adjective a word names and the roughness it sets ('satin': 0.35), or None."""
+    from .passes.finish_ladder import finish_roughness
+
     for candidate in word.candidates:
-        entry = lexicon.entry("adjectives", candidate.key) if candidate.tag == "ADJ" else None
-        if entry is None or entry.get("applies_to"):
-            continue
-        value = entry.set_value("roughness")
+        value = finish_roughness(lexicon.entry("adjectives", candidate.key)) if candidate.tag == "ADJ" else None
         if value is not None:
-            return entry.key, float(value)
+            return candidate.key, value
     return None
 
 

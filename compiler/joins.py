@@ -211,7 +211,7 @@ class Joiner:
             self._finish_on_substrate(out, finish, diags)  # "blue glaze", "red enamel"
         _feature_colour_list(out, diags)
         _feature_with_finish_head(out, diags)  # 'with a wood grain effect': the grain
-        _coloured_feature(out, diags)  # 'terrazzo with coloured chips'
+        self._coloured_feature(out, diags)  # 'terrazzo with coloured chips'
         if len(out) > 3:
             _feature_then_colour(out, diags, self.spoken().with_word)  # 'granite, speckled grey'
         if len(out) > 1:
@@ -315,6 +315,26 @@ class Joiner:
         name = self._artifact_name(word.text.lower())
         note = f"read '{before.text} {word.text}' as '{before.text}' (the finish of the {word.text}: WordNet 3.0 lists '{name}' as an artifact)"
         diags.append(Diagnostic(before.span.to(word.span), Severity.NOTE, NOTE_CODE, note))
+
+    def _coloured_feature(self, out: list[Tagged], diags: list[Diagnostic]) -> None:
+        """'terrazzo with coloured chips': a colour head ('coloured') in a 'with' clause right before a
+        feature says its pieces have colours: read as word formation's `colour_head_before_feature`
+        ('colourful'; the graph draws one colour), with a note; elsewhere ('red coloured plastic') it
+        stays the colour's head."""
+        with_at = next((k for k, t in enumerate(out) if of_tag(t, "WITH")), None)
+        rules = self.rules()
+        if with_at is None or not rules.colour_head_before_feature:
+            return
+        for k in range(with_at + 1, len(out) - 1):
+            word, feature = out[k], out[k + 1]
+            if not (only_tag(word, "PROP") and word.text.lower() in rules.colour_heads and of_tag(feature, "FEATURE")):
+                continue
+            said = rules.colour_head_before_feature[0]
+            reading = tuple(Candidate(e.tag, e.key, e.category) for e in self.lexicon.lookup((said,)) if e.tag == "ADV")
+            if reading:
+                out[k] = Tagged(word.text, word.span, reading)
+                note = f"read '{word.text} {feature.text}' as {said} {feature.text} (the pattern draws one colour)"
+                diags.append(Diagnostic(word.span.to(feature.span), Severity.NOTE, NOTE_CODE, note))
 
     def _artifact_run(self, rest: list[Tagged]) -> bool:
         """Whether the words after a thing's name are the rest of it ('guitar neck', 'phone case':
@@ -670,9 +690,10 @@ class Joiner:
         n = out.index(noun)
         rest = out[n + 1 :]
         last = noun
-        if rest and (
+        read_past_later = bool(rest) and (
             rest[0].unknown or _a_place(rest)
-        ):  # 'tiles behind the hob', 'tiles of the bathroom': read past later
+        )  # 'tiles behind the hob', 'of the bathroom'
+        if read_past_later:
             rest = []
         elif rest and of_tag(rest[0], "COMMA") and _describing_only(rest):  # 'white tiles, glossy': the clause last
             n, last, rest = len(out) - 1, rest[-1], []
@@ -1117,25 +1138,6 @@ def _feature_with_finish_head(out: list[Tagged], diags: list[Diagnostic]) -> Non
         note = f"read '{before.text} {head.text}' as '{before.text}'"
         diags.append(Diagnostic(before.span.to(head.span), Severity.NOTE, NOTE_CODE, note))
         del out[k]
-
-
-#: 'multicoloured', 'colourful' (adverbs_degrees.toml [visible]): what 'coloured' says before a feature
-_COLOURED_FEATURE = (Candidate("ADV", "visible", "adverbs"),)
-
-
-def _coloured_feature(out: list[Tagged], diags: list[Diagnostic]) -> None:
-    """'terrazzo with coloured chips': 'coloured' (a colour word's -ed form) in a 'with' clause right
-    before a feature says its pieces have colours, as 'colourful' does (the graph draws one colour),
-    with a note; elsewhere ('red coloured plastic') it stays the colour's head."""
-    with_at = next((k for k, t in enumerate(out) if of_tag(t, "WITH")), None)
-    if with_at is None:
-        return
-    for k in range(with_at + 1, len(out) - 1):
-        word = out[k]
-        if only_tag(word, "PROP") and word.text.lower().endswith("ed") and of_tag(out[k + 1], "FEATURE"):
-            out[k] = Tagged(word.text, word.span, _COLOURED_FEATURE)
-            note = f"read '{word.text} {out[k + 1].text}' as colourful {out[k + 1].text} (the pattern draws one colour)"
-            diags.append(Diagnostic(word.span.to(out[k + 1].span), Severity.NOTE, NOTE_CODE, note))
 
 
 def _only_finish(word: Tagged) -> bool:

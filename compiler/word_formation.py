@@ -136,6 +136,7 @@ class Rules:
         self.resemblance = _merged_resemblance([layer["resemblance"] for layer in layers])
         self.colour_heads = frozenset(self.resemblance["colour_heads"])
         self.colour_label_links = frozenset(self.resemblance["colour_label_links"])  # "colour is red"
+        self.colour_head_before_feature = tuple(self.resemblance["colour_head_before_feature"])  # "coloured chips"
         self.like_heads = frozenset(self.resemblance["like_heads"])
         self.like_not_before = frozenset(self.resemblance["like_not_before"])  # "like a wedding ring"
         self.finish_heads = frozenset(self.resemblance["finish_heads"])

@@ -12,6 +12,7 @@ than mirror' halfway to 0. Any finish word may be compared with ('than eggshell'
 from __future__ import annotations
 
 from .. import ast
+from ..lexicon import Entry
 from ..state import Context, MaterialState
 from .bracket import Move
 from .refine_target import item_words, move_sigma_too, refine_weight, surface
@@ -71,8 +72,16 @@ def finishes(ctx: Context) -> tuple[float, ...]:
     """The roughness values the ladder's finish words set (settings.toml finish_ladder), ascending."""
     values = []
     for key in ctx.settings.get("finish_ladder", ()):
-        entry = ctx.lexicon.entry("adjectives", key)
-        value = entry.set_value(ROUGHNESS) if entry is not None else None
+        value = finish_roughness(ctx.lexicon.entry("adjectives", key))
         if value is not None:
-            values.append(float(value))
+            values.append(value)
     return tuple(sorted(set(values)))
+
+
+def finish_roughness(entry: Entry | None) -> float | None:
+    """The roughness a finish adjective sets for any surface ('satin': 0.35), or None for any other
+    entry (a word that only adds to roughness, or one that applies to some materials only)."""
+    if entry is None or entry.category != "adjectives" or entry.get("applies_to"):
+        return None
+    value = entry.set_value(ROUGHNESS)
+    return None if value is None else float(value)

@@ -16,7 +16,7 @@ from ..diagnostics import Diagnostic, Severity
 from ..lexicon import Entry
 from ..state import Context, MaterialState
 from ..tagged import NOTE_CODE
-from .finish_ladder import ROUGHNESS, finishes
+from .finish_ladder import finish_roughness, finishes
 
 MIDDLE = 0.5  # the rung nearest this roughness is the middle finish
 
@@ -25,15 +25,13 @@ def already_not(state: MaterialState, ctx: Context, word: ast.Word) -> bool:
     """Whether `word` is a negated finish that another finish said on its line already excludes; if
     so a note says it is read past (see the module doc)."""
     said = word.text.lower().split()
-    if len(said) < 2 or said[0] not in _negation_words(ctx):
-        return False
-    found = [e for e in ctx.lexicon.lookup(tuple(said[1:])) if e.category == "adjectives"]
-    negated = _finish_level(found[0] if found else None)
+    negated_entry = _negated(ctx, word.key, said)
+    negated = finish_roughness(negated_entry)
     if negated is None:
         return False
     middle = _middle(ctx)
     for other in _finish_words(state, word):
-        level = _finish_level(ctx.lexicon.entry("adjectives", other.key))
+        level = finish_roughness(ctx.lexicon.entry("adjectives", other.key))
         if level is not None and _excludes(level, negated, middle):
             note = f"read past '{word.text}': '{other.text}' is not {' '.join(said[1:])} already"
             state.diagnostics.append(Diagnostic(word.span, Severity.NOTE, NOTE_CODE, note))
@@ -57,20 +55,15 @@ def _excludes(level: float, negated: float, middle: float) -> bool:
     return not (low < negated < high)
 
 
-def _finish_level(entry: Entry | None) -> float | None:
-    if entry is None or entry.category != "adjectives":
+def _negated(ctx: Context, key: str, said: list[str]) -> Entry | None:
+    """The adjective a word said as 'not X' negates: X, when the word was read as X's declared
+    opposite ('not mirror' read as rough); None for any other word."""
+    if len(said) < 2:
         return None
-    value = entry.set_value(ROUGHNESS)
-    return None if value is None or entry.get("applies_to") else float(value)
+    found = [e for e in ctx.lexicon.lookup(tuple(said[1:])) if e.category == "adjectives"]
+    return found[0] if found and found[0].get("opposite") == key else None
 
 
 def _middle(ctx: Context) -> float:
     ladder = finishes(ctx)
     return min(ladder, key=lambda v: abs(v - MIDDLE)) if ladder else MIDDLE
-
-
-def _negation_words(ctx: Context) -> frozenset[str]:
-    formation = ctx.lexicon.caches.word_formation
-    if formation is None:  # the tagger made it for this line's words; a lexicon without one has no rules
-        return frozenset()
-    return formation.rules.negation_words
