@@ -12,7 +12,13 @@ from .spec import OUTPUT_ROLES, Graph, GraphInput, GraphParam, GraphScale, NodeS
 TOP_KEYS = ("name", "doc", "params", "inputs", "nodes", "outputs", "presets", "scale", "palette")
 SCALE_KEYS = ("metres_per_unit", "feature", "what", "measure", "axis", "source")
 SCALE_AXES = ("u", "v", "any")
-PALETTE_KEYS = ("max_chroma", "lightness", "lightness_curve", "dark_below", "dark_params", "shade", "source")
+PALETTE_KEYS = (
+    "max_chroma",
+    "hue_range",
+    "hue_reach",
+    "off_hue_max_chroma",
+    "lightness",
+    "lightness_curve", "dark_below", "dark_params", "shade", "source")
 REF_KEYS = ("node", "param", "input", "mul", "add")
 IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]{0,63}")  # names that end up in node names and file names
 
@@ -229,6 +235,25 @@ def check_scale(c: Checker, raw, outputs: dict[str, str]) -> GraphScale:
     return GraphScale(unit, feature, what, measure, axis, source)
 
 
+def _check_hue_range(c: Checker, table: dict) -> None:
+    """`hue_range` [start, end] OKLCh degrees (counter-clockwise from start), `hue_reach` degrees
+    beyond it, `off_hue_max_chroma` an OKLab chroma: the three together or none."""
+    given = [k for k in ("hue_range", "hue_reach", "off_hue_max_chroma") if k in table]
+    if given and len(given) != 3:
+        c.fail("palette.hue_range", "expected hue_range, hue_reach and off_hue_max_chroma together")
+    if not given:
+        return
+    bounds = table["hue_range"]
+    if not isinstance(bounds, list) or len(bounds) != 2:
+        c.fail("palette.hue_range", "expected [start, end] OKLCh hue in degrees")
+    if not all(0 <= c.number(h, "palette.hue_range") < 360 for h in bounds):
+        c.fail("palette.hue_range", "expected hues in [0, 360)")
+    if not 0 <= c.number(table["hue_reach"], "palette.hue_reach") <= 180:
+        c.fail("palette.hue_reach", "expected degrees in [0, 180]")
+    if not 0 <= c.number(table["off_hue_max_chroma"], "palette.off_hue_max_chroma") <= 0.4:
+        c.fail("palette.off_hue_max_chroma", "expected an OKLab chroma in [0, 0.4]")
+
+
 def check_palette(c: Checker, raw, params: dict[str, GraphParam]) -> dict:
     """The `[palette]` table (what a colour word does to the graph's colours; read by the compiler's
     compiler/passes/textured_colour.py): OKLab chroma cap and lightness range, the graph
@@ -238,6 +263,7 @@ def check_palette(c: Checker, raw, params: dict[str, GraphParam]) -> dict:
     c.known_keys(table, PALETTE_KEYS, "palette")
     if "max_chroma" in table and not 0 <= c.number(table["max_chroma"], "palette.max_chroma") <= 0.4:
         c.fail("palette.max_chroma", "expected an OKLab chroma in [0, 0.4]")
+    _check_hue_range(c, table)
     if "lightness" in table:
         bounds = table["lightness"]
         if not isinstance(bounds, list) or len(bounds) != 2:

@@ -12,7 +12,10 @@ carry, in OKLab:
   black granite is a near-black stone whose crystals still show, white marble a white whose veins
   still show;
 * its chroma is capped at the graph's `palette.max_chroma` (stdlib/graphs/NAME.toml), so 'red
-  brick' is a brick red, not a paint red, and its hue is kept;
+  brick' is a brick red, not a paint red, and its hue is kept, except on a graph whose own colours
+  lie in a `palette.hue_range` (fired clay: the iron oxides' reds to buffs): a hue within
+  `palette.hue_reach` degrees of the range moves to its nearer end, one further away is kept as a
+  tint of at most `palette.off_hue_max_chroma` ('blue brick' a blue-grey engineering brick);
 * a colour darker than `palette.dark_below` sets the graph parameters `palette.dark_params` that a
   clause has not set: the white calcite veins of a black marble, the pale flecks of a black granite.
 
@@ -24,7 +27,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import Any, NamedTuple
 
 from .. import ast
 from ..colour import darkened_yellow, linear_to_oklab, oklab_to_linear_in_gamut
@@ -46,16 +49,25 @@ def keep_pattern_visible(
         return rgb
     graph = str(ref.get("graph", ""))
     palette = graph_palette(graph)
-    was, held, chroma, factor, carried = _carried_colour(ctx, rgb, graph, palette)
-    _set_dark_params(state, graph, palette, was, words, noun_text)
-    if carried is None:
+    carried = _carried_colour(ctx, rgb, graph, palette)
+    _set_dark_params(state, graph, palette, carried.was, words, noun_text)
+    if carried.colour is None:
         return rgb
-    rgb = list(carried)
-    state.note("base_color", rgb, _rule(words, was, held, chroma, factor, noun_text), tuple(words))
+    rgb = list(carried.colour)
+    state.note("base_color", rgb, _rule(words, carried, noun_text), tuple(words))
     return rgb
 
 
-Carried = tuple[float, float, float, float, "tuple[float, ...] | None"]  # OKLab L, held L, chroma, factor, colour
+class Carried(NamedTuple):
+    """What the pattern does to a named colour: OKLab lightness before and held, chroma and its
+    factor, the OKLCh hue it was moved to (None: kept), the colour (None: `rgb` as it is)."""
+
+    was: float
+    held: float
+    chroma: float
+    factor: float
+    hue: float | None
+    colour: tuple[float, ...] | None
 
 
 def _carried_colour(ctx: Context, rgb: list[float], graph: str, palette: Mapping[str, Any]) -> Carried:
@@ -78,12 +90,32 @@ def _carry(ctx: Context, rgb: list[float], palette: Mapping[str, Any]) -> Carrie
     lab = linear_to_oklab(rgb)
     held = _held_lightness(lab[0], low, high, palette)
     chroma = math.hypot(lab[1], lab[2])
-    cap = float(palette.get("max_chroma", math.inf))
+    a, b, cap = _in_hue_range(lab[1], lab[2], palette)
     factor = cap / chroma if chroma > cap else 1.0
-    if abs(held - lab[0]) < 1e-6 and factor == 1.0:
-        return lab[0], held, chroma, factor, None
-    a, b = darkened_yellow(lab[0], held, lab[1] * factor, lab[2] * factor)
-    return lab[0], held, chroma, factor, tuple(oklab_to_linear_in_gamut([held, a, b]))
+    hue = None if (a, b) == (lab[1], lab[2]) else math.degrees(math.atan2(b, a)) % 360.0
+    if abs(held - lab[0]) < 1e-6 and factor == 1.0 and hue is None:
+        return Carried(lab[0], held, chroma, factor, hue, None)
+    a, b = darkened_yellow(lab[0], held, a * factor, b * factor)
+    return Carried(lab[0], held, chroma, factor, hue, tuple(oklab_to_linear_in_gamut([held, a, b])))
+
+
+def _in_hue_range(a: float, b: float, palette: Mapping[str, Any]) -> tuple[float, float, float]:
+    """OKLab a, b with the hue moved into the palette's `hue_range` when it lies within `hue_reach`
+    degrees of it, and the chroma cap: `max_chroma` in (or moved into) the range, `off_hue_max_chroma`
+    beyond the reach; a graph without a range keeps every hue under `max_chroma`."""
+    cap = float(palette.get("max_chroma", math.inf))
+    if "hue_range" not in palette:
+        return a, b, cap
+    start, end = (float(h) for h in palette["hue_range"])
+    hue = math.degrees(math.atan2(b, a)) % 360.0
+    before, after = (start - hue) % 360.0, (hue - end) % 360.0
+    if (hue - start) % 360.0 <= (end - start) % 360.0:
+        return a, b, cap
+    nearer, distance = (start, before) if before <= after else (end, after)
+    if distance > float(palette.get("hue_reach", 0.0)):
+        return a, b, min(cap, float(palette.get("off_hue_max_chroma", cap)))
+    chroma, turned = math.hypot(a, b), math.radians(nearer)
+    return chroma * math.cos(turned), chroma * math.sin(turned), cap
 
 
 def _held_lightness(lightness: float, low: float, high: float, palette: Mapping[str, Any]) -> float:
@@ -129,15 +161,17 @@ def _set_dark_params(
         state.note(f"maps.{role}", dict(params), rule, tuple(words))
 
 
-def _rule(words: Sequence[ast.Word], was: float, held: float, chroma: float, factor: float, noun_text: str) -> str:
+def _rule(words: Sequence[ast.Word], carried: Carried, noun_text: str) -> str:
     """The provenance rule `cnlmc explain` shows (a quiet adjustment, not a diagnostic)."""
     text = " ".join(w.text for w in words)
     parts = []
-    if abs(held - was) >= 1e-6:
-        direction = "raised" if held > was else "lowered"
-        parts.append(f"OKLab lightness {direction} to {held:.2f} (from {was:.2f})")
-    if factor < 1.0:
-        parts.append(f"chroma {chroma * factor:.2f} (from {chroma:.2f})")
+    if abs(carried.held - carried.was) >= 1e-6:
+        direction = "raised" if carried.held > carried.was else "lowered"
+        parts.append(f"OKLab lightness {direction} to {carried.held:.2f} (from {carried.was:.2f})")
+    if carried.hue is not None:
+        parts.append(f"hue {carried.hue:.0f} (the pattern's own hues)")
+    if carried.factor < 1.0:
+        parts.append(f"chroma {carried.chroma * carried.factor:.2f} (from {carried.chroma:.2f})")
     return (
         f"settings.textured_colour_*_lightness and the pattern's palette: '{text}' on {noun_text}'s pattern, "
         f"{' and '.join(parts)} so the pattern stays visible"

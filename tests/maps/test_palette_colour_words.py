@@ -108,6 +108,39 @@ def test_brick_lightness_keeps_the_order_of_the_named_colours():
     assert medians == sorted(medians)
 
 
+def _brick_lch(phrase: str) -> tuple[float, float, float]:
+    """Median OKLab lightness, chroma and hue (degrees) of the bricks (mortar left out)."""
+    baked = _baked(phrase, ("color", "mask"))
+    lab = np.median(_oklab(baked["color"].reshape(-1, 3)[baked["mask"].reshape(-1) > 0.95]), axis=0)
+    return float(lab[0]), float(np.hypot(lab[1], lab[2])), float(np.degrees(np.arctan2(lab[2], lab[1])) % 360)
+
+
+TERRACOTTA_CHROMA = 0.099  # physicallybased.info Terracotta [0.555, 0.212, 0.11]: the most saturated fired clay
+
+
+@pytest.mark.parametrize("phrase", ["red brick", "orange brick", "pink brick", "yellow brick", "brick"])
+def test_a_clay_colour_stays_in_fired_clays_hues_and_chroma(phrase):
+    """Fired clay is coloured by iron oxides: no brick more saturated than measured terracotta, and a
+    near hue (the survey's red, pink, yellow) moves into the survey's run of clay names (h 31-86)."""
+    _, chroma, hue = _brick_lch(phrase)
+    assert chroma <= TERRACOTTA_CHROMA + 0.005
+    assert 27 <= hue <= 90
+
+
+@pytest.mark.parametrize("phrase, hue", [("blue brick", (230, 290)), ("green brick", (120, 170))])
+def test_a_colour_fired_clay_never_has_stays_a_tint(phrase, hue):
+    """'blue brick' is a blue-grey engineering brick, not a painted blue: its hue kept, its chroma a tint."""
+    _, chroma, median_hue = _brick_lch(phrase)
+    assert 0.01 < chroma <= 0.035
+    assert hue[0] < median_hue < hue[1]
+
+
+def test_red_brick_is_redder_than_brick_but_no_paint_red():
+    brick, red = _brick_lch("brick"), _brick_lch("red brick")
+    assert red[2] < brick[2] and red[1] > brick[1]
+    assert red[1] < 0.5 * np.hypot(*colour.linear_to_oklab([1.0, 0.0, 0.0])[1:])
+
+
 def test_grey_slate_is_grey():
     material = _material("grey slate")
     lab = colour.linear_to_oklab(list(material.params.base_color))

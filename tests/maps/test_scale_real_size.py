@@ -107,6 +107,12 @@ mask = "noise"
         (('axis = "any"', 'axis = "w"'), "scale.axis", "one of u, v, any"),
         (("max_chroma = 0.1", "max_chroma = 3"), "palette.max_chroma", "[0, 0.4]"),
         (("max_chroma = 0.1", "max_chroma = 0.1\nlightness_curve = 9"), "palette.lightness_curve", "[0.25, 4]"),
+        (("max_chroma = 0.1", "max_chroma = 0.1\nhue_range = [30, 80]"), "palette.hue_range", "together"),
+        (
+            ("max_chroma = 0.1", "max_chroma = 0.1\nhue_range = [30, 400]\nhue_reach = 9\noff_hue_max_chroma = 0.1"),
+            "palette.hue_range",
+            "[0, 360)",
+        ),
         (("dark_params = { scale = 1.5 }", "dark_params = { scale = 9 }"), "palette.dark_params.scale", "outside"),
         (("dark_params = { scale = 1.5 }", "dark_params = { scal = 1 }"), "palette.dark_params.scal", "did you mean"),
     ],
