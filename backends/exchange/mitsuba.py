@@ -49,7 +49,7 @@ from .conversions import (
     without_extras,
 )
 from .mitsuba_principled import fabric_roughness, sheen_base
-from .mitsuba_subsurface import VOLUME_MAX_DEPTH, medium_entry, subsurface_bsdf
+from .mitsuba_subsurface import VOLUME_MAX_DEPTH, medium_entry, roulette_depth, subsurface_bsdf
 from .naming import MaterialIdents, described, xml_text
 from .options import Capabilities, capabilities_for, map_options
 from .textures import Texture, bake_textures
@@ -604,6 +604,7 @@ def render_xml(entries: list[dict[str, Any]], options: Options, env: jinja2.Envi
         spp=options.spp,
         resolution=options.resolution,
         max_depth=VOLUME_MAX_DEPTH if volume else options.max_depth,
+        rr_depth=roulette_depth([entry["medium"] for entry in entries if entry["medium"]]),
         volume=volume,
         envmap=options.envmap,
         backdrop=backdrop(camera),

@@ -28,6 +28,7 @@ from .conversions import (
     rounded,
     standard_roughness,
     weighted_f0,
+    without_coat,
     without_extras,
 )
 from .subsurface_inputs import subsurface_inputs
@@ -116,8 +117,8 @@ def abstract_inputs(material: Material, surface: str) -> Inputs:
     else:
         out["base_color"] = ("color3", clip01(params.base_color))
         out["metalness"] = ("float", 0.0)
-    if base == "dielectric" and not model.coat:
-        out["base_weight"] = ("float", dielectric_base_weight(material))
+    if base == "dielectric":
+        out["base_weight"] = ("float", dielectric_base_weight(without_coat(material) if model.coat else material))
     if base == "diffuse":
         out["specular_weight"] = ("float", 0.0)
     else:

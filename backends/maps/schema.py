@@ -18,7 +18,12 @@ PALETTE_KEYS = (
     "hue_reach",
     "off_hue_max_chroma",
     "lightness",
-    "lightness_curve", "dark_below", "dark_params", "shade", "source")
+    "lightness_curve",
+    "dark_below",
+    "dark_params",
+    "shade",
+    "source",
+)
 REF_KEYS = ("node", "param", "input", "mul", "add")
 IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]{0,63}")  # names that end up in node names and file names
 

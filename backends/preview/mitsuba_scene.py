@@ -14,7 +14,7 @@ import numpy as np
 
 from ..base import as_document
 from ..exchange import mitsuba, mitsuba_cnlm
-from ..exchange.mitsuba_subsurface import VOLUME_MAX_DEPTH
+from ..exchange.mitsuba_subsurface import VOLUME_MAX_DEPTH, medium_entry, roulette_depth
 from . import reference_glass
 from .environment import mitsuba_rows, write_exr
 from .mesh_io import write_ply
@@ -80,8 +80,15 @@ def integrator_for(material: MaterialLike, medium: bool = False) -> tuple[str, s
         depth = f'\n        <integer name="max_depth" value="{GLASS_MAX_DEPTH}"/>'
         return ("volpathmis" if medium else "path"), depth
     if medium:
-        return "volpathmis", f'\n        <integer name="max_depth" value="{VOLUME_MAX_DEPTH}"/>'
+        return "volpathmis", f'\n        <integer name="max_depth" value="{VOLUME_MAX_DEPTH}"/>' + _roulette(material)
     return "direct", ""
+
+
+def _roulette(material: MaterialLike) -> str:
+    """The integrator's `rr_depth` for a body's medium (mitsuba_subsurface.VOLUME_RR_DEPTH_MAX)."""
+    entry = medium_entry(as_material(material), "body")
+    depth = roulette_depth([entry] if entry is not None else [])
+    return f'\n        <integer name="rr_depth" value="{depth}"/>'
 
 
 #: Mitsuba's sampler: low-discrepancy over each pixel's samples ("ldsampler"). With
