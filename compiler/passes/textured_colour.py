@@ -38,6 +38,7 @@ from ..state import Context, MaterialState
 __all__ = ["keep_pattern_visible"]
 
 DEFAULT_BAND = (0.0, 1.0)  # a lexicon without the setting leaves colours as named
+ACHROMATIC = 1e-3  # OKLab chroma below which a colour has no hue to move (white, black, a grey)
 
 
 def keep_pattern_visible(
@@ -104,7 +105,7 @@ def _in_hue_range(a: float, b: float, palette: Mapping[str, Any]) -> tuple[float
     degrees of it, and the chroma cap: `max_chroma` in (or moved into) the range, `off_hue_max_chroma`
     beyond the reach; a graph without a range keeps every hue under `max_chroma`."""
     cap = float(palette.get("max_chroma", math.inf))
-    if "hue_range" not in palette:
+    if "hue_range" not in palette or math.hypot(a, b) < ACHROMATIC:
         return a, b, cap
     start, end = (float(h) for h in palette["hue_range"])
     hue = math.degrees(math.atan2(b, a)) % 360.0

@@ -145,3 +145,13 @@ def test_grey_slate_is_grey():
     material = _material("grey slate")
     lab = colour.linear_to_oklab(list(material.params.base_color))
     assert np.hypot(lab[1], lab[2]) < 0.03 and 0.3 < lab[0] < 0.8
+
+
+@pytest.mark.parametrize("phrase", ["white brick", "black brick", "grey brick"])
+def test_a_grey_brick_has_no_hue_to_move(phrase):
+    """A grey has no hue: the palette's hue range leaves it grey (and says nothing of a hue)."""
+    from cnlmc.explain import explain
+
+    _, chroma, _ = _brick_lch(phrase)
+    assert chroma < 0.01  # the survey's grey is a near-neutral #929591
+    assert "hue" not in explain(api.compile_source(phrase, "<phrase>").ir)
