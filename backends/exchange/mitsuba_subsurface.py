@@ -24,6 +24,7 @@ where the bound binds the interface is weaker than the IR's.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -100,18 +101,22 @@ def medium_entry(material: Material, ident: str, metres_per_unit: float = METRES
     return _medium(ident, sigma_t, albedo, g, metres_per_unit)
 
 
+def scattering_events(albedo: Sequence[float], g: float) -> float:
+    """The scattering events a path takes in a medium's brightest channel: 1/(3 (1 - α')) with
+    α' = α (1 - g)/(1 - α g), finite where α' reaches 1."""
+    events = 0.0
+    for value in albedo:
+        reduced = value * (1.0 - g) / max(1.0 - value * g, 1e-12)
+        events = max(events, 1.0 / (3.0 * max(1.0 - reduced, 1e-12)))
+    return events
+
+
 def roulette_depth(media: list[dict[str, Any]]) -> int:
-    """The `rr_depth` for a scene with these `medium_entry` media: the scattering events a path takes
-    in the brightest channel, 1/(3 (1 - α')) with α' = α (1 - g)/(1 - α g), between Mitsuba's default
-    and VOLUME_RR_DEPTH_MAX (VOLUME_RR_DEPTH_MAX's comment)."""
-    events = [float(MITSUBA_RR_DEPTH)]
-    for medium in media:
-        g = float(medium["g"])
-        for value in medium["albedo"]:
-            albedo = float(value)
-            reduced = albedo * (1.0 - g) / max(1.0 - albedo * g, 1e-12)
-            events.append(1.0 / (3.0 * max(1.0 - reduced, 1e-12)))
-    return int(min(max(events), VOLUME_RR_DEPTH_MAX))
+    """The `rr_depth` for a scene with these `medium_entry` media: the events their paths take
+    (`scattering_events`, kept in each entry), between Mitsuba's default and VOLUME_RR_DEPTH_MAX
+    (VOLUME_RR_DEPTH_MAX's comment)."""
+    events = max([float(MITSUBA_RR_DEPTH)] + [float(medium["events"]) for medium in media])
+    return int(min(events, VOLUME_RR_DEPTH_MAX))
 
 
 def _medium(ident: str, sigma_t: list[float], albedo: list[float], g: float, metres_per_unit: float) -> dict[str, Any]:
@@ -122,6 +127,7 @@ def _medium(ident: str, sigma_t: list[float], albedo: list[float], g: float, met
         "albedo": [f"{min(v, 1.0):.6g}" for v in albedo],
         "g": f"{g:.6g}",
         "scale": f"{largest * metres_per_unit:.6g}",
+        "events": scattering_events([min(v, 1.0) for v in albedo], g),
     }
 
 

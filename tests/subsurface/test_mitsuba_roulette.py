@@ -13,6 +13,7 @@ from cnlmc.backends.exchange.mitsuba_subsurface import (
     VOLUME_RR_DEPTH_MAX,
     medium_entry,
     roulette_depth,
+    scattering_events,
 )
 from tests.helpers import require
 
@@ -42,7 +43,7 @@ def test_an_absorbing_glass_keeps_mitsubas_default():
 
 @pytest.mark.parametrize("albedo, g", [(1.0, 0.0), (1.0, 0.9), (0.0, -0.5), (0.999999, 0.99)])
 def test_the_depth_is_finite_where_the_formula_is_not(albedo, g):
-    depth = roulette_depth([{"albedo": [str(albedo)] * 3, "g": str(g)}])
+    depth = roulette_depth([{"events": scattering_events([albedo] * 3, g)}])
     assert MITSUBA_RR_DEPTH <= depth <= VOLUME_RR_DEPTH_MAX
 
 
