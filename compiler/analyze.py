@@ -16,6 +16,7 @@ from .params import Params
 from .passes.base import apply_noun
 from .passes.coats import apply_coat_clause
 from .passes.conformal_coat import lay_conformal_coats
+from .passes.metal_tone import tone_toward_named_metal
 from .passes.model import select_model
 from .passes.ranges import check_values
 from .passes.refine import apply_inline_refinements, apply_refinement_line
@@ -27,7 +28,7 @@ from .spans import Span
 from .state import Context, MaterialState
 
 BUILD_PASSES = (apply_noun, apply_groups, apply_subsurface, apply_coat_clause, apply_inline_refinements)
-FINAL_PASSES = (lay_conformal_coats, select_model, select_subsurface, check_values)
+FINAL_PASSES = (tone_toward_named_metal, lay_conformal_coats, select_model, select_subsurface, check_values)
 
 
 def attach_refinements(doc: ast.Document, lexicon: Lexicon) -> list[tuple[ast.Material, list[ast.Refinement]]]:

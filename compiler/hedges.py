@@ -187,6 +187,8 @@ def _between(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], l
     tagged, unknown = Tagger.of(lexicon).tag_line(f"{first.text.lower()}-{second.text.lower()}", 1, 0)
     compound = tagged[0] if len(tagged) == 1 and not unknown else None
     run = words[start : at + 4]
+    if (metals := _metal_pair(first, second, lexicon)) is not None:
+        return [*words[:start], *metals, *words[at + 4 :]], [_read_as(run, f"{first.text}-ish {second.text}")]
     if compound is None and (pair := _colour_pair(run, first, second)) is not None:
         return [*words[:start], *pair, *words[at + 4 :]], [_read_as(run, f"{first.text}-ish {second.text}")]
     if compound is None or not any(c.tag == "COLOR" for c in compound.candidates):
@@ -194,6 +196,30 @@ def _between(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], l
     word = _implied(compound.text, next(c for c in compound.candidates if c.tag == "COLOR"), run[-1], 1)
     word = Tagged(word.text, word.span, word.candidates, implied_by=run[0].span.to(run[-1].span))
     return [*words[:start], word, *words[at + 4 :]], [_read_as(run, compound.text)]
+
+
+def _metal_pair(first: Tagged, second: Tagged, lexicon: Lexicon) -> list[Tagged] | None:
+    """'somewhere between brass and copper', two metals: the second metal, the first's '-ish' colour
+    word before it (passes/metal_tone.py mixes their optics half way); None unless both are metals."""
+    if not all(_names_metal(w, lexicon) for w in (first, second)):
+        return None
+    from .tagger import Tagger
+
+    tagged, diags = Tagger.of(lexicon).tag_line(f"{first.text.lower()}-ish", 1, 0)
+    fits = len(tagged) == 1 and not any(d.is_error for d in diags)
+    colours = tuple(c for c in tagged[0].candidates if c.tag == "COLOR") if fits else ()
+    if not colours:
+        return None
+    nouns = tuple(c for c in second.candidates if c.tag == "NOUN")
+    return [Tagged(f"{first.text}-ish", first.span, colours), Tagged(second.text, second.span, nouns)]
+
+
+def _names_metal(word: Tagged, lexicon: Lexicon) -> bool:
+    for candidate in word.candidates:
+        entry = lexicon.entry("nouns", candidate.key) if candidate.tag == "NOUN" else None
+        if entry is not None and entry.get("model") == "conductor":
+            return True
+    return False
 
 
 def _colour_pair(run: Sequence[Tagged], first: Tagged, second: Tagged) -> list[Tagged] | None:

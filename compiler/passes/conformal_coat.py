@@ -32,5 +32,7 @@ def _coloured_by_words(state: MaterialState) -> bool:
     """A colour word set the base colour and it still tints the metal: a white tint is the bare
     metal (a later plating's optics replaced the colour: 'gold finish plastic'), no film to add."""
     steps = state.provenance.get("base_color", [])
+    if steps and steps[-1].rule.startswith("metal_tone"):
+        return False  # a metal's name as its colour: the metals' mixed optics (passes/metal_tone.py)
     tinted = any(channel < UNTINTED for channel in state.params.get("base_color", (1.0, 1.0, 1.0)))
     return tinted and any(step.rule.split(":", 1)[0].strip() in COLOUR_RULES for step in steps)

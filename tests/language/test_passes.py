@@ -19,11 +19,12 @@ ORDER = [
     "subsurface",
     "coats",
     "refine",
+    "metal_tone",
     "films",
     "model",
     "subsurface_model",
     "ranges",
-]  # films: conformal_coat
+]  # metal_tone: passes/metal_tone.py; films: conformal_coat
 
 
 def run_until(pass_name: str, phrase: str, lexicon) -> MaterialState:
