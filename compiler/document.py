@@ -86,6 +86,9 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
     if any(d.is_error for d in diags[mark:]) and (fixed := _corrected(text, number, offset, tagger)):
         diags[mark:] = fixed[1]  # 'oak matt no wait satin': the correction's word
         return fixed[0]
+    if any(d.is_error for d in diags[mark:]) and (without := _without_after_material(text, number, offset, tagger)):
+        diags[mark:] = without[1]  # 'steel without any scratches'
+        return without[0]
     if any(d.is_error for d in diags[mark:]) and (
         passed := _english_read_past(text, number, offset, tagger, diags[mark:])
     ):
@@ -112,6 +115,35 @@ def _corrected(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast
     if not found.dropped:  # 'no actually a lot lighter'
         note = f"read past '{found.marker}': a correction, what follows said instead"
     return replace(node, text=text), [*said, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)]
+
+
+def _without_after_material(
+    text: str, number: int, offset: int, tagger: Tagger
+) -> tuple[ast.Item, list[Diagnostic]] | None:
+    """'mirror polished steel without any scratches', 'oak with no knots': a material, then what it is
+    without, said with no comma (teaching.toml [removal] inline), read as after a comma ('steel,
+    without any scratches': cnlmc.line_parts takes the words off, or says the material has none),
+    with a note; None for any other line."""
+    from .suggest import teaching
+
+    low = text.lower()
+    for phrase, reading in teaching()["removal"]["inline"].items():
+        start = low.find(f" {phrase} ")
+        if start <= 0 or not low[:start].strip() or len(reading) > len(phrase):
+            continue
+        end = start + 1 + len(phrase)  # the phrase said as its reading, right-aligned: columns stay
+        listed = f"{text[:start]},{' ' * (len(phrase) - len(reading))}{reading}{text[end:]}"
+        lexicon = tagger.lexicon
+        found = material_then_comparatives(
+            listed, number, offset, _part_reader(listed, number, offset, lexicon), lexicon
+        )
+        if found is None:
+            return None
+        said = f"{text[:start].strip()}, {text[start + 1 :].strip()}"
+        span = Span(offset + start + 1, offset + len(text.rstrip()), number, start + 2)
+        note = f"read '{text.strip()}' as '{said}' (what it is without, after the material)"
+        return replace(found[0], text=text), [*found[1], Diagnostic(span, Severity.NOTE, NOTE_CODE, note)]
+    return None
 
 
 def _english_read_past(
@@ -658,13 +690,17 @@ def _material_named_first(words: list[Tagged], text: str, lexicon: Lexicon) -> t
     from .implied import implied_noun
 
     end = words[-1].span.end
-    placed = implied_noun(nouns[0].key, words[-1])  # inside the last word's span, where no word starts
+    rest = words[2:]
+    at = next((i for i, w in enumerate(rest) if i and only_tag(w, "WITH")), len(rest))  # 'white w/ grey chips'
+    placed = implied_noun(nouns[0].key, rest[at - 1])  # inside the word's span before it, where no word starts
     noun = Tagged(head.text, placed.span, nouns, implied_by=head.span)
-    node = _parsed([*words[2:], noun], text, lexicon)
+    node = _parsed([*rest[:at], noun, *rest[at:]], text, lexicon)
     if not isinstance(node, ast.Material):
         return None
-    said = text[words[2].span.start - offset : end - offset]
-    note = f"read '{head.text}:' as the material the words after it describe: '{said} {head.text.lower()}'"
+    said = f"{text[rest[0].span.start - offset : rest[at - 1].span.end - offset]} {head.text.lower()}"
+    if at < len(rest):
+        said += f" {text[rest[at].span.start - offset : end - offset]}"
+    note = f"read '{head.text}:' as the material the words after it describe: '{said}'"
     return node, Diagnostic(head.span, Severity.NOTE, NOTE_CODE, note)
 
 

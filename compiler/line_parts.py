@@ -11,7 +11,7 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from . import ast
-from .diagnostics import Diagnostic, Severity, warning
+from .diagnostics import Diagnostic, Severity
 from .lexicon import Lexicon
 from .removal import TAKEN_OFF_NOTE
 from .removed import much_less, step_away, without_words
@@ -95,9 +95,10 @@ def material_then_comparatives(
             moved = replace(taken_off, span=moved.span.to(node.span), text=text)
         else:  # 'walnut, a bit darker'; 'oak, no grain' = much less grain, as the change line 'no grain' is
             items = node.items or tuple(much_less(w, said) for w in node.removed if w.category in TAKEN_AS_LESS)
-            if not items:  # 'white paint, no texture': nothing to take off, as the change line says
+            if not items:  # 'white paint, no texture', 'oak, no knots': as said already, a note
                 listed = ", ".join(dict.fromkeys(f"'{w.text}'" for w in node.removed))
-                warned.append(warning(node.span, "W122", f"the material has no {listed} to take off"))
+                message = f"the material has no {listed}: none to take off, as said"
+                warned.append(Diagnostic(node.span, Severity.NOTE, NOTE_CODE, message))
             moved = replace(moved, span=moved.span.to(node.span), text=text, refinements=(*moved.refinements, *items))
     kept = [_as_step_away(d, stepped, text, offset) for d in parts[1]]
     return moved, [*first, *kept, *warned]

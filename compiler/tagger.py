@@ -168,9 +168,14 @@ class Tagger:
         diags: list[Diagnostic] = []
         raw = _plain_words(line)  # raw_tokens' common case: letters only, no mark to drop, no name
         i, raw_marks = 0, raw is None
+        if raw is not None and len(raw) > 1 and self._letter_smiley(raw[-1][0].lower()):
+            raw = raw[:-1]  # 'oak xD': a smiley of letters
         if raw is None:
             raw = _pattern_tokens(line)
-            if raw and not (raw[-1][0][0].isalnum() and raw[0][0][0].isalpha()):
+            if raw and (
+                not (raw[-1][0][0].isalnum() and raw[0][0][0].isalpha())
+                or _without_emoticon(raw, self.formation().rules.emoticons) < len(raw)  # ':D', '<3'
+            ):
                 raw = self._undecorated(raw)
             if ":" in line:
                 i = self._name_prefix(line, raw, line_no, offset, tagged)
@@ -252,6 +257,11 @@ class Tagger:
             i += 1
         return out
 
+    def _letter_smiley(self, word: str) -> bool:
+        """Whether a last word of letters is a smiley ('xD'); the rules are read only for a word the
+        lexicon does not know (a line of known words stays on the hot path)."""
+        return not self._candidates((word,)) and word in self.formation().rules.emoticons
+
     def _undecorated(self, raw: list[RawToken]) -> list[RawToken]:
         """The line's words without decorative punctuation: trailing marks ('.', '!', '...'), one
         leading bullet ('- ', '* ', '•') or list number ('1.', '2)'), quotes around the whole line
@@ -259,6 +269,7 @@ class Tagger:
         rules = self.formation().rules
         lo, hi = 0, len(raw)
         for _round in range(2):  # '"Brushed steel".': the mark, then the quotes, then a mark inside
+            hi = lo + _without_emoticon(raw[lo:hi], rules.emoticons)
             while hi - lo > 1 and raw[hi - 1][0].lower() in rules.trailing:
                 hi -= 1
             if hi - lo > 1 and raw[lo][0] in rules.leading:
@@ -754,3 +765,22 @@ def possessive(said: str) -> bool:
     if word.endswith(("'s", "s'")):
         return word[:-2].isalpha()
     return word.endswith("s") and (word[:-1] in table["people"] or word in table["people"])
+
+
+EMOTICON_MARKS = 3  # the most tokens one emoticon spans (':-)' is three marks)
+
+
+def _without_emoticon(raw: list[RawToken], emoticons: frozenset[str]) -> int:
+    """How many of the tokens stay once smileys typed at the line's end are dropped ('black leather
+    :)'): a run of marks, touching each other, that the rules name; at least one word stays."""
+    hi = len(raw)
+    while hi > 1:
+        for n in range(min(EMOTICON_MARKS, hi - 1), 0, -1):
+            run = raw[hi - n : hi]
+            touching = all(a[1] + len(a[0]) == b[1] for a, b in zip(run, run[1:]))
+            if touching and "".join(t for t, _c in run).lower() in emoticons:
+                hi -= n
+                break
+        else:
+            return hi
+    return hi

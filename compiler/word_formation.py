@@ -80,6 +80,7 @@ class Rules:
         self.quotes = frozenset(joined("punctuation", "quotes"))
         self.number_marks = frozenset(joined("punctuation", "number_marks"))
         self.bracketed_suffixes = frozenset(joined("punctuation", "bracketed_suffixes"))  # 'white(ish)'
+        self.emoticons = frozenset(joined("punctuation", "emoticons"))  # 'black leather :)'
         self.negation_words = frozenset(joined("negation", "words"))
         self.strict_negation = frozenset(joined("negation", "strict"))  # "nothing shiny", never "nothing else"
         self.negation_prefixes = joined("negation", "prefixes")
@@ -192,7 +193,7 @@ class WordFormation:
             named = self._resembling_colour_name(first, words[1])
             if named is not None:
                 return named
-            if first in rules.negation_words and self._negates_here(first, words[1]) and not self._two_words(words):
+            if first in rules.negation_words and self._negates_here(words) and not self._two_words(words):
                 return self._negated_words(words)  # not 'no clear coat': the coat is what is taken off
             if first in rules.emphatic_before and words[1] in rules.negation_words:
                 return self._emphatic_negation(words)
@@ -674,12 +675,15 @@ class WordFormation:
         'clear' negated)."""
         return len(words) > 2 and bool(self.lookup((words[1], words[2])))
 
-    def _negates_here(self, first: str, then: str) -> bool:
+    def _negates_here(self, words: Sequence[str]) -> bool:
         """Whether the negation word negates what follows: a strict one ('nothing': negation
-        `strict`) only a describing word right after it ('nothing shiny'; not 'nothing too shiny',
-        'nothing else')."""
+        `strict`) only a describing word right after it ('nothing shiny'), or after a softener
+        ('nothing too shiny' = not too shiny); not 'nothing else'."""
+        first, then = words[0], words[1]
         if first not in self.rules.strict_negation:
             return True
+        if then in self.rules.softeners and len(words) > 2:
+            then = words[2]
         return bool(self._kept(self._known(then), ("ADJ", "COLOR", "SHADE")))
 
     def _negated_words(self, words: Sequence[str]) -> Reading | None:

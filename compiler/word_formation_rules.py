@@ -21,7 +21,7 @@ __all__ = ["RULE_TAGS", "check_rule_names", "check_rules", "empty_rules", "wordn
 RULE_TAGS = ("ADV", "SHADE", "COLOR", "PROP", "ADJ", "COAT", "NOUN", "FEATURE")
 
 _LISTS = {
-    "punctuation": ("trailing", "leading", "quotes", "number_marks", "bracketed_suffixes"),
+    "punctuation": ("trailing", "leading", "quotes", "number_marks", "bracketed_suffixes", "emoticons"),
     "negation": ("words", "prefixes", "softeners", "emphatic", "emphatic_before", "strict", "pointing"),
     "qualifiers": (
         "words",
@@ -43,7 +43,14 @@ _LISTS = {
 def empty_rules() -> dict[str, Any]:
     """The normal form of a file with no rules at all."""
     return {
-        "punctuation": {"trailing": [], "leading": [], "quotes": [], "number_marks": [], "bracketed_suffixes": []},
+        "punctuation": {
+            "trailing": [],
+            "leading": [],
+            "quotes": [],
+            "number_marks": [],
+            "bracketed_suffixes": [],
+            "emoticons": [],
+        },
         "negation": {
             "words": [],
             "prefixes": [],

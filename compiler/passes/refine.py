@@ -55,8 +55,29 @@ def apply_inline_refinements(state: MaterialState, ctx: Context) -> MaterialStat
         elif item.target is not None and _describes_material(state, ctx, item):
             apply_group(state, ctx, _as_group(item.target), target="base")
         if not add_missing_map(state, ctx, item):  # 'rustier iron' = slightly rusty iron
+            mark = len(state.diagnostics)
             apply_refinement(state, ctx, item)
+            _none_as_said(state, item, mark)
     return state
+
+
+#: what a map refinement says when the material has no map for it (passes/refine_property.py)
+NOTHING_TO_ACT_ON = "W106"
+COMPARATIVE_WORDS = frozenset(("less", "fewer"))
+
+
+def _none_as_said(state: MaterialState, item: ast.RefineItem, mark: int) -> None:
+    """'steel without any scratches', 'oak, no knots': a removal said with the material of a map it
+    has none of is already as said: a note, not the warning a change line gets ('less grain' under
+    steel: W106). Only for the removal phrase's own reading (its word is no comparative)."""
+    if item.word.key != "less" or item.word.text.lower() in COMPARATIVE_WORDS:
+        return
+    for i in range(mark, len(state.diagnostics)):
+        found = state.diagnostics[i]
+        if found.code == NOTHING_TO_ACT_ON:
+            has_none = found.message.split(": ", 1)[-1]
+            message = f"{has_none}: none to take off, as '{item.word.text}' says"
+            state.diagnostics[i] = Diagnostic(found.span, Severity.NOTE, NOTE_CODE, message)
 
 
 def _said_after_material(material: ast.Material, target: ast.Word | ast.Colour) -> bool:

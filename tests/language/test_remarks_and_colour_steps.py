@@ -345,9 +345,11 @@ def test_a_reason_or_an_echo_beside_the_change_is_read_past(phrase: str, line: s
 
 def test_nothing_negates_as_not() -> None:
     assert same_look(material("nothing shiny"), material("not shiny paint"))
-    session = Session("light oak flooring", LEX)
-    with pytest.raises(ValueError):  # 'nothing too shiny' is not read as 'slightly shiny' (shinier)
-        session.refine("nothing too shiny")
+    # 'nothing too shiny' is 'not too shiny' (the finish between: satin), never 'slightly shiny'
+    assert same_look(material("nothing too shiny plastic"), material("satin plastic"))
+    session = Session("glossy oak flooring", LEX)
+    before = session.material["params"]["roughness"]
+    assert session.refine("nothing too shiny")["params"]["roughness"] > before
 
 
 @pytest.mark.parametrize(

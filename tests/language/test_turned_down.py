@@ -83,7 +83,14 @@ def test_one_note_for_a_removal_part_and_other_readings_kept() -> None:
     assert len([n for n in notes if "'no grain'" in n]) == 1, notes
 
 
-def test_a_removal_of_what_the_material_lacks_warns_and_is_never_a_describing_word() -> None:
+def test_a_removal_of_what_the_material_lacks_is_as_said_and_never_a_describing_word() -> None:
+    """Said with the material ('white paint, no texture', 'steel without any scratches'), what it has
+    none of is already so: a note, no warning (a change line under it still warns: W122/W106)."""
     result = compile_source("white paint, no texture\n", "t.cnl", LEX)
-    assert result.ok and [d.code for d in result.diagnostics if d.code.startswith("W")] == ["W122"]
+    assert result.ok and [d.code for d in result.diagnostics if d.code.startswith("W")] == []
+    assert any("none to take off" in d.message for d in result.diagnostics)
+    for said in ("steel without any scratches", "oak with no knots", "steel, free of scratches"):
+        result = compile_source(said + "\n", "t.cnl", LEX)
+        assert result.ok and not [d for d in result.diagnostics if d.severity.value != "note"], said
+        assert any("none to take off" in d.message for d in result.diagnostics), said
     assert look("white paint, no texture") == look("white paint")  # not 'paint with white texture'
