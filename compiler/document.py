@@ -117,6 +117,35 @@ def _corrected(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast
     return replace(node, text=text), [*said, Diagnostic(span, Severity.NOTE, NOTE_CODE, note)]
 
 
+def _fillers_after_comma(
+    words: list[Tagged], text: str, lexicon: Lexicon
+) -> tuple[ast.Material, Diagnostic, int] | None:
+    """'not glossy, just a flat grey paint', 'matte, a grey paint': after a comma, filler words
+    (teaching.toml [politeness] after_comma) and an article before the rest are read past, with a
+    note and where they start; None when the line has none, or does not read as a material then."""
+    from .suggest import teaching
+
+    fillers = frozenset(teaching()["politeness"]["after_comma"])
+    for at, word in enumerate(words[:-2]):
+        if not only_tag(word, "COMMA"):
+            continue
+        end = at + 1
+        while end < len(words) - 1 and (words[end].text.lower() in fillers or only_tag(words[end], "ARTICLE")):
+            end += 1
+        if end == at + 1:
+            continue
+        node = _parsed([*words[: at + 1], *words[end:]], text, lexicon)
+        if not isinstance(node, ast.Material):
+            return None
+        run = words[at + 1 : end]
+        said = " ".join(w.text for w in run)
+        note = Diagnostic(
+            run[0].span.to(run[-1].span), Severity.NOTE, NOTE_CODE, f"read past '{said}': filler after the comma"
+        )
+        return node, note, run[0].span.start
+    return None
+
+
 def _without_after_material(
     text: str, number: int, offset: int, tagger: Tagger
 ) -> tuple[ast.Item, list[Diagnostic]] | None:
@@ -511,6 +540,11 @@ def _failed_line(
     if named is not None:
         diags.append(named[1])
         return named[0]
+    filled = _fillers_after_comma(words, text, lexicon)  # 'not glossy, just a flat grey paint'
+    if filled is not None:
+        diags[:] = [d for d in diags if not (d.is_error and d.span is not None and d.span.start >= filled[2])]
+        diags.append(filled[1])
+        return filled[0]
     sensed = sense_said(words, text, lexicon) or kind_said(words, text, lexicon)  # 'teak, the colour not the wood'
     if sensed is not None:
         diags[:] = [d for d in diags if not (d.is_error and d.span is not None and d.span.start >= sensed[2])]
@@ -659,7 +693,7 @@ def _made_of_reading(words: list[Tagged], text: str, lexicon: Lexicon, diags: li
     from .hedges import read_past
     from .made_of import made_of
 
-    found = made_of(words, text)
+    found = made_of(words, text, lexicon)
     if found is None:
         return None
     rest, note = found

@@ -53,7 +53,7 @@ def implied_material(
         return None
     if any(w.unknown for w in words):
         return None
-    plating = _plating_alone(words, lexicon)
+    plating = _plating_alone(words, lexicon) or _metal_ish_alone(words, lexicon)
     if plating is not None:
         return plating
     main = [w for w in words if w.text[:1].isalpha()]
@@ -173,6 +173,29 @@ def _plating_alone(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagg
         return None
     hint = "name the surface under the plating to choose another, e.g. 'gold plated brass'"
     return [*words, implied_noun(under.key, words[-1])], _note(main, under.key, [], hint=hint)
+
+
+def _metal_ish_alone(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Tagged], Diagnostic] | None:
+    """'brass-ish', 'matte copperish': a metal's name hedged with '-ish' last, no material named, is
+    that metal (what the words are like), with a note; not a paint of the metal's colour."""
+    main = [w for w in words if w.text[:1].isalpha()]
+    if not main or main[-1] is not words[-1]:
+        return None
+    last = main[-1]
+    stem = last.text.lower().removesuffix("ish").rstrip("-")
+    if stem == last.text.lower() or not any(c.tag == "COLOR" for c in last.candidates):
+        return None
+    metal = next((e for e in lexicon.lookup((stem,)) if e.category == "nouns" and e.get("model") == "conductor"), None)
+    if metal is None:
+        return None
+    noun = Tagged(last.text, last.span, (Candidate("NOUN", metal.key, "nouns"),))
+    note = Diagnostic(
+        last.span,
+        Severity.NOTE,
+        NOTE_CODE,
+        f"read '{last.text}' as {metal.key} (a metal's name with '-ish': the metal, as near as named)",
+    )
+    return [*words[:-1], noun], note
 
 
 def _apply_to_anything(said: Sequence[Tagged], lexicon: Lexicon) -> bool:

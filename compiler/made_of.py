@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from .diagnostics import Diagnostic, Severity
 from .joins import of_tag
+from .lexicon import Lexicon
 from .tagged import NOTE_CODE, Tagged
 
 __all__ = ["made_of"]
@@ -23,7 +24,7 @@ _THING_TAGS = ("NOUN", "OBJECT")
 _THING_WORDS = 2
 
 
-def made_of(words: list[Tagged], text: str) -> tuple[list[Tagged], Diagnostic] | None:
+def made_of(words: list[Tagged], text: str, lexicon: Lexicon | None = None) -> tuple[list[Tagged], Diagnostic] | None:
     """The words after the line's first 'of' and the note that reads the line as them, when the
     words before it name a thing or a kind (see the module doc; `text`: the line); None otherwise."""
     at = next((i for i, w in enumerate(words) if of_tag(w, "OF")), None)
@@ -37,7 +38,7 @@ def made_of(words: list[Tagged], text: str) -> tuple[list[Tagged], Diagnostic] |
         thing = [w for w in thing if w.isalpha()]
     elif not all(_names_a_thing(w) for w in words[start:at]):
         return None
-    if not thing or len(thing) > _THING_WORDS:
+    if not thing or len(thing) > _THING_WORDS or _a_material_of_a_thing(words[start:at], words[at + 1 :], lexicon):
         return None
     said = " ".join((*thing, words[at].text))
     material = " ".join(text[words[at].span.col - 1 + len(words[at].text) :].split())
@@ -57,3 +58,16 @@ def _after_determiners(words: list[Tagged], end: int) -> int:
 
 def _names_a_thing(word: Tagged) -> bool:
     return word.unknown or any(of_tag(word, tag) for tag in _THING_TAGS)
+
+
+def _a_material_of_a_thing(before: list[Tagged], after: list[Tagged], lexicon: Lexicon | None) -> bool:
+    """'the satin nickel of an old tap': a material noun (no thing) before 'of' and a thing after it
+    (an object, read as its usual material by the tagger): the material is the one before; the
+    rest says where it is."""
+    said = [w for w in after if w.text[:1].isalpha() and not of_tag(w, "ARTICLE")]
+    last_before = before[-1] if before else None
+    if lexicon is None or not said or last_before is None or not of_tag(last_before, "NOUN"):
+        return False
+    if any(e.category == "objects" for e in lexicon.lookup((last_before.text.lower(),))):
+        return False
+    return any(e.category == "objects" for e in lexicon.lookup((said[-1].text.lower(),)))

@@ -36,6 +36,8 @@ def on_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[a
         return None
     material = parsed_material(after, text, lexicon.caches.shapes)
     clause = parsed_item([implied_with(before[0]), *before], text, lexicon.caches.shapes)
+    if material is not None and not isinstance(clause, ast.Refinement):
+        return _treatment_on(before, after, words, text, lexicon, (start, end))
     if material is None or not isinstance(clause, ast.Refinement) or not (clause.coat or clause.features):
         return None
     if material.coat is not None and clause.coat is not None:
@@ -55,6 +57,37 @@ def on_material(words: Sequence[Tagged], text: str, lexicon: Lexicon) -> tuple[a
     material_said = " ".join(w.text for w in after if w.text[:1].isalnum())
     message = f"read '{clause_said} {said} {material_said}' as '{material_said} with {clause_said}'"
     return joined, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, message)
+
+
+def _treatment_on(
+    before: list[Tagged],
+    after: list[Tagged],
+    words: Sequence[Tagged],
+    text: str,
+    lexicon: Lexicon,
+    joining: tuple[int, int],
+) -> tuple[ast.Material, Diagnostic] | None:
+    """'oil on maple', 'a hand-rubbed oil finish on maple': describing words on a material that name
+    no clause (a treatment read as its adjective, 'oiled') are those words before it ('oiled
+    maple'), with a note; None when they do not read so."""
+    said_before = [w for w in before if w.text[:1].isalnum() and not any(c.tag == "ARTICLE" for c in w.candidates)]
+    if not said_before or not all(any(c.tag in DESCRIBING for c in w.candidates) for w in said_before):
+        return None
+    material = parsed_material([*said_before, *after], text, lexicon.caches.shapes)
+    if material is None:
+        return None
+    said = " ".join(text[joining[0] : joining[1]].split())
+    clause_said = " ".join(w.text for w in said_before)
+    read = " ".join(_as_describing(w) for w in said_before)  # 'oil' as 'oiled'
+    material_said = " ".join(w.text for w in after if w.text[:1].isalnum())
+    message = f"read '{clause_said} {said} {material_said}' as '{read} {material_said}'"
+    return material, Diagnostic(written_span(words), Severity.NOTE, NOTE_CODE, message)
+
+
+def _as_describing(word: Tagged) -> str:
+    """The word as the describing word it is read as ('oil': 'oiled'), else as said."""
+    keys = {c.key for c in word.candidates if c.tag == "ADJ"}
+    return keys.pop() if len(keys) == 1 and len(word.candidates) == 1 else word.text
 
 
 def _joining(text: str) -> tuple[int, int] | None:
@@ -216,6 +249,7 @@ def context_dropped(
     bare = alternatives(table["context_unknown"])
     pattern = rf"(?:^|(?<=[\s,;.]))(?:{alternatives(table['context'])}|{pointed}|(?P<bare>{bare}))(?=[\s,.!?]|$)"
     likeness = tuple(w for w in table["context_pointing"] if w.split()[-1] == "like")
+    after_noun = frozenset(table["context_after_noun"])
     for found in re.finditer(pattern, low):
         if found.group("bare") and not _unknown_after(words, line_start + found.end(), lexicon):
             continue  # 'oak, like walnut': a material after the likeness word
@@ -229,6 +263,8 @@ def context_dropped(
         said = [w for w in before if w.text[:1].isalnum()]
         if not said or any(w.unknown for w in said):
             continue
+        if found.group(0).split()[0] in after_noun and not any(c.tag == "NOUN" for c in said[-1].candidates):
+            continue  # 'the aluminium of a laptop lid', not 'more of a sage'
         unarticled = [w for w in said if not all(c.tag == "ARTICLE" for c in w.candidates)]  # 'a really glossy ...'
         reading = parsed_item(before, text, lexicon.caches.shapes) or _on_everyday_noun(unarticled, text, lexicon)
         if reading is None and read is not None:

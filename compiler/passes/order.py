@@ -31,7 +31,7 @@ Step = tuple[int, str]  # (index of the group in the phrase, "all" | "colour" | 
 
 
 def canonical_groups(groups: Sequence[ast.Group], lexicon: Lexicon) -> Sequence[ast.Group]:
-    groups = _shade_words_as_adjectives(groups, lexicon)
+    groups = _colour_to_its_coat(_shade_words_as_adjectives(groups, lexicon), lexicon)
     if len(groups) < 2 and not (groups and groups[0].colours and groups[0].adjectives):
         return groups
     key = tuple([(g.kind, g.adjectives[0].key if g.adjectives else None, bool(g.colours)) for g in groups])
@@ -44,6 +44,30 @@ def canonical_groups(groups: Sequence[ast.Group], lexicon: Lexicon) -> Sequence[
     if not plan:
         return groups  # already in canonical order
     return [_part(groups[index], part) for index, part in plan]
+
+
+def _colour_to_its_coat(groups: Sequence[ast.Group], lexicon: Lexicon) -> Sequence[ast.Group]:
+    """'white glossy lacquered MDF' = 'glossy white lacquered MDF': the phrase's one colour, said
+    before a word that leaves colours on the base ('glossy'), goes with the phrase's one word that
+    takes its colour to a coat ('lacquered', colour_target "coat") when that word has none of its
+    own, wherever it stands; the groups as they were otherwise."""
+    coloured = [i for i, g in enumerate(groups) if g.colours]
+    takers = [i for i, g in enumerate(groups) if not g.colours and _takes_coat_colour(g, lexicon)]
+    if len(coloured) != 1 or len(takers) != 1:
+        return groups
+    giver, taker = groups[coloured[0]], groups[takers[0]]
+    adjective = _adjective(giver, lexicon)
+    if giver.adverbs or len(giver.colours) != 1 or adjective is None or adjective.get("colour_target"):
+        return groups
+    moved = list(groups)
+    moved[coloured[0]] = ast.Group(giver.kind, (), (), giver.adjectives, giver.span)
+    moved[takers[0]] = ast.Group(taker.kind, taker.adverbs, giver.colours, taker.adjectives, taker.span)
+    return moved
+
+
+def _takes_coat_colour(group: ast.Group, lexicon: Lexicon) -> bool:
+    adjective = _adjective(group, lexicon)
+    return adjective is not None and adjective.get("colour_target") == "coat"
 
 
 def _plan(groups: Sequence[ast.Group], lexicon: Lexicon) -> tuple[Step, ...]:
