@@ -22,6 +22,7 @@ from .conformal_coat import COLOUR_RULES
 
 OPTICS = ("eta", "k")
 TONE_RULE = "metal_tone"  # its provenance rule: a metal's own look, no film over it
+HEDGED_RULE = "colours"  # a hedged cast is still the colour word's (a film is laid over it)
 F82_COSINE = math.cos(math.radians(82.0))  # where the F82 tint is read (Kutz et al. 2021, OpenPBR)
 
 
@@ -34,12 +35,34 @@ def tone_toward_named_metal(state: MaterialState, ctx: Context) -> MaterialState
     if not colour_steps:
         return state
     step = colour_steps[-1]
-    found = named_metal(step, ctx) if step is steps[-1] else None  # a later plating replaced it
+    if step is not steps[-1]:
+        return state  # a later plating replaced it
+    found = named_metal(step, ctx)
     if found is None:
+        _hedged_tint(state, step, _own_colour(steps, step))
         return state
     metal, share = found
     _mix(state, metal, share, _own_colour(steps, step), step)
     return state
+
+
+def _hedged_tint(state: MaterialState, step: Step, own_colour: list[float]) -> None:
+    """'greenish brass', 'bluish steel': a hedged colour word ('-ish': colour_compounds.toml
+    [hedged] suffixes) on a metal is a cast, not a film of the full colour: the tint lies that
+    share of the way from the metal's own colour to the word's in OKLab ([metal_tone]
+    hedged_share), so the metal's own hue still shows (a green film over brass read as cyan)."""
+    from .colour_compounds import rules
+
+    said = [w for w in step.words if w.category != "adverbs"]
+    suffixes = tuple(rules()["hedged"]["suffixes"])
+    if len(said) != 1 or not said[0].text.lower().endswith(suffixes):
+        return
+    share = float(_table()["hedged_share"])
+    from ..colour import mix_oklab
+
+    tint = mix_oklab(own_colour, list(state.params["base_color"]), share)
+    rule = f"{HEDGED_RULE}: '{said[0].text}' on a metal is a cast, {share:g} of the way to its colour"
+    state.record("base_color", tint, rule, step.words)
 
 
 def named_metal(step: Step, ctx: Context) -> tuple[Entry, float] | None:
