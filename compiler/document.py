@@ -4,6 +4,7 @@ Lines end as cnlmc.lines says (CRLF, LF or a lone CR); `iter_lines` is re-export
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator, Sequence
 from contextvars import ContextVar
 from dataclasses import replace
@@ -18,6 +19,7 @@ from .lines import iter_lines
 from .noun_first import noun_first_note, noun_first_readings
 from .on_clause import context_dropped, likeness_dropped, on_material
 from .parser import ParseFailure, describe_expected, parse_line_shape, parsed_item
+from .phrase_patterns import alternatives
 from .relative_clause import (
     clause_after,
     described_colour_after,
@@ -86,6 +88,9 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
     if any(d.is_error for d in diags[mark:]) and (fixed := _corrected(text, number, offset, tagger)):
         diags[mark:] = fixed[1]  # 'oak matt no wait satin': the correction's word
         return fixed[0]
+    if any(d.is_error for d in diags[mark:]) and (spoken := _without_fillers(text, number, offset, tagger)):
+        diags[mark:] = spoken[1]  # 'um so like brushed copper you know'
+        return spoken[0]
     if any(d.is_error for d in diags[mark:]) and (without := _without_after_material(text, number, offset, tagger)):
         diags[mark:] = without[1]  # 'steel without any scratches'
         return without[0]
@@ -144,6 +149,34 @@ def _fillers_after_comma(
         )
         return node, note, run[0].span.start
     return None
+
+
+def _without_fillers(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast.Item, list[Diagnostic]] | None:
+    """'um so like brushed copper you know', 'red, um, dark red velvet': the fillers of speech
+    anywhere in a line that does not read (teaching.toml [politeness] fillers_anywhere) blanked, a
+    comma left doubled by one blanked too, and the line read again, with a note; None when it has
+    none or still does not read cleanly."""
+    from .spans import blanked
+    from .suggest import teaching
+
+    fillers = teaching()["politeness"]["fillers_anywhere"]
+    pattern = re.compile(rf"(?<![\w'])(?:{alternatives(fillers)})(?![\w'])", re.IGNORECASE)
+    found = [(m.start(), m.end()) for m in pattern.finditer(text)]
+    if not found:
+        return None
+    plain = blanked(text, found)
+    doubled = [(m.start(), m.start() + 1) for m in re.finditer(r",(?=\s*,)", plain)]
+    plain = blanked(plain, doubled).rstrip()
+    if not plain.strip():
+        return None
+    said: list[Diagnostic] = []
+    node = _parsed_line(plain + " " * (len(text) - len(plain)), number, offset, tagger, said)
+    if node is None or any(d.is_error for d in said):
+        return None
+    listed = ", ".join(dict.fromkeys(f"'{text[a:b]}'" for a, b in found))
+    span = Span(offset + found[0][0], offset + found[-1][1], number, found[0][0] + 1)
+    note = Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read past {listed}: words of speech, not of the look")
+    return replace(node, text=text), [*said, note]
 
 
 def _without_after_material(

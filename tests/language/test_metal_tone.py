@@ -90,3 +90,20 @@ def test_any_metal_toward_any_metal_is_a_finite_metal(toward, metal, degree):
     for name in ("f0", "f82", "eta", "k"):
         assert all(math.isfinite(v) and v >= 0.0 for v in material["params"][name])
     assert all(v <= 1.0 for v in material["params"]["f0"] + material["params"]["f82"])
+
+
+def test_a_hedged_colour_on_a_metal_is_a_cast_that_keeps_the_metal_hue(compile_text):
+    """'bluish steel': half way from the metal's own colour to the word's, in OKLab; 'blue steel'
+    keeps the full film colour (a blued or anodised film)."""
+    cast = params(compile_text, "bluish titanium")["params"]["base_color"]
+    full = params(compile_text, "blue titanium")["params"]["base_color"]
+    assert cast[2] > cast[0] and min(cast) > min(full) + 0.1
+
+
+def test_oxidised_iron_rusts_and_oxidised_silver_is_blackened(compile_text):
+    iron = params(compile_text, "oxidised cast iron")
+    assert iron["maps"]["base_color"]["graph"] == "rust"
+    silver = params(compile_text, "oxidized silver")["params"]["base_color"]
+    assert max(silver) < 0.3
+    copper = params(compile_text, "oxidized copper")
+    assert "base_color" not in (copper.get("maps") or {})  # darkened, no rust on copper

@@ -131,3 +131,34 @@ def test_a_metal_ish_alone_is_that_metal(compile_text):
     got = first(compile_text("bronze-ish"))
     assert got["model"]["base"] == "conductor"
     assert got["params"]["f0"] == first(compile_text("bronze"))["params"]["f0"]
+
+
+@pytest.mark.parametrize(
+    "said,plain",
+    [
+        ("uh so like satin nickel you know", "satin nickel"),
+        ("white, um, off-white linen", "off-white linen"),
+        ("its like uh rough slate I guess", "rough slate"),
+    ],
+)
+def test_fillers_of_speech_anywhere_are_read_past(compile_text, said, plain):
+    result = compile_text(said)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert first(result)["params"]["base_color"] == first(compile_text(plain))["params"]["base_color"]
+    assert any("words of speech" in d.message for d in result.diagnostics)
+
+
+def test_a_bare_like_before_a_material_keeps_its_error(compile_text):
+    assert not compile_text("steel, like brass").ok
+
+
+@pytest.mark.parametrize("stone", ["blue pearl granite", "ubatuba", "black galaxy granite", "kashmir white granite"])
+def test_granites_by_trade_name_are_speckled_stone(compile_text, stone):
+    material = first(compile_text(stone))
+    assert material["model"]["base"] == "dielectric" and material["maps"]["base_color"]["graph"] == "granite"
+
+
+def test_blue_pearl_is_a_dark_blue_grey_and_kashmir_white_a_pale_one(compile_text):
+    blue = first(compile_text("Blue Pearl granite"))["params"]["base_color"]
+    white = first(compile_text("kashmir white granite"))["params"]["base_color"]
+    assert max(blue) < 0.1 and blue[2] > blue[0] and min(white) > 0.5
