@@ -91,11 +91,13 @@ def simile(words: Sequence[Tagged]) -> tuple[list[Tagged], Span, str, str] | Non
         end = next((k for k in range(i + 1, len(words)) if not words[k].text[:1].isalnum()), len(words))
         nouns = [k for k in range(i + 1, end) if any(c.tag == "NOUN" for c in words[k].candidates)]
         named_before = any(c.tag == "NOUN" for w in words[: i - 1] for c in w.candidates)
-        if end == len(words) and len(nouns) > 1 and not named_before:
+        opened = i >= 2 and words[i - 2].text.lower() == said  # 'as shiny as a mirror': its first 'as' too
+        if end == len(words) and len(nouns) > 1 and not named_before and not opened:
             end = nouns[-1]  # 'smooth as a mirror metal': the last noun is the material
         if end <= i + 1:
             continue
-        left = words[i].span.to(words[end - 1].span)
+        start = i - 2 if opened else i - 1
+        left = words[start if opened else i].span.to(words[end - 1].span)
         before, moved = placed_before(words[i - 1], degree, left)
-        return [*words[: i - 1], before, moved, *words[end:]], left, words[i - 1].text, degree
+        return [*words[:start], before, moved, *words[end:]], left, words[i - 1].text, degree
     return None

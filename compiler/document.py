@@ -88,6 +88,9 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
     if any(d.is_error for d in diags[mark:]) and (fixed := _corrected(text, number, offset, tagger)):
         diags[mark:] = fixed[1]  # 'oak matt no wait satin': the correction's word
         return fixed[0]
+    if any(d.is_error for d in diags[mark:]) and (other := _not_another_material(text, number, offset, tagger)):
+        diags[mark:] = other[1]  # 'a brushed nickel tap, not chrome'
+        return other[0]
     if any(d.is_error for d in diags[mark:]) and (spoken := _without_fillers(text, number, offset, tagger)):
         diags[mark:] = spoken[1]  # 'um so like brushed copper you know'
         return spoken[0]
@@ -149,6 +152,37 @@ def _fillers_after_comma(
         )
         return node, note, run[0].span.start
     return None
+
+
+NOT_ANOTHER = re.compile(
+    r",\s*(?:but\s+)?(?:not|rather than|instead of)\s+(?:a\s+|an\s+|the\s+)?(?P<other>[^,]+?)\s*[.!]?\s*$", re.I
+)
+
+
+def _not_another_material(
+    text: str, number: int, offset: int, tagger: Tagger
+) -> tuple[ast.Item, list[Diagnostic]] | None:
+    """'a brushed nickel tap, not chrome', 'walnut, not oak': a material the line ends by saying it
+    is not (after a comma) is read past with a note, the line read without it; None when the words
+    after 'not' name no material, or the rest does not read cleanly."""
+    from .spans import blanked
+
+    found = NOT_ANOTHER.search(text)
+    if found is None:
+        return None
+    other, problems = tagger.tag_line(found.group("other"), number, 0)
+    if not other or any(d.is_error for d in problems) or not any(c.tag == "NOUN" for c in other[-1].candidates):
+        return None
+    said: list[Diagnostic] = []
+    node = _parsed_line(blanked(text, [(found.start(), len(text))]), number, offset, tagger, said)
+    if not isinstance(node, ast.Material) or any(d.is_error for d in said):
+        return None
+    span = Span(offset + found.start() + 1, offset + len(text.rstrip()), number, found.start() + 2)
+    dropped = text[found.start() + 1 :].strip()
+    note = Diagnostic(
+        span, Severity.NOTE, NOTE_CODE, f"read past '{dropped}': what it is not, named only to rule it out"
+    )
+    return replace(node, text=text), [*said, note]
 
 
 def _without_fillers(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast.Item, list[Diagnostic]] | None:
@@ -1073,12 +1107,24 @@ def _simile_reading(words: list[Tagged], text: str, lexicon: Lexicon, diags: lis
     if likened is None:
         return None
     node = _parsed(likened[0], text, lexicon) or _noun_first_item(likened[0], text, lexicon)
+    implied = None
+    if node is None and all(w.implied_by is not None or of_tag(w, "ADJ") or of_tag(w, "ADV") for w in likened[0]):
+        from .implied import implied_noun
+        from .suggest import everyday_noun
+
+        implied = everyday_noun()  # 'as shiny as a mirror': the describing words alone, on paint
+        node = _parsed([*likened[0], implied_noun(implied, likened[0][-1])], text, lexicon)
     if node is None:
         return None
     _, left, word, degree = likened
     diags[:] = [d for d in diags if not (d.span and left.start <= d.span.start < left.end)]
     said = text[left.start - words[0].span.line_start : left.end - words[0].span.line_start]
-    note = f"read '{word} {said}' as '{degree} {word}': a likeness says it strongly"
+    said_words = said.lower().split()
+    if len(said_words) < 2 or said_words[1] != word.lower():  # 'smooth as glass' (not 'as smooth as glass')
+        said = f"{word} {said}"
+    note = f"read '{said}' as '{degree} {word}': a likeness says it strongly"
+    if implied is not None:
+        note += f", on {implied} (no material named)"
     diags.append(Diagnostic(left, Severity.NOTE, NOTE_CODE, note))
     return node
 

@@ -147,6 +147,9 @@ class Joiner:
                 made = of_tag(before, "NOUN")
                 out[-1] = self._join(before, word, made, f"'{made[0].key}' (the material of the {word.text})", diags)
                 formed.append((out[-1], word))
+                looks[:] = [
+                    (out[-1] if noun is before else noun, look) for noun, look in looks
+                ]  # 'oak effect vinyl flooring'
             elif (label := self._colour_label(before, word, tagged[k + 1 :])) is not None:
                 skip = label  # 'plastic, colour red', 'colour: red', 'glass colour tea': the colour after it
                 note = f"read '{word.text}' as naming the colour after it"

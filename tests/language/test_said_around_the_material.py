@@ -162,3 +162,39 @@ def test_blue_pearl_is_a_dark_blue_grey_and_kashmir_white_a_pale_one(compile_tex
     blue = first(compile_text("Blue Pearl granite"))["params"]["base_color"]
     white = first(compile_text("kashmir white granite"))["params"]["base_color"]
     assert max(blue) < 0.1 and blue[2] > blue[0] and min(white) > 0.5
+
+
+def test_a_material_it_is_not_is_read_past(compile_text):
+    got = compile_text("a satin brass knob, not gold")
+    assert got.ok and not warnings(got)
+    assert look(first(got)) == look(first(compile_text("satin brass knob")))
+    assert [d.code for d in compile_text("walnut, not oak").diagnostics] == ["N101"]
+
+
+def test_a_likeness_said_with_as_as_is_the_degree(compile_text):
+    got = compile_text("as smooth as glass")
+    assert got.ok and first(got)["params"]["roughness"] < first(compile_text("smooth paint"))["params"]["roughness"]
+    assert (
+        first(compile_text("slate, as rough as a rock"))["params"] == first(compile_text("very rough slate"))["params"]
+    )
+
+
+def test_a_look_stays_when_its_material_is_named_by_a_thing(compile_text):
+    got = first(compile_text("ash effect vinyl flooring"))
+    assert got["maps"]["base_color"]["graph"] == "wood"
+    assert got["params"]["base_color"] == first(compile_text("ash effect vinyl"))["params"]["base_color"]
+
+
+@pytest.mark.parametrize(
+    "said,noun",
+    [
+        ("green oak frame", "white oak"),
+        ("navy suede brogues", "suede"),
+        ("gunmetal grey alloys", "aluminum"),
+        ("grey lambswool", "wool"),
+    ],
+)
+def test_trade_and_shop_words_name_their_material(compile_text, said, noun):
+    result = compile_text(said)
+    assert result.ok, [d.message for d in result.diagnostics]
+    assert any(noun in d.message for d in result.diagnostics) or first(result)["name"].endswith(noun.replace(" ", "_"))
