@@ -14,7 +14,6 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from .. import ast
-from ..bsdf.fresnel import f0_conductor, fresnel_conductor
 from ..degrees import compose_weights
 from ..lexicon_model import Entry
 from ..state import Context, MaterialState, Step
@@ -114,6 +113,8 @@ def _mix(state: MaterialState, metal: Entry, share: float, own_colour: list[floa
         for name in ("f0", "f82", "base_color"):
             state.record(name, list(metal.get(name)), rule, step.words, source=metal.get("source"))
         return
+    from ..bsdf.fresnel import f0_conductor, fresnel_conductor  # numpy: only for a phrase that mixes metals
+
     eta, k = state.params["eta"], state.params["k"]
     state.record("f0", [float(f0_conductor(n, kk)) for n, kk in zip(eta, k)], rule, step.words)
     state.record("f82", [float(fresnel_conductor(F82_COSINE, n, kk)) for n, kk in zip(eta, k)], rule, step.words)
