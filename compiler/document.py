@@ -91,6 +91,9 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
     if any(d.is_error for d in diags[mark:]) and (other := _not_another_material(text, number, offset, tagger)):
         diags[mark:] = other[1]  # 'a brushed nickel tap, not chrome'
         return other[0]
+    if any(d.is_error for d in diags[mark:]) and (placed := _without_place(text, number, offset, tagger)):
+        diags[mark:] = placed[1]  # 'a glossier black for the bonnet'
+        return placed[0]
     if any(d.is_error for d in diags[mark:]) and (spoken := _without_fillers(text, number, offset, tagger)):
         diags[mark:] = spoken[1]  # 'um so like brushed copper you know'
         return spoken[0]
@@ -182,6 +185,30 @@ def _not_another_material(
     note = Diagnostic(
         span, Severity.NOTE, NOTE_CODE, f"read past '{dropped}': what it is not, named only to rule it out"
     )
+    return replace(node, text=text), [*said, note]
+
+
+def _without_place(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast.Item, list[Diagnostic]] | None:
+    """'a glossier black for the bonnet': where it goes or what it is for (cnlmc.on_clause.place_at)
+    blanked and the whole line read again (so a comparison as the first line still lands on paint),
+    with a note; None when the line has none or does not then read cleanly."""
+    from .on_clause import place_at
+    from .spans import blanked
+
+    start = place_at(text, tagger.lexicon)
+    if start is None:
+        return None
+    said: list[Diagnostic] = []
+    node = _parsed_line(blanked(text, [(start, len(text))]), number, offset, tagger, said)
+    if node is None or any(d.is_error for d in said):
+        return None
+    dropped = text[start:].strip()
+    span = Span(offset + start + 1, offset + len(text.rstrip()), number, start + 2)
+    note = Diagnostic(
+        span, Severity.NOTE, NOTE_CODE, f"read past '{dropped}': where it goes or what it is for, not how it looks"
+    )
+    if isinstance(node, ast.Refinement):  # its text stays the words read (a first line's comparison re-reads them)
+        return node, [*said, note]
     return replace(node, text=text), [*said, note]
 
 

@@ -452,11 +452,15 @@ def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.M
         and lexicon.require("refinements", item.items[0].word.key).get("towards") is not None
     ):
         return _closer_alone(item, target)
+    from .on_clause import place_at
     from .parser import parsed_material
+    from .spans import blanked
     from .tagger import Tagger
 
     start = item.span.start - (item.span.col - 1)  # the line's offset: its text is the whole line
-    tagged, diags = Tagger.of(lexicon).tag_line(item.text, item.span.line, start)
+    place = place_at(item.text, lexicon)  # 'a shinier red for the door': the place read past
+    said_text = item.text if place is None else blanked(item.text, [(place, len(item.text))])
+    tagged, diags = Tagger.of(lexicon).tag_line(said_text, item.span.line, start)
     words = _colour_said_plainly(tagged, lexicon)
     dropped = {w.span.start for w in tagged if not any(w is kept for kept in words)}
     errors = [d for d in diags if d.is_error and (d.span is None or d.span.start not in dropped)]
@@ -464,7 +468,7 @@ def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.M
         return None
     noun = everyday_noun()
     with_noun = [*words, implied_noun(noun, words[-1])]
-    material = parsed_material(with_noun, item.text, lexicon.caches.shapes)
+    material = parsed_material(with_noun, said_text, lexicon.caches.shapes)
     if material is None:
         return None
     said = [w for w in words if w.text[:1].isalpha()]

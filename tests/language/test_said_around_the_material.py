@@ -198,3 +198,10 @@ def test_trade_and_shop_words_name_their_material(compile_text, said, noun):
     result = compile_text(said)
     assert result.ok, [d.message for d in result.diagnostics]
     assert any(noun in d.message for d in result.diagnostics) or first(result)["name"].endswith(noun.replace(" ", "_"))
+
+
+def test_a_comparison_for_a_thing_lands_on_paint(compile_text):
+    got = compile_text("a shinier red for the door")
+    assert got.ok and not warnings(got), [d.message for d in got.diagnostics]
+    assert first(got)["params"] == first(compile_text("a shinier red"))["params"]
+    assert not compile_text("brass on the walnut").ok  # a second material, not a place
