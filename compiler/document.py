@@ -192,7 +192,7 @@ def _without_place(text: str, number: int, offset: int, tagger: Tagger) -> tuple
     """'a glossier black for the bonnet': where it goes or what it is for (cnlmc.on_clause.place_at)
     blanked and the whole line read again (so a comparison as the first line still lands on paint),
     with a note; None when the line has none or does not then read cleanly."""
-    from .on_clause import place_at
+    from .place_words import place_at
     from .spans import blanked
 
     start = place_at(text, tagger.lexicon)

@@ -452,8 +452,8 @@ def first_line_comparison(item: ast.Refinement, lexicon: Lexicon) -> tuple[ast.M
         and lexicon.require("refinements", item.items[0].word.key).get("towards") is not None
     ):
         return _closer_alone(item, target)
-    from .on_clause import place_at
     from .parser import parsed_material
+    from .place_words import place_at
     from .spans import blanked
     from .tagger import Tagger
 

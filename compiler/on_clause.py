@@ -335,20 +335,3 @@ def _on_everyday_noun(said: Sequence[Tagged], text: str, lexicon: Lexicon) -> as
     if not said or not all(any(c.tag in DESCRIBING for c in w.candidates) for w in said):
         return None
     return parsed_material([*said, implied_noun(everyday_noun(), said[-1])], text, lexicon.caches.shapes)
-
-
-def place_at(text: str, lexicon: Lexicon) -> int | None:
-    """Where a place or a use said to the line's end starts ('a glossier black| for the bonnet'):
-    a context word ([hedges] `context_pointing`, or a one-word `context` such as 'for'), a pointing
-    word and what follows, whose last word is no material ('steel on the oak' has none); None."""
-    table = teaching()["hedges"]
-    single = [w for w in table["context"] if " " not in w]  # 'for' (the kitchen), 'wie'
-    lead = [w for w in [*table["context_pointing"], *single] if w not in table["context_after_noun"]]
-    pattern = rf"\s(?:{alternatives(lead)})\s+(?:{alternatives(table['pointing_words'])})\s+\S.*$"
-    found = re.search(pattern, text, re.IGNORECASE)
-    if found is None:
-        return None
-    last = text[found.start() :].split()[-1].strip(".,!?").lower()
-    if any(e.category == "nouns" for e in lexicon.lookup((last,))):
-        return None
-    return found.start()
