@@ -14,6 +14,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from .. import ast
+from ..colour import mix_oklab
 from ..degrees import compose_weights
 from ..lexicon_model import Entry
 from ..state import Context, MaterialState, Step
@@ -57,8 +58,6 @@ def _hedged_tint(state: MaterialState, step: Step, own_colour: list[float]) -> N
     if len(said) != 1 or not said[0].text.lower().endswith(suffixes):
         return
     share = float(_table()["hedged_share"])
-    from ..colour import mix_oklab
-
     tint = mix_oklab(own_colour, list(state.params["base_color"]), share)
     rule = f"{HEDGED_RULE}: '{said[0].text}' on a metal is a cast, {share:g} of the way to its colour"
     state.record("base_color", tint, rule, step.words)
