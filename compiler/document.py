@@ -4,6 +4,7 @@ Lines end as cnlmc.lines says (CRLF, LF or a lone CR); `iter_lines` is re-export
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Iterator, Sequence
 from contextvars import ContextVar
@@ -30,6 +31,7 @@ from .relative_clause import (
 from .removal import removal_line
 from .shape_store import save_shapes
 from .spans import Span, blanked
+from .suggest import teaching
 from .syntax import Shape
 from .tagged import NOTE_CODE, Candidate, Tagged, only_tag, written_span, written_text
 from .tagger import Tagger
@@ -85,24 +87,14 @@ def parse_line(text: str, number: int, offset: int, tagger: Tagger, diags: list[
         return None
     mark = len(diags)
     node = _parsed_line(text, number, offset, tagger, diags)
-    if any(d.is_error for d in diags[mark:]) and (fixed := _corrected(text, number, offset, tagger)):
-        diags[mark:] = fixed[1]  # 'oak matt no wait satin': the correction's word
-        return fixed[0]
-    if any(d.is_error for d in diags[mark:]) and (other := _not_another_material(text, number, offset, tagger)):
-        diags[mark:] = other[1]  # 'a brushed nickel tap, not chrome'
-        return other[0]
-    if any(d.is_error for d in diags[mark:]) and (placed := _without_place(text, number, offset, tagger)):
-        diags[mark:] = placed[1]  # 'a glossier black for the bonnet'
-        return placed[0]
-    if any(d.is_error for d in diags[mark:]) and (spoken := _without_fillers(text, number, offset, tagger)):
-        diags[mark:] = spoken[1]  # 'um so like brushed copper you know'
-        return spoken[0]
-    if any(d.is_error for d in diags[mark:]) and (without := _without_after_material(text, number, offset, tagger)):
-        diags[mark:] = without[1]  # 'steel without any scratches'
-        return without[0]
-    if any(d.is_error for d in diags[mark:]) and (
-        passed := _english_read_past(text, number, offset, tagger, diags[mark:])
-    ):
+    if not any(d.is_error for d in diags[mark:]):
+        return node
+    for reread in WHOLE_LINE_REREADINGS:
+        found = reread(text, number, offset, tagger)
+        if found is not None:
+            diags[mark:] = found[1]
+            return found[0]
+    if passed := _english_read_past(text, number, offset, tagger, diags[mark:]):
         diags[mark:] = passed[1]
         return passed[0]
     return node
@@ -134,8 +126,6 @@ def _fillers_after_comma(
     """'not glossy, just a flat grey paint', 'matte, a grey paint': after a comma, filler words
     (teaching.toml [politeness] after_comma) and an article before the rest are read past, with a
     note and where they start; None when the line has none, or does not read as a material then."""
-    from .suggest import teaching
-
     fillers = frozenset(teaching()["politeness"]["after_comma"])
     for at, word in enumerate(words[:-2]):
         if not only_tag(word, "COMMA"):
@@ -157,59 +147,56 @@ def _fillers_after_comma(
     return None
 
 
-NOT_ANOTHER = re.compile(
-    r",\s*(?:but\s+)?(?:not|rather than|instead of)\s+(?:a\s+|an\s+|the\s+)?(?P<other>[^,]+?)\s*[.!]?\s*$", re.I
-)
+def _read_blanked(
+    text: str, start: int, number: int, offset: int, tagger: Tagger, message: str
+) -> tuple[ast.Item, list[Diagnostic]] | None:
+    """The line read again with its text from `start` to the end blanked (columns stay), its notes
+    and a note of `message` over the words read past; None when it does not then read cleanly. A
+    refinement keeps the text it was read from (a first line's comparison re-reads it)."""
+    said: list[Diagnostic] = []
+    node = _parsed_line(blanked(text, [(start, len(text))]), number, offset, tagger, said)
+    if node is None or any(d.is_error for d in said):
+        return None
+    span = Span(offset + start + 1, offset + len(text.rstrip()), number, start + 2)
+    note = Diagnostic(span, Severity.NOTE, NOTE_CODE, f"read past '{text[start:].strip()}': {message}")
+    return (node if isinstance(node, ast.Refinement) else replace(node, text=text)), [*said, note]
 
 
 def _not_another_material(
     text: str, number: int, offset: int, tagger: Tagger
 ) -> tuple[ast.Item, list[Diagnostic]] | None:
     """'a brushed nickel tap, not chrome', 'walnut, not oak': a material the line ends by saying it
-    is not (after a comma) is read past with a note, the line read without it; None when the words
-    after 'not' name no material, or the rest does not read cleanly."""
-    from .spans import blanked
-
-    found = NOT_ANOTHER.search(text)
+    is not (after a comma: teaching.toml [hedges] `not_another`) is read past with a note, the line
+    read without it; None when the words after it name no material, or the rest does not read as a
+    material cleanly."""
+    found = _not_another_pattern().search(text)
     if found is None:
         return None
     other, problems = tagger.tag_line(found.group("other"), number, 0)
     if not other or any(d.is_error for d in problems) or not any(c.tag == "NOUN" for c in other[-1].candidates):
         return None
-    said: list[Diagnostic] = []
-    node = _parsed_line(blanked(text, [(found.start(), len(text))]), number, offset, tagger, said)
-    if not isinstance(node, ast.Material) or any(d.is_error for d in said):
-        return None
-    span = Span(offset + found.start() + 1, offset + len(text.rstrip()), number, found.start() + 2)
-    dropped = text[found.start() + 1 :].strip()
-    note = Diagnostic(
-        span, Severity.NOTE, NOTE_CODE, f"read past '{dropped}': what it is not, named only to rule it out"
-    )
-    return replace(node, text=text), [*said, note]
+    read = _read_blanked(text, found.start(), number, offset, tagger, "what it is not, named only to rule it out")
+    return read if read is not None and isinstance(read[0], ast.Material) else None
+
+
+@functools.cache
+def _not_another_pattern() -> re.Pattern[str]:
+    table = teaching()["hedges"]
+    articles = alternatives(table["pointing_words"])
+    lead = rf",\s*(?:(?:{alternatives(table['not_another_before'])})\s+)?(?:{alternatives(table['not_another'])})"
+    return re.compile(rf"{lead}\s+(?:(?:{articles})\s+)?(?P<other>[^,]+?)\s*[.!]?\s*$", re.IGNORECASE)
 
 
 def _without_place(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast.Item, list[Diagnostic]] | None:
-    """'a glossier black for the bonnet': where it goes or what it is for (cnlmc.on_clause.place_at)
-    blanked and the whole line read again (so a comparison as the first line still lands on paint),
+    """'a glossier black for the bonnet': where it goes or what it is for (cnlmc.place_words) read
+    past and the whole line read again (so a comparison as the first line still lands on paint),
     with a note; None when the line has none or does not then read cleanly."""
     from .place_words import place_at
-    from .spans import blanked
 
     start = place_at(text, tagger.lexicon)
     if start is None:
         return None
-    said: list[Diagnostic] = []
-    node = _parsed_line(blanked(text, [(start, len(text))]), number, offset, tagger, said)
-    if node is None or any(d.is_error for d in said):
-        return None
-    dropped = text[start:].strip()
-    span = Span(offset + start + 1, offset + len(text.rstrip()), number, start + 2)
-    note = Diagnostic(
-        span, Severity.NOTE, NOTE_CODE, f"read past '{dropped}': where it goes or what it is for, not how it looks"
-    )
-    if isinstance(node, ast.Refinement):  # its text stays the words read (a first line's comparison re-reads them)
-        return node, [*said, note]
-    return replace(node, text=text), [*said, note]
+    return _read_blanked(text, start, number, offset, tagger, "where it goes or what it is for, not how it looks")
 
 
 def _without_fillers(text: str, number: int, offset: int, tagger: Tagger) -> tuple[ast.Item, list[Diagnostic]] | None:
@@ -217,12 +204,7 @@ def _without_fillers(text: str, number: int, offset: int, tagger: Tagger) -> tup
     anywhere in a line that does not read (teaching.toml [politeness] fillers_anywhere) blanked, a
     comma left doubled by one blanked too, and the line read again, with a note; None when it has
     none or still does not read cleanly."""
-    from .spans import blanked
-    from .suggest import teaching
-
-    fillers = teaching()["politeness"]["fillers_anywhere"]
-    pattern = re.compile(rf"(?<![\w'])(?:{alternatives(fillers)})(?![\w'])", re.IGNORECASE)
-    found = [(m.start(), m.end()) for m in pattern.finditer(text)]
+    found = [(m.start(), m.end()) for m in _fillers_pattern().finditer(text)]
     if not found:
         return None
     plain = blanked(text, found)
@@ -240,6 +222,12 @@ def _without_fillers(text: str, number: int, offset: int, tagger: Tagger) -> tup
     return replace(node, text=text), [*said, note]
 
 
+@functools.cache
+def _fillers_pattern() -> re.Pattern[str]:
+    fillers = teaching()["politeness"]["fillers_anywhere"]
+    return re.compile(rf"(?<![\w'])(?:{alternatives(fillers)})(?![\w'])", re.IGNORECASE)
+
+
 def _without_after_material(
     text: str, number: int, offset: int, tagger: Tagger
 ) -> tuple[ast.Item, list[Diagnostic]] | None:
@@ -247,8 +235,6 @@ def _without_after_material(
     without, said with no comma (teaching.toml [removal] inline), read as after a comma ('steel,
     without any scratches': cnlmc.line_parts takes the words off, or says the material has none),
     with a note; None for any other line."""
-    from .suggest import teaching
-
     low = text.lower()
     for phrase, reading in teaching()["removal"]["inline"].items():
         start = low.find(f" {phrase} ")
@@ -267,6 +253,16 @@ def _without_after_material(
         note = f"read '{text.strip()}' as '{said}' (what it is without, after the material)"
         return replace(found[0], text=text), [*found[1], Diagnostic(span, Severity.NOTE, NOTE_CODE, note)]
     return None
+
+
+#: readings of a whole line that does not read, tried in turn (each a note of what it read past)
+WHOLE_LINE_REREADINGS = (
+    _corrected,  # 'oak matt no wait satin': the correction's word
+    _not_another_material,  # 'a brushed nickel tap, not chrome'
+    _without_place,  # 'a glossier black for the bonnet'
+    _without_fillers,  # 'um so like brushed copper you know'
+    _without_after_material,  # 'steel without any scratches'
+)
 
 
 def _english_read_past(

@@ -181,11 +181,14 @@ def _metal_ish_alone(words: Sequence[Tagged], lexicon: Lexicon) -> tuple[list[Ta
     main = [w for w in words if w.text[:1].isalpha()]
     if not main or main[-1] is not words[-1]:
         return None
+    from .passes.colour_compounds import rules
+    from .passes.metal_tone import metal_named
+
     last = main[-1]
-    stem = last.text.lower().removesuffix("ish").rstrip("-")
-    if stem == last.text.lower() or not any(c.tag == "COLOR" for c in last.candidates):
+    hedges = [suffix for suffix in rules()["hedged"]["suffixes"] if last.text.lower().endswith(suffix)]
+    if not hedges or not any(c.tag == "COLOR" for c in last.candidates):
         return None
-    metal = next((e for e in lexicon.lookup((stem,)) if e.category == "nouns" and e.get("model") == "conductor"), None)
+    metal = metal_named(last.text.lower(), [f"-{hedges[0]}", hedges[0]], lexicon)
     if metal is None:
         return None
     noun = Tagged(last.text, last.span, (Candidate("NOUN", metal.key, "nouns"),))

@@ -24,7 +24,7 @@ _THING_TAGS = ("NOUN", "OBJECT")
 _THING_WORDS = 2
 
 
-def made_of(words: list[Tagged], text: str, lexicon: Lexicon | None = None) -> tuple[list[Tagged], Diagnostic] | None:
+def made_of(words: list[Tagged], text: str, lexicon: Lexicon) -> tuple[list[Tagged], Diagnostic] | None:
     """The words after the line's first 'of' and the note that reads the line as them, when the
     words before it name a thing or a kind (see the module doc; `text`: the line); None otherwise."""
     at = next((i for i, w in enumerate(words) if of_tag(w, "OF")), None)
@@ -60,13 +60,13 @@ def _names_a_thing(word: Tagged) -> bool:
     return word.unknown or any(of_tag(word, tag) for tag in _THING_TAGS)
 
 
-def _a_material_of_a_thing(before: list[Tagged], after: list[Tagged], lexicon: Lexicon | None) -> bool:
+def _a_material_of_a_thing(before: list[Tagged], after: list[Tagged], lexicon: Lexicon) -> bool:
     """'the satin nickel of an old tap': a material noun (no thing) before 'of' and a thing after it
     (an object, read as its usual material by the tagger): the material is the one before; the
     rest says where it is."""
     said = [w for w in after if w.text[:1].isalpha() and not of_tag(w, "ARTICLE")]
     last_before = before[-1] if before else None
-    if lexicon is None or not said or last_before is None or not of_tag(last_before, "NOUN"):
+    if not said or last_before is None or not of_tag(last_before, "NOUN"):
         return False
     if any(e.category == "objects" for e in lexicon.lookup((last_before.text.lower(),))):
         return False

@@ -16,6 +16,7 @@ from typing import Any
 from .. import ast
 from ..colour import mix_oklab
 from ..degrees import compose_weights
+from ..lexicon import Lexicon
 from ..lexicon_model import Entry
 from ..state import Context, MaterialState, Step
 from .conformal_coat import COLOUR_RULES
@@ -72,18 +73,19 @@ def named_metal(step: Step, ctx: Context) -> tuple[Entry, float] | None:
         return None
     table = _table()
     for share, endings in ((1.0, table["full"]), (float(table["hedged_share"]), table["hedged"])):
-        metal = _metal_named(said[0].text.lower(), endings, ctx)
+        metal = metal_named(said[0].text.lower(), endings, ctx.lexicon)
         if metal is not None:
             return metal, min(1.0, share * _weight(adverbs, ctx))
     return None
 
 
-def _metal_named(text: str, endings: Sequence[str], ctx: Context) -> Entry | None:
+def metal_named(text: str, endings: Sequence[str], lexicon: Lexicon) -> Entry | None:
+    """The metal noun a word names with one of `endings` ('coppery' with 'y': copper), or None."""
     for ending in endings:
         if ending and not text.endswith(ending):
             continue
         stem = text[: len(text) - len(ending)] if ending else text
-        for entry in ctx.lexicon.lookup(tuple(stem.replace("-", " ").split())):
+        for entry in lexicon.lookup(tuple(stem.replace("-", " ").split())):
             if entry.category == "nouns" and entry.get("model") == "conductor" and entry.get("eta") is not None:
                 return entry
     return None

@@ -57,21 +57,20 @@ def apply_inline_refinements(state: MaterialState, ctx: Context) -> MaterialStat
         if not add_missing_map(state, ctx, item):  # 'rustier iron' = slightly rusty iron
             mark = len(state.diagnostics)
             apply_refinement(state, ctx, item)
-            _none_as_said(state, item, mark)
+            _none_as_said(state, ctx, item, mark)
     return state
 
 
 #: what a map refinement says when the material has no map for it (passes/refine_property.py)
 NOTHING_TO_ACT_ON = "W106"
-COMPARATIVE_WORDS = frozenset(("less", "fewer"))
 
 
-def _none_as_said(state: MaterialState, item: ast.RefineItem, mark: int) -> None:
+def _none_as_said(state: MaterialState, ctx: Context, item: ast.RefineItem, mark: int) -> None:
     """'steel without any scratches', 'oak, no knots': a removal said with the material of a map it
     has none of is already as said: a note, not the warning a change line gets ('less grain' under
     steel: W106). Only for the removal phrase's own reading (its word is no comparative)."""
-    if item.word.key != "less" or item.word.text.lower() in COMPARATIVE_WORDS:
-        return
+    if item.word.key != "less" or any(e.key == "less" for e in ctx.lexicon.lookup((item.word.text.lower(),))):
+        return  # the comparative said as such ('less', 'fewer'): a change, its warning stays
     for i in range(mark, len(state.diagnostics)):
         found = state.diagnostics[i]
         if found.code == NOTHING_TO_ACT_ON:
